@@ -1,0 +1,180 @@
+// Adaptation mechanisms for the time-varying parameters, as
+// interchangeable parts of every recursive estimator:
+//
+//   ForgettingFactorAdaptation: exponential forgetting, RLSSVF-FF
+//     eq. (1.57) and its IV form eq. (2.30);
+//   KalmanAdaptation: random-walk parameters with normalised covariance
+//     Qn = Qw / sigma_e^2 (eq. 1.46), RLSSVF-KF eq. (1.59) and the IV-based
+//     Kalman filter eq. (2.29).
+//
+// ParameterUpdate holds theta and P and applies one correction step
+//   L   = P- zeta / (offset + phi^T P- zeta)
+//   theta = theta + L (target - phi^T theta)
+//   P   = scale (P- - L phi^T P-)
+// with P- = P (+ Qn for the Kalman filter), offset = lambda or 1 and
+// scale = 1/lambda or 1. zeta = phi gives the least-squares form; the
+// symmetric update P- - (P- phi)(P- phi)^T / den is then used so that P stays
+// exactly symmetric. No allocation happens in update().
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <variant>
+
+#include "ctid/status.hpp"
+#include "ctid/types.hpp"
+
+namespace ctid {
+
+template <typename S>
+class ForgettingFactorAdaptation {
+ public:
+  explicit ForgettingFactorAdaptation(S lambda = 1) : lambda_(lambda) {}
+  void predict(Matrix<S>& /*P*/) const {}
+  S gain_offset() const { return lambda_; }
+  S covariance_scale() const { return S(1) / lambda_; }
+  S lambda() const { return lambda_; }
+
+ private:
+  S lambda_;
+};
+
+template <typename S>
+class KalmanAdaptation {
+ public:
+  KalmanAdaptation() = default;
+  explicit KalmanAdaptation(Matrix<S> qn) : qn_(std::move(qn)) {}
+  void predict(Matrix<S>& P) const { P += qn_; }
+  S gain_offset() const { return 1; }
+  S covariance_scale() const { return 1; }
+  const Matrix<S>& qn() const { return qn_; }
+
+ private:
+  Matrix<S> qn_;
+};
+
+template <typename S>
+using Adaptation = std::variant<ForgettingFactorAdaptation<S>,
+                                KalmanAdaptation<S>>;
+
+// Forgetting factor in (0, 1].
+template <typename S>
+Status validate_forgetting_factor(S lambda) {
+  if (!(lambda > 0 && lambda <= 1)) {
+    return bad_input("the forgetting factor must lie in (0, 1], got " +
+                     std::to_string(static_cast<double>(lambda)));
+  }
+  return Status::Ok();
+}
+
+// A symmetric positive semi-definite np-by-np matrix with finite entries
+// (used for Qn and P0). `what` names the argument in the message.
+template <typename S>
+Status validate_covariance(const Matrix<S>& M, Eigen::Index np,
+                           const std::string& what, bool require_definite) {
+  if (M.rows() != np || M.cols() != np) {
+    return dimension_mismatch(
+        what + " must be " + std::to_string(np) + "-by-" + std::to_string(np) +
+        " (one row and column per parameter), got " +
+        std::to_string(M.rows()) + "-by-" + std::to_string(M.cols()));
+  }
+  if (!M.allFinite()) return bad_input(what + " must be finite");
+  const S scale = M.cwiseAbs().maxCoeff();
+  const S tolerance = 1000 * std::numeric_limits<S>::epsilon() * scale;
+  if ((M - M.transpose()).cwiseAbs().maxCoeff() > tolerance) {
+    return bad_input(what + " must be symmetric");
+  }
+  if (np == 0) return Status::Ok();
+  const Eigen::SelfAdjointEigenSolver<Matrix<S>> eig(M);
+  const S smallest = eig.eigenvalues().minCoeff();
+  if (require_definite ? !(smallest > tolerance) : smallest < -tolerance) {
+    return bad_input(what + (require_definite
+                                 ? " must be positive definite"
+                                 : " must be positive semi-definite"));
+  }
+  return Status::Ok();
+}
+
+template <typename S>
+class ParameterUpdate {
+ public:
+  ParameterUpdate() = default;
+  ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
+    configure(np, std::move(adaptation));
+  }
+
+  void configure(Eigen::Index np, Adaptation<S> adaptation) {
+    adaptation_ = std::move(adaptation);
+    theta_ = Vector<S>::Zero(np);
+    P_ = Matrix<S>::Identity(np, np);
+    p_zeta_ = Vector<S>::Zero(np);
+    pt_phi_ = Vector<S>::Zero(np);
+    gain_ = Vector<S>::Zero(np);
+  }
+
+  void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
+    theta_ = theta0;
+    P_ = P0;
+  }
+
+  // Least-squares step (zeta = phi). Returns the prediction error
+  // target - phi^T theta(t_(k-1)), eq. (1.55).
+  template <typename Derived>
+  S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    predict();
+    const S error = target - phi.dot(theta_);
+    p_zeta_.noalias() = P_ * phi;
+    const S denominator = offset() + phi.dot(p_zeta_);
+    gain_ = p_zeta_ / denominator;
+    theta_ += gain_ * error;
+    P_.noalias() -= gain_ * p_zeta_.transpose();
+    scale_covariance();
+    return error;
+  }
+
+  // Instrumental-variable step, eqs. (2.29) and (2.30).
+  template <typename D1, typename D2>
+  S update(const Eigen::MatrixBase<D1>& phi, const Eigen::MatrixBase<D2>& zeta,
+           S target) {
+    predict();
+    const S error = target - phi.dot(theta_);
+    p_zeta_.noalias() = P_ * zeta;
+    pt_phi_.noalias() = P_.transpose() * phi;
+    const S denominator = offset() + phi.dot(p_zeta_);
+    gain_ = p_zeta_ / denominator;
+    theta_ += gain_ * error;
+    P_.noalias() -= gain_ * pt_phi_.transpose();
+    scale_covariance();
+    return error;
+  }
+
+  const Vector<S>& theta() const { return theta_; }
+  // Gain L(t_k) of the last step.
+  const Vector<S>& gain() const { return gain_; }
+  const Matrix<S>& P() const { return P_; }
+  const Adaptation<S>& adaptation() const { return adaptation_; }
+
+ private:
+  void predict() {
+    std::visit([this](const auto& a) { a.predict(P_); }, adaptation_);
+  }
+  S offset() const {
+    return std::visit([](const auto& a) { return a.gain_offset(); },
+                      adaptation_);
+  }
+  void scale_covariance() {
+    const S scale = std::visit(
+        [](const auto& a) { return a.covariance_scale(); }, adaptation_);
+    if (scale != S(1)) P_ *= scale;
+  }
+
+  Adaptation<S> adaptation_;
+  Vector<S> theta_;
+  Matrix<S> P_;
+  Vector<S> p_zeta_;
+  Vector<S> pt_phi_;
+  Vector<S> gain_;
+};
+
+}  // namespace ctid

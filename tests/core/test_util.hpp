@@ -1,0 +1,54 @@
+// Shared assertions for the core tests: matrix comparison with a relative
+// tolerance that reports the first failing entry.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+namespace ctid::test {
+
+// |a - b| <= tol * max(1, max|b|) entry by entry.
+template <typename A, typename B>
+::testing::AssertionResult MatrixNear(const Eigen::MatrixBase<A>& a,
+                                      const Eigen::MatrixBase<B>& b,
+                                      double tol) {
+  if (a.rows() != b.rows() || a.cols() != b.cols()) {
+    return ::testing::AssertionFailure()
+           << "size " << a.rows() << "x" << a.cols() << " vs " << b.rows()
+           << "x" << b.cols();
+  }
+  const double scale =
+      std::max(1.0, static_cast<double>(b.cwiseAbs().maxCoeff()));
+  for (Eigen::Index j = 0; j < a.cols(); ++j) {
+    for (Eigen::Index i = 0; i < a.rows(); ++i) {
+      const double diff =
+          std::abs(static_cast<double>(a(i, j)) - static_cast<double>(b(i, j)));
+      if (!(diff <= tol * scale)) {
+        return ::testing::AssertionFailure()
+               << "entry (" << i << "," << j << "): " << a(i, j) << " vs "
+               << b(i, j) << ", |diff| = " << diff << " > tol*scale = "
+               << tol * scale << " (tol " << tol << ")";
+      }
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+inline std::string scientific(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3e", value);
+  return buffer;
+}
+
+inline double relative_error(const Eigen::VectorXd& a,
+                             const Eigen::VectorXd& b) {
+  return (a - b).norm() / b.norm();
+}
+
+}  // namespace ctid::test
