@@ -1,0 +1,73 @@
+// MEX gateway of rlssvf (octave/rlssvf.m): converts the fixed argument list
+// below, runs ctid::run_rlssvf and returns THM, YH and PSET.
+//
+//   [thm, yh, pset] = rlssvf_mex(fname, y, u, t, intersample, na, nb, nk,
+//                                lambda_svf, svf_form, adm, adg, th0, P0)
+//
+// t is Ts (scalar) or the N sampling instants; adm is 'ff' or 'kf'; adg the
+// forgetting factor or the np-by-np Qn; th0 and P0 may be [] (defaults).
+// YH and PSET are computed only when requested.
+#include "ctid/rlssvf.hpp"
+
+#include "gateway_common.hpp"
+
+namespace {
+
+using ctid::mex::Gateway;
+
+void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                    const mxArray* prhs[]) {
+  if (nrhs != 14) {
+    g.fail("badInput", "the gateway takes 14 arguments, got " +
+                           std::to_string(nrhs) + " (call rlssvf instead)");
+  }
+  if (nlhs > 3) g.fail("badInput", "at most 3 outputs (THM, YH, PSET)");
+  const ctid::RecordView<double> record = ctid::mex::read_record(
+      g, prhs[1], prhs[2], prhs[3]);
+  ctid::RlsSvfConfig<double> config;
+  config.svf.u_intersample = ctid::mex::read_intersample(g, prhs[4]);
+  config.orders = ctid::mex::read_orders(g, prhs[5], prhs[6], prhs[7]);
+  config.svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
+  config.svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
+  const long np = config.orders.num_parameters();
+  const std::string adm = g.text(prhs[10], "adm");
+  if (adm == "ff") {
+    config.adaptation =
+        ctid::ForgettingFactorAdaptation<double>(g.scalar(prhs[11], "adg"));
+  } else if (adm == "kf") {
+    config.adaptation = ctid::KalmanAdaptation<double>(
+        g.eigen_matrix(prhs[11], "adg (Qn)", np, np));
+  } else {
+    g.fail("badOption", "adm must be 'ff' or 'kf', got '" + adm + "'");
+  }
+  if (!mxIsEmpty(prhs[12])) {
+    config.theta0 = g.eigen_matrix(prhs[12], "th0", np, 1);
+  }
+  if (!mxIsEmpty(prhs[13])) {
+    config.P0 = g.eigen_matrix(prhs[13], "P0", np, np);
+  }
+  g.check(ctid::validate(config));
+  g.check(ctid::validate_record(record, config.orders));
+
+  const std::size_t n = record.num_samples;
+  plhs[0] = ctid::mex::make_output_matrix(n, np);
+  ctid::RecursiveOutputs<double> out;
+  out.thm = mxGetPr(plhs[0]);
+  if (nlhs >= 2) {
+    plhs[1] = ctid::mex::make_output_matrix(n, 1);
+    out.yh = mxGetPr(plhs[1]);
+  }
+  if (nlhs >= 3) {
+    plhs[2] = ctid::mex::make_output_array3(np, np, n);
+    out.pset = mxGetPr(plhs[2]);
+  }
+  g.check(ctid::run_rlssvf(config, record, out));
+}
+
+}  // namespace
+
+void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  ctid::mex::run_gateway("rlssvf", {"rlssvf"}, nrhs, prhs, [&](const Gateway& g) {
+    rlssvf_gateway(g, nlhs, plhs, nrhs, prhs);
+  });
+}

@@ -1,0 +1,20 @@
+## Runs the %!test / %!assert / %!error blocks of one toolbox file and fails
+## (non-zero exit through error) unless every block passes.
+##
+## ctid_run_doctests ("rlssvf.m") -- path relative to <root>/octave.
+function ctid_run_doctests (file)
+  root = getenv ("CTID_ROOT");
+  if (isempty (root))
+    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
+  endif
+  addpath (fullfile (root, "octave"));
+  target = fullfile (root, "octave", file);
+  [n, nmax] = test (target, "quiet", stdout);
+  printf ("%s: %d of %d tests passed\n", file, n, nmax);
+  if (nmax == 0)
+    error ("ctid_run_doctests: %s has no tests", file);
+  endif
+  if (n != nmax)
+    error ("ctid_run_doctests: %d of %d tests failed in %s", nmax - n, nmax, file);
+  endif
+endfunction
