@@ -24,17 +24,18 @@ class AuxiliaryModel {
 
   void configure(const ModelOrders& orders, InterSample u_intersample) {
     orders_ = orders;
-    filters_.resize(orders.num_inputs());
+    disc_.configure(orders.na, u_intersample);
+    channels_.resize(orders.num_inputs());
     delays_.resize(orders.num_inputs());
     for (int j = 0; j < orders.num_inputs(); ++j) {
-      filters_[j].configure(orders.na, u_intersample);
+      channels_[j].configure(orders.na);
       delays_[j].configure(orders.nk[j]);
     }
     theta_ = Vector<S>::Zero(orders.num_parameters());
   }
 
   void reset() {
-    for (auto& f : filters_) f.reset();
+    for (auto& c : channels_) c.reset();
     for (auto& d : delays_) d.reset();
   }
 
@@ -42,15 +43,16 @@ class AuxiliaryModel {
   template <typename Derived>
   void set_parameters(const Eigen::MatrixBase<Derived>& theta) {
     theta_ = theta;
-    for (auto& f : filters_) f.set_denominator(theta_.head(orders_.na), S(1));
+    disc_.set_denominator(theta_.head(orders_.na));
   }
 
   // Feeds u(t_k); returns the model output x(t_k).
   S step(const S* u, S h) {
     S x = 0;
+    disc_.ensure(h);
     for (int j = 0; j < orders_.num_inputs(); ++j) {
-      filters_[j].step(delays_[j].push(u[j]), h);
-      const Vector<S>& w = filters_[j].outputs();
+      channels_[j].step(disc_, S(1), delays_[j].push(u[j]));
+      const Vector<S>& w = channels_[j].outputs();
       const int nb = orders_.nb[j];
       const int offset = orders_.numerator_offset(j);
       for (int l = 0; l < nb; ++l) x += theta_(offset + l) * w(nb - 1 - l);
@@ -60,7 +62,8 @@ class AuxiliaryModel {
 
  private:
   ModelOrders orders_;
-  std::vector<StateVariableFilter<S>> filters_;
+  FilterDiscretization<S> disc_;
+  std::vector<FilterChannel<S>> channels_;
   std::vector<DelayLine<S>> delays_;
   Vector<S> theta_;
 };

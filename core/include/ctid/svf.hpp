@@ -1,4 +1,4 @@
-// State-variable filter bank: for a sampled signal s it produces the
+// State-variable filters: for a sampled signal s they produce the
 // prefiltered time derivatives p^i F(p) s, i = 0..n, with
 //
 //   F(p) = g / D(p),  D(p) = p^n + d1 p^(n-1) + ... + dn,
@@ -13,8 +13,9 @@
 // keeps its meaning when D changes, so a time-varying filter carries it
 // across a change of coefficients. Discretisation per sample interval h_k
 // (irregular sampling allowed): exact ZOH or the trapezoidal rule, see
-// discretization.hpp. The matrices are recomputed only when h or D changes,
-// so a uniformly sampled, fixed filter allocates nothing per sample.
+// discretization.hpp. Signals that share a denominator and a rule share one
+// FilterDiscretization (one matrix exponential per change) and keep their
+// own FilterChannel state.
 #pragma once
 
 #include <cmath>
@@ -45,6 +46,122 @@ S svf_gain(int n, S lambda, bool normalised) {
   return normalised ? std::pow(lambda, static_cast<S>(n)) : S(1);
 }
 
+// The discretised filter of one denominator D(p) and one intersample rule,
+// shared by every signal filtered through it (y, u_j, the instrument x_hat):
+// the matrices are recomputed only when h or D changes, so a uniformly
+// sampled, fixed filter allocates nothing per sample.
+template <typename S>
+class FilterDiscretization {
+ public:
+  void configure(int order, InterSample intersample) {
+    n_ = order;
+    intersample_ = intersample;
+    d_ = Vector<S>::Zero(n_);
+    Phi_ = Matrix<S>::Identity(n_, n_);
+    gamma_ = Vector<S>::Zero(n_);
+    dirty_ = true;
+  }
+
+  // D(p) = p^n + d1 p^(n-1) + .. + dn, used from the next ensure() on.
+  template <typename Derived>
+  void set_denominator(const Eigen::MatrixBase<Derived>& d) {
+    if (!(d == d_)) {
+      d_ = d;
+      dirty_ = true;
+    }
+  }
+
+  // Makes Phi and Gamma those of the interval h.
+  void ensure(S h) {
+    const S tolerance = 64 * std::numeric_limits<S>::epsilon();
+    if (!dirty_ && std::abs(h - h_) <= tolerance * h_) return;
+    const Matrix<S> F = companion_matrix<S>(d_);
+    Matrix<S> G = Matrix<S>::Zero(n_, 1);
+    G(n_ - 1, 0) = 1;
+    Matrix<S> Gamma;
+    if (intersample_ == InterSample::kZoh) {
+      zoh_discretize<S>(F, G, h, Phi_, Gamma);
+    } else {
+      trapezoidal_discretize<S>(F, G, h, Phi_, Gamma);
+    }
+    gamma_ = Gamma.col(0);
+    h_ = h;
+    dirty_ = false;
+  }
+
+  int order() const { return n_; }
+  InterSample intersample() const { return intersample_; }
+  const Vector<S>& denominator() const { return d_; }
+  const Matrix<S>& Phi() const { return Phi_; }
+  const Vector<S>& Gamma() const { return gamma_; }
+
+ private:
+  int n_ = 0;
+  InterSample intersample_ = InterSample::kZoh;
+  Vector<S> d_;
+  Matrix<S> Phi_;
+  Vector<S> gamma_;
+  S h_ = 0;
+  bool dirty_ = true;
+};
+
+// The state of one signal in a FilterDiscretization: outputs()(i) =
+// p^i F(p) s(t_k), i = 0..n, with F = gain / D(p).
+template <typename S>
+class FilterChannel {
+ public:
+  void configure(int order) {
+    n_ = order;
+    z_ = Vector<S>::Zero(n_);
+    z_next_ = Vector<S>::Zero(n_);
+    out_ = Vector<S>::Zero(n_ + 1);
+    reset();
+  }
+
+  // Zero state; the next sample is the first of a record. ZOH starts with
+  // the state at rest at t_k, the trapezoidal rule as if s and the state
+  // were zero one interval earlier (a discrete filter from rest).
+  void reset() {
+    z_.setZero();
+    first_ = true;
+    s_prev_ = 0;
+  }
+
+  // Feeds s(t_k); `disc` must hold the matrices of t_k - t_(k-1).
+  void step(const FilterDiscretization<S>& disc, S gain, S s) {
+    const bool zoh = disc.intersample() == InterSample::kZoh;
+    if (!first_) {
+      z_next_.noalias() = disc.Phi() * z_;
+      z_next_ += disc.Gamma() * (zoh ? s_prev_ : s_prev_ + s);
+      z_.swap(z_next_);
+    } else if (!zoh) {
+      z_.noalias() = disc.Gamma() * s;
+    }
+    first_ = false;
+    s_prev_ = s;
+    const Vector<S>& d = disc.denominator();
+    S highest = s;
+    for (int i = 0; i < n_; ++i) {
+      out_(i) = gain * z_(i);
+      highest -= d(i) * z_(n_ - 1 - i);
+    }
+    out_(n_) = gain * highest;
+  }
+
+  const Vector<S>& outputs() const { return out_; }
+  const Vector<S>& state() const { return z_; }
+
+ private:
+  int n_ = 0;
+  Vector<S> z_;
+  Vector<S> z_next_;
+  Vector<S> out_;
+  S s_prev_ = 0;
+  bool first_ = true;
+};
+
+// One signal through its own filter: a FilterDiscretization with a single
+// FilterChannel.
 template <typename S>
 class StateVariableFilter {
  public:
@@ -55,102 +172,37 @@ class StateVariableFilter {
 
   // Allocates the filter of order n >= 1; denominator p^n, gain 1 until set.
   void configure(int order, InterSample intersample) {
-    n_ = order;
-    intersample_ = intersample;
-    d_ = Vector<S>::Zero(n_);
+    disc_.configure(order, intersample);
+    channel_.configure(order);
     gain_ = 1;
-    z_ = Vector<S>::Zero(n_);
-    z_next_ = Vector<S>::Zero(n_);
-    out_ = Vector<S>::Zero(n_ + 1);
-    Phi_ = Matrix<S>::Identity(n_, n_);
-    Gamma_ = Matrix<S>::Zero(n_, 1);
-    dirty_ = true;
-    reset();
   }
 
   // Sets D(p) = p^n + d1 p^(n-1) + .. + dn and the gain g. The new filter
   // governs the intervals advanced from the next step on.
   template <typename Derived>
   void set_denominator(const Eigen::MatrixBase<Derived>& d, S gain) {
-    if (!(d == d_)) {
-      d_ = d;
-      dirty_ = true;
-    }
+    disc_.set_denominator(d);
     gain_ = gain;
   }
 
-  // Zero state; the next sample is the first of a record.
-  void reset() {
-    z_.setZero();
-    first_ = true;
-    s_prev_ = 0;
-  }
+  void reset() { channel_.reset(); }
 
-  // Feeds s(t_k), where h = t_k - t_(k-1). For the first sample of a record
-  // h is the nominal interval: ZOH starts with the state at rest at t_k,
-  // the trapezoidal rule as if s and the state were zero one interval
-  // earlier.
+  // Feeds s(t_k), where h = t_k - t_(k-1) (for the first sample of a record
+  // the nominal interval).
   void step(S s, S h) {
-    if (!first_) {
-      ensure_discretised(h);
-      if (intersample_ == InterSample::kZoh) {
-        z_next_.noalias() = Phi_ * z_;
-        z_next_ += Gamma_.col(0) * s_prev_;
-      } else {
-        z_next_.noalias() = Phi_ * z_;
-        z_next_ += Gamma_.col(0) * (s_prev_ + s);
-      }
-      z_.swap(z_next_);
-    } else if (intersample_ == InterSample::kFoh) {
-      // Trapezoidal rule from rest: s(t_(-1)) = 0 and z(t_(-1)) = 0, the
-      // convention of a discrete filter with zero initial conditions.
-      ensure_discretised(h);
-      z_.noalias() = Gamma_.col(0) * s;
-    }
-    first_ = false;
-    s_prev_ = s;
-    S highest = s;
-    for (int i = 0; i < n_; ++i) {
-      out_(i) = gain_ * z_(i);
-      highest -= d_(i) * z_(n_ - 1 - i);
-    }
-    out_(n_) = gain_ * highest;
+    disc_.ensure(h);
+    channel_.step(disc_, gain_, s);
   }
 
   // p^i F(p) s(t_k), i = 0..n, after the last step.
-  const Vector<S>& outputs() const { return out_; }
-  int order() const { return n_; }
-  const Vector<S>& state() const { return z_; }
+  const Vector<S>& outputs() const { return channel_.outputs(); }
+  int order() const { return disc_.order(); }
+  const Vector<S>& state() const { return channel_.state(); }
 
  private:
-  void ensure_discretised(S h) {
-    const S tolerance = 64 * std::numeric_limits<S>::epsilon();
-    if (!dirty_ && std::abs(h - h_) <= tolerance * h_) return;
-    const Matrix<S> F = companion_matrix<S>(d_);
-    Matrix<S> G = Matrix<S>::Zero(n_, 1);
-    G(n_ - 1, 0) = 1;
-    if (intersample_ == InterSample::kZoh) {
-      zoh_discretize<S>(F, G, h, Phi_, Gamma_);
-    } else {
-      trapezoidal_discretize<S>(F, G, h, Phi_, Gamma_);
-    }
-    h_ = h;
-    dirty_ = false;
-  }
-
-  int n_ = 0;
-  InterSample intersample_ = InterSample::kZoh;
-  Vector<S> d_;
+  FilterDiscretization<S> disc_;
+  FilterChannel<S> channel_;
   S gain_ = 1;
-  Vector<S> z_;
-  Vector<S> z_next_;
-  Vector<S> out_;
-  Matrix<S> Phi_;
-  Matrix<S> Gamma_;
-  S h_ = 0;
-  S s_prev_ = 0;
-  bool dirty_ = true;
-  bool first_ = true;
 };
 
 }  // namespace ctid

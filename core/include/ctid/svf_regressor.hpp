@@ -3,7 +3,7 @@
 //   y_f^(na)(t_k) = phi_f^T(t_k) theta + v_f(t_k)
 //   phi_f = [-y_f^(na-1) .. -y_f, u_1f^(nb_1-1) .. u_1f, u_2f^(nb_2-1) ..]
 //
-// built sample by sample from a StateVariableFilter per signal. The input
+// built sample by sample from the filter channels of each signal. The input
 // is filtered with the data's InterSample rule; the output, never piecewise
 // constant, with the trapezoidal rule by default (Suggested procedure 3.3;
 // see shared/implementation-notes.md, note 1).
@@ -42,14 +42,16 @@ class SvfRegressor {
     orders_ = orders;
     const int na = orders.na;
     const Vector<S> d = svf_denominator<S>(na, svf.lambda_svf);
-    const S gain = svf_gain<S>(na, svf.lambda_svf, svf.normalised);
-    y_filter_.configure(na, svf.y_intersample);
-    y_filter_.set_denominator(d, gain);
-    u_filters_.resize(orders.num_inputs());
+    gain_ = svf_gain<S>(na, svf.lambda_svf, svf.normalised);
+    y_disc_.configure(na, svf.y_intersample);
+    y_disc_.set_denominator(d);
+    u_disc_.configure(na, svf.u_intersample);
+    u_disc_.set_denominator(d);
+    y_channel_.configure(na);
+    u_channels_.resize(orders.num_inputs());
     delays_.resize(orders.num_inputs());
     for (int j = 0; j < orders.num_inputs(); ++j) {
-      u_filters_[j].configure(na, svf.u_intersample);
-      u_filters_[j].set_denominator(d, gain);
+      u_channels_[j].configure(na);
       delays_[j].configure(orders.nk[j]);
     }
     phi_ = Vector<S>::Zero(orders.num_parameters());
@@ -57,22 +59,24 @@ class SvfRegressor {
   }
 
   void reset() {
-    y_filter_.reset();
-    for (auto& f : u_filters_) f.reset();
+    y_channel_.reset();
+    for (auto& c : u_channels_) c.reset();
     for (auto& d : delays_) d.reset();
   }
 
   // Feeds u(t_k) (num_inputs values) and y(t_k); h = t_k - t_(k-1).
   void step(const S* u, S y, S h) {
     const int na = orders_.na;
-    y_filter_.step(y, h);
-    const Vector<S>& yf = y_filter_.outputs();
+    y_disc_.ensure(h);
+    u_disc_.ensure(h);
+    y_channel_.step(y_disc_, gain_, y);
+    const Vector<S>& yf = y_channel_.outputs();
     for (int i = 0; i < na; ++i) phi_(i) = -yf(na - 1 - i);
     target_ = yf(na);
     int offset = na;
     for (int j = 0; j < orders_.num_inputs(); ++j) {
-      u_filters_[j].step(delays_[j].push(u[j]), h);
-      const Vector<S>& uf = u_filters_[j].outputs();
+      u_channels_[j].step(u_disc_, gain_, delays_[j].push(u[j]));
+      const Vector<S>& uf = u_channels_[j].outputs();
       const int nb = orders_.nb[j];
       for (int l = 0; l < nb; ++l) phi_(offset + l) = uf(nb - 1 - l);
       offset += nb;
@@ -85,8 +89,11 @@ class SvfRegressor {
 
  private:
   ModelOrders orders_;
-  StateVariableFilter<S> y_filter_;
-  std::vector<StateVariableFilter<S>> u_filters_;
+  FilterDiscretization<S> y_disc_;
+  FilterDiscretization<S> u_disc_;
+  FilterChannel<S> y_channel_;
+  std::vector<FilterChannel<S>> u_channels_;
+  S gain_ = 1;
   std::vector<DelayLine<S>> delays_;
   Vector<S> phi_;
   S target_ = 0;
