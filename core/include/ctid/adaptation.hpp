@@ -12,8 +12,8 @@
 //   theta = theta + L (target - phi^T theta)
 //   P   = scale (P- - L phi^T P-)
 // with P- = P (+ Qn for the Kalman filter), offset = lambda or 1 and
-// scale = 1/lambda or 1. zeta = phi gives the least-squares form; the
-// symmetric update P- - (P- phi)(P- phi)^T / den is then used so that P stays
+// scale = 1/lambda or 1. zeta = phi gives the least-squares form; its
+// covariance update is done as a symmetric rank-one update so that P stays
 // exactly symmetric. No allocation happens in update().
 #pragma once
 
@@ -44,7 +44,9 @@ template <typename S>
 class KalmanAdaptation {
  public:
   KalmanAdaptation() = default;
-  explicit KalmanAdaptation(Matrix<S> qn) : qn_(std::move(qn)) {}
+  // Qn is symmetrised so that P stays exactly symmetric.
+  explicit KalmanAdaptation(const Matrix<S>& qn)
+      : qn_((qn + qn.transpose()) / 2) {}
   void predict(Matrix<S>& P) const { P += qn_; }
   S gain_offset() const { return 1; }
   S covariance_scale() const { return 1; }
@@ -128,7 +130,13 @@ class ParameterUpdate {
     const S denominator = offset() + phi.dot(p_zeta_);
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
-    P_.noalias() -= gain_ * p_zeta_.transpose();
+    // P -= (P phi)(P phi)^T / den on the lower triangle, mirrored: P stays
+    // exactly symmetric.
+    P_.template selfadjointView<Eigen::Lower>().rankUpdate(p_zeta_,
+                                                           -1 / denominator);
+    for (Eigen::Index j = 1; j < P_.cols(); ++j) {
+      for (Eigen::Index i = 0; i < j; ++i) P_(i, j) = P_(j, i);
+    }
     scale_covariance();
     return error;
   }

@@ -1,0 +1,131 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{o} =} contsid_recursive_options (@var{fname}, @var{opts}, @var{np})
+## Checks and normalises the options shared by the recursive routines for a
+## model with @var{np} parameters:
+##
+## @table @code
+## @item lambda_svf
+## finite real scalar > 0 (required).
+## @item adm
+## @qcode{"ff"} or @qcode{"kf"}; @qcode{"rw"} (CONTSID 7.0/7.1) means
+## @qcode{"kf"}.
+## @item adg
+## forgetting factor in (0, 1] (default 1) for @qcode{"ff"}; for
+## @qcode{"kf"} the np-by-np Qn (default zeros), or a scalar q (q*I) or a
+## vector of np diagonal entries.
+## @item th0, P0
+## np initial estimates (default 0) and the np-by-np P0 (default 1e4*I; a
+## scalar p means p*I).
+## @item svf
+## @qcode{"normalised"} (default, thesis eq. 3.1) or @qcode{"ordinary"}
+## (eq. 1.19).
+## @end table
+## @end deftypefn
+
+function o = contsid_recursive_options (fname, opts, np)
+  o = opts;
+  lam = opts.lambda_svf;
+  if (isempty (lam))
+    error ([fname ":badOption"], ...
+           "%s: lambda_svf (the SVF cut-off, rad/s) is required", fname);
+  endif
+  if (! real_scalar (lam) || ! isfinite (lam) || lam <= 0)
+    error ([fname ":badInput"], ...
+           "%s: lambda_svf must be a finite real scalar > 0", fname);
+  endif
+  o.lambda_svf = double (lam);
+
+  adm = opts.adm;
+  if (! ischar (adm) || ! any (strcmpi (adm, {"ff", "kf", "rw"})))
+    error ([fname ":badOption"], "%s: adm must be 'ff', 'kf' or 'rw'", fname);
+  endif
+  adm = lower (adm);
+  if (strcmp (adm, "rw"))
+    adm = "kf";
+  endif
+  o.adm = adm;
+
+  adg = opts.adg;
+  if (! isempty (adg) && (! isnumeric (adg) || ! isreal (adg)
+                          || ndims (adg) > 2))
+    error ([fname ":badInput"], "%s: adg must be a real numeric array", fname);
+  endif
+  adg = double (adg);
+  if (strcmp (adm, "ff"))
+    if (isempty (adg))
+      adg = 1;
+    endif
+    if (! isscalar (adg) || ! (adg > 0 && adg <= 1))
+      error ([fname ":badInput"], ...
+             "%s: adg (forgetting factor) must be a scalar in (0, 1]", fname);
+    endif
+  else
+    if (isempty (adg))
+      adg = zeros (np);
+    elseif (isscalar (adg))
+      adg = adg * eye (np);
+    elseif (isvector (adg) && numel (adg) == np)
+      adg = diag (adg);
+    elseif (rows (adg) != columns (adg))
+      error ([fname ":badInput"], ...
+             "%s: adg (Qn) must be square, got %dx%d", fname, size (adg));
+    elseif (rows (adg) != np)
+      error ([fname ":dimensionMismatch"], ...
+             "%s: adg (Qn) must be %dx%d (one row per parameter), got %dx%d",
+             fname, np, np, size (adg));
+    endif
+    if (any (! isfinite (adg(:))))
+      error ([fname ":badInput"], "%s: adg (Qn) must be finite", fname);
+    endif
+    if (norm (adg - adg.', 1) > 1e3 * eps * max (1, norm (adg, 1)))
+      error ([fname ":badInput"], "%s: adg (Qn) must be symmetric", fname);
+    endif
+    if (min (eig ((adg + adg.') / 2)) < -1e3 * eps * max (1, norm (adg, 1)))
+      error ([fname ":badInput"], ...
+             "%s: adg (Qn) must be positive semi-definite", fname);
+    endif
+  endif
+  o.adg = adg;
+
+  th0 = opts.th0;
+  if (! isempty (th0))
+    if (! isnumeric (th0) || ! isreal (th0) || ! isvector (th0)
+        || any (! isfinite (th0)))
+      error ([fname ":badInput"], "%s: th0 must be a finite real vector", fname);
+    endif
+    if (numel (th0) != np)
+      error ([fname ":dimensionMismatch"], ...
+             "%s: th0 must have %d elements (one per parameter), got %d",
+             fname, np, numel (th0));
+    endif
+    th0 = double (th0(:));
+  endif
+  o.th0 = th0;
+
+  P0 = opts.P0;
+  if (! isempty (P0))
+    if (! isnumeric (P0) || ! isreal (P0) || ndims (P0) > 2
+        || any (! isfinite (P0(:))))
+      error ([fname ":badInput"], "%s: P0 must be a finite real matrix", fname);
+    endif
+    P0 = double (P0);
+    if (isscalar (P0))
+      P0 = P0 * eye (np);
+    elseif (any (size (P0) != [np np]))
+      error ([fname ":dimensionMismatch"], ...
+             "%s: P0 must be %dx%d, got %dx%d", fname, np, np, size (P0));
+    endif
+  endif
+  o.P0 = P0;
+
+  if (! ischar (opts.svf)
+      || ! any (strcmpi (opts.svf, {"normalised", "normalized", "ordinary"})))
+    error ([fname ":badOption"], ...
+           "%s: svf must be 'normalised' or 'ordinary'", fname);
+  endif
+  o.svf = lower (opts.svf);
+endfunction
+
+function tf = real_scalar (x)
+  tf = isnumeric (x) && isreal (x) && isscalar (x);
+endfunction

@@ -1,0 +1,226 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{thm} =} rlssvf (@var{data}, @var{nn}, "lambda_svf", @var{lam})
+## @deftypefnx {} {@var{thm} =} rlssvf (@dots{}, @var{name}, @var{value})
+## @deftypefnx {} {@var{thm} =} rlssvf (@var{data}, @var{nn}, @var{lam}, @dots{})
+## @deftypefnx {} {@var{thm} =} rlssvf (@var{y}, @var{u}, @var{Ts}, @var{nn}, @dots{})
+## @deftypefnx {} {[@var{thm}, @var{yh}, @var{pset}] =} rlssvf (@dots{})
+## Recursive least-squares state-variable filter estimation of a
+## continuous-time model with time-varying parameters (RLSSVF).
+##
+## The model is
+## @example
+## A(p,t) x(t) = B(p,t) u(t - nk Ts),  y(t_k) = x(t_k) + e(t_k)
+## A(p,t) = p^na + a1(t) p^(na-1) + ... + a_na(t)
+## B(p,t) = b0(t) p^(nb-1) + ... + b_(nb-1)(t)
+## @end example
+##
+## @strong{Inputs}
+## @table @var
+## @item data
+## an @code{iddata} object (@code{iddata (y, u, Ts, "InterSample", "zoh")},
+## this toolbox's or the control package's), with one output and one column
+## per input; or numeric @var{y} (N-by-1), @var{u} (N-by-nu) and @var{Ts}
+## (scalar) or the N sampling instants (irregular sampling, then nk = 0).
+## @item nn
+## [na nb nk]: na denominator parameters (the model order), nb numerator
+## parameters (so nb = 1 is a single gain b0; nb <= na + 1), nk input delay
+## in samples (optional, default 0). With several inputs nb and nk have one
+## entry per input.
+## @end table
+##
+## @strong{Options} (name-value pairs or a struct; names are
+## case-insensitive, unknown names are an error):
+## @table @code
+## @item lambda_svf
+## cut-off frequency (rad/s) of the state-variable filter, required. It may
+## also be given by position after @var{nn} (CONTSID 7.0/7.1 syntax).
+## @item adm
+## adaptation mechanism: @qcode{"ff"} forgetting factor (default) or
+## @qcode{"kf"} Kalman filter with random-walk parameters (@qcode{"rw"} is
+## accepted as a synonym, CONTSID 7.0/7.1).
+## @item adg
+## adaptation gain: the forgetting factor in (0, 1] for @qcode{"ff"}
+## (default 1: no forgetting); for @qcode{"kf"} the normalised covariance
+## matrix Qn = Qw/sigma_e^2, np-by-np and ordered like @var{thm} (a scalar q
+## means q*I, a vector its diagonal; default zeros).
+## @item th0, P0
+## initial estimates (default 0) and covariance (default 1e4*I; a scalar p
+## means p*I), as in the thesis.
+## @item svf
+## @qcode{"normalised"} (lambda/(p+lambda))^na (default, thesis eq. 3.1) or
+## @qcode{"ordinary"} 1/(p+lambda)^na (eq. 1.19).
+## @end table
+##
+## @strong{Outputs}
+## @table @var
+## @item thm
+## N-by-np estimates, row k at sample k, in the order
+## [a1 .. a_na, b0 .. b_(nb-1)] (inputs one after the other).
+## @item yh
+## N-by-1 simulated output of the frozen model of each sample: the model
+## with the current estimates, simulated along the record (thesis eq. 1.60).
+## @item pset
+## np-by-np-by-N covariance matrix P after each recursion; computed only when
+## requested.
+## @end table
+##
+## @strong{Algorithm.} The input is filtered by the SVF with the data's
+## InterSample rule (exact ZOH through the matrix exponential, or the
+## trapezoidal rule for @qcode{"foh"}), the output always by the trapezoidal
+## rule, which suits a signal that is not piecewise constant (thesis
+## Suggested procedure 3.3). The filtered regression (eqs. 1.53-1.55) is
+## updated by eq. (1.57) (forgetting factor) or eq. (1.59) (Kalman filter).
+## Reference: A. Padilla, Recursive identification of continuous-time systems
+## with time-varying parameters, PhD thesis, Universite de Lorraine, 2017,
+## sec. 1.3.3.
+##
+## @strong{Example}
+## @example
+## Ts = 0.1; u = prbs (10, 10); N = numel (u);
+## y = simc (struct ("B", 4, "F", [1 2.4 4]), u, Ts) + 0.05 * randn (N, 1);
+## data = iddata (y, u, Ts, "InterSample", "zoh");
+## thm = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6);
+## thm(end, :)   # close to [2.4 4 4]
+## @end example
+## @seealso{simc, prbs, iddata}
+## @end deftypefn
+
+function [thm, yh, pset] = rlssvf (varargin)
+  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
+                     "P0", [], "svf", "normalised");
+  [d, orders, opts] = contsid_recursive_args ("rlssvf", defaults, varargin{:});
+  o = contsid_recursive_options ("rlssvf", opts, orders.np);
+  if (d.uniform)
+    t = d.Ts;
+  else
+    t = d.t;
+  endif
+  try
+    [thm, yh, pset] = rlssvf_mex ("rlssvf", d.y, d.u, t, d.intersample,
+                                  orders.na, orders.nb, orders.nk,
+                                  o.lambda_svf, o.svf, o.adm, o.adg, o.th0,
+                                  o.P0);
+  catch err
+    contsid_rethrow (err);
+  end_try_catch
+endfunction
+
+%!shared Ts, u, y, data
+%! Ts = 0.05;
+%! u = prbs (9, 8);
+%! y = simc (struct ("B", 4, "F", [1 2.4 4]), u, Ts);
+%! data = iddata (y, u, Ts, "InterSample", "zoh");
+
+%!test  # noise-free LTI system: the estimates converge to the truth
+%! thm = rlssvf (data, [2 1 0], "lambda_svf", 3);
+%! assert (size (thm), [numel(u) 3]);
+%! assert (thm(end, :), [2.4 4 4], 2e-3 * 4);
+
+%!test  # CONTSID 7.2 call of the LTI demo, three outputs
+%! [thm, yh, pset] = rlssvf (data, [2 1 0], "lambda_svf", 2);
+%! assert (size (yh), [numel(u) 1]);
+%! assert (size (pset), [3 3 numel(u)]);
+%! assert (norm (yh(end-500:end) - y(end-500:end)) / norm (y(end-500:end)) < 1e-2);
+%! P = pset(:, :, end);
+%! assert (P, P.', 0);   # the update keeps P exactly symmetric
+
+%!test  # CONTSID 7.0/7.1 positional syntax with 'rw' equals 7.2 'kf'
+%! Qn = 1e-6 * eye (3);
+%! a = rlssvf (data, [2 1 0], 3, "adm", "rw", "adg", Qn);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", Qn);
+%! assert (a, b, 0);
+
+%!test  # options as a struct, names in any case, numeric (y, u, Ts) data
+%! a = rlssvf (y, u, Ts, [2 1], struct ("Lambda_SVF", 3, "ADM", "kf"));
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", zeros (3));
+%! assert (a, b, 0);
+
+%!test  # KF with Qn = 0 equals forgetting factor 1
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 0);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "ff", "adg", 1);
+%! assert (a, b, 1e-10 * max (abs (b(:))));
+
+%!test  # th0 and P0: starting at the truth with a tiny P0 stays there
+%! thm = rlssvf (data, [2 1 0], "lambda_svf", 3, "th0", [2.4 4 4], "P0", 1e-12);
+%! assert (max (abs (thm(:) - kron ([2.4 4 4]', ones (numel (u), 1)))) < 1e-6);
+
+%!test  # ordinary and normalised SVF agree when P0 is scaled (eq. 3.6)
+%! lam = 3;
+%! a = rlssvf (data, [2 1 0], "lambda_svf", lam, "svf", "normalised", "P0", 1);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", lam, "svf", "ordinary", "P0", lam^4);
+%! assert (a, b, 1e-8 * max (abs (a(:))));
+
+%!test  # irregular sampling instants
+%! t = cumsum ([0; 0.04 + 0.02 * mod((1:numel(u)-1)', 2)]);
+%! thm = rlssvf (y, u, t, [2 1 0], "lambda_svf", 3);
+%! assert (size (thm), [numel(u) 3]);
+%! assert (all (isfinite (thm(:))));
+
+%!test  # FOH data are filtered with the trapezoidal rule
+%! d2 = iddata (y, u, Ts, "InterSample", "foh");
+%! a = rlssvf (d2, [2 1 0], "lambda_svf", 3);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3);
+%! assert (any (abs (a(:) - b(:)) > 0));
+
+## Bad input: each validation branch has its identifier.
+%!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [2.5 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [2 4 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [2 0 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 -1], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, "abc", "lambda_svf", 2)
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0 0 0], "lambda_svf", 2)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 0)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", -1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", NaN)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", Inf)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2i)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", "2")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", [1 2])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adg", 0)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adg", 1.1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adg", [0.9 0.9])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", ones (3, 2))
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", eye (4))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", [1 1 0; 0 1 0; 0 0 1])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", -eye (3))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", NaN (3))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", {1})
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "kf", "adg", 1i * eye (3))
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "xx")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", 3)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "svf", "weird")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "nonsense", 1)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, 5, 1)
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "th0", [1 2])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "th0", "abc")
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "th0", [1 2 3 4])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "th0", [1 NaN 3])
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "P0", eye (2))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "P0", -1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "P0", "big")
+%!error id=rlssvf:badInput rlssvf ([1; NaN; 3; 4; 5], (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ([1; 2; 3; 4; 5], [1; Inf; 3; 4; 5], 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:dimensionMismatch rlssvf ((1:5)', (1:4)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ([1; 2], [1; 2], 0.1, [2 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ((1:5)', (1:5)', [0 1 1 2 3]', [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ((1:5)', (1:5)', [0 1 2 4 5]', [1 1 1], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ((1:5)', (1:5)', 0, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ((1:5)' + 1i, (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ({1}, (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ()
+%!error id=rlssvf:badInput rlssvf (data)
+
+%!demo
+%! ## Track the drifting damping of a second-order system (RLSSVF-KF).
+%! Ts = 0.05; u = prbs (10, 5); N = numel (u); t = (0:N-1)' * Ts;
+%! a1 = 2 + 1 * t / t(end);                      # slow drift of a1
+%! theta = [a1, 4 * ones(N, 1), 4 * ones(N, 1)]; # [a1 a2 b0] per sample
+%! y = simc (theta, [2 1 0], u, Ts) + 0.02 * randn (N, 1);
+%! thm = rlssvf (iddata (y, u, Ts, "InterSample", "zoh"), [2 1 0], ...
+%!               "lambda_svf", 3, "adm", "kf", "adg", diag ([1e-5 1e-7 1e-7]));
+%! plot (t, a1, "k", t, thm(:, 1), "r");
+%! legend ("true a_1", "RLSSVF-KF"); xlabel ("t (s)");
