@@ -85,7 +85,7 @@
 ## @seealso{simc, prbs, iddata}
 ## @end deftypefn
 
-function [thm, yh, pset] = rlssvf (varargin)
+function varargout = rlssvf (varargin)
   defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
                      "P0", [], "svf", "normalised");
   [d, orders, opts] = contsid_recursive_args ("rlssvf", defaults, varargin{:});
@@ -95,11 +95,14 @@ function [thm, yh, pset] = rlssvf (varargin)
   else
     t = d.t;
   endif
+  ## Ask the gateway only for the outputs requested: YH costs a matrix
+  ## exponential per sample and PSET N*np^2 memory.
   try
-    [thm, yh, pset] = rlssvf_mex ("rlssvf", d.y, d.u, t, d.intersample,
-                                  orders.na, orders.nb, orders.nk,
-                                  o.lambda_svf, o.svf, o.adm, o.adg, o.th0,
-                                  o.P0);
+    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", d.y, d.u, t,
+                                                 d.intersample, orders.na,
+                                                 orders.nb, orders.nk,
+                                                 o.lambda_svf, o.svf, o.adm,
+                                                 o.adg, o.th0, o.P0);
   catch err
     contsid_rethrow (err);
   end_try_catch

@@ -72,7 +72,7 @@
 ## @seealso{rlssvf, prbs, iddata}
 ## @end deftypefn
 
-function [y, x, uc] = simc (varargin)
+function varargout = simc (varargin)
   fname = "simc";
   if (nargin < 2)
     error ("simc:badInput", "simc: expected a model and input data");
@@ -128,21 +128,24 @@ function [y, x, uc] = simc (varargin)
       error ("simc:badInput", "simc: SNR must be a real scalar (dB)");
     endif
     ## P_x of the noise-free output (in closed loop: of the noise-free loop).
-    xf = call_gateway (u, t, intersample, orders, theta, substeps, x0, [],
-                       c_num, c_den, r2);
+    xf = call_gateway (1, u, t, intersample, orders, theta, substeps, x0,
+                       [], c_num, c_den, r2);
     e = randn (n, 1);
     e = e * sqrt (mean (xf .^ 2) / 10 ^ (snr / 10)) / sqrt (mean (e .^ 2));
   endif
-  [x, y, uc] = call_gateway (u, t, intersample, orders, theta, substeps, x0,
-                             e, c_num, c_den, r2);
+  ## The gateway returns [x, y, uc]; simc returns [y, x, uc].
+  outs = cell (1, max (2, nargout));
+  [outs{:}] = call_gateway (numel (outs), u, t, intersample, orders, theta,
+                            substeps, x0, e, c_num, c_den, r2);
+  varargout = outs([2 1 3:end]);
 endfunction
 
-function [x, y, uc] = call_gateway (u, t, intersample, orders, theta,
+function varargout = call_gateway (nout, u, t, intersample, orders, theta,
                                     substeps, x0, e, c_num, c_den, r2)
   try
-    [x, y, uc] = simc_mex ("simc", u, t, intersample, orders.na, orders.nb,
-                           orders.nk, theta, substeps, x0, e, c_num, c_den,
-                           r2);
+    [varargout{1:nout}] = simc_mex ("simc", u, t, intersample, orders.na,
+                                    orders.nb, orders.nk, theta, substeps,
+                                    x0, e, c_num, c_den, r2);
   catch err
     contsid_rethrow (err);
   end_try_catch

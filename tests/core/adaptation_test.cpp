@@ -173,6 +173,35 @@ TEST(ParameterUpdate, RecursiveIvEqualsBatchIv) {
   EXPECT_LT(test::relative_error(iv.theta(), batch), 1e-9);
 }
 
+// With forgetting the asymmetric rounding of P is amplified by 1/lambda at
+// every step; a non-symmetric update let P turn indefinite within 1e5
+// samples at lambda = 0.999 (found by the benchmark). P must stay exactly
+// symmetric and positive definite, and theta near the truth.
+TEST(ParameterUpdate, ForgettingFactorKeepsPSymmetricOverLongRuns) {
+  const int np = 3, n = 100000;
+  std::mt19937 rng(12);
+  std::normal_distribution<double> normal;
+  const Eigen::Vector3d truth(1.0, -2.0, 0.5);
+  for (double lambda : {0.99, 0.999}) {
+    ParameterUpdate<double> update(np,
+                                   ForgettingFactorAdaptation<double>(lambda));
+    update.reset(Eigen::VectorXd::Zero(np),
+                 1e4 * Eigen::MatrixXd::Identity(np, np));
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector3d phi(normal(rng), normal(rng), 10 * normal(rng));
+      update.update(phi, phi.dot(truth) + 0.1 * normal(rng));
+    }
+    const Eigen::MatrixXd& P = update.P();
+    EXPECT_EQ((P - P.transpose()).cwiseAbs().maxCoeff(), 0.0) << lambda;
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(P)
+                  .eigenvalues()
+                  .minCoeff(),
+              0.0)
+        << lambda;
+    EXPECT_LT((update.theta() - truth).norm(), 0.05) << lambda;
+  }
+}
+
 TEST(Validation, ForgettingFactorRange) {
   EXPECT_TRUE(validate_forgetting_factor(1.0).ok());
   EXPECT_TRUE(validate_forgetting_factor(0.5).ok());
