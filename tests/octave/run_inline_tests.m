@@ -4,7 +4,7 @@
 ## Run the @code{%!} tests of the toolbox's Octave files and error if any
 ## fails, so that CTest can run them:
 ## @example
-## octave --no-gui -q --eval "addpath ('octave'); addpath ('tests/octave'); run_inline_tests"
+## octave --no-gui -q --eval "addpath octave tests/octave; run_inline_tests"
 ## @end example
 ## Without arguments, every @file{.m} file in @file{octave/} and in its
 ## class folders (@file{octave/@@*/}) is tested; @var{files} is a cell of

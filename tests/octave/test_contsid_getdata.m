@@ -3,7 +3,7 @@
 ## Tests of @file{octave/private/contsid_getdata.m}, the data reader of
 ## every front-end.  Errors on the first failure, so that CTest can run it:
 ## @example
-## octave --no-gui -q --eval "addpath ('octave'); addpath ('tests/octave'); test_contsid_getdata"
+## octave --no-gui -q --eval "addpath octave tests/octave; test_contsid_getdata"
 ## @end example
 ## The private folder is put on the path for the duration of the test.
 ## Covers numeric (y, u, Ts) and (y, u, t) data, iddata objects built here

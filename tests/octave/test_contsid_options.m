@@ -4,7 +4,7 @@
 ## of every front-end.  Errors on the first failure, so that CTest can run
 ## it:
 ## @example
-## octave --no-gui -q --eval "addpath ('octave'); addpath ('tests/octave'); test_contsid_options"
+## octave --no-gui -q --eval "addpath octave tests/octave; test_contsid_options"
 ## @end example
 ## The private folder is put on the path for the duration of the test.
 ## @end deftypefn
