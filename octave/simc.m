@@ -50,7 +50,9 @@
 ## @item controller, r2
 ## closed loop u = r1 + C(q^-1) (r2 - y) (thesis eq. 2.39): the controller
 ## as a struct with fields @code{num} and @code{den} (coefficients of
-## q^0, q^-1, ..), and the N-by-1 reference r2; the input data are then r1.
+## q^0, q^-1, ..), or with fields @code{kp}, @code{ki}, @code{kd} for the
+## backward-Euler PID kp + ki Ts/(1 - q^-1) + (kd/Ts)(1 - q^-1) (thesis
+## eq. 2.55); and the N-by-1 reference r2; the input data are then r1.
 ## The measured y (with noise) is fed back.
 ## @end table
 ##
@@ -101,7 +103,7 @@ function varargout = simc (varargin)
     error ("simc:badInput", "simc: substeps must be an integer in [1, 1e4]");
   endif
   x0 = real_matrix (fname, opts.x0, "x0");
-  [c_num, c_den, r2] = parse_controller (fname, opts, n);
+  [c_num, c_den, r2] = parse_controller (fname, opts, n, t);
 
   given = ! [isempty(opts.SNR), isempty(opts.noisevar), isempty(opts.noise)];
   if (sum (given) > 1)
@@ -285,7 +287,7 @@ function [u, t, intersample, rest] = parse_input (fname, args)
   rest = args(3:end);
 endfunction
 
-function [c_num, c_den, r2] = parse_controller (fname, opts, n)
+function [c_num, c_den, r2] = parse_controller (fname, opts, n, Ts)
   c_num = [];
   c_den = [];
   r2 = [];
@@ -296,9 +298,20 @@ function [c_num, c_den, r2] = parse_controller (fname, opts, n)
     endif
     return;
   endif
+  if (isstruct (C) && isscalar (C) && all (isfield (C, {"kp", "ki", "kd"})))
+    ## Backward-Euler PID, the reading of thesis eq. (2.55) that keeps
+    ## example 2.4.6 stable:  kp + ki Ts/(1 - q^-1) + (kd/Ts)(1 - q^-1).
+    g = cellfun (@is_finite_scalar, {C.kp, C.ki, C.kd});
+    if (! all (g) || ! isscalar (Ts) || ! (Ts > 0))
+      error ("simc:badInput", ...
+             "simc: a PID controller needs real scalars kp, ki, kd and a constant Ts");
+    endif
+    num = [C.kp + C.ki * Ts + C.kd / Ts, -C.kp - 2 * C.kd / Ts, C.kd / Ts];
+    C = struct ("num", num, "den", [1 -1]);
+  endif
   if (! isstruct (C) || ! isscalar (C) || ! all (isfield (C, {"num", "den"})))
     error ("simc:badInput", ...
-           "simc: controller must be a struct with fields num and den");
+           "simc: controller must be a struct with fields num and den, or kp, ki and kd");
   endif
   c_num = real_matrix (fname, C.num, "controller.num");
   c_den = real_matrix (fname, C.den, "controller.den");
@@ -318,6 +331,10 @@ function [c_num, c_den, r2] = parse_controller (fname, opts, n)
     error ("simc:dimensionMismatch", "simc: r2 must have one value per sample");
   endif
   r2 = r2(:);
+endfunction
+
+function tf = is_finite_scalar (v)
+  tf = isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
 endfunction
 
 function s = check_intersample (fname, s)
@@ -374,6 +391,10 @@ endfunction
 %! [y, x, uc] = simc (struct ("B", 2, "F", [1 1.5]), zeros (n, 1), Ts, ...
 %!                    "controller", C, "r2", ones (n, 1));
 %! assert (y(end), 1, 1e-3);   # the integral action removes the error
+%! y2 = simc (struct ("B", 2, "F", [1 1.5]), zeros (n, 1), Ts, ...
+%!            "controller", struct ("kp", 0.8, "ki", 1.2, "kd", 0), ...
+%!            "r2", ones (n, 1));
+%! assert (y2, y, 1e-12);      # the same PI given by its gains
 
 %!error id=simc:badInput simc ()
 %!error id=simc:badInput simc (struct ("B", 1), ones (5, 1), 0.1)
@@ -396,6 +417,7 @@ endfunction
 %!error id=simc:badOption simc ([1 1], [1 1 0], ones (5, 1), 0.1, "r2", ones (5, 1))
 %!error id=simc:badInput simc ([1 1], [1 1 0], ones (5, 1), 0.1, "controller", 3)
 %!error id=simc:badInput simc ([1 1], [1 1 0], ones (5, 1), 0.1, "controller", struct ("num", 1, "den", 0))
+%!error id=simc:badInput simc ([1 1], [1 1 0], ones (5, 1), 0.1, "controller", struct ("kp", 1, "ki", "a", "kd", 0))
 %!error id=simc:dimensionMismatch simc ([1 1], [1 1 0], ones (5, 1), 0.1, "noise", ones (3, 1))
 %!error id=simc:badInput simc ([1 1], [1 1 0], ones (5, 1), 0.1, "noisevar", -1)
 %!error id=simc:badInput simc ([1 1], [1 1 0], ones (5, 1), 0.1, "SNR", "high")

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <complex>
+
 namespace ctid {
 namespace {
 
@@ -36,6 +38,33 @@ TEST(ModelOrders, Validation) {
   ModelOrders mismatch = siso_orders(2, 1, 0);
   mismatch.nk = {0, 1};
   EXPECT_EQ(validate_orders(mismatch).code(), ErrorCode::kDimensionMismatch);
+}
+
+// The state-space form has the transfer function B(s)/A(s): compare
+// H (sI - F)^-1 G + J with the polynomials evaluated at s = j w.
+TEST(ModelOrders, StateSpaceFormMatchesTransferFunction) {
+  for (int nb : {1, 2, 3}) {
+    const ModelOrders orders = siso_orders(2, nb, 0);
+    Eigen::VectorXd all_coefficients(5);
+    all_coefficients << 1.3, 4.0, 2.0, -0.7, 0.9;
+    const Eigen::VectorXd theta = all_coefficients.head(2 + nb);
+    const StateSpace<double> ss = to_state_space(orders, theta, 0);
+    for (double w : {0.0, 0.3, 1.0, 7.0}) {
+      const std::complex<double> s(0, w);
+      const std::complex<double> a = s * s + theta(0) * s + theta(1);
+      std::complex<double> b = 0;
+      for (int l = 0; l < nb; ++l) b = b * s + theta(2 + l);
+      const Eigen::MatrixXcd resolvent =
+          (s * Eigen::MatrixXcd::Identity(2, 2) - ss.F.cast<std::complex<double>>())
+              .inverse();
+      const std::complex<double> g =
+          (ss.H.cast<std::complex<double>>() * resolvent *
+           ss.G.cast<std::complex<double>>())(0, 0) +
+          ss.J(0, 0);
+      EXPECT_LT(std::abs(g - b / a), 1e-12 * std::abs(b / a) + 1e-14)
+          << "nb " << nb << " w " << w;
+    }
+  }
 }
 
 }  // namespace

@@ -99,4 +99,40 @@ Vector<S> numerator_of(const ModelOrders& orders, const Vector<S>& theta,
   return theta.segment(orders.numerator_offset(input), orders.nb[input]);
 }
 
+// State-space form of the frozen model of input j, controllable canonical:
+//   w' = F w + G u_j,  x = H w + J u_j,  w = [w, w', .., w^(na-1)],
+// with F the companion matrix of A(p) and x = B_j(p) w (the highest
+// derivative, present when nb_j = na + 1, gives the feedthrough J).
+template <typename S>
+struct StateSpace {
+  Matrix<S> F, G, H, J;
+};
+
+template <typename S>
+StateSpace<S> to_state_space(const ModelOrders& orders, const Vector<S>& theta,
+                             int input) {
+  const int na = orders.na;
+  StateSpace<S> ss;
+  ss.F = Matrix<S>::Zero(na, na);
+  for (int i = 0; i + 1 < na; ++i) ss.F(i, i + 1) = 1;
+  for (int c = 0; c < na; ++c) ss.F(na - 1, c) = -theta(na - 1 - c);
+  ss.G = Matrix<S>::Zero(na, 1);
+  ss.G(na - 1, 0) = 1;
+  ss.H = Matrix<S>::Zero(1, na);
+  ss.J = Matrix<S>::Zero(1, 1);
+  const int nb = orders.nb[input];
+  const int offset = orders.numerator_offset(input);
+  for (int l = 0; l < nb; ++l) {
+    const int derivative = nb - 1 - l;
+    const S b = theta(offset + l);
+    if (derivative < na) {
+      ss.H(0, derivative) += b;
+    } else {  // w^(na) = u - sum a_i w^(na-i)
+      ss.J(0, 0) += b;
+      ss.H += b * ss.F.row(na - 1);
+    }
+  }
+  return ss;
+}
+
 }  // namespace ctid
