@@ -2,6 +2,8 @@
 // sampling), the model orders and the SVF settings.
 #pragma once
 
+#include "ctid/adaptation.hpp"
+#include "ctid/controller.hpp"
 #include "ctid/model.hpp"
 #include "ctid/record.hpp"
 #include "ctid/svf_regressor.hpp"
@@ -58,6 +60,40 @@ inline bool read_normalised(const Gateway& g, const mxArray* a) {
   if (s == "normalised" || s == "normalized") return true;
   if (s == "ordinary") return false;
   g.fail("badOption", "the SVF form must be 'normalised' or 'ordinary'");
+}
+
+// adm ('ff' or 'kf') and adg (forgetting factor or np-by-np Qn).
+inline Adaptation<double> read_adaptation(const Gateway& g, const mxArray* adm,
+                                          const mxArray* adg, long np) {
+  const std::string kind = g.text(adm, "adm");
+  if (kind == "ff") {
+    return ForgettingFactorAdaptation<double>(g.scalar(adg, "adg"));
+  }
+  if (kind == "kf") {
+    return KalmanAdaptation<double>(g.eigen_matrix(adg, "adg (Qn)", np, np));
+  }
+  g.fail("badOption", "adm must be 'ff' or 'kf', got '" + kind + "'");
+}
+
+// th0 (np-by-1) and P0 (np-by-np), each possibly [] (defaults).
+inline void read_initial_estimate(const Gateway& g, const mxArray* th0,
+                                  const mxArray* P0, long np,
+                                  Vector<double>* theta0,
+                                  Matrix<double>* p0) {
+  if (!mxIsEmpty(th0)) *theta0 = g.eigen_matrix(th0, "th0", np, 1);
+  if (!mxIsEmpty(P0)) *p0 = g.eigen_matrix(P0, "P0", np, np);
+}
+
+// A discrete transfer function from numerator and denominator rows.
+inline DiscreteTransferFunction<double> read_transfer_function(
+    const Gateway& g, const mxArray* num, const mxArray* den,
+    const std::string& what) {
+  DiscreteTransferFunction<double> tf;
+  g.require_real_double(num, what + " numerator");
+  g.require_real_double(den, what + " denominator");
+  tf.numerator = g.eigen_matrix(num, what + " numerator").reshaped();
+  tf.denominator = g.eigen_matrix(den, what + " denominator").reshaped();
+  return tf;
 }
 
 }  // namespace ctid::mex

@@ -30,22 +30,10 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   config.svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
   config.svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
   const long np = config.orders.num_parameters();
-  const std::string adm = g.text(prhs[10], "adm");
-  if (adm == "ff") {
-    config.adaptation =
-        ctid::ForgettingFactorAdaptation<double>(g.scalar(prhs[11], "adg"));
-  } else if (adm == "kf") {
-    config.adaptation = ctid::KalmanAdaptation<double>(
-        g.eigen_matrix(prhs[11], "adg (Qn)", np, np));
-  } else {
-    g.fail("badOption", "adm must be 'ff' or 'kf', got '" + adm + "'");
-  }
-  if (!mxIsEmpty(prhs[12])) {
-    config.theta0 = g.eigen_matrix(prhs[12], "th0", np, 1);
-  }
-  if (!mxIsEmpty(prhs[13])) {
-    config.P0 = g.eigen_matrix(prhs[13], "P0", np, np);
-  }
+  config.adaptation =
+      ctid::mex::read_adaptation(g, prhs[10], prhs[11], np);
+  ctid::mex::read_initial_estimate(g, prhs[12], prhs[13], np, &config.theta0,
+                                   &config.P0);
   g.check(ctid::validate(config));
   g.check(ctid::validate_record(record, config.orders));
 

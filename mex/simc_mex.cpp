@@ -71,12 +71,8 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const double* r2 = nullptr;
   if (!mxIsEmpty(prhs[11])) {
     config.closed_loop = true;
-    g.require_real_double(prhs[11], "the controller numerator");
-    g.require_real_double(prhs[12], "the controller denominator");
-    config.controller.numerator =
-        g.eigen_matrix(prhs[11], "the controller numerator").reshaped();
-    config.controller.denominator =
-        g.eigen_matrix(prhs[12], "the controller denominator").reshaped();
+    config.controller = ctid::mex::read_transfer_function(
+        g, prhs[11], prhs[12], "the controller");
     r2 = g.matrix(prhs[13], "r2", n, 1);
   }
   ctid::LtvSimulator<double> simulator;

@@ -88,7 +88,8 @@
 function varargout = rlssvf (varargin)
   defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
                      "P0", [], "svf", "normalised");
-  [d, orders, opts] = contsid_recursive_args ("rlssvf", defaults, varargin{:});
+  [d, orders, opts] = contsid_recursive_args ("rlssvf", "a", defaults,
+                                             varargin{:});
   o = contsid_recursive_options ("rlssvf", opts, orders.np);
   if (d.uniform)
     t = d.Ts;

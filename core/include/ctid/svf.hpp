@@ -148,6 +148,13 @@ class FilterChannel {
     out_(n_) = gain * highest;
   }
 
+  // Replaces s(t_k) of the last step by `s` (ZOH only, where the state at
+  // t_k does not depend on s(t_k)): used to close an algebraic loop.
+  void replace_last_input(S gain, S s) {
+    out_(n_) += gain * (s - s_prev_);
+    s_prev_ = s;
+  }
+
   const Vector<S>& outputs() const { return out_; }
   const Vector<S>& state() const { return z_; }
 

@@ -1,0 +1,243 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{thm}, @var{yh}, @var{pset}, @var{info}] =} contsid_riv (@var{fname}, @var{nout}, @dots{})
+## Shared back-end of rivsvf, rsrivc, clrivsvf and clrsrivc: parses the
+## data, @var{nn} and the options, reorders between the public parameter
+## order ([a b] for the SVF methods, [b f] for the SRIVC ones) and the
+## core's [a b], and calls the compiled gateway for @var{nout} outputs.
+## @end deftypefn
+
+function varargout = contsid_riv (fname, nout, varargin)
+  srivc_form = any (strcmp (fname, {"rsrivc", "clrsrivc"}));
+  closed = strncmp (fname, "cl", 2);
+  if (srivc_form)
+    method = "rsrivc";
+    form = "f";
+  else
+    method = "rivsvf";
+    form = "a";
+  endif
+  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
+                     "P0", [], "svf", "normalised", "tsiv", [],
+                     "dtupdate", [], "stability", "keep", "mtheta", [],
+                     "prefilter", "unit", "A", [], "controller", [],
+                     "r1", [], "r2", []);
+  [d, orders, opts] = contsid_recursive_args (fname, form, defaults,
+                                              varargin{:});
+  np = orders.np;
+  na = orders.na;
+  ## Public order -> core order [a b].
+  if (srivc_form)
+    perm = [na+1:np, 1:na];         # thm_public = thm_core(:, perm)
+  else
+    perm = 1:np;
+  endif
+  iperm(perm) = 1:np;
+
+  A = check_A (fname, opts.A, na, srivc_form);
+  if (isempty (opts.lambda_svf) && ! isempty (A))
+    ## The RLSSVF start needs a cut-off: the geometric mean of A's roots.
+    opts.lambda_svf = A(end) ^ (1 / na);
+  endif
+  o = contsid_recursive_options (fname, opts, np);
+  adg = o.adg;
+  if (strcmp (o.adm, "kf"))
+    adg = adg(iperm, iperm);
+  endif
+  th0 = o.th0;
+  if (! isempty (th0))
+    th0 = th0(iperm);
+  endif
+  P0 = o.P0;
+  if (! isempty (P0))
+    P0 = P0(iperm, iperm);
+  endif
+
+  if (d.uniform)
+    t = d.Ts;
+    duration = (rows (d.y) - 1) * d.Ts;
+  else
+    t = d.t;
+    duration = d.t(end) - d.t(1);
+  endif
+  tsiv = opts.tsiv;
+  if (isempty (tsiv))
+    tsiv = duration / 10;                # CONTSID default
+  endif
+  check_scalar (fname, tsiv, "tsiv");
+  if (tsiv < 0 || tsiv > duration * (1 + 1e-12))
+    error ([fname ":badInput"], ...
+           "%s: tsiv = %g s lies outside the record [0, %g] s", fname, tsiv,
+           duration);
+  endif
+  dtupdate = opts.dtupdate;
+  if (isempty (dtupdate))
+    dtupdate = 0;                        # every sample
+  else
+    check_scalar (fname, dtupdate, "dtupdate");
+    if (d.uniform && dtupdate < d.Ts * (1 - 1e-9))
+      error ([fname ":badInput"], ...
+             "%s: dtupdate (%g s) must not be below the sampling interval (%g s)",
+             fname, dtupdate, d.Ts);
+    endif
+  endif
+  if (! ischar (opts.stability)
+      || ! any (strcmpi (opts.stability, {"keep", "reflect"})))
+    error ([fname ":badOption"], "%s: stability must be 'keep' or 'reflect'",
+           fname);
+  endif
+  if (! ischar (opts.prefilter)
+      || ! any (strcmpi (opts.prefilter, {"unit", "monic"})))
+    error ([fname ":badOption"], "%s: prefilter must be 'unit' or 'monic'",
+           fname);
+  endif
+  [m_num, m_den] = check_mtheta (fname, opts.mtheta);
+
+  c_num = []; c_den = []; r1 = []; r2 = [];
+  if (closed)
+    n = rows (d.y);
+    [c_num, c_den] = check_controller (fname, opts.controller, d);
+    if (isempty (opts.r1) && isempty (opts.r2))
+      error ([fname ":badOption"], ...
+             "%s: give the external signals r1 and/or r2 (the other is 0)",
+             fname);
+    endif
+    r1 = check_signal (fname, opts.r1, n, "r1");
+    r2 = check_signal (fname, opts.r2, n, "r2");
+    if (orders.nb > 0 && columns (d.u) != 1)
+      error ([fname ":badInput"], "%s: closed loop needs a single input", fname);
+    endif
+  else
+    if (! isempty (opts.controller) || ! isempty (opts.r1)
+        || ! isempty (opts.r2))
+      error ([fname ":badOption"], ...
+             "%s: controller, r1 and r2 belong to the closed-loop routines",
+             fname);
+    endif
+  endif
+
+  outs = cell (1, max (1, nout));
+  try
+    [outs{:}] = riv_mex (fname, d.y, d.u, t, d.intersample, na, orders.nb,
+                         orders.nk, o.lambda_svf, o.svf, o.adm, adg, th0, P0,
+                         method, tsiv, dtupdate, lower (opts.stability),
+                         m_num, m_den, lower (opts.prefilter), A, c_num,
+                         c_den, r1, r2);
+  catch err
+    contsid_rethrow (err);
+  end_try_catch
+  outs{1} = outs{1}(:, perm);
+  if (numel (outs) >= 3)
+    outs{3} = outs{3}(perm, perm, :);
+  endif
+  if (numel (outs) >= 4)
+    outs{4} = struct ("stability_rejections", outs{4}, "tsiv", tsiv);
+  endif
+  varargout = outs;
+endfunction
+
+function A = check_A (fname, A, na, allowed)
+  if (isempty (A))
+    A = [];
+    return;
+  endif
+  if (! allowed)
+    error ([fname ":badOption"], "%s: the option A belongs to rsrivc", fname);
+  endif
+  if (! isnumeric (A) || ! isreal (A) || ! isvector (A)
+      || any (! isfinite (A)))
+    error ([fname ":badInput"], "%s: A must be a finite real vector", fname);
+  endif
+  A = double (A(:).');
+  if (numel (A) == na + 1)
+    A = A(2:end) / A(1);
+  elseif (numel (A) != na)
+    error ([fname ":dimensionMismatch"], ...
+           "%s: A must be [1 a1 .. a_nf] (%d coefficients)", fname, na + 1);
+  endif
+  if (any (real (roots ([1 A])) >= 0))
+    error ([fname ":badInput"], "%s: A must be a stable polynomial", fname);
+  endif
+endfunction
+
+function [num, den] = check_mtheta (fname, m)
+  num = []; den = [];
+  if (isempty (m) || (ischar (m) && strcmpi (m, "delay")))
+    return;                              # default q^-1 in the core
+  endif
+  if (ischar (m) && strcmpi (m, "none"))
+    num = 1; den = 1;
+    return;
+  endif
+  if (isnumeric (m))
+    m = struct ("num", m, "den", 1);     # FIR
+  endif
+  if (! isstruct (m) || ! isscalar (m) || ! all (isfield (m, {"num", "den"})))
+    error ([fname ":badInput"], ...
+           "%s: mtheta must be 'delay', 'none', FIR taps or a struct with num and den",
+           fname);
+  endif
+  num = m.num; den = m.den;
+  if (! isnumeric (num) || ! isnumeric (den) || ! isreal (num)
+      || ! isreal (den) || isempty (num) || isempty (den)
+      || ! isvector (num) || ! isvector (den))
+    error ([fname ":badInput"], "%s: mtheta.num and .den must be real vectors",
+           fname);
+  endif
+  num = double (num(:).'); den = double (den(:).');
+endfunction
+
+function [num, den] = check_controller (fname, C, d)
+  if (isempty (C))
+    error ([fname ":badOption"], "%s: the controller is required", fname);
+  endif
+  if (isstruct (C) && isscalar (C) && all (isfield (C, {"kp", "ki", "kd"})))
+    if (! d.uniform)
+      error ([fname ":badInput"], "%s: a PID needs a constant Ts", fname);
+    endif
+    g = [C.kp, C.ki, C.kd];
+    if (! isnumeric (g) || ! isreal (g) || numel (g) != 3 || any (! isfinite (g)))
+      error ([fname ":badInput"], "%s: kp, ki, kd must be real scalars", fname);
+    endif
+    Ts = d.Ts;
+    C = struct ("num", [g(1) + g(2) * Ts + g(3) / Ts, -g(1) - 2 * g(3) / Ts, g(3) / Ts],
+                "den", [1 -1]);
+  endif
+  if (! isstruct (C) || ! isscalar (C) || ! all (isfield (C, {"num", "den"})))
+    error ([fname ":badInput"], ...
+           "%s: controller must be a struct with num and den, or kp, ki and kd",
+           fname);
+  endif
+  num = C.num; den = C.den;
+  if (! isnumeric (num) || ! isnumeric (den) || ! isreal (num)
+      || ! isreal (den) || isempty (num) || isempty (den) || ! isvector (num)
+      || ! isvector (den) || any (! isfinite ([num(:); den(:)])) || den(1) == 0)
+    error ([fname ":badInput"], ...
+           "%s: controller num and den must be finite vectors with den(1) != 0",
+           fname);
+  endif
+  num = double (num(:).'); den = double (den(:).');
+endfunction
+
+function r = check_signal (fname, r, n, what)
+  if (isempty (r))
+    r = zeros (n, 1);
+    return;
+  endif
+  if (! isnumeric (r) || ! isreal (r) || ! isvector (r) || any (! isfinite (r)))
+    error ([fname ":badInput"], "%s: %s must be a finite real vector", fname,
+           what);
+  endif
+  if (numel (r) != n)
+    error ([fname ":dimensionMismatch"], ...
+           "%s: %s must have one value per sample (%d), got %d", fname, what,
+           n, numel (r));
+  endif
+  r = double (r(:));
+endfunction
+
+function check_scalar (fname, v, what)
+  if (! isnumeric (v) || ! isreal (v) || ! isscalar (v) || ! isfinite (v))
+    error ([fname ":badInput"], "%s: %s must be a finite real scalar", fname,
+           what);
+  endif
+endfunction
