@@ -19,17 +19,35 @@
 
 namespace ctid {
 
+namespace detail {
+template <typename M, typename S>
+void zoh_exponential(const Matrix<S>& F, const Matrix<S>& G, S h,
+                     Matrix<S>& Phi, Matrix<S>& Gamma) {
+  const Eigen::Index n = F.rows();
+  const Eigen::Index m = G.cols();
+  M augmented = M::Zero(n + m, n + m);
+  augmented.topLeftCorner(n, n) = F * h;
+  augmented.topRightCorner(n, m) = G * h;
+  const M e = augmented.exp();
+  Phi = e.topLeftCorner(n, n);
+  Gamma = e.topRightCorner(n, m);
+}
+}  // namespace detail
+
+// Small systems (the usual case: a filter of order <= 11) use matrices of
+// bounded size on the stack, so a rediscretisation allocates only when
+// Phi/Gamma change size.
 template <typename S>
 void zoh_discretize(const Matrix<S>& F, const Matrix<S>& G, S h,
                     Matrix<S>& Phi, Matrix<S>& Gamma) {
-  const Eigen::Index n = F.rows();
-  const Eigen::Index m = G.cols();
-  Matrix<S> augmented = Matrix<S>::Zero(n + m, n + m);
-  augmented.topLeftCorner(n, n) = F * h;
-  augmented.topRightCorner(n, m) = G * h;
-  const Matrix<S> e = augmented.exp();
-  Phi = e.topLeftCorner(n, n);
-  Gamma = e.topRightCorner(n, m);
+  constexpr int kMaxSmall = 12;
+  if (F.rows() + G.cols() <= kMaxSmall) {
+    using Small = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, 0,
+                                kMaxSmall, kMaxSmall>;
+    detail::zoh_exponential<Small, S>(F, G, h, Phi, Gamma);
+  } else {
+    detail::zoh_exponential<Matrix<S>, S>(F, G, h, Phi, Gamma);
+  }
 }
 
 template <typename S>

@@ -208,7 +208,7 @@ class RecursiveIv {
     const int nu = orders.num_inputs();
     aux_disc_.ensure(h);
     signal_disc_.ensure(h);
-    input_disc_.ensure(h);
+    if (config_.method == IvMethod::kRivsvf) input_disc_.ensure(h);
 
     // RLSSVF regression, always run so that its filters stay settled.
     ls_regressor_.step(u, y, h);
@@ -227,7 +227,7 @@ class RecursiveIv {
     }
     int offset = na;
     for (int j = 0; j < nu; ++j) {
-      input_channels_[j].step(input_disc_, gain_, delays_[j].push(u[j]));
+      input_channels_[j].step(input_filter(), gain_, delays_[j].push(u[j]));
       const Vector<S>& uf = input_channels_[j].outputs();
       const int nb = orders.nb[j];
       for (int l = 0; l < nb; ++l) phi_(offset + l) = uf(nb - 1 - l);
@@ -302,9 +302,15 @@ class RecursiveIv {
       aux_channels_[0].replace_last_input(S(1), uhat);
       controller_.step(r2 - x);
     }
-    uhat_channel_.step(input_disc_, gain_, uhat_delay_.push(uhat));
+    uhat_channel_.step(input_filter(), gain_, uhat_delay_.push(uhat));
     last_xhat_ = x;
     return x;
+  }
+
+  // The input's filter: RSRIVC's prefilter has the auxiliary model's
+  // denominator and rule, so the two share one discretisation.
+  const FilterDiscretization<S>& input_filter() const {
+    return config_.method == IvMethod::kRsrivc ? aux_disc_ : input_disc_;
   }
 
   S numerator_output(int j, const Vector<S>& w) const {
@@ -349,7 +355,6 @@ class RecursiveIv {
     aux_disc_.set_denominator(theta_fb_.head(na));
     if (config_.method == IvMethod::kRsrivc) {
       signal_disc_.set_denominator(theta_fb_.head(na));
-      input_disc_.set_denominator(theta_fb_.head(na));
       gain_ = config_.prefilter_gain == PrefilterGain::kUnitStaticGain
                   ? theta_fb_(na - 1)
                   : S(1);

@@ -71,20 +71,30 @@ class FilterDiscretization {
     }
   }
 
-  // Makes Phi and Gamma those of the interval h.
+  // Makes Phi and Gamma those of the interval h. The work matrices are
+  // members, so this allocates only on the first call.
   void ensure(S h) {
     const S tolerance = 64 * std::numeric_limits<S>::epsilon();
     if (!dirty_ && std::abs(h - h_) <= tolerance * h_) return;
-    const Matrix<S> F = companion_matrix<S>(d_);
-    Matrix<S> G = Matrix<S>::Zero(n_, 1);
-    G(n_ - 1, 0) = 1;
-    Matrix<S> Gamma;
+    F_.setZero(n_, n_);
+    for (int i = 0; i + 1 < n_; ++i) F_(i, i + 1) = 1;
+    for (int j = 0; j < n_; ++j) F_(n_ - 1, j) = -d_(n_ - 1 - j);
+    G_.setZero(n_, 1);
+    G_(n_ - 1, 0) = 1;
     if (intersample_ == InterSample::kZoh) {
-      zoh_discretize<S>(F, G, h, Phi_, Gamma);
+      zoh_discretize<S>(F_, G_, h, Phi_, Gamma_);
     } else {
-      trapezoidal_discretize<S>(F, G, h, Phi_, Gamma);
+      // (I - h/2 F)^-1 (I + h/2 F) and (I - h/2 F)^-1 G h/2, see
+      // discretization.hpp.
+      work_ = -(h / 2) * F_;
+      work_.diagonal().array() += 1;
+      lu_.compute(work_);
+      work_ = (h / 2) * F_;
+      work_.diagonal().array() += 1;
+      Phi_.noalias() = lu_.solve(work_);
+      Gamma_.noalias() = lu_.solve(G_ * (h / 2));
     }
-    gamma_ = Gamma.col(0);
+    gamma_ = Gamma_.col(0);
     h_ = h;
     dirty_ = false;
   }
@@ -101,6 +111,8 @@ class FilterDiscretization {
   Vector<S> d_;
   Matrix<S> Phi_;
   Vector<S> gamma_;
+  Matrix<S> F_, G_, Gamma_, work_;
+  Eigen::PartialPivLU<Matrix<S>> lu_;
   S h_ = 0;
   bool dirty_ = true;
 };
