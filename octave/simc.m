@@ -12,7 +12,8 @@
 ## @strong{Model}
 ## @table @var
 ## @item M
-## a time-invariant model: a struct with fields @code{B} (numerator
+## a time-invariant model: an @code{idctm} (from @code{srivc}, @code{lssvf},
+## ...), or a struct with fields @code{B} (numerator
 ## coefficients in descending powers of p; a cell array of rows for several
 ## inputs), @code{F} (denominator, descending powers, normalised to be monic)
 ## and optionally @code{nk} (input delay in samples); or a continuous-time
@@ -155,6 +156,9 @@ endfunction
 
 function [theta, orders, rest] = parse_model (fname, args)
   M = args{1};
+  if (isa (M, "idctm"))
+    M = struct (M);
+  endif
   if (isstruct (M) || isa (M, "tf"))
     if (isa (M, "tf"))
       if (! isct (M))
