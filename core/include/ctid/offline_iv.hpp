@@ -97,8 +97,9 @@ Status validate_problem(const ModelOrders& orders, const SvfSettings<S>& svf,
     return bad_input("closed-loop estimation needs a single input");
   }
   if (svf.u_intersample != InterSample::kZoh) {
-    return bad_input("closed-loop estimation needs ZOH data (the controller "
-                     "output is held between samples)");
+    return bad_input(
+        "closed-loop estimation needs ZOH data (the controller output is held "
+        "between samples)");
   }
   status = validate_controller(*loop.controller);
   if (!status.ok()) return bad_input("controller: " + status.message());
@@ -137,8 +138,8 @@ Status validate_srivc_settings(const ModelOrders& orders,
   }
   HurwitzTest<S> hurwitz(orders.na);
   if (!hurwitz.is_stable(theta.head(orders.na))) {
-    return bad_input("the initial estimate must have a stable (Hurwitz) "
-                     "denominator A(p)");
+    return bad_input(
+        "the initial estimate must have a stable (Hurwitz) denominator A(p)");
   }
   return Status::Ok();
 }
@@ -147,9 +148,9 @@ Status validate_srivc_settings(const ModelOrders& orders,
 // SvfRegressor layout (eq. 1.27) with the adaptive prefilter (2.9)-(2.10)
 // in place of the SVF. Rows: phi_f^T(t_k); target: y_f^(na)(t_k).
 template <typename S>
-void build_prefiltered_regression(const ModelOrders& orders,
-                                  const Vector<S>& d, S gain,
-                                  InterSample y_rule, InterSample u_rule,
+void build_prefiltered_regression(const ModelOrders& orders, const Vector<S>& d,
+                                  S gain, InterSample y_rule,
+                                  InterSample u_rule,
                                   const RecordView<S>& record, Matrix<S>& Phi,
                                   Vector<S>& target) {
   const int na = orders.na;
@@ -228,8 +229,9 @@ Status solve_iv(const Matrix<S>& Z, const Matrix<S>& Phi,
   }
   solution.theta = m_qr.solve(qt_target.head(np));
   if (!solution.theta.allFinite()) {
-    return numerical_failure("the IV solution is not finite; check the "
-                             "scaling of the data and lambda_svf");
+    return numerical_failure(
+        "the IV solution is not finite; check the scaling of the data and "
+        "lambda_svf");
   }
   const Matrix<S> identity = Matrix<S>::Identity(np, np);
   const Matrix<S> r_inverse = z_qr.matrixR()
@@ -258,8 +260,9 @@ Status stabilised(const ModelOrders& orders, const Vector<S>& theta,
   if (hurwitz.is_stable(theta.head(na))) return Status::Ok();
   out.head(na) = reflect_unstable_roots<S>(theta.head(na));
   if (!hurwitz.is_stable(out.head(na))) {
-    return numerical_failure("the estimate has an unstable A(p) whose roots "
-                             "could not be reflected into a stable one");
+    return numerical_failure(
+        "the estimate has an unstable A(p) whose roots could not be reflected "
+        "into a stable one");
   }
   return Status::Ok();
 }
@@ -437,8 +440,8 @@ Status refined_iv(const ModelOrders& orders, const SvfSettings<S>& init_svf,
     ++iteration;
     status = stabilised(orders, previous, drive);
     if (!status.ok()) return status;
-    status = simulate_auxiliary(orders, u_rule, drive, record, loop, xhat,
-                                uhat);
+    status =
+        simulate_auxiliary(orders, u_rule, drive, record, loop, xhat, uhat);
     if (!status.ok()) return status;
     const Vector<S> a = drive.head(na);
     gain = a(na - 1);  // unit static gain a_na / A(p)
@@ -449,8 +452,7 @@ Status refined_iv(const ModelOrders& orders, const SvfSettings<S>& init_svf,
                                  unused);
     status = solve_iv(Z, Phi, target, "instrument", solution);
     if (!status.ok()) return status;
-    const S change = (solution.theta - previous).norm() /
-                     solution.theta.norm();
+    const S change = (solution.theta - previous).norm() / solution.theta.norm();
     converged = change < settings.tolerance;
     previous = solution.theta;
   }
@@ -519,8 +521,8 @@ Status clsrivc(const ModelOrders& orders, const SvfSettings<S>& init_svf,
   loop.r1 = r1;
   loop.r2 = r2;
   loop.controller = &controller;
-  return offline_iv_detail::refined_iv(orders, init_svf, settings, record,
-                                       loop, estimate);
+  return offline_iv_detail::refined_iv(orders, init_svf, settings, record, loop,
+                                       estimate);
 }
 
 }  // namespace ctid
