@@ -7,7 +7,7 @@ function test_gateway_fuzz ()
   tmp = tempname ();
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
-  gateways = {"rlssvf_mex", "simc_mex", "riv_mex"};
+  gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex"};
   for i = 1:numel (gateways)
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
   endfor
@@ -25,6 +25,9 @@ function test_gateway_fuzz ()
   valid.riv_mex = {"clrsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", ...
                    "kf", 1e-4 * eye(3), [], [], "rsrivc", 1, 0.1, "keep", ...
                    [], [], "unit", [], [1 -0.5], [1 -1], u, zeros(50, 1)};
+  valid.offline_mex = {"clsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, ...
+                       "normalised", "clsrivc", 1e-6, 5, [], [1 -0.5], ...
+                       [1 -1], u, zeros(50, 1)};
   ncalls = 0;
   for g = 1:numel (gateways)
     name = gateways{g};
@@ -73,7 +76,7 @@ function n = check_call (name, args, nout)
       error ("test_gateway_fuzz: %s raised an error without identifier: %s",
              name, err.message);
     endif
-    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc):\w+$', "once")))
+    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc|lssvf|ivsvf|srivc|clsrivc):\w+$', "once")))
       ## Octave's own argument errors (e.g. too many outputs) are fine only
       ## when they carry an identifier; ours must use the public name.
       if (! strncmp (err.identifier, "Octave:", 7))

@@ -1,0 +1,60 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{M} =} clsrivc (@var{data}, @var{datacl}, [@var{nb} @var{nf} @var{nk}], @var{Mc})
+## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}] =} clsrivc (@dots{}, @var{name}, @var{value})
+## Closed-loop simplified refined IV estimate (CLSRIVC, thesis eqs.
+## 2.47-2.50) of a continuous-time plant in the loop
+## u = r1 + C(q^-1) (r2 - y) with a known discrete controller.
+##
+## @var{data}: the measured plant input u and output y (iddata, ZOH);
+## @var{datacl}: the external signals, N-by-1 r1 (then r2 = 0) or N-by-2
+## [r1 r2], or an iddata with those as inputs; @var{Mc}: the controller, a
+## struct with @code{num} and @code{den} (powers of q^-1), or @code{kp},
+## @code{ki}, @code{kd} (backward-Euler PID, thesis eq. 2.55), or a
+## discrete control-package tf. Options and outputs as for @code{srivc};
+## the start is the closed-loop IVSVF (eq. 2.44).
+##
+## @strong{Example}
+## @example
+## Ts = 0.01; r1 = prbs (11, 20); N = numel (r1);
+## C = struct ("kp", 0.5, "ki", 2, "kd", 0);
+## [y, x, u] = simc (idctm (200, [1 10 160]), r1, Ts, "controller", C, ...
+##                   "r2", zeros (N, 1), "noisevar", 0.05);
+## M = clsrivc (iddata (y, u, Ts), r1, [1 2 0], C, "lambda", 16)
+## @end example
+## @seealso{srivc, clrsrivc}
+## @end deftypefn
+
+function [M, RT2, YIC] = clsrivc (varargin)
+  [M, RT2, YIC] = contsid_offline ("clsrivc", varargin);
+endfunction
+
+%!shared Ts, r1, C, y, x, u, N
+%! Ts = 0.01; r1 = prbs (11, 20); N = numel (r1);
+%! C = struct ("kp", 0.5, "ki", 2, "kd", 0);
+%! [y, x, u] = simc (idctm (200, [1 10 160]), r1, Ts, "controller", C, ...
+%!                   "r2", zeros (N, 1));
+
+%!test  # noise-free closed loop: exact
+%! M = clsrivc (iddata (x, u, Ts), r1, [1 2 0], C, "lambda", 16);
+%! assert (M.theta, [10 160 200], 1e-7);
+
+%!test  # controller given as num/den and as a discrete tf
+%! Cd = struct ("num", [0.5 + 2 * Ts, -0.5], "den", [1 -1]);
+%! a = clsrivc (iddata (x, u, Ts), [r1 zeros(N, 1)], [1 2 0], Cd, "lambda", 16);
+%! assert (a.theta, [10 160 200], 1e-7);
+%! pkg load control
+%! b = clsrivc (iddata (x, u, Ts), r1, [1 2 0], tf ([0.5 + 2 * Ts, -0.5], [1 -1], Ts), "lambda", 16);
+%! assert (b.theta, a.theta, 1e-9);
+
+%!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0])
+%!error id=clsrivc:dimensionMismatch clsrivc (iddata (x, u, Ts), r1(1:10), [1 2 0], C, "lambda", 16)
+%!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), {1}, [1 2 0], C, "lambda", 16)
+%!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0], 3, "lambda", 16)
+%!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0], struct ("num", 1, "den", 0), "lambda", 16)
+
+%!demo
+%! Ts = 0.01; r1 = prbs (11, 20); N = numel (r1);
+%! C = struct ("kp", 0.5, "ki", 2, "kd", 0);
+%! [y, x, u] = simc (idctm (200, [1 10 160]), r1, Ts, "controller", C, ...
+%!                   "r2", zeros (N, 1), "noisevar", 0.05);
+%! M = clsrivc (iddata (y, u, Ts), r1, [1 2 0], C, "lambda", 16)
