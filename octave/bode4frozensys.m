@@ -2,6 +2,7 @@
 ## @deftypefn  {} {} bode4frozensys (@var{THM}, @var{nn})
 ## @deftypefnx {} {} bode4frozensys (@var{THM}, @var{nn}, "w", @var{w}, @dots{})
 ## @deftypefnx {} {[@var{mag}, @var{phase}, @var{w}] =} bode4frozensys (@dots{})
+## @deftypefnx {} {} bode4frozensys (@var{M}, @dots{})
 ## Bode diagrams of the frozen (time-instant) models of a recursive
 ## estimate: row k of @var{THM} taken as the LTI model of sample k.
 ##
@@ -9,6 +10,9 @@
 ## [a1 .. a_na, b0 .. b_(nb-1)] as returned by @code{rlssvf} and
 ## @code{rivsvf}. For @code{rsrivc}'s [b f] order give
 ## @code{"order", "bf"} and @var{nn} = [nb nf].
+##
+## An @code{idctm} model @var{M} (from @code{srivc}, ...) is shown as its
+## one frozen model.
 ##
 ## Options: @code{"w"} frequencies in rad/s (default 100 points, log-spaced
 ## around the models' corner frequencies); @code{"samples"} the rows of
@@ -29,6 +33,26 @@
 
 function [mag, phase, w] = bode4frozensys (THM, nn, varargin)
   fname = "bode4frozensys";
+  if (nargin >= 1 && isa (THM, "idctm"))
+    ## An offline model: its single (time-invariant) frozen model.
+    m = struct (THM);
+    if (iscell (m.B))
+      error ("bode4frozensys:badInput",
+             "bode4frozensys: a model with several inputs is not supported");
+    endif
+    args = {};
+    if (nargin >= 2)
+      args = [{nn}, varargin];
+    endif
+    theta = [m.F(2:end), m.B];
+    nn = [numel(m.F) - 1, numel(m.B)];
+    if (nargout == 0)
+      bode4frozensys (theta, nn, args{:});
+    else
+      [mag, phase, w] = bode4frozensys (theta, nn, args{:});
+    endif
+    return;
+  endif
   if (nargin < 2)
     error ("bode4frozensys:badInput", "bode4frozensys: expected THM and nn");
   endif
@@ -116,6 +140,11 @@ endfunction
 %!test  # rsrivc order [b f]
 %! [m1] = bode4frozensys ([2.4 4 4], [2 1], "w", [1 2]);
 %! [m2] = bode4frozensys ([4 2.4 4], [1 2], "w", [1 2], "order", "bf");
+%! assert (m1, m2, 1e-12);
+
+%!test  # an idctm model
+%! [m1] = bode4frozensys ([2.4 4 4], [2 1], "w", [1 2]);
+%! [m2] = bode4frozensys (idctm (4, [1 2.4 4]), "w", [1 2]);
 %! assert (m1, m2, 1e-12);
 
 %!error id=bode4frozensys:badInput bode4frozensys ([1 2 3])
