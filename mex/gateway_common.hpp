@@ -5,6 +5,7 @@
 #include "ctid/adaptation.hpp"
 #include "ctid/controller.hpp"
 #include "ctid/model.hpp"
+#include "ctid/rlssvf.hpp"
 #include "ctid/record.hpp"
 #include "ctid/svf_regressor.hpp"
 #include "mex_helpers.hpp"
@@ -94,6 +95,26 @@ inline DiscreteTransferFunction<double> read_transfer_function(
   tf.numerator = g.eigen_matrix(num, what + " numerator").reshaped();
   tf.denominator = g.eigen_matrix(den, what + " denominator").reshaped();
   return tf;
+}
+
+// THM (N-by-np) always, YH (N-by-1) and PSET (np-by-np-by-N) only when
+// requested: the outputs of every recursive routine.
+inline RecursiveOutputs<double> make_recursive_outputs(int nlhs,
+                                                       mxArray* plhs[],
+                                                       std::size_t n,
+                                                       std::size_t np) {
+  RecursiveOutputs<double> out;
+  plhs[0] = make_output_matrix(n, np);
+  out.thm = mxGetPr(plhs[0]);
+  if (nlhs >= 2) {
+    plhs[1] = make_output_matrix(n, 1);
+    out.yh = mxGetPr(plhs[1]);
+  }
+  if (nlhs >= 3) {
+    plhs[2] = make_output_array3(np, np, n);
+    out.pset = mxGetPr(plhs[2]);
+  }
+  return out;
 }
 
 }  // namespace ctid::mex

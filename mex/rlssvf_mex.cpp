@@ -38,17 +38,8 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   g.check(ctid::validate_record(record, config.orders));
 
   const std::size_t n = record.num_samples;
-  plhs[0] = ctid::mex::make_output_matrix(n, np);
-  ctid::RecursiveOutputs<double> out;
-  out.thm = mxGetPr(plhs[0]);
-  if (nlhs >= 2) {
-    plhs[1] = ctid::mex::make_output_matrix(n, 1);
-    out.yh = mxGetPr(plhs[1]);
-  }
-  if (nlhs >= 3) {
-    plhs[2] = ctid::mex::make_output_array3(np, np, n);
-    out.pset = mxGetPr(plhs[2]);
-  }
+  const ctid::RecursiveOutputs<double> out =
+      ctid::mex::make_recursive_outputs(nlhs, plhs, n, np);
   g.check(ctid::run_rlssvf(config, record, out));
 }
 

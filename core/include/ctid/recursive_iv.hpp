@@ -437,38 +437,17 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
   RecursiveIv<S> estimator;
   status = estimator.configure(adjusted);
   if (!status.ok()) return status;
-  const Eigen::Index np = config.orders.num_parameters();
-  const Eigen::Index nu = record.num_inputs;
-  AuxiliaryModel<S> frozen_model;
-  if (out.yh != nullptr) {
-    frozen_model.configure(config.orders, config.svf.u_intersample);
-  }
-  Vector<S> u_k(nu);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    for (Eigen::Index j = 0; j < nu; ++j) u_k(j) = record.u_at(k, j);
-    const S h = record.interval(k);
-    const S r1 = loop.r1 ? loop.r1[k] : S(0);
-    const S r2 = loop.r2 ? loop.r2[k] : S(0);
-    const Vector<S>& theta = estimator.update(u_k.data(), record.y[k], h, r1, r2);
-    for (Eigen::Index i = 0; i < np; ++i) out.thm[i * n + k] = theta(i);
-    if (out.yh != nullptr) {
-      frozen_model.set_parameters(theta);
-      out.yh[k] = frozen_model.step(u_k.data(), h);
-    }
-    if (out.pset != nullptr) {
-      std::memcpy(out.pset + k * np * np, estimator.P().data(),
-                  sizeof(S) * np * np);
-    }
-  }
+  const Status run = record_recursive_run(
+      config.orders, config.svf.u_intersample, record, out,
+      [&](const S* u, S y, S h, Eigen::Index k) -> const Vector<S>& {
+        const S r1 = loop.r1 ? loop.r1[k] : S(0);
+        const S r2 = loop.r2 ? loop.r2[k] : S(0);
+        return estimator.update(u, y, h, r1, r2);
+      },
+      [&]() -> const Matrix<S>& { return estimator.P(); },
+      "the scaling of the data, lambda_svf and tsiv");
   if (rejections != nullptr) *rejections = estimator.stability_rejections();
-  for (Eigen::Index i = 0; i < n * np; ++i) {
-    if (!std::isfinite(out.thm[i])) {
-      return numerical_failure(
-          "the estimates became non-finite; check the scaling of the data, "
-          "lambda_svf and tsiv");
-    }
-  }
-  return Status::Ok();
+  return run;
 }
 
 }  // namespace ctid

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstring>
+#include <string>
 
 #include "ctid/adaptation.hpp"
 #include "ctid/auxiliary_model.hpp"
@@ -122,6 +123,45 @@ struct RecursiveOutputs {
   S* pset = nullptr;
 };
 
+// Runs a recursive estimator over a record: `update(u_k, y_k, h, k)`
+// performs one recursion and returns theta(t_k), `covariance()` gives P
+// after it. Writes THM, and when asked YH (the frozen model of each sample
+// simulated along the record, eq. 1.60) and PSET; fails if an estimate is
+// not finite, with `hint` saying what to check.
+template <typename S, typename Update, typename Covariance>
+Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
+                            const RecordView<S>& record,
+                            const RecursiveOutputs<S>& out, Update&& update,
+                            Covariance&& covariance, const char* hint) {
+  const Eigen::Index n = record.num_samples;
+  const Eigen::Index np = orders.num_parameters();
+  const Eigen::Index nu = record.num_inputs;
+  AuxiliaryModel<S> frozen_model;
+  if (out.yh != nullptr) frozen_model.configure(orders, u_rule);
+  Vector<S> u_k(nu);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    for (Eigen::Index j = 0; j < nu; ++j) u_k(j) = record.u_at(k, j);
+    const S h = record.interval(k);
+    const Vector<S>& theta = update(u_k.data(), record.y[k], h, k);
+    for (Eigen::Index i = 0; i < np; ++i) out.thm[i * n + k] = theta(i);
+    if (out.yh != nullptr) {
+      frozen_model.set_parameters(theta);
+      out.yh[k] = frozen_model.step(u_k.data(), h);
+    }
+    if (out.pset != nullptr) {
+      std::memcpy(out.pset + k * np * np, covariance().data(),
+                  sizeof(S) * np * np);
+    }
+  }
+  for (Eigen::Index i = 0; i < n * np; ++i) {
+    if (!std::isfinite(out.thm[i])) {
+      return numerical_failure(
+          std::string("the estimates became non-finite; check ") + hint);
+    }
+  }
+  return Status::Ok();
+}
+
 template <typename S>
 Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
                   const RecursiveOutputs<S>& out) {
@@ -132,37 +172,13 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
   RlsSvf<S> estimator;
   status = estimator.configure(adjusted);
   if (!status.ok()) return status;
-
-  const Eigen::Index n = record.num_samples;
-  const Eigen::Index np = config.orders.num_parameters();
-  const Eigen::Index nu = record.num_inputs;
-  AuxiliaryModel<S> frozen_model;
-  if (out.yh != nullptr) {
-    frozen_model.configure(config.orders, config.svf.u_intersample);
-  }
-  Vector<S> u_k(nu);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    for (Eigen::Index j = 0; j < nu; ++j) u_k(j) = record.u_at(k, j);
-    const S h = record.interval(k);
-    const Vector<S>& theta = estimator.update(u_k.data(), record.y[k], h);
-    for (Eigen::Index i = 0; i < np; ++i) out.thm[i * n + k] = theta(i);
-    if (out.yh != nullptr) {
-      frozen_model.set_parameters(theta);
-      out.yh[k] = frozen_model.step(u_k.data(), h);
-    }
-    if (out.pset != nullptr) {
-      std::memcpy(out.pset + k * np * np, estimator.P().data(),
-                  sizeof(S) * np * np);
-    }
-  }
-  for (Eigen::Index i = 0; i < n * np; ++i) {
-    if (!std::isfinite(out.thm[i])) {
-      return numerical_failure(
-          "the estimates became non-finite; check the scaling of the data "
-          "and lambda_svf");
-    }
-  }
-  return Status::Ok();
+  return record_recursive_run(
+      config.orders, config.svf.u_intersample, record, out,
+      [&](const S* u, S y, S h, Eigen::Index) -> const Vector<S>& {
+        return estimator.update(u, y, h);
+      },
+      [&]() -> const Matrix<S>& { return estimator.P(); },
+      "the scaling of the data and lambda_svf");
 }
 
 }  // namespace ctid
