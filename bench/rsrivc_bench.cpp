@@ -204,9 +204,10 @@ class SummaryReporter : public benchmark::ConsoleReporter {
   void Finalize() override {
     benchmark::ConsoleReporter::Finalize();
     if (rates_.empty()) return;
-    std::printf("\nThroughput (million samples/s, %lld samples per pass; "
-                "target for RSRIVC-KF: 1):\n",
-                static_cast<long long>(kNumSamples));
+    std::printf(
+        "\nThroughput (million samples/s, %lld samples per pass; "
+        "target for RSRIVC-KF: 1):\n",
+        static_cast<long long>(kNumSamples));
     for (const auto& [name, rate] : rates_) {
       std::printf("  %-36s %8.3f\n", name.c_str(), rate / 1e6);
     }

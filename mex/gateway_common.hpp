@@ -5,8 +5,8 @@
 #include "ctid/adaptation.hpp"
 #include "ctid/controller.hpp"
 #include "ctid/model.hpp"
-#include "ctid/rlssvf.hpp"
 #include "ctid/record.hpp"
+#include "ctid/rlssvf.hpp"
 #include "ctid/svf_regressor.hpp"
 #include "mex_helpers.hpp"
 
@@ -79,8 +79,7 @@ inline Adaptation<double> read_adaptation(const Gateway& g, const mxArray* adm,
 // th0 (np-by-1) and P0 (np-by-np), each possibly [] (defaults).
 inline void read_initial_estimate(const Gateway& g, const mxArray* th0,
                                   const mxArray* P0, long np,
-                                  Vector<double>* theta0,
-                                  Matrix<double>* p0) {
+                                  Vector<double>* theta0, Matrix<double>* p0) {
   if (!mxIsEmpty(th0)) *theta0 = g.eigen_matrix(th0, "th0", np, 1);
   if (!mxIsEmpty(P0)) *p0 = g.eigen_matrix(P0, "P0", np, np);
 }

@@ -8,6 +8,7 @@
 
 #include <mex.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -15,8 +16,6 @@
 #include <new>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "ctid/status.hpp"
 
@@ -89,7 +88,8 @@ class Gateway {
                                   const std::string& what) const {
     require_real_double(a, what);
     const std::size_t n = mxGetNumberOfElements(a);
-    if (mxGetM(a) > 1 && mxGetN(a) > 1) fail("badInput", what + " must be a vector");
+    if (mxGetM(a) > 1 && mxGetN(a) > 1)
+      fail("badInput", what + " must be a vector");
     std::vector<int> out(n);
     const double* p = mxGetPr(a);
     for (std::size_t i = 0; i < n; ++i) {

@@ -10,7 +10,6 @@
 // np values; c_num = [] except for clsrivc. An SRIVC that does not converge
 // returns its last iterate with converged = false (the front-end warns).
 #include "ctid/offline_iv.hpp"
-
 #include "gateway_common.hpp"
 
 namespace {
@@ -39,7 +38,8 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   settings.max_iterations = g.integer(prhs[12], "MaxIter");
   const long np = orders.num_parameters();
   if (!mxIsEmpty(prhs[13])) {
-    settings.theta_init = g.eigen_matrix(prhs[13], "the initial estimate", np, 1);
+    settings.theta_init =
+        g.eigen_matrix(prhs[13], "the initial estimate", np, 1);
   }
   ctid::OfflineEstimate<double> estimate;
   ctid::Status status;

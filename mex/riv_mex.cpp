@@ -12,7 +12,6 @@
 // 'unit' | 'monic'; mtheta_num/den, A: [] for the defaults; c_num = [] for
 // open loop, else the controller C(q^-1) and the N-by-1 r1, r2.
 #include "ctid/recursive_iv.hpp"
-
 #include "gateway_common.hpp"
 
 namespace {
@@ -75,8 +74,8 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::ClosedLoopSignals<double> loop;
   if (!mxIsEmpty(prhs[22])) {
     config.closed_loop = true;
-    config.controller = ctid::mex::read_transfer_function(
-        g, prhs[22], prhs[23], "the controller");
+    config.controller = ctid::mex::read_transfer_function(g, prhs[22], prhs[23],
+                                                          "the controller");
     const long n = record.num_samples;
     loop.r1 = g.matrix(prhs[24], "r1", n, 1);
     loop.r2 = g.matrix(prhs[25], "r2", n, 1);

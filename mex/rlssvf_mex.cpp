@@ -8,7 +8,6 @@
 // forgetting factor or the np-by-np Qn; th0 and P0 may be [] (defaults).
 // YH and PSET are computed only when requested.
 #include "ctid/rlssvf.hpp"
-
 #include "gateway_common.hpp"
 
 namespace {
@@ -22,16 +21,15 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                            std::to_string(nrhs) + " (call rlssvf instead)");
   }
   if (nlhs > 3) g.fail("badInput", "at most 3 outputs (THM, YH, PSET)");
-  const ctid::RecordView<double> record = ctid::mex::read_record(
-      g, prhs[1], prhs[2], prhs[3]);
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   ctid::RlsSvfConfig<double> config;
   config.svf.u_intersample = ctid::mex::read_intersample(g, prhs[4]);
   config.orders = ctid::mex::read_orders(g, prhs[5], prhs[6], prhs[7]);
   config.svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
   config.svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
   const long np = config.orders.num_parameters();
-  config.adaptation =
-      ctid::mex::read_adaptation(g, prhs[10], prhs[11], np);
+  config.adaptation = ctid::mex::read_adaptation(g, prhs[10], prhs[11], np);
   ctid::mex::read_initial_estimate(g, prhs[12], prhs[13], np, &config.theta0,
                                    &config.P0);
   g.check(ctid::validate(config));
@@ -46,7 +44,7 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("rlssvf", {"rlssvf"}, nrhs, prhs, [&](const Gateway& g) {
-    rlssvf_gateway(g, nlhs, plhs, nrhs, prhs);
-  });
+  ctid::mex::run_gateway(
+      "rlssvf", {"rlssvf"}, nrhs, prhs,
+      [&](const Gateway& g) { rlssvf_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

@@ -9,7 +9,6 @@
 // c_num/c_den: [] for open loop, else the controller C(q^-1) of
 // u = r1 + C (r2 - y), with r2 N-by-1.
 #include "ctid/ltv_simulator.hpp"
-
 #include "gateway_common.hpp"
 
 namespace {
@@ -46,10 +45,10 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   config.u_intersample = ctid::mex::read_intersample(g, prhs[3]);
   config.orders = ctid::mex::read_orders(g, prhs[4], prhs[5], prhs[6]);
   if (record.num_inputs != config.orders.num_inputs()) {
-    g.fail("dimensionMismatch",
-           "u has " + std::to_string(record.num_inputs) +
-               " column(s) but the model has " +
-               std::to_string(config.orders.num_inputs()) + " input(s)");
+    g.fail("dimensionMismatch", "u has " + std::to_string(record.num_inputs) +
+                                    " column(s) but the model has " +
+                                    std::to_string(config.orders.num_inputs()) +
+                                    " input(s)");
   }
   if (record.instants != nullptr && config.orders.max_delay() > 0) {
     g.fail("badInput", "nk must be 0 for irregularly sampled data");
@@ -71,8 +70,8 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const double* r2 = nullptr;
   if (!mxIsEmpty(prhs[11])) {
     config.closed_loop = true;
-    config.controller = ctid::mex::read_transfer_function(
-        g, prhs[11], prhs[12], "the controller");
+    config.controller = ctid::mex::read_transfer_function(g, prhs[11], prhs[12],
+                                                          "the controller");
     r2 = g.matrix(prhs[13], "r2", n, 1);
   }
   ctid::LtvSimulator<double> simulator;

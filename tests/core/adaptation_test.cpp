@@ -79,7 +79,8 @@ TEST(ParameterUpdate, ForgettingFactorEqualsExponentiallyWeightedBatch) {
   const Eigen::VectorXd theta0 = Eigen::VectorXd::Zero(np);
   const Eigen::MatrixXd P0 = 1e3 * Eigen::MatrixXd::Identity(np, np);
   const double lambda = 0.97;
-  ParameterUpdate<double> update(np, ForgettingFactorAdaptation<double>(lambda));
+  ParameterUpdate<double> update(np,
+                                 ForgettingFactorAdaptation<double>(lambda));
   update.reset(theta0, P0);
   for (int k = 0; k < r.phi.rows(); ++k) {
     update.update(r.phi.row(k).transpose(), r.y(k));
@@ -123,8 +124,8 @@ TEST(ParameterUpdate, NormalisedKalmanMatchesStandardKalmanFilter) {
   for (int k = 0; k < r.phi.rows(); ++k) {
     const Eigen::VectorXd phi = r.phi.row(k).transpose();
     const Eigen::MatrixXd Pp = P + s * qn;
-    const Eigen::MatrixXd S = phi.transpose() * Pp * phi +
-                              s * Eigen::MatrixXd::Identity(1, 1);
+    const Eigen::MatrixXd S =
+        phi.transpose() * Pp * phi + s * Eigen::MatrixXd::Identity(1, 1);
     const Eigen::VectorXd L = Pp * phi * S.inverse();
     theta += L * (r.y(k) - phi.dot(theta));
     P = Pp - L * phi.transpose() * Pp;

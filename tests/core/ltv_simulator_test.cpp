@@ -162,8 +162,8 @@ TEST(LtvSimulator, ClosedLoopMatchesIndependentDiscretisation) {
     SimulationOutputs<double> out;
     out.x = x.data();
     out.u_applied = u.data();
-    ASSERT_TRUE(sim.simulate(constant(Eigen::Vector2d(a, b)), record,
-                             r2.data(), noise.data(), out)
+    ASSERT_TRUE(sim.simulate(constant(Eigen::Vector2d(a, b)), record, r2.data(),
+                             noise.data(), out)
                     .ok());
     const double phi = std::exp(-a * ts), gamma = b / a * (1 - phi);
     double state = 0, integral = 0;

@@ -54,9 +54,9 @@ TEST(ModelOrders, StateSpaceFormMatchesTransferFunction) {
       const std::complex<double> a = s * s + theta(0) * s + theta(1);
       std::complex<double> b = 0;
       for (int l = 0; l < nb; ++l) b = b * s + theta(2 + l);
-      const Eigen::MatrixXcd resolvent =
-          (s * Eigen::MatrixXcd::Identity(2, 2) - ss.F.cast<std::complex<double>>())
-              .inverse();
+      const Eigen::MatrixXcd resolvent = (s * Eigen::MatrixXcd::Identity(2, 2) -
+                                          ss.F.cast<std::complex<double>>())
+                                             .inverse();
       const std::complex<double> g =
           (ss.H.cast<std::complex<double>>() * resolvent *
            ss.G.cast<std::complex<double>>())(0, 0) +

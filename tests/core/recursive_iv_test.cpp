@@ -53,9 +53,11 @@ Data make_data(int n, double ts, double noise_sd, bool closed, unsigned seed,
   out.x = d.x.data();
   out.y = d.y.data();
   out.u_applied = applied.data();
-  EXPECT_TRUE(sim.simulate([](double, Eigen::VectorXd& th) {
-                th = Eigen::Vector3d(2.4, 4, 4);
-              }, record, d.r2.data(), noise.data(), out).ok());
+  EXPECT_TRUE(
+      sim.simulate([](double,
+                      Eigen::VectorXd& th) { th = Eigen::Vector3d(2.4, 4, 4); },
+                   record, d.r2.data(), noise.data(), out)
+          .ok());
   d.u = applied;
   return d;
 }
@@ -131,7 +133,8 @@ TEST(RecursiveIv, NoiseFreeOpenLoopIsRecovered) {
 
 TEST(RecursiveIv, NoiseFreeClosedLoopIsRecovered) {
   const double ts = 0.01;
-  const DiscreteTransferFunction<double> pi = pid_backward_euler(0.5, 1.0, 0.0, ts);
+  const DiscreteTransferFunction<double> pi =
+      pid_backward_euler(0.5, 1.0, 0.0, ts);
   const Data d = make_data(20000, ts, 0.0, true, 3, &pi);
   for (IvMethod m : {IvMethod::kRivsvf, IvMethod::kRsrivc}) {
     RecursiveIvConfig<double> c = base_config(m);
@@ -171,7 +174,8 @@ TEST(RecursiveIv, IvRemovesTheNoiseBiasOfRlssvf) {
 TEST(RecursiveIv, StabilityPoliciesRecoverFromUnstableEstimates) {
   const double ts = 0.05;
   const Data d = make_data(4000, ts, 0.0, false, 5);
-  for (StabilityPolicy p : {StabilityPolicy::kKeepLast, StabilityPolicy::kReflect}) {
+  for (StabilityPolicy p :
+       {StabilityPolicy::kKeepLast, StabilityPolicy::kReflect}) {
     RecursiveIvConfig<double> c = base_config(IvMethod::kRsrivc);
     c.stability = p;
     long rejections = 0;
@@ -224,11 +228,13 @@ TEST(RecursiveIv, ConfigurationIsValidated) {
   out.thm = thm.data();
   bad = c;
   bad.t_s_iv = 100;
-  EXPECT_EQ(run_recursive_iv(bad, record, {}, out).code(), ErrorCode::kBadInput);
+  EXPECT_EQ(run_recursive_iv(bad, record, {}, out).code(),
+            ErrorCode::kBadInput);
   bad = c;
   bad.t_s_iv = 1;
   bad.dtupdate = 0.05;
-  EXPECT_EQ(run_recursive_iv(bad, record, {}, out).code(), ErrorCode::kBadInput);
+  EXPECT_EQ(run_recursive_iv(bad, record, {}, out).code(),
+            ErrorCode::kBadInput);
 }
 
 }  // namespace

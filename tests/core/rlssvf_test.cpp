@@ -239,8 +239,8 @@ TEST(RlsSvf, IrregularSamplingIsAccepted) {
   const double fine = 1e-3;
   const ModelOrders orders = siso_orders(1, 1, 0);
   const auto u_fine = binary_input(200000, 4000, 8);
-  const auto y_fine = simulate_lti(orders, Eigen::Vector2d(1.5, 3.0), u_fine,
-                                   fine);
+  const auto y_fine =
+      simulate_lti(orders, Eigen::Vector2d(1.5, 3.0), u_fine, fine);
   std::mt19937 rng(9);
   std::uniform_int_distribution<int> gap(5, 15);
   std::vector<double> t, y, u;
@@ -351,8 +351,8 @@ TEST(RlsSvf, RecordIsValidated) {
   config.svf.lambda_svf = 2;
   std::vector<double> y(10, 1.0), u(10, 1.0);
   Status status;
-  run(config, view(std::vector<double>(2, 1.0), std::vector<double>(2, 1.0),
-                   0.1),
+  run(config,
+      view(std::vector<double>(2, 1.0), std::vector<double>(2, 1.0), 0.1),
       &status);
   EXPECT_EQ(status.code(), ErrorCode::kBadInput) << "fewer samples than np";
   y[4] = NAN;

@@ -33,7 +33,8 @@ TEST(HurwitzTest, AgreesWithTheRootsOnRandomPolynomials) {
       for (int i = 0; i < n; ++i) a(i) = coef(rng);
       const bool expected = stable_by_roots(a);
       stable += expected;
-      ASSERT_EQ(test.is_stable(a), expected) << "n " << n << " a " << a.transpose();
+      ASSERT_EQ(test.is_stable(a), expected)
+          << "n " << n << " a " << a.transpose();
     }
   }
   EXPECT_GT(stable, 100) << "the sample must contain stable polynomials";
@@ -49,13 +50,16 @@ TEST(HurwitzTest, RejectsMarginalAndNonFinite) {
 
 TEST(ReflectUnstableRoots, MirrorsIntoTheLeftHalfPlane) {
   // (p - 1)(p + 2) = p^2 + p - 2  ->  (p + 1)(p + 2) = p^2 + 3p + 2.
-  const Eigen::VectorXd r = reflect_unstable_roots<double>(Eigen::Vector2d(1, -2));
+  const Eigen::VectorXd r =
+      reflect_unstable_roots<double>(Eigen::Vector2d(1, -2));
   EXPECT_TRUE(test::MatrixNear(r, Eigen::Vector2d(3, 2), 1e-12));
   // Complex pair 1 +- 2j: p^2 - 2p + 5 -> p^2 + 2p + 5.
-  const Eigen::VectorXd c = reflect_unstable_roots<double>(Eigen::Vector2d(-2, 5));
+  const Eigen::VectorXd c =
+      reflect_unstable_roots<double>(Eigen::Vector2d(-2, 5));
   EXPECT_TRUE(test::MatrixNear(c, Eigen::Vector2d(2, 5), 1e-12));
   HurwitzTest<double> test(2);
-  EXPECT_TRUE(test.is_stable(reflect_unstable_roots<double>(Eigen::Vector2d(0, 4))));
+  EXPECT_TRUE(
+      test.is_stable(reflect_unstable_roots<double>(Eigen::Vector2d(0, 4))));
 }
 
 }  // namespace

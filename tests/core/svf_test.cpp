@@ -117,7 +117,8 @@ TEST(Svf, ZohMatchesFineStepIntegrationWithIrregularSampling) {
 }
 
 // First order lambda/(p + lambda) by Tustin:
-//   y_k = a y_(k-1) + b (s_k + s_(k-1)), a = (2 - lh)/(2 + lh), b = lh/(2 + lh).
+//   y_k = a y_(k-1) + b (s_k + s_(k-1)), a = (2 - lh)/(2 + lh), b = lh/(2 +
+//   lh).
 TEST(Svf, TrapezoidalMatchesClosedFormTustin) {
   const double lambda = 5, h = 0.02;
   StateVariableFilter<double> svf(1, InterSample::kFoh);

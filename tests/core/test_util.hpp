@@ -4,12 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <sstream>
-
-#include <Eigen/Dense>
+#include <string>
 
 namespace ctid::test {
 
@@ -32,8 +31,8 @@ template <typename A, typename B>
       if (!(diff <= tol * scale)) {
         return ::testing::AssertionFailure()
                << "entry (" << i << "," << j << "): " << a(i, j) << " vs "
-               << b(i, j) << ", |diff| = " << diff << " > tol*scale = "
-               << tol * scale << " (tol " << tol << ")";
+               << b(i, j) << ", |diff| = " << diff
+               << " > tol*scale = " << tol * scale << " (tol " << tol << ")";
       }
     }
   }

@@ -57,8 +57,8 @@ class KalmanAdaptation {
 };
 
 template <typename S>
-using Adaptation = std::variant<ForgettingFactorAdaptation<S>,
-                                KalmanAdaptation<S>>;
+using Adaptation =
+    std::variant<ForgettingFactorAdaptation<S>, KalmanAdaptation<S>>;
 
 // Forgetting factor in (0, 1].
 template <typename S>
@@ -78,8 +78,8 @@ Status validate_covariance(const Matrix<S>& M, Eigen::Index np,
   if (M.rows() != np || M.cols() != np) {
     return dimension_mismatch(
         what + " must be " + std::to_string(np) + "-by-" + std::to_string(np) +
-        " (one row and column per parameter), got " +
-        std::to_string(M.rows()) + "-by-" + std::to_string(M.cols()));
+        " (one row and column per parameter), got " + std::to_string(M.rows()) +
+        "-by-" + std::to_string(M.cols()));
   }
   if (!M.allFinite()) return bad_input(what + " must be finite");
   const S scale = M.cwiseAbs().maxCoeff();

@@ -27,8 +27,9 @@ Status validate_controller(const DiscreteTransferFunction<S>& c) {
     return bad_input("the controller coefficients must be finite");
   }
   if (c.denominator(0) == S(0)) {
-    return bad_input("the controller denominator must have a non-zero "
-                     "leading coefficient (a causal controller)");
+    return bad_input(
+        "the controller denominator must have a non-zero "
+        "leading coefficient (a causal controller)");
   }
   return Status::Ok();
 }

@@ -38,12 +38,12 @@ void zoh_exponential(const Matrix<S>& F, const Matrix<S>& G, S h,
 // bounded size on the stack, so a rediscretisation allocates only when
 // Phi/Gamma change size.
 template <typename S>
-void zoh_discretize(const Matrix<S>& F, const Matrix<S>& G, S h,
-                    Matrix<S>& Phi, Matrix<S>& Gamma) {
+void zoh_discretize(const Matrix<S>& F, const Matrix<S>& G, S h, Matrix<S>& Phi,
+                    Matrix<S>& Gamma) {
   constexpr int kMaxSmall = 12;
   if (F.rows() + G.cols() <= kMaxSmall) {
-    using Small = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, 0,
-                                kMaxSmall, kMaxSmall>;
+    using Small = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSmall,
+                                kMaxSmall>;
     detail::zoh_exponential<Small, S>(F, G, h, Phi, Gamma);
   } else {
     detail::zoh_exponential<Matrix<S>, S>(F, G, h, Phi, Gamma);

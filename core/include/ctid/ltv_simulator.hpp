@@ -30,8 +30,8 @@
 #include <vector>
 
 #include "ctid/controller.hpp"
-#include "ctid/discretization.hpp"
 #include "ctid/delay_line.hpp"
+#include "ctid/discretization.hpp"
 #include "ctid/model.hpp"
 #include "ctid/record.hpp"
 
@@ -116,8 +116,9 @@ class LtvSimulator {
         return bad_input("closed-loop simulation needs a single input");
       }
       if (config.u_intersample != InterSample::kZoh) {
-        return bad_input("closed-loop simulation needs a ZOH input "
-                         "(the controller output is held between samples)");
+        return bad_input(
+            "closed-loop simulation needs a ZOH input "
+            "(the controller output is held between samples)");
       }
       status = validate_controller(config.controller);
       if (!status.ok()) return status;
@@ -150,10 +151,9 @@ class LtvSimulator {
     const int nu = orders.num_inputs();
     const Eigen::Index n = record.num_samples;
     if (record.num_inputs != nu) {
-      return dimension_mismatch("the input has " +
-                                std::to_string(record.num_inputs) +
-                                " column(s) but the model has " +
-                                std::to_string(nu) + " input(s)");
+      return dimension_mismatch(
+          "the input has " + std::to_string(record.num_inputs) +
+          " column(s) but the model has " + std::to_string(nu) + " input(s)");
     }
     if (n < 1) return bad_input("the record is empty");
     if (config_.closed_loop && r2 == nullptr) {
@@ -195,7 +195,8 @@ class LtvSimulator {
         x = x_free;
         for (int j = 0; j < nu; ++j) x += feedthrough(theta, j) * u_in(k, j);
         if (out.u_applied) {
-          for (int j = 0; j < nu; ++j) out.u_applied[j * n + k] = record.u_at(k, j);
+          for (int j = 0; j < nu; ++j)
+            out.u_applied[j * n + k] = record.u_at(k, j);
         }
       } else {
         const S d = feedthrough(theta, 0);
@@ -205,8 +206,9 @@ class LtvSimulator {
           const S c0 = controller.feedthrough();
           const S loop = 1 + c0 * d;
           if (std::abs(loop) < 1e3 * std::numeric_limits<S>::epsilon()) {
-            return numerical_failure("the closed loop has a singular "
-                                     "algebraic loop (1 + c0 * b0 = 0)");
+            return numerical_failure(
+                "the closed loop has a singular "
+                "algebraic loop (1 + c0 * b0 = 0)");
           }
           u = (record.u_at(k, 0) + c0 * (r2[k] - e - x_free) +
                controller.free_response()) /
@@ -226,10 +228,9 @@ class LtvSimulator {
       if (out.x) out.x[k] = x;
       if (out.y) out.y[k] = x + e;
       if (!std::isfinite(x)) {
-        return numerical_failure(
-            "the simulated output is not finite at t = " +
-            std::to_string(static_cast<double>(t)) +
-            " (unstable system or closed loop?)");
+        return numerical_failure("the simulated output is not finite at t = " +
+                                 std::to_string(static_cast<double>(t)) +
+                                 " (unstable system or closed loop?)");
       }
       if (k + 1 < n) {
         const S t_next =
@@ -315,9 +316,9 @@ class LtvSimulator {
       const S tolerance = 64 * std::numeric_limits<S>::epsilon();
       if (!(m1_ == m1_prev_ && m2_ == m2_prev_ &&
             std::abs(hs - h_prev_) <= tolerance * hs)) {
-        const Matrix<S> omega = (hs / 2) * (m1_ + m2_) +
-                                (std::sqrt(S(3)) / 12) * hs * hs *
-                                    (m2_ * m1_ - m1_ * m2_);
+        const Matrix<S> omega =
+            (hs / 2) * (m1_ + m2_) +
+            (std::sqrt(S(3)) / 12) * hs * hs * (m2_ * m1_ - m1_ * m2_);
         propagator_ = omega.exp();
         m1_prev_ = m1_;
         m2_prev_ = m2_;

@@ -18,7 +18,7 @@ struct RecordView {
   const S* u = nullptr;  // column-major N-by-num_inputs
   Eigen::Index num_samples = 0;
   Eigen::Index num_inputs = 0;
-  S ts = 0;                // sampling interval when `instants` is null
+  S ts = 0;                     // sampling interval when `instants` is null
   const S* instants = nullptr;  // N strictly increasing instants, or null
 
   S u_at(Eigen::Index k, Eigen::Index j) const {
@@ -69,8 +69,10 @@ Status validate_record(const RecordView<S>& record, const ModelOrders& orders) {
       return bad_input("the sampling instants must be finite");
     }
     if (k > 0 && !(record.instants[k] > record.instants[k - 1])) {
-      return bad_input("the sampling instants must be strictly increasing "
-                       "(sample " + std::to_string(k + 1) + " is not)");
+      return bad_input(
+          "the sampling instants must be strictly increasing "
+          "(sample " +
+          std::to_string(k + 1) + " is not)");
     }
   }
   if (orders.max_delay() > 0) {

@@ -85,16 +85,17 @@ Status validate(const RecursiveIvConfig<S>& c) {
     }
     const S dc = c.m_theta.numerator.sum() / c.m_theta.denominator.sum();
     if (!(std::abs(dc - 1) < 1e-3)) {
-      return bad_input("M_theta must have unit static gain (it smooths the "
-                       "estimates), got " +
-                       std::to_string(static_cast<double>(dc)));
+      return bad_input(
+          "M_theta must have unit static gain (it smooths the "
+          "estimates), got " +
+          std::to_string(static_cast<double>(dc)));
     }
   }
   if (c.initial_denominator.size() != 0) {
     if (c.initial_denominator.size() != c.orders.na) {
-      return dimension_mismatch("A must have na = " +
-                                std::to_string(c.orders.na) +
-                                " coefficients after the leading 1");
+      return dimension_mismatch(
+          "A must have na = " + std::to_string(c.orders.na) +
+          " coefficients after the leading 1");
     }
     HurwitzTest<S> test(c.orders.na);
     if (!test.is_stable(c.initial_denominator)) {
@@ -106,8 +107,9 @@ Status validate(const RecursiveIvConfig<S>& c) {
       return bad_input("closed-loop estimation needs a single input");
     }
     if (c.svf.u_intersample != InterSample::kZoh) {
-      return bad_input("closed-loop estimation needs ZOH data (the "
-                       "controller output is held between samples)");
+      return bad_input(
+          "closed-loop estimation needs ZOH data (the "
+          "controller output is held between samples)");
     }
     status = validate_controller(c.controller);
     if (!status.ok()) return bad_input("controller: " + status.message());
@@ -127,7 +129,8 @@ class RecursiveIv {
     const int nu = orders.num_inputs();
     const Eigen::Index np = orders.num_parameters();
     if (config_.theta0.size() == 0) config_.theta0 = Vector<S>::Zero(np);
-    if (config_.P0.size() == 0) config_.P0 = S(1e4) * Matrix<S>::Identity(np, np);
+    if (config_.P0.size() == 0)
+      config_.P0 = S(1e4) * Matrix<S>::Identity(np, np);
     if (config_.initial_denominator.size() == 0) {
       config_.initial_denominator =
           svf_denominator<S>(na, config.svf.lambda_svf);
@@ -324,7 +327,8 @@ class RecursiveIv {
   // M_theta, stability test, refresh of auxiliary model and prefilter.
   void feed_back(const Vector<S>& theta) {
     const Eigen::Index np = theta.size();
-    for (Eigen::Index i = 0; i < np; ++i) theta_m_(i) = m_filters_[i].step(theta(i));
+    for (Eigen::Index i = 0; i < np; ++i)
+      theta_m_(i) = m_filters_[i].step(theta(i));
     if (config_.dtupdate > 0 &&
         since_refresh_ < config_.dtupdate * (1 - 1e-9)) {
       return;
@@ -411,11 +415,13 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
   if (!status.ok()) return status;
   const Eigen::Index n = record.num_samples;
   const S t_first = record.instants ? record.instants[0] : S(0);
-  const S t_last = record.instants ? record.instants[n - 1] : (n - 1) * record.ts;
+  const S t_last =
+      record.instants ? record.instants[n - 1] : (n - 1) * record.ts;
   if (config.t_s_iv > (t_last - t_first) * (1 + 1e-12)) {
-    return bad_input("tsiv = " + std::to_string(static_cast<double>(config.t_s_iv)) +
-                     " s lies outside the record (length " +
-                     std::to_string(static_cast<double>(t_last - t_first)) + " s)");
+    return bad_input(
+        "tsiv = " + std::to_string(static_cast<double>(config.t_s_iv)) +
+        " s lies outside the record (length " +
+        std::to_string(static_cast<double>(t_last - t_first)) + " s)");
   }
   const S interval = record.interval(1 < n ? 1 : 0);
   if (config.dtupdate > 0 && config.dtupdate < interval * (1 - 1e-9)) {

@@ -32,7 +32,8 @@ struct RlsSvfConfig {
 
 template <typename S>
 Status validate_adaptation(const Adaptation<S>& adaptation, Eigen::Index np) {
-  if (const auto* ff = std::get_if<ForgettingFactorAdaptation<S>>(&adaptation)) {
+  if (const auto* ff =
+          std::get_if<ForgettingFactorAdaptation<S>>(&adaptation)) {
     return validate_forgetting_factor<S>(ff->lambda());
   }
   const auto& kf = std::get<KalmanAdaptation<S>>(adaptation);

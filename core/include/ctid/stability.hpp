@@ -5,9 +5,8 @@
 // unstable roots into the left half plane.
 #pragma once
 
-#include <complex>
-
 #include <Eigen/Eigenvalues>
+#include <complex>
 
 #include "ctid/types.hpp"
 
@@ -35,7 +34,8 @@ class HurwitzTest {
     const int width = static_cast<int>(table_.cols());
     table_.setZero();
     // Row 0: 1, a2, a4, ..; row 1: a1, a3, ..
-    for (int j = 0; 2 * j <= n; ++j) table_(0, j) = 2 * j == 0 ? S(1) : a(2 * j - 1);
+    for (int j = 0; 2 * j <= n; ++j)
+      table_(0, j) = 2 * j == 0 ? S(1) : a(2 * j - 1);
     for (int j = 0; 2 * j + 1 <= n; ++j) table_(1, j) = a(2 * j);
     for (int r = 2; r <= n; ++r) {
       const S pivot = table_(r - 1, 0);
