@@ -99,7 +99,8 @@ function [mag, phase, w] = bode4frozensys (THM, nn, varargin)
       corners = 1;
     endif
     w = logspace (log10 (min (corners)) - 2, log10 (max (corners)) + 2, 100);
-  elseif (! isnumeric (w) || ! isreal (w) || any (w < 0) || any (! isfinite (w)))
+  elseif (! isnumeric (w) || ! isreal (w) || any (w < 0)
+          || any (! isfinite (w)))
     error ("bode4frozensys:badInput",
            "bode4frozensys: w must be finite frequencies >= 0 (rad/s)");
   endif

@@ -215,7 +215,8 @@ function [theta, orders, rest] = parse_model (fname, args)
     endif
     if (any (nb > na + 1))
       error ("simc:badInput", ...
-             "simc: the model is improper (numerator above denominator degree)");
+             ["simc: the model is improper (numerator degree above ", ...
+              "the denominator's)"]);
     endif
     theta = [a(:).', b];
     orders = struct ("na", na, "nb", nb, "nk", nk(:).');
@@ -224,7 +225,8 @@ function [theta, orders, rest] = parse_model (fname, args)
     theta = real_matrix (fname, M, "THM");
     nn = real_matrix (fname, args{2}, "nn");
     if (isempty (nn) || ! isvector (nn) || any (nn != fix (nn)))
-      error ("simc:badInput", "simc: nn must be a vector of integers [na nb nk]");
+      error ("simc:badInput",
+             "simc: nn must be a vector of integers [na nb nk]");
     endif
     if (numel (nn) == 2)
       nn(3) = 0;
@@ -245,7 +247,8 @@ function [theta, orders, rest] = parse_model (fname, args)
     rest = args(3:end);
   else
     error ("simc:badInput", ...
-           "simc: the model must be a struct with B and F, a tf, or THM with nn");
+           ["simc: the model must be an idctm, a struct with B and F, ", ...
+            "a tf, or THM with nn"]);
   endif
 endfunction
 
@@ -302,30 +305,7 @@ function [c_num, c_den, r2] = parse_controller (fname, opts, n, Ts)
     endif
     return;
   endif
-  if (isstruct (C) && isscalar (C) && all (isfield (C, {"kp", "ki", "kd"})))
-    ## Backward-Euler PID, the reading of thesis eq. (2.55) that keeps
-    ## example 2.4.6 stable:  kp + ki Ts/(1 - q^-1) + (kd/Ts)(1 - q^-1).
-    g = cellfun (@is_finite_scalar, {C.kp, C.ki, C.kd});
-    if (! all (g) || ! isscalar (Ts) || ! (Ts > 0))
-      error ("simc:badInput", ...
-             "simc: a PID controller needs real scalars kp, ki, kd and a constant Ts");
-    endif
-    num = [C.kp + C.ki * Ts + C.kd / Ts, -C.kp - 2 * C.kd / Ts, C.kd / Ts];
-    C = struct ("num", num, "den", [1 -1]);
-  endif
-  if (! isstruct (C) || ! isscalar (C) || ! all (isfield (C, {"num", "den"})))
-    error ("simc:badInput", ...
-           "simc: controller must be a struct with fields num and den, or kp, ki and kd");
-  endif
-  c_num = real_matrix (fname, C.num, "controller.num");
-  c_den = real_matrix (fname, C.den, "controller.den");
-  if (isempty (c_num) || isempty (c_den) || ! isvector (c_num)
-      || ! isvector (c_den) || c_den(1) == 0)
-    error ("simc:badInput", ...
-           "simc: controller num and den must be vectors, den(1) != 0");
-  endif
-  c_num = c_num(:).';
-  c_den = c_den(:).';
+  [c_num, c_den] = contsid_controller (fname, C, Ts);
   r2 = opts.r2;
   if (isempty (r2))
     r2 = zeros (n, 1);
@@ -335,10 +315,6 @@ function [c_num, c_den, r2] = parse_controller (fname, opts, n, Ts)
     error ("simc:dimensionMismatch", "simc: r2 must have one value per sample");
   endif
   r2 = r2(:);
-endfunction
-
-function tf = is_finite_scalar (v)
-  tf = isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
 endfunction
 
 function s = check_intersample (fname, s)

@@ -44,13 +44,15 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
       yhat = simc (M, d.u, t, "InterSample", d.intersample);
     else
       error ([fname ":badInput"], ...
-             "%s: the model must be an idctm, a struct with B and F, a tf, or THM with nn",
+             ["%s: the model must be an idctm, a struct with B and F, ", ...
+              "a tf, or THM with nn"],
              fname);
     endif
   catch err
     if (strncmp (err.identifier, "simc:", 5))
-      error (struct ("message", strrep (err.message, "simc:", [fname ":"]),
-                     "identifier", strrep (err.identifier, "simc:", [fname ":"])));
+      id = strrep (err.identifier, "simc:", [fname ":"]);
+      msg = strrep (err.message, "simc:", [fname ":"]);
+      error (struct ("message", msg, "identifier", id));
     endif
     rethrow (err);
   end_try_catch

@@ -56,8 +56,8 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
     if (! isnumeric (tol) || ! isreal (tol) || ! isscalar (tol) || ! (tol > 0))
       error ([fname ":badInput"], "%s: Tol must be a real scalar > 0", fname);
     endif
-    if (! isnumeric (maxiter) || ! isscalar (maxiter) || maxiter != fix (maxiter)
-        || maxiter < 1)
+    if (! isnumeric (maxiter) || ! isscalar (maxiter)
+        || maxiter != fix (maxiter) || maxiter < 1)
       error ([fname ":badInput"], "%s: MaxIter must be an integer >= 1", fname);
     endif
     theta_init = init_estimate (fname, opts.InitMethod, orders);
@@ -110,7 +110,8 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
   endif
   if (! best.conv)
     warning ([fname ":notConverged"], ...
-             "%s: no convergence in %d iterations; the last iterate is returned",
+             ["%s: no convergence in %d iterations; the last iterate ", ...
+              "is returned"],
              fname, best.iters);
   endif
   a = best.theta(1:na).';
@@ -177,7 +178,8 @@ function [r1, r2] = read_datacl (datacl, n)
   if (! isnumeric (datacl) || ! isreal (datacl) || ndims (datacl) > 2
       || any (! isfinite (datacl(:))))
     error ("clsrivc:badInput", ...
-           "clsrivc: datacl must hold the external signals [r1 r2] (finite, real)");
+           ["clsrivc: datacl must hold the external signals [r1 r2] ", ...
+            "(finite, real)"]);
   endif
   if (isvector (datacl))
     datacl = datacl(:);
@@ -195,36 +197,9 @@ function [r1, r2] = read_datacl (datacl, n)
 endfunction
 
 function [num, den] = read_controller (C, d)
-  if (isa (C, "tf"))
-    if (isct (C))
-      error ("clsrivc:badInput", "clsrivc: Mc must be a discrete controller");
-    endif
-    [num, den] = tfdata (C, "vector");
-    len = max (numel (num), numel (den));
-    num = [zeros(1, len - numel (num)), num];   # powers of z -> of q^-1
-    den = [den, zeros(1, len - numel (den))];
-    return;
-  endif
-  if (isstruct (C) && isscalar (C) && all (isfield (C, {"kp", "ki", "kd"})))
-    if (! d.uniform)
-      error ("clsrivc:badInput", "clsrivc: a PID needs a constant Ts");
-    endif
-    g = [C.kp, C.ki, C.kd];
+  Ts = NaN;
+  if (d.uniform)
     Ts = d.Ts;
-    C = struct ("num", [g(1) + g(2) * Ts + g(3) / Ts, ...
-                        -g(1) - 2 * g(3) / Ts, g(3) / Ts],
-                "den", [1 -1]);
   endif
-  if (! isstruct (C) || ! isscalar (C) || ! all (isfield (C, {"num", "den"})))
-    error ("clsrivc:badInput", ...
-           "clsrivc: Mc must be a struct with num and den (powers of q^-1), kp/ki/kd, or a discrete tf");
-  endif
-  num = C.num; den = C.den;
-  if (! isnumeric (num) || ! isnumeric (den) || ! isreal (num) || ! isreal (den)
-      || isempty (num) || isempty (den) || any (! isfinite ([num(:); den(:)]))
-      || den(1) == 0)
-    error ("clsrivc:badInput", ...
-           "clsrivc: Mc num and den must be finite vectors with den(1) != 0");
-  endif
-  num = double (num(:).'); den = double (den(:).');
+  [num, den] = contsid_controller ("clsrivc", C, Ts);
 endfunction

@@ -69,7 +69,8 @@ function orders = parse_orders (fname, nn, nu, form)
     nk = zeros (1, nu);
   endif
   if (na < 1)
-    error ([fname ":badInput"], "%s: nn: the model order (na or nf) must be >= 1, got %d",
+    error ([fname ":badInput"],
+           "%s: nn: the model order (na or nf) must be >= 1, got %d",
            fname, na);
   endif
   if (any (nb < 0) || any (nk < 0))

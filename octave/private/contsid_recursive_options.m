@@ -91,7 +91,8 @@ function o = contsid_recursive_options (fname, opts, np)
   if (! isempty (th0))
     if (! isnumeric (th0) || ! isreal (th0) || ! isvector (th0)
         || any (! isfinite (th0)))
-      error ([fname ":badInput"], "%s: th0 must be a finite real vector", fname);
+      error ([fname ":badInput"], "%s: th0 must be a finite real vector",
+             fname);
     endif
     if (numel (th0) != np)
       error ([fname ":dimensionMismatch"], ...

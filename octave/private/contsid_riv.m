@@ -76,7 +76,8 @@ function varargout = contsid_riv (fname, nout, varargin)
     check_scalar (fname, dtupdate, "dtupdate");
     if (d.uniform && dtupdate < d.Ts * (1 - 1e-9))
       error ([fname ":badInput"], ...
-             "%s: dtupdate (%g s) must not be below the sampling interval (%g s)",
+             ["%s: dtupdate (%g s) must not be below the sampling ", ...
+              "interval (%g s)"],
              fname, dtupdate, d.Ts);
     endif
   endif
@@ -104,7 +105,8 @@ function varargout = contsid_riv (fname, nout, varargin)
     r1 = check_signal (fname, opts.r1, n, "r1");
     r2 = check_signal (fname, opts.r2, n, "r2");
     if (orders.nb > 0 && columns (d.u) != 1)
-      error ([fname ":badInput"], "%s: closed loop needs a single input", fname);
+      error ([fname ":badInput"], "%s: closed loop needs a single input",
+             fname);
     endif
   else
     if (! isempty (opts.controller) || ! isempty (opts.r1)
@@ -173,7 +175,8 @@ function [num, den] = check_mtheta (fname, m)
   endif
   if (! isstruct (m) || ! isscalar (m) || ! all (isfield (m, {"num", "den"})))
     error ([fname ":badInput"], ...
-           "%s: mtheta must be 'delay', 'none', FIR taps or a struct with num and den",
+           ["%s: mtheta must be 'delay', 'none', FIR taps or a struct ", ...
+            "with num and den"],
            fname);
   endif
   num = m.num; den = m.den;
@@ -190,32 +193,11 @@ function [num, den] = check_controller (fname, C, d)
   if (isempty (C))
     error ([fname ":badOption"], "%s: the controller is required", fname);
   endif
-  if (isstruct (C) && isscalar (C) && all (isfield (C, {"kp", "ki", "kd"})))
-    if (! d.uniform)
-      error ([fname ":badInput"], "%s: a PID needs a constant Ts", fname);
-    endif
-    g = [C.kp, C.ki, C.kd];
-    if (! isnumeric (g) || ! isreal (g) || numel (g) != 3 || any (! isfinite (g)))
-      error ([fname ":badInput"], "%s: kp, ki, kd must be real scalars", fname);
-    endif
+  Ts = NaN;
+  if (d.uniform)
     Ts = d.Ts;
-    C = struct ("num", [g(1) + g(2) * Ts + g(3) / Ts, -g(1) - 2 * g(3) / Ts, g(3) / Ts],
-                "den", [1 -1]);
   endif
-  if (! isstruct (C) || ! isscalar (C) || ! all (isfield (C, {"num", "den"})))
-    error ([fname ":badInput"], ...
-           "%s: controller must be a struct with num and den, or kp, ki and kd",
-           fname);
-  endif
-  num = C.num; den = C.den;
-  if (! isnumeric (num) || ! isnumeric (den) || ! isreal (num)
-      || ! isreal (den) || isempty (num) || isempty (den) || ! isvector (num)
-      || ! isvector (den) || any (! isfinite ([num(:); den(:)])) || den(1) == 0)
-    error ([fname ":badInput"], ...
-           "%s: controller num and den must be finite vectors with den(1) != 0",
-           fname);
-  endif
-  num = double (num(:).'); den = double (den(:).');
+  [num, den] = contsid_controller (fname, C, Ts);
 endfunction
 
 function r = check_signal (fname, r, n, what)
