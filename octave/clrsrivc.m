@@ -58,6 +58,7 @@ endfunction
 %! bias = @(thm) norm ((mean (thm(last, :)) - truth) ./ truth);
 %! assert (bias (iv) < bias (ls(:, [3 1 2])) / 3);   # measured < 0.02 vs > 0.11
 
+%!error id=clrsrivc:numericalFailure clrsrivc (iddata (x, u, Ts), [1 2 0], "lambda_svf", 16, "controller", struct ("num", [-50 0], "den", [1 0]), "r1", r1)
 %!error id=clrsrivc:badOption clrsrivc (iddata (x, u, Ts), [1 2 0], "lambda_svf", 16, "r2", r1)
 %!error id=clrsrivc:badOption clrsrivc (iddata (x, u, Ts), [1 2 0], "lambda_svf", 16, "controller", C)
 %!error id=clrsrivc:dimensionMismatch clrsrivc (iddata (x, u, Ts), [1 2 0], "lambda_svf", 16, "controller", C, "r2", [1; 2])

@@ -46,6 +46,7 @@ endfunction
 %! b = clsrivc (iddata (x, u, Ts), r1, [1 2 0], tf ([0.5 + 2 * Ts, -0.5], [1 -1], Ts), "lambda", 16);
 %! assert (b.theta, a.theta, 1e-9);
 
+%!error <unstable> clsrivc (iddata (x, u, Ts), r1, [1 2 0], struct ("num", [-50 0], "den", [1 0]), "lambda", 16)
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0])
 %!error id=clsrivc:dimensionMismatch clsrivc (iddata (x, u, Ts), r1(1:10), [1 2 0], C, "lambda", 16)
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), {1}, [1 2 0], C, "lambda", 16)
