@@ -98,6 +98,19 @@ Status validate_covariance(const Matrix<S>& M, Eigen::Index np,
   return Status::Ok();
 }
 
+// Spectral condition number kappa_2(P) = lambda_max / lambda_min of a
+// symmetric positive definite matrix (thesis eq. 3.68 compares it with that
+// of a square root). Infinity when P is not positive definite.
+template <typename S>
+S condition_number(const Matrix<S>& P) {
+  if (P.size() == 0) return S(1);
+  const Eigen::SelfAdjointEigenSolver<Matrix<S>> eig(P, Eigen::EigenvaluesOnly);
+  const S smallest = eig.eigenvalues()(0);
+  const S largest = eig.eigenvalues()(P.rows() - 1);
+  if (!(smallest > 0)) return std::numeric_limits<S>::infinity();
+  return largest / smallest;
+}
+
 template <typename S>
 class ParameterUpdate {
  public:

@@ -1,0 +1,175 @@
+// Square-root (Potter) form of the normalised Kalman filter for the
+// least-squares regression, PotterSVF, thesis eq. (3.73).
+//
+// The covariance is kept as a square root, P = S S^T (eq. 3.67), so that
+// kappa_2(P) = kappa_2(S)^2 (eq. 3.68): the filter works with numbers whose
+// spread is the square root of that of the standard form (1.59), which is
+// what keeps P symmetric positive definite in single precision on badly
+// scaled regressors.
+//
+//   time update (3.73b):  [S^T(t_k|t_k-1); 0] = T [S^T(t_k-1); Qn^(T/2)]
+//     done by a Householder QR of the stacked matrix: S^- = R^T, so that
+//     S^- S^-T = S S^T + Qn exactly in exact arithmetic;
+//   measurement update (3.73c)-(3.73i), Potter's algorithm:
+//     f = S^-T phi,  beta = 1 + f^T f,  alpha = beta + sqrt(beta),
+//     L = S^- f / beta,  theta += L (target - phi^T theta),
+//     S = S^- (I - f f^T / alpha).
+//
+// Qn^(1/2) is computed once, in configure(), from the eigen-decomposition of
+// Qn, so a semi-definite Qn (e.g. a parameter known to be constant) is
+// handled; only its nonzero directions enter the QR step, and Qn = 0 skips
+// the QR step altogether. No allocation happens in update() for np <= 48
+// (Eigen's HouseholderQR works unblocked, in the preallocated workspace, up
+// to 48 columns).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "ctid/adaptation.hpp"
+#include "ctid/types.hpp"
+
+namespace ctid {
+
+// A square root R of the symmetric positive semi-definite matrix M,
+// M = R R^T, with only the columns of the nonzero directions (R is
+// n-by-rank). Eigenvalues below n * eps * max|lambda| are treated as zero;
+// slightly negative ones (rounding) are clipped.
+template <typename S>
+Matrix<S> semidefinite_square_root(const Matrix<S>& M) {
+  const Eigen::Index n = M.rows();
+  if (n == 0) return Matrix<S>(0, 0);
+  const Eigen::SelfAdjointEigenSolver<Matrix<S>> eig(M);
+  const Vector<S>& lambda = eig.eigenvalues();
+  const S largest = lambda.cwiseAbs().maxCoeff();
+  const S threshold = S(n) * std::numeric_limits<S>::epsilon() * largest;
+  Eigen::Index rank = 0;
+  for (Eigen::Index i = 0; i < n; ++i) rank += lambda(i) > threshold;
+  Matrix<S> root(n, rank);
+  for (Eigen::Index i = 0, j = 0; i < n; ++i) {
+    if (lambda(i) > threshold) {
+      root.col(j++) = eig.eigenvectors().col(i) * std::sqrt(lambda(i));
+    }
+  }
+  return root;
+}
+
+// kappa_2(P) for P = S S^T, from the singular values of the square root:
+// sigma_max(S)^2 / sigma_min(S)^2 (eq. 3.68). Infinity when S is singular.
+template <typename S>
+S condition_number_from_square_root(const Matrix<S>& sqrt_P) {
+  if (sqrt_P.size() == 0) return S(1);
+  const Eigen::JacobiSVD<Matrix<S>> svd(sqrt_P);
+  const Vector<S>& sigma = svd.singularValues();
+  const S smallest = sigma(sigma.size() - 1);
+  if (!(smallest > 0)) return std::numeric_limits<S>::infinity();
+  const S ratio = sigma(0) / smallest;
+  return ratio * ratio;
+}
+
+template <typename S>
+class PotterUpdate {
+ public:
+  PotterUpdate() = default;
+  PotterUpdate(Eigen::Index np, KalmanAdaptation<S> adaptation) {
+    configure(np, std::move(adaptation));
+  }
+
+  // A default-constructed KalmanAdaptation (empty Qn) means Qn = 0. Qn must
+  // otherwise be np-by-np and positive semi-definite (validate_covariance).
+  void configure(Eigen::Index np, KalmanAdaptation<S> adaptation) {
+    adaptation_ = std::move(adaptation);
+    qn_root_t_ =
+        adaptation_.qn().size() == 0
+            ? Matrix<S>(0, np)
+            : Matrix<S>(semidefinite_square_root(adaptation_.qn()).transpose());
+    theta_ = Vector<S>::Zero(np);
+    S_ = Matrix<S>::Identity(np, np);
+    P_ = Matrix<S>::Identity(np, np);
+    stacked_ = Matrix<S>::Zero(np + qn_root_t_.rows(), np);
+    stacked_.bottomRows(qn_root_t_.rows()) = qn_root_t_;
+    qr_ = Eigen::HouseholderQR<Matrix<S>>(stacked_.rows(), np);
+    f_ = Vector<S>::Zero(np);
+    s_f_ = Vector<S>::Zero(np);
+    gain_ = Vector<S>::Zero(np);
+  }
+
+  // S(t_0) is the Cholesky factor of P0; a P0 that is only semi-definite
+  // (within rounding) gets its eigen-based square root instead.
+  void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
+    theta_ = theta0;
+    const Eigen::LLT<Matrix<S>> llt(P0);
+    if (llt.info() == Eigen::Success) {
+      S_ = llt.matrixL();
+    } else {
+      const Matrix<S> root = semidefinite_square_root<S>(P0);
+      S_.setZero();
+      S_.leftCols(root.cols()) = root;
+    }
+  }
+
+  // Starts from a given square root, P0 = S0 S0^T.
+  void reset_square_root(const Vector<S>& theta0, const Matrix<S>& S0) {
+    theta_ = theta0;
+    S_ = S0;
+  }
+
+  // One PotterSVF step. Returns the prediction error
+  // target - phi^T theta(t_k|t_(k-1)), eq. (3.73d).
+  template <typename Derived>
+  S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    predict();
+    const S error = target - phi.dot(theta_);
+    f_.noalias() = S_.transpose() * phi;
+    const S beta = 1 + f_.squaredNorm();
+    const S alpha = beta + std::sqrt(beta);
+    s_f_.noalias() = S_ * f_;
+    gain_ = s_f_ / beta;
+    theta_ += gain_ * error;
+    s_f_ /= alpha;
+    S_.noalias() -= s_f_ * f_.transpose();
+    return error;
+  }
+
+  const Vector<S>& theta() const { return theta_; }
+  // Gain L(t_k) of the last step, eq. (3.73h).
+  const Vector<S>& gain() const { return gain_; }
+  // S(t_k); not unique (any S Q with Q orthogonal gives the same P).
+  const Matrix<S>& sqrt_P() const { return S_; }
+  // P(t_k) = S S^T, formed on request (exactly symmetric).
+  const Matrix<S>& P() const {
+    P_.noalias() = S_ * S_.transpose();
+    for (Eigen::Index j = 1; j < P_.cols(); ++j) {
+      for (Eigen::Index i = 0; i < j; ++i) P_(i, j) = P_(j, i);
+    }
+    return P_;
+  }
+  const KalmanAdaptation<S>& adaptation() const { return adaptation_; }
+
+ private:
+  // S S^T + Qn = [S^T; Qn^(T/2)]^T [S^T; Qn^(T/2)] = R^T R.
+  void predict() {
+    if (qn_root_t_.rows() == 0) return;
+    const Eigen::Index np = S_.rows();
+    stacked_.topRows(np) = S_.transpose();
+    qr_.compute(stacked_);
+    S_ = qr_.matrixQR()
+             .topRows(np)
+             .template triangularView<Eigen::Upper>()
+             .transpose();
+  }
+
+  KalmanAdaptation<S> adaptation_;
+  Matrix<S> qn_root_t_;  // Qn^(T/2), rank-by-np
+  Vector<S> theta_;
+  Matrix<S> S_;
+  mutable Matrix<S> P_;
+  Matrix<S> stacked_;  // [S^T; Qn^(T/2)]
+  Eigen::HouseholderQR<Matrix<S>> qr_;
+  Vector<S> f_;
+  Vector<S> s_f_;
+  Vector<S> gain_;
+};
+
+}  // namespace ctid
