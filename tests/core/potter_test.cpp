@@ -13,19 +13,9 @@
 #include <new>
 #include <random>
 
+#include "allocation_counter.hpp"
 #include "test_util.hpp"
 
-// Counts heap allocations so that the per-step path can be checked.
-// (GCC warns that free() meets operator new: both are the replaced pair.)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size ? size : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ctid {
 namespace {
