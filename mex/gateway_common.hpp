@@ -116,4 +116,13 @@ inline RecursiveOutputs<double> make_recursive_outputs(int nlhs,
   return out;
 }
 
+// kappa_2(P) per sample (N-by-1) into output `index`, when requested.
+inline void request_kappa(int nlhs, mxArray* plhs[], int index, std::size_t n,
+                          RecursiveOutputs<double>* out) {
+  if (nlhs > index) {
+    plhs[index] = make_output_matrix(n, 1);
+    out->kappa = mxGetPr(plhs[index]);
+  }
+}
+
 }  // namespace ctid::mex

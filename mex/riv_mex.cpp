@@ -3,7 +3,8 @@
 // below, runs ctid::run_recursive_iv and returns THM, YH, PSET and the
 // number of estimates refused by the stability test.
 //
-//   [thm, yh, pset, nrej] = riv_mex (fname, y, u, t, intersample, na, nb, nk,
+//   [thm, yh, pset, nrej, kappa] = riv_mex (fname, y, u, t, intersample, na,
+//   nb, nk,
 //       lambda_svf, svf_form, adm, adg, th0, P0, method, tsiv, dtupdate,
 //       stability, mtheta_num, mtheta_den, prefilter_gain, A,
 //       c_num, c_den, r1, r2)
@@ -25,7 +26,7 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                            std::to_string(nrhs) + " (call " + g.name() +
                            " instead)");
   }
-  if (nlhs > 4) g.fail("badInput", "at most 4 outputs");
+  if (nlhs > 5) g.fail("badInput", "at most 5 outputs");
   const ctid::RecordView<double> record =
       ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   ctid::RecursiveIvConfig<double> config;
@@ -83,8 +84,9 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   g.check(ctid::validate(config));
 
   const std::size_t n = record.num_samples;
-  const ctid::RecursiveOutputs<double> out =
+  ctid::RecursiveOutputs<double> out =
       ctid::mex::make_recursive_outputs(nlhs, plhs, n, np);
+  ctid::mex::request_kappa(nlhs, plhs, 4, n, &out);
   long rejections = 0;
   g.check(ctid::run_recursive_iv(config, record, loop, out, &rejections));
   if (nlhs >= 4) {

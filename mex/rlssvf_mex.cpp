@@ -1,12 +1,13 @@
 // MEX gateway of rlssvf (octave/rlssvf.m): converts the fixed argument list
 // below, runs ctid::run_rlssvf and returns THM, YH and PSET.
 //
-//   [thm, yh, pset] = rlssvf_mex(fname, y, u, t, intersample, na, nb, nk,
+//   [thm, yh, pset, kappa] = rlssvf_mex(fname, y, u, t, intersample, na, nb,
+//   nk,
 //                                lambda_svf, svf_form, adm, adg, th0, P0)
 //
 // t is Ts (scalar) or the N sampling instants; adm is 'ff' or 'kf'; adg the
 // forgetting factor or the np-by-np Qn; th0 and P0 may be [] (defaults).
-// YH and PSET are computed only when requested.
+// YH, PSET and kappa_2(P) per sample are computed only when requested.
 #include "ctid/rlssvf.hpp"
 #include "gateway_common.hpp"
 
@@ -20,7 +21,7 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     g.fail("badInput", "the gateway takes 14 arguments, got " +
                            std::to_string(nrhs) + " (call rlssvf instead)");
   }
-  if (nlhs > 3) g.fail("badInput", "at most 3 outputs (THM, YH, PSET)");
+  if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, kappa)");
   const ctid::RecordView<double> record =
       ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   ctid::RlsSvfConfig<double> config;
@@ -36,8 +37,9 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   g.check(ctid::validate_record(record, config.orders));
 
   const std::size_t n = record.num_samples;
-  const ctid::RecursiveOutputs<double> out =
+  ctid::RecursiveOutputs<double> out =
       ctid::mex::make_recursive_outputs(nlhs, plhs, n, np);
+  ctid::mex::request_kappa(nlhs, plhs, 3, n, &out);
   g.check(ctid::run_rlssvf(config, record, out));
 }
 

@@ -28,7 +28,9 @@
 ## @code{struct ("num", [0.04762 0.04762], "den", [1 -0.9048])}.
 ## @end table
 ## The fourth output @var{info} has the number of estimates refused by the
-## stability test and the tsiv used.
+## stability test, the tsiv used, and @code{kappa}, the N-by-1 condition
+## number kappa_2(P) after each recursion (singular-value ratio, since the
+## IV update makes P non-symmetric).
 ##
 ## @strong{Algorithm.} Before tsiv: RLSSVF (eqs. 1.57/1.59). Then the IV
 ## update (2.29) (Kalman filter) or (2.30) (forgetting factor), with the
@@ -85,6 +87,8 @@ endfunction
 %!   "dtupdate", 10 * Ts, "stability", "reflect");
 %! assert (size (pset), [3 3 N]);
 %! assert (isfield (info, "stability_rejections"));
+%! assert (size (info.kappa), [N 1]);
+%! assert (all (info.kappa >= 1));
 %! assert (thm(end, :), [2.4 4 4], 1e-2 * 4);
 
 %!error id=rivsvf:badInput rivsvf (data, [2 1 0], "lambda_svf", 3, "tsiv", -1)

@@ -3,7 +3,7 @@
 ## @deftypefnx {} {@var{thm} =} rlssvf (@dots{}, @var{name}, @var{value})
 ## @deftypefnx {} {@var{thm} =} rlssvf (@var{data}, @var{nn}, @var{lam}, @dots{})
 ## @deftypefnx {} {@var{thm} =} rlssvf (@var{y}, @var{u}, @var{Ts}, @var{nn}, @dots{})
-## @deftypefnx {} {[@var{thm}, @var{yh}, @var{pset}] =} rlssvf (@dots{})
+## @deftypefnx {} {[@var{thm}, @var{yh}, @var{pset}, @var{info}] =} rlssvf (@dots{})
 ## Recursive least-squares state-variable filter estimation of a
 ## continuous-time model with time-varying parameters (RLSSVF).
 ##
@@ -62,6 +62,10 @@
 ## @item pset
 ## np-by-np-by-N covariance matrix P after each recursion; computed only when
 ## requested.
+## @item info
+## a struct with @code{kappa}, the N-by-1 condition number kappa_2(P)
+## after each recursion (thesis sec. 3.5; Inf once P has lost positive
+## definiteness); computed only when requested.
 ## @end table
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
@@ -104,6 +108,9 @@ function varargout = rlssvf (varargin)
                                                  orders.nb, orders.nk,
                                                  o.lambda_svf, o.svf, o.adm,
                                                  o.adg, o.th0, o.P0);
+    if (nargout >= 4)
+      varargout{4} = struct ("kappa", varargout{4});
+    endif
   catch err
     contsid_rethrow (err);
   end_try_catch
@@ -127,6 +134,15 @@ endfunction
 %! assert (norm (yh(end-500:end) - y(end-500:end)) / norm (y(end-500:end)) < 1e-2);
 %! P = pset(:, :, end);
 %! assert (P, P.', 0);   # the update keeps P exactly symmetric
+
+%!test  # kappa_2(P) per sample: the eigenvalue ratio of each P
+%! [thm, yh, pset, info] = rlssvf (data, [2 1 0], "lambda_svf", 2);
+%! assert (size (info.kappa), [numel(u) 1]);
+%! k = [1 100 numel(u)];
+%! for i = k
+%!   e = eig (pset(:, :, i));
+%!   assert (info.kappa(i), max (e) / min (e), 1e-6 * info.kappa(i));
+%! endfor
 
 %!test  # CONTSID 7.0/7.1 positional syntax with 'rw' equals 7.2 'kf'
 %! Qn = 1e-6 * eye (3);

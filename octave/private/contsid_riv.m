@@ -118,6 +118,9 @@ function varargout = contsid_riv (fname, nout, varargin)
   endif
 
   outs = cell (1, max (1, nout));
+  if (nout >= 4)
+    outs = cell (1, 5);       # the gateway's 5th output: kappa_2(P)
+  endif
   try
     [outs{:}] = riv_mex (fname, d.y, d.u, t, d.intersample, na, orders.nb,
                          orders.nk, o.lambda_svf, o.svf, o.adm, adg, th0, P0,
@@ -132,7 +135,9 @@ function varargout = contsid_riv (fname, nout, varargin)
     outs{3} = outs{3}(perm, perm, :);
   endif
   if (numel (outs) >= 4)
-    outs{4} = struct ("stability_rejections", outs{4}, "tsiv", tsiv);
+    outs{4} = struct ("stability_rejections", outs{4}, "tsiv", tsiv,
+                      "kappa", outs{5});
+    outs(5) = [];
   endif
   varargout = outs;
 endfunction

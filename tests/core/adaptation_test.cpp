@@ -203,6 +203,18 @@ TEST(ParameterUpdate, ForgettingFactorKeepsPSymmetricOverLongRuns) {
   }
 }
 
+TEST(Kappa2, EigenvalueRatioForSymmetricSingularValuesOtherwise) {
+  Eigen::MatrixXd sym(2, 2);
+  sym << 4, 0, 0, 0.5;
+  EXPECT_NEAR(kappa_2<double>(sym), 8.0, 1e-12);
+  sym(1, 1) = -0.5;  // indefinite: reported as infinite
+  EXPECT_TRUE(std::isinf(kappa_2<double>(sym)));
+  Eigen::MatrixXd general(2, 2);
+  general << 1, 2, 0, 1;  // singular values 1 +- sqrt(2)
+  EXPECT_NEAR(kappa_2<double>(general),
+              (1 + std::sqrt(2.0)) / (std::sqrt(2.0) - 1), 1e-12);
+}
+
 TEST(Validation, ForgettingFactorRange) {
   EXPECT_TRUE(validate_forgetting_factor(1.0).ok());
   EXPECT_TRUE(validate_forgetting_factor(0.5).ok());

@@ -111,6 +111,19 @@ S condition_number(const Matrix<S>& P) {
   return largest / smallest;
 }
 
+// kappa_2(P) as reported after each recursion: for a symmetric P (the
+// least-squares updates) the eigenvalue ratio, infinite once P has lost
+// positive definiteness; for the non-symmetric P of the IV updates the
+// ratio of extreme singular values.
+template <typename S>
+S kappa_2(const Matrix<S>& P) {
+  if (P == P.transpose()) return condition_number(P);
+  const Eigen::JacobiSVD<Matrix<S>> svd(P);
+  const auto& sv = svd.singularValues();
+  if (!(sv(sv.size() - 1) > 0)) return std::numeric_limits<S>::infinity();
+  return sv(0) / sv(sv.size() - 1);
+}
+
 template <typename S>
 class ParameterUpdate {
  public:

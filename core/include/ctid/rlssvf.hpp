@@ -116,12 +116,14 @@ class RlsSvf {
 };
 
 // Where run_* writes its results (column-major, caller-owned): thm is
-// N-by-np; yh (N) and pset (np*np*N) are optional (null: not computed).
+// N-by-np; yh (N), pset (np*np*N) and kappa (N) are optional (null: not
+// computed).
 template <typename S>
 struct RecursiveOutputs {
   S* thm = nullptr;
   S* yh = nullptr;
   S* pset = nullptr;
+  S* kappa = nullptr;  // kappa_2(P) after each recursion (thesis sec. 3.5)
 };
 
 // Runs a recursive estimator over a record: `update(u_k, y_k, h, k)`
@@ -153,6 +155,7 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
       std::memcpy(out.pset + k * np * np, covariance().data(),
                   sizeof(S) * np * np);
     }
+    if (out.kappa != nullptr) out.kappa[k] = kappa_2(covariance());
   }
   for (Eigen::Index i = 0; i < n * np; ++i) {
     if (!std::isfinite(out.thm[i])) {
