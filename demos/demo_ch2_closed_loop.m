@@ -85,56 +85,22 @@ function demo_ch2_closed_loop (outdir = "results", nruns = 100)
   relq = abs ((theta - thq) ./ theta) * 100;
   E0(3, :) = mean (relq(win{2}, :));
 
-  R = zeros (N, 3, M);            # sum over runs of the relative errors (%)
-  thm1 = zeros (N, 3, M);         # run 1
-  E = zeros (nruns, 3, M, 2);     # per-run window means of the rel. errors
-  rej = zeros (nruns, M);
-  snr = zeros (nruns, 1);
-  umax = zeros (nruns, 1);
-  tmain = 0;
-  textra = 0;
-  for s = 1:nruns
-    tic_run = tic;
-    randn ("state", s);
-    e = sqrt (sigma2) * randn (N, 1);
-    [y, x, u] = simc (theta, [2 1 0], r1, Ts, loop{:}, "noise", e);
-    snr(s) = 10 * log10 (mean (x .^ 2) / sigma2);
-    umax(s) = max (abs (u));
-    data = iddata (y, u, Ts, "InterSample", "zoh");
-    if (s == 1)
-      data1 = data;
-    endif
-    tmain += toc (tic_run);
-    for m = 1:M
-      tic_m = tic;
-      [thm, info] = estimate (m, data, cfg);
-      rel = abs ((theta - thm) ./ theta) * 100;   # eq. (2.33)
-      R(:, :, m) += rel;
-      for w = 1:2
-        E(s, :, m, w) = mean (rel(win{w}, :));
-      endfor
-      rej(s, m) = info.stability_rejections;
-      if (s == 1)
-        thm1(:, :, m) = thm;
-      endif
-      if (any (m == main))
-        tmain += toc (tic_m);
-      else
-        textra += toc (tic_m);
-      endif
-    endfor
-  endfor
+  simrun = @(s) closed_loop_run (theta, r1, Ts, loop, sigma2, N);
+  winmeans = @(thm, rel) [mean(rel(win{1}, :)), mean(rel(win{2}, :))];
+  [R, ~, stats, thm1, rej, data1, runinfo, tmain, textra] = ...
+    ch2_monte_carlo (theta, nruns, M, main, simrun,
+                     @(m, data) estimate (m, data, cfg), winmeans);
+  E = permute (reshape (stats, nruns, 3, 2, M), [1 2 4 3]);  # run x 3 x M x w
+  snr = runinfo(:, 1);
+  umax = runinfo(:, 2);
   relerr = R / nruns;
 
   ## Rejections of the RLSSVF phase alone (IV stage never started), run 1.
-  rej0 = zeros (1, M);
   cfg0 = cfg;
   cfg0.riv{end - 2} = t(end);
   cfg0.sriv{end - 2} = t(end);
-  for m = 2:M
-    [~, info] = estimate (m, data1, cfg0);
-    rej0(m) = info.stability_rejections;
-  endfor
+  rej0 = ch2_iv_phase_rejections (@(m, data) estimate (m, data, cfg0), data1,
+                                  M);
 
   tb = t(end) - 200;
   ch2_plot_panels (fullfile (outdir, "fig_2_17_rlssvf.png"), t, 20,
@@ -228,24 +194,7 @@ function write_table (file, names, E, E0, rej, rej0, yard, winname, snr,
   fprintf (fid, "RLSSVF, CLRIVSVF and CLRSRIVC, %.1f s more for the monic ", textra);
   fprintf (fid, "variant, %.1f s in all.\n\n", elapsed);
 
-  fprintf (fid, "### Mean relative error (eq. 2.33, %%), averaged over the window and over %d runs\n\n", nruns);
-  fprintf (fid, "The thesis gives these only as figures (2.19, 2.20); the yardstick is ");
-  fprintf (fid, "the independent implementation of the implementation notes (item 8, ");
-  fprintf (fid, "10 runs, last 500 s).\n\n");
-  fprintf (fid, "| method | %s: a1 | a2 | b0 | %s: a1 | a2 | b0 | yardstick, last 500 s: a1 / a2 / b0 |\n",
-           winname{:});
-  fprintf (fid, "|---|---|---|---|---|---|---|---|\n");
-  fprintf (fid, "| RLSSVF noise-free | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | - |\n",
-           E0(1, :), E0(2, :));
-  for m = 1:M
-    if (isnan (yard(m, 1)))
-      ys = "-";
-    else
-      ys = sprintf ("%.1f / %.1f / %.1f", yard(m, :));
-    endif
-    fprintf (fid, "| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n",
-             names{m}, Em(1, :, m, 1), Em(1, :, m, 2), ys);
-  endfor
+  ch2_md_error_table (fid, names, E, E0, yard, winname, nruns, "2.19, 2.20");
 
   fprintf (fid, "\n### The thesis' claims\n\n");
   ## 1. RLSSVF fails on noisy data.
@@ -261,7 +210,7 @@ function write_table (file, names, E, E0, rej, rej0, yard, winname, snr,
   fprintf (fid, "10 %% on some parameter, and its mean over the three parameters ");
   fprintf (fid, "more than twice that of the better IV method (%.1f vs %.1f %%): **%s**. ",
            mean (rls), mean (ivbest),
-           ifelse_str (fails, "reproduced", "not reproduced"));
+           ch2_ifelse_str (fails, "reproduced", "not reproduced"));
   bad = rls > 2 * ivbest;
   if (any (bad))
     fprintf (fid, "The failure is in %s (more than twice the IV error)",
@@ -282,36 +231,13 @@ function write_table (file, names, E, E0, rej, rej0, yard, winname, snr,
   fprintf (fid, "CLRIVSVF %.1f / %.1f / %.1f %%, CLRSRIVC %.1f / %.1f / %.1f %% ",
            Em(1, :, 2, 2), Em(1, :, 3, 2));
   fprintf (fid, "(yardstick 5.8 / 8.0 / 1.4 and 4.8 / 6.1 / 1.5). Criterion: all ");
-  fprintf (fid, "below 10 %%: **%s**.\n\n", ifelse_str (track, "reproduced",
-                                                        "not reproduced"));
+  fprintf (fid, "below 10 %%: **%s**.\n\n",
+           ch2_ifelse_str (track, "reproduced", "not reproduced"));
   ## 3. CLRSRIVC best at the end.
   fprintf (fid, "3. *CLRSRIVC gives the best results towards the end.* Last 200 s, ");
   fprintf (fid, "paired difference CLRIVSVF - CLRSRIVC over %d runs with twice ", nruns);
   fprintf (fid, "its standard error:\n\n");
-  fprintf (fid, "| parameter | CLRIVSVF (%%) | CLRSRIVC (%%) | CLRIVSVF - CLRSRIVC (+- 2 s.e.) | CLRSRIVC better in | verdict |\n");
-  fprintf (fid, "|---|---|---|---|---|---|\n");
-  better = false (1, 3);
-  for i = 1:3
-    d = E(:, i, 2, 1) - E(:, i, 3, 1);
-    se = std (d) / sqrt (nruns);
-    better(i) = mean (d) > 2 * se;
-    if (better(i))
-      v = "CLRSRIVC better";
-    elseif (mean (d) < -2 * se)
-      v = "CLRSRIVC worse";
-    else
-      v = "no significant difference";
-    endif
-    fprintf (fid, "| %s | %.2f | %.2f | %+.2f +- %.2f | %d of %d runs | %s |\n",
-             pn{i}, mean (E(:, i, 2, 1)), mean (E(:, i, 3, 1)), mean (d),
-             2 * se, sum (d > 0), nruns, v);
-  endfor
-  dall = mean (E(:, :, 2, 1), 2) - mean (E(:, :, 3, 1), 2);
-  fprintf (fid, "| mean of the three | %.2f | %.2f | %+.2f +- %.2f | %d of %d runs | %s |\n\n",
-           mean (mean (E(:, :, 2, 1))), mean (mean (E(:, :, 3, 1))),
-           mean (dall), 2 * std (dall) / sqrt (nruns), sum (dall > 0), nruns,
-           ifelse_str (mean (dall) > 2 * std (dall) / sqrt (nruns),
-                       "CLRSRIVC better", "not shown"));
+  better = ch2_md_paired_table (fid, E, names{2}, names{3}, nruns);
   if (all (better))
     fprintf (fid, "Reproduced for all three parameters.\n\n");
   else
@@ -335,28 +261,14 @@ function write_table (file, names, E, E0, rej, rej0, yard, winname, snr,
            Em(1, :, 4, 2), Em(1, :, 3, 2));
   fprintf (fid, "with the unit-gain prefilter: the static gain 1/a2 (1/250-1/70) ");
   fprintf (fid, "shrinks the effective Qn by 1/a2^2 and the estimates cannot follow a2.\n\n");
-  fprintf (fid, "Stability test (eq. 3.10): estimates refused on their way to the ");
-  fprintf (fid, "auxiliary model, mean [max] per run: ");
-  for m = 2:M
-    fprintf (fid, "%s %.1f [%d]%s", names{m}, mean (rej(:, m)), max (rej(:, m)),
-             ifelse_str (m < M, ", ", ". "));
-  endfor
-  fprintf (fid, "In run 1 the counts with the IV stage never started (RLSSVF ");
-  fprintf (fid, "phase only) are %d / %d / %d against %d / %d / %d with tsiv = 10 s, ",
-           rej0(2:M), rej(1, 2:M));
-  fprintf (fid, "i.e. %d / %d / %d refusals during the IV stage. ",
-           rej(1, 2:M) - rej0(2:M));
-  same = all (all (rej(:, 2:M) == rej(:, 2)));
-  fprintf (fid, "The counts of the three IV variants are %s in every run%s.\n",
-           ifelse_str (same, "the same", "not the same"),
-           ifelse_str (same, ", as they are when all refusals fall in the shared RLSSVF phase", ""));
+  ch2_md_stability (fid, names, rej, rej0, 10);
   fclose (fid);
 endfunction
 
-function s = ifelse_str (b, a, c)
-  if (b)
-    s = a;
-  else
-    s = c;
-  endif
+function [data, info] = closed_loop_run (theta, r1, Ts, loop, sigma2, N)
+  ## One noisy run in closed loop; info = [SNR (dB), max |u|].
+  e = sqrt (sigma2) * randn (N, 1);
+  [y, x, u] = simc (theta, [2 1 0], r1, Ts, loop{:}, "noise", e);
+  info = [10 * log10(mean (x .^ 2) / sigma2), max(abs (u))];
+  data = iddata (y, u, Ts, "InterSample", "zoh");
 endfunction

@@ -75,51 +75,22 @@ function demo_ch2_different_rates (outdir = "results", nruns = 100)
   rel0 = abs ((theta - thm0) ./ theta) * 100;
   E0 = [mean(rel0(win{1}, :)); mean(rel0(win{2}, :))];
 
-  R = zeros (N, 3, M);            # sum over runs of the relative errors (%)
-  thm1 = zeros (N, 3, M);         # run 1
-  E = zeros (nruns, 3, M, 2);     # per-run window means of the rel. errors
-  rej = zeros (nruns, M);
-  tmain = 0;
-  textra = 0;
-  for s = 1:nruns
-    tic_run = tic;
-    randn ("state", s);
-    y = x + sqrt (sigma2) * randn (N, 1);
-    data = iddata (y, u, Ts, "InterSample", "zoh");
-    if (s == 1)
-      data1 = data;
-    endif
-    tmain += toc (tic_run);
-    for m = 1:M
-      tic_m = tic;
-      [thm, info] = estimate (m, data, cfg);
-      rel = abs ((theta - thm) ./ theta) * 100;   # eq. (2.33)
-      R(:, :, m) += rel;
-      for w = 1:2
-        E(s, :, m, w) = mean (rel(win{w}, :));
-      endfor
-      rej(s, m) = info.stability_rejections;
-      if (s == 1)
-        thm1(:, :, m) = thm;
-      endif
-      if (any (m == main))
-        tmain += toc (tic_m);
-      else
-        textra += toc (tic_m);
-      endif
-    endfor
-  endfor
+  ## Run s: the noise-free output plus its own noise.
+  simrun = @(s) deal (iddata (x + sqrt (sigma2) * randn (N, 1), u, Ts,
+                              "InterSample", "zoh"), []);
+  winmeans = @(thm, rel) [mean(rel(win{1}, :)), mean(rel(win{2}, :))];
+  [R, ~, stats, thm1, rej, data1, ~, tmain, textra] = ...
+    ch2_monte_carlo (theta, nruns, M, main, simrun,
+                     @(m, data) estimate (m, data, cfg), winmeans);
+  E = permute (reshape (stats, nruns, 3, 2, M), [1 2 4 3]);  # run x 3 x M x w
   relerr = R / nruns;
 
   ## Rejections of the RLSSVF phase alone (IV stage never started), run 1.
-  rej0 = zeros (1, M);
   cfg0 = cfg;
   cfg0.riv{end - 2} = t(end);
   cfg0.sriv{end - 2} = t(end);
-  for m = 2:M
-    [~, info] = estimate (m, data1, cfg0);
-    rej0(m) = info.stability_rejections;
-  endfor
+  rej0 = ch2_iv_phase_rejections (@(m, data) estimate (m, data, cfg0), data1,
+                                  M);
 
   ch2_plot_panels (fullfile (outdir, "fig_2_11_rlssvf.png"), t, 20,
                    {struct("series", {{theta, thm0}},
@@ -208,56 +179,14 @@ function write_table (file, names, E, E0, rej, rej0, yard, winname, snr,
   fprintf (fid, "RSRIVC, %.1f s more for the monic variant, %.1f s in all.\n\n",
            textra, elapsed);
 
-  fprintf (fid, "### Mean relative error (eq. 2.33, %%), averaged over the window and over %d runs\n\n", nruns);
-  fprintf (fid, "The thesis gives these only as figures (2.13, 2.14); the yardstick is ");
-  fprintf (fid, "the independent implementation of the implementation notes (item 8, ");
-  fprintf (fid, "10 runs, last 500 s).\n\n");
-  fprintf (fid, "| method | %s: a1 | a2 | b0 | %s: a1 | a2 | b0 | yardstick, last 500 s: a1 / a2 / b0 |\n",
-           winname{:});
-  fprintf (fid, "|---|---|---|---|---|---|---|---|\n");
-  fprintf (fid, "| RLSSVF noise-free | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | - |\n",
-           E0(1, :), E0(2, :));
-  for m = 1:M
-    if (isnan (yard(m, 1)))
-      ys = "-";
-    else
-      ys = sprintf ("%.1f / %.1f / %.1f", yard(m, :));
-    endif
-    fprintf (fid, "| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n",
-             names{m}, Em(1, :, m, 1), Em(1, :, m, 2), ys);
-  endfor
+  ch2_md_error_table (fid, names, E, E0, yard, winname, nruns, "2.13, 2.14");
 
   fprintf (fid, "\n### Claim: RSRIVC better than RIVSVF in the last 200 s\n\n");
   fprintf (fid, "Per parameter, mean relative error over %d runs in the last 200 s, ", nruns);
   fprintf (fid, "the paired difference RIVSVF - RSRIVC with twice its standard ");
   fprintf (fid, "error, and the runs in which RSRIVC's error is the smaller.\n\n");
-  fprintf (fid, "| parameter | RIVSVF (%%) | RSRIVC (%%) | RIVSVF - RSRIVC (+- 2 s.e.) | RSRIVC better in | verdict |\n");
-  fprintf (fid, "|---|---|---|---|---|---|\n");
   pn = {"a1", "a2", "b0"};
-  better = false (1, 3);
-  worse = false (1, 3);
-  for i = 1:3
-    d = E(:, i, 2, 1) - E(:, i, 3, 1);
-    se = std (d) / sqrt (nruns);
-    better(i) = mean (d) > 2 * se;
-    worse(i) = mean (d) < -2 * se;
-    if (better(i))
-      v = "RSRIVC better";
-    elseif (worse(i))
-      v = "RSRIVC worse";
-    else
-      v = "no significant difference";
-    endif
-    fprintf (fid, "| %s | %.2f | %.2f | %+.2f +- %.2f | %d of %d runs | %s |\n",
-             pn{i}, mean (E(:, i, 2, 1)), mean (E(:, i, 3, 1)), mean (d),
-             2 * se, sum (d > 0), nruns, v);
-  endfor
-  dall = mean (E(:, :, 2, 1), 2) - mean (E(:, :, 3, 1), 2);
-  fprintf (fid, "| mean of the three | %.2f | %.2f | %+.2f +- %.2f | %d of %d runs | %s |\n\n",
-           mean (mean (E(:, :, 2, 1))), mean (mean (E(:, :, 3, 1))),
-           mean (dall), 2 * std (dall) / sqrt (nruns), sum (dall > 0), nruns,
-           ifelse_str (mean (dall) > 2 * std (dall) / sqrt (nruns),
-                       "RSRIVC better", "not shown"));
+  better = ch2_md_paired_table (fid, E, names{2}, names{3}, nruns);
   if (all (better))
     fprintf (fid, "The claim is reproduced for all three parameters.\n\n");
   else
@@ -294,28 +223,6 @@ function write_table (file, names, E, E0, rej, rej0, yard, winname, snr,
   fprintf (fid, "noise its relative errors are %.0f-%.0f times larger in the last ",
            min (Em(1, :, 1, 2) ./ E0(2, :)), max (Em(1, :, 1, 2) ./ E0(2, :)));
   fprintf (fid, "500 s, as the thesis' Fig. 2.11b shows.\n\n");
-  fprintf (fid, "Stability test (eq. 3.10): estimates refused on their way to the ");
-  fprintf (fid, "auxiliary model, mean [max] per run: ");
-  for m = 2:M
-    fprintf (fid, "%s %.1f [%d]%s", names{m}, mean (rej(:, m)), max (rej(:, m)),
-             ifelse_str (m < M, ", ", ". "));
-  endfor
-  fprintf (fid, "In run 1 the counts with the IV stage never started (RLSSVF ");
-  fprintf (fid, "phase only) are %d / %d / %d against %d / %d / %d with tsiv = 10 s, ",
-           rej0(2:M), rej(1, 2:M));
-  fprintf (fid, "i.e. %d / %d / %d refusals during the IV stage. ",
-           rej(1, 2:M) - rej0(2:M));
-  same = all (all (rej(:, 2:M) == rej(:, 2)));
-  fprintf (fid, "The counts of the three IV variants are %s in every run%s.\n",
-           ifelse_str (same, "the same", "not the same"),
-           ifelse_str (same, ", as they are when all refusals fall in the shared RLSSVF phase", ""));
+  ch2_md_stability (fid, names, rej, rej0, 10);
   fclose (fid);
-endfunction
-
-function s = ifelse_str (b, a, c)
-  if (b)
-    s = a;
-  else
-    s = c;
-  endif
 endfunction

@@ -66,43 +66,14 @@ function demo_ch2_similar_rates (outdir = "results", nruns = 100)
   thesis_noise = [0.2578 0.2670 0.2672 NaN];
   after = t >= tsiv;
 
-  S = zeros (N, 3, M);            # sum over runs of the estimates
-  R = zeros (N, 3, M);            # sum over runs of the relative errors (%)
-  thm1 = zeros (N, 3, M);         # run 1
-  mse = zeros (nruns, M);
-  mse_after = zeros (nruns, M);
-  rej = zeros (nruns, M);
-  tmain = 0;
-  textra = 0;
-  for s = 1:nruns
-    tic_run = tic;
-    randn ("state", s);
-    y = x + sqrt (sigma2) * randn (N, 1);
-    data = iddata (y, u, Ts, "InterSample", "zoh");
-    if (s == 1)
-      data1 = data;
-    endif
-    tmain += toc (tic_run);
-    for m = 1:M
-      tic_m = tic;
-      [thm, info] = estimate (m, data, common, tsiv);
-      err = theta - thm;
-      err2 = sum (err .^ 2, 2);
-      mse(s, m) = mean (err2);                    # eq. (2.32)
-      mse_after(s, m) = mean (err2(after));
-      rej(s, m) = info.stability_rejections;
-      S(:, :, m) += thm;
-      R(:, :, m) += abs (err ./ theta) * 100;     # eq. (2.33)
-      if (s == 1)
-        thm1(:, :, m) = thm;
-      endif
-      if (any (m == main))
-        tmain += toc (tic_m);
-      else
-        textra += toc (tic_m);
-      endif
-    endfor
-  endfor
+  simrun = @(s) deal (iddata (x + sqrt (sigma2) * randn (N, 1), u, Ts,
+                              "InterSample", "zoh"), []);
+  [R, S, stats, thm1, rej, data1, ~, tmain, textra] = ...
+    ch2_monte_carlo (theta, nruns, M, main, simrun,
+                     @(m, data) estimate (m, data, common, tsiv),
+                     @(thm, rel) mse_stats (theta - thm, after));
+  mse = reshape (stats(:, 1, :), nruns, M);       # eq. (2.32)
+  mse_after = reshape (stats(:, 2, :), nruns, M);
 
   ## Lag and noise errors, eqs. (2.34)-(2.36).
   thbar = S / nruns;
@@ -126,11 +97,8 @@ function demo_ch2_similar_rates (outdir = "results", nruns = 100)
   ## Where the stability test acts: run 1 again with the IV stage never
   ## starting (tsiv at the last sample) gives the rejections of the RLSSVF
   ## phase alone.
-  rej0 = zeros (1, M);
-  for m = 2:M
-    [~, info] = estimate (m, data1, common, t(end));
-    rej0(m) = info.stability_rejections;
-  endfor
+  rej0 = ch2_iv_phase_rejections (@(m, data) estimate (m, data, common,
+                                                     t(end)), data1, M);
 
   ch2_plot_panels (fullfile (outdir, "fig_2_3_estimates.png"), t, 10,
                    {struct("series", {{theta, thm1(:, :, 1), thm1(:, :, 3)}},
@@ -187,6 +155,12 @@ function [thm, info] = estimate (m, data, common, tsiv)
                                   "prefilter", "monic");
       thm = thm(:, [2 3 1]);
   endswitch
+endfunction
+
+function st = mse_stats (err, after)
+  ## MSE of the tracking error, eq. (2.32), over all and after tsiv.
+  err2 = sum (err .^ 2, 2);
+  st = [mean(err2), mean(err2(after))];
 endfunction
 
 function s = pct (a, b)
@@ -292,16 +266,16 @@ function write_table (file, names, mse, mse_after, res, rej, rej0,
   st_th = thesis_lag(3) - res.lag_after(3) * res.frac_after;
   st_us = res.lag(3) - res.lag_after(3) * res.frac_after;
   fprintf (fid, "in the thesis. The thesis' RLSSVF therefore lags %s after tsiv, ",
-           ifelse_str (dth > dus, "more", "less"));
+           ch2_ifelse_str (dth > dus, "more", "less"));
   fprintf (fid, "relative to its IV methods, than ours, and its common start-up part (thesis' RSRIVC MSE_l ");
   fprintf (fid, "minus our RSRIVC lag after tsiv, about %.2f) is %s ours (%.2f); ",
-           st_th, ifelse_str (st_th > st_us, "larger than", "not larger than"),
+           st_th, ch2_ifelse_str (st_th > st_us, "larger than", "not larger than"),
            st_us);
   fprintf (fid, "the sampling error of a %d-run mean (of the order of ", nruns);
   fprintf (fid, "MSE_n/nruns = %.4f) is %s to explain differences of ",
            res.noise(1) / nruns,
-           ifelse_str (res.noise(1) / nruns < 0.2 * abs (dth - dus),
-                       "too small", "not small enough"));
+           ch2_ifelse_str (res.noise(1) / nruns < 0.2 * abs (dth - dus),
+                           "too small", "not small enough"));
   fprintf (fid, "this size. Likely reasons are details the thesis leaves ");
   fprintf (fid, "open: the discretisation of the SVF on y (implementation notes, ");
   fprintf (fid, "item 1: ZOH instead of Tustin for y adds percent-level errors), ");
@@ -323,7 +297,7 @@ function write_table (file, names, mse, mse_after, res, rej, rej0,
   noise_tradeoff = res.noise_after(2) > res.noise_after(1) ...
                    && res.noise_after(3) > res.noise_after(1);
   fprintf (fid, "%s (noise MSE after tsiv %.4f / %.4f / %.4f).\n\n",
-           ifelse_str (noise_tradeoff, "shows", "does not show"),
+           ch2_ifelse_str (noise_tradeoff, "shows", "does not show"),
            res.noise_after(1:3));
   fprintf (fid, "Independent yardstick (implementation notes, item 8, 100 runs): ");
   fprintf (fid, "MSE_l 0.618 / 0.368 / 0.363, after tsiv 0.286 / 0.033 / 0.029; ");
@@ -344,33 +318,10 @@ function write_table (file, names, mse, mse_after, res, rej, rej0,
   fprintf (fid, "Qn on the same scale as for RLSSVF and RIVSVF, which is how the ");
   fprintf (fid, "thesis' single Qn for all methods gives its reported ranking.\n\n");
 
-  fprintf (fid, "Stability test (eq. 3.10): estimates refused on their way to the ");
-  fprintf (fid, "auxiliary model, mean [max] per run: ");
-  for m = 2:M
-    fprintf (fid, "%s %.1f [%d]%s", names{m}, mean (rej(:, m)), max (rej(:, m)),
-             ifelse_str (m < M, ", ", ". "));
-  endfor
-  fprintf (fid, "In run 1 the counts with the IV stage never started (RLSSVF ");
-  fprintf (fid, "phase only) are ");
-  fprintf (fid, "%d / %d / %d against %d / %d / %d with tsiv = 100 s, ",
-           rej0(2:M), rej(1, 2:M));
-  fprintf (fid, "i.e. %d / %d / %d refusals during the IV stage. ",
-           rej(1, 2:M) - rej0(2:M));
-  same = all (all (rej(:, 2:M) == rej(:, 2)));
-  fprintf (fid, "The counts of the three IV variants are %s in every run%s.\n",
-           ifelse_str (same, "the same", "not the same"),
-           ifelse_str (same, ", as they are when all refusals fall in the shared RLSSVF phase", ""));
+  ch2_md_stability (fid, names, rej, rej0, tsiv);
   fclose (fid);
 endfunction
 
 function s = yesno (b)
-  s = ifelse_str (b, "yes", "no");
-endfunction
-
-function s = ifelse_str (b, a, c)
-  if (b)
-    s = a;
-  else
-    s = c;
-  endif
+  s = ch2_ifelse_str (b, "yes", "no");
 endfunction
