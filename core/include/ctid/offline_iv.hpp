@@ -337,6 +337,25 @@ RecordView<S> auxiliary_record(const RecordView<S>& record, const Loop<S>& loop,
   return aux;
 }
 
+// The estimate of a one-step method (LSSVF, IVSVF): theta, its covariance
+// from the IV solution, and the variance of the simulation residual.
+template <typename S>
+Status fill_single_step_estimate(const ModelOrders& orders, InterSample u_rule,
+                                 const RecordView<S>& record,
+                                 const IvSolution<S>& solution,
+                                 OfflineEstimate<S>* estimate) {
+  S noise_variance = 0;
+  const Status status = simulation_noise_variance(
+      orders, u_rule, solution.theta, record, noise_variance);
+  if (!status.ok()) return status;
+  estimate->theta = solution.theta;
+  estimate->covariance = solution.equation_error_variance * solution.sandwich;
+  estimate->noise_variance = noise_variance;
+  estimate->iterations = 1;
+  estimate->converged = true;
+  return Status::Ok();
+}
+
 }  // namespace offline_iv_detail
 
 // LSSVF, eq. (1.32). Covariance sigma^2 (Phi^T Phi)^-1 with sigma^2 the
@@ -355,16 +374,8 @@ Status lssvf(const ModelOrders& orders, const SvfSettings<S>& svf,
   IvSolution<S> solution;
   status = solve_iv(Phi, Phi, target, "regressor", solution);
   if (!status.ok()) return status;
-  S noise_variance = 0;
-  status = simulation_noise_variance(orders, svf.u_intersample, solution.theta,
-                                     record, noise_variance);
-  if (!status.ok()) return status;
-  estimate->theta = solution.theta;
-  estimate->covariance = solution.equation_error_variance * solution.sandwich;
-  estimate->noise_variance = noise_variance;
-  estimate->iterations = 1;
-  estimate->converged = true;
-  return Status::Ok();
+  return offline_iv_detail::fill_single_step_estimate(
+      orders, svf.u_intersample, record, solution, estimate);
 }
 
 namespace offline_iv_detail {
@@ -379,8 +390,13 @@ Status svf_iv(const ModelOrders& orders, const SvfSettings<S>& svf,
               OfflineEstimate<S>* estimate) {
   Status status = validate_problem(orders, svf, record, loop, estimate);
   if (!status.ok()) return status;
-  OfflineEstimate<S> ls;
-  status = lssvf(orders, svf, record, &ls);
+  // First step, LSSVF on the same regression (built once for both steps).
+  Matrix<S> Phi, Z;
+  Vector<S> target, unused;
+  status = build_svf_regression(orders, svf, record, Phi, target);
+  if (!status.ok()) return status;
+  IvSolution<S> ls;
+  status = solve_iv(Phi, Phi, target, "regressor", ls);
   if (!status.ok()) return status;
   Vector<S> drive;
   status = stabilised(orders, ls.theta, drive);
@@ -389,26 +405,14 @@ Status svf_iv(const ModelOrders& orders, const SvfSettings<S>& svf,
   status = simulate_auxiliary(orders, svf.u_intersample, drive, record, loop,
                               xhat, uhat);
   if (!status.ok()) return status;
-  Matrix<S> Phi, Z;
-  Vector<S> target, unused;
-  status = build_svf_regression(orders, svf, record, Phi, target);
-  if (!status.ok()) return status;
   status = build_svf_regression(
       orders, svf, auxiliary_record(record, loop, xhat, uhat), Z, unused);
   if (!status.ok()) return status;
   IvSolution<S> solution;
   status = solve_iv(Z, Phi, target, "instrument", solution);
   if (!status.ok()) return status;
-  S noise_variance = 0;
-  status = simulation_noise_variance(orders, svf.u_intersample, solution.theta,
-                                     record, noise_variance);
-  if (!status.ok()) return status;
-  estimate->theta = solution.theta;
-  estimate->covariance = solution.equation_error_variance * solution.sandwich;
-  estimate->noise_variance = noise_variance;
-  estimate->iterations = 1;
-  estimate->converged = true;
-  return Status::Ok();
+  return fill_single_step_estimate(orders, svf.u_intersample, record, solution,
+                                   estimate);
 }
 
 // SRIVC (open loop) or CLSRIVC (closed loop) iterations.
