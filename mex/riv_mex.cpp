@@ -27,17 +27,10 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                            " instead)");
   }
   if (nlhs > 5) g.fail("badInput", "at most 5 outputs");
-  const ctid::RecordView<double> record =
-      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   ctid::RecursiveIvConfig<double> config;
-  config.svf.u_intersample = ctid::mex::read_intersample(g, prhs[4]);
-  config.orders = ctid::mex::read_orders(g, prhs[5], prhs[6], prhs[7]);
-  config.svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
-  config.svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
+  const ctid::RecordView<double> record =
+      ctid::mex::read_recursive_arguments(g, prhs, &config);
   const long np = config.orders.num_parameters();
-  config.adaptation = ctid::mex::read_adaptation(g, prhs[10], prhs[11], np);
-  ctid::mex::read_initial_estimate(g, prhs[12], prhs[13], np, &config.theta0,
-                                   &config.P0);
   const std::string method = g.text(prhs[14], "method");
   if (method == "rivsvf") {
     config.method = ctid::IvMethod::kRivsvf;

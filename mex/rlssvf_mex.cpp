@@ -22,17 +22,10 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                            std::to_string(nrhs) + " (call rlssvf instead)");
   }
   if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, kappa)");
-  const ctid::RecordView<double> record =
-      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   ctid::RlsSvfConfig<double> config;
-  config.svf.u_intersample = ctid::mex::read_intersample(g, prhs[4]);
-  config.orders = ctid::mex::read_orders(g, prhs[5], prhs[6], prhs[7]);
-  config.svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
-  config.svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
+  const ctid::RecordView<double> record =
+      ctid::mex::read_recursive_arguments(g, prhs, &config);
   const long np = config.orders.num_parameters();
-  config.adaptation = ctid::mex::read_adaptation(g, prhs[10], prhs[11], np);
-  ctid::mex::read_initial_estimate(g, prhs[12], prhs[13], np, &config.theta0,
-                                   &config.P0);
   g.check(ctid::validate(config));
   g.check(ctid::validate_record(record, config.orders));
 
