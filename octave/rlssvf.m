@@ -51,6 +51,42 @@
 ## @qcode{"ordinary"} 1/(p+lambda)^na (eq. 1.19).
 ## @end table
 ##
+## @strong{Chapter 3 options} (thesis secs. 3.4-3.6):
+## @table @code
+## @item potter
+## true: propagate a square root S of P, P = S S^T (PotterSVF, eq. 3.73,
+## with an orthogonal (QR) time update; with @qcode{"ff"} the forgetting
+## factor form). Same estimates in exact arithmetic; kappa_2(S) is the
+## square root of kappa_2(P) (eq. 3.68). Default false.
+## @item adm "lmr", Gamma
+## LMR-RLSSVF (eq. 3.82): @code{adg} is the forgetting factor lambda and
+## @code{Gamma} (np-by-np, or a scalar/vector for a diagonal) the
+## regularisation that keeps P bounded under poor excitation.
+## @item scaling
+## signal scaling with a diagonal M_s (eqs. 3.65-3.66; with @code{potter},
+## App. C): a vector of np diagonal entries (ordered like @var{thm}), a
+## training record (iddata, or a cell @{y, u, Ts@}) from which M_s is computed
+## by eq. (3.54) (see @code{svfscaling}), or @qcode{"self"} (eq. 3.54 on the
+## estimation data). The estimates are those of the unscaled recursion up to
+## rounding; @code{info.kappa} is then kappa_2 of the scaled P_s.
+## @item ic
+## true: estimate the initial conditions with the regressors of eqs.
+## (3.36)-(3.41); @var{thm} stays N-by-np and @code{info.ic} holds the
+## N-by-na coefficients c_1 .. c_na (for na = 1, c_1 estimates y(0)).
+## @code{th0}, @code{P0}, @code{adg} and @code{scaling} keep their np-size
+## meaning; the c_i start at 0 with P0 = 1e4, Qn = 0, no scaling. The
+## filters then start at rest at the first sample (trapezoidal channels
+## included), which is what the regressors describe.
+## @item tsls
+## time (s) from which the estimates are updated (Suggested procedure 3.7);
+## the filters run from the first sample, so the transient of the initial
+## conditions passes before the estimation starts. Default 0.
+## @item precision
+## @qcode{"double"} (default) or @qcode{"single"}: the whole recursion in
+## single precision (on a single-precision copy of the data), as on a
+## microcontroller; the outputs are returned as double.
+## @end table
+##
 ## @strong{Outputs}
 ## @table @var
 ## @item thm
@@ -63,9 +99,12 @@
 ## np-by-np-by-N covariance matrix P after each recursion; computed only when
 ## requested.
 ## @item info
-## a struct with @code{kappa}, the N-by-1 condition number kappa_2(P)
-## after each recursion (thesis sec. 3.5; Inf once P has lost positive
-## definiteness); computed only when requested.
+## a struct, computed only when requested: @code{kappa}, the N-by-1
+## condition number kappa_2(P) after each recursion (thesis sec. 3.5; Inf
+## once P has lost positive definiteness); @code{error}, the prediction
+## error y_f^(na) - phi_f^T theta(t_(k-1)) (eq. 1.55); @code{innovation},
+## its normalised variance 1 + phi_f^T P(t_k|t_(k-1)) phi_f (eq. 3.25;
+## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i.
 ## @end table
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
@@ -90,27 +129,12 @@
 ## @end deftypefn
 
 function varargout = rlssvf (varargin)
-  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
-                     "P0", [], "svf", "normalised");
-  [d, orders, opts] = contsid_recursive_args ("rlssvf", "a", defaults,
-                                             varargin{:});
-  o = contsid_recursive_options ("rlssvf", opts, orders.np);
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  p = contsid_rlssvf_args ("rlssvf", varargin{:});
   ## Ask the gateway only for the outputs requested: YH costs a matrix
   ## exponential per sample and PSET N*np^2 memory.
   try
-    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", d.y, d.u, t,
-                                                 d.intersample, orders.na,
-                                                 orders.nb, orders.nk,
-                                                 o.lambda_svf, o.svf, o.adm,
-                                                 o.adg, o.th0, o.P0);
-    if (nargout >= 4)
-      varargout{4} = struct ("kappa", varargout{4});
-    endif
+    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", p.args{:},
+                                                 p.precision);
   catch err
     contsid_rethrow (err);
   end_try_catch

@@ -154,6 +154,7 @@ class ParameterUpdate {
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * phi;
     const S denominator = offset() + phi.dot(p_zeta_);
+    innovation_scale_ = denominator;
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
     // P -= (P phi)(P phi)^T / den on the lower triangle, mirrored: P stays
@@ -176,6 +177,7 @@ class ParameterUpdate {
     p_zeta_.noalias() = P_ * zeta;
     pt_phi_.noalias() = P_.transpose() * phi;
     const S denominator = offset() + phi.dot(p_zeta_);
+    innovation_scale_ = denominator;
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
     P_.noalias() -= gain_ * pt_phi_.transpose();
@@ -184,6 +186,11 @@ class ParameterUpdate {
   }
 
   const Vector<S>& theta() const { return theta_; }
+  // The gain denominator of the last step, lambda (or 1) + phi^T P^- zeta:
+  // for the least-squares Kalman filter the variance of the prediction error
+  // over sigma_e^2, r(t_k) / sigma_e^2 of eq. (3.18)/(3.25); for the IV
+  // update the quantity RSRIVC computes in its place.
+  S innovation_scale() const { return innovation_scale_; }
   // Gain L(t_k) of the last step.
   const Vector<S>& gain() const { return gain_; }
   const Matrix<S>& P() const { return P_; }
@@ -209,6 +216,7 @@ class ParameterUpdate {
   Vector<S> p_zeta_;
   Vector<S> pt_phi_;
   Vector<S> gain_;
+  S innovation_scale_ = 1;
 };
 
 }  // namespace ctid
