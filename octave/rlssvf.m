@@ -206,6 +206,69 @@ endfunction
 %! b = rlssvf (data, [2 1 0], "lambda_svf", 3);
 %! assert (any (abs (a(:) - b(:)) > 0));
 
+%!test  # potter: the square-root form gives the standard estimates
+%! Qn = diag ([1e-4 1e-5 1e-5]);
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", Qn);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", Qn, ...
+%!             "potter", true);
+%! assert (b, a, 1e-9 * max (abs (a(:))));
+%! c = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.99, "potter", 1);
+%! d = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.99);
+%! assert (c, d, 1e-9 * max (abs (d(:))));
+
+%!test  # scaling: same estimates and P; info.kappa is kappa_2 of P_s
+%! m = svfscaling (data, [2 1 0], "lambda_svf", 3);
+%! [a, ~, pa] = rlssvf (data, [2 1 0], "lambda_svf", 3);
+%! [b, ~, pb, ib] = rlssvf (data, [2 1 0], "lambda_svf", 3, "scaling", m);
+%! c = rlssvf (data, [2 1 0], "lambda_svf", 3, "scaling", "self");
+%! d = rlssvf (data, [2 1 0], "lambda_svf", 3, "scaling", data);
+%! assert (b, a, 1e-8 * max (abs (a(:))));
+%! assert (c, b, 0);
+%! assert (d, b, 0);
+%! assert (pb(:, :, end), pa(:, :, end), 1e-6 * norm (pa(:, :, end)));
+%! e = eig (diag (1 ./ m) * pb(:, :, end) * diag (1 ./ m));
+%! assert (ib.kappa(end), max (e) / min (e), 1e-6 * ib.kappa(end));
+
+%!test  # ic: c_1 estimates y(0) of (p + 3) y = 30 u (eq. 3.43)
+%! h = 0.005; n = 4000; t = (0:n-1)' * h;
+%! us = 1 - 2 * mod (floor (t), 2);              # square wave, period 2 s
+%! ys = simc (struct ("B", 30, "F", [1 3]), us, h, "x0", 18.1);
+%! assert (ys(1), 18.1, 1e-12);
+%! [thm, ~, ~, info] = rlssvf (ys, us, h, [1 1 0], "lambda_svf", 4, "ic", 1);
+%! assert (size (info.ic), [n 1]);
+%! assert (info.ic(end), 18.1, 2e-3 * 18.1);
+%! assert (thm(end, :), [3 30], 2e-3 * 30);
+%! thm0 = rlssvf (ys, us, h, [1 1 0], "lambda_svf", 4);
+%! ## peak deviation of a1 (eq. 3.44 with |.|): far larger without i.c.
+%! assert (max (abs (thm0(:, 1) - 3)) > 10 * max (abs (thm(:, 1) - 3)));
+
+%!test  # tsls: the estimates stay at th0 before it, then move
+%! thm = rlssvf (data, [2 1 0], "lambda_svf", 3, "tsls", 10, "th0", [1 2 3]);
+%! k = round (10 / Ts);
+%! assert (thm(1:k, :), repmat ([1 2 3], k, 1));
+%! assert (any (thm(k + 1, :) != [1 2 3]));
+
+%!test  # adm lmr with Gamma = 0 is the forgetting factor; Gamma bounds P
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "lmr", "adg", 0.98, ...
+%!             "Gamma", 0);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.98);
+%! assert (a, b, 1e-8 * max (abs (b(:))));
+%! uc = [u; ones(4000, 1)];                       # then no excitation
+%! yc = simc (struct ("B", 4, "F", [1 2.4 4]), uc, Ts);
+%! [~, ~, ~, il] = rlssvf (yc, uc, Ts, [2 1 0], "lambda_svf", 3, ...
+%!                         "adm", "lmr", "adg", 0.998, "Gamma", 1);
+%! [~, ~, ~, iff] = rlssvf (yc, uc, Ts, [2 1 0], "lambda_svf", 3, ...
+%!                          "adg", 0.998);
+%! assert (il.kappa(end) < iff.kappa(end) / 100);
+
+%!test  # single precision: close to double on this well-scaled problem
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6, ...
+%!             "precision", "single");
+%! assert (class (b), "double");
+%! assert (b(end, :), a(end, :), 1e-3 * max (abs (a(end, :))));
+%! assert (any (b(:) != a(:)));
+
 ## Bad input: each validation branch has its identifier.
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
@@ -255,6 +318,25 @@ endfunction
 %!error id=rlssvf:badInput rlssvf ((1:5)', (1:5)', 0, [1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf ((1:5)' + 1i, (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf ({1}, (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "potter", "yes")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "potter", 2)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "Gamma", 1)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "Gamma", 1, "potter", true)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "Gamma", -1)
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "Gamma", eye (2))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "adg", 2, "Gamma", 1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", [1 0 1])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", [1 NaN 1])
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", [1 1])
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", "auto")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", iddata (zeros (50, 1), ones (50, 1), 0.1))
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", iddata (ones (50, 1), ones (50, 2), 0.1))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", {1})
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "ic", "on")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", -1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", [1 2])
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
 %!error id=rlssvf:badInput rlssvf ()
 %!error id=rlssvf:badInput rlssvf (data)
 
