@@ -14,7 +14,7 @@
 ## @end example
 ## @code{adg} (Qn), @code{th0} and @code{P0} are ordered like @var{thm}.
 ## The other options are those of @code{rivsvf} (@code{lambda_svf},
-## @code{adm}, @code{adg}, @code{th0}, @code{P0}, @code{tsiv},
+## @code{adm}, @code{adg}, @code{th0}, @code{P0}, @code{tsiv} (also "auto"),
 ## @code{dtupdate}, @code{stability}, @code{mtheta}, @code{svf}) plus:
 ## @table @code
 ## @item A

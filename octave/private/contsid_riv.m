@@ -60,8 +60,21 @@ function varargout = contsid_riv (fname, nout, varargin)
     duration = d.t(end) - d.t(1);
   endif
   tsiv = opts.tsiv;
+  tsiv_detector = [];
   if (isempty (tsiv))
     tsiv = duration / 10;                # CONTSID default
+  elseif ((ischar (tsiv) && strcmpi (tsiv, "auto")) || isstruct (tsiv))
+    ## Detected convergence of the RLSSVF start (see help rlsconverge);
+    ## a struct holds detector options.
+    det = {};
+    if (isstruct (tsiv))
+      det = tsiv;
+    endif
+    rls = struct ("lambda_svf", o.lambda_svf, "adm", o.adm, "adg", adg,
+                  "th0", th0, "P0", P0, "svf", o.svf);
+    nn_rls = [na, orders.nb, orders.nk];
+    [tsiv, tsiv_detector] = contsid_converge (fname, d, nn_rls, rls, det,
+                                              true);
   endif
   check_scalar (fname, tsiv, "tsiv");
   if (tsiv < 0 || tsiv > duration * (1 + 1e-12))
@@ -137,6 +150,7 @@ function varargout = contsid_riv (fname, nout, varargin)
   if (numel (outs) >= 4)
     outs{4} = struct ("stability_rejections", outs{4}, "tsiv", tsiv,
                       "kappa", outs{5});
+    outs{4}.tsiv_detector = tsiv_detector;
     outs(5) = [];
   endif
   varargout = outs;
