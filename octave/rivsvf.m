@@ -13,7 +13,12 @@
 ## @item tsiv
 ## time (s from the first sample) at which the IV stage takes over from
 ## RLSSVF (default: a tenth of the record); the IV stage starts from the
-## last RLSSVF estimate and P (thesis sec. 3.2.1).
+## last RLSSVF estimate and P (thesis sec. 3.2.1). @qcode{"auto"}: the
+## time at which @code{rlsconverge} detects the convergence of RLSSVF run
+## with the same options (a struct of its detector options instead of
+## @qcode{"auto"} sets them); @var{info} reports it in
+## @code{tsiv_detector}; no detected convergence is the error
+## @code{<name>:notConverged}.
 ## @item dtupdate
 ## period (s) at which the auxiliary model is refreshed from the estimates
 ## (default: every sample); not below the sampling interval.

@@ -21,6 +21,7 @@ function varargout = contsid_riv (fname, nout, varargin)
   endif
   if (numel (outs) >= 4)
     outs{4}.tsiv = p.tsiv;
+    outs{4}.tsiv_detector = p.tsiv_detector;
   endif
   varargout = outs;
 endfunction

@@ -73,8 +73,23 @@ function p = contsid_riv_args (fname, routine, varargin)
     duration = d.t(end) - d.t(1);
   endif
   tsiv = opts.tsiv;
+  tsiv_detector = [];
   if (isempty (tsiv))
     tsiv = duration / 10;                # CONTSID default
+  elseif ((ischar (tsiv) && strcmpi (tsiv, "auto")) || isstruct (tsiv))
+    ## Detected convergence of the RLSSVF start (see help rlsconverge);
+    ## a struct holds detector options. Scaling and precision do not
+    ## change the RLSSVF estimates the detector examines, so they are not
+    ## forwarded.
+    det = {};
+    if (isstruct (tsiv))
+      det = tsiv;
+    endif
+    rls = struct ("lambda_svf", o.lambda_svf, "adm", o.adm, "adg", adg,
+                  "th0", th0, "P0", P0, "svf", o.svf);
+    nn_rls = [na, orders.nb, orders.nk];
+    [tsiv, tsiv_detector] = contsid_converge (fname, d, nn_rls, rls, det,
+                                              true);
   endif
   check_scalar (fname, tsiv, "tsiv");
   if (tsiv < 0 || tsiv > duration * (1 + 1e-12))
@@ -131,6 +146,7 @@ function p = contsid_riv_args (fname, routine, varargin)
   endif
 
   p = struct ("d", d, "orders", orders, "perm", perm, "tsiv", tsiv);
+  p.tsiv_detector = tsiv_detector;
   p.args = {d.y, d.u, t, d.intersample, na, orders.nb, orders.nk, ...
             o.lambda_svf, o.svf, o.adm, adg, th0, P0, method, tsiv, ...
             dtupdate, lower(opts.stability), m_num, m_den, ...
