@@ -28,9 +28,11 @@
 // Qn^(1/2) is computed once, in configure(), from the eigen-decomposition of
 // Qn, so a semi-definite Qn (e.g. a parameter known to be constant) is
 // handled; only its nonzero directions enter the QR step, and Qn = 0 skips
-// the QR step altogether. No allocation happens in update() for np <= 48
-// (Eigen's HouseholderQR works unblocked, in the preallocated workspace, up
-// to 48 columns).
+// the QR step altogether. The triangularisation is a plain column-by-column
+// Householder sweep in the preallocated stacked matrix (only R is needed,
+// never Q): for the handful of parameters of these models a generic QR
+// costs several times the rest of the step (bench/ch3_bench.cpp). No
+// allocation happens in update().
 #pragma once
 
 #include <cmath>
@@ -81,6 +83,9 @@ S condition_number_from_square_root(const Matrix<S>& sqrt_P) {
 template <typename S>
 class PotterUpdate {
  public:
+  using RowMatrix =
+      Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
   PotterUpdate() = default;
   PotterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
     configure(np, std::move(adaptation));
@@ -105,9 +110,8 @@ class PotterUpdate {
     theta_ = Vector<S>::Zero(np);
     S_ = Matrix<S>::Identity(np, np);
     P_ = Matrix<S>::Identity(np, np);
-    stacked_ = Matrix<S>::Zero(np + qn_root_t_.rows(), np);
-    stacked_.bottomRows(qn_root_t_.rows()) = qn_root_t_;
-    qr_ = Eigen::HouseholderQR<Matrix<S>>(stacked_.rows(), np);
+    stacked_ = RowMatrix::Zero(np + qn_root_t_.rows(), np);
+    stacked_.topRows(np).setIdentity();
     f_ = Vector<S>::Zero(np);
     s_f_ = Vector<S>::Zero(np);
     gain_ = Vector<S>::Zero(np);
@@ -116,21 +120,21 @@ class PotterUpdate {
   // S(t_0) is the Cholesky factor of P0; a P0 that is only semi-definite
   // (within rounding) gets its eigen-based square root instead.
   void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
-    theta_ = theta0;
     const Eigen::LLT<Matrix<S>> llt(P0);
     if (llt.info() == Eigen::Success) {
-      S_ = llt.matrixL();
+      reset_square_root(theta0, llt.matrixL());
     } else {
       const Matrix<S> root = semidefinite_square_root<S>(P0);
-      S_.setZero();
-      S_.leftCols(root.cols()) = root;
+      Matrix<S> S0 = Matrix<S>::Zero(P0.rows(), P0.cols());
+      S0.leftCols(root.cols()) = root;
+      reset_square_root(theta0, S0);
     }
   }
 
   // Starts from a given square root, P0 = S0 S0^T.
   void reset_square_root(const Vector<S>& theta0, const Matrix<S>& S0) {
     theta_ = theta0;
-    S_ = S0;
+    stacked_.topRows(S0.rows()) = S0.transpose();
   }
 
   // One PotterSVF step. Returns the prediction error
@@ -139,15 +143,25 @@ class PotterUpdate {
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
     predict();
     const S error = target - phi.dot(theta_);
-    f_.noalias() = S_.transpose() * phi;
+    // The rows of the top block of stacked_ are the columns of S; plain
+    // loops over them, since for a few parameters Eigen's general
+    // matrix-vector products cost more than the arithmetic.
+    const Eigen::Index n = theta_.size();
+    auto St = stacked_.topRows(n);
+    for (Eigen::Index k = 0; k < n; ++k) f_(k) = St.row(k).dot(phi);
     const S beta = lambda_ + f_.squaredNorm();
     const S alpha = beta + std::sqrt(lambda_ * beta);
-    s_f_.noalias() = S_ * f_;
+    s_f_.setZero();
+    for (Eigen::Index k = 0; k < n; ++k) {
+      s_f_ += f_(k) * St.row(k).transpose();
+    }
     gain_ = s_f_ / beta;
     theta_ += gain_ * error;
-    s_f_ /= alpha;
-    S_.noalias() -= s_f_ * f_.transpose();
-    if (lambda_ != S(1)) S_ /= std::sqrt(lambda_);
+    const S shrink = lambda_ != S(1) ? S(1) / std::sqrt(lambda_) : S(1);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      St.row(k) -= (f_(k) / alpha) * s_f_.transpose();
+      if (shrink != S(1)) St.row(k) *= shrink;
+    }
     innovation_scale_ = beta;
     return error;
   }
@@ -156,16 +170,23 @@ class PotterUpdate {
   // normalised variance of the prediction error (eq. 3.25 over sigma_e^2).
   S innovation_scale() const { return innovation_scale_; }
   // kappa_2(P) from the square root, eq. (3.68).
-  S condition_number() const { return condition_number_from_square_root(S_); }
+  S condition_number() const {
+    return condition_number_from_square_root(sqrt_P());
+  }
 
   const Vector<S>& theta() const { return theta_; }
   // Gain L(t_k) of the last step, eq. (3.73h).
   const Vector<S>& gain() const { return gain_; }
-  // S(t_k); not unique (any S Q with Q orthogonal gives the same P).
-  const Matrix<S>& sqrt_P() const { return S_; }
+  // S(t_k), formed on request; not unique (any S Q with Q orthogonal gives
+  // the same P).
+  const Matrix<S>& sqrt_P() const {
+    S_ = stacked_.topRows(theta_.size()).transpose();
+    return S_;
+  }
   // P(t_k) = S S^T, formed on request (exactly symmetric).
   const Matrix<S>& P() const {
-    P_.noalias() = S_ * S_.transpose();
+    const Matrix<S>& root = sqrt_P();
+    P_.noalias() = root * root.transpose();
     for (Eigen::Index j = 1; j < P_.cols(); ++j) {
       for (Eigen::Index i = 0; i < j; ++i) P_(i, j) = P_(j, i);
     }
@@ -174,16 +195,43 @@ class PotterUpdate {
   const Adaptation<S>& adaptation() const { return adaptation_; }
 
  private:
-  // S S^T + Qn = [S^T; Qn^(T/2)]^T [S^T; Qn^(T/2)] = R^T R.
+  // S S^T + Qn = [S^T; Qn^(T/2)]^T [S^T; Qn^(T/2)] = R^T R, eq. (3.73b):
+  // the orthogonal T is a product of Householder reflections, applied in
+  // place; R is the new S^T (upper triangular).
   void predict() {
-    if (qn_root_t_.rows() == 0) return;
-    const Eigen::Index np = S_.rows();
-    stacked_.topRows(np) = S_.transpose();
-    qr_.compute(stacked_);
-    S_ = qr_.matrixQR()
-             .topRows(np)
-             .template triangularView<Eigen::Upper>()
-             .transpose();
+    const Eigen::Index r = qn_root_t_.rows();
+    if (r == 0) return;
+    const Eigen::Index n = theta_.size();
+    stacked_.bottomRows(r) = qn_root_t_;
+    triangularize(stacked_);
+    for (Eigen::Index i = 1; i < n; ++i) {
+      for (Eigen::Index k = 0; k < i; ++k) stacked_(i, k) = 0;
+    }
+  }
+
+  // Overwrites the upper triangle of A's first n rows with R of A = Q R
+  // (R's diagonal may be negative: R^T R = A^T A is what matters); the
+  // entries below it are left as workspace.
+  static void triangularize(RowMatrix& A) {
+    const Eigen::Index m = A.rows(), n = A.cols();
+    S* a = A.data();
+    for (Eigen::Index j = 0; j < n; ++j) {
+      S norm2 = 0;
+      for (Eigen::Index i = j; i < m; ++i) norm2 += a[i * n + j] * a[i * n + j];
+      if (!(norm2 > 0)) continue;
+      const S norm = std::sqrt(norm2);
+      const S x = a[j * n + j];
+      const S diagonal = x > 0 ? -norm : norm;
+      a[j * n + j] = x - diagonal;  // v = x - diagonal e_j, |v_j| >= norm
+      const S v_norm2 = a[j * n + j] * a[j * n + j] + (norm2 - x * x);
+      for (Eigen::Index k = j + 1; k < n; ++k) {
+        S dot = 0;
+        for (Eigen::Index i = j; i < m; ++i) dot += a[i * n + j] * a[i * n + k];
+        const S f = 2 * dot / v_norm2;
+        for (Eigen::Index i = j; i < m; ++i) a[i * n + k] -= f * a[i * n + j];
+      }
+      a[j * n + j] = diagonal;
+    }
   }
 
   Adaptation<S> adaptation_;
@@ -191,10 +239,11 @@ class PotterUpdate {
   S innovation_scale_ = 1;
   Matrix<S> qn_root_t_;  // Qn^(T/2), rank-by-np
   Vector<S> theta_;
-  Matrix<S> S_;
+  mutable Matrix<S> S_;
   mutable Matrix<S> P_;
-  Matrix<S> stacked_;  // [S^T; Qn^(T/2)]
-  Eigen::HouseholderQR<Matrix<S>> qr_;
+  // [S^T; Qn^(T/2)], row-major: the top rows are S^T (the state), the
+  // bottom ones the workspace of the time update.
+  RowMatrix stacked_;
   Vector<S> f_;
   Vector<S> s_f_;
   Vector<S> gain_;
