@@ -88,12 +88,19 @@ Status validate_covariance(const Matrix<S>& M, Eigen::Index np,
     return bad_input(what + " must be symmetric");
   }
   if (np == 0) return Status::Ok();
+  if (require_definite) {
+    // Cholesky decides: a P0 whose diagonal spans many decades (parameters
+    // of very different sizes, thesis sec. 4.1) is positive definite even
+    // when its smallest eigenvalue is below eps times its largest.
+    const Eigen::LLT<Matrix<S>> llt((M + M.transpose()) / 2);
+    if (llt.info() != Eigen::Success || !(M.diagonal().array() > 0).all()) {
+      return bad_input(what + " must be positive definite");
+    }
+    return Status::Ok();
+  }
   const Eigen::SelfAdjointEigenSolver<Matrix<S>> eig(M);
-  const S smallest = eig.eigenvalues().minCoeff();
-  if (require_definite ? !(smallest > tolerance) : smallest < -tolerance) {
-    return bad_input(what + (require_definite
-                                 ? " must be positive definite"
-                                 : " must be positive semi-definite"));
+  if (eig.eigenvalues().minCoeff() < -tolerance) {
+    return bad_input(what + " must be positive semi-definite");
   }
   return Status::Ok();
 }
