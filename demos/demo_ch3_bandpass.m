@@ -92,6 +92,7 @@ function res = demo_ch3_bandpass (outdir = "results", full = true)
         rr(m, p).thm = thm;
         rr(m, p).kappa = info.kappa;
         rr(m, p).nonpd = sum (! isfinite (info.kappa(after)));
+        rr(m, p).innov0 = max (info.innovation(1:10));
         err = (thm(tail, :) - est.theta(tail, :)) ./ est.scale;
         rr(m, p).a2_rms = sqrt (mean (err(:, 2) .^ 2));
         rr(m, p).bias = mean (err);
@@ -387,8 +388,9 @@ function write_table (file, names, r, r2, ms, vnames, vrmse, vfit, qml,
   fprintf (fid, "(kappa_2 about %.3g) and the square root halves in the exponent. ",
            median (r(2, 1).kappa(tail)));
   fprintf (fid, "(2) From P0 = 1e4 I the standard (non-square-root) update, ");
-  fprintf (fid, "scaled or not, loses accuracy at the start: phi^T P0 phi is ");
-  fprintf (fid, "about 1e11 at the first samples, the update P - P phi phi^T ");
+  fprintf (fid, "scaled or not, loses accuracy at the start: 1 + phi^T P phi ");
+  fprintf (fid, "reaches %.1g in the first samples, the update P - P phi phi^T ",
+           r(1, 1).innov0);
   fprintf (fid, "P / (1 + phi^T P phi) cancels in float, and the error left ");
   fprintf (fid, "in the nearly constant a1, ");
   fprintf (fid, "b0 (Qn = 1e-15) decays only as information accumulates (%.1f %% ",
