@@ -43,8 +43,9 @@
 ## the same SVF regression (default 0: off). While kappa_2 >= gamma the
 ## estimates and P are held at th0 and P0; when excitation returns
 ## (kappa_2 < gamma) the estimator restarts with RLSSVF and switches to IV
-## tsiv later. The test is armed when kappa_2 < gamma first holds, so the
-## start-up of the parallel filter is not mistaken for poor excitation.
+## tsiv later. The test is armed when kappa_2 < gamma first holds at or
+## after tsiv (when RLSSVF is taken to have converged), so the start-up of
+## the parallel filter from P0 is not mistaken for poor excitation.
 ## @item antiwindup_lambda
 ## forgetting factor of that RLSSVF-FF (default 0.998, thesis Table 3.2).
 ## @item precision

@@ -23,8 +23,10 @@
 // parallel on the same SVF regression; while kappa_2 of its P is >= gamma
 // the estimates are held at theta(t_0), P(t_0), and when excitation
 // returns the estimator restarts through RLSSVF (IV again t_s,iv later).
-// The test is armed the first time kappa_2 < gamma holds, so that the
-// start-up of the parallel filter from P(t_0) does not count as poor
+// The test is armed the first time kappa_2 < gamma holds at or after
+// t_s,iv, the time by which RLSSVF on the same regression is taken to have
+// converged (sec. 3.2.1): kappa_2(P(t_0)) = 1 for P(t_0) = p I, and the
+// start-up of the parallel filter from it would otherwise count as poor
 // excitation.
 //
 // Prefilter gain (RSRIVC): the thesis writes 1/A(p) (monic). Its output
@@ -328,9 +330,9 @@ class RecursiveIv {
  private:
   bool antiwindup() const { return config_.antiwindup_gamma != 0; }
 
-  // Eq. (3.79) on the parallel RLSSVF-FF: armed once kappa_2 < gamma; a
-  // drop of excitation resets the estimates, its return restarts the
-  // RLSSVF stage.
+  // Eq. (3.79) on the parallel RLSSVF-FF: armed once kappa_2 < gamma at or
+  // after t_s,iv; a drop of excitation resets the estimates, its return
+  // restarts the RLSSVF stage.
   void monitor_excitation() {
     windup_monitor_.update(ls_regressor_.phi(), ls_regressor_.target());
     eigen_.compute(windup_monitor_.working_P(), Eigen::EigenvaluesOnly);
@@ -339,7 +341,7 @@ class RecursiveIv {
     monitor_kappa_ = smallest > 0 ? lambda(lambda.size() - 1) / smallest
                                   : std::numeric_limits<S>::infinity();
     const bool rich = monitor_kappa_ < config_.antiwindup_gamma;
-    armed_ = armed_ || rich;
+    armed_ = armed_ || (rich && elapsed_ >= config_.t_s_iv * (1 - 1e-12));
     const bool excited = !armed_ || rich;
     if (excited && !excited_) stage_start_ = elapsed_;
     if (!excited && excited_) ++resets_;
