@@ -4,8 +4,8 @@
 ## - on run 1 the cost at the ML q is no worse than at any point of a
 ##   41-point grid over the bounds (up to 1e-9 relative: the search stops
 ##   when log10 q moves by less than 1e-3, and V is smooth there);
-## - each search finishes within the issue's 30 s (measured about 0.3 s:
-##   a requirement check with a margin of 100, not a speed measurement);
+## (the time of the search, required under 30 s, is measured by
+## bench/qnml_octave_bench.m, not here: no timing in tests);
 ## - the thesis' q = 3.3e-5 lies within the range the PRBS clocks give.
 function test_demo_ch3_qn_ml ()
   root = getenv ("CTID_ROOT");
@@ -22,7 +22,6 @@ function test_demo_ch3_qn_ml ()
     allq = vertcat (res.sens.q);
     assert (all (allq >= 1e-6 & allq <= 1e-4));
     assert (res.V <= min (res.Vgrid) + 1e-9 * abs (res.V));
-    assert (all (vertcat (res.sens.time) < 30));
     assert (min (allq) < 3.3e-5 && max (allq) > 3.3e-5);
   unwind_protect_cleanup
     if (exist (out, "dir"))
