@@ -24,8 +24,9 @@
 //    with radians it is stable for R within (4.10).
 //  - Ts = 1 ms. (4.12) is the Tustin discretisation of a/(p + a) with
 //    a Ts = 0.02 (0.009901 = 0.01/1.01, 0.9802 = 0.99/1.01), i.e. a 20 rad/s
-//    set-point filter at 1 kHz, matched to the closed loop (P-part poles
-//    near -9 and -45 rad/s); the gains of (4.13) are per sample, as printed.
+//    set-point filter at 1 kHz, of the closed loop's speed (its poles,
+//    linearised at R = 1.4 Ohm: -2.5, -6.6 and -41 rad/s); the gains of
+//    (4.13) are per sample, as printed.
 //  - The loop starts at rest at the equilibrium of phi0 (default phi_d(t_1)):
 //    F_phi acts on phi_d - phi_d(t_1) (its printed coefficients have static
 //    gain 1.0001) and the PID's integrator holds the voltage that balances
@@ -35,7 +36,9 @@
 //  - The applied voltage is saturated at +-u_max (default 12 V, a car
 //    battery); no anti-windup (the limit is rarely reached).
 //  - sign(0) is set-valued (Filippov/Karnopp): at omega = 0 the plate
-//    sticks while |Kt Gr u / R - M_s| <= Mc.
+//    sticks while |Kt Gr u / R - M_s| <= Mc; at the pre-load jumps of
+//    (4.7) M_s is set-valued too, and a plate bouncing on one is pinned
+//    there (ThrottleBody).
 //  - Outside [phi_min, phi_max] the end segments of (4.7) are extended
 //    linearly (the estimator's auxiliary model may go there); the
 //    simulator itself refuses a trajectory that leaves the range.
