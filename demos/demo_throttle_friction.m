@@ -1,6 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{res} =} demo_throttle_friction (@var{outdir})
-## @deftypefnx {} {@var{res} =} demo_throttle_friction (@var{outdir}, @var{name}, @var{value}, @dots{})
+## @deftypefnx {} {@var{res} =} demo_throttle_friction (@var{outdir}, @
+##   @var{name}, @var{value}, @dots{})
 ## The last step of issue 5 sec. 6: hide the Coulomb friction of the
 ## throttle from a linear model of its mechanical part and let the tracing
 ## tool @code{residtrace} find it.
@@ -105,9 +106,10 @@ function k = trace_case (noisevar, Ts, plot_it, outdir, durations, use_trace)
               "rmse_linear", rmse, "Kb", M.F(2) * p.J, "Ks1", M.F(3) * p.J,
               "KtGr", M.B * p.J, "F_oracle", Mo.F, "rmse_oracle", rmse_o,
               "mc_oracle", mc (Mo), "Kb_o", Mo.F(2) * p.J,
-              "Ks1_o", Mo.F(3) * p.J, "KtGr_o", Mo.B{1} * p.J, "F_svf", Ms.F, "rmse_svf", rmse_s,
+              "Ks1_o", Mo.F(3) * p.J, "KtGr_o", Mo.B{1} * p.J,
+              "F_svf", Ms.F, "rmse_svf", rmse_s,
               "mc_svf", mc (Ms), "converged", [Mo.converged, Ms.converged],
-              "reversals", sum (diff (est.omega > 0) != 0),
+              "reversals", sum (diff (sign (est.omega)) != 0),
               "stuck", mean (est.omega == 0), "effect", "", "ranking", [],
               "rmse_before", NaN, "rmse_after", NaN,
               "trace_text", "residtrace is not on the path");
@@ -190,20 +192,29 @@ endfunction
 
 function write_table (file, res)
   fid = fopen (file, "w");
-  fprintf (fid, "## Throttle: the Coulomb friction hidden from a linear model (issue 5 sec. 6)\n\n");
-  fprintf (fid, "Estimation and validation records of the throttle loop (R = 1.4 Ohm, ");
-  fprintf (fid, "triangle-wave set points inside (4.16)); the linear model ");
-  fprintf (fid, "b / (p^2 + a1 p + a2) from the current to the angle (eq. 4.17 without ");
-  fprintf (fid, "sign(omega)), fitted by `srivc` on deviations from the initial rest ");
-  fprintf (fid, "state. Answer key: the same with sign(omega) as a second input ");
-  fprintf (fid, "(true omega, or omega from an SVF derivative of phi_m). ");
-  fprintf (fid, "True values: Kb = 4.98e-3, Ks1 = 0.1049, Kt Gr = 0.2456, Mc = 8e-3. ");
-  fprintf (fid, "%.1f s in all.\n\n", res.elapsed);
-  fprintf (fid, "| noise variance (rad^2) | omega reversals / stuck share (est.) | linear model: Kb / Ks1 / Kt Gr | validation RMSE (rad), linear | + sign(omega), true omega: RMSE / Mc | its Kb / Ks1 / Kt Gr | + sign(omega), SVF omega: RMSE / Mc | residtrace |\n");
-  fprintf (fid, "|---|---|---|---|---|---|---|---|\n");
+  fprintf (fid, ["## Throttle: the Coulomb friction hidden from a linear ", ...
+                 "model (issue 5 sec. 6)\n\n"]);
+  fprintf (fid, ["Estimation and validation records of the throttle loop ", ...
+                 "(R = 1.4 Ohm, triangle-wave set points inside (4.16)); ", ...
+                 "the linear model b / (p^2 + a1 p + a2) from the current ", ...
+                 "to the angle (eq. 4.17 without sign(omega)), fitted by ", ...
+                 "`srivc` on deviations from the initial rest state. ", ...
+                 "Answer key: the same with sign(omega) as a second input ", ...
+                 "(true omega, or omega from an SVF derivative of phi_m). ", ...
+                 "True values: Kb = 4.98e-3, Ks1 = 0.1049, ", ...
+                 "Kt Gr = 0.2456, Mc = 8e-3. %.1f s in all.\n\n"],
+           res.elapsed);
+  fprintf (fid, ["| noise variance (rad^2) | sign(omega) changes / stuck ", ...
+                 "share (est.) | linear model: Kb / Ks1 / Kt Gr | ", ...
+                 "validation RMSE (rad), linear | + sign(omega), true ", ...
+                 "omega: RMSE / Mc | its Kb / Ks1 / Kt Gr | ", ...
+                 "+ sign(omega), SVF omega: RMSE / Mc | residtrace |\n", ...
+                 "|---|---|---|---|---|---|---|---|\n"]);
   for c = 1:numel (res.case)
     k = res.case(c);
-    fprintf (fid, "| %g | %d / %.3f | %.4f / %.4f / %.4f | %.4f | %.4f / %.4f | %.4f / %.4f / %.4f | %.4f / %.4f | %s |\n",
+    fprintf (fid, ["| %g | %d / %.3f | %.4f / %.4f / %.4f | %.4f | ", ...
+                   "%.4f / %.4f | %.4f / %.4f / %.4f | %.4f / %.4f | ", ...
+                   "%s |\n"],
              k.noisevar, k.reversals, k.stuck, k.Kb, k.Ks1, k.KtGr,
              k.rmse_linear, k.rmse_oracle, k.mc_oracle, k.Kb_o, k.Ks1_o,
              k.KtGr_o, k.rmse_svf, k.mc_svf, k.trace_text);
@@ -212,24 +223,27 @@ function write_table (file, res)
   for c = 1:numel (res.case)
     k = res.case(c);
     if (! all (k.converged))
-      fprintf (fid, "At noise variance %g SRIVC did not converge in 20 iterations for the ",
-               k.noisevar);
-      fprintf (fid, "model with sign(omega) (%s omega); the last iterate is shown.\n\n",
-               ifelse_str (! k.converged(1), "true", "SVF"));
+      fprintf (fid, ["At noise variance %g SRIVC did not converge in 20 ", ...
+                     "iterations for the model with sign(omega) (%s ", ...
+                     "omega); the last iterate is shown.\n\n"],
+               k.noisevar, ifelse_str (! k.converged(1), "true", "SVF"));
     endif
   endfor
   if (res.has_residtrace && ! res.traced)
     fprintf (fid, "`residtrace` was not called (option trace = false).\n");
   elseif (! res.has_residtrace)
-    fprintf (fid, "`residtrace` (issue 5 sec. 2) is not on the path yet: the records, ");
-    fprintf (fid, "the model without friction and the answer key are ready, and the ");
-    fprintf (fid, "call `R = residtrace (data, M, \"validation\", datav)` is made as soon ");
-    fprintf (fid, "as it exists; it should report R.effect = \"coulomb\".\n");
+    fprintf (fid, ["`residtrace` (issue 5 sec. 2) is not on the path yet: ", ...
+                   "the records, the model without friction and the ", ...
+                   "answer key are ready, and the call ", ...
+                   "`R = residtrace (data, M, \"validation\", datav)` is ", ...
+                   "made as soon as it exists; it should report ", ...
+                   "R.effect = \"coulomb\".\n"]);
   else
     found = strcmp (res.case(1).effect, "coulomb");
-    fprintf (fid, "At noise variance 1e-8 `residtrace` %s the Coulomb friction",
-             ifelse_str (found, "**finds**", "**does not find**"));
-    fprintf (fid, " (top effect '%s').\n", res.case(1).effect);
+    fprintf (fid, ["At noise variance %g `residtrace` %s the Coulomb ", ...
+                   "friction (top effect '%s').\n"], res.case(1).noisevar,
+             ifelse_str (found, "**finds**", "**does not find**"),
+             res.case(1).effect);
   endif
   fclose (fid);
 endfunction

@@ -1,13 +1,14 @@
 ## -*- texinfo -*-
-## @deftypefn {} {} throttle_plot_panels (@var{file}, @var{t}, @var{step}, @var{panels}, @var{ncol})
+## @deftypefn {} {} throttle_plot_panels (@var{file}, @var{t}, @var{step}, @
+##   @var{panels}, @var{ncol})
 ## Helper of the throttle demos: writes a PNG of the panels in the cell
 ## array @var{panels}, laid out in @var{ncol} columns (default 1). Each
 ## panel is a struct with fields @code{series} (cell of N-by-1 vectors),
 ## @code{labels} (legend entries; "true" is drawn thick black),
 ## @code{ylabel} (colours: "true" black, RLSSVF red, CLRSRIVC blue, others
-## green, red, blue, magenta by position), and optionally @code{title}, @code{ylim} and
-## @code{vlines} (times marked by dotted lines). Every @var{step}-th
-## sample is drawn. Uses gnuplot off-screen.
+## green, red, blue, magenta by position), and optionally @code{title},
+## @code{ylim} and @code{vlines} (times marked by dotted lines). Every
+## @var{step}-th sample is drawn. Uses gnuplot off-screen.
 ## @end deftypefn
 
 function throttle_plot_panels (file, t, step, panels, ncol = 1)

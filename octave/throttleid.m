@@ -1,7 +1,8 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} throttleid (@var{data}, @var{method})
 ## @deftypefnx {} {@var{thm} =} throttleid (@dots{}, @var{name}, @var{value})
-## @deftypefnx {} {[@var{thm}, @var{R}, @var{Kv}, @var{info}] =} throttleid (@dots{})
+## @deftypefnx {} {[@var{thm}, @var{R}, @var{Kv}, @var{info}] =} @
+##   throttleid (@dots{})
 ## Recursive estimation of the electrical submodel of the electronic
 ## throttle body (thesis sec. 4.2.3): theta = [1/R, Kv Gr/R] (eq. 4.15),
 ## tracking the armature resistance R(t), from closed-loop data.
@@ -90,8 +91,8 @@ function [thm, R, Kv, info] = throttleid (data, method, varargin)
     error ("throttleid:badInput", "throttleid: expected data and a method");
   endif
   if (! (ischar (method) && rows (method) == 1))
-    error ("throttleid:badOption",
-           "throttleid: the method must be 'clrsrivc', 'rlssvf' or 'rlsprefilter'");
+    error ("throttleid:badOption", ["throttleid: the method must be ", ...
+                                    "'clrsrivc', 'rlssvf' or 'rlsprefilter'"]);
   endif
   method = lower (method);
   if (! any (strcmp (method, {"clrsrivc", "rlssvf", "rlsprefilter"})))
@@ -161,7 +162,8 @@ function [thm, R, Kv, info] = throttleid (data, method, varargin)
            (n - 1) * Ts);
   endif
   if (! any (strcmpi (opts.phirule, {"zoh", "foh"})))
-    error ("throttleid:badOption", "throttleid: phirule must be 'zoh' or 'foh'");
+    error ("throttleid:badOption",
+           "throttleid: phirule must be 'zoh' or 'foh'");
   endif
   s = opts.substeps;
   if (! (isnumeric (s) && isreal (s) && isscalar (s) && s == fix (s)

@@ -154,7 +154,8 @@ function sim = throttlesim (varargin)
   if (! isempty (opts.noise))
     e = opts.noise;
     if (! (isnumeric (e) && isreal (e) && isvector (e)))
-      error ("throttlesim:badInput", "throttlesim: noise must be a real vector");
+      error ("throttlesim:badInput",
+             "throttlesim: noise must be a real vector");
     endif
     if (numel (e) != n)
       error ("throttlesim:dimensionMismatch",

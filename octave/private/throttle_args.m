@@ -1,5 +1,6 @@
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{pvec}, @var{p}, @var{lvec}, @var{loop}] =} throttle_args (@var{fname}, @var{params}, @var{loop})
+## @deftypefn {} {[@var{pvec}, @var{p}, @var{lvec}, @var{loop}] =} @
+##   throttle_args (@var{fname}, @var{params}, @var{loop})
 ## Shared argument check of throttlesim and throttleid: the plant
 ## parameters @var{params} and the loop @var{loop} as structs whose fields
 ## override those of @code{throttleparams} ([] for the defaults).

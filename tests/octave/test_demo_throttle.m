@@ -18,7 +18,9 @@ function test_demo_throttle ()
     ## CLRSRIVC's, which stays within a few per cent (measured over 100
     ## runs: 29.6 % against 4.2 %).
     table = fileread (fullfile (out, "throttle.md"));
-    row = @(name) str2double (regexp (table, ['\| ' name ' \| ([0-9.]+) \+- [^|]+\| ([0-9.]+) \+-'], "tokens", "once"));
+    pattern = '\| ([0-9.]+) \+- [^|]+\| ([0-9.]+) \+-';
+    row = @(name) str2double (regexp (table, ['\| ' name ' ' pattern],
+                                      "tokens", "once"));
     rls = row ("RLSSVF");
     iv = row ("CLRSRIVC");
     assert (numel (rls) == 2 && numel (iv) == 2);
