@@ -36,11 +36,12 @@
 ## should be "coulomb". Without it, the table says so.
 ##
 ## @strong{Noise.} The same is repeated at the thesis' noise variance 1e-3
-## rad^2 for the record: there the PID's high-frequency gain (-71 V/rad)
-## turns the noise into a voltage of about 2.8 V std that dithers the plate
-## dozens of times per second, and the current is correlated with the
-## output noise through the loop, so the open-loop srivc fit is biased and
-## the Coulomb term is not identifiable from i to phi.
+## rad^2 for the record: there the PID (about -34 (e_k - 1.09 e_(k-1)) at
+## high frequencies) turns the noise into a voltage of 1.6 V std that
+## reverses the plate's motion about 280 times per second (measured), and
+## the current is correlated with the output noise through the loop, so
+## the open-loop srivc fit is biased and the Coulomb term is not
+## identifiable from i to phi.
 ##
 ## Options (for short checks): @code{"levels"}, the noise variances
 ## (default [1e-8 1e-3]); @code{"durations"}, the lengths of the estimation
