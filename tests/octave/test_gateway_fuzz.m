@@ -7,7 +7,8 @@ function test_gateway_fuzz ()
   tmp = tempname ();
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
-  gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex", "qnml_mex"};
+  gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex", ...
+              "qnml_mex", "throttle_mex"};
   for i = 1:numel (gateways)
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
   endfor
@@ -34,6 +35,20 @@ function test_gateway_fuzz ()
   valid.offline_mex = {"clsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, ...
                        "normalised", "clsrivc", 1e-6, 5, [], [1 -0.5], ...
                        [1 -1], u, zeros(50, 1)};
+  ## The throttle gateway, in both modes (the Table 4.3 parameters in the
+  ## gateway's order, a short record near the limp-home position).
+  addpath (fullfile (root, "octave"));
+  p = throttleparams ();
+  pvec = cellfun (@(f) p.(f), fieldnames (p));
+  phi_d = 0.5 * ones (50, 1);
+  loop = {[3 -2], [1 -1], [0.009901 0.009901], [1 -0.9802], 12};
+  valid.throttle_mex = {"throttlesim", phi_d, 1e-3, 1.4 * ones(50, 1), ...
+                        zeros(50, 1), pvec, loop{:}, 2, []};
+  sim = cell (1, 7);
+  [sim{:}] = throttle_mex (valid.throttle_mex{:});
+  valid_id = {"throttleid", "clrsrivc", phi_d, sim{1}, sim{2}, sim{4}, ...
+              1e-3, pvec, loop{:}, 2, [], 62, diag([1e-6 5e-5]), [], [], ...
+              0.01, "zoh"};
   ncalls = 0;
   for g = 1:numel (gateways)
     name = gateways{g};
@@ -48,6 +63,15 @@ function test_gateway_fuzz ()
         ncalls += check_call (name, args, nargout_for (p));
       endfor
     endfor
+    if (strcmp (name, "throttle_mex"))   # the estimation mode too
+      for k = 1:numel (valid_id)
+        for p = 1:numel (pool)
+          args = valid_id;
+          args{k} = pool{p};
+          ncalls += check_call (name, args, nargout_for (p));
+        endfor
+      endfor
+    endif
     ## Random argument lists of random length.
     for trial = 1:300
       n = randi ([0 16]);
@@ -82,7 +106,7 @@ function n = check_call (name, args, nout)
       error ("test_gateway_fuzz: %s raised an error without identifier: %s",
              name, err.message);
     endif
-    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc|lssvf|ivsvf|srivc|clsrivc|qnml|svfscaling):\w+$', "once")))
+    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc|lssvf|ivsvf|srivc|clsrivc|qnml|svfscaling|throttlesim|throttleid):\w+$', "once")))
       ## Octave's own argument errors (e.g. too many outputs) are fine only
       ## when they carry an identifier; ours must use the public name.
       if (! strncmp (err.identifier, "Octave:", 7))
