@@ -1,0 +1,40 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{W} =} residtrace_channels (@var{chans}, @var{u}, @var{v})
+## The signals that drive the channels of a @code{residtrace} model, one
+## column per channel, from the inputs @var{u} (N-by-nu) and a velocity
+## @var{v} (N-by-1; used by @qcode{"signv"} channels only). Delays are
+## not applied here. Channel types:
+## @table @code
+## @item input
+## u(:, col)
+## @item const
+## 1 (an offset entering with the input)
+## @item signv
+## sign (v) (Coulomb friction, thesis eq. 4.17)
+## @item power
+## u(:, col) .^ param (a polynomial input nonlinearity)
+## @item clip
+## u(:, col) clipped to +-param (with the input's own channel: a
+## saturation or a dead zone)
+## @end table
+## Works row by row as well (a 1-by-nu @var{u} and a scalar @var{v}).
+## @end deftypefn
+
+function W = residtrace_channels (chans, u, v)
+  W = zeros (rows (u), numel (chans));
+  for j = 1:numel (chans)
+    c = chans(j);
+    switch (c.type)
+      case "input"
+        W(:, j) = u(:, c.col);
+      case "const"
+        W(:, j) = 1;
+      case "signv"
+        W(:, j) = sign (v);
+      case "power"
+        W(:, j) = u(:, c.col) .^ c.param;
+      case "clip"
+        W(:, j) = min (max (u(:, c.col), -c.param), c.param);
+    endswitch
+  endfor
+endfunction
