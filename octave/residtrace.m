@@ -262,7 +262,11 @@ function R = residtrace (varargin)
 
   ## M as given, and M re-estimated by SRIVC in its own structure.
   base.np = np;
-  e_given = residtrace_valerror (base, V, ctx);
+  try
+    e_given = residtrace_valerror (base, V, ctx);
+  catch
+    e_given = Inf (size (V.y));        # M as given diverges
+  end_try_catch
   R = struct ();
   R.rmse_before = rms_ (e_given);
   R.fit_before = fit_ (V.y, e_given);
@@ -273,7 +277,8 @@ function R = residtrace (varargin)
   cur = residtrace_fit (base, D, ctx, starts);
   if (! cur.ok)
     error ("residtrace:numericalFailure",
-           "residtrace: M could not be re-estimated on the estimation data");
+           ["residtrace: M could not be re-estimated on the estimation ", ...
+            "data (does the input excite it?)"]);
   endif
   cur.effects = {};
   R.baseline = cur;
@@ -664,3 +669,116 @@ function rethrow_as (err)
   msg = regexprep (err.message, '^[^:]*:', 'residtrace:');
   error (struct ("message", msg, "identifier", id));
 endfunction
+
+%!shared Ts, u, uv, G, N, x, xv
+%! Ts = 0.05; u = prbs (9, 4); N = numel (u);
+%! uv = circshift (u, 200);
+%! G = idctm (2, [1 1.2 1]);
+%! x = simc (G, u, Ts); xv = simc (G, uv, Ts);
+
+%!test  # an undeclared input offset: found, sized, RMSE cut, table written
+%! randn ("state", 11);
+%! y = simc (G, u + 0.3, Ts) + 0.05 * randn (N, 1);
+%! yv = simc (G, uv + 0.3, Ts) + 0.05 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! f = [tempname() ".md"];
+%! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset", "delay", "order"}, "table", f);
+%! assert (R.effect, "offset");
+%! assert (R.evidence.physical, 0.3, 5 * R.evidence.physical_std + 0.01);
+%! assert (R.rmse_after < 0.2 * R.rmse_before);
+%! assert (R.rmse_after, 0.05, 0.01);        # down to the noise level
+%! assert (R.ranking(1).significant);
+%! assert (isa (R.model.linear, "idctm"));
+%! md = fileread (f);
+%! delete (f);
+%! assert (! isempty (strfind (md, "| + offset (input offset) |")));
+%! assert (! isempty (strfind (md, "input offset b_c/b0")));
+
+%!test  # no validation record: the last third validates; clean data: none
+%! randn ("state", 12);
+%! y = x + 0.05 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! R = residtrace (iddata (y, u, Ts), M, "effects", {"offset", "delay"});
+%! assert (R.effect, "none");
+%! assert (R.rmse_after, R.rmse_before);
+%! assert (R.testable);
+%! assert (R.rmse_before, 0.05, 0.01);   # the split record starts mid-run
+
+%!test  # a delay, numeric data form, and the scores' definition
+%! randn ("state", 13);
+%! y = [zeros(3, 1); x(1:end-3)] + 0.05 * randn (N, 1);
+%! yv = [zeros(3, 1); xv(1:end-3)] + 0.05 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! R = residtrace (y, u, Ts, M, "validation", {yv, uv, Ts},
+%!                 "effects", {"delay", "offset"}, "iterate", 1);
+%! assert (R.effect, "delay");
+%! assert (R.evidence.value, 3);
+%! r = R.ranking(1);
+%! assert (r.score, 1 - r.rmse ^ 2 / R.rmse_refit ^ 2, 1e-12);
+
+%!test  # a perfect model: nothing to test, said so
+%! R = residtrace (iddata (x, u, Ts), G, "validation", iddata (xv, uv, Ts));
+%! assert (R.effect, "none");
+%! assert (! R.testable);
+%! assert (! isempty (R.reason));
+
+%!test  # an unstable model as given: RMSE before is its own, refit helps
+%! randn ("state", 14);
+%! y = x + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -0.5 1]),
+%!                 "effects", {"offset"});
+%! assert (R.rmse_before > 1e3);
+%! assert (R.rmse_refit < 0.1);
+%! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -30 1]),
+%!                 "effects", {"offset"});
+%! assert (R.rmse_before, Inf);
+%! assert (R.rmse_refit < 0.1);
+
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), tf (1, [1 1]))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), struct ("B", 1, "F", [1 1]))
+%!error id=residtrace:badInput residtrace (iddata (NaN (N, 1), u, Ts), G)
+%!error id=residtrace:badInput residtrace (iddata (x(1:60), u(1:60), Ts), G)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "validation", iddata (xv(1:60), uv(1:60), Ts))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "maxlag", 0)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "alpha", 2)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "split", 1)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "iterate", 0)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "minscore", -1)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "maxdelay", -1)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "lambda_v", 0)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "table", 3)
+%!error id=residtrace:badInput residtrace (iddata (x, u, (0:N-1)' .^ 1.01 * Ts), G)
+%!error id=residtrace:dimensionMismatch residtrace (iddata (x, u, Ts), G, "validation", iddata (xv, [uv uv], Ts))
+%!error id=residtrace:dimensionMismatch residtrace (iddata (x, [u u], Ts), G)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", {"magic"})
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", 3)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "bogus", 1)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
+%!error id=residtrace:dimensionMismatch residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0), "r1", 1, "r1v", uv)
+%!error id=residtrace:numericalFailure residtrace (iddata (x, zeros (N, 1), Ts), G)
+
+%!demo
+%! ## A mass-spring-damper with Coulomb friction 0.3, modelled as linear:
+%! ## residtrace finds the friction, adds sign(v) and simulates it.
+%! Ts = 0.02; N = 2000; t = (0:N-1)' * Ts;
+%! U = [sin(1.3 * t) + 0.5 * sin(3.1 * t + 1), ...
+%!      sin(1.1 * t + 2) + 0.6 * sin(2.7 * t)];
+%! A = [0 1; -4 -0.8]; E = expm ([A, [0; 1]; 0 0 0] * Ts / 20);
+%! Y = zeros (N, 2);
+%! for j = 1:2                  # 20 sub-steps per sample, sign(v) held
+%!   z = [0; 0];
+%!   for k = 1:N
+%!     Y(k, j) = z(1);
+%!     for s = 1:20
+%!       z = E(1:2, 1:2) * z + E(1:2, 3) * (U(k, j) - 0.3 * sign (z(2)));
+%!     endfor
+%!   endfor
+%! endfor
+%! Y += 0.005 * randn (N, 2);
+%! data = iddata (Y(:, 1), U(:, 1), Ts);
+%! M = srivc (data, [1 2 0]);
+%! R = residtrace (data, M, "validation", iddata (Y(:, 2), U(:, 2), Ts));
+%! residtrace_table (R)

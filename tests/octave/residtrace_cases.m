@@ -24,7 +24,7 @@ function cases = residtrace_cases (set)
     set = 1;
   endif
   cases = struct ("effect", {}, "data", {}, "datav", {}, "M", {},
-                  "description", {});
+                  "description", {}, "truth", {});
   if (set == 1)
     base = 100;
   else
@@ -74,9 +74,12 @@ function d = rec (y, u, Ts)
   d = iddata (y, u, Ts, "InterSample", "zoh");
 endfunction
 
-function c = pack (y, u, yv, uv, Ts, M, text)
+function c = pack (y, u, yv, uv, Ts, M, text, truth)
+  if (nargin < 8)
+    truth = struct ();
+  endif
   c = struct ("effect", "", "data", rec (y, u, Ts), "datav", rec (yv, uv, Ts),
-              "M", M, "description", text);
+              "M", M, "description", text, "truth", truth);
 endfunction
 
 ## ---- one case per effect ---------------------------------------------
@@ -110,7 +113,8 @@ function c = case_offset (set)
   nb = numel (G.B); nf = numel (G.F) - 1;
   M = srivc (rec (y, u, Ts), [nb nf 0]);
   c = pack (y, u, yv, uv, Ts, M, sprintf ("input offset %g, output offset %g",
-                                          off_in, off_out));
+                                          off_in, off_out),
+            struct ("input_offset", off_in, "output_offset", off_out));
 endfunction
 
 ## m x'' + cv x' + k x = u - Fc sign(x'), output x (position): 25
@@ -146,7 +150,8 @@ function c = case_coulomb (set)
   yv = add_noise (mass_coulomb (uv, Ts, m, cv, k, Fc), snr);
   M = srivc (rec (y, u, Ts), [1 2 0]);
   c = pack (y, u, yv, uv, Ts, M,
-            sprintf ("mass-spring-damper with Coulomb friction %g", Fc));
+            sprintf ("mass-spring-damper with Coulomb friction %g", Fc),
+            struct ("coulomb", Fc));
 endfunction
 
 function c = case_viscous (set)
@@ -162,7 +167,8 @@ function c = case_viscous (set)
   y = add_noise (simc (G, u, Ts), snr); yv = add_noise (simc (G, uv, Ts), snr);
   ## the user's model: a mass on a spring, nominal values, no damping
   M = idctm (1.1 / m, [1 0 0.9 * k / m]);
-  c = pack (y, u, yv, uv, Ts, M, "mass-spring with damping; model undamped");
+  c = pack (y, u, yv, uv, Ts, M, "mass-spring with damping; model undamped",
+            struct ("viscous", cv));
 endfunction
 
 function c = case_delay (set)
@@ -177,7 +183,8 @@ function c = case_delay (set)
   u = input_signal (typ, N, Ts, bw); uv = input_signal (typ, N, Ts, bw);
   y = add_noise (simc (Gd, u, Ts), snr); yv = add_noise (simc (Gd, uv, Ts), snr);
   M = srivc (rec (y, u, Ts), [numel(G.B) numel(G.F)-1 0]);
-  c = pack (y, u, yv, uv, Ts, M, sprintf ("input delay of %d samples", nk));
+  c = pack (y, u, yv, uv, Ts, M, sprintf ("input delay of %d samples", nk),
+            struct ("nk", nk));
 endfunction
 
 function c = case_order (set)
@@ -193,7 +200,8 @@ function c = case_order (set)
   u = input_signal (typ, N, Ts, bw); uv = input_signal (typ, N, Ts, bw);
   y = add_noise (simc (G, u, Ts), snr); yv = add_noise (simc (G, uv, Ts), snr);
   M = srivc (rec (y, u, Ts), nn);
-  c = pack (y, u, yv, uv, Ts, M, "true order above the model's");
+  c = pack (y, u, yv, uv, Ts, M, "true order above the model's",
+            struct ("F", G.F, "B", G.B));
 endfunction
 
 function c = case_static_nonlinearity (set)
@@ -201,16 +209,18 @@ function c = case_static_nonlinearity (set)
     G = idctm (2, [1 1.5 2]); Ts = 0.05; N = 2500; typ = "noise"; bw = 2;
     g = @(u) max (min (u, 0.8), -0.8); snr = 25;
     text = "input saturation at +-0.8 (input std 1)";
+    truth = struct ("clip", 0.8);
   else
     G = idctm (3, [1 3]); Ts = 0.02; N = 3000; typ = "multisine"; bw = 6;
     g = @(u) u + 0.3 * u .^ 3; snr = 20;
     text = "cubic input nonlinearity u + 0.3 u^3";
+    truth = struct ("cubic", 0.3);
   endif
   u = input_signal (typ, N, Ts, bw); uv = input_signal (typ, N, Ts, bw);
   y = add_noise (simc (G, g (u), Ts), snr);
   yv = add_noise (simc (G, g (uv), Ts), snr);
   M = srivc (rec (y, u, Ts), [numel(G.B) numel(G.F)-1 0]);
-  c = pack (y, u, yv, uv, Ts, M, text);
+  c = pack (y, u, yv, uv, Ts, M, text, truth);
 endfunction
 
 function c = case_sinusoid (set)
@@ -229,7 +239,8 @@ function c = case_sinusoid (set)
   y = add_noise (x, snr) + s; yv = add_noise (xv, snr) + sv;
   M = srivc (rec (y, u, Ts), [numel(G.B) numel(G.F)-1 0]);
   c = pack (y, u, yv, uv, Ts, M,
-            sprintf ("additive sinusoid %g Hz, amplitude %g", f, A));
+            sprintf ("additive sinusoid %g Hz, amplitude %g", f, A),
+            struct ("freq_hz", f, "amplitude", A));
 endfunction
 
 function c = case_drift (set)
@@ -268,5 +279,6 @@ function c = case_colored_noise (set)
   vv = filter (1, [1 -a], s * randn (N, 1));
   y = simc (G, u, Ts) + v; yv = simc (G, uv, Ts) + vv;
   M = srivc (rec (y, u, Ts), [numel(G.B) numel(G.F)-1 0]);
-  c = pack (y, u, yv, uv, Ts, M, "AR noise, no missing dynamics");
+  c = pack (y, u, yv, uv, Ts, M, "AR noise, no missing dynamics",
+            struct ("ar", a));
 endfunction
