@@ -639,7 +639,7 @@ function print_ranking (pass, r)
   printf ("residtrace pass %d:\n", pass);
   for k = 1:numel (r)
     if (r(k).applicable)
-      printf ("  %-20s score %7.4f  p %8.2g  %s  %s\n", r(k).effect,
+      printf ("  %-20s score %9.4g  p %8.2g  %s  %s\n", r(k).effect,
               r(k).score, r(k).p, ifelse_ (r(k).significant, "*", " "),
               r(k).variant);
     else

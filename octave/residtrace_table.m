@@ -51,7 +51,7 @@ function md = residtrace_table (R, file)
           ev = r.evidence.text;
         endif
         L{end+1} = sprintf ("| %s | %s | %s | %s | %s | %s |", r.effect,
-                            num (r.score, "%.4f"), num (r.p, "%.2g"),
+                            num (r.score, "%.4g"), num (r.p, "%.2g"),
                             yesno (r.significant), r.variant,
                             strrep (ev, "|", "/"));
       else

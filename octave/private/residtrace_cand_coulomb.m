@@ -5,10 +5,12 @@
 ## throttle (sec. 4.2, eq. 4.17), v the velocity: the SVF derivative of
 ## the measured output (a first-order model reads the output itself as a
 ## velocity), filtered forward and backward so that its zero crossings
-## are not delayed (@code{ctx.D.vhat}). Evidence: the correlation of the
-## current residual with the filtered sign(v), the fitted gain b_s with
-## its standard deviation, and the friction level -b_s / b_u in input
-## units (a force when the input is a force).
+## are not delayed (@code{ctx.D.vhat}). A second variant adds a constant
+## too (Coulomb levels that differ with the direction: sign(v) and an
+## offset); the BIC on the estimation data chooses. Evidence: the
+## correlation of the current residual with the filtered sign(v), the
+## fitted gain b_s with its standard deviation, and the friction level
+## -b_s / b_u in input units (a force when the input is a force).
 ## @end deftypefn
 
 function c = residtrace_cand_coulomb (cur, ctx)
@@ -22,20 +24,30 @@ function c = residtrace_cand_coulomb (cur, ctx)
     c.reason = "the velocity never changes sign";
     return;
   endif
+  vname = "sign(dy/dt)";
+  if (numel (cur.F) == 2)
+    vname = "sign(y)";
+  endif
   t = cur;
   t.channels(end+1) = residtrace_chan ("signv", 0, [], 1, 0, "sign(v)");
-  m = residtrace_fit (t, ctx.D, ctx, {cur.F});
-  if (! m.ok)
+  tmpls = {t}; names = {vname}; starts = {{cur.F}};
+  if (! any (strcmp ({cur.channels.type}, "const")))
+    ## unequal levels for the two directions: sign(v) plus a constant
+    t2 = cur;
+    t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
+    t2.channels(end+1) = residtrace_chan ("signv", 0, [], 1, 0, "sign(v)");
+    tmpls{end+1} = t2; names{end+1} = [vname ", asymmetric"];
+    starts{end+1} = {cur.F};
+  endif
+  [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
+  if (isempty (m))
     c.reason = "the estimation failed";
     return;
   endif
   c.applicable = true;
   c.model = m;
-  c.variant = "sign(dy/dt)";
-  if (numel (cur.F) == 2)
-    c.variant = "sign(y)";
-  endif
-  c.nadd = 1;
+  c.variant = m.variant_;
+  c.nadd = m.np - cur.np;
   k = numel (m.theta);
   val = m.theta(k); sd = sqrt (m.cov(k, k));
   bu = m.channels(1).B(end);

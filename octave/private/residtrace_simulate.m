@@ -2,7 +2,8 @@
 ## @deftypefn  {} {[@var{y}, @var{x}, @var{uc}] =} residtrace_simulate (@var{model}, @var{u}, @var{Ts}, @var{loop}, @var{substeps})
 ## @deftypefnx {} {[@dots{}] =} residtrace_simulate (@dots{}, @var{thm})
 ## Simulated output of a @code{residtrace} model on the input @var{u}
-## (N-by-nu; in closed loop the external signal r1), from rest.
+## (N-by-nu), from rest. In closed loop the first input is replaced by
+## r1 + C (r2 - y) (@var{loop}.r1 the external signal).
 ##
 ## The dynamic part is F(p) x = sum_j B_j(p) w_j(t - nk_j Ts) with the
 ## channel signals w_j of @code{residtrace_channels}; then y = x plus the
@@ -37,6 +38,9 @@ function [y, x, uc] = residtrace_simulate (model, u, Ts, loop, substeps, thm)
   chans = model.channels;
   if (nargin < 6)
     thm = [];
+  endif
+  if (! isempty (loop))
+    u(:, 1) = loop.r1;        # the controlled input is r1 + C (r2 - y)
   endif
   needs_loop = ! isempty (loop) || any (strcmp ({chans.type}, "signv"));
   if (! isempty (thm) && ! needs_loop && numel (chans) == 1
