@@ -66,9 +66,14 @@
 ## is far less powerful when the residual is periodic or slow.) A
 ## candidate is significant when p < alpha / (number of candidates)
 ## (Bonferroni) and its score >= @code{minscore}. Significant candidates
-## are ranked by score; one that adds fewer parameters moves ahead of the
-## candidate above it unless that one's extra correction is significant
-## in the same test (parsimony). The
+## are ranked by score, except that the scores of drift (a simulation
+## with parameters tracked on the validation record) and coloured noise
+## (a prediction), which use the validation output itself, count half in
+## the ordering: a time-invariant effect that is simulated without the
+## validation output goes first unless the other explains more than twice
+## as much. One that adds fewer parameters moves ahead of a candidate of
+## the same kind above it unless that one's extra correction is
+## significant in the same test (parsimony). The
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
 ## (thesis eqs. 2.8-2.13) with the added regressors; the model as given
@@ -142,6 +147,11 @@
 ## the winner's evidence (term, value, std, and what the test saw).
 ## @item effects, final_model, rmse_final
 ## all effects added by the iteration, the last model and its RMSE.
+## @item sim
+## the validation output @code{y} and the model outputs on it:
+## @code{given} (M as given), @code{refit}, @code{after} (top effect),
+## @code{final} (a prediction or a tracked simulation where the effect's
+## kind says so).
 ## @item history
 ## one entry per pass: effect, rmse, fit, white_p, indep_p, ranking.
 ## @item table, tests_before, tests_after, testable, reason
@@ -251,11 +261,14 @@ function R = residtrace (varargin)
   if (isempty (V.pre))
     D.vhat = residtrace_velocity (D.y, D.Ts, lam_v, is_y);
     V.vhat = residtrace_velocity (V.y, V.Ts, lam_v, is_y);
+    D.ysm = D.y;
+    V.ysm = V.y;
   else
+    ne = numel (D.y);
     v = residtrace_velocity ([D.y; V.y], D.Ts, lam_v, is_y);
-    D.vhat = v(1:numel (D.y));
-    V.vhat = v(numel (D.y)+1:end);
-    V.pre = struct ("y", D.y, "u", D.u, "vhat", D.vhat);
+    D.vhat = v(1:ne); V.vhat = v(ne+1:end);
+    D.ysm = D.y; V.ysm = V.y;
+    V.pre = struct ("y", D.y, "u", D.u, "vhat", D.vhat, "ysm", D.ysm);
   endif
   ctx.D = D;
   ctx.V = V;
@@ -302,6 +315,8 @@ function R = residtrace (varargin)
   R.evidence = struct ("text", "no effect found");
   R.effects = {};
   R.rmse_refit = rms_ (e0);
+  R.sim = struct ("y", V.y, "given", V.y - e_given, "refit", V.y - e0,
+                  "after", V.y - e0, "final", V.y - e0);
   steps = step_row ("M as given", e_given, V.y, R.tests_given, "simulation",
                     R.params_before);
   steps(2) = step_row ("M re-estimated (SRIVC)", e0, V.y, R.tests_before,
@@ -355,6 +370,7 @@ function R = residtrace (varargin)
                                kind_text (winner.kind),
                                residtrace_physical (cur, D.Ts));
     if (pass == 1)
+      R.sim.after = V.y - winner.e1;
       R.effect = winner.effect;
       R.rmse_after = rms_ (winner.e1);
       R.rmse_after_kind = kind_text (winner.kind);
@@ -368,6 +384,7 @@ function R = residtrace (varargin)
   R.effects = cur.effects;
   R.final_model = export_model (cur, D.Ts);
   R.rmse_final = rms_ (e0);
+  R.sim.final = V.y - e0;
   R.tests_after = residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y));
   R.params_after = residtrace_physical (cur, D.Ts);
   R.history = history;
@@ -459,6 +476,10 @@ function r = rank_rows (r, e0, opts)
   endif
   s = [r.score];
   s(! [r.applicable]) = -Inf;
+  ## tracking and prediction use the validation output itself: in the
+  ## ordering their score counts half against simulated effects
+  sim = strcmp ({r.kind}, "simulation");
+  s(! sim) /= 2;
   key = s + 10 * [r.significant];
   [~, order] = sort (key, "descend");
   r = r(order);
@@ -468,7 +489,7 @@ function r = rank_rows (r, e0, opts)
     changed = false;
     for a = 1:numel (sig) - 1
       i = sig(a); j = sig(a+1);
-      if (r(j).nadd < r(i).nadd
+      if (r(j).nadd < r(i).nadd && strcmp (r(i).kind, r(j).kind)
           && residtrace_dmtest (r(j).e1, r(i).e1).p_corr >= opts.alpha)
         r([i j]) = r([j i]);
         changed = true;
@@ -488,7 +509,7 @@ endfunction
 
 function [D, V] = records (d, opts)
   D = struct ("y", d.y, "u", d.u, "Ts", d.Ts, "intersample", d.intersample,
-              "loop", [], "vhat", [], "pre", []);
+              "loop", [], "vhat", [], "ysm", [], "pre", []);
   if (isempty (opts.validation))
     N = numel (d.y);
     Ne = round (opts.split * N);
@@ -522,6 +543,7 @@ function [D, V] = records (d, opts)
     endif
     V = struct ("y", dv.y, "u", dv.u, "Ts", dv.Ts,
                 "intersample", dv.intersample, "loop", [], "vhat", [],
+                "ysm", [],
                 "pre", []);
   endif
   if (! isempty (opts.controller))

@@ -135,3 +135,36 @@ function s = pval (p, name)
   endfor
   s = strjoin (parts, ", ");
 endfunction
+
+%!shared R
+%! randn ("state", 21);
+%! Ts = 0.05; u = prbs (9, 4); N = numel (u); G = idctm (2, [1 1.2 1]);
+%! y = simc (G, u - 0.2, Ts) + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), srivc (iddata (y, u, Ts), [1 2 0]),
+%!                 "effects", {"offset", "delay"});
+
+%!test  # one row per model, the ranking, the parameters before and after
+%! md = residtrace_table (R);
+%! L = strsplit (md, "\n");
+%! assert (any (strncmp (L, "| M as given |", 14)));
+%! assert (any (strncmp (L, "| + offset (", 12)));
+%! assert (any (strncmp (L, "| delay |", 9)));
+%! row = L{strncmp (L, "| input offset b_c/b0 |", 23)};
+%! assert (! isempty (strfind (row, "| - |")));   # absent before
+%! v = str2double (regexp (row, '\| (-?[0-9.]+) ±', "tokens", "once"){1});
+%! assert (v, -0.2, 0.02);
+
+%!test  # written to a file, identical to the returned text
+%! f = [tempname() ".md"];
+%! md = residtrace_table (R, f);
+%! assert (fileread (f), md);
+%! delete (f);
+
+%!error id=residtrace_table:badInput residtrace_table (struct ("a", 1))
+%!error id=residtrace_table:badInput residtrace_table (R, "/nonexistent/dir/x.md")
+
+%!demo
+%! Ts = 0.05; u = prbs (9, 4); N = numel (u);
+%! y = simc (idctm (2, [1 1.2 1]), u + 0.3, Ts) + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), srivc (iddata (y, u, Ts), [1 2 0]));
+%! residtrace_table (R)

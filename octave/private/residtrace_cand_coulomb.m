@@ -7,7 +7,9 @@
 ## velocity), filtered forward and backward so that its zero crossings
 ## are not delayed (@code{ctx.D.vhat}). A second variant adds a constant
 ## too (Coulomb levels that differ with the direction: sign(v) and an
-## offset); the BIC on the estimation data chooses. Evidence: the
+## offset); the BIC on the estimation data chooses. A fitted b_s > 0 (F
+## being monic, a force along the motion) is not friction: the candidate
+## is then reported as not applicable. Evidence: the
 ## correlation of the current residual with the filtered sign(v), the
 ## fitted gain b_s with its standard deviation, and the friction level
 ## -b_s / b_u in input units (a force when the input is a force).
@@ -44,13 +46,18 @@ function c = residtrace_cand_coulomb (cur, ctx)
     c.reason = "the estimation failed";
     return;
   endif
+  k = numel (m.theta);
+  val = m.theta(k); sd = sqrt (m.cov(k, k));
+  bu = m.channels(1).B(end);
+  if (val > 0)                  # F monic: friction needs b_s < 0
+    c.reason = sprintf (["the fitted term %.3g sign(v) pushes along ", ...
+                         "the motion: not a friction"], val);
+    return;
+  endif
   c.applicable = true;
   c.model = m;
   c.variant = m.variant_;
   c.nadd = m.np - cur.np;
-  k = numel (m.theta);
-  val = m.theta(k); sd = sqrt (m.cov(k, k));
-  bu = m.channels(1).B(end);
   Fp = residtrace_prefilter (cur.F, ctx.wlo);
   sf = residtrace_modal (Fp, s, ctx.D.Ts, "zoh")(:, 1);
   r = corr_coef (cur.e_est, sf);

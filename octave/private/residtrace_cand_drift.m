@@ -123,5 +123,6 @@ function Dk = slice (D, idx)
   Dk.y = D.y(idx);
   Dk.u = D.u(idx, :);
   Dk.vhat = D.vhat(idx);
+  Dk.ysm = D.ysm(idx);
   Dk.loop = [];
 endfunction

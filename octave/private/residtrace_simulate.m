@@ -14,7 +14,9 @@
 ## @item Open loop and no channel fed by the model's own velocity: the
 ## channels are computed from @var{u} and @code{simc} integrates the
 ## linear part exactly (ZOH or FOH as the data's InterSample).
-## @item Coulomb friction (a @qcode{"signv"} channel) or a closed loop
+## @item Coulomb friction (a @qcode{"signv"} channel), a nonlinearity of
+## the output inside the dynamics (@qcode{"ypower"}: y^p of the model's
+## own output, re-evaluated at each sub-step) or a closed loop
 ## (@var{loop} with fields @code{num}, @code{den} (controller C(q^-1)),
 ## @code{r1}, @code{r2}: u = r1 + C (r2 - y), y the simulated output):
 ## the model in observable canonical form is stepped through each
@@ -42,7 +44,8 @@ function [y, x, uc] = residtrace_simulate (model, u, Ts, loop, substeps, thm)
   if (! isempty (loop))
     u(:, 1) = loop.r1;        # the controlled input is r1 + C (r2 - y)
   endif
-  needs_loop = ! isempty (loop) || any (strcmp ({chans.type}, "signv"));
+  needs_loop = (! isempty (loop) || any (strcmp ({chans.type}, "signv"))
+                || any (strcmp ({chans.type}, "ypower")));
   if (! isempty (thm) && ! needs_loop && numel (chans) == 1
       && strcmp (chans.type, "input"))
     n = numel (model.F) - 1;
@@ -100,6 +103,9 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
   Phi = E(1:n, 1:n);
   Gam = E(1:n, n+1:end);
   isv = strcmp ({chans.type}, "signv");
+  isy = strcmp ({chans.type}, "ypower");
+  ypw = [chans(isy).param];
+  isx = isv | isy;                          # fed by the model's own state
   velocity_is_y = (n == 1);
   nk = [chans.nk];
   closed = ! isempty (loop);
@@ -111,7 +117,7 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
     ebuf = zeros (1, numel (cn));           # r2 - y at k, k-1, ..
     ubuf = zeros (1, numel (cd));           # controller output at k, k-1, ..
   endif
-  uin = find (! isv);
+  uin = find (! isx);
   if (! closed)
     Wpre = residtrace_channels (chans, u, zeros (N, 1));
     for j = uin
@@ -156,9 +162,12 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
         if (velocity_is_y)
           v = xs(1);
         else
-          v = A(1, :) * xs + Bc(1, ! isv) * wk(! isv).';
+          v = A(1, :) * xs + Bc(1, ! isx) * wk(! isx).';
         endif
         wk(isv) = sign (v);
+      endif
+      if (any (isy))
+        wk(isy) = xs(1) .^ ypw;
       endif
       xs = Phi * xs + Gam * wk.';
     endfor

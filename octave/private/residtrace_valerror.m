@@ -35,6 +35,7 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
     Vf.y = [V.pre.y; V.y];
     Vf.u = [V.pre.u; V.u];
     Vf.vhat = [V.pre.vhat; V.vhat];
+    Vf.ysm = [V.pre.ysm; V.ysm];
   endif
   if (! isempty (m.ltv))
     thm = residtrace_track (m, Vf, ctx, m.ltv.Qn, m.ltv.th0, m.ltv.P0,
