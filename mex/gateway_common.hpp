@@ -6,7 +6,6 @@
 #include "ctid/controller.hpp"
 #include "ctid/model.hpp"
 #include "ctid/record.hpp"
-#include "ctid/rlssvf.hpp"
 #include "ctid/svf_regressor.hpp"
 #include "mex_helpers.hpp"
 
@@ -94,55 +93,6 @@ inline DiscreteTransferFunction<double> read_transfer_function(
   tf.numerator = g.eigen_matrix(num, what + " numerator").reshaped();
   tf.denominator = g.eigen_matrix(den, what + " denominator").reshaped();
   return tf;
-}
-
-// Arguments 1-13 shared by the recursive gateways: y, u, t, intersample,
-// na, nb, nk, lambda_svf, svf form, adm, adg, th0, P0. Fills the fields
-// that RlsSvfConfig and RecursiveIvConfig have in common and returns the
-// record.
-template <typename Config>
-RecordView<double> read_recursive_arguments(const Gateway& g,
-                                            const mxArray* prhs[],
-                                            Config* config) {
-  const RecordView<double> record = read_record(g, prhs[1], prhs[2], prhs[3]);
-  config->svf.u_intersample = read_intersample(g, prhs[4]);
-  config->orders = read_orders(g, prhs[5], prhs[6], prhs[7]);
-  config->svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
-  config->svf.normalised = read_normalised(g, prhs[9]);
-  const long np = config->orders.num_parameters();
-  config->adaptation = read_adaptation(g, prhs[10], prhs[11], np);
-  read_initial_estimate(g, prhs[12], prhs[13], np, &config->theta0,
-                        &config->P0);
-  return record;
-}
-
-// THM (N-by-np) always, YH (N-by-1) and PSET (np-by-np-by-N) only when
-// requested: the outputs of every recursive routine.
-inline RecursiveOutputs<double> make_recursive_outputs(int nlhs,
-                                                       mxArray* plhs[],
-                                                       std::size_t n,
-                                                       std::size_t np) {
-  RecursiveOutputs<double> out;
-  plhs[0] = make_output_matrix(n, np);
-  out.thm = mxGetPr(plhs[0]);
-  if (nlhs >= 2) {
-    plhs[1] = make_output_matrix(n, 1);
-    out.yh = mxGetPr(plhs[1]);
-  }
-  if (nlhs >= 3) {
-    plhs[2] = make_output_array3(np, np, n);
-    out.pset = mxGetPr(plhs[2]);
-  }
-  return out;
-}
-
-// kappa_2(P) per sample (N-by-1) into output `index`, when requested.
-inline void request_kappa(int nlhs, mxArray* plhs[], int index, std::size_t n,
-                          RecursiveOutputs<double>* out) {
-  if (nlhs > index) {
-    plhs[index] = make_output_matrix(n, 1);
-    out->kappa = mxGetPr(plhs[index]);
-  }
 }
 
 }  // namespace ctid::mex

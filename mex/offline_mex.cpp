@@ -9,7 +9,13 @@
 // 'ivsvf' | 'srivc' | 'clsrivc'; theta_init [] (IVSVF/CLIVSVF start) or
 // np values; c_num = [] except for clsrivc. An SRIVC that does not converge
 // returns its last iterate with converged = false (the front-end warns).
+//
+//   m = offline_mex (fname, y, u, t, intersample, na, nb, nk, lambda_svf,
+//       svf_form, "scaling", ...)
+// returns instead the diagonal of the scaling matrix M_s of eq. (3.54) for
+// the SVF regression of this record (svfscaling, rlssvf/rsrivc 'scaling').
 #include "ctid/offline_iv.hpp"
+#include "ctid/scaling.hpp"
 #include "gateway_common.hpp"
 
 namespace {
@@ -33,6 +39,13 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
   svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
   const std::string method = g.text(prhs[10], "method");
+  if (method == "scaling") {
+    ctid::Vector<double> m;
+    g.check(ctid::svf_scaling(orders, svf, record, m));
+    plhs[0] = ctid::mex::make_output_matrix(m.size(), 1);
+    std::copy(m.data(), m.data() + m.size(), mxGetPr(plhs[0]));
+    return;
+  }
   ctid::SrivcSettings<double> settings;
   settings.tolerance = g.scalar(prhs[11], "Tol");
   settings.max_iterations = g.integer(prhs[12], "MaxIter");
@@ -83,7 +96,10 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway(
-      "srivc", {"lssvf", "ivsvf", "srivc", "clsrivc"}, nrhs, prhs,
-      [&](const Gateway& g) { offline_gateway(g, nlhs, plhs, nrhs, prhs); });
+  ctid::mex::run_gateway("srivc",
+                         {"lssvf", "ivsvf", "srivc", "clsrivc", "svfscaling",
+                          "rlssvf", "rivsvf", "rsrivc", "clrivsvf", "clrsrivc"},
+                         nrhs, prhs, [&](const Gateway& g) {
+                           offline_gateway(g, nlhs, plhs, nrhs, prhs);
+                         });
 }

@@ -1,89 +1,101 @@
 // MEX gateway of the recursive IV estimators rivsvf, rsrivc, clrivsvf and
 // clrsrivc (octave/private/contsid_riv.m): converts the fixed argument list
-// below, runs ctid::run_recursive_iv and returns THM, YH, PSET and the
-// number of estimates refused by the stability test.
+// below, runs ctid::run_recursive_iv and returns THM, YH, PSET and INFO.
 //
-//   [thm, yh, pset, nrej, kappa] = riv_mex (fname, y, u, t, intersample, na,
-//   nb, nk,
-//       lambda_svf, svf_form, adm, adg, th0, P0, method, tsiv, dtupdate,
-//       stability, mtheta_num, mtheta_den, prefilter_gain, A,
-//       c_num, c_den, r1, r2)
+//   [thm, yh, pset, info] = riv_mex (fname, <28 riv arguments>, precision)
 //
-// method 'rivsvf' | 'rsrivc'; stability 'keep' | 'reflect'; prefilter_gain
-// 'unit' | 'monic'; mtheta_num/den, A: [] for the defaults; c_num = [] for
-// open loop, else the controller C(q^-1) and the N-by-1 r1, r2.
-#include "ctid/recursive_iv.hpp"
-#include "gateway_common.hpp"
+// The 28 arguments are listed in estimator_args.hpp; precision 'double' |
+// 'single'. INFO has the number of estimates refused by the stability
+// test, kappa_2(P), prediction errors and innovation scales per sample,
+// and with conditional updating kappa_2 of the parallel RLSSVF-FF, whether
+// each sample updated the estimates, and the number of resets.
+#include <vector>
+
+#include "estimator_args.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
 
+// run_recursive_iv for S = double or float; the closed-loop signals and
+// the conditional-updating outputs are converted for float.
+struct RivRun {
+  const ctid::ClosedLoopSignals<double>& loop;
+  std::size_t n;
+  double* monitor_kappa;
+  double* updating;
+  long* rejections;
+  long* resets;
+
+  template <typename S>
+  ctid::Status operator()(const ctid::RecursiveIvConfig<S>& config,
+                          const ctid::RecordView<S>& record,
+                          const ctid::RecursiveOutputs<S>& out) const {
+    std::vector<S> r1, r2, kappa, flags;
+    ctid::ClosedLoopSignals<S> signals;
+    if (loop.r1 != nullptr) {
+      r1.assign(loop.r1, loop.r1 + n);
+      r2.assign(loop.r2, loop.r2 + n);
+      signals.r1 = r1.data();
+      signals.r2 = r2.data();
+    }
+    ctid::AntiWindupOutputs<S> windup;
+    if (monitor_kappa != nullptr) {
+      kappa.assign(n, S(0));
+      flags.assign(n, S(0));
+      windup.monitor_kappa = kappa.data();
+      windup.updating = flags.data();
+    }
+    const ctid::Status status = ctid::run_recursive_iv(
+        config, record, signals, out, rejections, &windup);
+    for (std::size_t k = 0; k < kappa.size(); ++k) {
+      monitor_kappa[k] = kappa[k];
+      updating[k] = flags[k];
+    }
+    *resets = windup.resets;
+    return status;
+  }
+};
+
 void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
-  if (nrhs != 26) {
-    g.fail("badInput", "the gateway takes 26 arguments, got " +
-                           std::to_string(nrhs) + " (call " + g.name() +
-                           " instead)");
+  const int expected = 1 + ctid::mex::kRivArguments + 1;
+  if (nrhs != expected) {
+    g.fail("badInput", "the gateway takes " + std::to_string(expected) +
+                           " arguments, got " + std::to_string(nrhs) +
+                           " (call " + g.name() + " instead)");
   }
-  if (nlhs > 5) g.fail("badInput", "at most 5 outputs");
+  if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, INFO)");
   ctid::RecursiveIvConfig<double> config;
-  const ctid::RecordView<double> record =
-      ctid::mex::read_recursive_arguments(g, prhs, &config);
-  const long np = config.orders.num_parameters();
-  const std::string method = g.text(prhs[14], "method");
-  if (method == "rivsvf") {
-    config.method = ctid::IvMethod::kRivsvf;
-  } else if (method == "rsrivc") {
-    config.method = ctid::IvMethod::kRsrivc;
-  } else {
-    g.fail("badOption", "method must be 'rivsvf' or 'rsrivc'");
-  }
-  config.t_s_iv = g.scalar(prhs[15], "tsiv");
-  config.dtupdate = g.scalar(prhs[16], "dtupdate");
-  const std::string stability = g.text(prhs[17], "stability");
-  if (stability == "keep") {
-    config.stability = ctid::StabilityPolicy::kKeepLast;
-  } else if (stability == "reflect") {
-    config.stability = ctid::StabilityPolicy::kReflect;
-  } else {
-    g.fail("badOption", "stability must be 'keep' or 'reflect'");
-  }
-  if (!mxIsEmpty(prhs[18])) {
-    config.m_theta =
-        ctid::mex::read_transfer_function(g, prhs[18], prhs[19], "M_theta");
-  }
-  const std::string gain = g.text(prhs[20], "prefilter gain");
-  if (gain == "unit") {
-    config.prefilter_gain = ctid::PrefilterGain::kUnitStaticGain;
-  } else if (gain == "monic") {
-    config.prefilter_gain = ctid::PrefilterGain::kMonic;
-  } else {
-    g.fail("badOption", "the prefilter gain must be 'unit' or 'monic'");
-  }
-  if (!mxIsEmpty(prhs[21])) {
-    config.initial_denominator =
-        g.eigen_matrix(prhs[21], "A", 1, config.orders.na).transpose();
-  }
   ctid::ClosedLoopSignals<double> loop;
-  if (!mxIsEmpty(prhs[22])) {
-    config.closed_loop = true;
-    config.controller = ctid::mex::read_transfer_function(g, prhs[22], prhs[23],
-                                                          "the controller");
-    const long n = record.num_samples;
-    loop.r1 = g.matrix(prhs[24], "r1", n, 1);
-    loop.r2 = g.matrix(prhs[25], "r2", n, 1);
-  }
-  g.check(ctid::validate(config));
+  const ctid::RecordView<double> record =
+      ctid::mex::read_riv_config(g, prhs + 1, &config, &loop);
+  const bool single = ctid::mex::read_single_precision(g, prhs[29]);
 
   const std::size_t n = record.num_samples;
+  const std::size_t np = config.orders.num_parameters();
   ctid::RecursiveOutputs<double> out =
       ctid::mex::make_recursive_outputs(nlhs, plhs, n, np);
-  ctid::mex::request_kappa(nlhs, plhs, 4, n, &out);
+  ctid::mex::InfoStruct info;
   long rejections = 0;
-  g.check(ctid::run_recursive_iv(config, record, loop, out, &rejections));
+  long resets = 0;
+  RivRun run{loop, n, nullptr, nullptr, &rejections, &resets};
   if (nlhs >= 4) {
-    plhs[3] = mxCreateDoubleScalar(static_cast<double>(rejections));
+    out.kappa = info.add("kappa", n, 1);
+    out.error = info.add("error", n, 1);
+    out.innovation = info.add("innovation", n, 1);
+    if (config.antiwindup_gamma != 0) {
+      run.monitor_kappa = info.add("kappa_ff", n, 1);
+      run.updating = info.add("updating", n, 1);
+    }
+  }
+  g.check(ctid::mex::run_in_precision(single, config, record, out, np, 0, run));
+  if (nlhs >= 4) {
+    info.add_scalar("stability_rejections", static_cast<double>(rejections));
+    if (config.antiwindup_gamma != 0) {
+      info.add_scalar("resets", static_cast<double>(resets));
+    }
+    plhs[3] = info.release();
   }
 }
 

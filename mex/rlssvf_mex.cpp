@@ -1,15 +1,16 @@
 // MEX gateway of rlssvf (octave/rlssvf.m): converts the fixed argument list
-// below, runs ctid::run_rlssvf and returns THM, YH and PSET.
+// below, runs ctid::run_rlssvf and returns THM, YH, PSET and INFO.
 //
-//   [thm, yh, pset, kappa] = rlssvf_mex(fname, y, u, t, intersample, na, nb,
-//   nk,
-//                                lambda_svf, svf_form, adm, adg, th0, P0)
+//   [thm, yh, pset, info] = rlssvf_mex (fname, <18 rlssvf arguments>,
+//                                       precision)
 //
-// t is Ts (scalar) or the N sampling instants; adm is 'ff' or 'kf'; adg the
-// forgetting factor or the np-by-np Qn; th0 and P0 may be [] (defaults).
-// YH, PSET and kappa_2(P) per sample are computed only when requested.
-#include "ctid/rlssvf.hpp"
-#include "gateway_common.hpp"
+// The 18 arguments are listed in estimator_args.hpp (record, orders, SVF,
+// adaptation, th0, P0, update form, Gamma, scaling, ic, tsls); precision
+// 'double' | 'single' (the core instantiated for float on a float copy of
+// the data). YH, PSET and INFO (kappa_2(P), the initial-condition
+// coefficients, prediction errors and innovation scales per sample) are
+// computed only when requested.
+#include "estimator_args.hpp"
 
 namespace {
 
@@ -17,23 +18,37 @@ using ctid::mex::Gateway;
 
 void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                     const mxArray* prhs[]) {
-  if (nrhs != 14) {
-    g.fail("badInput", "the gateway takes 14 arguments, got " +
-                           std::to_string(nrhs) + " (call rlssvf instead)");
+  const int expected = 1 + ctid::mex::kRlssvfArguments + 1;
+  if (nrhs != expected) {
+    g.fail("badInput", "the gateway takes " + std::to_string(expected) +
+                           " arguments, got " + std::to_string(nrhs) +
+                           " (call rlssvf instead)");
   }
-  if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, kappa)");
+  if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, INFO)");
   ctid::RlsSvfConfig<double> config;
   const ctid::RecordView<double> record =
-      ctid::mex::read_recursive_arguments(g, prhs, &config);
-  const long np = config.orders.num_parameters();
-  g.check(ctid::validate(config));
+      ctid::mex::read_rlssvf_config(g, prhs + 1, &config);
+  const bool single = ctid::mex::read_single_precision(g, prhs[19]);
   g.check(ctid::validate_record(record, config.orders));
 
   const std::size_t n = record.num_samples;
+  const std::size_t np = config.orders.num_parameters();
+  const std::size_t nextra = ctid::num_estimated(config) - np;
   ctid::RecursiveOutputs<double> out =
       ctid::mex::make_recursive_outputs(nlhs, plhs, n, np);
-  ctid::mex::request_kappa(nlhs, plhs, 3, n, &out);
-  g.check(ctid::run_rlssvf(config, record, out));
+  ctid::mex::InfoStruct info;
+  if (nlhs >= 4) {
+    out.kappa = info.add("kappa", n, 1);
+    out.error = info.add("error", n, 1);
+    out.innovation = info.add("innovation", n, 1);
+    if (nextra > 0) out.extra = info.add("ic", n, nextra);
+  }
+  g.check(ctid::mex::run_in_precision(
+      single, config, record, out, np, nextra,
+      [](const auto& c, const auto& r, const auto& o) {
+        return ctid::run_rlssvf(c, r, o);
+      }));
+  if (nlhs >= 4) plhs[3] = info.release();
 }
 
 }  // namespace

@@ -7,7 +7,8 @@
 ##
 ## @var{data} holds the measured plant input u and output y; @var{nn} =
 ## [na nb nk] and @var{thm} = [a1 .. a_na, b0 .. b_(nb-1)] as in
-## @code{rivsvf}, whose options all apply. Closed-loop options:
+## @code{rivsvf}, whose options all apply (@code{tsiv} also "auto", see
+## @code{rlsconverge}). Closed-loop options:
 ## @table @code
 ## @item controller
 ## the controller C(q^-1): a struct with fields @code{num} and @code{den}

@@ -6,7 +6,8 @@
 ## loop u = r1 + C(q^-1) (r2 - y) with a known discrete controller.
 ##
 ## @var{nn} = [nb nf nk] and @var{thm} = [b0 .. b_(nb-1), f1 .. f_nf] as in
-## @code{rsrivc}, whose options all apply; the closed-loop options
+## @code{rsrivc}, whose options all apply (@code{tsiv} also "auto", see
+## @code{rlsconverge}); the closed-loop options
 ## @code{controller}, @code{r1}, @code{r2} are those of @code{clrivsvf}.
 ##
 ## @strong{Algorithm.} As RSRIVC (adaptive prefilter built from the latest

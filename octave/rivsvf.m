@@ -13,7 +13,12 @@
 ## @item tsiv
 ## time (s from the first sample) at which the IV stage takes over from
 ## RLSSVF (default: a tenth of the record); the IV stage starts from the
-## last RLSSVF estimate and P (thesis sec. 3.2.1).
+## last RLSSVF estimate and P (thesis sec. 3.2.1). @qcode{"auto"}: the
+## time at which @code{rlsconverge} detects the convergence of RLSSVF run
+## with the same options (a struct of its detector options instead of
+## @qcode{"auto"} sets them); @var{info} reports it in
+## @code{tsiv_detector}; no detected convergence is the error
+## @code{<name>:notConverged}.
 ## @item dtupdate
 ## period (s) at which the auxiliary model is refreshed from the estimates
 ## (default: every sample); not below the sampling interval.
@@ -26,11 +31,33 @@
 ## @qcode{"delay"} (default, q^-1), @qcode{"none"}, FIR taps, or a struct
 ## with @code{num} and @code{den} in powers of q^-1 (unit static gain), e.g.
 ## @code{struct ("num", [0.04762 0.04762], "den", [1 -0.9048])}.
+## @item scaling
+## signal scaling with a diagonal M_s (eq. 3.74 for the IV stage, eq. 3.66
+## for the RLSSVF start), given as in @code{rlssvf}: np diagonal entries
+## ordered like @var{thm}, a training record for eq. (3.54), or
+## @qcode{"self"}. The estimates are unchanged up to rounding;
+## @code{info.kappa} is that of the scaled P_s.
+## @item antiwindup
+## conditional updating against estimator windup (sec. 3.6.2, eq. 3.79):
+## the threshold gamma > 1 on kappa_2(P) of an RLSSVF-FF run in parallel on
+## the same SVF regression (default 0: off). While kappa_2 >= gamma the
+## estimates and P are held at th0 and P0; when excitation returns
+## (kappa_2 < gamma) the estimator restarts with RLSSVF and switches to IV
+## tsiv later. The test is armed when kappa_2 < gamma first holds, so the
+## start-up of the parallel filter is not mistaken for poor excitation.
+## @item antiwindup_lambda
+## forgetting factor of that RLSSVF-FF (default 0.998, thesis Table 3.2).
+## @item precision
+## @qcode{"double"} (default) or @qcode{"single"}, as in @code{rlssvf}.
 ## @end table
 ## The fourth output @var{info} has the number of estimates refused by the
-## stability test, the tsiv used, and @code{kappa}, the N-by-1 condition
+## stability test, the tsiv used, @code{kappa}, the N-by-1 condition
 ## number kappa_2(P) after each recursion (singular-value ratio, since the
-## IV update makes P non-symmetric).
+## IV update makes P non-symmetric), @code{error} and @code{innovation} (the
+## prediction error and its normalised variance 1 + phi_f^T P zeta_f, as
+## in @code{rlssvf}), and with @code{antiwindup} @code{kappa_ff} (kappa_2
+## of the parallel RLSSVF-FF), @code{updating} (1 where the estimates were
+## updated, 0 where held) and @code{resets}.
 ##
 ## @strong{Algorithm.} Before tsiv: RLSSVF (eqs. 1.57/1.59). Then the IV
 ## update (2.29) (Kalman filter) or (2.30) (forgetting factor), with the

@@ -51,6 +51,42 @@
 ## @qcode{"ordinary"} 1/(p+lambda)^na (eq. 1.19).
 ## @end table
 ##
+## @strong{Chapter 3 options} (thesis secs. 3.4-3.6):
+## @table @code
+## @item potter
+## true: propagate a square root S of P, P = S S^T (PotterSVF, eq. 3.73,
+## with an orthogonal (QR) time update; with @qcode{"ff"} the forgetting
+## factor form). Same estimates in exact arithmetic; kappa_2(S) is the
+## square root of kappa_2(P) (eq. 3.68). Default false.
+## @item adm "lmr", Gamma
+## LMR-RLSSVF (eq. 3.82): @code{adg} is the forgetting factor lambda and
+## @code{Gamma} (np-by-np, or a scalar/vector for a diagonal) the
+## regularisation that keeps P bounded under poor excitation.
+## @item scaling
+## signal scaling with a diagonal M_s (eqs. 3.65-3.66; with @code{potter},
+## App. C): a vector of np diagonal entries (ordered like @var{thm}), a
+## training record (iddata, or a cell @{y, u, Ts@}) from which M_s is computed
+## by eq. (3.54) (see @code{svfscaling}), or @qcode{"self"} (eq. 3.54 on the
+## estimation data). The estimates are those of the unscaled recursion up to
+## rounding; @code{info.kappa} is then kappa_2 of the scaled P_s.
+## @item ic
+## true: estimate the initial conditions with the regressors of eqs.
+## (3.36)-(3.41); @var{thm} stays N-by-np and @code{info.ic} holds the
+## N-by-na coefficients c_1 .. c_na (for na = 1, c_1 estimates y(0)).
+## @code{th0}, @code{P0}, @code{adg} and @code{scaling} keep their np-size
+## meaning; the c_i start at 0 with P0 = 1e4, Qn = 0, no scaling. The
+## filters then start at rest at the first sample (trapezoidal channels
+## included), which is what the regressors describe.
+## @item tsls
+## time (s) from which the estimates are updated (Suggested procedure 3.7);
+## the filters run from the first sample, so the transient of the initial
+## conditions passes before the estimation starts. Default 0.
+## @item precision
+## @qcode{"double"} (default) or @qcode{"single"}: the whole recursion in
+## single precision (on a single-precision copy of the data), as on a
+## microcontroller; the outputs are returned as double.
+## @end table
+##
 ## @strong{Outputs}
 ## @table @var
 ## @item thm
@@ -63,9 +99,12 @@
 ## np-by-np-by-N covariance matrix P after each recursion; computed only when
 ## requested.
 ## @item info
-## a struct with @code{kappa}, the N-by-1 condition number kappa_2(P)
-## after each recursion (thesis sec. 3.5; Inf once P has lost positive
-## definiteness); computed only when requested.
+## a struct, computed only when requested: @code{kappa}, the N-by-1
+## condition number kappa_2(P) after each recursion (thesis sec. 3.5; Inf
+## once P has lost positive definiteness); @code{error}, the prediction
+## error y_f^(na) - phi_f^T theta(t_(k-1)) (eq. 1.55); @code{innovation},
+## its normalised variance 1 + phi_f^T P(t_k|t_(k-1)) phi_f (eq. 3.25;
+## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i.
 ## @end table
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
@@ -90,27 +129,12 @@
 ## @end deftypefn
 
 function varargout = rlssvf (varargin)
-  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
-                     "P0", [], "svf", "normalised");
-  [d, orders, opts] = contsid_recursive_args ("rlssvf", "a", defaults,
-                                             varargin{:});
-  o = contsid_recursive_options ("rlssvf", opts, orders.np);
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  p = contsid_rlssvf_args ("rlssvf", varargin{:});
   ## Ask the gateway only for the outputs requested: YH costs a matrix
   ## exponential per sample and PSET N*np^2 memory.
   try
-    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", d.y, d.u, t,
-                                                 d.intersample, orders.na,
-                                                 orders.nb, orders.nk,
-                                                 o.lambda_svf, o.svf, o.adm,
-                                                 o.adg, o.th0, o.P0);
-    if (nargout >= 4)
-      varargout{4} = struct ("kappa", varargout{4});
-    endif
+    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", p.args{:},
+                                                 p.precision);
   catch err
     contsid_rethrow (err);
   end_try_catch
@@ -182,6 +206,69 @@ endfunction
 %! b = rlssvf (data, [2 1 0], "lambda_svf", 3);
 %! assert (any (abs (a(:) - b(:)) > 0));
 
+%!test  # potter: the square-root form gives the standard estimates
+%! Qn = diag ([1e-4 1e-5 1e-5]);
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", Qn);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", Qn, ...
+%!             "potter", true);
+%! assert (b, a, 1e-9 * max (abs (a(:))));
+%! c = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.99, "potter", 1);
+%! d = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.99);
+%! assert (c, d, 1e-9 * max (abs (d(:))));
+
+%!test  # scaling: same estimates and P; info.kappa is kappa_2 of P_s
+%! m = svfscaling (data, [2 1 0], "lambda_svf", 3);
+%! [a, ~, pa] = rlssvf (data, [2 1 0], "lambda_svf", 3);
+%! [b, ~, pb, ib] = rlssvf (data, [2 1 0], "lambda_svf", 3, "scaling", m);
+%! c = rlssvf (data, [2 1 0], "lambda_svf", 3, "scaling", "self");
+%! d = rlssvf (data, [2 1 0], "lambda_svf", 3, "scaling", data);
+%! assert (b, a, 1e-8 * max (abs (a(:))));
+%! assert (c, b, 0);
+%! assert (d, b, 0);
+%! assert (pb(:, :, end), pa(:, :, end), 1e-6 * norm (pa(:, :, end)));
+%! e = eig (diag (1 ./ m) * pb(:, :, end) * diag (1 ./ m));
+%! assert (ib.kappa(end), max (e) / min (e), 1e-6 * ib.kappa(end));
+
+%!test  # ic: c_1 estimates y(0) of (p + 3) y = 30 u (eq. 3.43)
+%! h = 0.005; n = 4000; t = (0:n-1)' * h;
+%! us = 1 - 2 * mod (floor (t), 2);              # square wave, period 2 s
+%! ys = simc (struct ("B", 30, "F", [1 3]), us, h, "x0", 18.1);
+%! assert (ys(1), 18.1, 1e-12);
+%! [thm, ~, ~, info] = rlssvf (ys, us, h, [1 1 0], "lambda_svf", 4, "ic", 1);
+%! assert (size (info.ic), [n 1]);
+%! assert (info.ic(end), 18.1, 2e-3 * 18.1);
+%! assert (thm(end, :), [3 30], 2e-3 * 30);
+%! thm0 = rlssvf (ys, us, h, [1 1 0], "lambda_svf", 4);
+%! ## peak deviation of a1 (eq. 3.44 with |.|): far larger without i.c.
+%! assert (max (abs (thm0(:, 1) - 3)) > 10 * max (abs (thm(:, 1) - 3)));
+
+%!test  # tsls: the estimates stay at th0 before it, then move
+%! thm = rlssvf (data, [2 1 0], "lambda_svf", 3, "tsls", 10, "th0", [1 2 3]);
+%! k = round (10 / Ts);
+%! assert (thm(1:k, :), repmat ([1 2 3], k, 1));
+%! assert (any (thm(k + 1, :) != [1 2 3]));
+
+%!test  # adm lmr with Gamma = 0 is the forgetting factor; Gamma bounds P
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "lmr", "adg", 0.98, ...
+%!             "Gamma", 0);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.98);
+%! assert (a, b, 1e-8 * max (abs (b(:))));
+%! uc = [u; ones(4000, 1)];                       # then no excitation
+%! yc = simc (struct ("B", 4, "F", [1 2.4 4]), uc, Ts);
+%! [~, ~, ~, il] = rlssvf (yc, uc, Ts, [2 1 0], "lambda_svf", 3, ...
+%!                         "adm", "lmr", "adg", 0.998, "Gamma", 1);
+%! [~, ~, ~, iff] = rlssvf (yc, uc, Ts, [2 1 0], "lambda_svf", 3, ...
+%!                          "adg", 0.998);
+%! assert (il.kappa(end) < iff.kappa(end) / 100);
+
+%!test  # single precision: close to double on this well-scaled problem
+%! a = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6, ...
+%!             "precision", "single");
+%! assert (class (b), "double");
+%! assert (b(end, :), a(end, :), 1e-3 * max (abs (a(end, :))));
+%! assert (any (b(:) != a(:)));
+
 ## Bad input: each validation branch has its identifier.
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
@@ -231,6 +318,25 @@ endfunction
 %!error id=rlssvf:badInput rlssvf ((1:5)', (1:5)', 0, [1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf ((1:5)' + 1i, (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf ({1}, (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "potter", "yes")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "potter", 2)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "Gamma", 1)
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "Gamma", 1, "potter", true)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "Gamma", -1)
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "Gamma", eye (2))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "adm", "lmr", "adg", 2, "Gamma", 1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", [1 0 1])
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", [1 NaN 1])
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", [1 1])
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", "auto")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", iddata (zeros (50, 1), ones (50, 1), 0.1))
+%!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", iddata (ones (50, 1), ones (50, 2), 0.1))
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", {1})
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "ic", "on")
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", -1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", [1 2])
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
 %!error id=rlssvf:badInput rlssvf ()
 %!error id=rlssvf:badInput rlssvf (data)
 

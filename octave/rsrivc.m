@@ -12,10 +12,12 @@
 ## @example
 ## x = (b0 p^(nb-1) + .. ) / (p^nf + f1 p^(nf-1) + .. + f_nf) u
 ## @end example
-## @code{adg} (Qn), @code{th0} and @code{P0} are ordered like @var{thm}.
-## The other options are those of @code{rivsvf} (@code{lambda_svf},
-## @code{adm}, @code{adg}, @code{th0}, @code{P0}, @code{tsiv},
-## @code{dtupdate}, @code{stability}, @code{mtheta}, @code{svf}) plus:
+## @code{adg} (Qn), @code{th0}, @code{P0} and @code{scaling} are ordered
+## like @var{thm}. The other options are those of @code{rivsvf}
+## (@code{lambda_svf}, @code{adm}, @code{adg}, @code{th0}, @code{P0},
+## @code{tsiv} (also "auto"), @code{dtupdate}, @code{stability},
+## @code{mtheta}, @code{svf}, @code{scaling}, @code{antiwindup},
+## @code{antiwindup_lambda}, @code{precision}; @var{info} as there) plus:
 ## @table @code
 ## @item A
 ## a stable denominator [1 f1 .. f_nf] that starts the adaptive prefilter
@@ -88,7 +90,40 @@ endfunction
 %! b = rsrivc (data, [1 2 0], "lambda_svf", 3, "prefilter", "monic");
 %! assert (b(end, :), [4 2.4 4], 1e-2);
 
+%!test  # scaling (eq. 3.74), given in THM order: same estimates
+%! randn ("state", 5);
+%! d = iddata (x + 0.1 * randn (N, 1), u, Ts, "InterSample", "zoh");
+%! o = {"lambda_svf", 3, "adm", "kf", "adg", 1e-6, "tsiv", 10};
+%! a = rsrivc (d, [1 2 0], o{:});
+%! m = svfscaling (d, [1 2 0], "lambda_svf", 3, "order", "bf");
+%! b = rsrivc (d, [1 2 0], o{:}, "scaling", m);
+%! c = rsrivc (d, [1 2 0], o{:}, "scaling", "self");
+%! assert (b, a, 1e-8 * max (abs (a(:))));
+%! assert (c, b, 0);
+
+%!test  # conditional updating: held at th0 while the input is constant
+%! uc = [u; ones(3000, 1); u];
+%! xc = simc (struct ("B", 4, "F", [1 2.4 4]), uc, Ts);
+%! [thm, ~, ~, info] = rsrivc (iddata (xc, uc, Ts, "InterSample", "zoh"), ...
+%!     [1 2 0], "lambda_svf", 3, "tsiv", 10, "adm", "kf", "adg", 1e-8, ...
+%!     "antiwindup", 300, "antiwindup_lambda", 0.99);
+%! n = numel (u);
+%! assert (info.updating(n), 1);
+%! held = ! info.updating;
+%! assert (nnz (held(n+1:n+3000)) > 2000);
+%! assert (all (all (thm(held, :) == 0)));
+%! assert (all (info.kappa_ff(held) >= 300));
+%! assert (info.resets >= 1);
+%! assert (thm(end, :), [4 2.4 4], 1e-2);
+
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "A", [1 -1 4])
+%!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", 1)
+%!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", "on")
+%!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", 300, "antiwindup_lambda", 1.5)
+%!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "adm", "lmr")
+%!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "potter", true)
+%!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "precision", "x")
+%!error id=rsrivc:dimensionMismatch rsrivc (data, [1 2 0], "lambda_svf", 3, "scaling", [1 2])
 %!error id=rsrivc:dimensionMismatch rsrivc (data, [1 2 0], "A", [1 2 3 4])
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "A", "x")
 %!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "prefilter", "x")

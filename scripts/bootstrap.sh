@@ -7,8 +7,12 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${CTID_BUILD_DIR:-$ROOT/build}"
 
 # Debian 12 packages the build, the tests and the demos need.
+# fonts-freefont-otf and ghostscript: Octave's headless PNG printing needs
+# both and a --no-install-recommends install of octave brings neither.
+# libnlopt-dev: the bounded optimiser of the Qn maximum-likelihood search.
 PACKAGES=(g++ cmake make pkg-config octave liboctave-dev octave-control
-          libeigen3-dev libgtest-dev libbenchmark-dev)
+          libeigen3-dev libgtest-dev libbenchmark-dev libnlopt-dev
+          fonts-freefont-otf ghostscript)
 
 missing=()
 for package in "${PACKAGES[@]}"; do

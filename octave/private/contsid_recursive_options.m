@@ -8,7 +8,8 @@
 ## finite real scalar > 0 (required).
 ## @item adm
 ## @qcode{"ff"} or @qcode{"kf"}; @qcode{"rw"} (CONTSID 7.0/7.1) means
-## @qcode{"kf"}.
+## @qcode{"kf"}; @qcode{"lmr"} (LMR-RLSSVF, eq. 3.82) takes a forgetting
+## factor like @qcode{"ff"} (the caller checks it is allowed).
 ## @item adg
 ## forgetting factor in (0, 1] (default 1) for @qcode{"ff"}; for
 ## @qcode{"kf"} the np-by-np Qn (default zeros), or a scalar q (q*I) or a
@@ -36,8 +37,9 @@ function o = contsid_recursive_options (fname, opts, np)
   o.lambda_svf = double (lam);
 
   adm = opts.adm;
-  if (! ischar (adm) || ! any (strcmpi (adm, {"ff", "kf", "rw"})))
-    error ([fname ":badOption"], "%s: adm must be 'ff', 'kf' or 'rw'", fname);
+  if (! ischar (adm) || ! any (strcmpi (adm, {"ff", "kf", "rw", "lmr"})))
+    error ([fname ":badOption"], "%s: adm must be 'ff', 'kf', 'rw' or 'lmr'",
+           fname);
   endif
   adm = lower (adm);
   if (strcmp (adm, "rw"))
@@ -51,7 +53,7 @@ function o = contsid_recursive_options (fname, opts, np)
     error ([fname ":badInput"], "%s: adg must be a real numeric array", fname);
   endif
   adg = double (adg);
-  if (strcmp (adm, "ff"))
+  if (any (strcmp (adm, {"ff", "lmr"})))
     if (isempty (adg))
       adg = 1;
     endif

@@ -16,7 +16,6 @@
 #include "allocation_counter.hpp"
 #include "test_util.hpp"
 
-
 namespace ctid {
 namespace {
 
@@ -100,6 +99,36 @@ TEST(PotterUpdate, AgreesWithRecursiveLeastSquaresWhenQnIsZero) {
   EXPECT_LT(worst.theta, kDoubleTolerance) << test::scientific(worst.theta);
   EXPECT_LT(worst.P, kDoubleTolerance) << test::scientific(worst.P);
   EXPECT_LT(worst.error, kDoubleTolerance) << test::scientific(worst.error);
+}
+
+// The forgetting-factor form: S (I - f f^T / alpha) / sqrt(lambda) with
+// beta = lambda + f^T f, alpha = beta + sqrt(lambda beta) reproduces the
+// covariance form of eq. (1.57) step by step.
+TEST(PotterUpdate, ForgettingFactorFormAgreesWithStandardRls) {
+  std::mt19937 rng(11);
+  const int np = 3;
+  const double lambda = 0.95;
+  ParameterUpdate<double> rls(np, ForgettingFactorAdaptation<double>(lambda));
+  PotterUpdate<double> potter(np, ForgettingFactorAdaptation<double>(lambda));
+  const Eigen::VectorXd theta0 = random_vector(np, rng);
+  const Eigen::MatrixXd P0 = 10 * Eigen::MatrixXd::Identity(np, np);
+  rls.reset(theta0, P0);
+  potter.reset(theta0, P0);
+  double worst = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Eigen::VectorXd phi = random_vector(np, rng);
+    const double target = uniform(rng);
+    const double e1 = rls.update(phi, target);
+    const double e2 = potter.update(phi, target);
+    EXPECT_NEAR(e1, e2, 1e-9);
+    EXPECT_NEAR(rls.innovation_scale(), potter.innovation_scale(),
+                1e-9 * rls.innovation_scale());
+    worst = std::max(worst, relative_difference(potter.P(), rls.P()));
+  }
+  EXPECT_LT(worst, kDoubleTolerance) << test::scientific(worst);
+  EXPECT_LT(relative_difference(potter.theta(), rls.theta()), kDoubleTolerance);
+  EXPECT_NEAR(potter.condition_number(), condition_number<double>(rls.P()),
+              1e-6 * potter.condition_number());
 }
 
 TEST(PotterUpdate, EmptyQnMeansNoProcessNoise) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -276,6 +277,98 @@ TEST(RecursiveIv, MonteCarloRsrivcConsistentRlssvfBiased) {
           << "RLSSVF mean " << m_ls << " +- " << se_ls;
     }
   }
+}
+
+// Eq. (3.74): RSRIVC and RIVSVF on M_s phi, M_s zeta give the unscaled
+// estimates (and the RLSSVF start, eq. 3.66, too), to rounding amplified
+// by kappa_2(P).
+TEST(RecursiveIv, ScalingLeavesTheEstimatesUnchanged) {
+  const double ts = 0.05;
+  const Data d = make_data(3000, ts, 0.3, false, 21);
+  for (IvMethod method : {IvMethod::kRivsvf, IvMethod::kRsrivc}) {
+    RecursiveIvConfig<double> c = base_config(method);
+    c.adaptation = KalmanAdaptation<double>(
+        Eigen::Vector3d(1e-5, 1e-4, 1e-4).asDiagonal());
+    const Eigen::MatrixXd plain = run(c, d, ts);
+    c.scaling = Eigen::Vector3d(0.5, 0.02, 7.0);
+    const Eigen::MatrixXd scaled = run(c, d, ts);
+    EXPECT_LT((scaled - plain).norm() / plain.norm(), 1e-9)
+        << "method " << static_cast<int>(method);
+  }
+}
+
+// Conditional updating, eq. (3.79): rich excitation, then a constant input
+// (the regressor loses rank, the parallel RLSSVF-FF's P blows up), then
+// rich excitation again. While kappa_2 >= gamma the estimates sit at
+// theta(t_0); afterwards the estimator restarts through RLSSVF and reaches
+// the truth again. A gamma never exceeded changes nothing.
+TEST(RecursiveIv, ConditionalUpdatingHoldsAndRestarts) {
+  const double ts = 0.05;
+  const int n = 12000;  // 600 s: PRBS, constant from 200 s to 350 s, PRBS
+  Data d = make_data(n, ts, 0.0, false, 22);
+  std::vector<double> u = d.u;
+  for (int k = 4000; k < 7000; ++k) u[k] = 1.0;
+  LtvSimulationConfig<double> sc;
+  sc.orders = siso_orders(2, 1, 0);
+  LtvSimulator<double> sim;
+  ASSERT_TRUE(sim.configure(sc).ok());
+  RecordView<double> in;
+  in.u = u.data();
+  in.num_samples = n;
+  in.num_inputs = 1;
+  in.ts = ts;
+  std::vector<double> x(n);
+  SimulationOutputs<double> so;
+  so.x = x.data();
+  ASSERT_TRUE(sim.simulate([](double, Eigen::VectorXd& th) { th = kTruth; }, in,
+                           nullptr, nullptr, so)
+                  .ok());
+  d.u = u;
+  d.y = x;
+  RecursiveIvConfig<double> c = base_config(IvMethod::kRsrivc);
+  c.adaptation =
+      KalmanAdaptation<double>(1e-6 * Eigen::MatrixXd::Identity(3, 3));
+  c.antiwindup_gamma = 300;
+  c.antiwindup_lambda = 0.99;
+  RecordView<double> record;
+  record.y = d.y.data();
+  record.u = d.u.data();
+  record.num_samples = n;
+  record.num_inputs = 1;
+  record.ts = ts;
+  Eigen::MatrixXd thm(n, 3);
+  std::vector<double> kappa(n), updating(n);
+  RecursiveOutputs<double> out;
+  out.thm = thm.data();
+  AntiWindupOutputs<double> windup;
+  windup.monitor_kappa = kappa.data();
+  windup.updating = updating.data();
+  ASSERT_TRUE(run_recursive_iv(c, record, ClosedLoopSignals<double>(), out,
+                               nullptr, &windup)
+                  .ok());
+  // Updating before the constant input, held during it, updating again
+  // after it.
+  EXPECT_EQ(updating[3900], 1.0);
+  const int held =
+      std::count(updating.begin() + 4000, updating.begin() + 7000, 0.0);
+  EXPECT_GT(held, 2000);
+  EXPECT_EQ(updating[n - 1], 1.0);
+  EXPECT_GE(windup.resets, 1);
+  for (int k = 4000; k < 7000; ++k) {
+    if (updating[k] == 0.0) {
+      ASSERT_EQ(thm.row(k).norm(), 0.0) << k;  // theta(t_0) = 0
+      ASSERT_GE(kappa[k], 300.0) << k;
+    }
+  }
+  EXPECT_LT(test::relative_error(thm.row(n - 1).transpose(), kTruth), 1e-3);
+  EXPECT_LT(test::relative_error(thm.row(3999).transpose(), kTruth), 1e-3);
+
+  // Never triggered: identical to no conditional updating.
+  c.antiwindup_gamma = 1e300;
+  const Eigen::MatrixXd never = run(c, d, ts);
+  c.antiwindup_gamma = 0;
+  const Eigen::MatrixXd off = run(c, d, ts);
+  EXPECT_TRUE(test::MatrixNear(never, off, 0.0));
 }
 
 }  // namespace

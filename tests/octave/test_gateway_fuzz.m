@@ -7,7 +7,7 @@ function test_gateway_fuzz ()
   tmp = tempname ();
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
-  gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex"};
+  gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex", "qnml_mex"};
   for i = 1:numel (gateways)
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
   endfor
@@ -19,12 +19,18 @@ function test_gateway_fuzz ()
   y = randn (50, 1);
   u = randn (50, 1);
   valid.rlssvf_mex = {"rlssvf", y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", ...
-                      "kf", 1e-4 * eye(3), [], []};
+                      "kf", 1e-4 * eye(3), [], [], "potter", [], ...
+                      [1; 2; 3], 0, 0.5, "single"};
   valid.simc_mex = {"simc", u, 0.1, "zoh", 2, 1, 0, [2 4 4], 1, [], [], ...
                     [], [], []};
   valid.riv_mex = {"clrsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", ...
                    "kf", 1e-4 * eye(3), [], [], "rsrivc", 1, 0.1, "keep", ...
-                   [], [], "unit", [], [1 -0.5], [1 -1], u, zeros(50, 1)};
+                   [], [], "unit", [], [1 -0.5], [1 -1], u, zeros(50, 1), ...
+                   [1; 2; 3], 300, 0.998, "double"};
+  valid.qnml_mex = {"qnml", "rlssvf", "search", [1e-4; 1e-4; 0], ...
+                    [1e-6; 1e-6; 0], [1e-2; 1e-2; 0], [1; 1; 0], 4, 1e-2, ...
+                    [], y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", "kf", ...
+                    zeros(3), [], [], "standard", [], [], 0, 0};
   valid.offline_mex = {"clsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, ...
                        "normalised", "clsrivc", 1e-6, 5, [], [1 -0.5], ...
                        [1 -1], u, zeros(50, 1)};
@@ -76,7 +82,7 @@ function n = check_call (name, args, nout)
       error ("test_gateway_fuzz: %s raised an error without identifier: %s",
              name, err.message);
     endif
-    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc|lssvf|ivsvf|srivc|clsrivc):\w+$', "once")))
+    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc|lssvf|ivsvf|srivc|clsrivc|qnml|svfscaling):\w+$', "once")))
       ## Octave's own argument errors (e.g. too many outputs) are fine only
       ## when they carry an identifier; ours must use the public name.
       if (! strncmp (err.identifier, "Octave:", 7))

@@ -88,12 +88,19 @@ Status validate_covariance(const Matrix<S>& M, Eigen::Index np,
     return bad_input(what + " must be symmetric");
   }
   if (np == 0) return Status::Ok();
+  if (require_definite) {
+    // Cholesky decides: a P0 whose diagonal spans many decades (parameters
+    // of very different sizes, thesis sec. 4.1) is positive definite even
+    // when its smallest eigenvalue is below eps times its largest.
+    const Eigen::LLT<Matrix<S>> llt((M + M.transpose()) / 2);
+    if (llt.info() != Eigen::Success || !(M.diagonal().array() > 0).all()) {
+      return bad_input(what + " must be positive definite");
+    }
+    return Status::Ok();
+  }
   const Eigen::SelfAdjointEigenSolver<Matrix<S>> eig(M);
-  const S smallest = eig.eigenvalues().minCoeff();
-  if (require_definite ? !(smallest > tolerance) : smallest < -tolerance) {
-    return bad_input(what + (require_definite
-                                 ? " must be positive definite"
-                                 : " must be positive semi-definite"));
+  if (eig.eigenvalues().minCoeff() < -tolerance) {
+    return bad_input(what + " must be positive semi-definite");
   }
   return Status::Ok();
 }
@@ -154,6 +161,7 @@ class ParameterUpdate {
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * phi;
     const S denominator = offset() + phi.dot(p_zeta_);
+    innovation_scale_ = denominator;
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
     // P -= (P phi)(P phi)^T / den on the lower triangle, mirrored: P stays
@@ -176,6 +184,7 @@ class ParameterUpdate {
     p_zeta_.noalias() = P_ * zeta;
     pt_phi_.noalias() = P_.transpose() * phi;
     const S denominator = offset() + phi.dot(p_zeta_);
+    innovation_scale_ = denominator;
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
     P_.noalias() -= gain_ * pt_phi_.transpose();
@@ -184,6 +193,11 @@ class ParameterUpdate {
   }
 
   const Vector<S>& theta() const { return theta_; }
+  // The gain denominator of the last step, lambda (or 1) + phi^T P^- zeta:
+  // for the least-squares Kalman filter the variance of the prediction error
+  // over sigma_e^2, r(t_k) / sigma_e^2 of eq. (3.18)/(3.25); for the IV
+  // update the quantity RSRIVC computes in its place.
+  S innovation_scale() const { return innovation_scale_; }
   // Gain L(t_k) of the last step.
   const Vector<S>& gain() const { return gain_; }
   const Matrix<S>& P() const { return P_; }
@@ -209,6 +223,7 @@ class ParameterUpdate {
   Vector<S> p_zeta_;
   Vector<S> pt_phi_;
   Vector<S> gain_;
+  S innovation_scale_ = 1;
 };
 
 }  // namespace ctid

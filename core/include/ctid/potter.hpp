@@ -15,6 +15,16 @@
 //     L = S^- f / beta,  theta += L (target - phi^T theta),
 //     S = S^- (I - f f^T / alpha).
 //
+// The forgetting-factor form (sec. 3.5: "both a Kalman filter based and a
+// forgetting factor based approach") has no time update and
+//     beta = lambda + f^T f,  alpha = beta + sqrt(lambda beta),
+//     S = S (I - f f^T / alpha) / sqrt(lambda),
+// which gives S S^T = (P - P phi phi^T P / (lambda + phi^T P phi)) / lambda,
+// eq. (1.57): (I - f f^T/alpha)^2 = I - f f^T (2 alpha - f^T f)/alpha^2
+// equals I - f f^T/beta when alpha^2 - 2 beta alpha + beta f^T f = 0, whose
+// larger root is alpha = beta + sqrt(beta (beta - f^T f)) = beta +
+// sqrt(lambda beta); lambda = 1 gives eq. (3.72).
+//
 // Qn^(1/2) is computed once, in configure(), from the eigen-decomposition of
 // Qn, so a semi-definite Qn (e.g. a parameter known to be constant) is
 // handled; only its nonzero directions enter the QR step, and Qn = 0 skips
@@ -72,18 +82,26 @@ template <typename S>
 class PotterUpdate {
  public:
   PotterUpdate() = default;
-  PotterUpdate(Eigen::Index np, KalmanAdaptation<S> adaptation) {
+  PotterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
     configure(np, std::move(adaptation));
   }
 
   // A default-constructed KalmanAdaptation (empty Qn) means Qn = 0. Qn must
-  // otherwise be np-by-np and positive semi-definite (validate_covariance).
-  void configure(Eigen::Index np, KalmanAdaptation<S> adaptation) {
+  // otherwise be np-by-np and positive semi-definite (validate_covariance);
+  // a forgetting factor must lie in (0, 1].
+  void configure(Eigen::Index np, Adaptation<S> adaptation) {
+    lambda_ = 1;
+    Matrix<S> qn;
+    if (const auto* ff =
+            std::get_if<ForgettingFactorAdaptation<S>>(&adaptation)) {
+      lambda_ = ff->lambda();
+    } else {
+      qn = std::get<KalmanAdaptation<S>>(adaptation).qn();
+    }
     adaptation_ = std::move(adaptation);
-    qn_root_t_ =
-        adaptation_.qn().size() == 0
-            ? Matrix<S>(0, np)
-            : Matrix<S>(semidefinite_square_root(adaptation_.qn()).transpose());
+    qn_root_t_ = qn.size() == 0
+                     ? Matrix<S>(0, np)
+                     : Matrix<S>(semidefinite_square_root(qn).transpose());
     theta_ = Vector<S>::Zero(np);
     S_ = Matrix<S>::Identity(np, np);
     P_ = Matrix<S>::Identity(np, np);
@@ -122,15 +140,23 @@ class PotterUpdate {
     predict();
     const S error = target - phi.dot(theta_);
     f_.noalias() = S_.transpose() * phi;
-    const S beta = 1 + f_.squaredNorm();
-    const S alpha = beta + std::sqrt(beta);
+    const S beta = lambda_ + f_.squaredNorm();
+    const S alpha = beta + std::sqrt(lambda_ * beta);
     s_f_.noalias() = S_ * f_;
     gain_ = s_f_ / beta;
     theta_ += gain_ * error;
     s_f_ /= alpha;
     S_.noalias() -= s_f_ * f_.transpose();
+    if (lambda_ != S(1)) S_ /= std::sqrt(lambda_);
+    innovation_scale_ = beta;
     return error;
   }
+
+  // beta of the last step: lambda (or 1) + phi^T P(t_k|t_k-1) phi, the
+  // normalised variance of the prediction error (eq. 3.25 over sigma_e^2).
+  S innovation_scale() const { return innovation_scale_; }
+  // kappa_2(P) from the square root, eq. (3.68).
+  S condition_number() const { return condition_number_from_square_root(S_); }
 
   const Vector<S>& theta() const { return theta_; }
   // Gain L(t_k) of the last step, eq. (3.73h).
@@ -145,7 +171,7 @@ class PotterUpdate {
     }
     return P_;
   }
-  const KalmanAdaptation<S>& adaptation() const { return adaptation_; }
+  const Adaptation<S>& adaptation() const { return adaptation_; }
 
  private:
   // S S^T + Qn = [S^T; Qn^(T/2)]^T [S^T; Qn^(T/2)] = R^T R.
@@ -160,7 +186,9 @@ class PotterUpdate {
              .transpose();
   }
 
-  KalmanAdaptation<S> adaptation_;
+  Adaptation<S> adaptation_;
+  S lambda_ = 1;  // forgetting factor (1 for the Kalman filter)
+  S innovation_scale_ = 1;
   Matrix<S> qn_root_t_;  // Qn^(T/2), rank-by-np
   Vector<S> theta_;
   Matrix<S> S_;

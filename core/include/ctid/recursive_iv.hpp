@@ -17,6 +17,16 @@
 // (eq. 3.10; keep the last stable one or reflect the unstable roots), and
 // refreshed every `dtupdate` seconds.
 //
+// Chapter 3 options: signal scaling with a diagonal M_s (eq. 3.74; the
+// RLSSVF start is scaled the same way, eq. 3.66), and conditional updating
+// against estimator windup (sec. 3.6.2, eq. 3.79): an RLSSVF-FF runs in
+// parallel on the same SVF regression; while kappa_2 of its P is >= gamma
+// the estimates are held at theta(t_0), P(t_0), and when excitation
+// returns the estimator restarts through RLSSVF (IV again t_s,iv later).
+// The test is armed the first time kappa_2 < gamma holds, so that the
+// start-up of the parallel filter from P(t_0) does not count as poor
+// excitation.
+//
 // Prefilter gain (RSRIVC): the thesis writes 1/A(p) (monic). Its output
 // scales with A, so the regressors and with them the effective Qn change as
 // A drifts; the default here is the unit-static-gain prefilter a_na/A(p),
@@ -60,6 +70,10 @@ struct RecursiveIvConfig {
   Vector<S> initial_denominator;
   bool closed_loop = false;
   DiscreteTransferFunction<S> controller;  // u = r1 + C (r2 - y)
+  Vector<S> scaling;                       // diagonal of M_s; empty: no scaling
+  S antiwindup_gamma = 0;  // gamma of eq. (3.79); 0: no conditional updating
+  S antiwindup_lambda = S(0.998);  // forgetting factor of the parallel
+                                   // RLSSVF-FF (thesis Table 3.2)
 };
 
 template <typename S>
@@ -70,8 +84,21 @@ Status validate(const RecursiveIvConfig<S>& c) {
   ls.adaptation = c.adaptation;
   ls.theta0 = c.theta0;
   ls.P0 = c.P0;
+  ls.scaling = c.scaling;
   Status status = validate(ls);
   if (!status.ok()) return status;
+  if (c.antiwindup_gamma != 0) {
+    if (!(c.antiwindup_gamma > 1) || !std::isfinite(c.antiwindup_gamma)) {
+      return bad_input(
+          "the anti-windup threshold gamma must be finite and > 1 (kappa_2 "
+          "of a matrix is >= 1), got " +
+          std::to_string(static_cast<double>(c.antiwindup_gamma)));
+    }
+    status = validate_forgetting_factor<S>(c.antiwindup_lambda);
+    if (!status.ok()) {
+      return bad_input("anti-windup RLSSVF-FF: " + status.message());
+    }
+  }
   if (!(c.t_s_iv >= 0) || !std::isfinite(c.t_s_iv)) {
     return bad_input("tsiv must be finite and >= 0");
   }
@@ -141,7 +168,15 @@ class RecursiveIv {
       config_.m_theta.denominator = Vector<S>::Ones(1);
     }
     ls_regressor_.configure(orders, config.svf);
-    update_.configure(np, config.adaptation);
+    update_.configure(np, UpdateForm::kStandard, config.adaptation, Matrix<S>(),
+                      config.scaling);
+    if (antiwindup()) {
+      windup_monitor_.configure(
+          np, UpdateForm::kStandard,
+          ForgettingFactorAdaptation<S>(config.antiwindup_lambda), Matrix<S>(),
+          config.scaling);
+      eigen_ = Eigen::SelfAdjointEigenSolver<Matrix<S>>(np);
+    }
 
     // Fixed SVF (RIVSVF) or adaptive prefilter (RSRIVC) on y, x_hat
     // (trapezoidal) and on u or u_hat (the input's rule).
@@ -177,6 +212,12 @@ class RecursiveIv {
   void reset() {
     ls_regressor_.reset();
     update_.reset(config_.theta0, config_.P0);
+    if (antiwindup()) windup_monitor_.reset(config_.theta0, config_.P0);
+    monitor_kappa_ = 1;
+    armed_ = false;
+    excited_ = true;
+    stage_start_ = 0;
+    resets_ = 0;
     y_channel_.reset();
     xhat_channel_.reset();
     uhat_channel_.reset();
@@ -215,6 +256,7 @@ class RecursiveIv {
 
     // RLSSVF regression, always run so that its filters stay settled.
     ls_regressor_.step(u, y, h);
+    if (antiwindup()) monitor_excitation();
 
     // Method filters (fixed SVF or adaptive prefilter): y and x_hat by the
     // trapezoidal rule, u (and u_hat) by the input's rule.
@@ -245,8 +287,13 @@ class RecursiveIv {
       zeta_.tail(nnum) = phi_.tail(nnum);
     }
 
-    iv_active_ = elapsed_ >= config_.t_s_iv * (1 - 1e-12);
-    if (!iv_active_) {
+    iv_active_ = elapsed_ - stage_start_ >= config_.t_s_iv * (1 - 1e-12);
+    if (!excited_) {  // conditional updating: hold theta(t_0), P(t_0)
+      iv_active_ = false;
+      update_.reset(config_.theta0, config_.P0);
+      prediction_error_ =
+          ls_regressor_.target() - ls_regressor_.phi().dot(update_.theta());
+    } else if (!iv_active_) {
       prediction_error_ =
           update_.update(ls_regressor_.phi(), ls_regressor_.target());
     } else {
@@ -259,6 +306,18 @@ class RecursiveIv {
 
   const Vector<S>& theta() const { return update_.theta(); }
   const Matrix<S>& P() const { return update_.P(); }
+  S kappa() const { return update_.kappa(); }
+  // r(t_k)/sigma_e^2 of the last update: 1 + phi^T P^- phi (RLSSVF stage)
+  // or 1 + phi^T P^- zeta (IV stage), eq. (3.25); NaN while held.
+  S innovation_scale() const {
+    return excited_ ? update_.innovation_scale()
+                    : std::numeric_limits<S>::quiet_NaN();
+  }
+  // Conditional updating (eq. 3.79): kappa_2(P) of the parallel RLSSVF-FF,
+  // whether the estimates are updated, and how many times they were reset.
+  S monitor_kappa() const { return monitor_kappa_; }
+  bool updating() const { return excited_; }
+  long resets() const { return resets_; }
   // The estimate that currently drives the auxiliary model and prefilter.
   const Vector<S>& feedback_parameters() const { return theta_fb_; }
   bool iv_active() const { return iv_active_; }
@@ -267,6 +326,26 @@ class RecursiveIv {
   S last_xhat() const { return last_xhat_; }
 
  private:
+  bool antiwindup() const { return config_.antiwindup_gamma != 0; }
+
+  // Eq. (3.79) on the parallel RLSSVF-FF: armed once kappa_2 < gamma; a
+  // drop of excitation resets the estimates, its return restarts the
+  // RLSSVF stage.
+  void monitor_excitation() {
+    windup_monitor_.update(ls_regressor_.phi(), ls_regressor_.target());
+    eigen_.compute(windup_monitor_.working_P(), Eigen::EigenvaluesOnly);
+    const auto& lambda = eigen_.eigenvalues();
+    const S smallest = lambda(0);
+    monitor_kappa_ = smallest > 0 ? lambda(lambda.size() - 1) / smallest
+                                  : std::numeric_limits<S>::infinity();
+    const bool rich = monitor_kappa_ < config_.antiwindup_gamma;
+    armed_ = armed_ || rich;
+    const bool excited = !armed_ || rich;
+    if (excited && !excited_) stage_start_ = elapsed_;
+    if (!excited && excited_) ++resets_;
+    excited_ = excited;
+  }
+
   // x_hat(t_k) of the auxiliary model (2.16) with theta_fb.
   S open_loop_auxiliary(const S* u) {
     S x = 0;
@@ -373,7 +452,13 @@ class RecursiveIv {
 
   RecursiveIvConfig<S> config_;
   SvfRegressor<S> ls_regressor_;
-  ParameterUpdate<S> update_;
+  LeastSquaresUpdate<S> update_;
+  LeastSquaresUpdate<S> windup_monitor_;
+  Eigen::SelfAdjointEigenSolver<Matrix<S>> eigen_;
+  S monitor_kappa_ = 1;
+  bool armed_ = false, excited_ = true;
+  S stage_start_ = 0;
+  long resets_ = 0;
   FilterDiscretization<S> signal_disc_, input_disc_, aux_disc_;
   FilterChannel<S> y_channel_, xhat_channel_, uhat_channel_;
   std::vector<FilterChannel<S>> input_channels_, aux_channels_;
@@ -405,12 +490,26 @@ struct ClosedLoopSignals {
 // Runs a RecursiveIv over a record (see run_rlssvf for the outputs).
 // `rejections` (optional) receives the number of estimates refused by the
 // stability test.
+// Conditional-updating results of run_recursive_iv (optional, N values
+// each): kappa_2(P) of the parallel RLSSVF-FF and 1/0 whether the
+// estimates were updated at each sample.
+template <typename S>
+struct AntiWindupOutputs {
+  S* monitor_kappa = nullptr;
+  S* updating = nullptr;
+  long resets = 0;
+};
+
+// Runs a RecursiveIv over a record (see run_rlssvf for the outputs).
+// `rejections` (optional) receives the number of estimates refused by the
+// stability test.
 template <typename S>
 Status run_recursive_iv(const RecursiveIvConfig<S>& config,
                         const RecordView<S>& record,
                         const ClosedLoopSignals<S>& loop,
                         const RecursiveOutputs<S>& out,
-                        long* rejections = nullptr) {
+                        long* rejections = nullptr,
+                        AntiWindupOutputs<S>* windup = nullptr) {
   Status status = validate_record(record, config.orders);
   if (!status.ok()) return status;
   const Eigen::Index n = record.num_samples;
@@ -443,16 +542,31 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
   RecursiveIv<S> estimator;
   status = estimator.configure(adjusted);
   if (!status.ok()) return status;
-  const Status run = record_recursive_run(
-      config.orders, config.svf.u_intersample, record, out,
-      [&](const S* u, S y, S h, Eigen::Index k) -> const Vector<S>& {
-        const S r1 = loop.r1 ? loop.r1[k] : S(0);
-        const S r2 = loop.r2 ? loop.r2[k] : S(0);
-        return estimator.update(u, y, h, r1, r2);
-      },
-      [&]() -> const Matrix<S>& { return estimator.P(); },
-      "the scaling of the data, lambda_svf and tsiv");
+  struct Adapter {
+    RecursiveIv<S>& e;
+    const ClosedLoopSignals<S>& loop;
+    AntiWindupOutputs<S>* windup;
+    const Vector<S>& update(const S* u, S y, S h, Eigen::Index k) {
+      const S r1 = loop.r1 ? loop.r1[k] : S(0);
+      const S r2 = loop.r2 ? loop.r2[k] : S(0);
+      const Vector<S>& theta = e.update(u, y, h, r1, r2);
+      if (windup != nullptr) {
+        if (windup->monitor_kappa) windup->monitor_kappa[k] = e.monitor_kappa();
+        if (windup->updating) windup->updating[k] = e.updating() ? 1 : 0;
+      }
+      return theta;
+    }
+    const Matrix<S>& covariance() const { return e.P(); }
+    S kappa() const { return e.kappa(); }
+    S prediction_error() const { return e.prediction_error(); }
+    S innovation_scale() const { return e.innovation_scale(); }
+  };
+  const Status run =
+      record_recursive_run(config.orders, config.svf.u_intersample, record, out,
+                           Adapter{estimator, loop, windup},
+                           "the scaling of the data, lambda_svf and tsiv");
   if (rejections != nullptr) *rejections = estimator.stability_rejections();
+  if (windup != nullptr) windup->resets = estimator.resets();
   return run;
 }
 

@@ -131,8 +131,12 @@ class FilterChannel {
   }
 
   // Zero state; the next sample is the first of a record. ZOH starts with
-  // the state at rest at t_k, the trapezoidal rule as if s and the state
-  // were zero one interval earlier (a discrete filter from rest).
+  // the state at rest at t_k, the trapezoidal rule by default as if s and
+  // the state were zero one interval earlier (a discrete filter from rest);
+  // with rest_at_first_sample, at rest at t_k like ZOH (the continuous
+  // filter started at the first sample, which is what the initial-condition
+  // regressors of eqs. 3.36-3.41 describe).
+  void set_rest_at_first_sample(bool rest) { rest_at_first_sample_ = rest; }
   void reset() {
     z_.setZero();
     first_ = true;
@@ -146,7 +150,7 @@ class FilterChannel {
       z_next_.noalias() = disc.Phi() * z_;
       z_next_ += disc.Gamma() * (zoh ? s_prev_ : s_prev_ + s);
       z_.swap(z_next_);
-    } else if (!zoh) {
+    } else if (!zoh && !rest_at_first_sample_) {
       z_.noalias() = disc.Gamma() * s;
     }
     first_ = false;
@@ -177,6 +181,7 @@ class FilterChannel {
   Vector<S> out_;
   S s_prev_ = 0;
   bool first_ = true;
+  bool rest_at_first_sample_ = false;
 };
 
 // One signal through its own filter: a FilterDiscretization with a single

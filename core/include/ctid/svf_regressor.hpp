@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ctid/delay_line.hpp"
+#include "ctid/discretization.hpp"
 #include "ctid/model.hpp"
 #include "ctid/svf.hpp"
 
@@ -23,6 +24,9 @@ struct SvfSettings {
   bool normalised = true;  // (lambda/(p+lambda))^na, eq. (3.1)
   InterSample u_intersample = InterSample::kZoh;
   InterSample y_intersample = InterSample::kFoh;
+  // Trapezoidal channels start at rest at the first sample instead of as a
+  // discrete filter from rest (see FilterChannel::reset).
+  bool rest_at_first_sample = false;
 };
 
 template <typename S>
@@ -48,10 +52,12 @@ class SvfRegressor {
     u_disc_.configure(na, svf.u_intersample);
     u_disc_.set_denominator(d);
     y_channel_.configure(na);
+    y_channel_.set_rest_at_first_sample(svf.rest_at_first_sample);
     u_channels_.resize(orders.num_inputs());
     delays_.resize(orders.num_inputs());
     for (int j = 0; j < orders.num_inputs(); ++j) {
       u_channels_[j].configure(na);
+      u_channels_[j].set_rest_at_first_sample(svf.rest_at_first_sample);
       delays_[j].configure(orders.nk[j]);
     }
     phi_ = Vector<S>::Zero(orders.num_parameters());
@@ -97,6 +103,64 @@ class SvfRegressor {
   std::vector<DelayLine<S>> delays_;
   Vector<S> phi_;
   S target_ = 0;
+};
+
+// Initial-condition regressors of RLSSVF, eqs. (3.36)-(3.41):
+//
+//   phi_ic(t_k) = [f_(na-1)(t_k) .. f_0(t_k)],
+//
+// f_i the impulse response of F_i(p) = g p^i / D(p) (D = (p + lambda)^na,
+// g = lambda^na for the normalised SVF, 1 for the ordinary one), so that
+// c_1 f_(na-1) + .. + c_na f_0 is the filtered effect of the unknown initial
+// conditions, F(p) C(p) in eq. (3.34); for na = 1, c_1 = y(0). With
+// z(t) = exp(F t) e_na (the canonical state after a unit impulse at the
+// first sample), f_i(t) = g z_i(t); z is advanced by the exact matrix
+// exponential of each interval.
+template <typename S>
+class InitialConditionRegressor {
+ public:
+  void configure(int na, S lambda_svf, bool normalised) {
+    na_ = na;
+    gain_ = svf_gain<S>(na, lambda_svf, normalised);
+    F_ = companion_matrix<S>(svf_denominator<S>(na, lambda_svf));
+    G_ = Matrix<S>::Zero(na, 1);
+    Phi_ = Matrix<S>::Identity(na, na);
+    Gamma_ = Matrix<S>::Zero(na, 1);
+    z_ = Vector<S>::Zero(na);
+    z_next_ = Vector<S>::Zero(na);
+    phi_ = Vector<S>::Zero(na);
+    h_ = 0;
+    reset();
+  }
+
+  void reset() { first_ = true; }
+
+  // Advances to the next sample; h = t_k - t_(k-1).
+  void step(S h) {
+    if (first_) {
+      z_.setZero();
+      z_(na_ - 1) = 1;
+      first_ = false;
+    } else {
+      if (h != h_) {
+        zoh_discretize<S>(F_, G_, h, Phi_, Gamma_);
+        h_ = h;
+      }
+      z_next_.noalias() = Phi_ * z_;
+      z_.swap(z_next_);
+    }
+    for (int j = 0; j < na_; ++j) phi_(j) = gain_ * z_(na_ - 1 - j);
+  }
+
+  const Vector<S>& phi() const { return phi_; }
+
+ private:
+  int na_ = 0;
+  S gain_ = 1;
+  Matrix<S> F_, G_, Phi_, Gamma_;
+  Vector<S> z_, z_next_, phi_;
+  S h_ = 0;
+  bool first_ = true;
 };
 
 }  // namespace ctid

@@ -1,0 +1,231 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{tsiv}, @var{info}, @var{thm}, @var{yh}] =} contsid_converge (@var{fname}, @var{d}, @var{nn}, @var{rls}, @var{det}, @var{strict})
+## Back-end of @code{rlsconverge} and of @code{"tsiv", "auto"} in the
+## recursive IV routines: runs RLSSVF on the data @var{d} (from
+## @code{contsid_getdata}) with the model [na nb nk] @var{nn} and the
+## checked options @var{rls} (fields lambda_svf, adm, adg, th0, P0, svf, in
+## the core order [a b]), and detects its convergence with the detector
+## options @var{det} (a struct or a cell of name-value pairs, checked here;
+## see @code{help rlsconverge}). When no convergence is detected it raises
+## @code{@var{fname}:notConverged} if @var{strict}, else it warns with that
+## identifier and returns @var{tsiv} = NaN. Every message starts with
+## @var{fname}.
+## @end deftypefn
+
+function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
+                                                  strict)
+  defaults = struct ("blocklength", [], "nblocks", 10, "alpha", 0.05,
+                     "tol_theta", 0.05, "eyfloor", 1e-3, "ptol", 1e-2,
+                     "criteria", "all");
+  if (isempty (det))
+    det = {};
+  endif
+  opts = contsid_options (fname, defaults, det);
+  t = d.t - d.t(1);
+  T = t(end);
+  Tb = opts.blocklength;
+  if (isempty (Tb))
+    Tb = 2 * 2 * pi / rls.lambda_svf;     # two periods of the SVF cut-off
+  endif
+  positive (fname, Tb, "blocklength");
+  if (d.uniform && Tb < 2 * d.Ts * (1 - 1e-12))
+    error ([fname ":badInput"],
+           "%s: blocklength (%g s) must hold at least two samples (Ts = %g s)",
+           fname, Tb, d.Ts);
+  endif
+  n = opts.nblocks;
+  if (! isnumeric (n) || ! isreal (n) || ! isscalar (n) || n != fix (n)
+      || n < 3)
+    error ([fname ":badInput"], "%s: nblocks must be an integer >= 3", fname);
+  endif
+  alpha = opts.alpha;
+  positive (fname, alpha, "alpha");
+  if (alpha >= 0.5)
+    error ([fname ":badInput"], "%s: alpha must lie in (0, 0.5)", fname);
+  endif
+  positive (fname, opts.tol_theta, "tol_theta");
+  floor_ = opts.eyfloor;
+  if (! isnumeric (floor_) || ! isreal (floor_) || ! isscalar (floor_)
+      || ! isfinite (floor_) || floor_ < 0)
+    error ([fname ":badInput"], "%s: eyfloor must be a finite real >= 0",
+           fname);
+  endif
+  positive (fname, opts.ptol, "ptol");
+  crit = check_criteria (fname, opts.criteria);
+  B = floor (T / Tb * (1 + 1e-12));
+  if (B < n)
+    error ([fname ":badInput"],
+           ["%s: the training record (%g s) is too short for nblocks = %d ", ...
+            "blocks of %g s"], fname, T, n, Tb);
+  endif
+
+  ## The RLSSVF run whose start-up is examined, with P0 explicit (rlssvf's
+  ## default 1e4 I when not given) since the P index is relative to it.
+  nu = (numel (nn) - 1) / 2;
+  np = nn(1) + sum (nn(2:1+nu));
+  P0 = rls.P0;
+  if (isempty (P0))
+    P0 = 1e4 * eye (np);
+  endif
+  if (d.uniform)
+    timing = d.Ts;
+  else
+    timing = t;
+  endif
+  args = {"lambda_svf", rls.lambda_svf, "adm", rls.adm, "adg", rls.adg, ...
+          "svf", rls.svf, "P0", P0};
+  if (! isempty (rls.th0))
+    args(end+1:end+2) = {"th0", rls.th0};
+  endif
+  use_P = any (strcmp (crit, "P"));
+  try
+    data = iddata (d.y, d.u, timing, "InterSample", d.intersample);
+    if (use_P)
+      [thm, yh, pset] = rlssvf (data, nn, args{:});
+      ## trace (P) / trace (P0) after each recursion.
+      trP = reshape (sum (reshape (pset, np * np, [])(1:np+1:end, :), 1),
+                     [], 1) / trace (P0);
+      clear pset;
+    else
+      [thm, yh] = rlssvf (data, nn, args{:});
+      trP = NaN (rows (thm), 1);
+    endif
+  catch err
+    id = regexprep (err.identifier, '^rlssvf:', [fname ":"]);
+    msg = regexprep (err.message, '^rlssvf:', [fname ": rlssvf:"]);
+    error (struct ("message", msg, "identifier", id, "stack", err.stack));
+  end_try_catch
+
+  ## Block statistics: mean square of the output error (eq. 1.60) and of y,
+  ## mean of the estimates.
+  blk = floor (t / Tb * (1 + 1e-12)) + 1;
+  in = blk <= B;
+  blk = blk(in);
+  ey = d.y(in) - yh(in);
+  cnt = accumarray (blk, 1, [B 1]);
+  E = accumarray (blk, ey .^ 2, [B 1]) ./ cnt;
+  Y = accumarray (blk, d.y(in) .^ 2, [B 1]) ./ cnt;
+  np = columns (thm);
+  thb = zeros (B, np);
+  for j = 1:np
+    thb(:, j) = accumarray (blk, thm(in, j), [B 1]) ./ cnt;
+  endfor
+  E(! isfinite (E)) = Inf;
+  ## trace (P) / trace (P0) at the end of each block.
+  last = accumarray (blk, find (in), [B 1], @max, NaN);
+  Pb = NaN (B, 1);
+  Pb(isfinite (last)) = trP(last(isfinite (last)));
+  dth = NaN (B, 1);
+  dth(2:end) = sqrt (sumsq (diff (thb), 2)) ./ sqrt (sumsq (thb(2:end, :), 2));
+  dth(! isfinite (dth)) = Inf;
+
+  ## Steady-state test of Cao and Rhinehart (1995) on X = log E over the
+  ## last n blocks: R = 2 sum (X - mean X)^2 / sum (diff X)^2, the ratio of
+  ## two estimates of the variance, about 1 for independent values about a
+  ## constant level and larger along a trend. R = 2 / eta with eta von
+  ## Neumann's ratio, E[eta] = 2 and var[eta] = 4 (n-2) / ((n+1) (n-1))
+  ## for normal values: R_crit is its one-sided normal quantile at alpha.
+  z = sqrt (2) * erfinv (1 - 2 * alpha);
+  Rcrit = 2 / (2 - z * sqrt (4 * (n - 2) / ((n + 1) * (n - 1))));
+  if (! (Rcrit > 0))
+    Rcrit = Inf;                          # alpha so small the test never fails
+  endif
+  X = log (E);
+  R = NaN (B, 1);
+  thidx = NaN (B, 1);
+  steady_ey = false (B, 1);
+  steady_th = false (B, 1);
+  small_P = false (B, 1);
+  for k = n:B
+    w = k-n+1:k;
+    x = X(w);
+    if (all (isfinite (x)))
+      s1 = sumsq (x - mean (x));
+      s2 = sumsq (diff (x));
+      if (s2 > 0)
+        R(k) = 2 * s1 / s2;
+      elseif (s1 == 0)
+        R(k) = 0;                         # a constant level
+      endif
+    endif
+    steady_ey(k) = R(k) < Rcrit || all (E(w) <= floor_ ^ 2 * Y(w));
+    thidx(k) = sqrt (mean (dth(w(2:end)) .^ 2));
+    steady_th(k) = thidx(k) < opts.tol_theta;
+    small_P(k) = all (Pb(w) <= opts.ptol);
+  endfor
+  pass = true (B, 1);
+  pass(1:n-1) = false;
+  if (any (strcmp (crit, "outputerror")))
+    pass &= steady_ey;
+  endif
+  if (any (strcmp (crit, "theta")))
+    pass &= steady_th;
+  endif
+  if (use_P)
+    pass &= small_P;
+  endif
+  kd = find (pass, 1);
+
+  info = struct ("blocklength", Tb, "nblocks", n, "alpha", alpha,
+                 "Rcrit", Rcrit, "tol_theta", opts.tol_theta,
+                 "eyfloor", floor_, "ptol", opts.ptol, "criteria", {crit},
+                 "causal", true,
+                 "tblock", (1:B)' * Tb, "ey_ms", E, "y_ms", Y, "R", R,
+                 "dtheta", dth, "theta_index", thidx,
+                 "P_index", Pb, "steady_ey", steady_ey,
+                 "steady_theta", steady_th, "small_P", small_P,
+                 "converged", ! isempty (kd), "tsiv", NaN, "k", NaN);
+  if (isempty (kd))
+    tsiv = NaN;
+    msg = sprintf (["%s: no convergence of RLSSVF detected in %g s ", ...
+                    "(%d blocks of %g s); give tsiv, or relax the ", ...
+                    "thresholds (alpha, tol_theta, eyfloor, ptol)"],
+                   fname, T, B, Tb);
+    if (strict)
+      error ([fname ":notConverged"], "%s", msg);
+    endif
+    warning ([fname ":notConverged"], "%s", msg);
+    return;
+  endif
+  tsiv = kd * Tb;
+  info.tsiv = tsiv;
+  info.k = find (t >= tsiv * (1 - 1e-12), 1);
+endfunction
+
+function positive (fname, v, what)
+  if (! isnumeric (v) || ! isreal (v) || ! isscalar (v) || ! isfinite (v)
+      || v <= 0)
+    error ([fname ":badInput"], "%s: %s must be a finite real scalar > 0",
+           fname, what);
+  endif
+endfunction
+
+## The indices to use: "all" or one or several of "outputerror", "theta",
+## "P" (a string or a cell of strings).
+function crit = check_criteria (fname, c)
+  known = {"outputerror", "theta", "P"};
+  if (ischar (c) && strcmpi (c, "all"))
+    crit = known;
+    return;
+  endif
+  if (ischar (c))
+    c = {c};
+  endif
+  ok = iscellstr (c) && ! isempty (c);
+  crit = cell (1, 0);
+  if (ok)
+    for i = 1:numel (c)
+      j = find (strcmpi (c{i}, known));
+      ok = ok && ! isempty (j);
+      if (ok)
+        crit{end+1} = known{j};
+      endif
+    endfor
+  endif
+  if (! ok)
+    error ([fname ":badOption"],
+           ["%s: criteria must be 'all' or one or more of 'outputerror', ", ...
+            "'theta', 'P'"], fname);
+  endif
+  crit = known(ismember (known, crit));    # known order, no repeats
+endfunction

@@ -1,0 +1,243 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{p} =} contsid_riv_args (@var{fname}, @var{routine}, @dots{})
+## Argument preparation shared by rivsvf, rsrivc, clrivsvf and clrsrivc
+## (@var{routine}) and by qnml: parses the data, @var{nn} and the options
+## (messages start with @var{fname}), reorders from the public parameter
+## order ([a b] for the SVF methods, [b f] for the SRIVC ones) to the core's
+## [a b], and returns @var{p} with @code{args}, the 28 arguments of the riv
+## gateways (mex/estimator_args.hpp), @code{precision}, @code{perm}
+## (thm_public = thm_core(:, perm)), @code{tsiv}, @code{d} and @code{orders}.
+## @end deftypefn
+
+function p = contsid_riv_args (fname, routine, varargin)
+  srivc_form = any (strcmp (routine, {"rsrivc", "clrsrivc"}));
+  closed = strncmp (routine, "cl", 2);
+  if (srivc_form)
+    method = "rsrivc";
+    form = "f";
+  else
+    method = "rivsvf";
+    form = "a";
+  endif
+  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
+                     "P0", [], "svf", "normalised", "tsiv", [],
+                     "dtupdate", [], "stability", "keep", "mtheta", [],
+                     "prefilter", "unit", "A", [], "controller", [],
+                     "r1", [], "r2", [], "scaling", [], "antiwindup", 0,
+                     "antiwindup_lambda", 0.998, "precision", "double");
+  [d, orders, opts] = contsid_recursive_args (fname, form, defaults,
+                                              varargin{:});
+  np = orders.np;
+  na = orders.na;
+  ## Public order -> core order [a b].
+  if (srivc_form)
+    perm = [na+1:np, 1:na];         # thm_public = thm_core(:, perm)
+  else
+    perm = 1:np;
+  endif
+  iperm(perm) = 1:np;
+
+  A = check_A (fname, opts.A, na, srivc_form);
+  if (isempty (opts.lambda_svf) && ! isempty (A))
+    ## The RLSSVF start needs a cut-off: the geometric mean of A's roots.
+    opts.lambda_svf = A(end) ^ (1 / na);
+  endif
+  o = contsid_recursive_options (fname, opts, np);
+  if (strcmp (o.adm, "lmr"))
+    error ([fname ":badOption"], ...
+           "%s: adm 'lmr' (LMR-RLSSVF) belongs to rlssvf", fname);
+  endif
+  if (isnumeric (opts.scaling) && ! isempty (opts.scaling)
+      && numel (opts.scaling) == np)
+    opts.scaling = opts.scaling(iperm);  # given in THM order
+  endif
+  o = contsid_ch3_options (fname, opts, orders, d, o);
+  adg = o.adg;
+  if (strcmp (o.adm, "kf"))
+    adg = adg(iperm, iperm);
+  endif
+  th0 = o.th0;
+  if (! isempty (th0))
+    th0 = th0(iperm);
+  endif
+  P0 = o.P0;
+  if (! isempty (P0))
+    P0 = P0(iperm, iperm);
+  endif
+
+  if (d.uniform)
+    t = d.Ts;
+    duration = (rows (d.y) - 1) * d.Ts;
+  else
+    t = d.t;
+    duration = d.t(end) - d.t(1);
+  endif
+  tsiv = opts.tsiv;
+  tsiv_detector = [];
+  if (isempty (tsiv))
+    tsiv = duration / 10;                # CONTSID default
+  elseif ((ischar (tsiv) && strcmpi (tsiv, "auto")) || isstruct (tsiv))
+    ## Detected convergence of the RLSSVF start (see help rlsconverge);
+    ## a struct holds detector options. Scaling and precision do not
+    ## change the RLSSVF estimates the detector examines, so they are not
+    ## forwarded.
+    det = {};
+    if (isstruct (tsiv))
+      det = tsiv;
+    endif
+    rls = struct ("lambda_svf", o.lambda_svf, "adm", o.adm, "adg", adg,
+                  "th0", th0, "P0", P0, "svf", o.svf);
+    nn_rls = [na, orders.nb, orders.nk];
+    [tsiv, tsiv_detector] = contsid_converge (fname, d, nn_rls, rls, det,
+                                              true);
+  endif
+  check_scalar (fname, tsiv, "tsiv");
+  if (tsiv < 0 || tsiv > duration * (1 + 1e-12))
+    error ([fname ":badInput"], ...
+           "%s: tsiv = %g s lies outside the record [0, %g] s", fname, tsiv,
+           duration);
+  endif
+  dtupdate = opts.dtupdate;
+  if (isempty (dtupdate))
+    dtupdate = 0;                        # every sample
+  else
+    check_scalar (fname, dtupdate, "dtupdate");
+    if (d.uniform && dtupdate < d.Ts * (1 - 1e-9))
+      error ([fname ":badInput"], ...
+             ["%s: dtupdate (%g s) must not be below the sampling ", ...
+              "interval (%g s)"],
+             fname, dtupdate, d.Ts);
+    endif
+  endif
+  if (! ischar (opts.stability)
+      || ! any (strcmpi (opts.stability, {"keep", "reflect"})))
+    error ([fname ":badOption"], "%s: stability must be 'keep' or 'reflect'",
+           fname);
+  endif
+  if (! ischar (opts.prefilter)
+      || ! any (strcmpi (opts.prefilter, {"unit", "monic"})))
+    error ([fname ":badOption"], "%s: prefilter must be 'unit' or 'monic'",
+           fname);
+  endif
+  [m_num, m_den] = check_mtheta (fname, opts.mtheta);
+
+  c_num = []; c_den = []; r1 = []; r2 = [];
+  if (closed)
+    n = rows (d.y);
+    [c_num, c_den] = check_controller (fname, opts.controller, d);
+    if (isempty (opts.r1) && isempty (opts.r2))
+      error ([fname ":badOption"], ...
+             "%s: give the external signals r1 and/or r2 (the other is 0)",
+             fname);
+    endif
+    r1 = check_signal (fname, opts.r1, n, "r1");
+    r2 = check_signal (fname, opts.r2, n, "r2");
+    if (orders.nb > 0 && columns (d.u) != 1)
+      error ([fname ":badInput"], "%s: closed loop needs a single input",
+             fname);
+    endif
+  else
+    if (! isempty (opts.controller) || ! isempty (opts.r1)
+        || ! isempty (opts.r2))
+      error ([fname ":badOption"], ...
+             "%s: controller, r1 and r2 belong to the closed-loop routines",
+             fname);
+    endif
+  endif
+
+  p = struct ("d", d, "orders", orders, "perm", perm, "tsiv", tsiv);
+  p.tsiv_detector = tsiv_detector;
+  p.args = {d.y, d.u, t, d.intersample, na, orders.nb, orders.nk, ...
+            o.lambda_svf, o.svf, o.adm, adg, th0, P0, method, tsiv, ...
+            dtupdate, lower(opts.stability), m_num, m_den, ...
+            lower(opts.prefilter), A, c_num, c_den, r1, r2, o.scaling, ...
+            o.antiwindup, o.antiwindup_lambda};
+  p.precision = o.precision;
+endfunction
+
+function A = check_A (fname, A, na, allowed)
+  if (isempty (A))
+    A = [];
+    return;
+  endif
+  if (! allowed)
+    error ([fname ":badOption"], "%s: the option A belongs to rsrivc", fname);
+  endif
+  if (! isnumeric (A) || ! isreal (A) || ! isvector (A)
+      || any (! isfinite (A)))
+    error ([fname ":badInput"], "%s: A must be a finite real vector", fname);
+  endif
+  A = double (A(:).');
+  if (numel (A) == na + 1)
+    A = A(2:end) / A(1);
+  elseif (numel (A) != na)
+    error ([fname ":dimensionMismatch"], ...
+           "%s: A must be [1 a1 .. a_nf] (%d coefficients)", fname, na + 1);
+  endif
+  if (any (real (roots ([1 A])) >= 0))
+    error ([fname ":badInput"], "%s: A must be a stable polynomial", fname);
+  endif
+endfunction
+
+function [num, den] = check_mtheta (fname, m)
+  num = []; den = [];
+  if (isempty (m) || (ischar (m) && strcmpi (m, "delay")))
+    return;                              # default q^-1 in the core
+  endif
+  if (ischar (m) && strcmpi (m, "none"))
+    num = 1; den = 1;
+    return;
+  endif
+  if (isnumeric (m))
+    m = struct ("num", m, "den", 1);     # FIR
+  endif
+  if (! isstruct (m) || ! isscalar (m) || ! all (isfield (m, {"num", "den"})))
+    error ([fname ":badInput"], ...
+           ["%s: mtheta must be 'delay', 'none', FIR taps or a struct ", ...
+            "with num and den"],
+           fname);
+  endif
+  num = m.num; den = m.den;
+  if (! isnumeric (num) || ! isnumeric (den) || ! isreal (num)
+      || ! isreal (den) || isempty (num) || isempty (den)
+      || ! isvector (num) || ! isvector (den))
+    error ([fname ":badInput"], "%s: mtheta.num and .den must be real vectors",
+           fname);
+  endif
+  num = double (num(:).'); den = double (den(:).');
+endfunction
+
+function [num, den] = check_controller (fname, C, d)
+  if (isempty (C))
+    error ([fname ":badOption"], "%s: the controller is required", fname);
+  endif
+  Ts = NaN;
+  if (d.uniform)
+    Ts = d.Ts;
+  endif
+  [num, den] = contsid_controller (fname, C, Ts);
+endfunction
+
+function r = check_signal (fname, r, n, what)
+  if (isempty (r))
+    r = zeros (n, 1);
+    return;
+  endif
+  if (! isnumeric (r) || ! isreal (r) || ! isvector (r) || any (! isfinite (r)))
+    error ([fname ":badInput"], "%s: %s must be a finite real vector", fname,
+           what);
+  endif
+  if (numel (r) != n)
+    error ([fname ":dimensionMismatch"], ...
+           "%s: %s must have one value per sample (%d), got %d", fname, what,
+           n, numel (r));
+  endif
+  r = double (r(:));
+endfunction
+
+function check_scalar (fname, v, what)
+  if (! isnumeric (v) || ! isreal (v) || ! isscalar (v) || ! isfinite (v))
+    error ([fname ":badInput"], "%s: %s must be a finite real scalar", fname,
+           what);
+  endif
+endfunction

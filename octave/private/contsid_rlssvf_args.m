@@ -1,0 +1,59 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{p} =} contsid_rlssvf_args (@var{fname}, @dots{})
+## Argument preparation of rlssvf, shared with qnml: parses the data,
+## [na nb nk] and the options (messages start with @var{fname}) and returns
+## @var{p} with @code{args}, the 18 arguments of rlssvf_mex
+## (mex/estimator_args.hpp), @code{precision}, @code{d} and @code{orders}.
+## @end deftypefn
+
+function p = contsid_rlssvf_args (fname, varargin)
+  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
+                     "P0", [], "svf", "normalised", "potter", false,
+                     "Gamma", [], "scaling", [], "ic", false, "tsls", 0,
+                     "precision", "double");
+  [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
+                                             varargin{:});
+  o = contsid_recursive_options (fname, opts, orders.np);
+  o = contsid_ch3_options (fname, opts, orders, d, o);
+  o = extend_for_initial_conditions (o, orders);
+  if (d.uniform)
+    t = d.Ts;
+  else
+    t = d.t;
+  endif
+  adm = o.adm;
+  if (strcmp (adm, "lmr"))
+    adm = "ff";                          # the forgetting factor of eq. 3.82
+  endif
+  p = struct ("d", d, "orders", orders);
+  p.args = {d.y, d.u, t, d.intersample, orders.na, orders.nb, orders.nk, ...
+            o.lambda_svf, o.svf, adm, o.adg, o.th0, o.P0, o.form, o.Gamma, ...
+            o.scaling, double(o.ic), o.tsls};
+  p.precision = o.precision;
+endfunction
+
+## With initial conditions the core estimates [theta; c_1 .. c_na]: the
+## np-size options are extended (c_i: start 0, P0 1e4, Qn 0, no
+## regularisation, no scaling).
+function o = extend_for_initial_conditions (o, orders)
+  if (! o.ic)
+    return;
+  endif
+  na = orders.na;
+  if (strcmp (o.adm, "kf"))
+    o.adg = blkdiag (o.adg, zeros (na));
+  endif
+  if (! isempty (o.th0))
+    o.th0 = [o.th0; zeros(na, 1)];
+  endif
+  if (! isempty (o.P0))
+    o.P0 = blkdiag (o.P0, 1e4 * eye (na));
+  endif
+  if (! isempty (o.Gamma))
+    o.Gamma = blkdiag (o.Gamma, zeros (na));
+  endif
+  if (! isempty (o.scaling))
+    o.scaling = [o.scaling; ones(na, 1)];
+  endif
+endfunction
+
