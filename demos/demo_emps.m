@@ -159,9 +159,10 @@ endfunction
 function plot_segments (file, R, Ts)
   setup_figure ();
   f = figure ("visible", "off", "position", [0 0 900 600]);
-  passes = [1, numel (R.history)];
+  passes = [1, numel(R.history)];
   labels = {"linear model", "with the effects found"};
   style = {"bo-", "rs-"};
+  shown = {};
   for i = 1:2
     h = R.history(passes(i));
     k = find (strcmp ({h.ranking.effect}, "drift"), 1);
@@ -174,8 +175,12 @@ function plot_segments (file, R, Ts)
     plot (1:rows (th), 1 ./ b0, style{i});
     subplot (2, 1, 2); hold on;
     plot (1:rows (th), f1 ./ b0, style{i});
+    shown{end+1} = labels{i};
   endfor
-  subplot (2, 1, 1); ylabel ("mass 1/b_0 (kg)"); legend (labels);
+  subplot (2, 1, 1); ylabel ("mass 1/b_0 (kg)");
+  if (! isempty (shown))
+    legend (shown);
+  endif
   title ("SRIVC on segments of the estimation record");
   subplot (2, 1, 2); ylabel ("viscous f_1/b_0 (N s/m)"); xlabel ("segment");
   print (f, file, "-dpng");

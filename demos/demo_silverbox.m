@@ -25,7 +25,7 @@
 ## fig_silverbox_sim.png (measured vs simulated, an excerpt of the
 ## validation record, and the errors), fig_silverbox_resid.png (residual
 ## correlations before and after with 99 % bounds). @var{reduced} (default
-## false): 12 000 estimation and 6 000 validation samples, a single pass,
+## false): 8 000 estimation and 4 000 validation samples, a single pass,
 ## for the test suite.
 ## @end deftypefn
 
@@ -44,7 +44,7 @@ function R = demo_silverbox (outdir = "results", reduced = false)
   Ts = 2 ^ 14 / 1e7;
   Ne = 40000; iv = 40001:60000; iterate = 4;
   if (reduced)
-    Ne = 12000; iv = 40001:46000; iterate = 1;
+    Ne = 8000; iv = 40001:44000; iterate = 1;
   endif
 
   ## tracking the resonance along the growing input
@@ -166,7 +166,7 @@ function write_md (file, R, reduced, elapsed, Ne, wn, zeta, urms, info)
   fid = fopen (file, "w");
   fprintf (fid, "# Silverbox: tracking the resonance, tracing the residual\n\n");
   if (reduced)
-    fprintf (fid, "Reduced run (12 000 + 6 000 samples, one pass).\n\n");
+    fprintf (fid, "Reduced run (8 000 + 4 000 samples, one pass).\n\n");
   endif
   fprintf (fid, ["RSRIVC-KF, [1 2 0], time scaled by 450 rad/s, Qn = ", ...
                  "1e-6 I, over the first %d samples (%d estimates ", ...

@@ -6,8 +6,9 @@
 ## effect) with the validation RMSE and what kind of output it measures,
 ## the fit (%), the p-values of the residual's whiteness (Ljung-Box) and
 ## of its independence from the input; the ranking of the first pass with
-## each candidate's score, p-value and evidence; and the physical
-## parameters before and after. Written to @var{file} when given; printed
+## each candidate's score, p-value and evidence; a line for each further
+## pass (what it added, its best scores); and the physical parameters
+## before and after. Written to @var{file} when given; printed
 ## when no output is asked.
 ##
 ## @strong{Example}
@@ -60,6 +61,24 @@ function md = residtrace_table (R, file)
       endif
     endfor
   endif
+  if (isfield (R, "history") && numel (R.history) > 1)
+    L{end+1} = "";
+    for k = 2:numel (R.history)
+      h = R.history(k);
+      top = {};
+      for i = 1:min (3, numel (h.ranking))
+        r = h.ranking(i);
+        if (r.applicable)
+          top{end+1} = sprintf ("%s %.3g (p %.2g)", r.effect, r.score, r.p);
+        endif
+      endfor
+      L{end+1} = sprintf ("Pass %d: %s; best scores: %s.", k,
+                          ifelse_ (strcmp (h.effect, "none"),
+                                   "nothing significant",
+                                   ["added " h.effect]),
+                          strjoin (top, ", "));
+    endfor
+  endif
   L{end+1} = "";
   first = R.steps(1).params;
   last = R.steps(end).params;
@@ -96,6 +115,14 @@ function s = num (v, f)
     s = "-";
   else
     s = sprintf (f, v);
+  endif
+endfunction
+
+function s = ifelse_ (c, a, b)
+  if (c)
+    s = a;
+  else
+    s = b;
   endif
 endfunction
 

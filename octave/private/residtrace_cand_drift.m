@@ -11,13 +11,18 @@
 ## freedom; the trend of each parameter over the segments is given with
 ## its t value.
 ##
-## The drifting model is the recursive IV estimator with a Kalman filter
-## (thesis eq. 2.29, @code{residtrace_track}), random-walk parameters with
-## a diagonal Qn. Qn's shape comes from the segment spread (increments of
+## The drifting model has random-walk parameters with a diagonal Qn,
+## tracked by the recursive IV estimator with a Kalman filter (thesis eq.
+## 2.29). For a single-input model with all of F free and no output terms
+## that is @code{rsrivc}, with Qn by maximum likelihood (@code{qnml},
+## thesis sec. 3.3) started from the segment spread (increments of
 ## consecutive segments beyond their estimation variance, per sample, as
-## a random walk averaged over a segment would give), its scale by
-## maximum likelihood of the innovations on the estimation record (thesis
-## sec. 3.3; a grid of scales 10^(-2..2)). Its validation output is the
+## a random walk averaged over a segment would give) within 1e-4 .. 1e4
+## times it. For other models (more channels, fixed coefficients, output
+## terms) it is @code{residtrace_track}, the same update with the
+## prefilter and auxiliary model frozen at the current model, Qn the
+## segment shape scaled by maximum likelihood of its innovations on a
+## grid 10^(-2..2). Its validation output is the
 ## simulation of the model with the parameters tracked on the validation
 ## record, each sample using only the estimates of earlier samples, the
 ## tracker started where it ended on the estimation record.
@@ -87,6 +92,31 @@ function c = residtrace_cand_drift (cur, ctx)
   endfor
   shape = max (vinc, 1e-3 * diag (cur.cov).') / (2 * L / 3) / cur.s2;
   P0 = cur.cov / cur.s2;
+  if (plain_model (cur))
+    ltv = with_rsrivc (cur, D, ctx, shape, P0);
+    if (! isempty (ltv))
+      c.applicable = true;
+      c.model = cur;
+      c.model.ltv = ltv;
+      c.variant = sprintf ("RSRIVC-KF, Qn = diag(%s) (qnml)",
+                           mat2str (diag (ltv.Qn).', 2));
+      c.nadd = np;
+      [~, imax] = max (abs (tval));
+      c.evidence = struct ("term", "segment chi^2", "value", chi2,
+                           "std", NaN, "dof", dof, "p", pchi,
+                           "segments", Kk, "theta_segments", th,
+                           "slope", slope, "tval", tval,
+                           "Qn", diag (ltv.Qn).', "ml_scale", NaN,
+                           "text", sprintf (["segment fits (K = %d): ", ...
+                                             "chi^2 = %.1f on %d dof, ", ...
+                                             "p = %.2g; strongest trend: ", ...
+                                             "parameter %d, t = %.1f; Qn ", ...
+                                             "by qnml"],
+                                            Kk, chi2, dof, pchi, imax,
+                                            tval(imax)));
+      return;
+    endif
+  endif
   best = [];
   for s = 10 .^ (-2:2)
     Qn = diag (s * shape);
@@ -101,8 +131,8 @@ function c = residtrace_cand_drift (cur, ctx)
   endif
   c.applicable = true;
   c.model = cur;
-  c.model.ltv = struct ("Qn", best.Qn, "th0", best.th, "P0", best.P,
-                        "scale", best.s);
+  c.model.ltv = struct ("method", "kfiv", "Qn", best.Qn, "th0", best.th,
+                        "P0", best.P, "scale", best.s);
   c.variant = sprintf ("KF-IV, Qn = diag(%s)", mat2str (diag (best.Qn).', 2));
   c.nadd = np;
   [~, imax] = max (abs (tval));
@@ -116,6 +146,48 @@ function c = residtrace_cand_drift (cur, ctx)
                                          "t = %.1f; ML Qn scale %g"],
                                         Kk, chi2, dof, pchi, imax,
                                         tval(imax), best.s));
+endfunction
+
+## One input channel, F all free, no output terms: the model rsrivc
+## estimates.
+function ok = plain_model (m)
+  ok = (numel (m.channels) == 1 && strcmp (m.channels.type, "input")
+        && ! any (m.fixed) && isempty (m.out));
+endfunction
+
+## Qn by qnml (thesis sec. 3.3) for RSRIVC-KF started at the model, its
+## shape from the segments (rescaled to RSRIVC's unit-gain prefilter, whose
+## equation error is f_n e), bounds 1e-4 .. 1e4 times it; then RSRIVC over
+## the estimation record gives the estimate and P to continue from.
+function ltv = with_rsrivc (cur, D, ctx, shape, P0)
+  ltv = [];
+  ch = cur.channels;
+  nb = ch.nb; nf = numel (cur.F) - 1;
+  perm = [nf+1:nf+nb, 1:nf];          # [f b] -> rsrivc's [b f]
+  fn = residtrace_prefilter (cur.F, ctx.wlo)(end);
+  q0 = max (shape(perm) / fn ^ 2, realmin * 1e10);
+  th0 = cur.theta(perm).';
+  P0 = P0(perm, perm) / fn ^ 2;
+  P0 = (P0 + P0.') / 2;
+  A = residtrace_prefilter (cur.F, ctx.wlo);
+  data = iddata (D.y, D.u(:, ch.col), D.Ts, "InterSample", D.intersample);
+  nn = [nb nf ch.nk];
+  ropts = {"A", A, "th0", th0, "P0", P0, "tsiv", 0};
+  try
+    Qn = qnml (data, nn, "method", "rsrivc", ropts{:}, "q0", q0,
+               "lb", q0 * 1e-4, "ub", q0 * 1e4, "maxeval", 80);
+    [thm, ~, pset] = rsrivc (data, nn, ropts{:}, "adm", "kf", "adg", Qn);
+  catch
+    return;
+  end_try_catch
+  if (any (! isfinite (thm(:))))
+    return;
+  endif
+  Pend = pset(:, :, end);
+  Pend = (Pend + Pend.') / 2;        # the IV update leaves P unsymmetric
+  ltv = struct ("method", "rsrivc", "Qn", Qn, "nn", nn, "perm", perm,
+                "th0", thm(end, :), "P0", Pend,
+                "th_start", th0, "P_start", P0, "scale", NaN);
 endfunction
 
 function Dk = slice (D, idx)

@@ -11,7 +11,8 @@
 ## @item The model is simulated on V's input (in closed loop when V has a
 ## @code{loop}), see @code{residtrace_simulate}.
 ## @item A drifting model (@code{model.ltv}) is simulated with the
-## parameters tracked on V by @code{residtrace_track}, one sample behind.
+## parameters tracked on V by @code{rsrivc} or @code{residtrace_track}
+## (see @code{residtrace_cand_drift}), one sample behind.
 ## @item Sinusoidal output terms keep their frequencies; their amplitudes
 ## and phases, unknown on another record, are fitted on each half of the
 ## residual and applied to the other half (two-fold cross-fitting).
@@ -37,7 +38,10 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
     Vf.vhat = [V.pre.vhat; V.vhat];
     Vf.ysm = [V.pre.ysm; V.ysm];
   endif
-  if (! isempty (m.ltv))
+  if (! isempty (m.ltv) && strcmp (m.ltv.method, "rsrivc"))
+    thm = track_rsrivc (m, Vf, npre);
+    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps, thm);
+  elseif (! isempty (m.ltv))
     thm = residtrace_track (m, Vf, ctx, m.ltv.Qn, m.ltv.th0, m.ltv.P0,
                             npre + 1);
     yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps, thm);
@@ -62,4 +66,25 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
     yh += e - p;
     e = p;
   endif
+endfunction
+
+## RSRIVC-KF on the record (from the start of a split record, or from
+## where it ended on the estimation record), one sample behind, in the
+## [f b] order of the model.
+function thm = track_rsrivc (m, Vf, npre)
+  L = m.ltv;
+  if (npre > 0)
+    th0 = L.th_start; P0 = L.P_start;
+  else
+    th0 = L.th0; P0 = L.P0;
+  endif
+  nf = numel (m.F) - 1;
+  Fs = residtrace_prefilter ([1, th0(end-nf+1:end)], 1e-6);
+  data = iddata (Vf.y, Vf.u(:, m.channels.col), Vf.Ts,
+                 "InterSample", Vf.intersample);
+  t = rsrivc (data, L.nn, "A", Fs, "th0", th0, "P0", P0, "tsiv", 0,
+              "adm", "kf", "adg", L.Qn);
+  t = [th0(:).'; t(1:end-1, :)];
+  thm = zeros (size (t));
+  thm(:, L.perm) = t;                # back to [f b]
 endfunction
