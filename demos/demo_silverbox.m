@@ -11,8 +11,9 @@
 ## the parameters are of order one and the recursion well conditioned, as
 ## the thesis' chapter 3 scaling; unscaled, f2 is about 2e5 and RSRIVC's
 ## estimates leave the stable region at every step). Started from the
-## SRIVC estimate of the same samples, Qn = 1e-6 I (scaled units), P0 =
-## 1e-2 I, IV from the first sample. The figure shows the natural
+## SRIVC estimate of the same samples, P0 = 1e-2 I (scaled units), IV
+## from the first sample, Qn by maximum likelihood (@code{qnml}, thesis
+## sec. 3.3, between 1e-10 and 1e-2). The figure shows the natural
 ## frequency w0 sqrt(f2(t)) and the damping against the input's RMS.
 ##
 ## @strong{Tracing.} The LTI model is SRIVC [1 2 0] on the same 40 000
@@ -52,9 +53,11 @@ function R = demo_silverbox (outdir = "results", reduced = false)
   ds = iddata (y(1:Ne), u(1:Ne), Ts * w0, "InterSample", "zoh");
   Ms = srivc (ds, [1 2 0]);
   th0 = [Ms.B, Ms.F(2:3)];
-  [thm, ~, ~, info] = rsrivc (ds, [1 2 0], "A", Ms.F, "adm", "kf",
-                              "adg", 1e-6 * eye (3), "th0", th0,
-                              "P0", 1e-2 * eye (3), "tsiv", 0);
+  ropts = {"A", Ms.F, "th0", th0, "P0", 1e-2 * eye(3), "tsiv", 0};
+  [Qn, ~, qinfo] = qnml (ds, [1 2 0], "method", "rsrivc", ropts{:},
+                         "q0", 1e-6, "lb", 1e-10, "ub", 1e-2);
+  [thm, ~, ~, info] = rsrivc (ds, [1 2 0], ropts{:}, "adm", "kf",
+                              "adg", Qn);
   wn = w0 * sqrt (max (thm(:, 3), 0));
   zeta = thm(:, 2) ./ (2 * sqrt (max (thm(:, 3), eps)));
   urms = sqrt (movmean_ (u(1:Ne) .^ 2, 2001));
@@ -71,13 +74,13 @@ function R = demo_silverbox (outdir = "results", reduced = false)
               urms);
   plot_sim (fullfile (outdir, "fig_silverbox_sim.png"), Ts, R.sim);
   plot_corr (fullfile (outdir, "fig_silverbox_resid.png"), R);
-  k = round ([0.05 0.5 0.95] * Ne);
+  k = round ([0.05 0.25 0.5 0.75 0.95] * Ne);
   write_md (fullfile (outdir, "silverbox.md"), R, reduced, elapsed, Ne,
-            wn(k), zeta(k), urms(k), info);
+            wn(k), zeta(k), urms(k), info, diag (Qn), qinfo);
   printf ("Silverbox: resonance %.1f -> %.1f rad/s as the input RMS grows ",
-          wn(k(1)), wn(k(3)));
+          wn(k(1)), wn(k(end)));
   printf ("%.3g -> %.3g; residtrace: %s; RMSE %.3g -> %.3g (final %.3g)\n",
-          urms(k(1)), urms(k(3)), strjoin (R.effects, ", "), R.rmse_before,
+          urms(k(1)), urms(k(end)), strjoin (R.effects, ", "), R.rmse_before,
           R.rmse_after, R.rmse_final);
 endfunction
 
@@ -162,20 +165,23 @@ function plot_corr (file, R)
   close (f);
 endfunction
 
-function write_md (file, R, reduced, elapsed, Ne, wn, zeta, urms, info)
+function write_md (file, R, reduced, elapsed, Ne, wn, zeta, urms, info, q,
+                   qinfo)
   fid = fopen (file, "w");
   fprintf (fid, "# Silverbox: tracking the resonance, tracing the residual\n\n");
   if (reduced)
     fprintf (fid, "Reduced run (8 000 + 4 000 samples, one pass).\n\n");
   endif
-  fprintf (fid, ["RSRIVC-KF, [1 2 0], time scaled by 450 rad/s, Qn = ", ...
-                 "1e-6 I, over the first %d samples (%d estimates ", ...
-                 "refused by the stability test):\n\n"], Ne,
-           info.stability_rejections);
+  fprintf (fid, ["RSRIVC-KF, [1 2 0], time scaled by 450 rad/s, over ", ...
+                 "the first %d samples; Qn = diag(%s) by qnml (%d cost ", ...
+                 "evaluations); %d estimates refused by the stability ", ...
+                 "test. Input RMS over 2001 samples around each ", ...
+                 "instant:\n\n"], Ne, sprintf ("%.3g ", q)(1:end-1),
+           qinfo.evaluations, info.stability_rejections);
   fprintf (fid, "| at | input RMS (V) | w_n (rad/s) | damping |\n");
   fprintf (fid, "|---|---|---|---|\n");
-  at = {"5 %", "50 %", "95 %"};
-  for i = 1:3
+  at = {"5 %", "25 %", "50 %", "75 %", "95 %"};
+  for i = 1:numel (at)
     fprintf (fid, "| %s of the record | %.4f | %.1f | %.4f |\n", at{i},
              urms(i), wn(i), zeta(i));
   endfor

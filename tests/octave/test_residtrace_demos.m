@@ -17,7 +17,7 @@ function test_residtrace_demos ()
   out = tempname ();
   unwind_protect
     R = demo_emps (out, true);
-    for f = {"emps.md", "fig_emps_sim.png", "fig_emps_resid.png",
+    for f = {"emps.md", "fig_emps_sim.png", "fig_emps_resid.png", ...
              "fig_emps_segments.png"}
       assert (exist (fullfile (out, f{1}), "file") == 2);
     endfor
@@ -30,7 +30,7 @@ function test_residtrace_demos ()
     assert (! isempty (strfind (md, "| + coulomb")));
 
     R = demo_silverbox (out, true);
-    for f = {"silverbox.md", "fig_silverbox_track.png",
+    for f = {"silverbox.md", "fig_silverbox_track.png", ...
              "fig_silverbox_sim.png", "fig_silverbox_resid.png"}
       assert (exist (fullfile (out, f{1}), "file") == 2);
     endfor
