@@ -201,7 +201,8 @@ function write_md (file, R, idim, elapsed, reduced)
   fprintf (fid, ["Independent cross-check, inverse-dynamic least squares ", ...
                  "on the estimation record (u = m a + c v + Fc sign(v) + ", ...
                  "f0, derivatives of qm smoothed at 20 Hz):\n\n"]);
-  fprintf (fid, "| m (kg) | c (N s/m) | Fc (N) | f0 (N) |\n|---|---|---|---|\n");
+  fprintf (fid, "| m (kg) | c (N s/m) | Fc (N) | f0 (N) |\n");
+  fprintf (fid, "|---|---|---|---|\n");
   fprintf (fid, "| %.4g | %.4g | %.4g | %.4g |\n", idim);
   fclose (fid);
 endfunction

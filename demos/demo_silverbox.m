@@ -106,7 +106,8 @@ function plot_track (file, Ts, wn, zeta, urms)
   subplot (3, 1, 1);
   plot (t(k), wn(k), "r");
   ylabel ("w_n (rad/s)");
-  title ("Silverbox: RSRIVC-KF tracking of the resonance (first 40 000 samples)");
+  title (["Silverbox: RSRIVC-KF tracking of the resonance ", ...
+          "(first 40 000 samples)"]);
   subplot (3, 1, 2);
   plot (t(k), zeta(k), "r");
   ylabel ("damping ratio");
@@ -168,7 +169,8 @@ endfunction
 function write_md (file, R, reduced, elapsed, Ne, wn, zeta, urms, info, q,
                    qinfo)
   fid = fopen (file, "w");
-  fprintf (fid, "# Silverbox: tracking the resonance, tracing the residual\n\n");
+  fprintf (fid, ["# Silverbox: tracking the resonance, tracing the ", ...
+                 "residual\n\n"]);
   if (reduced)
     fprintf (fid, "Reduced run (8 000 + 4 000 samples, one pass).\n\n");
   endif

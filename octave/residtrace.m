@@ -131,7 +131,8 @@
 ## the top-ranked effect of the first pass, or 'none'.
 ## @item ranking
 ## struct array of the first pass, best first: effect, score, p, stat
-## (the correlation test's p-value and z), p_dm, significant, variant, nadd (added parameters), rmse (validation),
+## (the correlation test's p-value and z), p_dm, significant, variant,
+## nadd (added parameters), rmse (validation),
 ## kind, applicable, reason, evidence.
 ## @item rmse_before, rmse_after
 ## validation RMSE of the simulated output of M as given and of the model

@@ -32,7 +32,8 @@ function md = residtrace_table (R, file)
     L{end+1} = sprintf ("Cannot test: %s.", R.reason);
   endif
   L{end+1} = "";
-  L{end+1} = "| model | validation RMSE | of | fit (%) | whiteness p | independence p |";
+  L{end+1} = ["| model | validation RMSE | of | fit (%) | whiteness p ", ...
+              "| independence p |"];
   L{end+1} = "|---|---|---|---|---|---|";
   for k = 1:numel (R.steps)
     s = R.steps(k);
@@ -42,7 +43,8 @@ function md = residtrace_table (R, file)
   endfor
   if (! isempty (R.ranking))
     L{end+1} = "";
-    L{end+1} = "| candidate (first pass) | score | p | significant | variant | evidence |";
+    L{end+1} = ["| candidate (first pass) | score | p | significant ", ...
+                "| variant | evidence |"];
     L{end+1} = "|---|---|---|---|---|---|";
     for k = 1:numel (R.ranking)
       r = R.ranking(k);

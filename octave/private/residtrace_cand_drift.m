@@ -36,8 +36,8 @@ function c = residtrace_cand_drift (cur, ctx)
   np = numel (cur.theta);
   K = min (8, floor (N / (40 * max (np, 1))));
   if (K < 3)
-    c.reason = sprintf ("%d samples are too few for segment fits of %d parameters",
-                        N, np);
+    c.reason = sprintf (["%d samples are too few for segment fits ", ...
+                         "of %d parameters"], N, np);
     return;
   endif
   L = floor (N / K);

@@ -68,7 +68,8 @@ function c = residtrace_cand_order (cur, ctx)
   z = roots (m.channels(1).B);
   c.evidence = struct ("term", "poles", "value", p, "std", NaN,
                        "zeros", z, "bic_drop", cur.bic - m.bic,
-                       "text", sprintf ("%s: poles %s, zeros %s; BIC %.1f lower",
+                       "text", sprintf (["%s: poles %s, zeros %s; ", ...
+                                         "BIC %.1f lower"],
                                         c.variant, num2str (p.', 4),
                                         num2str (z.', 4), cur.bic - m.bic));
 endfunction

@@ -79,9 +79,9 @@ function c = residtrace_cand_static (cur, ctx)
                                            sprintf ("y^%d", p));
     endfor
     tmpls{end+1} = t; starts{end+1} = {cur.F};
+    pws = arrayfun (@num2str, pw{k}, "UniformOutput", false);
     names{end+1} = sprintf ("output in the dynamics: y^%s",
-                            strjoin (arrayfun (@num2str, pw{k},
-                                               "UniformOutput", false), ", y^"));
+                            strjoin (pws, ", y^"));
   endfor
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))

@@ -79,7 +79,8 @@ endfunction
 function [lhs, Phi, Z] = regression (model, D, ctx)
   o = 0;
   if (! isempty (model.out))
-    [ys, xs] = residtrace_simulate (model, D.u, D.Ts, D.loop, ctx.opts.substeps);
+    [ys, xs] = residtrace_simulate (model, D.u, D.Ts, D.loop,
+                                    ctx.opts.substeps);
     o = ys - xs;
   endif
   ch = residtrace_chdata (model, D);

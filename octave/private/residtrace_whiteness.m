@@ -14,7 +14,8 @@
 ##
 ## @var{w}: @code{testable} (false with @code{reason} when e is not
 ## finite, or constant, or below 1e-10 @var{yscale} (the output's RMS):
-## a model exact to rounding leaves nothing to test), @code{white_p}, @code{indep_p}, @code{autocorr} (lags
+## a model exact to rounding leaves nothing to test), @code{white_p},
+## @code{indep_p}, @code{autocorr} (lags
 ## 0..m), @code{xcorr} (lags -m..m, prewhitened, one column per input),
 ## @code{bound}.
 ## @end deftypefn

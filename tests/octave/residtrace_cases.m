@@ -181,7 +181,8 @@ function c = case_delay (set)
   endif
   Gd = idctm (G.B, G.F, "nk", nk);
   u = input_signal (typ, N, Ts, bw); uv = input_signal (typ, N, Ts, bw);
-  y = add_noise (simc (Gd, u, Ts), snr); yv = add_noise (simc (Gd, uv, Ts), snr);
+  y = add_noise (simc (Gd, u, Ts), snr);
+  yv = add_noise (simc (Gd, uv, Ts), snr);
   M = srivc (rec (y, u, Ts), [numel(G.B) numel(G.F)-1 0]);
   c = pack (y, u, yv, uv, Ts, M, sprintf ("input delay of %d samples", nk),
             struct ("nk", nk));

@@ -56,7 +56,8 @@ function msg = check_evidence (c, R)
         msg = sprintf ("Coulomb level %.4g, true %.4g", ev.physical, t.coulomb);
       endif
     case "viscous"
-      if (abs (ev.physical - t.viscous) > 5 * ev.physical_std + 0.02 * t.viscous)
+      tol = 5 * ev.physical_std + 0.02 * t.viscous;
+      if (abs (ev.physical - t.viscous) > tol)
         msg = sprintf ("viscous %.4g, true %.4g", ev.physical, t.viscous);
       endif
     case "delay"
