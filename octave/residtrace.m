@@ -215,7 +215,6 @@ function R = residtrace (varargin)
            "residtrace: the data must be uniformly sampled");
   endif
   Mst = struct (M);
-  nbM = numel (Mst.B);
   if (iscell (Mst.B))
     nbM = numel (Mst.B);
   else
@@ -240,7 +239,6 @@ function R = residtrace (varargin)
 
   ## Context shared by the candidates.
   base = residtrace_base (M, d);
-  Fp = residtrace_prefilter (Mst.F, 1);
   rts = roots (Mst.F);
   nz = abs (rts(abs (rts) > 1e-9 * max ([abs(rts); 1])));
   T = (numel (D.y) - 1) * D.Ts;
