@@ -73,7 +73,8 @@
 ## validation output goes first unless the other explains more than twice
 ## as much. One that adds fewer parameters moves ahead of a candidate of
 ## the same kind above it unless that one's extra correction is
-## significant in the same test (parsimony). The
+## significant by the same rules (p < alpha and a share >= minscore of
+## what the simpler one leaves) (parsimony). The
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
 ## (thesis eqs. 2.8-2.13) with the added regressors; the model as given
@@ -488,8 +489,13 @@ function r = rank_rows (r, e0, opts)
     changed = false;
     for a = 1:numel (sig) - 1
       i = sig(a); j = sig(a+1);
-      if (r(j).nadd < r(i).nadd && strcmp (r(i).kind, r(j).kind)
-          && residtrace_dmtest (r(j).e1, r(i).e1).p_corr >= opts.alpha)
+      if (r(j).nadd < r(i).nadd && strcmp (r(i).kind, r(j).kind))
+        t = residtrace_dmtest (r(j).e1, r(i).e1);
+        better = t.p_corr < opts.alpha && t.score >= opts.minscore;
+      else
+        better = true;
+      endif
+      if (! better)
         r([i j]) = r([j i]);
         changed = true;
       endif

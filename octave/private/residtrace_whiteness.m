@@ -4,11 +4,12 @@
 ## of the inputs @var{u} (N-by-nu)?
 ##
 ## Whiteness: the Ljung-Box statistic Q = N (N + 2) sum_(k=1..m) r_k^2 /
-## (N - k) against chi^2(m). Independence: each input is prewhitened by
-## an AR model (order <= 10 by BIC) and e filtered by the same A(q), so
-## that the cross-correlations r_eu(k), k = -m..m, have variance 1/N
-## under independence whatever the colour of e; S = N sum r_eu(k)^2
-## against chi^2(2m + 1) (approximate when e is coloured). Also the
+## (N - k) against chi^2(m). Independence: Haugh's test (J. Am. Stat.
+## Assoc. 71 (1976) 378-385): e and each input are prewhitened by AR
+## models of their own (orders <= 20 and <= 10 by BIC), so that under
+## independence the cross-correlations r_eu(k), k = -m..m, of the two
+## white series are independent with variance 1/N whatever the colour of
+## e; S = N sum r_eu(k)^2 against chi^2(2m + 1). Also the
 ## CONTSID-style figures of @code{residc}: the normalised correlations
 ## and the 99 % bound 2.576/sqrt(N).
 ##
@@ -16,7 +17,8 @@
 ## finite, or constant, or below 1e-10 @var{yscale} (the output's RMS):
 ## a model exact to rounding leaves nothing to test), @code{white_p},
 ## @code{indep_p}, @code{autocorr} (lags
-## 0..m), @code{xcorr} (lags -m..m, prewhitened, one column per input),
+## 0..m), @code{xcorr} (lags -m..m, both prewhitened, one column per
+## input),
 ## @code{bound}.
 ## @end deftypefn
 
@@ -56,6 +58,7 @@ function w = residtrace_whiteness (e, u, maxlag, yscale)
   nu = columns (u);
   w.xcorr = zeros (2 * m + 1, nu);
   S = 0;
+  ew = filter (ar_whitener (ec, min (20, floor (N / 20))), 1, ec);
   for j = 1:nu
     uc = u(:, j) - mean (u(:, j));
     if (all (uc == 0))
@@ -63,7 +66,6 @@ function w = residtrace_whiteness (e, u, maxlag, yscale)
     endif
     a = ar_whitener (uc, min (10, floor (N / 20)));
     uw = filter (a, 1, uc);
-    ew = filter (a, 1, ec);
     scale = sqrt (sum (uw .^ 2) * sum (ew .^ 2));
     for i = 1:2*m+1
       k = i - m - 1;               # e(t) against u(t - k)
