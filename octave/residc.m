@@ -22,9 +22,10 @@
 ## true when no autocorrelation at lags 1..m, respectively no
 ## cross-correlation, lies outside the bound.
 ## @item testable
-## false (with @code{reason}) when the residual is identically zero, so
-## that no correlation can be formed; then @code{white} and
-## @code{independent} are true.
+## false (with @code{reason}) when the residual is constant or zero to
+## rounding (below 1e-10 times the output's RMS), so that no correlation
+## means anything; then @code{white} and @code{independent} are true. (A
+## model whose output diverges is an error, residc:numericalFailure.)
 ## @end table
 ## Without outputs it plots both correlations with their bounds.
 ## Option @code{"maxlag"}: the largest lag m (default 25; N must exceed it).
@@ -59,13 +60,14 @@ function R = residc (varargin)
   out.bound = 2.576 / sqrt (N);
   nu = columns (d.u);
   ec = e - mean (e);
-  if (all (ec == 0))
+  if (all (ec == 0)
+          || sqrt (mean (e .^ 2)) <= 1e-10 * sqrt (mean (d.y .^ 2)))
     out.autocorr = [1; zeros(m, 1)];
     out.xcorr = zeros (2 * m + 1, nu);
     out.white = true;
     out.independent = true;
     out.testable = false;
-    out.reason = "the residual is constant (zero variance)";
+    out.reason = "the residual is constant or zero to rounding";
   else
     out.autocorr = zeros (m + 1, 1);
     for k = 0:m
@@ -144,6 +146,12 @@ endfunction
 %!test  # a perfect model: cannot test, reported
 %! R = residc (iddata (x, u, Ts), M);
 %! assert (! R.testable);
+
+%!test  # exact to rounding: cannot test either
+%! R = residc (iddata (x, u, Ts), idctm (4 * (1 + 1e-14), [1 2.4 4]));
+%! assert (! R.testable);
+
+%!error id=residc:numericalFailure residc (iddata (x, u, Ts), idctm (4, [1 -30 4]))
 
 %!error id=residc:badInput residc (iddata (x, u, Ts), M, "maxlag", 0)
 %!error id=residc:badInput residc (iddata (x(1:10), u(1:10), Ts), M, "maxlag", 20)

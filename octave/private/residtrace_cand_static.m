@@ -1,0 +1,163 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{c} =} residtrace_cand_static (@var{cur}, @var{ctx})
+## Static-nonlinearity candidate of @code{residtrace}. Variants:
+## @itemize
+## @item on an input (Hammerstein): extra channels u^2, u^3 or both, or
+## the input clipped to +-c (with the input's own channel this is a
+## saturation or a dead zone; c at the 30, 50, 70, 85 and 95 %
+## quantiles of |u|), each channel with as many numerator coefficients as
+## the input's own; the best level is then refined between its grid
+## neighbours by a golden-section search of the BIC. Not with an input of
+## two levels only, through which
+## every static map is affine.
+## @item on the output (Wiener): y = x + c2 x^2 + c3 x^3 with x the model
+## output, by alternation with SRIVC.
+## @item of the output inside the dynamics (a nonlinear spring, Duffing):
+## the regressors y^3, or y^2 and y^3, entering like the input (gain b/F),
+## y the measured output (its noise biases the coefficients towards
+## zero, as errors in variables do); simulated with the model's own
+## output.
+## @end itemize
+## The variant with the smallest BIC on the estimation data is kept.
+## Evidence: the fitted coefficients with their standard deviations and
+## the size of the nonlinear part (its RMS over that of the model output).
+## @end deftypefn
+
+function c = residtrace_cand_static (cur, ctx)
+  c = residtrace_cand ("static_nonlinearity");
+  types = {cur.channels.type};
+  if (any (strcmp (types, "power")) || any (strcmp (types, "clip"))
+      || any (strcmp ({cur.out.type}, "poly")))
+    c.reason = "the model has a static nonlinearity already";
+    return;
+  endif
+  ins = find (strcmp (types, "input"));
+  tmpls = {}; names = {}; starts = {}; why = "";
+  for j = ins
+    col = cur.channels(j).col;
+    u = ctx.D.u(:, col);
+    if (numel (unique (round (u / (max (abs (u)) * 1e-9 + eps)))) <= 2)
+      why = "two-level input: an input nonlinearity is not identifiable; ";
+      continue;
+    endif
+    nb = cur.channels(j).nb;
+    nm = cur.channels(j).name;
+    pw = {[2], [3], [2 3]};
+    for k = 1:numel (pw)
+      t = cur;
+      for p = pw{k}
+        t.channels(end+1) = residtrace_chan ("power", col, p, nb, 0,
+                                             sprintf ("%s^%d", nm, p));
+        t.channels(end).nk = cur.channels(j).nk;
+      endfor
+      tmpls{end+1} = t; starts{end+1} = {cur.F};
+      names{end+1} = sprintf ("%s: powers %s", nm, mat2str (pw{k}));
+    endfor
+    for q = [0.3 0.5 0.7 0.85 0.95]
+      lev = quantile_ (abs (u), q);
+      if (! (lev > 0))
+        continue;
+      endif
+      t = cur;
+      t.channels(end+1) = residtrace_chan ("clip", col, lev, nb,
+                                           cur.channels(j).nk,
+                                           sprintf ("clip(%s, %.3g)", nm, lev));
+      tmpls{end+1} = t; starts{end+1} = {cur.F};
+      names{end+1} = sprintf ("%s clipped at +-%.4g", nm, lev);
+    endfor
+  endfor
+  t = cur;
+  t.out(end+1) = struct ("type", "poly", "c", [0 0], "cstd", [0 0],
+                         "omega", 0);
+  tmpls{end+1} = t; starts{end+1} = {cur.F};
+  names{end+1} = "output: c2 x^2 + c3 x^3";
+  pw = {[3], [2 3]};
+  for k = 1:numel (pw)
+    t = cur;
+    for p = pw{k}
+      t.channels(end+1) = residtrace_chan ("ypower", 0, p, 1, 0,
+                                           sprintf ("y^%d", p));
+    endfor
+    tmpls{end+1} = t; starts{end+1} = {cur.F};
+    pws = arrayfun (@num2str, pw{k}, "UniformOutput", false);
+    names{end+1} = sprintf ("output in the dynamics: y^%s",
+                            strjoin (pws, ", y^"));
+  endfor
+  [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
+  if (isempty (m))
+    c.reason = [why "the estimation failed"];
+    return;
+  endif
+  if (strcmp (m.channels(end).type, "clip"))
+    m = refine_clip (m, cur, ctx);
+  endif
+  c.applicable = true;
+  c.model = m;
+  c.variant = m.variant_;
+  c.nadd = m.np - cur.np;
+  if (strncmp (c.variant, "output:", 7))
+    o = m.out(end);
+    c.evidence = struct ("term", "c2, c3", "value", o.c, "std", o.cstd,
+                         "text", sprintf (["output polynomial c2 = %.4g ", ...
+                                           "+- %.2g, c3 = %.4g +- %.2g"],
+                                          o.c(1), o.cstd(1), o.c(2),
+                                          o.cstd(2)));
+  else
+    nadd = c.nadd;
+    val = m.theta(end-nadd+1:end);
+    sd = sqrt (diag (m.cov))(end-nadd+1:end);
+    c.evidence = struct ("term", "numerators of the nonlinear channels",
+                         "value", val(:).', "std", sd(:).',
+                         "text", sprintf ("%s: coefficients %s +- %s",
+                                          c.variant, mat2str (val(:).', 4),
+                                          mat2str (sd(:).', 2)));
+  endif
+endfunction
+
+## The clipping level between the neighbouring quantiles of the grid:
+## golden-section search of the BIC on the estimation data.
+function best = refine_clip (best, cur, ctx)
+  col = best.channels(end).col;
+  a = abs (ctx.D.u(:, col));
+  qs = [0.2 0.3 0.5 0.7 0.85 0.95 0.99];
+  lev = arrayfun (@(q) quantile_ (a, q), qs);
+  [~, i] = min (abs (lev - best.channels(end).param));
+  lo = lev(max (i - 1, 1)); hi = lev(min (i + 1, numel (lev)));
+  g = (sqrt (5) - 1) / 2;
+  fit = @(L) fit_level (L, best, cur, ctx);
+  x1 = hi - g * (hi - lo); x2 = lo + g * (hi - lo);
+  m1 = fit (x1); m2 = fit (x2);
+  for it = 1:8
+    if (m1.bic < m2.bic)
+      hi = x2; x2 = x1; m2 = m1;
+      x1 = hi - g * (hi - lo); m1 = fit (x1);
+    else
+      lo = x1; x1 = x2; m1 = m2;
+      x2 = lo + g * (hi - lo); m2 = fit (x2);
+    endif
+  endfor
+  for m = {m1, m2}
+    if (m{1}.ok && m{1}.bic < best.bic)
+      v = best.variant_;
+      best = m{1};
+      best.variant_ = regexprep (v, '\+-\S+$',
+                                 sprintf ("+-%.4g", best.channels(end).param));
+    endif
+  endfor
+endfunction
+
+function m = fit_level (L, tmpl, cur, ctx)
+  t = tmpl;
+  t.channels(end).param = L;
+  t.channels(end).name = sprintf ("clip(%s, %.3g)",
+                                  cur.channels(t.channels(end).col).name, L);
+  m = residtrace_fit (t, ctx.D, ctx, {cur.F});
+  if (! m.ok)
+    m.bic = Inf;
+  endif
+endfunction
+
+function q = quantile_ (x, p)
+  x = sort (x(:));
+  q = x(max (1, min (numel (x), round (p * numel (x)))));
+endfunction

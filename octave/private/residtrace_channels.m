@@ -1,0 +1,49 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{W} =} residtrace_channels (@var{chans}, @var{u}, @var{v}, @var{y})
+## The signals that drive the channels of a @code{residtrace} model, one
+## column per channel, from the inputs @var{u} (N-by-nu), a velocity
+## @var{v} and an output @var{y} (N-by-1; used by @qcode{"signv"} and
+## @qcode{"ypower"} channels only; default 0). Delays are not applied
+## here. Channel types:
+## @table @code
+## @item input
+## u(:, col)
+## @item const
+## 1 (an offset entering with the input)
+## @item signv
+## sign (v) (Coulomb friction, thesis eq. 4.17)
+## @item power
+## u(:, col) .^ param (a polynomial input nonlinearity)
+## @item clip
+## u(:, col) clipped to +-param (with the input's own channel: a
+## saturation or a dead zone)
+## @item ypower
+## y .^ param (a static nonlinearity of the output acting inside the
+## dynamics, e.g. a hardening spring: Duffing's y^3)
+## @end table
+## Works row by row as well (a 1-by-nu @var{u} and a scalar @var{v}).
+## @end deftypefn
+
+function W = residtrace_channels (chans, u, v, y)
+  if (nargin < 4)
+    y = 0;
+  endif
+  W = zeros (rows (u), numel (chans));
+  for j = 1:numel (chans)
+    c = chans(j);
+    switch (c.type)
+      case "input"
+        W(:, j) = u(:, c.col);
+      case "const"
+        W(:, j) = 1;
+      case "signv"
+        W(:, j) = sign (v);
+      case "power"
+        W(:, j) = u(:, c.col) .^ c.param;
+      case "clip"
+        W(:, j) = min (max (u(:, c.col), -c.param), c.param);
+      case "ypower"
+        W(:, j) = y .^ c.param;
+    endswitch
+  endfor
+endfunction

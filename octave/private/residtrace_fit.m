@@ -1,0 +1,124 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{model} =} residtrace_fit (@var{tmpl}, @var{D}, @var{ctx}, @var{starts})
+## Estimates the parameters of the @code{residtrace} model structure
+## @var{tmpl} on the record @var{D} (fields y, u, Ts, vhat: the velocity
+## from the measured output) by SRIVC (@code{residtrace_srivc}).
+##
+## The channels (inputs, constant, sign of the velocity, powers, clipped
+## input) are the regressors of the filtered linear regression; the
+## coefficients of F that are fixed in @code{tmpl.fixed} keep their
+## values. Output terms (an output offset, a polynomial in the model
+## output, a sinusoid) enter by alternation: SRIVC on y minus the terms,
+## then the terms by least squares on y minus the model output, three
+## rounds. @var{starts}: a cell of initial denominators (each of the
+## template's order; an empty entry is the SVF start at
+## @code{ctx.lambda}); the start giving the smallest residual variance is
+## kept.
+##
+## Adds to the model: @code{theta}, @code{cov} (SRIVC covariance of the
+## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
+## @code{s2}, @code{np} (number of estimated parameters), @code{bic} =
+## N log s2 + np log N, @code{ok}. Starts that end on an unstable F
+## (apart from the model's integrators) are discarded.
+## @end deftypefn
+
+function model = residtrace_fit (tmpl, D, ctx, starts)
+  model = tmpl;
+  y = D.y;
+  N = numel (y);
+  ch = residtrace_chdata (tmpl, D);
+  n = numel (tmpl.F) - 1;
+  spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end));
+  o = zeros (N, 1);
+  rounds = 1;
+  if (! isempty (tmpl.out))
+    rounds = 3;
+  endif
+  best = [];
+  for round = 1:rounds
+    if (round == 1)
+      cands = starts(:)';
+      if (isempty (cands))
+        cands = {[]};
+      endif
+    else
+      cands = {best.F};
+    endif
+    best = [];
+    for s = 1:numel (cands)
+      o_ = struct ("F0", cands{s}, "lambda", ctx.lambda, "wlo", ctx.wlo,
+                   "maxiter", ctx.maxiter, "tol", 1e-5, "iv", true);
+      try
+        est = residtrace_srivc (y - o, ch, D.Ts, spec, o_);
+      catch
+        continue;
+      end_try_catch
+      if (! est.ok || ! stable (est.F, tmpl.fixed))
+        continue;
+      endif
+      if (isempty (best) || est.s2 < best.s2)
+        best = est;
+      endif
+    endfor
+    if (isempty (best))
+      model.ok = false;
+      return;
+    endif
+    if (! isempty (tmpl.out))
+      [o, model.out] = fit_out (tmpl.out, y - best.x, best.x, D.Ts);
+    endif
+  endfor
+  model.F = best.F;
+  for j = 1:numel (model.channels)
+    model.channels(j).B = best.B{j};
+  endfor
+  e = y - best.x - o;
+  nout = sum (arrayfun (@(m) numel (m.c), model.out));
+  model.np = best.np + nout;
+  model.s2 = sum (e .^ 2) / max (N - model.np, 1);
+  model.theta = best.theta;
+  model.cov = best.cov;
+  model.bic = N * log (model.s2) + model.np * log (N);
+  model.e_est = e;
+  model.ok = true;
+endfunction
+
+## F stable apart from its structural zeros at the origin (integrators);
+## a model whose structure has no damping may be marginally stable.
+function ok = stable (F, fixed)
+  n = numel (F) - 1;
+  r = 0;
+  while (r < n && fixed(n-r) && F(n-r+1) == 0)
+    r++;
+  endwhile
+  z = roots (F(1:end-r));
+  ok = all (real (z) <= 1e-9 * abs (z));  # marginal (undamped) is allowed
+endfunction
+
+## Least squares for the output terms on r = y - x (x the model output).
+function [o, out] = fit_out (out, r, x, Ts)
+  N = numel (r);
+  t = (0:N-1)' * Ts;
+  X = [];
+  for k = 1:numel (out)
+    switch (out(k).type)
+      case "offset"
+        X = [X, ones(N, 1)];
+      case "poly"
+        X = [X, x .^ 2, x .^ 3];
+      case "sinusoid"
+        X = [X, sin(out(k).omega * t), cos(out(k).omega * t)];
+    endswitch
+  endfor
+  c = X \ r;
+  o = X * c;
+  s2 = sum ((r - o) .^ 2) / max (N - numel (c), 1);
+  cstd = sqrt (diag (s2 * inv (X' * X)));
+  off = 0;
+  for k = 1:numel (out)
+    m = numel (out(k).c);
+    out(k).c = c(off+1:off+m).';
+    out(k).cstd = cstd(off+1:off+m).';
+    off += m;
+  endfor
+endfunction

@@ -1,0 +1,16 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{model} =} residtrace_unpack (@var{model}, @var{theta})
+## Puts the dynamic parameters @var{theta} (free f's, then each channel's
+## numerator, the order of @code{residtrace_srivc}) into @var{model}.
+## @end deftypefn
+
+function model = residtrace_unpack (model, theta)
+  free = find (! model.fixed);
+  model.F(1 + free) = theta(1:numel (free));
+  off = numel (free);
+  for j = 1:numel (model.channels)
+    nb = model.channels(j).nb;
+    model.channels(j).B = theta(off+1:off+nb)(:).';
+    off += nb;
+  endfor
+endfunction

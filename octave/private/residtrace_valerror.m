@@ -1,0 +1,90 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{e}, @var{yh}] =} residtrace_valerror (@var{model}, @var{V}, @var{ctx})
+## The error of a @code{residtrace} model on the record @var{V} (not used
+## to fit it): @var{e} = y - @var{yh}.
+##
+## @itemize
+## @item The model is simulated on V's input from rest; when V is the end
+## of a split record (@code{V.pre} holds the part before it) the
+## simulation starts at the beginning of the whole record, so that the
+## model's state at V's first sample comes from the input.
+## @item The model is simulated on V's input (in closed loop when V has a
+## @code{loop}), see @code{residtrace_simulate}.
+## @item A drifting model (@code{model.ltv}) is simulated with the
+## parameters tracked on V by @code{rsrivc} or @code{residtrace_track}
+## (see @code{residtrace_cand_drift}), one sample behind.
+## @item Sinusoidal output terms keep their frequencies; their amplitudes
+## and phases, unknown on another record, are fitted on each half of the
+## residual and applied to the other half (two-fold cross-fitting).
+## @item A noise model A(q) (@code{model.noise}) turns e into the
+## one-step-ahead prediction error A(q) e.
+## @end itemize
+## @end deftypefn
+
+function [e, yh] = residtrace_valerror (model, V, ctx)
+  N = numel (V.y);
+  m = model;
+  sins = strcmp ({m.out.type}, "sinusoid");
+  omegas = [m.out(sins).omega];
+  m.out(sins) = [];
+  ## With a prefix (the estimation part of a split record) the simulation
+  ## starts at the beginning of the whole record, driven by its input.
+  Vf = V;
+  npre = 0;
+  if (! isempty (V.pre))
+    npre = numel (V.pre.y);
+    Vf.y = [V.pre.y; V.y];
+    Vf.u = [V.pre.u; V.u];
+    Vf.vhat = [V.pre.vhat; V.vhat];
+    Vf.ysm = [V.pre.ysm; V.ysm];
+  endif
+  if (! isempty (m.ltv) && strcmp (m.ltv.method, "rsrivc"))
+    thm = track_rsrivc (m, Vf, npre);
+    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps, thm);
+  elseif (! isempty (m.ltv))
+    thm = residtrace_track (m, Vf, ctx, m.ltv.Qn, m.ltv.th0, m.ltv.P0,
+                            npre + 1);
+    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps, thm);
+  else
+    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps);
+  endif
+  yh = yh(npre+1:end);
+  e = V.y - yh;
+  if (! isempty (omegas) && all (isfinite (e)))
+    t = (0:N-1)' * V.Ts;
+    X = [sin(t * omegas), cos(t * omegas)];
+    h = floor (N / 2);
+    i1 = 1:h; i2 = h+1:N;
+    s = zeros (N, 1);
+    s(i2) = X(i2, :) * (X(i1, :) \ e(i1));
+    s(i1) = X(i1, :) * (X(i2, :) \ e(i2));
+    yh += s;
+    e -= s;
+  endif
+  if (! isempty (m.noise))
+    p = filter (m.noise, 1, e);
+    yh += e - p;
+    e = p;
+  endif
+endfunction
+
+## RSRIVC-KF on the record (from the start of a split record, or from
+## where it ended on the estimation record), one sample behind, in the
+## [f b] order of the model.
+function thm = track_rsrivc (m, Vf, npre)
+  L = m.ltv;
+  if (npre > 0)
+    th0 = L.th_start; P0 = L.P_start;
+  else
+    th0 = L.th0; P0 = L.P0;
+  endif
+  nf = numel (m.F) - 1;
+  Fs = residtrace_prefilter ([1, th0(end-nf+1:end)], 1e-6);
+  data = iddata (Vf.y, Vf.u(:, m.channels.col), Vf.Ts,
+                 "InterSample", Vf.intersample);
+  t = rsrivc (data, L.nn, "A", Fs, "th0", th0, "P0", P0, "tsiv", 0,
+              "adm", "kf", "adg", L.Qn);
+  t = [th0(:).'; t(1:end-1, :)];
+  thm = zeros (size (t));
+  thm(:, L.perm) = t;                # back to [f b]
+endfunction

@@ -1,0 +1,811 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{R} =} residtrace (@var{data}, @var{M})
+## @deftypefnx {} {@var{R} =} residtrace (@var{data}, @var{M}, "validation", @var{datav}, @dots{})
+## @deftypefnx {} {@var{R} =} residtrace (@var{y}, @var{u}, @var{Ts}, @var{M}, @dots{})
+## Traces the residual of a continuous-time model to the effect it lacks,
+## adds that effect, and reports the error before and after.
+##
+## @var{data}: the estimation record (an @code{iddata}, or @var{y},
+## @var{u}, @var{Ts}), uniformly sampled. @var{M}: an @code{idctm} from
+## @code{srivc}, @code{lssvf}, @code{ivsvf} (or built by hand). Its
+## coefficients of F that are exactly zero are structural (integrators, a
+## missing damping term) and stay zero unless an effect frees them.
+## @var{datav}: a validation record with the same inputs. Without it the
+## last third of @var{data} is the validation record and the first two
+## thirds the estimation record (option @code{"split"}).
+##
+## @strong{Effects} (a library of what a linear time-invariant model
+## lacks), each fitted on the estimation record only:
+## @table @asis
+## @item 'offset'
+## a constant entering with the input (the extra regressor 1) or added to
+## the output.
+## @item 'coulomb'
+## the regressor sign(v), v the velocity (SVF derivative of the measured
+## output, filtered forward and backward), as the thesis does for the
+## throttle (sec. 4.2, eq. 4.17). Simulated honestly: sign() of the
+## model's own velocity, in sub-steps (option @code{"substeps"}).
+## @item 'viscous'
+## the velocity coefficient of F freed when the model has it fixed at zero.
+## @item 'delay'
+## the input delay nk raised by 1 .. @code{maxdelay} samples.
+## @item 'order'
+## one or two more poles, zeros.
+## @item 'static_nonlinearity'
+## u^2, u^3, or the input clipped (saturation, dead zone) as extra
+## regressors, or a polynomial of the model output.
+## @item 'sinusoid'
+## an additive sinusoid at the strongest line of the residual periodogram
+## not shared with the input (Fisher's g test); on the validation record
+## its amplitude and phase are unknown, so they are fitted on one half and
+## applied to the other (two-fold cross-fitting).
+## @item 'drift'
+## random-walk parameters tracked by the Kalman-filter IV update (thesis
+## eq. 2.29), Qn by maximum likelihood (sec. 3.3); evidence from SRIVC
+## fits on segments of the estimation record (chi^2 test of equal
+## parameters). Its validation output is the model simulated with the
+## parameters tracked on the validation record, each sample using only
+## earlier estimates.
+## @item 'colored_noise'
+## an AR noise model: it does not change a simulated output, so its
+## "after" RMSE is the one-step-ahead prediction RMSE; it is a candidate
+## only when no deterministic effect is significant and the validation
+## residual is independent of the input but not white.
+## @end table
+##
+## @strong{Scoring.} Each candidate's validation error e1 is compared with
+## the current model's e0 on the validation record: score = 1 -
+## mean(e1^2)/mean(e0^2), the share of the residual's mean square it
+## explains. Its significance: does the candidate's correction delta = e0
+## - e1 (fitted on other data) explain part of e0? Under the null of an
+## irrelevant candidate, delta is independent of e0 and sum e0 delta has
+## mean 0 and the Bartlett variance sum_tau (N - |tau|) gamma_e0(tau)
+## gamma_delta(tau), which accounts for both series being correlated in
+## time; one-sided normal p-value. (The Diebold-Mariano test of equal
+## accuracy with a Newey-West variance is reported as @code{p_dm}; it
+## is far less powerful when the residual is periodic or slow.) A
+## candidate is significant when p < alpha / (number of candidates)
+## (Bonferroni) and its score >= @code{minscore}. Significant candidates
+## are ranked by score, except that the scores of drift (a simulation
+## with parameters tracked on the validation record) and coloured noise
+## (a prediction), which use the validation output itself, count half in
+## the ordering: a time-invariant effect that is simulated without the
+## validation output goes first unless the other explains more than twice
+## as much. One that adds fewer parameters moves ahead of a candidate of
+## the same kind above it unless that one's extra correction is
+## significant by the same rules (p < alpha and a share >= minscore of
+## what the simpler one leaves) (parsimony). The
+## variant of each effect (which delay, which nonlinearity, ...) is chosen
+## on the estimation data by BIC. All models are estimated by SRIVC
+## (thesis eqs. 2.8-2.13) with the added regressors; the model as given
+## is re-estimated the same way first, and candidates are scored against
+## that re-estimate, so that a better estimator is never credited to an
+## effect.
+##
+## @strong{Iteration.} The winner is added, the model re-estimated, and
+## the tests run again, until no candidate is significant, the residual
+## is white and independent of the input (Ljung-Box and prewhitened
+## cross-correlation tests at level alpha), after drift or coloured noise
+## (which end the search), or after @code{iterate} effects.
+##
+## @strong{Options}
+## @table @code
+## @item validation
+## the validation record (iddata, or a cell @{y, u, Ts@}).
+## @item split
+## share of @var{data} used for estimation without a validation record
+## (default 2/3).
+## @item effects
+## cell of effect names to test (default all).
+## @item alpha
+## significance level (default 0.01).
+## @item minscore
+## smallest share of the residual's mean square an effect must explain
+## (default 0.01).
+## @item maxlag
+## largest lag of the residual correlations (default 25).
+## @item maxdelay
+## largest extra delay tried, in samples (default 10).
+## @item iterate
+## largest number of effects added (default 3; 1: a single pass).
+## @item substeps
+## sub-steps per sample when simulating Coulomb friction or a closed
+## loop (default 10).
+## @item lambda_v
+## cut-off (rad/s) of the velocity's SVF derivative (default 10 times
+## the fastest pole of M, at most a third of the Nyquist frequency).
+## @item controller, r1, r2, r1v, r2v
+## a closed loop u = r1 + C(q^-1) (r2 - y) (controller as in @code{simc});
+## then every simulation (estimation and validation records) runs in that
+## loop with the model's own output fed back: r1, r2 of the estimation
+## record, r1v, r2v of the validation record (r2 default zero). The data's
+## input must be the plant input u.
+## @item verbose
+## print the ranking of each pass (default false).
+## @item table
+## a file name: the before/after table is written there as Markdown.
+## @end table
+##
+## @strong{Outputs}: @var{R} is a struct with
+## @table @code
+## @item effect
+## the top-ranked effect of the first pass, or 'none'.
+## @item ranking
+## struct array of the first pass, best first: effect, score, p, stat
+## (the correlation test's p-value and z), p_dm, significant, variant,
+## nadd (added parameters), rmse (validation),
+## kind, applicable, reason, evidence.
+## @item rmse_before, rmse_after
+## validation RMSE of the simulated output of M as given and of the model
+## with the top effect added (for 'colored_noise' a one-step prediction
+## RMSE, for 'drift' the simulation with tracked parameters; see
+## @code{rmse_after_kind}).
+## @item model
+## the model with the top effect: a struct (F, fixed, channels with their
+## numerators B and delays nk, output terms @code{out}, @code{ltv},
+## @code{noise}, covariance) and @code{linear}, its linear part as an
+## @code{idctm} (one input per channel).
+## @item evidence
+## the winner's evidence (term, value, std, and what the test saw).
+## @item effects, final_model, rmse_final
+## all effects added by the iteration, the last model and its RMSE.
+## @item sim
+## the validation output @code{y} and the model outputs on it:
+## @code{given} (M as given), @code{refit}, @code{after} (top effect),
+## @code{final} (a prediction or a tracked simulation where the effect's
+## kind says so).
+## @item history
+## one entry per pass: effect, rmse, fit, white_p, indep_p, ranking.
+## @item table, tests_before, tests_after, testable, reason
+## the Markdown before/after table (see @code{residtrace_table}), the
+## residual tests, and whether the residual could be tested at all.
+## @end table
+##
+## Errors (identifiers @code{residtrace:badInput},
+## @code{residtrace:dimensionMismatch}, @code{residtrace:badOption}): a
+## model that is not an idctm, a validation record with other inputs,
+## records too short for @code{maxlag}, irregular sampling, unknown
+## options or effects. A residual that is zero to rounding (a perfect
+## model) or not finite gives @code{effect = 'none'} with
+## @code{testable = false} and the reason.
+##
+## @strong{Example}
+## @example
+## Ts = 0.05; u = prbs (10, 6); N = numel (u);
+## G = idctm (2, [1 1.2 1]);
+## y = simc (G, u + 0.4, Ts) + 0.05 * randn (N, 1);    # an input offset
+## M = srivc (iddata (y, u, Ts), [1 2 0]);
+## R = residtrace (iddata (y, u, Ts), M);
+## R.effect, [R.rmse_before, R.rmse_after]
+## @end example
+## @seealso{residtrace_table, residc, comparec, srivc, rsrivc}
+## @end deftypefn
+
+function R = residtrace (varargin)
+  fname = "residtrace";
+  if (nargin < 2)
+    error ("residtrace:badInput", "residtrace: expected data and a model");
+  endif
+  try
+    d = contsid_getdata (fname, varargin{:});
+  catch err
+    rethrow_as (err);
+  end_try_catch
+  if (numel (varargin) < d.nconsumed + 1)
+    error ("residtrace:badInput", "residtrace: the model M is missing");
+  endif
+  M = varargin{d.nconsumed + 1};
+  args = varargin(d.nconsumed + 2:end);
+  all_effects = {"offset", "coulomb", "viscous", "delay", "order", ...
+                 "static_nonlinearity", "sinusoid", "drift", "colored_noise"};
+  defaults = struct ("validation", [], "split", 2/3, "effects", {all_effects},
+                     "alpha", 0.01, "minscore", 0.01, "maxlag", 25,
+                     "maxdelay", 10, "iterate", 3, "substeps", 10,
+                     "lambda_v", [], "controller", [], "r1", [], "r2", [],
+                     "r1v", [], "r2v", [], "verbose", false, "table", "",
+                     "maxiter", 30);
+  opts = contsid_options (fname, defaults, args);
+  opts = check_options (opts, all_effects);
+  if (! isa (M, "idctm"))
+    error ("residtrace:badInput",
+           ["residtrace: M must be an idctm model (from srivc, lssvf, ", ...
+            "ivsvf or idctm), not a %s"], class (M));
+  endif
+  if (! d.uniform)
+    error ("residtrace:badInput",
+           "residtrace: the data must be uniformly sampled");
+  endif
+  Mst = struct (M);
+  if (iscell (Mst.B))
+    nbM = numel (Mst.B);
+  else
+    nbM = 1;
+  endif
+  if (nbM != columns (d.u))
+    error ("residtrace:dimensionMismatch",
+           "residtrace: M has %d input(s), the data %d", nbM, columns (d.u));
+  endif
+  [D, V] = records (d, opts);
+  np = numel (Mst.theta);
+  for rec = {D, V; "estimation", "validation"}
+    Rr = rec{1};
+    if (numel (Rr.y) < max (4 * opts.maxlag, 10 * np + 20))
+      error ("residtrace:badInput",
+             ["residtrace: the %s record has %d samples, too few for ", ...
+              "maxlag = %d and %d parameters (at least %d)"],
+             rec{2}, numel (Rr.y), opts.maxlag, np,
+             max (4 * opts.maxlag, 10 * np + 20));
+    endif
+  endfor
+
+  ## Context shared by the candidates.
+  base = residtrace_base (M, d);
+  rts = roots (Mst.F);
+  nz = abs (rts(abs (rts) > 1e-9 * max ([abs(rts); 1])));
+  T = (numel (D.y) - 1) * D.Ts;
+  if (isempty (nz))
+    wlo = 2 * pi / T;
+  else
+    wlo = 0.2 * min (nz);
+  endif
+  Fp = residtrace_prefilter (Mst.F, wlo);
+  ctx.opts = opts;
+  ctx.wlo = wlo;
+  ctx.lambda = exp (mean (log (abs (roots (Fp)))));
+  ctx.maxiter = opts.maxiter;
+  lam_v = opts.lambda_v;
+  if (isempty (lam_v))
+    lam_v = min (10 * max (abs (roots (Fp))), pi / D.Ts / 3);
+  endif
+  is_y = (numel (Mst.F) == 2);
+  if (isempty (V.pre))
+    D.vhat = residtrace_velocity (D.y, D.Ts, lam_v, is_y);
+    V.vhat = residtrace_velocity (V.y, V.Ts, lam_v, is_y);
+    D.ysm = D.y;
+    V.ysm = V.y;
+  else
+    ne = numel (D.y);
+    v = residtrace_velocity ([D.y; V.y], D.Ts, lam_v, is_y);
+    D.vhat = v(1:ne); V.vhat = v(ne+1:end);
+    D.ysm = D.y; V.ysm = V.y;
+    V.pre = struct ("y", D.y, "u", D.u, "vhat", D.vhat, "ysm", D.ysm);
+  endif
+  ctx.D = D;
+  ctx.V = V;
+
+  ## M as given, and M re-estimated by SRIVC in its own structure.
+  base.np = np;
+  try
+    e_given = residtrace_valerror (base, V, ctx);
+  catch
+    e_given = Inf (size (V.y));        # M as given diverges
+  end_try_catch
+  R = struct ();
+  R.rmse_before = rms_ (e_given);
+  R.fit_before = fit_ (V.y, e_given);
+  starts = {Mst.F};
+  if (any (real (rts) >= 0 & abs (rts) > 1e-9 * max ([abs(rts); 1])))
+    starts{end+1} = [];
+  endif
+  cur = residtrace_fit (base, D, ctx, starts);
+  if (! cur.ok)
+    error ("residtrace:numericalFailure",
+           ["residtrace: M could not be re-estimated on the estimation ", ...
+            "data (does the input excite it?)"]);
+  endif
+  cur.effects = {};
+  R.baseline = cur;
+  R.params_before = residtrace_physical (refresh_cov (base, cur), D.Ts);
+
+  history = struct ("effect", {}, "rmse", {}, "fit", {}, "white_p", {},
+                    "indep_p", {}, "ranking", {}, "model", {},
+                    "kind", {}, "evidence", {});
+  [e0, ~] = residtrace_valerror (cur, V, ctx);
+  R.tests_before = residtrace_whiteness (e0, V.u, opts.maxlag,
+                                         rms_ (V.y));
+  R.tests_given = residtrace_whiteness (e_given, V.u, opts.maxlag,
+                                        rms_ (V.y));
+  R.testable = R.tests_before.testable;
+  R.reason = R.tests_before.reason;
+  R.effect = "none";
+  R.ranking = struct ([]);
+  R.rmse_after = R.rmse_before;
+  R.rmse_after_kind = "simulation";
+  R.model = export_model (cur, D.Ts);
+  R.evidence = struct ("text", "no effect found");
+  R.effects = {};
+  R.rmse_refit = rms_ (e0);
+  R.sim = struct ("y", V.y, "given", V.y - e_given, "refit", V.y - e0,
+                  "after", V.y - e0, "final", V.y - e0);
+  steps = step_row ("M as given", e_given, V.y, R.tests_given, "simulation",
+                    R.params_before);
+  steps(2) = step_row ("M re-estimated (SRIVC)", e0, V.y, R.tests_before,
+                       "simulation", residtrace_physical (cur, D.Ts));
+  R.steps = steps;
+  if (! R.testable)
+    R.tests_after = R.tests_before;
+    R.final_model = R.model;
+    R.rmse_final = R.rmse_after;
+    R.history = history;
+    R.params_after = R.params_before;
+    R.table = residtrace_table (R);
+    return;
+  endif
+
+  for pass = 1:opts.iterate
+    tests = residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y));
+    if (pass > 1 && tests.testable && tests.white_p > opts.alpha
+        && tests.indep_p > opts.alpha)
+      break;                          # the residual tests pass
+    endif
+    [ranking, winner] = run_pass (cur, ctx, e0, tests, opts);
+    if (opts.verbose)
+      print_ranking (pass, ranking);
+    endif
+    h = struct ("effect", "none", "rmse", rms_ (e0), "fit", fit_ (V.y, e0),
+                "white_p", tests.white_p, "indep_p", tests.indep_p,
+                "ranking", ranking, "model", [], "kind", "simulation",
+                "evidence", []);
+    if (pass == 1)
+      R.ranking = ranking;
+    endif
+    if (isempty (winner))
+      history(end+1) = h;
+      break;
+    endif
+    h.effect = winner.effect;
+    h.model = winner.model;
+    h.kind = winner.kind;
+    h.evidence = winner.evidence;
+    history(end+1) = h;
+    next = winner.model;
+    next.effects = [cur.effects, {winner.effect}];
+    cur = next;
+    e0 = winner.e1;
+    R.steps(end+1) = step_row (sprintf ("+ %s (%s)", winner.effect,
+                                        winner.variant),
+                               e0, V.y,
+                               residtrace_whiteness (e0, V.u, opts.maxlag,
+                                                     rms_ (V.y)),
+                               kind_text (winner.kind),
+                               residtrace_physical (cur, D.Ts));
+    if (pass == 1)
+      R.sim.after = V.y - winner.e1;
+      R.effect = winner.effect;
+      R.rmse_after = rms_ (winner.e1);
+      R.rmse_after_kind = kind_text (winner.kind);
+      R.model = export_model (cur, D.Ts);
+      R.evidence = winner.evidence;
+    endif
+    if (any (strcmp (winner.effect, {"drift", "colored_noise"})))
+      break;
+    endif
+  endfor
+  R.effects = cur.effects;
+  R.final_model = export_model (cur, D.Ts);
+  R.rmse_final = rms_ (e0);
+  R.sim.final = V.y - e0;
+  R.tests_after = residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y));
+  R.params_after = residtrace_physical (cur, D.Ts);
+  R.history = history;
+  R.table = residtrace_table (R);
+  if (! isempty (opts.table))
+    residtrace_table (R, opts.table);
+  endif
+endfunction
+
+## One pass: every candidate fitted, scored on the validation record and
+## ranked; the winner (or []) with its validation error e1.
+function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
+  det = setdiff (opts.effects, {"colored_noise"}, "stable");
+  rows_ = [];
+  for k = 1:numel (det)
+    c = feval (["residtrace_cand_" cand_file(det{k})], cur, ctx);
+    row = score (c, cur, ctx, e0);
+    rows_ = [rows_; row];
+  endfor
+  m = max (1, sum ([rows_.applicable]));
+  for k = 1:numel (rows_)
+    rows_(k).significant = rows_(k).applicable ...
+                           && rows_(k).p < opts.alpha / m ...
+                           && rows_(k).score >= opts.minscore;
+  endfor
+  ## coloured noise: only when nothing deterministic is significant and
+  ## the residual is independent of the input but not white
+  if (any (strcmp (opts.effects, "colored_noise")))
+    c = residtrace_cand_colored (cur, ctx);
+    if (c.applicable && any ([rows_.significant]))
+      c.applicable = false;
+      c.reason = "a deterministic effect explains the residual";
+    elseif (c.applicable && ! (tests.white_p < opts.alpha
+                               && tests.indep_p > opts.alpha))
+      c.applicable = false;
+      c.reason = sprintf (["the residual is white (p = %.2g) or depends ", ...
+                           "on the input (p = %.2g)"], tests.white_p,
+                          tests.indep_p);
+    endif
+    row = score (c, cur, ctx, e0);
+    row.significant = row.applicable && row.p < opts.alpha ...
+                      && row.score >= opts.minscore;
+    rows_ = [rows_; row];
+  endif
+  ranking = rank_rows (rows_, e0, opts);
+  winner = [];
+  if (! isempty (ranking) && ranking(1).significant)
+    winner = ranking(1);
+  endif
+endfunction
+
+function row = score (c, cur, ctx, e0)
+  row = struct ("effect", c.effect, "score", NaN, "p", NaN, "stat", NaN,
+                "p_dm", NaN,
+                "significant", false, "variant", c.variant, "nadd", c.nadd,
+                "rmse", NaN, "kind", c.kind, "applicable", c.applicable,
+                "reason", c.reason, "evidence", c.evidence, "model", [],
+                "e1", []);
+  if (! c.applicable)
+    return;
+  endif
+  try
+    e1 = residtrace_valerror (c.model, ctx.V, ctx);
+  catch err
+    row.applicable = false;
+    row.reason = ["validation failed: " err.message];
+    return;
+  end_try_catch
+  if (any (! isfinite (e1)))
+    row.applicable = false;
+    row.reason = "the model's validation output diverges";
+    return;
+  endif
+  t = residtrace_dmtest (e0, e1);
+  row.score = t.score;
+  row.p = t.p_corr;
+  row.stat = t.z;
+  row.p_dm = t.p;
+  row.rmse = rms_ (e1);
+  row.model = c.model;
+  row.e1 = e1;
+endfunction
+
+## Significant first by score; a simpler candidate that is not
+## significantly worse than the one above it moves up (parsimony).
+function r = rank_rows (r, e0, opts)
+  if (isempty (r))
+    return;
+  endif
+  s = [r.score];
+  s(! [r.applicable]) = -Inf;
+  ## tracking and prediction use the validation output itself: in the
+  ## ordering their score counts half against simulated effects
+  sim = strcmp ({r.kind}, "simulation");
+  s(! sim) /= 2;
+  key = s + 10 * [r.significant];
+  [~, order] = sort (key, "descend");
+  r = r(order);
+  sig = find ([r.significant]);
+  changed = true;
+  while (changed)
+    changed = false;
+    for a = 1:numel (sig) - 1
+      i = sig(a); j = sig(a+1);
+      if (r(j).nadd < r(i).nadd && strcmp (r(i).kind, r(j).kind))
+        t = residtrace_dmtest (r(j).e1, r(i).e1);
+        better = t.p_corr < opts.alpha && t.score >= opts.minscore;
+      else
+        better = true;
+      endif
+      if (! better)
+        r([i j]) = r([j i]);
+        changed = true;
+      endif
+    endfor
+  endwhile
+endfunction
+
+function f = cand_file (effect)
+  switch (effect)
+    case "static_nonlinearity"
+      f = "static";
+    otherwise
+      f = effect;
+  endswitch
+endfunction
+
+function [D, V] = records (d, opts)
+  D = struct ("y", d.y, "u", d.u, "Ts", d.Ts, "intersample", d.intersample,
+              "loop", [], "vhat", [], "ysm", [], "pre", []);
+  if (isempty (opts.validation))
+    N = numel (d.y);
+    Ne = round (opts.split * N);
+    V = D;
+    V.y = d.y(Ne+1:end); V.u = d.u(Ne+1:end, :);
+    V.pre = true;                     # filled once the velocity is known
+    D.y = d.y(1:Ne); D.u = d.u(1:Ne, :);
+    if (! isempty (opts.controller))
+      error ("residtrace:badOption",
+             "residtrace: a closed loop needs a separate validation record");
+    endif
+  else
+    dv = opts.validation;
+    try
+      if (iscell (dv))
+        dv = contsid_getdata ("residtrace", dv{:});
+      else
+        dv = contsid_getdata ("residtrace", dv);
+      endif
+    catch err
+      rethrow_as (err);
+    end_try_catch
+    if (columns (dv.u) != columns (d.u))
+      error ("residtrace:dimensionMismatch",
+             ["residtrace: the validation record has %d input(s), the ", ...
+              "estimation record %d"], columns (dv.u), columns (d.u));
+    endif
+    if (! dv.uniform)
+      error ("residtrace:badInput",
+             "residtrace: the validation data must be uniformly sampled");
+    endif
+    V = struct ("y", dv.y, "u", dv.u, "Ts", dv.Ts,
+                "intersample", dv.intersample, "loop", [], "vhat", [],
+                "ysm", [],
+                "pre", []);
+  endif
+  if (! isempty (opts.controller))
+    [num, den] = contsid_controller ("residtrace", opts.controller, d.Ts);
+    D.loop = loop_of (num, den, opts.r1, opts.r2, numel (D.y), "r1", "r2");
+    V.loop = loop_of (num, den, opts.r1v, opts.r2v, numel (V.y), "r1v",
+                      "r2v");
+  endif
+endfunction
+
+function L = loop_of (num, den, r1, r2, N, n1, n2)
+  if (isempty (r1))
+    error ("residtrace:badOption",
+           "residtrace: a closed loop needs '%s' for each record", n1);
+  endif
+  if (isempty (r2))
+    r2 = zeros (N, 1);
+  endif
+  if (! isnumeric (r1) || ! isnumeric (r2) || numel (r1) != N
+      || numel (r2) != N || any (! isfinite ([r1(:); r2(:)])))
+    error ("residtrace:dimensionMismatch",
+           "residtrace: %s and %s must be finite with %d samples", n1, n2, N);
+  endif
+  L = struct ("num", num, "den", den, "r1", r1(:), "r2", r2(:));
+endfunction
+
+function opts = check_options (opts, all_effects)
+  a = opts.alpha;
+  if (! isnumeric (a) || ! isscalar (a) || ! (a > 0 && a < 0.5))
+    error ("residtrace:badInput", "residtrace: alpha must lie in (0, 0.5)");
+  endif
+  for f = {"maxlag", "iterate", "substeps", "maxiter"}
+    v = opts.(f{1});
+    if (! isnumeric (v) || ! isscalar (v) || v != fix (v) || v < 1)
+      error ("residtrace:badInput", "residtrace: %s must be an integer >= 1",
+             f{1});
+    endif
+  endfor
+  v = opts.maxdelay;
+  if (! isnumeric (v) || ! isscalar (v) || v != fix (v) || v < 0)
+    error ("residtrace:badInput",
+           "residtrace: maxdelay must be an integer >= 0");
+  endif
+  s = opts.split;
+  if (! isnumeric (s) || ! isscalar (s) || ! (s > 0.2 && s < 0.9))
+    error ("residtrace:badInput", "residtrace: split must lie in (0.2, 0.9)");
+  endif
+  ms = opts.minscore;
+  if (! isnumeric (ms) || ! isscalar (ms) || ! (ms >= 0 && ms < 1))
+    error ("residtrace:badInput", "residtrace: minscore must lie in [0, 1)");
+  endif
+  e = opts.effects;
+  if (ischar (e))
+    e = {e};
+  endif
+  if (! iscellstr (e) || isempty (e))
+    error ("residtrace:badOption",
+           "residtrace: effects must be a cell of effect names");
+  endif
+  bad = setdiff (e, all_effects);
+  if (! isempty (bad))
+    error ("residtrace:badOption", "residtrace: unknown effect '%s'", bad{1});
+  endif
+  opts.effects = e;
+  lv = opts.lambda_v;
+  if (! isempty (lv) && (! isnumeric (lv) || ! isscalar (lv) || ! (lv > 0)))
+    error ("residtrace:badInput", "residtrace: lambda_v must be > 0");
+  endif
+  if (! (ischar (opts.table)))
+    error ("residtrace:badInput", "residtrace: table must be a file name");
+  endif
+endfunction
+
+function m = refresh_cov (base, cur)
+  m = base;
+  m.cov = NaN (numel (cur.theta));
+  if (isequal (size (cur.theta), size (base.theta)) || isempty (base.theta))
+    m.cov = cur.cov;
+  endif
+endfunction
+
+## The model as returned to the user: the struct plus its linear part as
+## an idctm with one input per channel.
+function out = export_model (m, Ts)
+  out = rmfield (m, intersect (fieldnames (m), {"e_est", "variant_"}));
+  B = {m.channels.B};
+  F = m.F;
+  if (numel (B) == 1)
+    B = B{1};
+  endif
+  out.linear = idctm (struct ("B", {B}, "F", F, "nk", [m.channels.nk],
+                              "Ts", Ts, "InterSample", m.intersample,
+                              "theta", m.theta(:).', "covariance", m.cov,
+                              "noise_variance", m.s2, "method", "residtrace"));
+endfunction
+
+function s = step_row (label, e, y, tests, kind, params)
+  s = struct ("label", label, "rmse", rms_ (e), "kind", kind,
+              "fit", fit_ (y, e), "white_p", tests.white_p,
+              "indep_p", tests.indep_p, "params", {params});
+endfunction
+
+function s = kind_text (kind)
+  switch (kind)
+    case "prediction"
+      s = "one-step prediction";
+    case "tracking"
+      s = "simulation with tracked parameters";
+    otherwise
+      s = "simulation";
+  endswitch
+endfunction
+
+function print_ranking (pass, r)
+  printf ("residtrace pass %d:\n", pass);
+  for k = 1:numel (r)
+    if (r(k).applicable)
+      printf ("  %-20s score %9.4g  p %8.2g  %s  %s\n", r(k).effect,
+              r(k).score, r(k).p, ifelse_ (r(k).significant, "*", " "),
+              r(k).variant);
+    else
+      printf ("  %-20s (not tested: %s)\n", r(k).effect, r(k).reason);
+    endif
+  endfor
+endfunction
+
+function s = ifelse_ (c, a, b)
+  if (c)
+    s = a;
+  else
+    s = b;
+  endif
+endfunction
+
+function v = rms_ (e)
+  v = sqrt (mean (e .^ 2));
+endfunction
+
+function f = fit_ (y, e)
+  f = 100 * (1 - norm (e) / norm (y - mean (y)));
+endfunction
+
+function rethrow_as (err)
+  id = regexprep (err.identifier, '^[^:]*:', 'residtrace:');
+  msg = regexprep (err.message, '^[^:]*:', 'residtrace:');
+  error (struct ("message", msg, "identifier", id));
+endfunction
+
+%!shared Ts, u, uv, G, N, x, xv
+%! Ts = 0.05; u = prbs (9, 4); N = numel (u);
+%! uv = circshift (u, 200);
+%! G = idctm (2, [1 1.2 1]);
+%! x = simc (G, u, Ts); xv = simc (G, uv, Ts);
+
+%!test  # an undeclared input offset: found, sized, RMSE cut, table written
+%! randn ("state", 11);
+%! y = simc (G, u + 0.3, Ts) + 0.05 * randn (N, 1);
+%! yv = simc (G, uv + 0.3, Ts) + 0.05 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! f = [tempname() ".md"];
+%! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset", "delay", "order"}, "table", f);
+%! assert (R.effect, "offset");
+%! assert (R.evidence.physical, 0.3, 5 * R.evidence.physical_std + 0.01);
+%! assert (R.rmse_after < 0.2 * R.rmse_before);
+%! assert (R.rmse_after, 0.05, 0.01);        # down to the noise level
+%! assert (R.ranking(1).significant);
+%! assert (isa (R.model.linear, "idctm"));
+%! md = fileread (f);
+%! delete (f);
+%! assert (! isempty (strfind (md, "| + offset (input offset) |")));
+%! assert (! isempty (strfind (md, "input offset b_c/b0")));
+
+%!test  # no validation record: the last third validates; clean data: none
+%! randn ("state", 12);
+%! y = x + 0.05 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! R = residtrace (iddata (y, u, Ts), M, "effects", {"offset", "delay"});
+%! assert (R.effect, "none");
+%! assert (R.rmse_after, R.rmse_before);
+%! assert (R.testable);
+%! assert (R.rmse_before, 0.05, 0.01);   # the split record starts mid-run
+
+%!test  # a delay, numeric data form, and the scores' definition
+%! randn ("state", 13);
+%! y = [zeros(3, 1); x(1:end-3)] + 0.05 * randn (N, 1);
+%! yv = [zeros(3, 1); xv(1:end-3)] + 0.05 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! R = residtrace (y, u, Ts, M, "validation", {yv, uv, Ts},
+%!                 "effects", {"delay", "offset"}, "iterate", 1);
+%! assert (R.effect, "delay");
+%! assert (R.evidence.value, 3);
+%! r = R.ranking(1);
+%! assert (r.score, 1 - r.rmse ^ 2 / R.rmse_refit ^ 2, 1e-12);
+
+%!test  # a perfect model: nothing to test, said so
+%! R = residtrace (iddata (x, u, Ts), G, "validation", iddata (xv, uv, Ts));
+%! assert (R.effect, "none");
+%! assert (! R.testable);
+%! assert (! isempty (R.reason));
+
+%!test  # an unstable model as given: RMSE before is its own, refit helps
+%! randn ("state", 14);
+%! y = x + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -0.5 1]),
+%!                 "effects", {"offset"});
+%! assert (R.rmse_before > 1e3);
+%! assert (R.rmse_refit < 0.1);
+%! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -30 1]),
+%!                 "effects", {"offset"});
+%! assert (R.rmse_before, Inf);
+%! assert (R.rmse_refit < 0.1);
+
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), tf (1, [1 1]))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), struct ("B", 1, "F", [1 1]))
+%!error id=residtrace:badInput residtrace (iddata (NaN (N, 1), u, Ts), G)
+%!error id=residtrace:badInput residtrace (iddata (x(1:60), u(1:60), Ts), G)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "validation", iddata (xv(1:60), uv(1:60), Ts))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "maxlag", 0)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "alpha", 2)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "split", 1)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "iterate", 0)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "minscore", -1)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "maxdelay", -1)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "lambda_v", 0)
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), G, "table", 3)
+%!error id=residtrace:badInput residtrace (iddata (x, u, (0:N-1)' .^ 1.01 * Ts), G)
+%!error id=residtrace:dimensionMismatch residtrace (iddata (x, u, Ts), G, "validation", iddata (xv, [uv uv], Ts))
+%!error id=residtrace:dimensionMismatch residtrace (iddata (x, [u u], Ts), G)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", {"magic"})
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", 3)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "bogus", 1)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
+%!error id=residtrace:dimensionMismatch residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0), "r1", 1, "r1v", uv)
+%!error id=residtrace:numericalFailure residtrace (iddata (x, zeros (N, 1), Ts), G)
+
+%!demo
+%! ## A mass-spring-damper with Coulomb friction 0.3, modelled as linear:
+%! ## residtrace finds the friction, adds sign(v) and simulates it.
+%! Ts = 0.02; N = 2000; t = (0:N-1)' * Ts;
+%! U = [sin(1.3 * t) + 0.5 * sin(3.1 * t + 1), ...
+%!      sin(1.1 * t + 2) + 0.6 * sin(2.7 * t)];
+%! A = [0 1; -4 -0.8]; E = expm ([A, [0; 1]; 0 0 0] * Ts / 20);
+%! Y = zeros (N, 2);
+%! for j = 1:2                  # 20 sub-steps per sample, sign(v) held
+%!   z = [0; 0];
+%!   for k = 1:N
+%!     Y(k, j) = z(1);
+%!     for s = 1:20
+%!       z = E(1:2, 1:2) * z + E(1:2, 3) * (U(k, j) - 0.3 * sign (z(2)));
+%!     endfor
+%!   endfor
+%! endfor
+%! Y += 0.005 * randn (N, 2);
+%! data = iddata (Y(:, 1), U(:, 1), Ts);
+%! M = srivc (data, [1 2 0]);
+%! R = residtrace (data, M, "validation", iddata (Y(:, 2), U(:, 2), Ts));
+%! residtrace_table (R)
