@@ -2,56 +2,31 @@
 ## their figures and results tables; two noise runs each keep it short
 ## (about 20 s in all on a 2-core machine).
 function test_demo_ch2 ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
-  addpath (fullfile (root, "demos"));
-  out = tempname ();
-  unwind_protect
-    demo_ch2_similar_rates (out, 2);
-    check_files (out, {"fig_2_3_estimates.png", "fig_2_4_relerr.png",
-                       "fig_2_5_lag_error.png", "fig_2_6_noise_error.png"},
-                 "ch2_similar_rates.md", {"1.152", "0.8036", "0.2672"});
-    demo_ch2_different_rates (out, 2);
-    check_files (out, {"fig_2_11_rlssvf.png", "fig_2_12_iv.png",
-                       "fig_2_13_rlssvf_relerr.png", "fig_2_14_iv_relerr.png"},
-                 "ch2_different_rates.md", {"23.8 / 9.6 / 14.0",
-                                            "3.7 / 2.9 / 0.7"});
-    demo_ch2_closed_loop (out, 2);
-    check_files (out, {"fig_2_17_rlssvf.png", "fig_2_18_cliv.png",
-                       "fig_2_19_rlssvf_relerr.png", "fig_2_20_cliv_relerr.png"},
-                 "ch2_closed_loop.md", {"30.2 / 7.3 / 11.1",
-                                        "4.8 / 6.1 / 1.5"});
-    ## Sanity of the numbers: RSRIVC's lag MSE after tsiv is far below
-    ## RLSSVF's (implementation notes, item 8: 0.029 vs 0.286).
-    table = fileread (fullfile (out, "ch2_similar_rates.md"));
-    row = @(name) str2double (regexp (table, ['\| ' name ' \| ([0-9.]+) \| [0-9.]+ \| [^|]+ \| ([0-9.]+) \|'],
-                                      "tokens", "once"));
-    rls = row ("RLSSVF");
-    srivc = row ("RSRIVC");
-    assert (numel (rls) == 2 && numel (srivc) == 2);
-    assert (srivc(2) < 0.5 * rls(2));
-  unwind_protect_cleanup
-    if (exist (out, "dir"))
-      confirm_recursive_rmdir (false, "local");
-      rmdir (out, "s");
-    endif
-  end_unwind_protect
+  run_demo_test (@check);
 endfunction
 
-function check_files (out, figs, table, strings)
-  for i = 1:numel (figs)
-    f = fullfile (out, figs{i});
-    assert (exist (f, "file") == 2, "missing %s", f);
-    d = dir (f);
-    assert (d.bytes > 1000, "empty figure %s", f);
-  endfor
-  f = fullfile (out, table);
-  assert (exist (f, "file") == 2, "missing %s", f);
-  txt = fileread (f);
-  for i = 1:numel (strings)
-    assert (! isempty (strfind (txt, strings{i})), "%s lacks %s", table,
-            strings{i});
-  endfor
+function check (out, root)
+  demo_ch2_similar_rates (out, 2);
+  check_demo_outputs (out, {"fig_2_3_estimates.png", "fig_2_4_relerr.png",
+                      "fig_2_5_lag_error.png", "fig_2_6_noise_error.png"},
+                      "ch2_similar_rates.md", {"1.152", "0.8036", "0.2672"});
+  demo_ch2_different_rates (out, 2);
+  check_demo_outputs (out, {"fig_2_11_rlssvf.png", "fig_2_12_iv.png",
+                      "fig_2_13_rlssvf_relerr.png", "fig_2_14_iv_relerr.png"},
+                      "ch2_different_rates.md", {"23.8 / 9.6 / 14.0",
+                      "3.7 / 2.9 / 0.7"});
+  demo_ch2_closed_loop (out, 2);
+  check_demo_outputs (out, {"fig_2_17_rlssvf.png", "fig_2_18_cliv.png",
+                      "fig_2_19_rlssvf_relerr.png", "fig_2_20_cliv_relerr.png"},
+                      "ch2_closed_loop.md", {"30.2 / 7.3 / 11.1",
+                      "4.8 / 6.1 / 1.5"});
+  ## Sanity of the numbers: RSRIVC's lag MSE after tsiv is far below
+  ## RLSSVF's (implementation notes, item 8: 0.029 vs 0.286).
+  table = fileread (fullfile (out, "ch2_similar_rates.md"));
+  row = @(name) str2double (regexp (table, ['\| ' name ' \| ([0-9.]+) \| [0-9.]+ \| [^|]+ \| ([0-9.]+) \|'],
+                                    "tokens", "once"));
+  rls = row ("RLSSVF");
+  srivc = row ("RSRIVC");
+  assert (numel (rls) == 2 && numel (srivc) == 2);
+  assert (srivc(2) < 0.5 * rls(2));
 endfunction

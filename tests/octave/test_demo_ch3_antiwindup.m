@@ -16,34 +16,25 @@
 ## - at 9000 s kappa_2 is largest for RLSSVF-FF, smaller for LMR-RLSSVF,
 ##   smallest for RLSSVF-KF (thesis Figs. 3.12, 3.15).
 function test_demo_ch3_antiwindup ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
-  addpath (fullfile (root, "demos"));
-  out = tempname ();
-  unwind_protect
-    res = demo_ch3_antiwindup (out, 1);
-    ch3_check_outputs (out, {"fig_3_10_data.png", "fig_3_11_rlssvf.png", ...
-                             "fig_3_12_kappa.png", "fig_3_13_rsrivc.png", ...
-                             "fig_3_14_lmr.png", "fig_3_15_kappa_lmr.png"},
-                       "ch3_antiwindup.md", {"t ~ 6000 s", "0.0200"});
-    r = res.resets{1};
-    assert (! isempty (r), "RSRIVC never held");
-    assert (all (r >= 6000) && r(1) < 6500, "held from %s s", num2str (r'));
-    assert (res.held_before(1) == 0);
-    g = res.growth;
-    assert (abs (g.ff0.rate / g.expected - 1) < 0.05);
-    assert (abs (g.ff.rate / g.expected - 1) < 0.1);
-    assert (g.kf0.r2_lin > 0.99 && g.kf0.r2_lin > g.kf0.r2_exp);
-    assert (abs (g.kf0.slope / g.kf_expected - 1) < 0.1);
-    assert (g.lmr0_max <= 1.01 * g.lmr_limit);
-    k = res.kappa_end(1, :);                      # FF, KF, LMR
-    assert (k(1) > k(3) && k(3) > k(2), "kappa at 9000 s: %s", num2str (k));
-  unwind_protect_cleanup
-    if (exist (out, "dir"))
-      confirm_recursive_rmdir (false, "local");
-      rmdir (out, "s");
-    endif
-  end_unwind_protect
+  run_demo_test (@check);
+endfunction
+
+function check (out, root)
+  res = demo_ch3_antiwindup (out, 1);
+  check_demo_outputs (out, {"fig_3_10_data.png", "fig_3_11_rlssvf.png", ...
+                      "fig_3_12_kappa.png", "fig_3_13_rsrivc.png", ...
+                      "fig_3_14_lmr.png", "fig_3_15_kappa_lmr.png"},
+                      "ch3_antiwindup.md", {"t ~ 6000 s", "0.0200"});
+  r = res.resets{1};
+  assert (! isempty (r), "RSRIVC never held");
+  assert (all (r >= 6000) && r(1) < 6500, "held from %s s", num2str (r'));
+  assert (res.held_before(1) == 0);
+  g = res.growth;
+  assert (abs (g.ff0.rate / g.expected - 1) < 0.05);
+  assert (abs (g.ff.rate / g.expected - 1) < 0.1);
+  assert (g.kf0.r2_lin > 0.99 && g.kf0.r2_lin > g.kf0.r2_exp);
+  assert (abs (g.kf0.slope / g.kf_expected - 1) < 0.1);
+  assert (g.lmr0_max <= 1.01 * g.lmr_limit);
+  k = res.kappa_end(1, :);                      # FF, KF, LMR
+  assert (k(1) > k(3) && k(3) > k(2), "kappa at 9000 s: %s", num2str (k));
 endfunction

@@ -10,27 +10,18 @@
 ## trapezoidal rule's error for y, (lambda Ts)^2/12 = 1.3e-4 relative,
 ## with a margin: 1e-3.
 function test_demo_ch3_initial_conditions ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
-  addpath (fullfile (root, "demos"));
-  out = tempname ();
-  unwind_protect
-    res = demo_ch3_initial_conditions (out);
-    ch3_check_outputs (out, {"fig_3_6_data.png", "fig_3_7_estimates.png", ...
-                             "fig_3_8_c1.png", "fig_3_9_tsls.png"},
-                       "ch3_initial_conditions.md", {"6561", "5177", "0.0193"});
-    assert (abs (res.without - [6561 5177]) < 0.5);
-    assert (all (res.with_ic < res.without / 10));
-    assert (all (abs (res.tsls) < 0.1));
-    y0 = 20 * tanh (1.5);
-    assert (abs (res.c1_end - y0) / y0 < 1e-3);
-    assert (res.periodic_err < 1e-9);
-  unwind_protect_cleanup
-    if (exist (out, "dir"))
-      confirm_recursive_rmdir (false, "local");
-      rmdir (out, "s");
-    endif
-  end_unwind_protect
+  run_demo_test (@check);
+endfunction
+
+function check (out, root)
+  res = demo_ch3_initial_conditions (out);
+  check_demo_outputs (out, {"fig_3_6_data.png", "fig_3_7_estimates.png", ...
+                      "fig_3_8_c1.png", "fig_3_9_tsls.png"},
+                      "ch3_initial_conditions.md", {"6561", "5177", "0.0193"});
+  assert (abs (res.without - [6561 5177]) < 0.5);
+  assert (all (res.with_ic < res.without / 10));
+  assert (all (abs (res.tsls) < 0.1));
+  y0 = 20 * tanh (1.5);
+  assert (abs (res.c1_end - y0) / y0 < 1e-3);
+  assert (res.periodic_err < 1e-9);
 endfunction

@@ -8,25 +8,16 @@
 ## bench/qnml_octave_bench.m, not here: no timing in tests);
 ## - the thesis' q = 3.3e-5 lies within the range the PRBS clocks give.
 function test_demo_ch3_qn_ml ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
-  addpath (fullfile (root, "demos"));
-  out = tempname ();
-  unwind_protect
-    res = demo_ch3_qn_ml (out, 3, 2);
-    ch3_check_outputs (out, {"fig_3_3_data.png", "fig_3_4_cost.png", ...
-                             "fig_3_5_rsrivc.png"},
-                       "ch3_qn_ml.md", {"3.3e-5", "prbs (8, 40)"});
-    allq = vertcat (res.sens.q);
-    assert (all (allq >= 1e-6 & allq <= 1e-4));
-    assert (res.V <= min (res.Vgrid) + 1e-9 * abs (res.V));
-    assert (min (allq) < 3.3e-5 && max (allq) > 3.3e-5);
-  unwind_protect_cleanup
-    if (exist (out, "dir"))
-      confirm_recursive_rmdir (false, "local");
-      rmdir (out, "s");
-    endif
-  end_unwind_protect
+  run_demo_test (@check);
+endfunction
+
+function check (out, root)
+  res = demo_ch3_qn_ml (out, 3, 2);
+  check_demo_outputs (out, {"fig_3_3_data.png", "fig_3_4_cost.png", ...
+                      "fig_3_5_rsrivc.png"},
+                      "ch3_qn_ml.md", {"3.3e-5", "prbs (8, 40)"});
+  allq = vertcat (res.sens.q);
+  assert (all (allq >= 1e-6 & allq <= 1e-4));
+  assert (res.V <= min (res.Vgrid) + 1e-9 * abs (res.V));
+  assert (min (allq) < 3.3e-5 && max (allq) > 3.3e-5);
 endfunction

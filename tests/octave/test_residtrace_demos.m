@@ -5,41 +5,32 @@
 ## fit of the same record allows) and a lower validation error; on the
 ## Silverbox a lower validation error than the LTI model's.
 function test_residtrace_demos ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
-  addpath (fullfile (root, "demos"));
+  run_demo_test (@check);
+endfunction
+
+function check (out, root)
   if (! exist (fullfile (root, "..", "shared", "data", "emps"), "dir"))
     printf ("test_residtrace_demos: ../shared/data missing, skipped\n");
     return;
   endif
-  out = tempname ();
-  unwind_protect
-    R = demo_emps (out, true);
-    for f = {"emps.md", "fig_emps_sim.png", "fig_emps_resid.png", ...
-             "fig_emps_segments.png"}
-      assert (exist (fullfile (out, f{1}), "file") == 2);
-    endfor
-    assert (R.effect, "coulomb");
-    assert (R.rmse_after < 0.5 * R.rmse_before);
-    k = strcmp ({R.params_after.name}, "Coulomb level -b_s/b0");
-    Fc = R.params_after(k).value;
-    assert (Fc > 10 && Fc < 30);
-    md = fileread (fullfile (out, "emps.md"));
-    assert (! isempty (strfind (md, "| + coulomb")));
+  R = demo_emps (out, true);
+  for f = {"emps.md", "fig_emps_sim.png", "fig_emps_resid.png", ...
+           "fig_emps_segments.png"}
+    assert (exist (fullfile (out, f{1}), "file") == 2);
+  endfor
+  assert (R.effect, "coulomb");
+  assert (R.rmse_after < 0.5 * R.rmse_before);
+  k = strcmp ({R.params_after.name}, "Coulomb level -b_s/b0");
+  Fc = R.params_after(k).value;
+  assert (Fc > 10 && Fc < 30);
+  md = fileread (fullfile (out, "emps.md"));
+  assert (! isempty (strfind (md, "| + coulomb")));
 
-    R = demo_silverbox (out, true);
-    for f = {"silverbox.md", "fig_silverbox_track.png", ...
-             "fig_silverbox_sim.png", "fig_silverbox_resid.png"}
-      assert (exist (fullfile (out, f{1}), "file") == 2);
-    endfor
-    assert (! strcmp (R.effect, "none"));
-    assert (R.rmse_after < R.rmse_refit);
-  unwind_protect_cleanup
-    if (exist (out, "dir"))
-      confirm_recursive_rmdir (false, "local");
-      rmdir (out, "s");
-    endif
-  end_unwind_protect
+  R = demo_silverbox (out, true);
+  for f = {"silverbox.md", "fig_silverbox_track.png", ...
+           "fig_silverbox_sim.png", "fig_silverbox_resid.png"}
+    assert (exist (fullfile (out, f{1}), "file") == 2);
+  endfor
+  assert (! strcmp (R.effect, "none"));
+  assert (R.rmse_after < R.rmse_refit);
 endfunction

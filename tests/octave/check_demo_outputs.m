@@ -1,12 +1,12 @@
 ## -*- texinfo -*-
-## @deftypefn {} {@var{txt} =} ch3_check_outputs (@var{outdir}, @var{figs}, @var{table}, @var{strings})
-## Helper of the Chapter 3 demo tests: asserts that each PNG of the cell
+## @deftypefn {} {@var{txt} =} check_demo_outputs (@var{outdir}, @var{figs}, @var{table}, @var{strings})
+## Helper of the demo script tests: asserts that each PNG of the cell
 ## @var{figs} exists in @var{outdir} and is not empty, that the Markdown
 ## table @var{table} exists and contains each string of @var{strings}
 ## (e.g. the thesis' values it must quote), and returns its text.
 ## @end deftypefn
 
-function txt = ch3_check_outputs (outdir, figs, table, strings)
+function txt = check_demo_outputs (outdir, figs, table, strings)
   for i = 1:numel (figs)
     f = fullfile (outdir, figs{i});
     assert (exist (f, "file") == 2, "missing %s", f);

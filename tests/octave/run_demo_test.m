@@ -1,0 +1,20 @@
+## run_demo_test (check): the scaffolding every demo script test shares.
+## Puts <root>/demos on the path, calls check (out, root) with a fresh
+## temporary output folder `out` (root: the repository), and removes the
+## folder afterwards, also when a check fails.
+function run_demo_test (check)
+  root = getenv ("CTID_ROOT");
+  if (isempty (root))
+    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
+  endif
+  addpath (fullfile (root, "demos"));
+  out = tempname ();
+  unwind_protect
+    check (out, root);
+  unwind_protect_cleanup
+    if (exist (out, "dir"))
+      confirm_recursive_rmdir (false, "local");
+      rmdir (out, "s");
+    endif
+  end_unwind_protect
+endfunction
