@@ -18,20 +18,10 @@
 namespace ctid {
 namespace {
 
+using test::binary_input;
+
 using test::MatrixNear;
 using test::relative_error;
-
-// Random binary input (levels +-1) held for `hold` samples.
-std::vector<double> binary_input(int n, int hold, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::vector<double> u(n);
-  double level = 1;
-  for (int k = 0; k < n; ++k) {
-    if (k % hold == 0) level = (rng() & 1) ? 1.0 : -1.0;
-    u[k] = level;
-  }
-  return u;
-}
 
 ParameterTrajectory<double> constant(const Eigen::VectorXd& theta) {
   return [theta](double, Eigen::VectorXd& out) { out = theta; };

@@ -20,17 +20,7 @@
 namespace ctid {
 namespace {
 
-// Random binary input held for `hold` samples.
-std::vector<double> binary_input(int n, int hold, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::vector<double> u(n);
-  double level = 1;
-  for (int k = 0; k < n; ++k) {
-    if (k % hold == 0) level = (rng() & 1) ? 1.0 : -1.0;
-    u[k] = level;
-  }
-  return u;
-}
+using test::binary_input;
 
 std::vector<double> simulate_lti(const ModelOrders& orders,
                                  const Eigen::VectorXd& theta,

@@ -16,16 +16,7 @@
 namespace ctid {
 namespace {
 
-std::vector<double> binary_input(int n, int hold, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::vector<double> u(n);
-  double level = 1;
-  for (int k = 0; k < n; ++k) {
-    if (k % hold == 0) level = (rng() & 1) ? 1.0 : -1.0;
-    u[k] = level;
-  }
-  return u;
-}
+using test::binary_input;
 
 // A band-pass b0 p / (p^2 + a1 p + a2) with its resonance at 1e3 rad/s
 // (eq. 4.1 scaled down): the regressors [-y_f', -y_f, u_f'] span three

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <random>
 #include <string>
+#include <vector>
 
 namespace ctid::test {
 
@@ -48,6 +50,19 @@ inline std::string scientific(double value) {
 inline double relative_error(const Eigen::VectorXd& a,
                              const Eigen::VectorXd& b) {
   return (a - b).norm() / b.norm();
+}
+
+// Random binary input (levels +-1) held for `hold` samples, from the raw
+// mt19937 stream (the same on every platform).
+inline std::vector<double> binary_input(int n, int hold, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::vector<double> u(n);
+  double level = 1;
+  for (int k = 0; k < n; ++k) {
+    if (k % hold == 0) level = (rng() & 1) ? 1.0 : -1.0;
+    u[k] = level;
+  }
+  return u;
 }
 
 }  // namespace ctid::test
