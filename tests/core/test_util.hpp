@@ -7,8 +7,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
