@@ -38,11 +38,7 @@
 ## @end deftypefn
 
 function demo_ch2_different_rates (outdir = "results", nruns = 100)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
 
   Ts = 0.01;

@@ -37,20 +37,11 @@
 ## @end deftypefn
 
 function demo_ch2_similar_rates (outdir = "results", nruns = 100)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
 
-  Ts = 0.1;
-  t = (0:Ts:9000)';
+  [Ts, t, theta, u] = ch2_example_235 ();     # [a1 a2 b0], eq. (1.62)
   N = numel (t);
-  wn = 2 * (1 + 0.3 * cos (2 * pi * t / 4500));
-  theta = [2 * 0.6 * wn, wn .^ 2, wn .^ 2];      # [a1 a2 b0], eq. (1.62)
-  u = prbs (15, 10);
-  u = u(1:N);
   x = simc (theta, [2 1 0], u, Ts);               # noise-free output
   sigma2 = 0.05;
   snr = 10 * log10 (mean (x .^ 2) / sigma2);

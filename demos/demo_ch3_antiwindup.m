@@ -37,20 +37,11 @@
 ## @end deftypefn
 
 function res = demo_ch3_antiwindup (outdir = "results", nruns = 20)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
 
-  Ts = 0.1;
-  t = (0:Ts:9000)';
+  [Ts, t, theta, u] = ch2_example_235 ();     # [a1 a2 b0], eq. (1.62)
   N = numel (t);
-  wn = 2 * (1 + 0.3 * cos (2 * pi * t / 4500));
-  theta = [2 * 0.6 * wn, wn .^ 2, wn .^ 2];       # [a1 a2 b0]
-  u = prbs (15, 10);
-  u = u(1:N);
   t_poor = 6000;
   u(t >= t_poor) = 1;
   x = simc (theta, [2 1 0], u, Ts);

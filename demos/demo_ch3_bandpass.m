@@ -42,11 +42,7 @@
 ## @end deftypefn
 
 function res = demo_ch3_bandpass (outdir = "results", full = true)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
 
   est = ch3_bandpass_record (1, 0);

@@ -50,11 +50,7 @@
 
 function res = demo_ch3_hyperparameters (outdir = "results", nruns = 20,
                                          segs = [5 10 20], sweep = true)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   warning ("off", "Octave:gnuplot-graphics");
   graphics_toolkit ("gnuplot");
   t_all = tic;

@@ -34,11 +34,7 @@
 ## @end deftypefn
 
 function res = demo_ch3_initial_conditions (outdir = "results")
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
 
   Ts = 0.01;

@@ -38,11 +38,7 @@
 ## @end deftypefn
 
 function res = demo_ch3_qn_ml (outdir = "results", nseeds = 50, nsens = 20)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
 
   Ts = 0.025;

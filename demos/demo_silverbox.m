@@ -31,11 +31,7 @@
 ## @end deftypefn
 
 function R = demo_silverbox (outdir = "results", reduced = false)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   root = fullfile (here, "..", "..", "shared", "data", "silverbox");
   if (! exist (root, "dir"))
     root = fullfile ("..", "shared", "data", "silverbox");

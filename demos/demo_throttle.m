@@ -32,11 +32,7 @@
 ## @end deftypefn
 
 function demo_throttle (outdir = "results", nruns = 100)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   t_all = tic;
   deg = 180 / pi;
   tsiv = 5;
@@ -215,7 +211,7 @@ function claim = write_table (file, names, E, Eavg, E0, nruns, sim, sat,
   pre = Em(1:2, 3);
   better = sum (E(:, 2, 2) < E(:, 2, 1));
   reproduced = rls(2) > 3 * iv(2) && all (iv < 5);
-  claim = ifelse_str (reproduced, "reproduced", "not reproduced");
+  claim = ch2_ifelse_str (reproduced, "reproduced", "not reproduced");
   fprintf (fid, ["\n### The thesis' statement\n\n", ...
                  "*\"While for RLSSVF there is a significant tracking ", ...
                  "error, for CLRSRIVC the estimates are very close to the ", ...
@@ -246,7 +242,7 @@ function claim = write_table (file, names, E, Eavg, E0, nruns, sim, sat,
                  "CLRSRIVC's advantage over RLSSVF comes from the ", ...
                  "prefilter the thesis chose rather than from the ", ...
                  "instruments.\n\n"],
-           ifelse_str (all (pre <= iv), "as well as or slightly better than",
+           ch2_ifelse_str (all (pre <= iv), "as well as or slightly better than",
                        "about as well as"), pre, iv);
   bad = find (thm1(:, 1, 2) <= 0 | thm1(:, 2, 2) < 0);
   fprintf (fid, ["Run 1: the auxiliary model refused %d estimates as ", ...
@@ -256,12 +252,4 @@ function claim = write_table (file, names, E, Eavg, E0, nruns, sim, sat,
   endif
   fprintf (fid, ".\n");
   fclose (fid);
-endfunction
-
-function s = ifelse_str (c, a, b)
-  if (c)
-    s = a;
-  else
-    s = b;
-  endif
 endfunction

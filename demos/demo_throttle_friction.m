@@ -54,11 +54,7 @@
 ## @end deftypefn
 
 function res = demo_throttle_friction (outdir = "results", varargin)
-  here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
-  if (! exist (outdir, "dir"))
-    mkdir (outdir);
-  endif
+  here = demo_prepare (outdir);
   opts = struct ("levels", [1e-8, 1e-3], "durations", [60 40], "trace", true);
   for k = 1:2:numel (varargin)
     opts.(varargin{k}) = varargin{k+1};
@@ -227,7 +223,7 @@ function write_table (file, res)
       fprintf (fid, ["At noise variance %g SRIVC did not converge in 20 ", ...
                      "iterations for the model with sign(omega) (%s ", ...
                      "omega); the last iterate is shown.\n\n"],
-               k.noisevar, ifelse_str (! k.converged(1), "true", "SVF"));
+               k.noisevar, ch2_ifelse_str (! k.converged(1), "true", "SVF"));
     endif
   endfor
   if (res.has_residtrace && ! res.traced)
@@ -243,16 +239,8 @@ function write_table (file, res)
     found = strcmp (res.case(1).effect, "coulomb");
     fprintf (fid, ["At noise variance %g `residtrace` %s the Coulomb ", ...
                    "friction (top effect '%s').\n"], res.case(1).noisevar,
-             ifelse_str (found, "**finds**", "**does not find**"),
+             ch2_ifelse_str (found, "**finds**", "**does not find**"),
              res.case(1).effect);
   endif
   fclose (fid);
-endfunction
-
-function s = ifelse_str (c, a, b)
-  if (c)
-    s = a;
-  else
-    s = b;
-  endif
 endfunction
