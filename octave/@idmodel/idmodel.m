@@ -49,7 +49,10 @@ function M = idmodel (kind, par, ny, nu)
                      "DataUsed", struct ("Length", [], "Ts", [],
                                          "InterSample", ""));
   s.cov = [];
-  s.legacy = struct ("theta", [], "covariance", []);
+  ## CONTSID idctm data that have no SITB property: theta and covariance
+  ## of a model with more parameters than its polynomials (residtrace),
+  ## delays in samples without the data's sampling interval.
+  s.legacy = struct ("theta", [], "covariance", [], "nk", []);
   M = class (s, "idmodel");
 endfunction
 

@@ -43,7 +43,10 @@ function v = get_prop (M, name)
             v = M.cov(k, k);
           endif
         case "nk"
-          v = delays_in_samples (M);
+          v = M.legacy.nk;
+          if (isempty (v))
+            v = delays_in_samples (M);
+          endif
         case "noise_variance"
           v = M.NoiseVariance;
         case "method"
@@ -80,17 +83,6 @@ function v = get_prop (M, name)
     otherwise
       v = p.(name);
   endswitch
-endfunction
-
-## CONTSID's theta order: the denominator(s), then the numerators.
-function k = legacy_order (M)
-  p = M.par;
-  na = numel (p.A) - 1;
-  nb = sum (cellfun ("numel", p.B));
-  nc = numel (p.C) - 1;
-  nd = numel (p.D) - 1;
-  nf = sum (cellfun ("numel", p.F) - 1);
-  k = [1:na, na+nb+nc+nd+(1:nf), na+(1:nb)];
 endfunction
 
 function nk = delays_in_samples (M)

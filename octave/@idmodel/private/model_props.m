@@ -8,15 +8,15 @@ function [names, readonly] = model_props (kind)
   common = {"Ts", "TimeUnit", "InputDelay", "InputName", "InputUnit", ...
             "OutputName", "OutputUnit", "Name", "Notes", "UserData", ...
             "NoiseVariance", "Report"};
-  readonly = {"Report"};
+  readonly = {};
   switch (kind)
     case "idpoly"
       own = {"A", "B", "C", "D", "F", "IODelay", "Variable"};
-      ## CONTSID's idctm fields, read-only aliases of the above.
+      ## CONTSID's idctm fields, aliases of the above (see set_prop).
       legacy = {"theta", "covariance", "nk", "noise_variance", "method", ...
                 "iterations", "converged", "InterSample"};
       own = [own, legacy];
-      readonly = [readonly, {"Variable"}, legacy];
+      readonly = [readonly, {"Variable"}];
     case "idtf"
       own = {"Numerator", "Denominator", "IODelay", "Variable"};
       readonly = [readonly, {"Variable"}];

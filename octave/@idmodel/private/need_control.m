@@ -6,7 +6,8 @@
 ## @end deftypefn
 
 function need_control (fname)
-  if (exist ("__control_slicot_functions__") || exist ("isct") == 2)
+  if (any (cellfun (@(p) strcmp (p.name, "control") && p.loaded,
+                    pkg ("list"))))
     return;
   endif
   try

@@ -44,6 +44,27 @@ function M = set_prop (M, name, v, fname)
       M.(name) = v;
     case {"Notes", "UserData"}
       M.(name) = v;
+    case "Report"
+      M.Report = merge_report (M.Report, v, fname);
+    case "noise_variance"
+      M = set_prop (M, "NoiseVariance", v, fname);
+    case "method"
+      M.Report.Method = check_string (v, name, fname);
+      if (! isempty (v))
+        M.Report.Status = sprintf ("Estimated using %s", upper (v));
+      endif
+    case "iterations"
+      M.Report.Termination.Iterations = v;
+    case "converged"
+      M.Report.Termination.Converged = logical (v);
+    case "InterSample"
+      M.Report.DataUsed.InterSample = check_string (v, name, fname);
+    case "nk"
+      M = set_nk (M, v, fname);
+    case "theta"
+      M = set_theta (M, v, fname);
+    case "covariance"
+      M = set_covariance (M, v, fname);
     case "NoiseVariance"
       if (! isnumeric (v) || ! isreal (v) || ! isequal (size (v), [M.ny M.ny])
           || any (! isfinite (v(:))) || any (diag (v) < 0))
@@ -57,7 +78,8 @@ function M = set_prop (M, name, v, fname)
   endswitch
   if (numel (pvec_of (M)) != np_before)
     M.cov = [];
-    M.legacy = struct ("theta", [], "covariance", []);
+    M.legacy.theta = [];
+    M.legacy.covariance = [];
   endif
 endfunction
 
@@ -155,6 +177,85 @@ function p = set_own (M, name, v, fname)
           p.(name) = v;
       endswitch
   endswitch
+endfunction
+
+function s = check_string (v, name, fname)
+  if (! ischar (v))
+    error ([fname ":badInput"], "%s: %s must be a string", fname, name);
+  endif
+  s = v;
+endfunction
+
+function r = merge_report (r, v, fname)
+  if (! isstruct (v) || ! isscalar (v))
+    error ([fname ":badInput"], "%s: Report must be a scalar struct", fname);
+  endif
+  for f = fieldnames (v).'
+    if (! isfield (r, f{1}))
+      error ([fname ":badInput"], "%s: Report has no field '%s'", fname,
+             f{1});
+    endif
+    if (isstruct (r.(f{1})) && isstruct (v.(f{1})))
+      for g = fieldnames (v.(f{1})).'
+        r.(f{1}).(g{1}) = v.(f{1}).(g{1});
+      endfor
+    else
+      r.(f{1}) = v.(f{1});
+    endif
+  endfor
+endfunction
+
+## CONTSID's nk: input delays in samples of the estimation data.
+function M = set_nk (M, v, fname)
+  if (! isnumeric (v) || numel (v) != M.nu || any (v != fix (v)) || any (v < 0))
+    error ([fname ":badInput"], "%s: nk must be one integer >= 0 per input",
+           fname);
+  endif
+  v = double (v(:).');
+  Ts = M.Report.DataUsed.Ts;
+  if (M.Ts > 0)
+    M.InputDelay = v(:);
+  elseif (! isempty (Ts))
+    M.InputDelay = v(:) * Ts;
+  elseif (any (v))
+    M.legacy.nk = v;
+  endif
+endfunction
+
+## CONTSID's theta [denominators, numerators]; a longer theta (a model
+## with extra terms, residtrace) is only stored.
+function M = set_theta (M, v, fname)
+  if (! isnumeric (v) || ! isreal (v) || ! (isvector (v) || isempty (v)))
+    error ([fname ":badInput"], "%s: theta must be a real vector", fname);
+  endif
+  k = legacy_order (M);
+  if (numel (v) == numel (k))
+    p = pvec_of (M);
+    p(k) = v(:);
+    M = pvec_set (M, p);
+    M.legacy.theta = [];
+  else
+    M.legacy.theta = double (v(:).');
+  endif
+endfunction
+
+function M = set_covariance (M, v, fname)
+  if (! isnumeric (v) || ! isreal (v) || rows (v) != columns (v))
+    error ([fname ":badInput"], "%s: covariance must be a square matrix",
+           fname);
+  endif
+  k = legacy_order (M);
+  if (rows (v) == numel (k) && isempty (M.legacy.theta))
+    C = zeros (numel (k));
+    C(k, k) = v;
+    M.cov = C;
+    M.legacy.covariance = [];
+  elseif (isempty (v))
+    M.cov = [];
+    M.legacy.covariance = [];
+  else
+    M.legacy.covariance = double (v);
+  endif
 endfunction
 
 function d = check_delay (v, sz, name, fname, Ts)
