@@ -89,7 +89,9 @@ function k = trace_case (noisevar, Ts, plot_it, outdir, durations, use_trace)
   [data, dev_e] = deviations (est);
   [datav, dev_v] = deviations (val);
   M = srivc (data, [1 2 0], "lambda", 10);
-  [yh, fit, ~, rmse] = comparec (datav, M);
+  [yh, info] = comparec (datav, M);
+  fit = info.Fit;
+  rmse = info.RMSE;
 
   ## Answer key: the missing term of (4.17) as a second input.
   lam = 50;
@@ -184,7 +186,8 @@ function [Ma, rmse, yh] = augmented (data, datav, w_e, w_v)
   de = iddata (data.y, [data.u, sign(w_e)], Ts, "InterSample", "zoh");
   dv = iddata (datav.y, [datav.u, sign(w_v)], Ts, "InterSample", "zoh");
   Ma = srivc (de, [1 1 2 0 0], "lambda", 10);
-  [yh, ~, ~, rmse] = comparec (dv, Ma);
+  [yh, info] = comparec (dv, Ma);
+  rmse = info.RMSE;
 endfunction
 
 function write_table (file, res)

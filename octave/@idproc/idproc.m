@@ -66,7 +66,7 @@ endfunction
 ## here through a model of that type.
 function names = proc_names_ (type)
   if (isempty (regexp (type, '^P[0-3][DZUI]*$', "once"))
-      || numel (unique (type(3:end))) != numel (type) - 2
+      || numel (unique (double (type(3:end)))) != numel (type) - 2
       || (any (type == "U") && type(2) < "2"))
     error ("idproc:badInput",
            ["idproc: Type must be 'P', 0-3 poles and any of D, Z, U, I ", ...

@@ -15,7 +15,7 @@ function [names, np, flags] = proc_names (type)
   endif
   np = t(2) - "0";
   letters = t(3:end);
-  if (numel (unique (letters)) != numel (letters))
+  if (numel (unique (double (letters))) != numel (letters))
     error ("idproc:badInput", "idproc: a letter repeated in Type '%s'", type);
   endif
   flags = struct ("D", any (letters == "D"), "Z", any (letters == "Z"),
