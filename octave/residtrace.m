@@ -784,7 +784,8 @@ endfunction
 %! assert (R.rmse_refit < 0.1);
 
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts))
-%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), tf (1, [1 1]))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), idss (-1, 1, 1, 0))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), iddata (x, u, Ts))
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts), struct ("B", 1, "F", [1 1]))
 %!error id=residtrace:badInput residtrace (iddata (NaN (N, 1), u, Ts), G)
 %!error id=residtrace:badInput residtrace (iddata (x(1:60), u(1:60), Ts), G)
