@@ -28,7 +28,7 @@ endfunction
 %!test
 %! t = present (idtf (2, [1 3 2]));
 %! assert (isempty (strfind (t, "+/-")));
-%!error <Invalid call> present ()
+%!error <called with too many inputs> present (idtf (1, [1 1]), 2)
 
 %!demo
 %! M = setcov (idtf (2, [1 3]), diag ([0.04 0.01]));

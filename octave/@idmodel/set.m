@@ -33,7 +33,11 @@ endfunction
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "IODelay")
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "IODelay", -2)
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "Denominator", [2 3 2])
-%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Ts", 0.1)
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "InputName", {"a", "b"})
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Ts", -0.1)
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Report", 3)
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Report", struct ("Nothing", 1))
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "NoiseVariance", -1)
 
 %!demo
 %! M = set (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), "InputDelay", 0.3)
