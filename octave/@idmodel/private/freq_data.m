@@ -15,14 +15,20 @@ function [H, w, sdmag, sdph] = freq_data (sys, w, fname)
       if (strcmp (P.kind, "idfrd"))
         w = P.par.Frequency;
       else
-        w = default_w (lti_of (P, "tf", fname), P.Ts);
+        if (strcmp (P.kind, "idss"))
+          [num, den] = deal ({0}, {poly(P.par.A)});
+        else
+          [num, den] = tf_parts (P);
+        endif
+        w = default_w (num, den, P.Ts);
       endif
     endif
     H = freqresp (sys, w);
   else
     P = [];
     if (isempty (w))
-      w = default_w (sys, max (get (sys, "tsam"), 0));
+      [num, den] = tfdata (sys);
+      w = default_w (num, den, max (get (sys, "tsam"), 0));
     endif
     H = reshape (freqresp (sys, w), size (sys, 1), size (sys, 2), []);
   endif
@@ -48,8 +54,11 @@ function [H, w, sdmag, sdph] = freq_data (sys, w, fname)
   endif
 endfunction
 
-function w = default_w (G, Ts)
-  r = abs ([pole(G); zero(G)]);
+function w = default_w (num, den, Ts)
+  r = [];
+  for k = 1:numel (num)
+    r = [r; abs(roots (num{k})); abs(roots (den{k}))];
+  endfor
   if (Ts > 0)
     r = abs (log (r(r > 0))) / Ts;
   endif
