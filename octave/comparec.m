@@ -68,7 +68,8 @@ function [ys, estInfo] = comparec (varargin)
   yh = yhat(idx, :);
   e = y - yh;
   info.RT2 = 1 - var (e, 1) ./ var (y, 1);
-  info.Fit = 100 * (1 - sqrt (sum (e .^ 2)) ./ sqrt (sum ((y - mean (y)) .^ 2)));
+  info.Fit = 100 * (1 - sqrt (sum (e .^ 2))
+                     ./ sqrt (sum ((y - mean (y)) .^ 2)));
   info.MSE = mean (e .^ 2);
   info.RMSE = sqrt (info.MSE);
   if (nargout > 0)

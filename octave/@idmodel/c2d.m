@@ -26,8 +26,8 @@ function Md = c2d (M, Ts, method)
   nk = round (delay / Ts);
   if (any (abs (nk(:) - delay(:) / Ts) > 1e-9 * max (1, abs (nk(:)))))
     error ("c2d:notSupported",
-           "c2d: the delays %s s are not multiples of Ts = %g", mat2str (delay, 4),
-           Ts);
+           "c2d: the delays %s s are not multiples of Ts = %g",
+           mat2str (delay, 4), Ts);
   endif
   Gd = c2d (G, Ts, method);
   Md = back (P, Gd, nk);

@@ -30,7 +30,8 @@ endfunction
 %! Mc = d2c (M);
 %! assert (Mc.Denominator{1}, [1, -log(0.9) / Ts], 1e-9);
 %! assert (Mc.IODelay, 0.2, 1e-12);
-%! assert (polyval (Mc.Numerator{1}, 0) / polyval (Mc.Denominator{1}, 0), 1, 1e-9);
+%! g = polyval (Mc.Numerator{1}, 0) / polyval (Mc.Denominator{1}, 0);
+%! assert (g, 1, 1e-9);
 %!error id=d2c:badInput d2c (idtf (1, [1 1]))
 
 %!demo

@@ -10,8 +10,9 @@
 
 function [p, sd] = getpvec (M, varargin)
   P = pstruct (M);
-  if (! isempty (varargin) && ! (ischar (varargin{1})
-                                 && any (strcmpi (varargin{1}, {"free", "all"}))))
+  if (! isempty (varargin)
+      && ! (ischar (varargin{1})
+            && any (strcmpi (varargin{1}, {"free", "all"}))))
     error ([P.kind ":badInput"], "%s: getpvec's option is 'free' or 'all'",
            P.kind);
   endif
@@ -24,7 +25,8 @@ function [p, sd] = getpvec (M, varargin)
 endfunction
 
 %!test
-%! assert (getpvec (idpoly (1, [3 4], 1, 1, [1 1.2 2], "Ts", 0)), [3; 4; 1.2; 2]);
+%! M = idpoly (1, [3 4], 1, 1, [1 1.2 2], "Ts", 0);
+%! assert (getpvec (M), [3; 4; 1.2; 2]);
 %! assert (getpvec (idtf (2, [1 3 2])), [2; 3; 2]);
 %! [p, sd] = getpvec (idtf (2, [1 3 2]));
 %! assert (all (isnan (sd)));

@@ -37,7 +37,9 @@ function M = idmodel (kind, par, ny, nu)
   s.Notes = {};
   s.UserData = [];
   s.NoiseVariance = eye (ny);
-  s.Report = struct ("Status", "Created by direct construction or transformation. Not estimated.",
+  status = ["Created by direct construction or transformation. ", ...
+            "Not estimated."];
+  s.Report = struct ("Status", status,
                      "Method", "",
                      "Fit", struct ("FitPercent", [], "LossFcn", [],
                                     "MSE", [], "FPE", [], "AIC", [],

@@ -17,8 +17,10 @@ function f = ifelse_ss (P)
 endfunction
 
 %!test
-%! assert (sort (pole (idpoly (1, 2, 1, 1, [1 3 2], "Ts", 0))), [-2; -1], 1e-12);
-%! assert (sort (pole (idss (diag ([-1 -3]), [1; 1], [1 1], 0))), [-3; -1], 1e-12);
+%! p = pole (idpoly (1, 2, 1, 1, [1 3 2], "Ts", 0));
+%! assert (sort (p), [-2; -1], 1e-12);
+%! p = pole (idss (diag ([-1 -3]), [1; 1], [1 1], 0));
+%! assert (sort (p), [-3; -1], 1e-12);
 %!error id=idfrd:notSupported pole (idfrd (1, 1))
 
 %!demo

@@ -69,7 +69,8 @@ function M = idpoly (varargin)
   [A, B, C, D, F, lambda, Ts] = pos{:};
   pairs = varargin(npos+1:end);
   if (mod (numel (pairs), 2) != 0)
-    error ("idpoly:badInput", "idpoly: properties must come in name-value pairs");
+    error ("idpoly:badInput",
+           "idpoly: properties must come in name-value pairs");
   endif
   if (iscell (B))
     nu = numel (B);

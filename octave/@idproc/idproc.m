@@ -41,7 +41,8 @@ function M = idproc (varargin)
   names = proc_names_ (type);
   pairs = varargin(2:end);
   if (mod (numel (pairs), 2) != 0)
-    error ("idproc:badInput", "idproc: properties must come in name-value pairs");
+    error ("idproc:badInput",
+           "idproc: properties must come in name-value pairs");
   endif
   S = struct ();
   for i = 1:numel (names)

@@ -66,7 +66,8 @@ function M = idss (varargin)
       || ! isequal (size (D), [rows(C), columns(B)])
       || ! isequal (size (K), [n, rows(C)]) || numel (x0) != n)
     error ("idss:dimensionMismatch",
-           "idss: A (n-by-n), B (n-by-nu), C (ny-by-n), D (ny-by-nu), K, x0 do not fit");
+           ["idss: A (n-by-n), B (n-by-nu), C (ny-by-n), D (ny-by-nu), ", ...
+            "K, x0 do not fit"]);
   endif
   par = struct ("A", double (A), "B", double (B), "C", double (C),
                 "D", double (D), "K", double (K), "x0", double (x0(:)),

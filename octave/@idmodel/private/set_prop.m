@@ -336,8 +336,8 @@ function s = check_structure (s, old, fname)
              fname, f{1});
     endif
     if (! isnumeric (e.Value) || ! isscalar (e.Value) || ! isreal (e.Value))
-      error ([fname ":badInput"], "%s: Structure.%s.Value must be a real scalar",
-             fname, f{1});
+      error ([fname ":badInput"],
+             "%s: Structure.%s.Value must be a real scalar", fname, f{1});
     endif
     if (! isnan (e.Value) && (e.Value < e.Minimum || e.Value > e.Maximum))
       error ([fname ":badInput"],
