@@ -38,3 +38,9 @@ endfunction
 %!error id=idpoly:badInput M = idpoly (1, 2, 1, 1, [1 1]); M.bogus = 1;
 %!error id=idpoly:notSupported M = idpoly (1, 2, 1, 1, [1 1]); M(1) = 1;
 %!error id=idproc:badInput P = idproc ("P1D"); P.Td = -1;
+
+%!demo
+%! init_sys = idproc ("P2DU");
+%! init_sys.Structure.Td.Value = 0.2;
+%! init_sys.Structure.Td.Maximum = 1;
+%! init_sys

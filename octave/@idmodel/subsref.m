@@ -29,3 +29,7 @@ endfunction
 %! assert (isnan (P.structure.Td.Value));
 %!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], "Ts", 0).nothing
 %!error id=idpoly:notSupported subsref (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), struct ("type", "()", "subs", {{1}}))
+
+%!demo
+%! M0 = idpoly (1, [1 4], 1, 1, [1 2.4 4], "Ts", 0);
+%! B = M0.B, F = M0.F, fit = M0.Report.Fit.FitPercent

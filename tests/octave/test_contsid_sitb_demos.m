@@ -63,8 +63,12 @@ function tutorial_srivc ()
   figure; pzmap (Msrivc);
   Mtf = idtf (Msrivc);
   assert (getpvec (Mtf), getpvec (Msrivc), 1e-12);
-  Msrivc.Report.Fit.FitPercent;
-  Msrivc.Report.Fit.LossFcn;
+  ## Report.Fit of the estimator = comparec's figures on the estimation data
+  [~, est] = comparec (data_est, Msrivc);
+  printf ("tutorial: Report.Fit.FitPercent %.4f, comparec %.4f\n",
+          Msrivc.Report.Fit.FitPercent, est.Fit);
+  assert (Msrivc.Report.Fit.FitPercent, est.Fit, 1e-6);
+  assert (Msrivc.Report.Fit.MSE, est.MSE, 1e-9 * est.MSE);
   damp (Msrivc);
 endfunction
 
