@@ -63,11 +63,17 @@ function test_contsid_sitb_models ()
   R = 40;
   P = zeros (R, 3);
   SD = zeros (R, 3);
+  wb = [0.5; 1.4; 3];                  # below, at and above the resonance
+  MAG = zeros (R, 3);
+  SDMAG = zeros (R, 3);
   randn ("state", 11);
   for r = 1:R
     Me = srivc (iddata (x + 0.1 * randn (N, 1), u, Ts), [1 2 0],
                 "lambda", 2);
     [P(r, :), SD(r, :)] = getpvec (Me);
+    [m, ~, ~, sdm] = bode (Me, wb);
+    MAG(r, :) = squeeze (m).';
+    SDMAG(r, :) = squeeze (sdm).';
   endfor
   assert (SD(end, :).', sqrt (diag (getcov (Me))), 0);
   txt = present (Me);
@@ -80,6 +86,10 @@ function test_contsid_sitb_models ()
   ## 40 runs: the sample std has about 11 %% relative error (1 sigma).
   assert (all (ratio > 0.6 & ratio < 1.6));
   assert (abs (mean (P) - [2 1.2 2]) < 3 * std (P) / sqrt (R));
+  ## bode's 'sd' band: spread of |G(jw)| against the propagated sd
+  ratio = std (MAG) ./ mean (SDMAG);
+  printf ("Monte Carlo: spread of |G| / bode's sd = %.2f %.2f %.2f\n", ratio);
+  assert (all (ratio > 0.6 & ratio < 1.6));
 
   ## identified errors
   expect_error ("idpoly:badInput", @() idpoly (1, 2, 1, 1, [2 1], "Ts", 0));
