@@ -9,8 +9,10 @@
 ## @end example
 ## @var{B}: numerator rows (a cell array of rows for several inputs);
 ## @var{F}: denominator, normalised to be monic (B with it).  With several
-## inputs and one F the common denominator becomes the idpoly's A (and its
-## F's are 1); a cell of F's gives one denominator per input.
+## inputs and one F the idpoly gets that F for every input (CONTSID's
+## form, y = sum_j B_j/F u_j + e; theta and covariance count it once, the
+## SITB parameter vector once per input); a cell of F's gives one
+## denominator per input.
 ##
 ## Name-value pairs, or the fields of a struct @var{s}: @code{nk} (delays
 ## in samples), @code{Ts} (sampling interval of the estimation data:
@@ -91,12 +93,7 @@ function M = idctm (varargin)
     endif
   endfor
   F = cellfun (@(f) double (f(:).') / f(1), F, "UniformOutput", false);
-  nu = numel (B);
-  if (common && nu > 1)
-    M = idpoly (F{1}, B, 1, 1, repmat ({1}, 1, nu), 1, 0);
-  else
-    M = idpoly (1, B, 1, 1, F, 1, 0);
-  endif
+  M = idpoly (1, B, 1, 1, F, 1, 0);
   rep = struct ();
   if (isfield (s, "Ts") && ! isempty (s.Ts))
     rep.DataUsed = struct ("Ts", s.Ts);
@@ -128,8 +125,13 @@ endfunction
 %! M = idctm ({1, [1 2]}, [1 3 2], "nk", [0 1], "Ts", 0.1);
 %! assert (M.nk, [0 1]);
 %! assert (M.InputDelay, [0; 0.1]);
-%! assert (M.A, [1 3 2]);
+%! assert (M.F, {[1 3 2], [1 3 2]});
 %! assert (M.theta, [3 2 1 1 2]);
+%! C = diag ([1 2 3 4 5]);
+%! M = idctm (struct ("B", {{1, [1 2]}}, "F", [1 3 2], "covariance", C));
+%! assert (M.covariance, C, 1e-12);
+%! [~, sd] = getpvec (M);             # pvec [b1 b2 f(u1) f(u2)]
+%! assert (sd.^2, [3 4 5 1 2 1 2]', 1e-12);
 
 %!test  # the covariance, given in [f b] order, is SITB's in [b f] order
 %! C = [4 1 0; 1 9 0; 0 0 16];

@@ -96,7 +96,7 @@ function canning ()
   Ts = 0.1;
   N = 3000;
   U = [prbs(10, 3)(1:N), prbs(11, 2)(1:N), prbs(9, 6)(1:N)];
-  M0 = idpoly ([1 1.5 0.8], {0.8, 0.5, [0.3 0.4]}, 1, 1, {1, 1, 1}, 0, 0);
+  M0 = idpoly (1, {0.8, 0.5, [0.3 0.4]}, 1, 1, [1 1.5 0.8], 0, 0);
   present (M0);
   ydet = simc (M0, input_data (U, Ts, "InterSample", {"zoh"; "zoh"; "zoh"}));
   y = ydet + 0.05 * std (ydet) * randn (N, 1);

@@ -34,12 +34,13 @@ function v = get_prop (M, name)
         case "theta"
           v = M.legacy.theta;
           if (isempty (v))
-            v = pvec_of (M)(legacy_order (M)).';
+            p = pvec_of (M);
+            v = p(first_rows (legacy_order (M))).';
           endif
         case "covariance"
           v = M.legacy.covariance;
           if (isempty (v) && ! isempty (M.cov))
-            k = legacy_order (M);
+            k = first_rows (legacy_order (M));
             v = M.cov(k, k);
           endif
         case "nk"
@@ -111,4 +112,9 @@ function s = ifelse_str (c, a, b)
   else
     s = b;
   endif
+endfunction
+
+## theta(i) is pvec(k(i)): the first parameter each column of T feeds.
+function k = first_rows (T)
+  [~, k] = max (T != 0, [], 1);
 endfunction

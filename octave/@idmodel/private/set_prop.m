@@ -228,11 +228,9 @@ function M = set_theta (M, v, fname)
   if (! isnumeric (v) || ! isreal (v) || ! (isvector (v) || isempty (v)))
     error ([fname ":badInput"], "%s: theta must be a real vector", fname);
   endif
-  k = legacy_order (M);
-  if (numel (v) == numel (k))
-    p = pvec_of (M);
-    p(k) = v(:);
-    M = pvec_set (M, p);
+  T = legacy_order (M);
+  if (numel (v) == columns (T))
+    M = pvec_set (M, T * double (v(:)));
     M.legacy.theta = [];
   else
     M.legacy.theta = double (v(:).');
@@ -244,11 +242,9 @@ function M = set_covariance (M, v, fname)
     error ([fname ":badInput"], "%s: covariance must be a square matrix",
            fname);
   endif
-  k = legacy_order (M);
-  if (rows (v) == numel (k) && isempty (M.legacy.theta))
-    C = zeros (numel (k));
-    C(k, k) = v;
-    M.cov = C;
+  T = legacy_order (M);
+  if (rows (v) == columns (T) && isempty (M.legacy.theta))
+    M.cov = T * double (v) * T.';
     M.legacy.covariance = [];
   elseif (isempty (v))
     M.cov = [];
