@@ -510,6 +510,12 @@ endfunction
 %! yc = lsim (c2d (tf (2, [1 3 2]), Ts, "zoh"), u, t);
 %! assert (yg, [0; 0; 0; yc(1:end-3)], 1e-10);
 
+%!test  # a two-output idtf: one column per output
+%! u = prbs (6, 3); Ts = 0.1;
+%! y = simc (idtf ({1; 2}, {[1 1]; [1 2]}), u, Ts);
+%! assert (y, [simc(idtf (1, [1 1]), u, Ts), simc(idtf (2, [1 2]), u, Ts)],
+%!         1e-14);
+
 %!test  # FOH on a ramp is exact: 1/(s+1) driven by u = t
 %! Ts = 0.2; t = (0:50)' * Ts;
 %! y = simc (idss (-1, 1, 1, 0), iddata (zeros (51, 0), t, Ts,
