@@ -12,12 +12,20 @@
 ## @strong{Model}
 ## @table @var
 ## @item M
-## a time-invariant model: an @code{idctm} (from @code{srivc}, @code{lssvf},
-## ...), or a struct with fields @code{B} (numerator
-## coefficients in descending powers of p; a cell array of rows for several
-## inputs), @code{F} (denominator, descending powers, normalised to be monic)
-## and optionally @code{nk} (input delay in samples); or a continuous-time
-## @code{tf} of the control package.
+## a continuous-time, time-invariant model: an @code{idpoly} (from
+## @code{srivc}, @code{lssvf}, ..., or built, e.g.
+## @code{idpoly (1, B, 1, 1, F, 0, 0, "InputDelay", [nk1 nk2] * Ts)}),
+## @code{idtf}, @code{idproc}, @code{idss} or @code{idctm}; a struct with
+## fields @code{B} (numerator coefficients in descending powers of p; a
+## cell array of rows for several inputs), @code{F} (denominator,
+## descending powers, normalised to be monic; one for all inputs or a cell
+## with one per input) and optionally @code{nk} (input delays in samples);
+## or a continuous-time @code{tf}/@code{ss} of the control package.
+## Delays (InputDelay, IODelay, Td) must be whole multiples of the
+## sampling interval.  Several outputs give one column each.  A model
+## with one output and one denominator takes every option below; other
+## models (several denominators or outputs, state space) take the noise
+## options only.
 ## @item THM, nn
 ## a model with time-varying parameters: @var{nn} = [na nb nk] as in
 ## @code{rlssvf}, and @var{THM} an N-by-np matrix of the parameters
@@ -26,8 +34,9 @@
 ## @var{thm} of a recursive estimator.
 ## @end table
 ##
-## @strong{Data}: an @code{iddata} object (its input, sampling and
-## InterSample are used) or numeric @var{u} (N-by-nu) and @var{Ts} (scalar)
+## @strong{Data}: an @code{iddata} object, input-only
+## (@code{iddata ([], u, Ts, "InterSample", "zoh")}) or with outputs (its
+## input, sampling and InterSample are used), or numeric @var{u} (N-by-nu) and @var{Ts} (scalar)
 ## or the N sampling instants.
 ##
 ## @strong{Options}
