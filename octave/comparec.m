@@ -143,7 +143,7 @@ endfunction
 %!error id=comparec:badInput comparec (iddata (x, u, Ts), M, 0:3)
 %!error id=comparec:badOption comparec (iddata (x, u, Ts), M, 1:3, "x")
 %!error id=comparec:dimensionMismatch comparec (iddata (x, u, Ts), idss (-1, 1, [1; 1], [0; 0]))
-%!error id=comparec:notSupported comparec (iddata (x, u, Ts), idtf (1, [1 1], "IODelay", 0.01))
+%!error id=comparec:notSupported comparec (iddata (x, u, (0:numel (u)-1)'.^1.01 * Ts), idtf (1, [1 1], "IODelay", 0.01))
 
 %!demo
 %! u = prbs (9, 8); Ts = 0.05; N = numel (u);

@@ -21,8 +21,9 @@
 ## descending powers, normalised to be monic; one for all inputs or a cell
 ## with one per input) and optionally @code{nk} (input delays in samples);
 ## or a continuous-time @code{tf}/@code{ss} of the control package.
-## Delays (InputDelay, IODelay, Td) must be whole multiples of the
-## sampling interval.  Several outputs give one column each.  A model
+## Delays (InputDelay, IODelay, Td) are exact, also between samples
+## (uniformly sampled data; the delayed ZOH or FOH input is integrated
+## piece by piece).  Several outputs give one column each.  A model
 ## with one output and one denominator takes every option below; other
 ## models (several denominators or outputs, state space) take the noise
 ## options only.
@@ -226,7 +227,7 @@ function [theta, orders, m] = read_model (fname, M, u, t)
   if (isscalar (t))
     Ts = t;
   endif
-  m = contsid_model (fname, M, Ts);
+  m = contsid_model (fname, M, Ts, ! isnan (Ts));
   theta = [];
   orders = [];
   if (m.Ts > 0)
@@ -238,7 +239,8 @@ function [theta, orders, m] = read_model (fname, M, u, t)
     error ("simc:dimensionMismatch",
            "simc: the model has %d input(s), the data %d", m.nu, columns (u));
   endif
-  if (strcmp (m.kind, "ss") || m.ny > 1 || ! m.common)
+  if (strcmp (m.kind, "ss") || m.ny > 1 || ! m.common
+      || any (m.nk(:) != fix (m.nk(:))))
     if (strcmp (m.kind, "tf"))
       check_orders (m);
     endif
@@ -297,6 +299,13 @@ function x = simulate_model (m, u, t, intersample, substeps)
       if (all (b == 0))
         continue;
       endif
+      if (m.nk(i, j) != fix (m.nk(i, j)))
+        ## a delay between samples: exact in state space
+        [a, bb, c, d] = canonical (b, m.F{i, j});
+        x(:, i) += contsid_ss_sim (a, bb, c, d, u(:, j), t, intersample,
+                                   m.nk(i, j));
+        continue;
+      endif
       orders = struct ("na", numel (m.F{i, j}) - 1, "nb", numel (b),
                        "nk", m.nk(i, j));
       x(:, i) += call_gateway (1, u(:, j), t, intersample, orders,
@@ -304,6 +313,18 @@ function x = simulate_model (m, u, t, intersample, substeps)
                                [], []);
     endfor
   endfor
+endfunction
+
+## Controllable canonical realisation of b(p) / f(p), f monic, deg b <=
+## deg f.
+function [a, b, c, d] = canonical (num, den)
+  n = numel (den) - 1;
+  num = [zeros(1, n + 1 - numel (num)), num];
+  d = num(1);
+  r = num(2:end) - d * den(2:end);     # strictly proper remainder
+  a = [-den(2:end); eye(n - 1, n)];
+  b = [1; zeros(n - 1, 1)];
+  c = r;
 endfunction
 
 ## Additive output noise of the SNR / noisevar / noise options, one
@@ -525,6 +546,24 @@ endfunction
 %! assert (y, [simc(idtf (1, [1 1]), u, Ts), simc(idtf (2, [1 2]), u, Ts)],
 %!         1e-14);
 
+%!test  # a delay between samples: the same as on a grid twice as fine
+%! ## (the input starts at rest, so that the FOH ramp before the first
+%! ## sample, one sampling interval long, is the same on both grids)
+%! Ts = 0.1; u = [zeros(3, 1); prbs(6, 3)]; n = numel (u);
+%! G = idtf ([1 4], [1 2.4 4], "IODelay", 0.25);
+%! for is = {"zoh", "foh"}
+%!   y = simc (G, u, Ts, "InterSample", is{1});
+%!   u2 = kron (u, [1; 1]);
+%!   if (strcmp (is{1}, "foh"))       # the piecewise-linear input, finer
+%!     u2 = interp1 ((0:n-1)', u, (0:2*n-1)' / 2, "linear", "extrap");
+%!     u2(end) = u(end);
+%!   endif
+%!   y2 = simc (idtf ([1 4], [1 2.4 4], "IODelay", 0.25), u2, Ts / 2,
+%!              "InterSample", is{1});
+%!   ## 0.25 s = 5 fine samples: integer there, fractional on Ts
+%!   assert (y, y2(1:2:end), 1e-10);
+%! endfor
+
 %!test  # FOH on a ramp is exact: 1/(s+1) driven by u = t
 %! Ts = 0.2; t = (0:50)' * Ts;
 %! y = simc (idss (-1, 1, 1, 0), iddata (zeros (51, 0), t, Ts,
@@ -534,7 +573,7 @@ endfunction
 %! assert (y2, t - 1 + exp (-t), 1e-12);
 
 %!error id=simc:notSupported simc (idpoly (1, [0 1], 1, 1, [1 -0.5], 1, 0.1), ones (5, 1), 0.1)
-%!error id=simc:notSupported simc (idtf (1, [1 1], "IODelay", 0.15), ones (5, 1), 0.1)
+%!error id=simc:notSupported simc (idtf (1, [1 1], "IODelay", 0.15), ones (5, 1), [0 0.1 0.2 0.4 0.5])
 %!error id=simc:dimensionMismatch simc (idtf (1, [1 1]), ones (5, 2), 0.1)
 %!error id=simc:badInput simc (idproc ("P1"), ones (5, 1), 0.1)
 %!error id=simc:notSupported simc (idfrd (1, 1), ones (5, 1), 0.1)

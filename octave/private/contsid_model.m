@@ -1,6 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{m} =} contsid_model (@var{fname}, @var{M})
 ## @deftypefnx {} {@var{m} =} contsid_model (@var{fname}, @var{M}, @var{Ts})
+## @deftypefnx {} {@var{m} =} contsid_model (@var{fname}, @var{M}, @var{Ts}, @var{fractional})
 ## Reads a time-invariant model for the front-end @var{fname}: the one
 ## place where simc, comparec, residc, residtrace, bode4frozensys and
 ## bandwidthc learn what a model is.  @var{M} may be an @code{idpoly},
@@ -41,9 +42,12 @@
 ## not a whole number of samples of @var{Ts}).
 ## @end deftypefn
 
-function m = contsid_model (fname, M, Ts)
+function m = contsid_model (fname, M, Ts, fractional)
   if (nargin < 3)
     Ts = [];
+  endif
+  if (nargin < 4)
+    fractional = false;
   endif
   m = struct ("kind", "tf", "ny", 1, "nu", 0, "B", {{}}, "F", {{}},
               "common", true, "a", [], "b", [], "c", [], "d", [],
@@ -138,7 +142,7 @@ function m = contsid_model (fname, M, Ts)
     m = normalise_tf (fname, m);
   endif
   if (! isempty (Ts) && isempty (m.nk))
-    m.nk = samples (fname, m.delay, Ts);
+    m.nk = samples (fname, m.delay, Ts, fractional);
   endif
 endfunction
 
@@ -167,7 +171,7 @@ function m = normalise_tf (fname, m)
   endfor
 endfunction
 
-function nk = samples (fname, delay, Ts)
+function nk = samples (fname, delay, Ts, fractional)
   if (all (delay(:) == 0))
     nk = zeros (size (delay));
     return;
@@ -177,6 +181,11 @@ function nk = samples (fname, delay, Ts)
            "%s: a model with delays needs uniformly sampled data", fname);
   endif
   nk = round (delay / Ts);
+  if (fractional)
+    exact = abs (nk - delay / Ts) <= 1e-9 * max (1, abs (nk));
+    nk(! exact) = delay(! exact) / Ts;
+    return;
+  endif
   if (any (abs (nk(:) - delay(:) / Ts) > 1e-9 * max (1, abs (nk(:)))))
     error ([fname ":notSupported"],
            ["%s: the delays %s s are not whole multiples of the ", ...
