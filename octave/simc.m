@@ -37,8 +37,8 @@
 ##
 ## @strong{Data}: an @code{iddata} object, input-only
 ## (@code{iddata ([], u, Ts, "InterSample", "zoh")}) or with outputs (its
-## input, sampling and InterSample are used), or numeric @var{u} (N-by-nu) and @var{Ts} (scalar)
-## or the N sampling instants.
+## input, sampling and InterSample are used), or numeric @var{u}
+## (N-by-nu) and @var{Ts} (scalar) or the N sampling instants.
 ##
 ## @strong{Options}
 ## @table @code
