@@ -67,6 +67,9 @@ function M = idtf (varargin)
   if (! iscell (den))
     den = repmat ({den}, size (num));
   endif
+  if (isempty (num))
+    error ("idtf:badInput", "idtf: num and den must not be empty");
+  endif
   if (! isequal (size (num), size (den)))
     error ("idtf:dimensionMismatch",
            "idtf: num and den must have the same ny-by-nu size");
@@ -142,6 +145,7 @@ endfunction
 %!error id=idtf:badInput idtf ("a", [1 1])
 %!error id=idtf:dimensionMismatch idtf ({1, 2}, {[1 1]; [1 2]})
 %!error id=idtf:badInput idtf (struct ())
+%!error id=idtf:badInput idtf ({}, {})
 
 %!demo
 %! M0 = idtf (2, [1 3 2], "IODelay", 0.5)
