@@ -22,6 +22,8 @@ endfunction
 %! assert (! isempty (strfind (out, "Zeta = 0.5")));
 %! out = evalc ("G = idtf (2, [1 3 2], 'IODelay', 0.5)");
 %! assert (! isempty (strfind (out, "exp(-0.5*s)")));
+%! out = evalc ("L = idctm (1, [1 1], 'nk', 3)");
+%! assert (! isempty (strfind (out, "samples of the data): 3")));
 %! out = evalc ("S = idss (-1, 1, 1, 0)");
 %! assert (! isempty (strfind (out, "dx/dt")));
 %!error <Invalid call> display ()

@@ -36,6 +36,10 @@ function txt = model_text (P, with_sd)
     L{end+1} = sprintf ("Input delays (%s): %s", unit (P),
                         num2str (P.InputDelay(:).', "%.4g "));
   endif
+  if (! isempty (P.legacy.nk) && any (P.legacy.nk))
+    L{end+1} = sprintf ("Input delays (samples of the data): %s",
+                        num2str (P.legacy.nk, "%d "));
+  endif
   if (P.Ts > 0)
     L{end+1} = sprintf ("Sample time: %g seconds", P.Ts);
   endif
