@@ -89,7 +89,9 @@ function k = trace_case (noisevar, Ts, plot_it, outdir, durations, use_trace)
   [data, dev_e] = deviations (est);
   [datav, dev_v] = deviations (val);
   M = srivc (data, [1 2 0], "lambda", 10);
-  [yh, fit, ~, rmse] = comparec (datav, M);
+  [yh, info] = comparec (datav, M);
+  fit = info.Fit;
+  rmse = info.RMSE;
 
   ## Answer key: the missing term of (4.17) as a second input.
   lam = 50;
@@ -101,10 +103,10 @@ function k = trace_case (noisevar, Ts, plot_it, outdir, durations, use_trace)
 
   k = struct ("noisevar", noisevar, "F", M.F, "B", M.B, "fit", fit,
               "rmse_linear", rmse, "Kb", M.F(2) * p.J, "Ks1", M.F(3) * p.J,
-              "KtGr", M.B * p.J, "F_oracle", Mo.F, "rmse_oracle", rmse_o,
-              "mc_oracle", mc (Mo), "Kb_o", Mo.F(2) * p.J,
-              "Ks1_o", Mo.F(3) * p.J, "KtGr_o", Mo.B{1} * p.J,
-              "F_svf", Ms.F, "rmse_svf", rmse_s,
+              "KtGr", M.B * p.J, "F_oracle", Mo.F{1}, "rmse_oracle", rmse_o,
+              "mc_oracle", mc (Mo), "Kb_o", Mo.F{1}(2) * p.J,
+              "Ks1_o", Mo.F{1}(3) * p.J, "KtGr_o", Mo.B{1} * p.J,
+              "F_svf", Ms.F{1}, "rmse_svf", rmse_s,
               "mc_svf", mc (Ms), "converged", [Mo.converged, Ms.converged],
               "reversals", sum (diff (sign (est.omega)) != 0),
               "stuck", mean (est.omega == 0), "effect", "", "ranking", [],
@@ -184,7 +186,8 @@ function [Ma, rmse, yh] = augmented (data, datav, w_e, w_v)
   de = iddata (data.y, [data.u, sign(w_e)], Ts, "InterSample", "zoh");
   dv = iddata (datav.y, [datav.u, sign(w_v)], Ts, "InterSample", "zoh");
   Ma = srivc (de, [1 1 2 0 0], "lambda", 10);
-  [yh, ~, ~, rmse] = comparec (dv, Ma);
+  [yh, info] = comparec (dv, Ma);
+  rmse = info.RMSE;
 endfunction
 
 function write_table (file, res)

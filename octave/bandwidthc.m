@@ -8,9 +8,10 @@
 ## with integrators; used by @code{svfcutoff} to suggest the SVF cut-off
 ## lambda_svf (thesis sec. 3.1.2).
 ##
-## @var{M} is an @code{idctm} model (from @code{srivc}, @dots{}), a struct
-## with fields @code{B} and @code{F}, or a control-package @code{tf}; or
-## give the coefficient rows @var{B} and @var{F} in descending powers of p.
+## @var{M} is an @code{idpoly} (from @code{srivc}, @dots{}), @code{idtf}
+## or @code{idproc} model, an @code{idctm}, a struct with fields @code{B}
+## and @code{F}, or a control-package @code{tf}; or give the coefficient
+## rows @var{B} and @var{F} in descending powers of p.
 ## One input only.
 ##
 ## @strong{Definition.} Poles and zeros whose magnitude is at most
@@ -150,16 +151,14 @@ endfunction
 function [B, F, rest] = read_model (args)
   M = args{1};
   rest = args(2:end);
-  if (isa (M, "idctm") || isstruct (M))
-    s = struct (M);
-    if (! isscalar (s) || ! all (isfield (s, {"B", "F"})))
+  if (isobject (M) || isstruct (M))
+    m = contsid_model ("bandwidthc", M);
+    if (! strcmp (m.kind, "tf") || m.ny != 1 || m.nu != 1 || m.Ts > 0)
       error ("bandwidthc:badInput",
-             "bandwidthc: a model struct needs the fields B and F");
+             "bandwidthc: one input, one output, continuous time only");
     endif
-    B = s.B;
-    F = s.F;
-  elseif (isa (M, "tf"))
-    [B, F] = tfdata (M, "v");
+    B = m.B{1};
+    F = m.F{1};
   elseif (isnumeric (M))
     if (isempty (rest) || ! isnumeric (rest{1}))
       error ("bandwidthc:badInput",
@@ -170,8 +169,8 @@ function [B, F, rest] = read_model (args)
     rest = rest(2:end);
   else
     error ("bandwidthc:badInput",
-           ["bandwidthc: the model must be an idctm, a struct with B and ", ...
-            "F, a tf, or B and F"]);
+           ["bandwidthc: the model must be an idpoly, idtf, idproc, ", ...
+            "idctm, a struct with B and F, a tf, or B and F"]);
   endif
   if (iscell (B))
     if (numel (B) != 1)
@@ -217,6 +216,7 @@ endfunction
 
 %!test  # first order and an idctm model; a struct
 %! assert (bandwidthc (idctm (2, [1 5])), 5, 1e-9);
+%! assert (bandwidthc (idproc ("P1", "Kp", 3, "Tp1", 0.2)), 5, 1e-9);
 %! assert (bandwidthc (struct ("B", 2, "F", [1 5])), 5, 1e-9);
 
 %!test  # band-pass b0 p / (p^2 + a1 p + a2): upper half-power frequency

@@ -11,8 +11,9 @@
 ## @code{rivsvf}. For @code{rsrivc}'s [b f] order give
 ## @code{"order", "bf"} and @var{nn} = [nb nf].
 ##
-## An @code{idctm} model @var{M} (from @code{srivc}, ...) is shown as its
-## one frozen model.
+## A model @var{M} (an @code{idpoly} from @code{srivc}, ..., an
+## @code{idtf}, @code{idproc}, @code{idctm}, or a struct with B and F) is
+## shown as its one frozen model.
 ##
 ## Options: @code{"w"} frequencies in rad/s (default 100 points, log-spaced
 ## around the models' corner frequencies); @code{"samples"} the rows of
@@ -33,13 +34,16 @@
 
 function [mag, phase, w] = bode4frozensys (THM, nn, varargin)
   fname = "bode4frozensys";
-  if (nargin >= 1 && isa (THM, "idctm"))
+  if (nargin >= 1 && (isobject (THM) || isstruct (THM)))
     ## An offline model: its single (time-invariant) frozen model.
-    m = struct (THM);
-    if (iscell (m.B))
+    m = contsid_model (fname, THM);
+    if (! strcmp (m.kind, "tf") || m.nu != 1 || m.ny != 1 || m.Ts > 0)
       error ("bode4frozensys:badInput",
-             "bode4frozensys: a model with several inputs is not supported");
+             ["bode4frozensys: only continuous-time models with one ", ...
+              "input and one output"]);
     endif
+    m.B = m.B{1};
+    m.F = m.F{1};
     args = {};
     if (nargin >= 2)
       args = [{nn}, varargin];
@@ -147,6 +151,9 @@ endfunction
 %! [m1] = bode4frozensys ([2.4 4 4], [2 1], "w", [1 2]);
 %! [m2] = bode4frozensys (idctm (4, [1 2.4 4]), "w", [1 2]);
 %! assert (m1, m2, 1e-12);
+%! [m3] = bode4frozensys (idtf (4, [1 2.4 4]), "w", [1 2]);
+%! assert (m3, m1, 1e-12);
+%!error id=bode4frozensys:badInput bode4frozensys (idss (-1, [1 1], 1, [0 0]))
 
 %!error id=bode4frozensys:badInput bode4frozensys ([1 2 3])
 %!error id=bode4frozensys:badInput bode4frozensys ([1 NaN 3], [2 1])

@@ -1,70 +1,121 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {} comparec (@var{data}, @var{M})
+## @deftypefnx {} {} comparec (@var{data}, @var{M}, @var{INT})
 ## @deftypefnx {} {} comparec (@var{data}, @var{THM}, @var{nn})
-## @deftypefnx {} {[@var{yh}, @var{fit}, @var{RT2}, @var{rmse}] =} comparec (@dots{})
-## Simulated versus measured output of a continuous-time model.
+## @deftypefnx {} {[@var{ys}, @var{estInfo}] =} comparec (@dots{})
+## Simulated versus measured output of a continuous-time model, as
+## CONTSID's comparec.
 ##
-## @var{M} is a model from @code{lssvf}, @code{ivsvf}, @code{srivc},
-## @code{clsrivc} (an @code{idctm}), a struct with @code{B} and @code{F}, or
-## a control-package @code{tf}; @var{THM} with @var{nn} is a recursive
-## estimate (rows = samples, order as @code{rlssvf}; add @code{"order",
-## "bf"} for @code{rsrivc}'s), simulated as the frozen model of each sample.
-## The model is simulated on the input of @var{data} (an iddata or numeric
-## y, u, Ts) from rest.
+## @var{M}: an @code{idpoly} (from @code{srivc}, @code{lssvf},
+## @code{ivsvf}, @code{clsrivc}, or built), @code{idtf}, @code{idproc},
+## @code{idss} (several outputs), a struct with @code{B} and @code{F}, or
+## a control-package @code{tf}/@code{ss}; delays are included.
+## @var{THM} with @var{nn} is a recursive estimate (rows = samples, order
+## as @code{rlssvf}; add @code{"order", "bf"} for @code{rsrivc}'s),
+## simulated as the frozen model of each sample.  The model is simulated
+## on the whole input of @var{data} (an iddata set, input-output, or
+## numeric y, u, Ts) from rest; @var{INT}, increasing sample indices,
+## selects the samples that are compared, returned and plotted (all by
+## default).
 ##
-## Outputs: the simulated output @var{yh}; @var{fit} = 100 (1 - ||y - yh|| /
-## ||y - mean(y)||) in %; @var{RT2} = 1 - var(y - yh) / var(y) (the
-## coefficient of determination used by CONTSID); @var{rmse} the root mean
-## square of y - yh. Without outputs it plots y and yh and prints the
-## three figures.
+## @var{ys}: the simulated output on @var{INT} (N-by-ny).  @var{estInfo}:
+## a struct with, per output k (row vectors, @code{estInfo.RT2(1,k)}):
+## @table @code
+## @item RT2
+## 1 - var(y - ys) / var(y), the coefficient of determination CONTSID
+## reports;
+## @item Fit
+## 100 (1 - ||y - ys|| / ||y - mean(y)||) in %;
+## @item MSE
+## mean((y - ys)^2);
+## @item RMSE
+## sqrt(MSE).
+## @end table
+## Without outputs it plots y and ys against time and prints the figures.
 ##
 ## @strong{Example}
 ## @example
 ## u = prbs (9, 8); Ts = 0.05;
-## y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.05 * randn (numel (u), 1);
-## [yh, fit] = comparec (iddata (y, u, Ts), idctm (4, [1 2.4 4]));
+## M0 = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
+## y = simc (M0, u, Ts) + 0.05 * randn (numel (u), 1);
+## [ys, estInfo] = comparec (iddata (y, u, Ts), M0, 1:1000);
+## estInfo.RT2
 ## @end example
 ## @seealso{residc, simc, srivc}
 ## @end deftypefn
 
-function [yh, fit, rt2, rmse] = comparec (varargin)
+function [ys, estInfo] = comparec (varargin)
   [d, yhat, rest] = contsid_model_output ("comparec", varargin);
+  N = rows (d.y);
+  idx = 1:N;
+  thm = isnumeric (varargin{d.nconsumed + 1});
+  if (! isempty (rest) && isnumeric (rest{1}) && thm)
+    error ("comparec:badOption", "comparec: unexpected extra arguments");
+  endif
+  if (! isempty (rest) && isnumeric (rest{1}))
+    idx = rest{1};
+    rest = rest(2:end);
+    if (isempty (idx) || ! isvector (idx) || any (idx != fix (idx))
+        || any (idx < 1) || any (idx > N) || any (diff (idx) <= 0))
+      error ("comparec:badInput",
+             "comparec: INT must be increasing sample indices in 1..%d", N);
+    endif
+  endif
   if (! isempty (rest))
     error ("comparec:badOption", "comparec: unexpected extra arguments");
   endif
-  e = d.y - yhat;
-  f = 100 * (1 - norm (e) / norm (d.y - mean (d.y)));
-  r = 1 - var (e) / var (d.y);
-  m = sqrt (mean (e .^ 2));
+  y = d.y(idx, :);
+  yh = yhat(idx, :);
+  e = y - yh;
+  info.RT2 = 1 - var (e, 1) ./ var (y, 1);
+  info.Fit = 100 * (1 - sqrt (sum (e .^ 2))
+                     ./ sqrt (sum ((y - mean (y)) .^ 2)));
+  info.MSE = mean (e .^ 2);
+  info.RMSE = sqrt (info.MSE);
   if (nargout > 0)
-    yh = yhat; fit = f; rt2 = r; rmse = m;
+    ys = yh;
+    estInfo = info;
     return;
   endif
-  t = d.t;
-  plot (t, d.y, "k", t, yhat, "r");
-  legend ("measured", sprintf ("model (fit %.1f %%)", f));
+  t = d.t(idx);
+  ny = columns (y);
+  for k = 1:ny
+    if (ny > 1)
+      subplot (ny, 1, k);
+    endif
+    plot (t, y(:, k), "k", t, yh(:, k), "r");
+    legend ("measured", sprintf ("model (fit %.1f %%)", info.Fit(k)));
+    title (sprintf ("output %d: RT2 = %.4f", k, info.RT2(k)));
+  endfor
   xlabel ("time (s)");
-  printf ("fit = %.2f %%, RT2 = %.4f, RMSE = %.4g\n", f, r, m);
+  printf ("output %d: fit = %.2f %%, RT2 = %.4f, MSE = %.4g\n",
+          [1:ny; info.Fit; info.RT2; info.MSE]);
 endfunction
 
 %!shared u, Ts, x, M
 %! u = prbs (8, 6); Ts = 0.05;
-%! M = idctm (4, [1 2.4 4]);
+%! M = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
 %! x = simc (M, u, Ts);
 
 %!test  # the true model on noise-free data: perfect fit
-%! [yh, fit, rt2, rmse] = comparec (iddata (x, u, Ts), M);
+%! [yh, info] = comparec (iddata (x, u, Ts), M);
 %! assert (yh, x, 1e-12);
-%! assert (fit, 100, 1e-8);
-%! assert (rt2, 1, 1e-12);
-%! assert (rmse < 1e-12);
+%! assert (info.Fit, 100, 1e-8);
+%! assert (info.RT2(1, 1), 1, 1e-12);
+%! assert (info.MSE < 1e-24);
 
-%!test  # fit and RT2 definitions on a known error
-%! y = x + 0.1;
-%! [yh, fit, rt2, rmse] = comparec (iddata (y, u, Ts), M);
-%! assert (rmse, 0.1, 1e-12);
-%! assert (fit, 100 * (1 - norm (y - x) / norm (y - mean (y))), 1e-10);
-%! assert (rt2, 1, 1e-12);   # a constant error has zero variance
+%!test  # the figures' definitions on a known error, on a sample range
+%! y = x + 0.1 * sin ((1:numel (x))');
+%! INT = 101:400;
+%! [yh, info] = comparec (iddata (y, u, Ts), M, INT);
+%! assert (yh, x(INT), 1e-12);
+%! e = y(INT) - x(INT);
+%! assert (info.MSE, mean (e .^ 2), 1e-14);
+%! assert (info.Fit, 100 * (1 - norm (e) / norm (y(INT) - mean (y(INT)))),
+%!         1e-10);
+%! assert (info.RT2, 1 - var (e) / var (y(INT)), 1e-12);
+%! [~, info2] = comparec (y, u, Ts, M, INT);
+%! assert (info2, info);
 
 %!test  # a recursive estimate (constant rows) equals the LTI model
 %! THM = repmat ([2.4 4 4], numel (u), 1);
@@ -73,13 +124,30 @@ endfunction
 %! yh2 = comparec (iddata (x, u, Ts), THM(:, [3 1 2]), [1 2 0], "order", "bf");
 %! assert (yh2, x, 1e-12);
 
+%!test  # a two-output idss: RT2 per output; idctm and struct models
+%! A = [-1 0; 1 -2]; B = [1; 0]; C = eye (2); D = [0; 0];
+%! Ms = idss (A, B, C, D);
+%! Y = simc (Ms, u, Ts);
+%! [ys, info] = comparec (iddata (Y, u, Ts), Ms, 1:200);
+%! assert (size (info.RT2), [1 2]);
+%! assert (info.RT2, [1 1], 1e-12);
+%! assert (ys, Y(1:200, :), 1e-12);
+%! yh = comparec (iddata (x, u, Ts), idctm (4, [1 2.4 4]));
+%! assert (yh, x, 1e-12);
+
 %!error id=comparec:badInput comparec (iddata (x, u, Ts))
 %!error id=comparec:badInput comparec (iddata (x, u, Ts), "model")
 %!error id=comparec:badInput comparec (iddata (x, u, Ts), [2.4 4 4])
 %!error id=comparec:dimensionMismatch comparec (iddata (x, u, Ts), [2.4 4 4; 2.4 4 4], [2 1 0])
-%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, 3)
+%!error id=comparec:badInput comparec (iddata (x, u, Ts), M, [3 2])
+%!error id=comparec:badInput comparec (iddata (x, u, Ts), M, 0:3)
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, 1:3, "x")
+%!error id=comparec:dimensionMismatch comparec (iddata (x, u, Ts), idss (-1, 1, [1; 1], [0; 0]))
+%!error id=comparec:notSupported comparec (iddata (x, u, (0:numel (u)-1)'.^1.01 * Ts), idtf (1, [1 1], "IODelay", 0.01))
 
 %!demo
 %! u = prbs (9, 8); Ts = 0.05; N = numel (u);
-%! y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.05 * randn (N, 1);
-%! comparec (iddata (y, u, Ts), idctm (4.4, [1 2 4]));
+%! M0 = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
+%! y = simc (M0, u, Ts) + 0.05 * randn (N, 1);
+%! [ys, estInfo] = comparec (iddata (y, u, Ts), idtf (4.4, [1 2 4]), 1:500);
+%! comparec (iddata (y, u, Ts), idtf (4.4, [1 2 4]), 1:500);

@@ -1,12 +1,17 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {} residc (@var{data}, @var{M})
 ## @deftypefnx {} {} residc (@var{data}, @var{THM}, @var{nn})
+## @deftypefnx {} {} residc (@var{data}, @var{M}, @var{m})
 ## @deftypefnx {} {@var{R} =} residc (@dots{}, "maxlag", @var{m})
 ## Residual analysis of a continuous-time model: the simulation error
 ## e = y - yh, its autocorrelation and its cross-correlation with each
 ## input, with 99% confidence bounds.
 ##
-## The model is given as for @code{comparec}. @var{R} is a struct:
+## The model is given as for @code{comparec} (an @code{idpoly},
+## @code{idtf}, @code{idproc}, @code{idss} with one output, @code{idctm},
+## a struct with B and F, a control @code{tf}/@code{ss}, or THM with
+## @var{nn}); a number after a model is the largest lag @var{m}. @var{R}
+## is a struct:
 ## @table @code
 ## @item e
 ## the residual (N-by-1).
@@ -42,6 +47,14 @@
 
 function R = residc (varargin)
   [d, yhat, rest] = contsid_model_output ("residc", varargin);
+  if (columns (d.y) != 1)
+    error ("residc:notSupported", "residc: one output only (%d given)",
+           columns (d.y));
+  endif
+  if (! isempty (rest) && isnumeric (rest{1})
+      && ! isnumeric (varargin{d.nconsumed + 1}))
+    rest = [{"maxlag"}, rest];
+  endif
   opts = contsid_options ("residc", struct ("maxlag", 25), rest);
   m = opts.maxlag;
   if (! isnumeric (m) || ! isreal (m) || ! isscalar (m) || m != fix (m)
@@ -151,6 +164,15 @@ endfunction
 %! R = residc (iddata (x, u, Ts), idctm (4 * (1 + 1e-14), [1 2.4 4]));
 %! assert (! R.testable);
 
+%!test  # SITB models; the CONTSID form with the lag as third argument
+%! randn ("state", 2);
+%! y = x + 0.1 * randn (N, 1);
+%! R1 = residc (iddata (y, u, Ts), idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0));
+%! R2 = residc (iddata (y, u, Ts), idtf (4, [1 2.4 4]), 25);
+%! assert (R2.e, R1.e, 1e-12);
+%! assert (R2.autocorr, R1.autocorr, 1e-10);
+
+%!error id=residc:notSupported residc (iddata ([x x], u, Ts), idss (-1, 1, [1; 1], [0; 0]))
 %!error id=residc:numericalFailure residc (iddata (x, u, Ts), idctm (4, [1 -30 4]))
 
 %!error id=residc:badInput residc (iddata (x, u, Ts), M, "maxlag", 0)

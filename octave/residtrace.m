@@ -6,8 +6,9 @@
 ## adds that effect, and reports the error before and after.
 ##
 ## @var{data}: the estimation record (an @code{iddata}, or @var{y},
-## @var{u}, @var{Ts}), uniformly sampled. @var{M}: an @code{idctm} from
-## @code{srivc}, @code{lssvf}, @code{ivsvf} (or built by hand). Its
+## @var{u}, @var{Ts}), uniformly sampled. @var{M}: an @code{idpoly} from
+## @code{srivc}, @code{lssvf}, @code{ivsvf} (or an @code{idtf},
+## @code{idproc}, @code{idctm} built by hand). Its
 ## coefficients of F that are exactly zero are structural (integrators, a
 ## missing damping term) and stay zero unless an effect frees them.
 ## @var{datav}: a validation record with the same inputs. Without it the
@@ -144,7 +145,7 @@
 ## the model with the top effect: a struct (F, fixed, channels with their
 ## numerators B and delays nk, output terms @code{out}, @code{ltv},
 ## @code{noise}, covariance) and @code{linear}, its linear part as an
-## @code{idctm} (one input per channel).
+## @code{idpoly} (one input per channel, built by @code{idctm}).
 ## @item evidence
 ## the winner's evidence (term, value, std, and what the test saw).
 ## @item effects, final_model, rmse_final
@@ -163,7 +164,7 @@
 ##
 ## Errors (identifiers @code{residtrace:badInput},
 ## @code{residtrace:dimensionMismatch}, @code{residtrace:badOption}): a
-## model that is not an idctm, a validation record with other inputs,
+## model that is not a continuous-time single-output model, a validation record with other inputs,
 ## records too short for @code{maxlag}, irregular sampling, unknown
 ## options or effects. A residual that is zero to rounding (a perfect
 ## model) or not finite gives @code{effect = 'none'} with
@@ -206,16 +207,16 @@ function R = residtrace (varargin)
                      "maxiter", 30);
   opts = contsid_options (fname, defaults, args);
   opts = check_options (opts, all_effects);
-  if (! isa (M, "idctm"))
+  if (! isobject (M) || isa (M, "iddata"))
     error ("residtrace:badInput",
-           ["residtrace: M must be an idctm model (from srivc, lssvf, ", ...
-            "ivsvf or idctm), not a %s"], class (M));
+           ["residtrace: M must be a model (idpoly from srivc, lssvf, ", ...
+            "ivsvf; idtf, idproc, idctm), not a %s"], class (M));
   endif
   if (! d.uniform)
     error ("residtrace:badInput",
            "residtrace: the data must be uniformly sampled");
   endif
-  Mst = struct (M);
+  Mst = model_struct (M, d.Ts);
   if (iscell (Mst.B))
     nbM = numel (Mst.B);
   else
@@ -239,7 +240,7 @@ function R = residtrace (varargin)
   endfor
 
   ## Context shared by the candidates.
-  base = residtrace_base (M, d);
+  base = residtrace_base (Mst, d);
   rts = roots (Mst.F);
   nz = abs (rts(abs (rts) > 1e-9 * max ([abs(rts); 1])));
   T = (numel (D.y) - 1) * D.Ts;
@@ -630,6 +631,26 @@ function m = refresh_cov (base, cur)
   endif
 endfunction
 
+## M read by contsid_model as the struct residtrace_base reads (B, F, nk,
+## theta): continuous time, one output, one denominator.
+function Mst = model_struct (M, Ts)
+  m = contsid_model ("residtrace", M, Ts);
+  if (! strcmp (m.kind, "tf") || m.ny != 1 || m.Ts > 0 || ! m.common)
+    error ("residtrace:badInput",
+           ["residtrace: M must be a continuous-time model with one ", ...
+            "output and one denominator"]);
+  endif
+  B = m.B;
+  if (numel (B) == 1)
+    B = B{1};
+  endif
+  theta = m.theta;
+  if (isempty (theta))
+    theta = [m.F{1}(2:end), m.B{:}];
+  endif
+  Mst = struct ("B", {B}, "F", m.F{1}, "nk", m.nk, "theta", theta);
+endfunction
+
 ## The model as returned to the user: the struct plus its linear part as
 ## an idctm with one input per channel.
 function out = export_model (m, Ts)
@@ -716,7 +737,7 @@ endfunction
 %! assert (R.rmse_after < 0.2 * R.rmse_before);
 %! assert (R.rmse_after, 0.05, 0.01);        # down to the noise level
 %! assert (R.ranking(1).significant);
-%! assert (isa (R.model.linear, "idctm"));
+%! assert (isa (R.model.linear, "idpoly"));
 %! md = fileread (f);
 %! delete (f);
 %! assert (! isempty (strfind (md, "| + offset (input offset) |")));
@@ -763,7 +784,8 @@ endfunction
 %! assert (R.rmse_refit < 0.1);
 
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts))
-%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), tf (1, [1 1]))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), idss (-1, 1, 1, 0))
+%!error id=residtrace:badInput residtrace (iddata (x, u, Ts), iddata (x, u, Ts))
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts), struct ("B", 1, "F", [1 1]))
 %!error id=residtrace:badInput residtrace (iddata (NaN (N, 1), u, Ts), G)
 %!error id=residtrace:badInput residtrace (iddata (x(1:60), u(1:60), Ts), G)

@@ -12,12 +12,21 @@
 ## @strong{Model}
 ## @table @var
 ## @item M
-## a time-invariant model: an @code{idctm} (from @code{srivc}, @code{lssvf},
-## ...), or a struct with fields @code{B} (numerator
-## coefficients in descending powers of p; a cell array of rows for several
-## inputs), @code{F} (denominator, descending powers, normalised to be monic)
-## and optionally @code{nk} (input delay in samples); or a continuous-time
-## @code{tf} of the control package.
+## a continuous-time, time-invariant model: an @code{idpoly} (from
+## @code{srivc}, @code{lssvf}, ..., or built, e.g.
+## @code{idpoly (1, B, 1, 1, F, 0, 0, "InputDelay", [nk1 nk2] * Ts)}),
+## @code{idtf}, @code{idproc}, @code{idss} or @code{idctm}; a struct with
+## fields @code{B} (numerator coefficients in descending powers of p; a
+## cell array of rows for several inputs), @code{F} (denominator,
+## descending powers, normalised to be monic; one for all inputs or a cell
+## with one per input) and optionally @code{nk} (input delays in samples);
+## or a continuous-time @code{tf}/@code{ss} of the control package.
+## Delays (InputDelay, IODelay, Td) are exact, also between samples
+## (uniformly sampled data; the delayed ZOH or FOH input is integrated
+## piece by piece).  Several outputs give one column each.  A model
+## with one output and one denominator takes every option below; other
+## models (several denominators or outputs, state space) take the noise
+## options only.
 ## @item THM, nn
 ## a model with time-varying parameters: @var{nn} = [na nb nk] as in
 ## @code{rlssvf}, and @var{THM} an N-by-np matrix of the parameters
@@ -26,9 +35,10 @@
 ## @var{thm} of a recursive estimator.
 ## @end table
 ##
-## @strong{Data}: an @code{iddata} object (its input, sampling and
-## InterSample are used) or numeric @var{u} (N-by-nu) and @var{Ts} (scalar)
-## or the N sampling instants.
+## @strong{Data}: an @code{iddata} object, input-only
+## (@code{iddata ([], u, Ts, "InterSample", "zoh")}) or with outputs (its
+## input, sampling and InterSample are used), or numeric @var{u}
+## (N-by-nu) and @var{Ts} (scalar) or the N sampling instants.
 ##
 ## @strong{Options}
 ## @table @code
@@ -80,11 +90,14 @@ function varargout = simc (varargin)
   if (nargin < 2)
     error ("simc:badInput", "simc: expected a model and input data");
   endif
-  [theta, orders, rest] = parse_model (fname, varargin);
+  [model, theta, orders, rest] = parse_model (fname, varargin);
   [u, t, intersample, rest] = parse_input (fname, rest);
   n = rows (u);
   if (! isempty (rest) && isnumeric (rest{1}) && isscalar (rest{1}))
     rest = [{"SNR"}, rest];
+  endif
+  if (! isempty (model))
+    [theta, orders, model] = read_model (fname, model, u, t);
   endif
   defaults = struct ("SNR", [], "noisevar", [], "noise", [],
                      "InterSample", [], "x0", [], "substeps", 1,
@@ -93,7 +106,7 @@ function varargout = simc (varargin)
   if (! isempty (opts.InterSample))
     intersample = check_intersample (fname, opts.InterSample);
   endif
-  if (rows (theta) != 1 && rows (theta) != n)
+  if (! isstruct (model) && rows (theta) != 1 && rows (theta) != n)
     error ("simc:dimensionMismatch", ...
            "simc: THM must have one row or one row per sample (%d), got %d",
            n, rows (theta));
@@ -105,6 +118,18 @@ function varargout = simc (varargin)
   endif
   x0 = real_matrix (fname, opts.x0, "x0");
   [c_num, c_den, r2] = parse_controller (fname, opts, n, t);
+  if (isstruct (model))
+    ## several outputs, a denominator per input or a state-space model
+    if (! isempty (c_num) || ! isempty (x0))
+      error ("simc:notSupported",
+             ["simc: controller and x0 need a single-output model with ", ...
+              "one denominator"]);
+    endif
+    x = simulate_model (model, u, t, intersample, substeps);
+    e = noise (opts, x);
+    varargout = {x + e, x, u};
+    return;
+  endif
 
   given = ! [isempty(opts.SNR), isempty(opts.noisevar), isempty(opts.noise)];
   if (sum (given) > 1)
@@ -154,72 +179,13 @@ function varargout = call_gateway (nout, u, t, intersample, orders, theta,
   end_try_catch
 endfunction
 
-function [theta, orders, rest] = parse_model (fname, args)
+function [model, theta, orders, rest] = parse_model (fname, args)
   M = args{1};
-  if (isa (M, "idctm"))
-    M = struct (M);
-  endif
-  if (isstruct (M) || isa (M, "tf"))
-    if (isa (M, "tf"))
-      if (! isct (M))
-        error ("simc:badInput", "simc: M must be a continuous-time tf");
-      endif
-      [num, den] = tfdata (M, "vector");
-      B = {num};
-      F = den;
-      nk = 0;
-    else
-      if (! isscalar (M) || ! all (isfield (M, {"B", "F"})))
-        error ("simc:badInput", "simc: the model struct needs fields B and F");
-      endif
-      B = M.B;
-      F = M.F;
-      nk = [];
-      if (isfield (M, "nk"))
-        nk = M.nk;
-      endif
-      if (! iscell (B))
-        B = {B};
-      endif
-    endif
-    F = real_matrix (fname, F, "F");
-    if (! isvector (F) || numel (F) < 2 || F(1) == 0)
-      error ("simc:badInput", ...
-             "simc: F must be [1 a1 .. a_na] with na >= 1");
-    endif
-    a = F(2:end) / F(1);
-    na = numel (a);
-    nu = numel (B);
-    nb = zeros (1, nu);
-    b = [];
-    for j = 1:nu
-      bj = real_matrix (fname, B{j}, "B");
-      if (! isempty (bj) && ! isvector (bj))
-        error ("simc:badInput", "simc: B must be a row of coefficients");
-      endif
-      first = find (bj != 0, 1);
-      if (isempty (first))
-        bj = 0;
-      else
-        bj = bj(first:end);
-      endif
-      nb(j) = numel (bj);
-      b = [b, bj(:).' / F(1)];
-    endfor
-    if (isempty (nk))
-      nk = zeros (1, nu);
-    endif
-    nk = real_matrix (fname, nk, "nk");
-    if (numel (nk) != nu || any (nk != fix (nk)) || any (nk < 0))
-      error ("simc:badInput", "simc: nk must be one integer >= 0 per input");
-    endif
-    if (any (nb > na + 1))
-      error ("simc:badInput", ...
-             ["simc: the model is improper (numerator degree above ", ...
-              "the denominator's)"]);
-    endif
-    theta = [a(:).', b];
-    orders = struct ("na", na, "nb", nb, "nk", nk(:).');
+  model = [];
+  theta = [];
+  orders = [];
+  if (isobject (M) || isstruct (M))
+    model = M;
     rest = args(2:end);
   elseif (isnumeric (M) && numel (args) >= 3)
     theta = real_matrix (fname, M, "THM");
@@ -247,8 +213,152 @@ function [theta, orders, rest] = parse_model (fname, args)
     rest = args(3:end);
   else
     error ("simc:badInput", ...
-           ["simc: the model must be an idctm, a struct with B and F, ", ...
-            "a tf, or THM with nn"]);
+           ["simc: the model must be an idpoly, idtf, idproc, idss (or ", ...
+            "idctm), a struct with B and F, a tf/ss, or THM with nn"]);
+  endif
+endfunction
+
+## A time-invariant model: read once (contsid_model).  A single-output
+## model with one denominator becomes theta and orders for the gateway
+## (all options apply); anything else stays a model struct for
+## simulate_model.
+function [theta, orders, m] = read_model (fname, M, u, t)
+  Ts = NaN;
+  if (isscalar (t))
+    Ts = t;
+  endif
+  m = contsid_model (fname, M, Ts, ! isnan (Ts));
+  theta = [];
+  orders = [];
+  if (m.Ts > 0)
+    error ("simc:notSupported",
+           ["simc: simulates continuous-time models; this one is ", ...
+            "discrete-time (Ts = %g): use sim"], m.Ts);
+  endif
+  if (columns (u) != m.nu)
+    error ("simc:dimensionMismatch",
+           "simc: the model has %d input(s), the data %d", m.nu, columns (u));
+  endif
+  if (strcmp (m.kind, "ss") || m.ny > 1 || ! m.common
+      || any (m.nk(:) != fix (m.nk(:))))
+    if (strcmp (m.kind, "tf"))
+      check_orders (m);
+    endif
+    return;
+  endif
+  check_orders (m);
+  F = m.F{1};
+  a = F(2:end);
+  b = [];
+  nb = zeros (1, m.nu);
+  for j = 1:m.nu
+    nb(j) = numel (trim (m.B{j}));
+    b = [b, trim(m.B{j})];
+  endfor
+  theta = [a, b];
+  orders = struct ("na", numel (a), "nb", nb, "nk", m.nk(1, :));
+  m = [];
+endfunction
+
+function check_orders (m)
+  for k = 1:numel (m.F)
+    if (numel (m.F{k}) < 2)
+      error ("simc:badInput", ...
+             "simc: F must be [1 a1 .. a_na] with na >= 1");
+    endif
+    if (numel (trim (m.B{k})) > numel (m.F{k}))
+      error ("simc:badInput", ...
+             ["simc: the model is improper (numerator degree above ", ...
+              "the denominator's)"]);
+    endif
+  endfor
+endfunction
+
+function b = trim (b)
+  first = find (b != 0, 1);
+  if (isempty (first))
+    b = 0;
+  else
+    b = b(first:end);
+  endif
+endfunction
+
+## Noise-free output of a model struct: a state-space model exactly
+## (contsid_ss_sim), a transfer-function model input by input through the
+## gateway (the responses add up).
+function x = simulate_model (m, u, t, intersample, substeps)
+  n = rows (u);
+  if (strcmp (m.kind, "ss"))
+    x = contsid_ss_sim (m.a, m.b, m.c, m.d, u, t, intersample, m.nk);
+    return;
+  endif
+  x = zeros (n, m.ny);
+  for i = 1:m.ny
+    for j = 1:m.nu
+      b = trim (m.B{i, j});
+      if (all (b == 0))
+        continue;
+      endif
+      if (m.nk(i, j) != fix (m.nk(i, j)))
+        ## a delay between samples: exact in state space
+        [a, bb, c, d] = canonical (b, m.F{i, j});
+        x(:, i) += contsid_ss_sim (a, bb, c, d, u(:, j), t, intersample,
+                                   m.nk(i, j));
+        continue;
+      endif
+      orders = struct ("na", numel (m.F{i, j}) - 1, "nb", numel (b),
+                       "nk", m.nk(i, j));
+      x(:, i) += call_gateway (1, u(:, j), t, intersample, orders,
+                               [m.F{i, j}(2:end), b], substeps, [], [], [],
+                               [], []);
+    endfor
+  endfor
+endfunction
+
+## Controllable canonical realisation of b(p) / f(p), f monic, deg b <=
+## deg f.
+function [a, b, c, d] = canonical (num, den)
+  n = numel (den) - 1;
+  num = [zeros(1, n + 1 - numel (num)), num];
+  d = num(1);
+  r = num(2:end) - d * den(2:end);     # strictly proper remainder
+  a = [-den(2:end); eye(n - 1, n)];
+  b = [1; zeros(n - 1, 1)];
+  c = r;
+endfunction
+
+## Additive output noise of the SNR / noisevar / noise options, one
+## column per output.
+function e = noise (opts, x)
+  [n, ny] = size (x);
+  e = zeros (n, ny);
+  given = ! [isempty(opts.SNR), isempty(opts.noisevar), isempty(opts.noise)];
+  if (sum (given) > 1)
+    error ("simc:badOption", ...
+           "simc: give at most one of SNR, noisevar and noise");
+  endif
+  if (given(3))
+    e = real_matrix ("simc", opts.noise, "noise");
+    if (rows (e) != n && numel (e) == n)
+      e = e(:);
+    endif
+    if (! isequal (size (e), [n ny]))
+      error ("simc:dimensionMismatch",
+             "simc: noise must be %d-by-%d", n, ny);
+    endif
+  elseif (given(2))
+    v = real_matrix ("simc", opts.noisevar, "noisevar");
+    if (! isscalar (v) || v < 0)
+      error ("simc:badInput", "simc: noisevar must be a scalar >= 0");
+    endif
+    e = sqrt (v) * randn (n, ny);
+  elseif (given(1))
+    snr = real_matrix ("simc", opts.SNR, "SNR");
+    if (! isscalar (snr))
+      error ("simc:badInput", "simc: SNR must be a real scalar (dB)");
+    endif
+    e = randn (n, ny);
+    e = e .* sqrt (mean (x .^ 2) / 10 ^ (snr / 10)) ./ sqrt (mean (e .^ 2));
   endif
 endfunction
 
@@ -257,14 +367,7 @@ function [u, t, intersample, rest] = parse_input (fname, args)
     error ("simc:badInput", "simc: the input data are missing");
   endif
   if (isa (args{1}, "iddata"))
-    d = contsid_getdata (fname, args{1});
-    u = d.u;
-    if (d.uniform)
-      t = d.Ts;
-    else
-      t = d.t;
-    endif
-    intersample = d.intersample;
+    [u, t, intersample] = input_data (fname, args{1});
     rest = args(2:end);
     return;
   endif
@@ -292,6 +395,45 @@ function [u, t, intersample, rest] = parse_input (fname, args)
   endif
   intersample = "zoh";
   rest = args(3:end);
+endfunction
+
+## The input signals and sampling of an iddata set, with or without
+## outputs (iddata ([], u, Ts) as CONTSID builds them).
+function [u, t, intersample] = input_data (fname, data)
+  [~, ny, nu, ne] = size (data);
+  if (ne != 1)
+    error ("simc:badInput", "simc: the data must hold one experiment");
+  endif
+  if (nu == 0)
+    error ("simc:badInput", "simc: the data have no input");
+  endif
+  if (ny > 0)
+    d = contsid_getdata (fname, data);
+    u = d.u;
+    t = d.t;
+    if (d.uniform)
+      t = d.Ts;
+    endif
+    intersample = d.intersample;
+    return;
+  endif
+  info = samplinginfo (data);
+  u = get (data, "InputData");
+  if (iscell (u))
+    u = u{1};
+  endif
+  u = real_matrix (fname, u, "u");
+  if (isempty (u) || any (! isfinite (u(:))))
+    error ("simc:badInput", "simc: u must be non-empty and finite");
+  endif
+  if (info.Uniform && info.Ts > 0)
+    t = info.Ts;
+  elseif (! info.Uniform)
+    t = info.SamplingInstants(:);
+  else
+    error ("simc:badInput", "simc: the data have no sampling interval");
+  endif
+  intersample = info.InterSample;
 endfunction
 
 function [c_num, c_den, r2] = parse_controller (fname, opts, n, Ts)
@@ -376,6 +518,66 @@ endfunction
 %!            "r2", ones (n, 1));
 %! assert (y2, y, 1e-12);      # the same PI given by its gains
 
+%!test  # SITB models on input-only data: MISO idpoly, delays per input
+%! Ts = 0.05; u = [prbs(7, 3), prbs(7, 5)(1:381)]; n = rows (u);
+%! M = idpoly (1, {2, [1 3]}, 1, 1, {[1 1.5], [1 2 5]}, 0, 0,
+%!             "InputDelay", [2 5] * Ts);
+%! y = simc (M, iddata (zeros (n, 0), u, Ts, "InterSample", "zoh"));
+%! y1 = simc (struct ("B", 2, "F", [1 1.5]), u(:, 1), Ts);
+%! y2 = simc (struct ("B", [1 3], "F", [1 2 5]), u(:, 2), Ts);
+%! assert (y, [zeros(2, 1); y1(1:end-2)] + [zeros(5, 1); y2(1:end-5)],
+%!         1e-12);
+
+%!test  # idss and idtf against the control package's exact ZOH model
+%! pkg load control
+%! Ts = 0.1; u = prbs (6, 4); n = numel (u); t = (0:n-1)' * Ts;
+%! A = [-1 2; -2 -1]; B = [0; 1]; C = [1 0]; D = 0.5;
+%! y = simc (idss (A, B, C, D), u, Ts);
+%! yc = lsim (c2d (ss (A, B, C, D), Ts, "zoh"), u, t);
+%! assert (y, yc, 1e-10);
+%! G = idtf (2, [1 3 2], "IODelay", 3 * Ts);
+%! yg = simc (G, u, Ts);
+%! yc = lsim (c2d (tf (2, [1 3 2]), Ts, "zoh"), u, t);
+%! assert (yg, [0; 0; 0; yc(1:end-3)], 1e-10);
+
+%!test  # a two-output idtf: one column per output
+%! u = prbs (6, 3); Ts = 0.1;
+%! y = simc (idtf ({1; 2}, {[1 1]; [1 2]}), u, Ts);
+%! assert (y, [simc(idtf (1, [1 1]), u, Ts), simc(idtf (2, [1 2]), u, Ts)],
+%!         1e-14);
+
+%!test  # a delay between samples: the same as on a grid twice as fine
+%! ## (the input starts at rest, so that the FOH ramp before the first
+%! ## sample, one sampling interval long, is the same on both grids)
+%! Ts = 0.1; u = [zeros(3, 1); prbs(6, 3)]; n = numel (u);
+%! G = idtf ([1 4], [1 2.4 4], "IODelay", 0.25);
+%! for is = {"zoh", "foh"}
+%!   y = simc (G, u, Ts, "InterSample", is{1});
+%!   u2 = kron (u, [1; 1]);
+%!   if (strcmp (is{1}, "foh"))       # the piecewise-linear input, finer
+%!     u2 = interp1 ((0:n-1)', u, (0:2*n-1)' / 2, "linear", "extrap");
+%!     u2(end) = u(end);
+%!   endif
+%!   y2 = simc (idtf ([1 4], [1 2.4 4], "IODelay", 0.25), u2, Ts / 2,
+%!              "InterSample", is{1});
+%!   ## 0.25 s = 5 fine samples: integer there, fractional on Ts
+%!   assert (y, y2(1:2:end), 1e-10);
+%! endfor
+
+%!test  # FOH on a ramp is exact: 1/(s+1) driven by u = t
+%! Ts = 0.2; t = (0:50)' * Ts;
+%! y = simc (idss (-1, 1, 1, 0), iddata (zeros (51, 0), t, Ts,
+%!                                       "InterSample", "foh"));
+%! assert (y, t - 1 + exp (-t), 1e-12);
+%! y2 = simc (idproc ("P1", "Kp", 1, "Tp1", 1), t, Ts, "InterSample", "foh");
+%! assert (y2, t - 1 + exp (-t), 1e-12);
+
+%!error id=simc:notSupported simc (idpoly (1, [0 1], 1, 1, [1 -0.5], 1, 0.1), ones (5, 1), 0.1)
+%!error id=simc:notSupported simc (idtf (1, [1 1], "IODelay", 0.15), ones (5, 1), [0 0.1 0.2 0.4 0.5])
+%!error id=simc:dimensionMismatch simc (idtf (1, [1 1]), ones (5, 2), 0.1)
+%!error id=simc:badInput simc (idproc ("P1"), ones (5, 1), 0.1)
+%!error id=simc:notSupported simc (idfrd (1, 1), ones (5, 1), 0.1)
+%!error id=simc:notSupported simc (idss (-1, [1 1], 1, [0 0]), ones (5, 2), 0.1, "x0", [1 2])
 %!error id=simc:badInput simc ()
 %!error id=simc:badInput simc (struct ("B", 1), ones (5, 1), 0.1)
 %!error id=simc:badInput simc (struct ("B", 1, "F", 1), ones (5, 1), 0.1)

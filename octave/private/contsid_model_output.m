@@ -1,20 +1,23 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{d}, @var{yhat}, @var{rest}] =} contsid_model_output (@var{fname}, @var{args})
-## Shared by comparec and residc: reads the data and a model, given as an
-## idctm / struct with B and F / control tf, or as a recursive estimate
-## THM with its nn (and "order", "bf" for rsrivc's [b f]), and simulates
-## the model on the data's input (for THM: the frozen model of each sample,
-## parameters linear between samples). Returns the data struct, the
-## simulated output and the remaining arguments.
+## Shared by comparec and residc: reads the data and a model and simulates
+## the model on the data's input from rest.  The model is anything
+## @code{contsid_model} reads (idpoly, idtf, idproc, idss, idctm, struct
+## with B and F, control tf/ss), simulated by @code{simc}, or a recursive
+## estimate THM with its nn (and "order", "bf" for rsrivc's [b f]),
+## simulated as the frozen model of each sample.  The data are an iddata
+## set (any number of outputs; one experiment) or numeric y, u, Ts.
+## Returns the data struct (y N-by-ny, u, t, Ts, uniform, intersample),
+## the simulated output (N-by-ny) and the remaining arguments.
 ## @end deftypefn
 
 function [d, yhat, rest] = contsid_model_output (fname, args)
   if (numel (args) < 2)
     error ([fname ":badInput"], "%s: expected data and a model", fname);
   endif
-  d = contsid_getdata (fname, args{1});
-  M = args{2};
-  rest = args(3:end);
+  d = read_data (fname, args);
+  M = args{d.nconsumed + 1};
+  rest = args(d.nconsumed + 2:end);
   if (d.uniform)
     t = d.Ts;
   else
@@ -40,12 +43,12 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
                "%s: THM must have one row per sample (%d)", fname, rows (d.y));
       endif
       yhat = simc (M, nn, d.u, t, "InterSample", d.intersample);
-    elseif (isa (M, "idctm") || isstruct (M) || isa (M, "tf"))
+    elseif (isobject (M) || isstruct (M))
       yhat = simc (M, d.u, t, "InterSample", d.intersample);
     else
       error ([fname ":badInput"], ...
-             ["%s: the model must be an idctm, a struct with B and F, ", ...
-              "a tf, or THM with nn"],
+             ["%s: the model must be an idpoly, idtf, idproc, idss (or ", ...
+              "idctm), a struct with B and F, a tf/ss, or THM with nn"],
              fname);
     endif
   catch err
@@ -56,4 +59,39 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
     endif
     rethrow (err);
   end_try_catch
+  if (columns (yhat) != columns (d.y))
+    error ([fname ":dimensionMismatch"],
+           "%s: the model has %d output(s), the data %d", fname,
+           columns (yhat), columns (d.y));
+  endif
+endfunction
+
+## Single-output data through contsid_getdata; an iddata set with
+## several outputs (state-space models) read here the same way.
+function d = read_data (fname, args)
+  data = args{1};
+  if (isa (data, "iddata"))
+    [~, ny, nu, ne] = size (data);
+    if (ny > 1 && ne == 1 && nu >= 1)
+      info = samplinginfo (data);
+      y = get (data, "OutputData");
+      u = get (data, "InputData");
+      if (iscell (y))
+        [y, u] = deal (y{1}, u{1});
+      endif
+      if (! (info.Ts > 0) && info.Uniform)
+        error ([fname ":badInput"], "%s: the data need a sampling interval",
+               fname);
+      endif
+      d = struct ("y", double (y), "u", double (u),
+                  "t", info.SamplingInstants(:), "Ts", info.Ts,
+                  "uniform", info.Uniform, "intersample", info.InterSample,
+                  "nconsumed", 1);
+      if (! d.uniform)
+        d.Ts = NaN;
+      endif
+      return;
+    endif
+  endif
+  d = contsid_getdata (fname, args{:});
 endfunction

@@ -131,7 +131,8 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
   M = idctm (struct ("B", {B}, "F", [1 a], "nk", orders.nk, "Ts", Ts,
                      "InterSample", d.intersample, "covariance", best.cov,
                      "noise_variance", best.s2, "method", fname,
-                     "iterations", best.iters, "converged", best.conv));
+                     "iterations", best.iters, "converged", best.conv,
+                     "Report", fit_report (d.y, best.s2, n, np)));
   if (nargout > 1)
     RT2 = 1 - best.s2 * (n - np) / n / var (d.y, 1);
     YIC = log (best.s2 / var (d.y, 1)) ...
@@ -139,32 +140,33 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
   endif
 endfunction
 
+## Report.Fit of the model: best.s2 is the simulation-error variance with
+## n - np degrees of freedom, so the mean square error is s2 (n - np) / n.
+function r = fit_report (y, s2, n, np)
+  mse = s2 * (n - np) / n;
+  r.Fit = struct ("MSE", mse, "LossFcn", mse,
+                  "FitPercent", 100 * (1 - sqrt (mse / var (y, 1))),
+                  "FPE", mse * (1 + np / n) / (1 - np / n));
+  r.DataUsed = struct ("Length", n);
+endfunction
+
 function theta = init_estimate (fname, init, orders)
   theta = [];
   if (ischar (init) && strcmpi (init, "ivsvf"))
     return;
   endif
-  if (isa (init, "idctm"))
-    init = struct (init);
-    init = [init.F(2:end), cell2mat(cellify (init.B))];
+  if (isa (init, "idpoly"))
+    init = init.theta;
   endif
   if (! isnumeric (init) || ! isreal (init) || numel (init) != orders.np
       || any (! isfinite (init)))
     error ([fname ":badOption"], ...
-           "%s: InitMethod must be 'ivsvf', an idctm or %d values [f b]",
+           "%s: InitMethod must be 'ivsvf', an idpoly or %d values [f b]",
            fname, orders.np);
   endif
   theta = double (init(:));
   if (any (real (roots ([1; theta(1:orders.na)])) >= 0))
     error ([fname ":badInput"], "%s: the initial model must be stable", fname);
-  endif
-endfunction
-
-function c = cellify (B)
-  if (iscell (B))
-    c = B;
-  else
-    c = {B};
   endif
 endfunction
 

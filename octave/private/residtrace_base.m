@@ -1,6 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{model} =} residtrace_base (@var{M}, @var{d})
-## The @code{residtrace} model of an @code{idctm} @var{M}: one
+## The @code{residtrace} model of @var{M} (a struct with B, F, nk as
+## residtrace reads a model through contsid_model): one
 ## @qcode{"input"} channel per input with M's numerator and delay, M's
 ## denominator F, no output terms. Coefficients of F that are exactly zero
 ## are structural (integrators, a missing damping term) and stay fixed

@@ -46,7 +46,8 @@ function test_contsid_ltv_demo ()
   ## (From 200 s on: the start-up estimates, theta0 = 0 and P0 = 1e4 I,
   ## include unstable frozen models whose simulation swamps any fit.)
   idx = find (after);
-  [~, fit] = comparec (data(idx), thm_iv(idx, :), [2 1 0]);
+  [~, info] = comparec (data(idx), thm_iv(idx, :), [2 1 0]);
+  fit = info.Fit;
   printf ("fit of the RIVSVF frozen models after 200 s: %.1f %%\n", fit);
   assert (fit > 50);
 endfunction

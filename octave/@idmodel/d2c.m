@@ -1,0 +1,38 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{Mc} =} d2c (@var{M})
+## @deftypefnx {} {@var{Mc} =} d2c (@var{M}, @var{method})
+## Continuous-time model of a discrete-time one with the control
+## package's @code{d2c} (@qcode{"zoh"} by default); the result has the
+## class of @var{M}, sample delays become delays in seconds.  The
+## covariance is not carried over.
+## @end deftypefn
+
+function Mc = d2c (M, method)
+  if (nargin < 2)
+    method = "zoh";
+  endif
+  P = pstruct (M);
+  if (P.Ts == 0)
+    error ("d2c:badInput", "d2c: the model is already continuous-time");
+  endif
+  f = "tf";
+  if (strcmp (P.kind, "idss"))
+    f = "ss";
+  endif
+  [G, delay] = lti_of (P, f, "d2c");
+  Gc = d2c (G, method);
+  Mc = back (P, Gc, delay * P.Ts);
+endfunction
+
+%!test  # first order, exact: z-pole 0.9 <-> s-pole log (0.9) / Ts
+%! Ts = 0.1;
+%! M = idtf (0.1, [1 -0.9], Ts, "IODelay", 2);
+%! Mc = d2c (M);
+%! assert (Mc.Denominator{1}, [1, -log(0.9) / Ts], 1e-9);
+%! assert (Mc.IODelay, 0.2, 1e-12);
+%! g = polyval (Mc.Numerator{1}, 0) / polyval (Mc.Denominator{1}, 0);
+%! assert (g, 1, 1e-9);
+%!error id=d2c:badInput d2c (idtf (1, [1 1]))
+
+%!demo
+%! Mc = d2c (idpoly (1, [0 0.5], 1, 1, [1 -0.5], 1, 0.1))

@@ -1,0 +1,18 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{P} =} getcov (@var{M})
+## Covariance of the parameters (order of @code{getpvec}); @code{[]} for
+## a model that was not estimated.
+## @end deftypefn
+
+function C = getcov (M)
+  C = pstruct (M).cov;
+endfunction
+
+%!test
+%! assert (getcov (idtf (2, [1 3 2])), []);
+%! M = idctm (struct ("B", 2, "F", [1 3], "covariance", [1 0.5; 0.5 4]));
+%! assert (getcov (M), [4 0.5; 0.5 1]);   # theta [f b] -> pvec [b f]
+
+%!demo
+%! M = idctm (struct ("B", 2, "F", [1 3], "covariance", diag ([0.1 0.2])));
+%! getcov (M)

@@ -1,0 +1,14 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{tf} =} isct (@var{M})
+## True for a continuous-time model (Ts = 0).
+## @end deftypefn
+
+function r = isct (M)
+  r = pstruct (M).Ts == 0;
+endfunction
+
+%!assert (isct (idtf (1, [1 1])))
+%!assert (! isct (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1)))
+
+%!demo
+%! isct (idtf (1, [1 1]))

@@ -1,0 +1,35 @@
+## -*- texinfo -*-
+## @deftypefn {} {} present (@var{M})
+## @deftypefnx {} {@var{txt} =} present (@var{M})
+## Displays a model with the standard deviation of each estimated
+## parameter, "value (+/- sd)", sd the square root of the corresponding
+## diagonal entry of the covariance (@code{getcov}), followed by the
+## estimation status, fit to the estimation data (%), loss function and
+## mean square error, as the System Identification Toolbox prints it.
+## With an output, returns the text instead.
+## @end deftypefn
+
+function txt = present (M)
+  s = sprintf ("%s =\n%s\n", inputname (1), model_text (pstruct (M), true));
+  if (nargout > 0)
+    txt = s;
+  else
+    printf ("%s\n", s);
+  endif
+endfunction
+
+%!test  # the printed standard deviations are sqrt (diag (covariance))
+%! M = idctm (struct ("B", 5, "F", [1 2 3], "covariance", diag ([4 9 16]),
+%!                    "method", "srivc"));
+%! t = present (M);
+%! assert (! isempty (strfind (t, "B(s) = 5 (+/- 4)")));
+%! assert (! isempty (strfind (t, "F(s) = s^2 + 2 (+/- 2) s + 3 (+/- 3)")));
+%! assert (! isempty (strfind (t, "SRIVC")));
+%!test
+%! t = present (idtf (2, [1 3 2]));
+%! assert (isempty (strfind (t, "+/-")));
+%!error <called with too many inputs> present (idtf (1, [1 1]), 2)
+
+%!demo
+%! M = setcov (idtf (2, [1 3]), diag ([0.04 0.01]));
+%! present (M)

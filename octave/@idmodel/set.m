@@ -1,0 +1,43 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{M} =} set (@var{M}, @var{name}, @var{value}, @dots{})
+## @deftypefnx {} {} set (@var{M})
+## Sets properties of a model object (checked as in the constructors:
+## monic denominators, delays >= 0, sizes); without values it lists the
+## property names.
+## @end deftypefn
+
+function M = set (M, varargin)
+  P = pstruct (M);
+  if (nargin == 1)
+    if (nargout == 0)
+      printf ("  %s\n", model_props (P.kind){:});
+    endif
+    return;
+  endif
+  if (mod (numel (varargin), 2) != 0)
+    error ([P.kind ":badInput"], "%s: set needs name-value pairs", P.kind);
+  endif
+  for i = 1:2:numel (varargin)
+    P = set_prop (P, match_prop (P, varargin{i}, P.kind), varargin{i+1},
+                  P.kind);
+  endfor
+  for f = fieldnames (P).'
+    M.(f{1}) = P.(f{1});
+  endfor
+endfunction
+
+%!test
+%! M = set (idtf (2, [1 3 2]), "IODelay", 0.5, "Name", "plant");
+%! assert (M.IODelay, 0.5);
+%! assert (M.Name, "plant");
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "IODelay")
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "IODelay", -2)
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Denominator", [2 3 2])
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "InputName", {"a", "b"})
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Ts", -0.1)
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Report", 3)
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "Report", struct ("Nothing", 1))
+%!error id=idtf:badInput set (idtf (2, [1 3 2]), "NoiseVariance", -1)
+
+%!demo
+%! M = set (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), "InputDelay", 0.3)

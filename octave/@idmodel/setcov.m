@@ -1,0 +1,37 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{M} =} setcov (@var{M}, @var{C})
+## Sets the covariance of the parameters (order of @code{getpvec}):
+## symmetric positive semi-definite, np-by-np; @code{[]} removes it.
+## Errors: @code{<class>:dimensionMismatch}, @code{<class>:badInput}.
+## @end deftypefn
+
+function M = setcov (M, C)
+  P = pstruct (M);
+  np = numel (pvec_of (P));
+  if (isempty (C))
+    M.cov = [];
+    return;
+  endif
+  if (! isnumeric (C) || ! isreal (C) || ! isequal (size (C), [np np]))
+    error ([P.kind ":dimensionMismatch"],
+           "%s: the covariance must be %d-by-%d", P.kind, np, np);
+  endif
+  if (any (! isfinite (C(:))) || norm (C - C.', 1) > 1e-10 * norm (C, 1)
+      || any (eig ((C + C.') / 2) < -1e-10 * max (norm (C, 1), realmin)))
+    error ([P.kind ":badInput"],
+           "%s: the covariance must be symmetric positive semi-definite",
+           P.kind);
+  endif
+  M.cov = double (C);
+endfunction
+
+%!test
+%! M = setcov (idtf (2, [1 3]), diag ([0.04 0.01]));
+%! [~, sd] = getpvec (M);
+%! assert (sd, [0.2; 0.1], 1e-15);
+%!error id=idtf:dimensionMismatch setcov (idtf (2, [1 3]), 1)
+%!error id=idtf:badInput setcov (idtf (2, [1 3]), [1 2; 0 1])
+
+%!demo
+%! M = setcov (idtf (2, [1 3]), diag ([0.04 0.01]));
+%! present (M)

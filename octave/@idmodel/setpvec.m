@@ -1,0 +1,27 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{M} =} setpvec (@var{M}, @var{p})
+## Sets the parameters of a model from a vector in the order of
+## @code{getpvec}; the covariance is kept (it describes the same
+## parameters).  A vector of the wrong length: @code{<class>:dimensionMismatch}.
+## @end deftypefn
+
+function M = setpvec (M, p)
+  P = pstruct (M);
+  p0 = pvec_of (P);
+  if (! isnumeric (p) || ! isreal (p) || numel (p) != numel (p0))
+    error ([P.kind ":dimensionMismatch"],
+           "%s: setpvec needs %d real parameters", P.kind, numel (p0));
+  endif
+  P = pvec_set (P, double (p(:)));
+  M.par = P.par;
+endfunction
+
+%!test
+%! M = setpvec (idpoly (1, [3 4], 1, 1, [1 1.2 2], "Ts", 0), [1 2 3 4]);
+%! assert ({M.B, M.F}, {[1 2], [1 3 4]});
+%! P = setpvec (idproc ("P1D"), [2 4 1]);
+%! assert ([P.Kp P.Tp1 P.Td], [2 4 1]);
+%!error id=idtf:dimensionMismatch setpvec (idtf (2, [1 3 2]), [1 2])
+
+%!demo
+%! M = setpvec (idtf (2, [1 3 2]), [4 3 2])

@@ -1,0 +1,139 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{y} =} sim (@var{M}, @var{data})
+## @deftypefnx {} {@var{y} =} sim (@var{M}, @var{u})
+## Simulates a model (its input-output part, from rest, noise-free) on
+## the inputs of @var{data}, an @code{iddata} set (input-only
+## @code{iddata ([], u, Ts)} or with outputs; its outputs are ignored).
+## Returns an @code{iddata} set with the simulated output, the same inputs,
+## sampling and InterSample.  A continuous-time model is simulated by
+## @code{simc} (exact for ZOH or FOH inputs, delays included); a
+## discrete-time model by its difference equation, which needs the data's
+## sampling interval to equal the model's.  Numeric @var{u} (N-by-nu)
+## gives a numeric output: for a discrete-time model directly, for a
+## continuous-time one @code{sim (M, u, Ts)}.
+## @end deftypefn
+
+function y = sim (M, data, Ts)
+  P = pstruct (M);
+  if (nargin < 2)
+    error ([P.kind ":badInput"], "%s: sim needs input data", P.kind);
+  endif
+  if (strcmp (P.kind, "idfrd"))
+    error ("idfrd:notSupported", "idfrd: frequency data cannot be simulated");
+  endif
+  if (isa (data, "iddata"))
+    [~, ~, nu] = size (data);
+    info = samplinginfo (data);
+    u = get (data, "InputData");
+    if (iscell (u))
+      u = u{1};
+    endif
+    if (P.Ts == 0)
+      yv = simc (M, data);
+    else
+      yv = dt_sim (P, u, info.Ts);
+    endif
+    if (info.Uniform)
+      y = iddata (yv, u, info.Ts, "InterSample", info.InterSample);
+    else
+      y = iddata (yv, u, info.SamplingInstants, "InterSample",
+                  info.InterSample);
+    endif
+    return;
+  endif
+  if (! isnumeric (data) || ! isreal (data))
+    error ([P.kind ":badInput"], "%s: sim needs an iddata set or numeric u",
+           P.kind);
+  endif
+  u = double (data);
+  if (isrow (u) && P.nu == 1)
+    u = u(:);
+  endif
+  if (P.Ts == 0)
+    if (nargin < 3)
+      error ([P.kind ":badInput"],
+             "%s: a continuous-time model needs sim (M, u, Ts) or iddata",
+             P.kind);
+    endif
+    y = simc (M, u, Ts);
+  else
+    y = dt_sim (P, u, P.Ts);
+  endif
+endfunction
+
+## Difference equation of each input-output pair (z rows of equal length
+## read as polynomials in z^-1), delayed by whole samples.
+function y = dt_sim (P, u, Ts)
+  if (abs (Ts - P.Ts) > 1e-12 * P.Ts)
+    error ([P.kind ":badInput"],
+           "%s: the data's Ts (%g) differs from the model's (%g)", P.kind,
+           Ts, P.Ts);
+  endif
+  if (columns (u) != P.nu)
+    error ([P.kind ":dimensionMismatch"],
+           "%s: the model has %d input(s), the data %d", P.kind, P.nu,
+           columns (u));
+  endif
+  N = rows (u);
+  delay = repmat (P.InputDelay(:).', P.ny, 1);
+  if (isfield (P.par, "IODelay"))
+    delay += P.par.IODelay;
+  endif
+  y = zeros (N, P.ny);
+  if (strcmp (P.kind, "idss"))
+    p = P.par;
+    x = zeros (rows (p.A), 1);
+    for i = 1:P.ny
+      ud = shift (u, delay(i, :));
+      x(:) = 0;
+      for k = 1:N
+        y(k, i) = p.C(i, :) * x + p.D(i, :) * ud(k, :).';
+        x = p.A * x + p.B * ud(k, :).';
+      endfor
+    endfor
+    return;
+  endif
+  [num, den] = tf_parts (P);
+  for i = 1:P.ny
+    for j = 1:P.nu
+      n = numel (den{i, j});
+      b = [num{i, j}, zeros(1, n - numel (num{i, j}))];
+      y(:, i) += filter (b, den{i, j}, shift (u(:, j), delay(i, j)));
+    endfor
+  endfor
+endfunction
+
+function ud = shift (u, d)
+  ud = zeros (size (u));
+  N = rows (u);
+  for j = 1:columns (u)
+    ud(d(j)+1:N, j) = u(1:N-d(j), j);
+  endfor
+endfunction
+
+%!test  # continuous time: the same as simc; returns iddata
+%! Ts = 0.05; u = prbs (7, 4); N = numel (u);
+%! M = idtf (2, [1 3 2], "IODelay", 0.1);
+%! Y = sim (M, iddata (zeros (N, 0), u, Ts, "InterSample", "foh"));
+%! assert (Y.y, simc (M, u, Ts, "InterSample", "foh"), 1e-14);
+%! assert (get (Y, "InterSample"), "foh");
+
+%!test  # discrete time against the difference equation
+%! u = randn (50, 1);
+%! M = idpoly (1, [0 0.5], 1, 1, [1 -0.9], 1, 0.1, "InputDelay", 2);
+%! y = sim (M, u);
+%! assert (y, filter ([0 0 0 0.5], [1 -0.9], u), 1e-13);
+%! S = idss (0.9, 1, 0.5, 0, [], [], 0.1);
+%! assert (sim (S, u), filter ([0 0.5], [1 -0.9], u), 1e-13);
+
+%!error id=idtf:badInput sim (idtf (1, [1 1]))
+%!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1))
+%!error id=idtf:badInput sim (idtf (1, [1 1]), "u")
+%!error id=idpoly:badInput sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), iddata (zeros (5, 0), ones (5, 1), 0.2))
+%!error id=idpoly:dimensionMismatch sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), ones (5, 2))
+%!error id=idfrd:notSupported sim (idfrd (1, 1), ones (5, 1))
+
+%!demo
+%! Ts = 0.05; u = prbs (7, 4);
+%! Y = sim (idtf (2, [1 3 2]), iddata (zeros (numel (u), 0), u, Ts));
+%! plot (Y.y);

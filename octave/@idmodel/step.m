@@ -1,0 +1,47 @@
+## -*- texinfo -*-
+## @deftypefn  {} {} step (@var{M})
+## @deftypefnx {} {} step (@var{M1}, @var{style1}, @var{M2}, @var{style2}, @dots{}, @var{t})
+## @deftypefnx {} {[@var{y}, @var{t}] =} step (@var{M}, @var{t})
+## Step response of models (this toolbox's, control-package ones may be
+## mixed in), with their delays; plotted without outputs, one line style
+## per model.  @var{t}: a vector of times or the final time.  @var{y}:
+## N-by-ny-by-nu.  In continuous time the response is exact at each
+## instant (matrix exponential of the control package's realisation); in
+## discrete time a unit step at sample 0.
+## @end deftypefn
+
+function varargout = step (varargin)
+  if (nargout == 0)
+    time_response ("step", "step", varargin);
+  else
+    [y, t] = time_response ("step", "step", varargin);
+    varargout = {y, t};
+  endif
+endfunction
+
+%!test  # against the control package's step of the same tf
+%! pkg load control
+%! t = (0:0.05:5)';
+%! M = idpoly (1, [1 4], 1, 1, [1 2.4 4], "Ts", 0);
+%! y = step (M, t);
+%! yc = step (tf ([1 4], [1 2.4 4]), t);
+%! assert (y, yc(:), 1e-10);
+%! ## a delay of 0.5 s shifts the response by 10 samples
+%! yd = step (idtf ([1 4], [1 2.4 4], "IODelay", 0.5), t);
+%! assert (yd, [zeros(10, 1); yc(1:end-10)], 1e-10);
+%! ## discrete time
+%! Md = idpoly (1, [0 0.5], 1, 1, [1 -0.9], 1, 0.1);
+%! yd = step (Md, (0:20)' * 0.1);
+%! assert (yd, [0; 5 * (1 - 0.9 .^ (1:20)')], 1e-12);
+%!test
+%! [y, t] = step (idss ([-1 0; 0 -2], eye (2), eye (2), zeros (2)));
+%! assert (size (y), [numel(t), 2, 2]);
+%! assert (y(end, 2, 2), 0.5, 1e-5);
+%!error id=step:badInput step (idtf (1, [1 1]), {1})
+%!error id=step:badInput step (idtf (1, [1 1]), -1)
+%!error id=idfrd:notSupported step (idfrd (1, 1))
+
+%!demo
+%! M0 = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
+%! M1 = idtf (4.2, [1 2.2 4], "IODelay", 0.2);
+%! step (M0, "b-", M1, "r--", 8);

@@ -1,0 +1,16 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{z} =} zero (@var{M})
+## Zeros of a model (the control package's @code{zero}).
+## @end deftypefn
+
+function z = zero (M)
+  [~, ~, ~, ~, ~, ~, P] = sys_data (M, "zero");
+  z = zero (lti_of (P, "tf", "zero"));
+endfunction
+
+%!test
+%! assert (zero (idtf ([1 4], [1 3 2])), -4, 1e-12);
+%!error id=idfrd:notSupported zero (idfrd (1, 1))
+
+%!demo
+%! zero (idtf ([1 4], [1 3 2]))

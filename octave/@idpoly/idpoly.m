@@ -1,0 +1,205 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{M} =} idpoly (@var{A}, @var{B}, @var{C}, @var{D}, @var{F}, @var{NoiseVariance}, @var{Ts})
+## @deftypefnx {} {@var{M} =} idpoly (@var{A}, @var{B}, @dots{}, @var{name}, @var{value}, @dots{})
+## @deftypefnx {} {@var{M} =} idpoly (@var{sys})
+## Polynomial model with identifiable parameters (System Identification
+## Toolbox semantics), continuous time (@var{Ts} = 0) or discrete time:
+## @example
+## A y(t) = sum_j B_j/F_j u_j(t - delay_j) + C/D e(t)
+## @end example
+## In continuous time the polynomials are in s (descending powers,
+## @code{[1 f1 .. f_nf]} is s^nf + f1 s^(nf-1) + ..); in discrete time in
+## q^-1 (ascending powers, leading zeros of B are sample delays).
+##
+## Positional arguments, all optional after @var{A}: @var{A}, @var{C},
+## @var{D}, @var{F} monic (leading coefficient 1; @code{[]} means 1);
+## @var{B} a row (one input), a cell array of rows or a matrix with one row
+## per input (several inputs); @var{F} likewise, or one row for all inputs;
+## @var{NoiseVariance} (default 1); @var{Ts} (default 1, as the SITB;
+## 0 for continuous time).  Name-value pairs set any property:
+## @code{Ts}, @code{InputDelay} (one per input; seconds in continuous
+## time, samples in discrete time), @code{IODelay}, @code{NoiseVariance},
+## @code{InputName}, @code{OutputName}, @code{Name}, @dots{}
+##
+## @var{sys} converts an @code{idtf}, @code{idproc}, @code{idss} or a
+## control-package @code{tf}/@code{ss} (single output) to B/F form.
+##
+## Properties (@code{M.B}, @code{get (M)}): A, B, C, D, F, IODelay,
+## Variable, Ts, InputDelay, NoiseVariance, Report (Report.Fit.FitPercent,
+## LossFcn, MSE; Report.Parameters.ParVector, FreeParCovariance), names
+## and units; read-only CONTSID aliases @code{theta} ([f b], the idctm
+## order), @code{covariance}, @code{nk}, @code{noise_variance},
+## @code{method}, @code{iterations}, @code{converged},
+## @code{InterSample}.  Methods: @code{sim}, @code{step},
+## @code{impulse}, @code{bode} (with @code{'sd'} bands), @code{nyquist},
+## @code{pzmap}, @code{zpplot}, @code{pole}, @code{zero}, @code{damp},
+## @code{c2d}, @code{d2c}, @code{tf}, @code{ss}, @code{present},
+## @code{getpvec}, @code{setpvec}, @code{getcov}, @code{polydata},
+## @code{tfdata}, @code{get}, @code{set}.
+##
+## @strong{Example}
+## @example
+## M0 = idpoly (1, 2, 1, 1, [1 1.2 2], "Ts", 0);     # 2/(s^2+1.2s+2)
+## M1 = idpoly (1, @{1, [1 2]@}, 1, 1, @{[1 1], [1 3 2]@}, 0, 0, ...
+##              "InputDelay", [0.1 0.2]);             # two inputs
+## @end example
+## @seealso{idtf, idproc, idss, idfrd, present, srivc}
+## @end deftypefn
+
+function M = idpoly (varargin)
+  if (nargin == 0)
+    error ("idpoly:badInput", "idpoly: expected at least A");
+  endif
+  if (nargin == 1 && isa (varargin{1}, "idpoly"))
+    M = varargin{1};
+    return;
+  endif
+  if (isobject (varargin{1}) || isstruct (varargin{1}))
+    M = convert (varargin{:});
+    return;
+  endif
+  npos = find (cellfun ("ischar", varargin), 1) - 1;
+  if (isempty (npos))
+    npos = nargin;
+  endif
+  if (npos > 7)
+    error ("idpoly:badInput", "idpoly: at most 7 positional arguments");
+  endif
+  pos = [varargin(1:npos), cell(1, 7 - npos)];
+  [A, B, C, D, F, lambda, Ts] = pos{:};
+  pairs = varargin(npos+1:end);
+  if (mod (numel (pairs), 2) != 0)
+    error ("idpoly:badInput",
+           "idpoly: properties must come in name-value pairs");
+  endif
+  if (iscell (B))
+    nu = numel (B);
+  elseif (isempty (B))
+    nu = 0;
+  else
+    nu = rows (B);
+  endif
+  ## Ts first: it decides how delays are checked.
+  k = find (strcmpi (pairs(1:2:end), "Ts"), 1, "last");
+  if (! isempty (k))
+    Ts = pairs{2*k};
+    pairs(2*k-1:2*k) = [];
+  endif
+  if (isempty (Ts))
+    Ts = 1;
+  endif
+  if (isempty (F))
+    F = 1;
+  endif
+  par = struct ("A", 1, "B", {repmat({0}, 1, nu)}, "C", 1, "D", 1,
+                "F", {repmat({1}, 1, nu)}, "IODelay", zeros (1, nu));
+  M = class (struct (), "idpoly", idmodel ("idpoly", par, 1, nu));
+  try
+    superiorto ("tf", "ss", "frd", "lti");
+  catch
+  end_try_catch
+  M = set (M, "Ts", Ts);
+  if (nu > 0)
+    M = set (M, "B", B, "F", F);
+  endif
+  M = set (M, "A", A, "C", ifempty (C), "D", ifempty (D));
+  if (! isempty (lambda))
+    M = set (M, "NoiseVariance", lambda);
+  endif
+  M = set (M, pairs{:});
+endfunction
+
+function v = ifempty (v)
+  if (isempty (v))
+    v = 1;
+  endif
+endfunction
+
+function M = convert (sys, varargin)
+  if (isa (sys, "idmodel") || isa (sys, "lti"))
+    [num, den] = tfdata (sys);
+    if (isa (sys, "idmodel"))
+      Ts = get (sys, "Ts");
+      delay = totaldelay (sys);
+    else
+      Ts = max (get (sys, "tsam"), 0);
+      delay = zeros (size (num));
+    endif
+    if (Ts > 0)
+      ## control's tf in z: make both rows the same length, then read them
+      ## as polynomials in z^-1.
+      for k = 1:numel (num)
+        n = max (numel (num{k}), numel (den{k}));
+        num{k} = [zeros(1, n - numel (num{k})), num{k}];
+        den{k} = [zeros(1, n - numel (den{k})), den{k}];
+        first = find (den{k} != 0, 1);
+        num{k} = num{k}(first:end);
+        den{k} = den{k}(first:end);
+      endfor
+    endif
+  else
+    error ("idpoly:badInput", "idpoly: cannot convert a %s", class (sys));
+  endif
+  if (rows (num) != 1)
+    error ("idpoly:notSupported",
+           "idpoly: only single-output models convert to idpoly");
+  endif
+  for k = 1:numel (num)
+    g = den{k}(1);
+    num{k} = num{k} / g;
+    den{k} = den{k} / g;
+  endfor
+  M = idpoly (1, num, 1, 1, den, 1, Ts, "InputDelay", delay(:).',
+              varargin{:});
+  if (isa (sys, "idmodel"))
+    M = set (M, "NoiseVariance", get (sys, "NoiseVariance"),
+             "Name", get (sys, "Name"));
+  endif
+endfunction
+
+%!test  # the CONTSID forms
+%! M0 = idpoly (1, 2, 1, 1, [1 1.2 2], "Ts", 0);
+%! assert (M0.Ts, 0);
+%! assert (M0.B, 2);
+%! assert (M0.F, [1 1.2 2]);
+%! m = idpoly (1, [1 2], 1, 1, [1 3 2], 0, 0);
+%! assert ({m.Ts, m.NoiseVariance}, {0, 0});
+%! Mn = idpoly (1, [1 0.5], 1, 1, [1 -0.9], 0, 0.1);
+%! assert (Mn.Ts, 0.1);
+%! assert (Mn.Variable, "z^-1");
+%! Ms = idpoly ([], [1 2], 1, 1, [1 4 3], "Ts", 0);
+%! assert (Ms.A, 1);
+
+%!test  # MISO with per-input delays; B and F as rows per input
+%! Ts = 0.05;
+%! M = idpoly (1, [1 2; 0 3], 1, 1, [1 3 2; 1 4 4], 0, 0,
+%!             "InputDelay", [2 5] * Ts);
+%! assert (M.B, {[1 2], [0 3]});
+%! assert (M.F{2}, [1 4 4]);
+%! assert (M.InputDelay, [0.1; 0.25], 1e-15);
+%! M2 = idpoly (1, {[1 2], 3}, 1, 1, {[1 3 2], [1 4 4]}, "Ts", 0);
+%! assert (numel (getpvec (M2)), 7);
+
+%!test  # conversion from idtf and from control's tf
+%! M = idpoly (idtf (2, [1 3 2]));
+%! assert ({M.B, M.F, M.Ts}, {2, [1 3 2], 0});
+%! pkg load control
+%! M = idpoly (tf (4, [2 2]));
+%! assert ({M.B, M.F}, {2, [1 1]});
+
+%!error id=idpoly:badInput idpoly ()
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [2 1], "Ts", 0)
+%!error id=idpoly:badInput idpoly ([2 1], 2, 1, 1, [1 1], "Ts", 0)
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], "Ts", 0, "InputDelay", -1)
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], "Ts", 0, "bogus", 1)
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], "Ts", -1)
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], "Ts")
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], 1, 0.1, "InputDelay", 0.5)
+%!error id=idpoly:dimensionMismatch idpoly (1, {1, 2}, 1, 1, {[1 1], [1 2], [1 3]}, "Ts", 0)
+%!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 NaN], "Ts", 0)
+%!error id=idpoly:badInput idpoly ({1})
+%!error id=idpoly:badInput idpoly (1, 2, 3, 4, 5, 6, 7, 8)
+
+%!demo
+%! M0 = idpoly (1, 2, 1, 1, [1 1.2 2], "Ts", 0)
+%! step (M0);
