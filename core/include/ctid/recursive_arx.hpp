@@ -260,6 +260,7 @@ struct RecursiveArxOutputs {
   S* theta_ct = nullptr;    // N x 2 na: [a1..ana, b0..b(na-1)] per sample
   S* prediction = nullptr;  // N: one-step prediction of (filtered) y
   S* conversion_failed = nullptr;  // N: 1 where the CT conversion failed
+  S* final_P = nullptr;            // (na + nb)^2: P after the last sample
 };
 
 // Runs the estimator over a record (y, u of n samples).
@@ -306,6 +307,9 @@ Status run_recursive_arx(const RecursiveArxConfig<S>& config, const S* y,
         out.conversion_failed[k] = estimator.last_conversion_ok() ? 0 : 1;
       }
     }
+  }
+  if (out.final_P != nullptr) {
+    Eigen::Map<Matrix<S>>(out.final_P, np, np) = estimator.P();
   }
   if (failed_conversions != nullptr) *failed_conversions = failures;
   return Status::Ok();
