@@ -118,13 +118,24 @@
 ## sampled data multiplies @code{Ts} by k, and an uneven selection turns
 ## into sampling instants.  Regularly sampled data start at time 0.
 ##
-## @strong{Limits.}  The control package's @code{cat}, @code{vertcat},
-## @code{horzcat} and @code{merge} rebuild the set through this constructor
-## with the signals and @code{tsam} only, so the result has
-## @code{InterSample} @qcode{"zoh"} and no sampling instants.  Control's
-## @code{nkshift}, @code{diff} and @code{resample} change the number of
-## samples without touching stored sampling instants; reading such a set's
-## sampling then fails with @code{iddata:dimensionMismatch}.  Data with
+## @strong{Methods.}  Besides @code{get}, @code{set}, @code{size} and
+## indexing, this class replaces the control package's methods that lost
+## the inter-sample behaviour or the sampling instants: @code{cat},
+## @code{vertcat} (@code{[d1; d2]}), @code{horzcat} (@code{[d1, d2]}) and
+## @code{merge} keep @code{InterSample} and the instants, or refuse with an
+## identified error (different @code{InterSample}, different @code{Ts},
+## instants that do not follow each other); @code{nkshift}, @code{diff} and
+## @code{resample} shorten the instants with the signals; @code{detrend}
+## (break points, trend struct) fits against the sampling instants;
+## @code{fft} and @code{ifft} are exact inverses for every length;
+## @code{plot} takes line styles (@code{plot (d1, "b", d2, "r")}).  Also:
+## @code{getexp}, @code{idresamp}, @code{idplot}.  The control package's
+## @code{filter} still applies (to regularly sampled data).
+##
+## @strong{Limits.}  Octave 7 reports an error raised inside a class's
+## concatenation method called by the operator (@code{[d1; d2]}) only as
+## @qcode{"iddata/vertcat method failed"}, without identifier; the function
+## form @code{vertcat (d1, d2)} gives the reason and identifier.  Data with
 ## unspecified sampling interval (@code{iddata (y, u)}) are rejected by the
 ## toolbox's estimators.
 ##
@@ -140,7 +151,8 @@
 ##   @result{} sz = 100     1     1     1
 ## @end group
 ## @end example
-## @seealso{samplinginfo, get, set, size}
+## @seealso{samplinginfo, get, set, size, merge, detrend, fft, plot,
+## idresamp, idplot}
 ## @end deftypefn
 
 function dat = iddata (varargin)

@@ -16,7 +16,7 @@
 ## @item Uniform
 ## false when the experiment was given a vector of sampling instants.
 ## @item InterSample
-## @qcode{"zoh"} or @qcode{"foh"}: the behaviour of the inputs between
+## @qcode{"zoh"}, @qcode{"foh"} or @qcode{"bl"}: the behaviour of the inputs between
 ## samples.
 ## @end table
 ##
