@@ -192,7 +192,8 @@ endfunction
 %!test
 %! x = randn (50, 2);
 %! assert (idresamp (x, 1), x, 1e-12);
-%! m = merge (iddata (sin ((1:100).' / 9), [], 1), iddata (cos ((1:60).' / 9), [], 2));
+%! m = merge (iddata (sin ((1:100).' / 9), [], 1),
+%!            iddata (cos ((1:60).' / 9), [], 2));
 %! r = idresamp (m, 2);
 %! assert (r.N, [50, 30]);
 %! assert (r.Ts, {2; 4});

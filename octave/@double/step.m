@@ -76,7 +76,8 @@ endfunction
 %! pkg load control
 %! sys = tf (1, [1 2 1]);
 %! [y1, t1] = step (sys);
-%! assert (which ("step"), fullfile (fileparts (fileparts (which ("tf"))), "step.m"));
+%! control = fileparts (fileparts (which ("tf")));
+%! assert (which ("step"), fullfile (control, "step.m"));
 %! [y2, t2] = step (sys, 3);
 %! assert (t2(end), 3, 1e-12);
 %! assert (numel (y1), numel (t1));

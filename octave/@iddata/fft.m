@@ -39,7 +39,8 @@ function dat = fft (dat, n = [])
     n = double (n(:)) .* ones (nexp, 1);
   else
     error ("iddata:badInput",
-           "iddata: fft: 'n' must be a positive integer, or one per experiment");
+           ["iddata: fft: 'n' must be a positive integer, or one per ", ...
+            "experiment"]);
   endif
   half = @(x, n) fft (x, n, 1)(1:fix (n/2)+1, :) / sqrt (n);
   w = cell (nexp, 1);

@@ -33,7 +33,8 @@ endfunction
 %! assert (d.u, [u, -u]);
 %! assert (d.OutputName, {"a"; ""});
 %! t = cumsum (0.1 + (1:50).'/1000);
-%! d = [iddata(y, [], "SamplingInstants", t), iddata([], u, "SamplingInstants", t)];
+%! d = [iddata(y, [], "SamplingInstants", t), ...
+%!      iddata([], u, "SamplingInstants", t)];
 %! assert (d.SamplingInstants, t);
 
 %!error id=iddata:dimensionMismatch

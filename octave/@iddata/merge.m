@@ -47,7 +47,8 @@ endfunction
 
 %!error id=iddata:notSupported
 %! merge (iddata (1, 1, 1, "InterSample", "foh"), iddata (1, 1, 1));
-%!error id=iddata:dimensionMismatch merge (iddata (1, 1, 1), iddata (1, [1 1], 1))
+%!error id=iddata:dimensionMismatch
+%! merge (iddata (1, 1, 1), iddata (1, [1 1], 1));
 %!error id=iddata:badInput merge (iddata (1, 1, 1), 5)
 
 %!demo

@@ -30,7 +30,8 @@ function ax = plot (varargin)
   timedomain = cellfun (@(d) struct (d).timedomain, sets);
   if (any (timedomain != timedomain(1)))
     error ("iddata:badInput",
-           "iddata: plot: cannot plot time- and frequency-domain sets together");
+           ["iddata: plot: cannot plot time- and frequency-domain sets ", ...
+            "together"]);
   endif
   ny = max (cellfun (@(d) size (d, 2), sets));
   nu = max (cellfun (@(d) size (d, 3), sets));

@@ -45,7 +45,8 @@ function [systems, styles, range, opt] = ltiplot_args (who, args)
       range = x;
     elseif (! isempty (range))
       error ([who, ":badInput"],
-             "%s: argument %d: models must come before the frequencies or times",
+             ["%s: argument %d: models must come before the frequencies ", ...
+              "or times"],
              who, k);
     else
       systems{end+1} = to_lti (who, x, k);

@@ -50,7 +50,8 @@ function [sys, iu, extra] = pre_lti_args (who, args)
       sys = ss (a, b, c, d);
       if (numel (args) >= 5)
         iu = args{5};
-        if (! isempty (iu) && ! (isscalar (iu) && iu >= 1 && iu <= columns (b) && iu == fix (iu)))
+        if (! isempty (iu) && ! (isscalar (iu) && iu >= 1
+                                 && iu <= columns (b) && iu == fix (iu)))
           error ([who, ":badInput"],
                  "%s: 'iu' must be an input index from 1 to %d", who,
                  columns (b));
