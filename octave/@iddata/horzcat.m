@@ -37,6 +37,18 @@ endfunction
 %!      iddata([], u, "SamplingInstants", t)];
 %! assert (d.SamplingInstants, t);
 
+## an FOH estimate on [output set, FOH input set] is the one on the FOH set
+%!test
+%! Ts = 0.05;
+%! tt = (0:999).' * Ts;
+%! uu = sin (0.9 * tt) + sign (sin (0.31 * tt));
+%! yy = lsim (c2d (tf (2, [1, 3, 2]), Ts, "foh"), uu);
+%! joined = [iddata(yy, [], Ts), iddata([], uu, Ts, "InterSample", "foh")];
+%! assert (joined.InterSample, "foh");
+%! a = srivc (joined, [1 2 0]);
+%! b = srivc (iddata (yy, uu, Ts, "InterSample", "foh"), [1 2 0]);
+%! assert ([a.B, a.F], [b.B, b.F]);
+
 %!error id=iddata:dimensionMismatch
 %! horzcat (iddata (y, u, 0.1), iddata (y(1:10), u(1:10), 0.1));
 %!error id=iddata:badInput horzcat (iddata (y, u, 0.1), iddata (y, u, 0.2))
