@@ -13,7 +13,8 @@
 ## control-package models (@code{tf}, @code{ss}, @code{zpk}, @code{frd}),
 ## continuous or discrete time, or any model object that @code{tf (sys)}
 ## (else @code{frd (sys)}) converts, such as the toolbox's identified
-## models.  A frequency-response-data model is drawn at its own
+## models, or that has SITB's @code{idfrd} properties @code{ResponseData},
+## @code{Frequency} and @code{Ts}.  A frequency-response-data model is drawn at its own
 ## frequencies.
 ## @item style
 ## line style of the model before it (@qcode{"r"}, @qcode{"b-"}, ...).
@@ -259,6 +260,13 @@ endfunction
 %!   f = frd (s1, w);
 %!   h = bodeplot (c2d (s1, 0.1), ss ([-1 0; 0 -2], eye (2), eye (2), 0), f);
 %!   assert (size (h), [4, 2]);
+%!   clf (fig);
+%!   ## an object with idfrd's properties (a struct stands in for one)
+%!   g = struct ("ResponseData", reshape (freqresp (s1, w), 1, 1, []),
+%!               "Frequency", w(:), "Ts", 0);
+%!   h = bodeplot (g, s1, "r", w);
+%!   lines = flipud (findobj (h(1), "type", "line"));
+%!   assert (get (lines(1), "ydata"), get (lines(2), "ydata"), 1e-10);
 %!   opt = bodeoptions;
 %!   opt.PhaseMatching = "on";
 %!   lastwarn ("");

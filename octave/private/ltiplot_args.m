@@ -6,10 +6,14 @@
 ##
 ## Each model is returned as a control-package LTI object: an @code{lti}
 ## as it is, any other object through @code{tf (model)} (the model
-## classes' conversion), else through @code{frd (model)}.  A string after a
+## classes' conversion), else through @code{frd (model)}, else as
+## @code{frd (model.ResponseData, model.Frequency, model.Ts)} (SITB's
+## @code{idfrd} properties).  A string after a
 ## model is its line style.  @var{range} is the numeric (or cell
 ## @code{@{wmin, wmax@}}) argument after the models, @code{[]} when
-## absent; @var{opt} a trailing options struct, @code{[]} when absent.
+## absent; @var{opt} a trailing options struct (one without a
+## @code{ResponseData} field, which marks frequency response data),
+## @code{[]} when absent.
 ## Errors are @code{@var{who}:badInput}.
 ## @end deftypefn
 
@@ -31,7 +35,7 @@ function [systems, styles, range, opt] = ltiplot_args (who, args)
                "%s: argument %d: a line style must follow a model", who, k);
       endif
       styles{end} = x;
-    elseif (isstruct (x))
+    elseif (isstruct (x) && ! isfield (x, "ResponseData"))
       if (k != numel (args))
         error ([who, ":badInput"],
                "%s: the options struct must be the last argument", who);
@@ -71,6 +75,12 @@ function sys = to_lti (who, x, k)
   end_try_catch
   try
     sys = frd (x);
+    return;
+  catch
+  end_try_catch
+  try
+    ## frequency response data with SITB's property names (idfrd)
+    sys = frd (x.ResponseData, x.Frequency, x.Ts);
     return;
   catch
   end_try_catch
