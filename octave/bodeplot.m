@@ -14,8 +14,8 @@
 ## continuous or discrete time, or any model object that @code{tf (sys)}
 ## (else @code{frd (sys)}) converts, such as the toolbox's identified
 ## models, or that has SITB's @code{idfrd} properties @code{ResponseData},
-## @code{Frequency} and @code{Ts}.  A frequency-response-data model is drawn at its own
-## frequencies.
+## @code{Frequency} and @code{Ts}.  A frequency-response-data model is
+## drawn at its own frequencies.
 ## @item style
 ## line style of the model before it (@qcode{"r"}, @qcode{"b-"}, ...).
 ## @item w

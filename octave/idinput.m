@@ -69,9 +69,11 @@
 ## @end deftypefn
 
 function [u, freqs] = idinput (N, type = "rgs", band = [0, 1],
-                               levels = [-1, 1], sinedata = [10, 10, 1])
+                               levels = [-1, 1], sinedata = [10, 10, 1],
+                               varargin)
   if (nargin < 1 || nargin > 5)
-    print_usage ();
+    error ("idinput:badInput",
+           "idinput: takes 1 to 5 arguments, not %d", nargin);
   endif
   if (! (isnumeric (N) && isreal (N) && any (numel (N) == [1, 2, 3])
          && all (N(:) >= 1 & N(:) == fix (N(:)) & isfinite (N(:)))))
@@ -268,7 +270,8 @@ endfunction
 %!error id=idinput:badInput idinput (10, "sine", [0.01 0.05])
 %!error id=idinput:badInput idinput (10, "rgs", [0.01 0.05])
 %!error id=idinput:badInput idinput (10, "rgs", [0 0.05])
-%!error <Invalid call> idinput ()
+%!error id=idinput:badInput idinput ()
+%!error id=idinput:badInput idinput (10, "rgs", [0 1], [-1 1], [10 10 1], 6)
 
 %!demo
 %! ## a PRBS with clock period 10 and a multisine in the lower half band

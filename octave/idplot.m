@@ -31,9 +31,10 @@
 ## @seealso{plot, iddata}
 ## @end deftypefn
 
-function ax = idplot (z, int = [], Ts = [], ny = 1, pc = "")
+function ax = idplot (z, int = [], Ts = [], ny = 1, pc = "", varargin)
   if (nargin < 1 || nargin > 5)
-    print_usage ();
+    error ("idplot:badInput",
+           "idplot: takes 1 to 5 arguments, not %d", nargin);
   endif
   if (isa (z, "iddata"))
     if (size (z, 4) != 1 || ! strcmp (get (z, "Domain"), "Time"))
@@ -147,7 +148,8 @@ endfunction
 %!error id=idplot:badInput idplot (ones (5, 2), 1:3, 1, 3)
 %!error id=idplot:badInput idplot (ones (5, 2), 1:3, 1, 1, "x")
 %!error id=idplot:badInput idplot (merge (iddata (1, 1, 1), iddata (1, 1, 1)))
-%!error <Invalid call> idplot ()
+%!error id=idplot:badInput idplot ()
+%!error id=idplot:badInput idplot (ones (5, 2), 1:3, 1, 1, "zoh", 6)
 
 %!demo
 %! Ts = 0.05;

@@ -60,15 +60,17 @@
 ## @seealso{iddata, resample}
 ## @end deftypefn
 
-function [datar, ract] = idresamp (data, R, order = 10, tol = [])
-  if (nargin < 2)
-    print_usage ();
+function [datar, ract] = idresamp (data, R, order = 10, tol = [], varargin)
+  if (nargin < 2 || nargin > 4)
+    error ("idresamp:badInput",
+           "idresamp: takes 2 to 4 arguments, not %d", nargin);
   endif
   if (! (isnumeric (R) && isreal (R) && isscalar (R) && R > 0
          && isfinite (R)))
     error ("idresamp:badInput",
            "idresamp: 'R' must be a positive finite scalar");
   endif
+  R = double (R);
   if (! (isnumeric (order) && isscalar (order) && isreal (order)
          && order >= 1 && order == fix (order) && order <= 1000))
     error ("idresamp:badInput",
@@ -205,6 +207,7 @@ endfunction
 %!error id=idresamp:badInput idresamp (ones (10, 1), pi, 10, 1e-12)
 %!error id=idresamp:badInput idresamp ([1 NaN], 2)
 %!error id=idresamp:badInput idresamp ({1}, 2)
+%!error id=idresamp:badInput idresamp (ones (10, 1), 2, 10, 1e-3, 5)
 %!error id=idresamp:notSupported
 %! idresamp (iddata ((1:3).', (1:3).', [0 1 3]), 2);
 %!error id=idresamp:notSupported idresamp (iddata ((1:3).', (1:3).'), 2)

@@ -28,9 +28,10 @@
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [a, b, c, d] = ord2 (wn, z)
+function [a, b, c, d] = ord2 (wn, z, varargin)
   if (nargin != 2)
-    print_usage ();
+    error ("ord2:badInput",
+           "ord2: takes 2 arguments, not %d", nargin);
   endif
   if (! (isnumeric (wn) && isscalar (wn) && isreal (wn) && isfinite (wn)
          && isnumeric (z) && isscalar (z) && isreal (z) && isfinite (z)))
@@ -71,7 +72,8 @@ endfunction
 %!error id=ord2:badInput ord2 (1, NaN)
 %!error id=ord2:badInput ord2 (1i, 0.5)
 %!error id=ord2:badInput [a, b, c] = ord2 (1, 0.5);
-%!error <Invalid call> ord2 (1)
+%!error id=ord2:badInput ord2 (1)
+%!error id=ord2:badInput ord2 (1, 0.5, 3)
 
 %!demo
 %! [num, den] = ord2 (2, 0.3);

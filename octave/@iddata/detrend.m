@@ -43,9 +43,10 @@
 ## @seealso{iddata, detrend}
 ## @end deftypefn
 
-function [dat, trend] = detrend (dat, type = 0, brkp = [])
+function [dat, trend] = detrend (dat, type = 0, brkp = [], varargin)
   if (nargin > 3)
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: detrend: takes 1 to 3 arguments, not %d", nargin);
   endif
   if (! dat.timedomain)
     error ("iddata:notSupported",
@@ -254,6 +255,7 @@ endfunction
 %!error id=iddata:dimensionMismatch
 %! detrend (iddata (y, u, 0.1), struct ("OutputOffset", 1, "OutputSlope", 0,
 %!                                      "InputOffset", 1, "InputSlope", 0));
+%!error id=iddata:badInput detrend (iddata (y, u, 0.1), 1, 50, 4)
 
 %!demo
 %! t = (0:0.1:50).';

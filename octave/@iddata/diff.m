@@ -12,9 +12,10 @@
 ## @seealso{iddata, nkshift}
 ## @end deftypefn
 
-function dat = diff (dat, k = 1)
+function dat = diff (dat, k = 1, varargin)
   if (nargin < 1 || nargin > 2)
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: diff: takes 1 or 2 arguments, not %d", nargin);
   endif
   if (! (isnumeric (k) && isscalar (k) && isreal (k) && k >= 0
          && k == fix (k)))
@@ -49,6 +50,7 @@ endfunction
 %!error id=iddata:badInput diff (iddata ((1:5).', (1:5).', 1), -1)
 %!error id=iddata:badInput diff (iddata ((1:5).', (1:5).', 1), 5)
 %!error id=iddata:notSupported diff (fft (iddata ((1:5).', (1:5).', 1)))
+%!error id=iddata:badInput diff (iddata ((1:5).', (1:5).', 1), 1, 1)
 
 %!demo
 %! d = iddata (cumsum (randn (100, 1)), randn (100, 1), 0.1);

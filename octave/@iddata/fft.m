@@ -19,9 +19,10 @@
 ## @seealso{ifft, iddata}
 ## @end deftypefn
 
-function dat = fft (dat, n = [])
+function dat = fft (dat, n = [], varargin)
   if (nargin < 1 || nargin > 2)
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: fft: takes 1 or 2 arguments, not %d", nargin);
   endif
   if (! dat.timedomain)
     return;
@@ -78,6 +79,7 @@ endfunction
 %!error id=iddata:notSupported fft (iddata ((1:3).', (1:3).', [0 1 3]))
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 0)
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), [2 2])
+%!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 3, 1)
 
 %!demo
 %! u = iddata ([], randn (512, 1), 0.01, "InterSample", "bl");

@@ -6,9 +6,10 @@
 ## @seealso{merge, iddata}
 ## @end deftypefn
 
-function d = getexp (dat, k)
+function d = getexp (dat, k, varargin)
   if (nargin != 2)
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: getexp: takes 2 arguments, not %d", nargin);
   endif
   d = index_data (dat, {":", ":", ":", k});
 endfunction
@@ -22,7 +23,8 @@ endfunction
 
 %!error id=iddata:badInput getexp (iddata (1, 1, 1), 2)
 %!error id=iddata:badInput getexp (iddata (1, 1, 1), "c")
-%!error <Invalid call> getexp (iddata (1, 1, 1))
+%!error id=iddata:badInput getexp (iddata (1, 1, 1))
+%!error id=iddata:badInput getexp (iddata (1, 1, 1), 1, 2)
 
 %!demo
 %! m = merge (iddata (randn (10, 1), [], 1), iddata (randn (20, 1), [], 2));

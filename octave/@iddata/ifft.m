@@ -13,9 +13,10 @@
 ## @seealso{fft, iddata}
 ## @end deftypefn
 
-function dat = ifft (dat)
+function dat = ifft (dat, varargin)
   if (nargin != 1)
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: ifft: takes 1 argument, not %d", nargin);
   endif
   if (dat.timedomain)
     return;
@@ -76,6 +77,7 @@ endfunction
 %! ifft (iddata ([1; 2; 3], [], 1, "Frequency", [1; 2; 3]));
 %!error id=iddata:badInput
 %! ifft (iddata ([1; 2; 3], [], 1, "Frequency", [0; 1; 3]));
+%!error id=iddata:badInput ifft (fft (iddata ((1:4).', [], 1)), 2)
 
 %!demo
 %! d = iddata (randn (100, 1), randn (100, 1), 0.1);

@@ -15,9 +15,10 @@
 ## @seealso{iddata, diff}
 ## @end deftypefn
 
-function dat = nkshift (dat, nk = 0, append)
+function dat = nkshift (dat, nk = 0, append, varargin)
   if (nargin < 1 || nargin > 3)
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: nkshift: takes 1 to 3 arguments, not %d", nargin);
   endif
   if (! (isnumeric (nk) && isscalar (nk) && isreal (nk) && nk == fix (nk)))
     error ("iddata:badInput", "iddata: nkshift: 'nk' must be a scalar integer");
@@ -77,6 +78,7 @@ endfunction
 %!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), 1.5)
 %!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), 5)
 %!error id=iddata:notSupported nkshift (fft (iddata ((1:5).', (1:5).', 1)), 1)
+%!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), 1, 1, 1)
 
 %!demo
 %! d = iddata ((1:6).', (1:6).', 0.1);

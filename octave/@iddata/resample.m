@@ -18,7 +18,8 @@ function dat = resample (dat, p, q, varargin)
       error ("iddata:notSupported",
              "iddata: resample: no filter argument; use idresamp's 'order'");
     endif
-    print_usage ();
+    error ("iddata:badInput",
+           "iddata: resample: takes 3 arguments, not %d", nargin);
   endif
   ok = @(x) isnumeric (x) && isscalar (x) && isreal (x) && x >= 1 ...
             && x == fix (x);
@@ -44,6 +45,7 @@ endfunction
 %!error id=iddata:notSupported resample (iddata ((1:9).', [], 1), 1, 2, 10)
 %!error id=idresamp:notSupported
 %! resample (iddata ((1:3).', [], [0 1 3]), 1, 2);
+%!error id=iddata:badInput resample (iddata ((1:9).', [], 1), 1)
 
 %!demo
 %! d = iddata (sin ((0:199).' / 10), [], 0.1);
