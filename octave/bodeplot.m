@@ -283,6 +283,7 @@ endfunction
 %!error id=bodeplot:badInput bodeplot ()
 %!error id=bodeplot:badInput bodeplot ("r", s)
 %!error id=bodeplot:badInput bodeplot (s, "r", "b")
+%!error id=bodeplot:badInput bodeplot (s, "linear")
 %!error id=bodeplot:badInput bodeplot (s, 1:3, s)
 %!error id=bodeplot:badInput bodeplot (s, 1:3, 1:3)
 %!error id=bodeplot:badInput bodeplot (s, bodeoptions (), 1:3)

@@ -22,12 +22,13 @@ function [mag, phase, w] = dbode (varargin)
   if (! exist ("tf"))
     error ("dbode:notSupported", "dbode: needs the control package");
   endif
-  ok = cellfun (@(x) isnumeric (x) && isreal (x), varargin);
+  ok = cellfun (@is_finite_real, varargin);
   if (! all (ok) || ! any (nargin == [3, 4, 6, 7]))
     error ("dbode:badInput",
            ["dbode: use dbode (num, den, Ts[, w]) or ", ...
             "dbode (a, b, c, d, Ts, iu[, w])"]);
   endif
+  varargin = cellfun (@double, varargin, "uniformoutput", false);
   if (nargin <= 4)
     ts = varargin{3};
     rest = varargin(4:end);
@@ -69,6 +70,10 @@ function [mag, phase, w] = dbode (varargin)
   w = w(:);
 endfunction
 
+function ok = is_finite_real (x)
+  ok = isnumeric (x) && isreal (x) && all (isfinite (x(:)));
+endfunction
+
 %!test
 %! pkg load control
 %! w = [0.1 1 5 10];
@@ -77,10 +82,13 @@ endfunction
 %! assert (m, abs (0.2 ./ (z - 0.8)).', 1e-12);
 %! [m2, p2] = dbode (0.8, 1, 1, 0, 0.1, 1, w);
 %! assert (m2, abs (1 ./ (z - 0.8)).', 1e-12);
+%! assert (dbode ([0 0.2], [1 -0.8], single (0.5), w),
+%!         dbode ([0 0.2], [1 -0.8], 0.5, w), 1e-12);
 
 %!error id=dbode:badInput dbode (1, [1 -0.5])
 %!error id=dbode:badInput dbode (1, [1 -0.5], 0)
 %!error id=dbode:badInput dbode (1, [1 -0.5], "a")
+%!error id=dbode:badInput dbode (1, [1 NaN], 1)
 %!error id=dbode:badInput dbode (0.8, 1, 1, 0, 0.1, 2)
 %!error id=dbode:badInput dbode (eye (2), 1, 1, 0, 0.1, 1)
 

@@ -71,7 +71,8 @@ function ax = idplot (z, int = [], Ts = [], ny = 1, pc = "", varargin)
   n = rows (y);
   if (isempty (int))
     int = 1:n;
-  elseif (! (isnumeric (int) && isvector (int) && all (int == fix (int))
+  elseif (! (isnumeric (int) && isreal (int) && isvector (int)
+             && all (int == fix (int))
              && all (int >= 1 & int <= n) && all (diff (int) > 0)))
     error ("idplot:badInput",
            "idplot: 'int' must be increasing sample indices from 1 to %d", n);
@@ -144,6 +145,7 @@ endfunction
 %!error id=idplot:badInput idplot ({1})
 %!error id=idplot:badInput idplot (ones (5, 2), 0:2)
 %!error id=idplot:badInput idplot (ones (5, 2), [3 2])
+%!error id=idplot:badInput idplot (ones (5, 2), 1i)
 %!error id=idplot:badInput idplot (ones (5, 2), 1:3, -1)
 %!error id=idplot:badInput idplot (ones (5, 2), 1:3, 1, 3)
 %!error id=idplot:badInput idplot (ones (5, 2), 1:3, 1, 1, "x")

@@ -125,6 +125,7 @@ endfunction
 %!error id=stepplot:badInput stepplot (s, [3 1 2])
 %!error id=stepplot:badInput stepplot (s, {1})
 %!error id=stepplot:badInput stepplot (s, "r", "g")
+%!error id=stepplot:badInput stepplot (s, "linear")
 %!error id=stepplot:notSupported stepplot (s, struct ("a", 1))
 %!error id=stepplot:notSupported stepplot (frd (s, 1:3))
 

@@ -92,6 +92,11 @@ function [dat, trend] = detrend (dat, type = 0, brkp = [], varargin)
     else
       tau = zeros (n, 1);
     endif
+    if (order + 1 + numel (brk) > n)
+      error ("iddata:badInput",
+             ["iddata: detrend: experiment %d has too few samples (%d) ", ...
+              "for this trend"], e, n);
+    endif
     basis = trend_basis (tau, order, brk);
     if (rank (basis) < columns (basis))
       error ("iddata:badInput",
@@ -249,6 +254,7 @@ endfunction
 %!error id=iddata:badInput detrend (iddata (y, u, 0.1), 1, 2.5)
 %!error id=iddata:badInput detrend (iddata (y, u, 0.1), struct ("a", 1))
 %!error id=iddata:badInput detrend (iddata ([1; 2], [], 1), 3)
+%!error id=iddata:badInput detrend (iddata ([1; 2], [], 1), 1e12)
 %!error id=iddata:notSupported detrend (iddata (y, u, 0.1), 2, 50)
 %!error id=iddata:notSupported [a, b] = detrend (iddata (y, u, 0.1), 1, 50);
 %!error id=iddata:notSupported detrend (fft (iddata (y, u, 0.1)))

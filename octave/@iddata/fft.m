@@ -43,6 +43,11 @@ function dat = fft (dat, n = [], varargin)
            ["iddata: fft: 'n' must be a positive integer, or one per ", ...
             "experiment"]);
   endif
+  nchan = columns (dat.y{1}) + numel (dat.inname);
+  if (any (n * max (nchan, 1) > 2^28))
+    error ("iddata:badInput",
+           "iddata: fft: %g points per signal is too many", max (n));
+  endif
   half = @(x, n) fft (x, n, 1)(1:fix (n/2)+1, :) / sqrt (n);
   w = cell (nexp, 1);
   for e = 1:nexp
@@ -79,6 +84,7 @@ endfunction
 %!error id=iddata:notSupported fft (iddata ((1:3).', (1:3).', [0 1 3]))
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 0)
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), [2 2])
+%!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 1e12)
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 3, 1)
 
 %!demo

@@ -80,6 +80,12 @@ function [sets, styles] = parse_args (args)
       styles{end+1} = "";
     elseif (ischar (args{k}) && rows (args{k}) <= 1 && ! isempty (sets)
             && isempty (styles{end}))
+      [~, valid] = __pltopt__ ("plot", args{k}, false);
+      if (! valid)
+        error ("iddata:badInput",
+               "iddata: plot: argument %d: '%s' is not a line style", k,
+               args{k});
+      endif
       styles{end} = args{k};
     else
       error ("iddata:badInput",
@@ -173,6 +179,7 @@ endfunction
 %! end_unwind_protect
 
 %!error id=iddata:badInput plot (iddata (y, u, 0.1), "b", "r")
+%!error id=iddata:badInput plot (iddata (y, u, 0.1), "linear")
 %!error id=iddata:badInput plot (iddata (y, u, 0.1), 3, iddata (y, u, 0.1))
 %!error id=iddata:badInput plot (iddata (y, u, 0.1), fft (iddata (y, u, 0.1)))
 

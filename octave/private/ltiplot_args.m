@@ -34,6 +34,11 @@ function [systems, styles, range, opt] = ltiplot_args (who, args)
         error ([who, ":badInput"],
                "%s: argument %d: a line style must follow a model", who, k);
       endif
+      [~, valid] = __pltopt__ ("plot", x, false);
+      if (! valid)
+        error ([who, ":badInput"],
+               "%s: argument %d: '%s' is not a line style", who, k, x);
+      endif
       styles{end} = x;
     elseif (isstruct (x) && ! isfield (x, "ResponseData"))
       if (k != numel (args))
