@@ -10,7 +10,7 @@
 ## assembled from a simulated output and its input:
 ## @code{datafreq = [Y, U]}.  With the operator form, Octave 7 reports a
 ## failure as @qcode{"iddata/horzcat method failed"} without identifier;
-## call @code{horzcat (d1, d2)} to see the reason.
+## the reason comes just before as a warning with the identifier.
 ## @seealso{cat, vertcat, merge}
 ## @end deftypefn
 

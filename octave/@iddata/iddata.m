@@ -134,8 +134,9 @@
 ##
 ## @strong{Limits.}  Octave 7 reports an error raised inside a class's
 ## concatenation method called by the operator (@code{[d1; d2]}) only as
-## @qcode{"iddata/vertcat method failed"}, without identifier; the function
-## form @code{vertcat (d1, d2)} gives the reason and identifier.  Data with
+## @qcode{"iddata/vertcat method failed"}, without identifier; the reason
+## is issued just before as a warning with the identifier, and the function
+## form @code{vertcat (d1, d2)} raises the identified error itself.  Data with
 ## unspecified sampling interval (@code{iddata (y, u)}) are rejected by the
 ## toolbox's estimators.
 ##

@@ -12,8 +12,9 @@
 ##
 ## Octave 7 replaces the message of an error raised in a class's
 ## concatenation method called by the operator (@code{[d1; d2]}) with
-## @qcode{"iddata/vertcat method failed"} and drops its identifier; call
-## @code{vertcat (d1, d2)} to see the reason.
+## @qcode{"iddata/vertcat method failed"} and drops its identifier; the
+## reason is therefore also issued as a warning (with the identifier)
+## just before the error.
 ## @seealso{cat, horzcat, merge}
 ## @end deftypefn
 
@@ -105,6 +106,15 @@ endfunction
 ## the operator form fails too; Octave 7 replaces the message and drops the
 ## identifier of an error raised in a class's concatenation method
 %!error <iddata/vertcat method failed> [iddata(y, u, 0.05); iddata(y, u, 0.1)]
+## ... so the reason comes first as a warning with the error's identifier
+%!test
+%! lastwarn ("");
+%! try
+%!   evalc ("[iddata(y, u, 0.05); iddata(y, u, 0.1)]");
+%! end_try_catch
+%! [msg, id] = lastwarn ();
+%! assert (id, "iddata:badInput");
+%! assert (! isempty (strfind (msg, "sampled every 0.1")));
 
 %!demo
 %! ## two irregularly sampled records of one run, kept irregular

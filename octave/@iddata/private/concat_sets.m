@@ -28,10 +28,28 @@
 ## sampling interval or instants.
 ## @end itemize
 ## The channel names, units and user data of the first set are kept
-## (for channels, the names of every set in order).
+## (for channels, the names of every set in order).  An error is also
+## issued as a warning with its identifier and message just before, since
+## Octave 7 reports errors from the concatenation operator
+## (@code{[d1; d2]}) only as @qcode{"iddata/vertcat method failed"}.
 ## @end deftypefn
 
 function dat = concat_sets (dim, sets, who)
+  try
+    dat = join_sets (dim, sets, who);
+  catch err
+    ## Octave 7 replaces the message and identifier of an error raised in
+    ## a concatenation method called by the operator ([d1; d2]) with
+    ## "iddata/vertcat method failed": say the reason as a warning first
+    if (strncmp (err.identifier, "iddata:", 7))
+      warning ("off", "backtrace", "local");
+      warning (err.identifier, "%s", err.message);
+    endif
+    rethrow (err);
+  end_try_catch
+endfunction
+
+function dat = join_sets (dim, sets, who)
   sets = sets(! cellfun (@(s) isnumeric (s) && isempty (s), sets));
   if (isempty (sets))
     dat = iddata ();
