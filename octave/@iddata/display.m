@@ -35,7 +35,8 @@ function display (dat)
   for k = 1:ne
     if (! dat.timedomain)
       w = dat.w{k};
-      sampling = sprintf ("frequencies %g ... %g", w(1), w(end));
+      sampling = sprintf ("frequencies %g ... %g%s", w(1), w(end),
+                          ts_note (dat.tsam{k}));
     elseif (! info(k).Uniform)
       t = info(k).SamplingInstants;
       sampling = sprintf ("irregular, t = %g ... %g%s", t(1), t(end), unit);
@@ -49,6 +50,16 @@ function display (dat)
   printf ("\n");
   print_channels ("Output", default_names (dat.outname, "y"), dat.outunit);
   print_channels ("Input", default_names (dat.inname, "u"), dat.inunit);
+endfunction
+
+function str = ts_note (ts)
+  if (ts == 0)
+    str = " (continuous time)";
+  elseif (ts > 0)
+    str = sprintf (" (Ts = %g)", ts);
+  else
+    str = "";
+  endif
 endfunction
 
 function names = default_names (names, prefix)
@@ -78,6 +89,8 @@ endfunction
 %! assert (! isempty (strfind (text, "level")));
 %! text = evalc ("data = iddata ((1:3).', [], 0.5)");
 %! assert (! isempty (strfind (text, "Ts = 0.5")));
+%! text = evalc ("data = iddata ([1; 2], [], 0, 'Frequency', [0; 1])");
+%! assert (! isempty (strfind (text, "frequencies 0 ... 1 (continuous time)")));
 
 %!demo
 %! data = iddata (randn (100, 1), randn (100, 1), 0.01, "InterSample", "foh");

@@ -3,6 +3,9 @@
 ## @deftypefnx {} {@var{data} =} iddata (@var{y}, @var{u}, @var{t})
 ## @deftypefnx {} {@var{data} =} iddata (@var{y}, @var{u}, @var{Ts}, @
 ##   @var{name}, @var{value}, @dots{})
+## @deftypefnx {} {@var{data} =} iddata ([], @var{u}, @var{Ts}, @dots{})
+## @deftypefnx {} {@var{data} =} iddata (@var{Y}, @var{U}, @var{Ts}, @
+##   "Frequency", @var{w}, @dots{})
 ## @deftypefnx {} {@var{data} =} iddata (@var{y})
 ## @deftypefnx {} {@var{data} =} iddata (@var{data})
 ## @deftypefnx {} {@var{data} =} iddata ()
@@ -22,8 +25,11 @@
 ## @var{N}-by-@var{ny} output signal, one row per sample (a row vector is
 ## taken as one signal).  For several experiments, a cell with one matrix
 ## per experiment (control's form).
+## @var{y} = @code{[]} with a non-empty @var{u} gives input-only data
+## (@var{N}-by-0 outputs), as CONTSID's @code{simc} reads them.
 ## @item u
-## @var{N}-by-@var{nu} input signal, or @code{[]} for a time series.
+## @var{N}-by-@var{nu} input signal, or @code{[]} for a time series
+## (output-only data).
 ## @item Ts
 ## sampling interval (positive scalar), or -1 / @code{[]} for unspecified.
 ## @item t
@@ -48,9 +54,13 @@
 ## @var{N}-by-1 sampling instants (@code{(0:N-1)'*Ts} when regular).
 ## Setting it makes the sampling irregular.
 ## @item InterSample
-## @qcode{"zoh"} (default) or @qcode{"foh"}: how the inputs behave between
-## samples (piecewise constant or piecewise linear); one value for all
-## inputs.
+## @qcode{"zoh"} (default), @qcode{"foh"} or @qcode{"bl"}: how the inputs
+## behave between samples (piecewise constant, piecewise linear or
+## band-limited); one value for all inputs (a cell of equal values is
+## accepted, mixed values are @code{iddata:notSupported}).
+## @item N
+## read-only: the number of samples (frequencies), a row with one entry
+## per experiment.
 ## @item OutputName, OutputUnit, InputName, InputUnit, ExperimentName
 ## cell arrays of strings (control: @code{outname}, @dots{}).
 ## @item TimeUnit, Name, Notes, UserData
@@ -58,7 +68,10 @@
 ## @item Domain, TimeDomain
 ## read-only: @qcode{"Time"} or @qcode{"Frequency"}, and control's logical.
 ## @item Frequency, w
-## frequencies of a frequency-domain set (as in the control package).
+## frequencies of a frequency-domain set (as in the control package):
+## giving them to the constructor builds a frequency-domain set, where the
+## signals may be complex and @code{Ts = 0} marks continuous-time
+## frequencies (rad/@var{TimeUnit}).
 ## @end table
 ##
 ## @strong{Storage.}  The object is a struct with control's fields, in
@@ -105,13 +118,25 @@
 ## sampled data multiplies @code{Ts} by k, and an uneven selection turns
 ## into sampling instants.  Regularly sampled data start at time 0.
 ##
-## @strong{Limits.}  The control package's @code{cat}, @code{vertcat},
-## @code{horzcat} and @code{merge} rebuild the set through this constructor
-## with the signals and @code{tsam} only, so the result has
-## @code{InterSample} @qcode{"zoh"} and no sampling instants.  Control's
-## @code{nkshift}, @code{diff} and @code{resample} change the number of
-## samples without touching stored sampling instants; reading such a set's
-## sampling then fails with @code{iddata:dimensionMismatch}.  Data with
+## @strong{Methods.}  Besides @code{get}, @code{set}, @code{size} and
+## indexing, this class replaces the control package's methods that lost
+## the inter-sample behaviour or the sampling instants: @code{cat},
+## @code{vertcat} (@code{[d1; d2]}), @code{horzcat} (@code{[d1, d2]}) and
+## @code{merge} keep @code{InterSample} and the instants, or refuse with an
+## identified error (different @code{InterSample}, different @code{Ts},
+## instants that do not follow each other); @code{nkshift}, @code{diff} and
+## @code{resample} shorten the instants with the signals; @code{detrend}
+## (break points, trend struct) fits against the sampling instants;
+## @code{fft} and @code{ifft} are exact inverses for every length;
+## @code{plot} takes line styles (@code{plot (d1, "b", d2, "r")}).  Also:
+## @code{getexp}, @code{idresamp}, @code{idplot}.  The control package's
+## @code{filter} still applies (to regularly sampled data).
+##
+## @strong{Limits.}  Octave 7 reports an error raised inside a class's
+## concatenation method called by the operator (@code{[d1; d2]}) only as
+## @qcode{"iddata/vertcat method failed"}, without identifier; the reason
+## is issued just before as a warning with the identifier, and the function
+## form @code{vertcat (d1, d2)} raises the identified error itself.  Data with
 ## unspecified sampling interval (@code{iddata (y, u)}) are rejected by the
 ## toolbox's estimators.
 ##
@@ -127,7 +152,8 @@
 ##   @result{} sz = 100     1     1     1
 ## @end group
 ## @end example
-## @seealso{samplinginfo, get, set, size}
+## @seealso{samplinginfo, get, set, size, merge, detrend, fft, plot,
+## idresamp, idplot}
 ## @end deftypefn
 
 function dat = iddata (varargin)
@@ -157,6 +183,10 @@ function dat = iddata (varargin)
   endif
   y = signal_cells (y, "y", "iddata", true);
   u = signal_cells (u, "u", "iddata", false);
+  if (isempty (y{1}) && numel (y) == 1 && ! isempty (u))
+    ## input-only data iddata ([], u, ...): N-by-0 outputs per experiment
+    y = cellfun (@(x) zeros (rows (x), 0), u, "uniformoutput", false);
+  endif
   nexp = numel (y);
   nout = columns (y{1});
   nin = 0;
@@ -171,13 +201,23 @@ function dat = iddata (varargin)
                 "timedomain", true, "w", {{}}, "expname", {blank(nexp)},
                 "name", "", "notes", {{}}, "userdata", []);
   dat = class (dat, "iddata");
-  check_dataset (dat, "iddata");
-  dat = apply_sampling (dat, ts, "Ts", "iddata");
-
   if (mod (numel (pairs), 2) != 0)
     error ("iddata:badOption",
            "iddata: properties must come in name-value pairs");
   endif
+  ## 'Frequency' first: it makes the set frequency-domain, where complex
+  ## signals and Ts = 0 (continuous-time frequencies) are allowed
+  names = cellfun (@(key) property_name (key, "iddata"), pairs(1:2:end),
+                   "uniformoutput", false);
+  isfreq = find (strcmp (names, "Frequency"));
+  for k = isfreq
+    dat = assign_property (dat, "Frequency", pairs{2*k}, pairs{2*k-1},
+                           "iddata");
+  endfor
+  pairs(sort ([2*isfreq-1, 2*isfreq])) = [];
+  check_dataset (dat, "iddata");
+  dat = apply_sampling (dat, ts, "Ts", "iddata");
+
   for k = 1:2:numel (pairs)
     name = property_name (pairs{k}, "iddata");
     dat = assign_property (dat, name, pairs{k+1}, pairs{k}, "iddata");
@@ -241,6 +281,35 @@ endfunction
 %! ts = iddata (y, [], 0.1);
 %! assert (size (ts), [100, 1, 0, 1]);
 
+## input-only and output-only data; the property N
+%!test
+%! datau = iddata ([], [u, -u], 0.1, "InterSample", {"foh"; "foh"});
+%! assert (size (datau), [100, 0, 2, 1]);
+%! assert (size (datau.y), [100, 0]);
+%! assert (datau.u, [u, -u]);
+%! assert (datau.InterSample, "foh");
+%! assert (datau.N, 100);
+%! datai = iddata ([], u, "SamplingInstants", t.^2);
+%! assert (datai.SamplingInstants, t.^2);
+%! assert (size (datai), [100, 0, 1, 1]);
+%! datay = iddata (y, [], 0.1);
+%! assert (size (datay), [100, 1, 0, 1]);
+%! assert (size (datay.u), [100, 0]);
+%! assert (iddata ({y, y(1:10)}, {u, u(1:10)}, 0.1).N, [100, 10]);
+%! assert (iddata ([], {u, u(1:10)}, 0.1).N, [100, 10]);
+%! assert (iddata (y, u, 0.1, "intersamp", "bl").InterSample, "bl");
+
+## frequency-domain data with continuous-time frequencies
+%!test
+%! w = (0:49).' * 0.3;
+%! Y = exp (1i * w);
+%! dat = iddata (Y, [], 0, "Frequency", w);
+%! assert (dat.Domain, "Frequency");
+%! assert (dat.Frequency, w);
+%! assert (dat.Ts, 0);
+%! assert (dat.y, Y);
+%! assert (dat.N, 50);
+
 ## several experiments, control's cell form
 %!test
 %! data = iddata ({y, y(1:50)}, {u, u(1:50)}, {0.1, t(1:50)});
@@ -291,7 +360,11 @@ endfunction
 %!error id=iddata:badInput iddata ((1:3).', (1:3).', {"a"})
 %!error id=iddata:badInput iddata ({1:3, 1:3}, {}, [1 2])
 %!error id=iddata:badInput iddata ((1:3).', [1; 2; 3i], 1)
-%!error id=iddata:badInput iddata ((1:3).', (1:3).', 1, "InterSample", "bl")
+%!error id=iddata:badInput iddata ((1:3).', (1:3).', 1, "InterSample", "xoh")
+%!error id=iddata:notSupported
+%! iddata ((1:3).', [1:3; 1:3].', 1, "InterSample", {"zoh"; "foh"});
+%!error id=iddata:badInput iddata ((1:3).', [], 0)
+%!error id=iddata:badOption iddata ((1:3).', [], 1, "N", 3)
 %!error id=iddata:badInput iddata ((1:3).', (1:3).', 1, "Name", 3)
 %!error id=iddata:badInput iddata ((1:3).', (1:3).', 1, "Notes", 3)
 %!error id=iddata:badInput iddata ((1:3).', (1:3).', 1, "w", [2 1 0])

@@ -16,8 +16,8 @@
 ## @item Uniform
 ## false when the experiment was given a vector of sampling instants.
 ## @item InterSample
-## @qcode{"zoh"} or @qcode{"foh"}: the behaviour of the inputs between
-## samples.
+## @qcode{"zoh"}, @qcode{"foh"} or @qcode{"bl"}: the behaviour of the
+## inputs between samples.
 ## @end table
 ##
 ## It reads objects built by this toolbox and by the control package alike;

@@ -16,7 +16,7 @@
 
 function retdat = set (dat, varargin)
   if (nargin == 1)
-    names = setdiff (property_name (), {"Domain", "TimeDomain"}, "stable");
+    names = setdiff (property_name (), {"Domain", "TimeDomain", "N"}, "stable");
     printf ("  %s\n", names{:});
     if (nargout > 0)
       retdat = dat;

@@ -7,7 +7,8 @@
 ## @var{val} is @code{[]} or -1 (unspecified sampling interval), a positive
 ## scalar @var{Ts}, a vector of sampling instants (one per sample), or a
 ## cell with one such entry per experiment (a single entry applies to all).
-## A scalar sampling interval goes to @code{tsam}; sampling instants go to
+## A scalar sampling interval goes to @code{tsam} (0, continuous time, only
+## for frequency-domain data); sampling instants go to
 ## @code{w} (one column per experiment, @code{[]} for the regularly sampled
 ## ones) and set @code{tsam} to -1.  @code{w} stays @code{@{@}} when no
 ## experiment is irregular, as in control-package objects.
@@ -59,10 +60,12 @@ function dat = apply_sampling (dat, val, key, who, mode = "")
         tsam{k} = -1;
       endif
     elseif (isscalar (v) && ! instants_only)
-      if (! (v == -1 || (v > 0 && isfinite (v))))
+      if (! (v == -1 || (v > 0 && isfinite (v))
+             || (v == 0 && ! dat.timedomain)))
         error ("iddata:badInput",
                ["%s: '%s' must be a positive finite sampling interval ", ...
-                "(or -1 when unspecified)"], who, key);
+                "(or -1 when unspecified; 0 only for continuous-time ", ...
+                "frequency-domain data)"], who, key);
       endif
       tsam{k} = double (v);
       w{k} = [];

@@ -38,9 +38,14 @@ function dat = assign_property (dat, name, val, key, who)
           && all (strcmpi (val, val{1})))
         val = val{1};
       endif
-      if (! (ischar (val) && any (strcmpi (val, {"zoh", "foh"}))))
+      if (iscellstr (val) && numel (val) > 1)
+        error ("iddata:notSupported",
+               ["%s: '%s': one inter-sample behaviour for all inputs ", ...
+                "(got %s)"], who, key, strjoin (val(:).', ", "));
+      endif
+      if (! (ischar (val) && any (strcmpi (val, {"zoh", "foh", "bl"}))))
         error ("iddata:badInput",
-               "%s: '%s' must be \"zoh\" or \"foh\"", who, key);
+               "%s: '%s' must be \"zoh\", \"foh\" or \"bl\"", who, key);
       endif
       userdata = unpack_userdata (dat.userdata);
       dat.userdata = pack_userdata (userdata, lower (val));

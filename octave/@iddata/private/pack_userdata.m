@@ -5,7 +5,8 @@
 ##
 ## For the default @qcode{"zoh"} the user's value is stored unchanged, so the
 ## object is field-for-field identical to one built by the control package.
-## For @qcode{"foh"} (or when @var{user} itself looks like the wrapper)
+## For @qcode{"foh"} or @qcode{"bl"} (or when @var{user} itself looks like
+## the wrapper)
 ## the field holds the 1-by-1 struct
 ## @code{struct ("InterSample", @var{intersample}, "UserData", @var{user})}.
 ## @seealso{unpack_userdata}

@@ -29,7 +29,8 @@ function name = property_name (key, who)
     "UserData",         {"userdata"};
     "Domain",           {"domain"};
     "TimeDomain",       {"timedomain"};
-    "Frequency",        {"w", "frequency"}};
+    "Frequency",        {"w", "frequency"};
+    "N",                {"n"}};
 
   if (nargin == 0)
     name = table(:,1);

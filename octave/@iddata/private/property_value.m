@@ -72,6 +72,8 @@ function val = property_value (dat, name, control_style)
       else
         val = "Frequency";
       endif
+    case "N"
+      val = cellfun ("rows", dat.y(:).');
     case "TimeDomain"
       val = dat.timedomain;
     case "Frequency"

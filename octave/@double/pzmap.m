@@ -1,0 +1,48 @@
+## -*- texinfo -*-
+## @deftypefn  {} {} pzmap (@var{num}, @var{den})
+## @deftypefnx {} {} pzmap (@var{a}, @var{b}, @var{c}, @var{d})
+## @deftypefnx {} {[@var{p}, @var{z}] =} pzmap (@dots{})
+## Poles and zeros in the pre-LTI forms of MATLAB's Control System Toolbox
+## (@code{pzmap (A, B, C, D)} in CONTSID scripts).
+##
+## A method of the class @code{double}: Octave calls it only when no
+## argument is an object, i.e. for the calls the control package's
+## @code{pzmap} rejects; calls with a model go to the control package
+## unchanged.  @code{(num, den)} is @code{tf (num, den)}, @code{(a, b, c,
+## d)} is @code{ss (a, b, c, d)}; the result is the control package's
+## @code{pzmap} of that model (a plot without outputs).
+## @seealso{step, bode}
+## @end deftypefn
+
+function [p, z] = pzmap (varargin)
+  if (! any (nargin == [2, 4]))
+    error ("pzmap:badInput",
+           ["pzmap: with numeric arguments use pzmap (num, den) or ", ...
+            "pzmap (a, b, c, d)"]);
+  endif
+  sys = pre_lti_args ("pzmap", varargin);
+  if (nargout == 0)
+    pzmap (sys);
+  else
+    [p, z] = pzmap (sys);
+  endif
+endfunction
+
+%!test
+%! pkg load control
+%! a = [0 1; -2 -3]; b = [0; 1]; c = [1 1]; d = 0;
+%! [p, z] = pzmap (a, b, c, d);
+%! assert (sort (p), sort (eig (a)), 1e-12);
+%! assert (z, -1, 1e-12);
+%! [p, z] = pzmap ([1 2], [1 4 3]);
+%! assert (sort (p), [-3; -1], 1e-12);
+%! assert (z, -2, 1e-12);
+%! [p2, z2] = pzmap (tf ([1 2], [1 4 3]));
+%! assert ([sort(p2); z2], [sort(p); z]);
+
+%!error id=pzmap:badInput pzmap (1, 2, 3)
+%!error id=pzmap:badInput pzmap (1, [0 0])
+%!error id=pzmap:dimensionMismatch pzmap (eye (2), [1; 1], [1 0 0], 0)
+
+%!demo
+%! pzmap ([0 1; -2 -3], [0; 1], [1 1], 0)
