@@ -33,12 +33,12 @@ inline void read_rlssvf_config(const Gateway& g, OptionsReader& opt,
   const long n = num_estimated(*config);
   config->adaptation = read_adaptation(opt, n);
   read_initial_estimate(opt, n, &config->theta0, &config->P0);
-  config->form = opt.choice<UpdateForm>(
-      "form",
-      {{"standard", UpdateForm::kStandard},
-       {"potter", UpdateForm::kPotter},
-       {"lmr", UpdateForm::kLevenbergMarquardt}},
-      config->form);
+  config->form =
+      opt.choice<UpdateForm>("form",
+                             {{"standard", UpdateForm::kStandard},
+                              {"potter", UpdateForm::kPotter},
+                              {"lmr", UpdateForm::kLevenbergMarquardt}},
+                             config->form);
   const Eigen::MatrixXd gamma = opt.matrix("Gamma", n, n);
   if (gamma.size() != 0) config->lmr_gamma = gamma;
   config->scaling = opt.matrix("scaling", n, 1);
@@ -62,17 +62,17 @@ inline void read_riv_config(const Gateway& g, OptionsReader& opt,
       config->method);
   config->t_s_iv = opt.scalar("tsiv", config->t_s_iv);
   config->dtupdate = opt.scalar("dtupdate", config->dtupdate);
-  config->stability = opt.choice<StabilityPolicy>(
-      "stability",
-      {{"keep", StabilityPolicy::kKeepLast},
-       {"reflect", StabilityPolicy::kReflect}},
-      config->stability);
+  config->stability =
+      opt.choice<StabilityPolicy>("stability",
+                                  {{"keep", StabilityPolicy::kKeepLast},
+                                   {"reflect", StabilityPolicy::kReflect}},
+                                  config->stability);
   read_transfer_function(g, opt, "mtheta", &config->m_theta);
-  config->prefilter_gain = opt.choice<PrefilterGain>(
-      "prefilter",
-      {{"unit", PrefilterGain::kUnitStaticGain},
-       {"monic", PrefilterGain::kMonic}},
-      config->prefilter_gain);
+  config->prefilter_gain =
+      opt.choice<PrefilterGain>("prefilter",
+                                {{"unit", PrefilterGain::kUnitStaticGain},
+                                 {"monic", PrefilterGain::kMonic}},
+                                config->prefilter_gain);
   const Eigen::MatrixXd a = opt.matrix("A", 1, config->orders.na);
   if (a.size() != 0) config->initial_denominator = a.transpose();
   config->closed_loop =

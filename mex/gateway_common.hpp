@@ -47,8 +47,7 @@ inline RecordView<double> read_record(const Gateway& g, const mxArray* y,
 //   svf          'normalised' (default) | 'normalized' | 'ordinary'
 //   adm, adg     'ff' and the forgetting factor, or 'kf' and the np-by-np Qn
 //   th0, P0      np-by-1 and np-by-np, absent or [] for the core's defaults
-inline InterSample read_intersample(OptionsReader& opt,
-                                    InterSample fallback) {
+inline InterSample read_intersample(OptionsReader& opt, InterSample fallback) {
   return opt.choice<InterSample>(
       "intersample", {{"zoh", InterSample::kZoh}, {"foh", InterSample::kFoh}},
       fallback);

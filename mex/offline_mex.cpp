@@ -30,9 +30,10 @@ enum class Method { kScaling, kLssvf, kIvsvf, kSrivc, kClsrivc };
 void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                      const mxArray* prhs[]) {
   if (nrhs != 5) {
-    g.fail("badInput", "the gateway takes 5 arguments (fname, y, u, t, "
-                       "options), got " + std::to_string(nrhs) + " (call " +
-                           g.name() + " instead)");
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call " + g.name() + " instead)");
   }
   if (nlhs > 5) g.fail("badInput", "at most 5 outputs");
   const ctid::RecordView<double> record =
@@ -72,8 +73,9 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const double* r2 = nullptr;
   if (method == Method::kClsrivc) {
     if (!ctid::mex::read_transfer_function(g, opt, "controller", &controller)) {
-      g.fail("badOption", "clsrivc needs the options 'controller_num' and "
-                          "'controller_den'");
+      g.fail("badOption",
+             "clsrivc needs the options 'controller_num' and "
+             "'controller_den'");
     }
     const long n = record.num_samples;
     r1 = opt.signal("r1", n);

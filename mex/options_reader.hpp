@@ -33,9 +33,9 @@ class OptionsReader {
                 std::string prefix = "")
       : g_(g), options_(options), prefix_(std::move(prefix)) {
     const std::string whole =
-        prefix_.empty() ? std::string("the options")
-                        : "option '" + prefix_.substr(0, prefix_.size() - 1) +
-                              "'";
+        prefix_.empty()
+            ? std::string("the options")
+            : "option '" + prefix_.substr(0, prefix_.size() - 1) + "'";
     if (options_ == nullptr) g_.fail("badInput", whole + " is missing");
     if (mxIsStruct(options_)) {
       if (mxGetNumberOfElements(options_) != 1) {
@@ -76,9 +76,8 @@ class OptionsReader {
                    double hi) {
     const double v = scalar(name, fallback);
     if (!(v >= lo && v <= hi)) {
-      g_.fail("badOption", what(name) + " must lie in [" +
-                               std::to_string(lo) + ", " + std::to_string(hi) +
-                               "]");
+      g_.fail("badOption", what(name) + " must lie in [" + std::to_string(lo) +
+                               ", " + std::to_string(hi) + "]");
     }
     return v;
   }

@@ -65,8 +65,8 @@ class LikelihoodCost {
 
 std::vector<double> read_values(const Gateway& g, OptionsReader& opt,
                                 const std::string& name, long np) {
-  const double* p = g.matrix(opt.required(name), "option '" + name + "'", np,
-                             1, false);
+  const double* p =
+      g.matrix(opt.required(name), "option '" + name + "'", np, 1, false);
   return std::vector<double>(p, p + np);
 }
 
@@ -131,9 +131,10 @@ void require_kalman(const Gateway& g, const Adaptation& adaptation) {
 void qnml_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
   if (nrhs != 5) {
-    g.fail("badInput", "the gateway takes 5 arguments (fname, y, u, t, "
-                       "options), got " + std::to_string(nrhs) +
-                           " (call qnml instead)");
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call qnml instead)");
   }
   if (nlhs > 6) g.fail("badInput", "at most 6 outputs");
   const ctid::RecordView<double> record =
@@ -143,9 +144,10 @@ void qnml_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const Estimator estimator = opt.choice<Estimator>(
       "estimator", {{"rlssvf", Estimator::kRlssvf}, {"riv", Estimator::kRiv}},
       Estimator::kRlssvf);
-  if (!opt.has("estimator")) g.fail("badOption", "option 'estimator' is missing");
-  const bool evaluate = opt.choice<bool>(
-      "mode", {{"search", false}, {"evaluate", true}}, false);
+  if (!opt.has("estimator"))
+    g.fail("badOption", "option 'estimator' is missing");
+  const bool evaluate =
+      opt.choice<bool>("mode", {{"search", false}, {"evaluate", true}}, false);
   if (!opt.has("mode")) g.fail("badOption", "option 'mode' is missing");
   if (ctid::mex::read_single_precision(opt)) {
     g.fail("notSupported", "the Qn search runs in double precision only");

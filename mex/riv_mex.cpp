@@ -6,10 +6,10 @@
 //
 // y N-by-1, u N-by-nu, t the sampling interval or the N instants; the
 // fields of options are listed in estimator_args.hpp, plus precision
-// 'double' | 'single'. INFO has the number of estimates refused by the stability
-// test, kappa_2(P), prediction errors and innovation scales per sample,
-// and with conditional updating kappa_2 of the parallel RLSSVF-FF, whether
-// each sample updated the estimates, and the number of resets.
+// 'double' | 'single'. INFO has the number of estimates refused by the
+// stability test, kappa_2(P), prediction errors and innovation scales per
+// sample, and with conditional updating kappa_2 of the parallel RLSSVF-FF,
+// whether each sample updated the estimates, and the number of resets.
 #include <vector>
 
 #include "estimator_args.hpp"
@@ -61,9 +61,10 @@ struct RivRun {
 void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
   if (nrhs != 5) {
-    g.fail("badInput", "the gateway takes 5 arguments (fname, y, u, t, "
-                       "options), got " + std::to_string(nrhs) + " (call " +
-                           g.name() + " instead)");
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call " + g.name() + " instead)");
   }
   if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, INFO)");
   const ctid::RecordView<double> record =

@@ -19,9 +19,10 @@ using ctid::mex::Gateway;
 void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                     const mxArray* prhs[]) {
   if (nrhs != 5) {
-    g.fail("badInput", "the gateway takes 5 arguments (fname, y, u, t, "
-                       "options), got " + std::to_string(nrhs) +
-                           " (call rlssvf instead)");
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call rlssvf instead)");
   }
   if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, INFO)");
   const ctid::RecordView<double> record =

@@ -19,9 +19,10 @@ using ctid::mex::Gateway;
 void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
   if (nrhs != 5) {
-    g.fail("badInput", "the gateway takes 5 arguments (fname, u, t, theta, "
-                       "options), got " + std::to_string(nrhs) +
-                           " (call simc instead)");
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, u, t, theta, "
+           "options), got " +
+               std::to_string(nrhs) + " (call simc instead)");
   }
   if (nlhs > 3) g.fail("badInput", "at most 3 outputs (x, y, u)");
   g.require_real_double(prhs[1], "u");
@@ -45,8 +46,7 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::LtvSimulationConfig<double> config;
-  config.u_intersample =
-      ctid::mex::read_intersample(opt, config.u_intersample);
+  config.u_intersample = ctid::mex::read_intersample(opt, config.u_intersample);
   config.orders = ctid::mex::read_orders(g, opt);
   if (record.num_inputs != config.orders.num_inputs()) {
     g.fail("dimensionMismatch", "u has " + std::to_string(record.num_inputs) +
@@ -69,12 +69,13 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const Eigen::MatrixXd x0 = opt.matrix("x0", ns, 1);
   if (x0.size() != 0) config.initial_state = x0;
   const double* noise = opt.signal("noise", n);
-  config.closed_loop =
-      ctid::mex::read_transfer_function(g, opt, "controller", &config.controller);
+  config.closed_loop = ctid::mex::read_transfer_function(g, opt, "controller",
+                                                         &config.controller);
   const double* r2 = opt.signal("r2", n);
   if (config.closed_loop != (r2 != nullptr)) {
-    g.fail("badOption", "the closed loop needs the options 'controller_num', "
-                        "'controller_den' and 'r2' together");
+    g.fail("badOption",
+           "the closed loop needs the options 'controller_num', "
+           "'controller_den' and 'r2' together");
   }
   opt.finish();
   ctid::LtvSimulator<double> simulator;

@@ -39,15 +39,24 @@ ctid::ThrottleParameters<double> read_parameters(const Gateway& g,
   OptionsReader plant = opt.nested("plant");
   ctid::ThrottleParameters<double> p;
   const std::pair<const char*, double*> fields[18] = {
-      {"Ks1", &p.Ks1},         {"Ks2", &p.Ks2},
-      {"Ks3", &p.Ks3},         {"M_close", &p.M_close},
-      {"M_open", &p.M_open},   {"phi_min", &p.phi_min},
-      {"phi_max", &p.phi_max}, {"phi_LH", &p.phi_LH},
-      {"delta_phi", &p.delta_phi}, {"phi_12", &p.phi_12},
-      {"J", &p.J},             {"Kb", &p.Kb},
-      {"Mc", &p.Mc},           {"R", &p.R},
-      {"L", &p.L},             {"Kv", &p.Kv},
-      {"Kt", &p.Kt},           {"Gr", &p.Gr}};
+      {"Ks1", &p.Ks1},
+      {"Ks2", &p.Ks2},
+      {"Ks3", &p.Ks3},
+      {"M_close", &p.M_close},
+      {"M_open", &p.M_open},
+      {"phi_min", &p.phi_min},
+      {"phi_max", &p.phi_max},
+      {"phi_LH", &p.phi_LH},
+      {"delta_phi", &p.delta_phi},
+      {"phi_12", &p.phi_12},
+      {"J", &p.J},
+      {"Kb", &p.Kb},
+      {"Mc", &p.Mc},
+      {"R", &p.R},
+      {"L", &p.L},
+      {"Kv", &p.Kv},
+      {"Kt", &p.Kt},
+      {"Gr", &p.Gr}};
   for (const auto& f : fields) *f.second = plant.scalar(f.first);
   plant.finish();
   g.check(ctid::validate(p));
@@ -60,8 +69,8 @@ ctid::DiscreteTransferFunction<double> read_filter(const Gateway& g,
                                                    const std::string& what) {
   ctid::DiscreteTransferFunction<double> tf;
   if (!ctid::mex::read_transfer_function(g, opt, prefix, &tf)) {
-    g.fail("badOption", what + " (options '" + prefix + "_num' and '" +
-                            prefix + "_den') is missing");
+    g.fail("badOption", what + " (options '" + prefix + "_num' and '" + prefix +
+                            "_den') is missing");
   }
   return tf;
 }
@@ -86,9 +95,10 @@ double read_phi0(OptionsReader& opt) {
 void throttlesim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                          const mxArray* prhs[]) {
   if (nrhs != 4) {
-    g.fail("badInput", "the gateway takes 4 arguments (fname, phi_d, R, "
-                       "options), got " + std::to_string(nrhs) +
-                           " (call throttlesim)");
+    g.fail("badInput",
+           "the gateway takes 4 arguments (fname, phi_d, R, "
+           "options), got " +
+               std::to_string(nrhs) + " (call throttlesim)");
   }
   if (nlhs > 7) g.fail("badInput", "at most 7 outputs");
   g.require_real_double(prhs[1], "phi_d");
@@ -132,9 +142,10 @@ void throttlesim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 void throttleid_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
   if (nrhs != 6) {
-    g.fail("badInput", "the gateway takes 6 arguments (fname, phi_d, u, i, "
-                       "phi_m, options), got " + std::to_string(nrhs) +
-                           " (call throttleid)");
+    g.fail("badInput",
+           "the gateway takes 6 arguments (fname, phi_d, u, i, "
+           "phi_m, options), got " +
+               std::to_string(nrhs) + " (call throttleid)");
   }
   if (nlhs > 6) g.fail("badInput", "at most 6 outputs");
   g.require_real_double(prhs[1], "phi_d");
@@ -166,11 +177,10 @@ void throttleid_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       ctid::KalmanAdaptation<double>(opt.required_matrix("adg", 2, 2));
   ctid::mex::read_initial_estimate(opt, 2, &config.theta0, &config.P0);
   config.t_s_iv = opt.scalar("tsiv", config.t_s_iv);
-  config.phi_intersample =
-      opt.choice<ctid::InterSample>("phirule",
-                                    {{"zoh", ctid::InterSample::kZoh},
-                                     {"foh", ctid::InterSample::kFoh}},
-                                    config.phi_intersample);
+  config.phi_intersample = opt.choice<ctid::InterSample>(
+      "phirule",
+      {{"zoh", ctid::InterSample::kZoh}, {"foh", ctid::InterSample::kFoh}},
+      config.phi_intersample);
   opt.finish();
   g.check(ctid::validate(config));
 

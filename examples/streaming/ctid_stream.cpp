@@ -88,8 +88,8 @@ int main(int argc, char** argv) {
   config.orders = ctid::siso_orders(o.na, o.nb, o.nk);
   config.svf.lambda_svf = o.lambda_svf;
   const Eigen::Index np = config.orders.num_parameters();
-  config.adaptation = ctid::KalmanAdaptation<double>(
-      o.qn * Eigen::MatrixXd::Identity(np, np));
+  config.adaptation =
+      ctid::KalmanAdaptation<double>(o.qn * Eigen::MatrixXd::Identity(np, np));
   ctid::RlsSvf<double> estimator;
   const ctid::Status status = estimator.configure(config);
   if (!status.ok()) {
