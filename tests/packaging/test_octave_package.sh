@@ -31,7 +31,8 @@ if command -v ccache > /dev/null; then
 fi
 
 setup="pkg ('prefix', '$tmp/pkg', '$tmp/pkg'); pkg ('local_list', '$tmp/octave_packages');"
-HOME=$tmp/home "$octave" --no-gui --no-window-system -q --eval "
+# One compiler at a time (pkg runs make --jobs nproc ("overridable")).
+HOME=$tmp/home OMP_NUM_THREADS=1 "$octave" --no-gui --no-window-system -q --eval "
   $setup
   pkg ('install', '-local', '$tarball');
   assert (numel (pkg ('list', 'ctid')), 1);
