@@ -299,6 +299,7 @@ endfunction
 %!error id=qnml:dimensionMismatch qnml (data, [1 1 0], "lambda_svf", 3, "q0", [1 2 3])
 %!error id=qnml:badOption qnml (data, [1 1 0], "lambda_svf", 3, "method", "rlssvf", "adm", "lmr")
 %!error id=qnml:badOption qnml (data, [1 1 0], "lambda_svf", 3, "nonsense", 1)
+%!error id=qnml:notSupported qnml (data, [1 1 0], 3, "precision", "single")
 
 %!demo
 %! ## Thesis example 3.3.3: a1 drifts, b0 is known to be constant.
