@@ -27,7 +27,9 @@ echo "built $(basename "$tarball")"
 # repeated run short.
 if command -v ccache > /dev/null; then
   export CXX="ccache ${CXX:-g++}"
-  export CCACHE_DIR=${CCACHE_DIR:-$HOME/.ccache}
+  # (the cache of the real HOME: Octave runs with a temporary one)
+  export CCACHE_DIR=${CCACHE_DIR:-$(ccache -k cache_dir 2> /dev/null ||
+                                    echo "$HOME/.ccache")}
 fi
 
 setup="pkg ('prefix', '$tmp/pkg', '$tmp/pkg'); pkg ('local_list', '$tmp/octave_packages');"
