@@ -1,16 +1,19 @@
-// The argument lists of the recursive gateways (rlssvf_mex, riv_mex) and
-// what qnml_mex reuses of them: reading a whole estimator configuration,
-// running it in double or single precision, and building the info struct.
+// The options structs of the recursive gateways (rlssvf_mex, riv_mex) and
+// what qnml_mex reuses of them: reading a whole estimator configuration by
+// field name, running it in double or single precision, and building the
+// info struct. The data y, u, t are positional; every other setting is a
+// field of the one options struct (gateway_common.hpp for the shared ones):
 //
-// rlssvf argument list (after fname), 18 arguments:
-//   y, u, t, intersample, na, nb, nk, lambda_svf, svf_form, adm, adg, th0,
-//   P0, form, Gamma, scaling, ic, tsls
-// riv argument list (after fname), 28 arguments:
-//   y, u, t, intersample, na, nb, nk, lambda_svf, svf_form, adm, adg, th0,
-//   P0, method, tsiv, dtupdate, stability, mtheta_num, mtheta_den,
-//   prefilter_gain, A, c_num, c_den, r1, r2, scaling, aw_gamma, aw_lambda
-// form 'standard' | 'potter' | 'lmr'; Gamma, scaling, th0, P0, A, mtheta,
-// c_num: [] for none/defaults; ic 0/1; aw_gamma 0: no conditional updating.
+// rlssvf fields: intersample, na, nb, nk, lambda_svf, svf, adm, adg, th0,
+//   P0, form ('standard' | 'potter' | 'lmr'), Gamma (n-by-n), scaling
+//   (n-by-1 M_s), ic (estimate the initial conditions), tsls;
+// riv fields: intersample, na, nb, nk, lambda_svf, svf, adm, adg, th0, P0,
+//   method ('rivsvf' | 'rsrivc'), tsiv, dtupdate, stability ('keep' |
+//   'reflect'), mtheta_num/mtheta_den (M_theta), prefilter ('unit' |
+//   'monic'), A (1-by-na initial denominator), controller_num/
+//   controller_den and r1, r2 (closed loop), scaling, antiwindup (gamma of
+//   eq. 3.79, 0: none), antiwindup_lambda.
+// Absent optional fields keep the core's defaults (its config structs).
 #pragma once
 
 #include <vector>
@@ -21,111 +24,79 @@
 
 namespace ctid::mex {
 
-constexpr int kRlssvfArguments = 18;
-constexpr int kRivArguments = 28;
-
-inline UpdateForm read_update_form(const Gateway& g, const mxArray* a) {
-  const std::string s = g.text(a, "the update form");
-  if (s == "standard") return UpdateForm::kStandard;
-  if (s == "potter") return UpdateForm::kPotter;
-  if (s == "lmr") return UpdateForm::kLevenbergMarquardt;
-  g.fail("badOption", "the update form must be 'standard', 'potter' or 'lmr'");
-}
-
-inline Vector<double> read_scaling(const Gateway& g, const mxArray* a, long n) {
-  if (mxIsEmpty(a)) return Vector<double>();
-  return g.eigen_matrix(a, "the scaling M_s", n, 1);
-}
-
-// prhs[0..17] as listed above.
-inline RecordView<double> read_rlssvf_config(const Gateway& g,
-                                             const mxArray* const prhs[],
-                                             RlsSvfConfig<double>* config) {
-  const RecordView<double> record = read_record(g, prhs[0], prhs[1], prhs[2]);
-  config->svf.u_intersample = read_intersample(g, prhs[3]);
-  config->orders = read_orders(g, prhs[4], prhs[5], prhs[6]);
-  config->svf.lambda_svf = g.scalar(prhs[7], "lambda_svf");
-  config->svf.normalised = read_normalised(g, prhs[8]);
-  config->initial_conditions = g.scalar(prhs[16], "ic") != 0;
+// The rlssvf configuration; the caller calls opt.finish().
+inline void read_rlssvf_config(const Gateway& g, OptionsReader& opt,
+                               RlsSvfConfig<double>* config) {
+  read_svf(opt, &config->svf);
+  config->orders = read_orders(g, opt);
+  config->initial_conditions = opt.flag("ic", config->initial_conditions);
   const long n = num_estimated(*config);
-  config->adaptation = read_adaptation(g, prhs[9], prhs[10], n);
-  read_initial_estimate(g, prhs[11], prhs[12], n, &config->theta0, &config->P0);
-  config->form = read_update_form(g, prhs[13]);
-  if (!mxIsEmpty(prhs[14]))
-    config->lmr_gamma = g.eigen_matrix(prhs[14], "Gamma", n, n);
-  config->scaling = read_scaling(g, prhs[15], n);
-  config->t_s_ls = g.scalar(prhs[17], "tsls");
+  config->adaptation = read_adaptation(opt, n);
+  read_initial_estimate(opt, n, &config->theta0, &config->P0);
+  config->form =
+      opt.choice<UpdateForm>("form",
+                             {{"standard", UpdateForm::kStandard},
+                              {"potter", UpdateForm::kPotter},
+                              {"lmr", UpdateForm::kLevenbergMarquardt}},
+                             config->form);
+  const Eigen::MatrixXd gamma = opt.matrix("Gamma", n, n);
+  if (gamma.size() != 0) config->lmr_gamma = gamma;
+  config->scaling = opt.matrix("scaling", n, 1);
+  config->t_s_ls = opt.scalar("tsls", config->t_s_ls);
   g.check(validate(*config));
-  return record;
 }
 
-// prhs[0..27] as listed above.
-inline RecordView<double> read_riv_config(const Gateway& g,
-                                          const mxArray* const prhs[],
-                                          RecursiveIvConfig<double>* config,
-                                          ClosedLoopSignals<double>* loop) {
-  const RecordView<double> record = read_record(g, prhs[0], prhs[1], prhs[2]);
-  config->svf.u_intersample = read_intersample(g, prhs[3]);
-  config->orders = read_orders(g, prhs[4], prhs[5], prhs[6]);
-  config->svf.lambda_svf = g.scalar(prhs[7], "lambda_svf");
-  config->svf.normalised = read_normalised(g, prhs[8]);
+// The riv configuration and the closed-loop signals (read in place, N =
+// record.num_samples); the caller calls opt.finish().
+inline void read_riv_config(const Gateway& g, OptionsReader& opt,
+                            const RecordView<double>& record,
+                            RecursiveIvConfig<double>* config,
+                            ClosedLoopSignals<double>* loop) {
+  read_svf(opt, &config->svf);
+  config->orders = read_orders(g, opt);
   const long np = config->orders.num_parameters();
-  config->adaptation = read_adaptation(g, prhs[9], prhs[10], np);
-  read_initial_estimate(g, prhs[11], prhs[12], np, &config->theta0,
-                        &config->P0);
-  const std::string method = g.text(prhs[13], "method");
-  if (method == "rivsvf") {
-    config->method = IvMethod::kRivsvf;
-  } else if (method == "rsrivc") {
-    config->method = IvMethod::kRsrivc;
-  } else {
-    g.fail("badOption", "method must be 'rivsvf' or 'rsrivc'");
+  config->adaptation = read_adaptation(opt, np);
+  read_initial_estimate(opt, np, &config->theta0, &config->P0);
+  config->method = opt.choice<IvMethod>(
+      "method", {{"rivsvf", IvMethod::kRivsvf}, {"rsrivc", IvMethod::kRsrivc}},
+      config->method);
+  config->t_s_iv = opt.scalar("tsiv", config->t_s_iv);
+  config->dtupdate = opt.scalar("dtupdate", config->dtupdate);
+  config->stability =
+      opt.choice<StabilityPolicy>("stability",
+                                  {{"keep", StabilityPolicy::kKeepLast},
+                                   {"reflect", StabilityPolicy::kReflect}},
+                                  config->stability);
+  read_transfer_function(g, opt, "mtheta", &config->m_theta);
+  config->prefilter_gain =
+      opt.choice<PrefilterGain>("prefilter",
+                                {{"unit", PrefilterGain::kUnitStaticGain},
+                                 {"monic", PrefilterGain::kMonic}},
+                                config->prefilter_gain);
+  const Eigen::MatrixXd a = opt.matrix("A", 1, config->orders.na);
+  if (a.size() != 0) config->initial_denominator = a.transpose();
+  config->closed_loop =
+      read_transfer_function(g, opt, "controller", &config->controller);
+  const long n = record.num_samples;
+  loop->r1 = opt.signal("r1", n);
+  loop->r2 = opt.signal("r2", n);
+  if (config->closed_loop != (loop->r1 != nullptr && loop->r2 != nullptr)) {
+    g.fail("badOption",
+           "the closed loop needs the options 'controller_num', "
+           "'controller_den', 'r1' and 'r2' together");
   }
-  config->t_s_iv = g.scalar(prhs[14], "tsiv");
-  config->dtupdate = g.scalar(prhs[15], "dtupdate");
-  const std::string stability = g.text(prhs[16], "stability");
-  if (stability == "keep") {
-    config->stability = StabilityPolicy::kKeepLast;
-  } else if (stability == "reflect") {
-    config->stability = StabilityPolicy::kReflect;
-  } else {
-    g.fail("badOption", "stability must be 'keep' or 'reflect'");
-  }
-  if (!mxIsEmpty(prhs[17])) {
-    config->m_theta = read_transfer_function(g, prhs[17], prhs[18], "M_theta");
-  }
-  const std::string gain = g.text(prhs[19], "prefilter gain");
-  if (gain == "unit") {
-    config->prefilter_gain = PrefilterGain::kUnitStaticGain;
-  } else if (gain == "monic") {
-    config->prefilter_gain = PrefilterGain::kMonic;
-  } else {
-    g.fail("badOption", "the prefilter gain must be 'unit' or 'monic'");
-  }
-  if (!mxIsEmpty(prhs[20])) {
-    config->initial_denominator =
-        g.eigen_matrix(prhs[20], "A", 1, config->orders.na).transpose();
-  }
-  if (!mxIsEmpty(prhs[21])) {
-    config->closed_loop = true;
-    config->controller =
-        read_transfer_function(g, prhs[21], prhs[22], "the controller");
-    const long n = record.num_samples;
-    loop->r1 = g.matrix(prhs[23], "r1", n, 1);
-    loop->r2 = g.matrix(prhs[24], "r2", n, 1);
-  }
-  config->scaling = read_scaling(g, prhs[25], np);
-  config->antiwindup_gamma = g.scalar(prhs[26], "the anti-windup gamma");
-  config->antiwindup_lambda = g.scalar(prhs[27], "the anti-windup lambda");
+  config->scaling = opt.matrix("scaling", np, 1);
+  config->antiwindup_gamma = opt.scalar("antiwindup", config->antiwindup_gamma);
+  config->antiwindup_lambda =
+      opt.scalar("antiwindup_lambda", config->antiwindup_lambda);
   g.check(validate(*config));
-  return record;
 }
 
-inline bool read_single_precision(const Gateway& g, const mxArray* a) {
-  const std::string s = g.text(a, "precision");
-  if (s == "double") return false;
-  if (s == "single") return true;
-  g.fail("badOption", "precision must be 'double' or 'single'");
+// 'double' (default) or 'single': the core instantiated for float on a
+// float copy of the data.
+inline bool read_single_precision(OptionsReader& opt) {
+  return opt.choice<bool>("precision", {{"double", false}, {"single", true}},
+                          false);
 }
 
 // ---- single precision: the same core, instantiated for float -----------

@@ -1,5 +1,7 @@
-// Reading the arguments that several gateways share: the record (y, u,
-// sampling), the model orders and the SVF settings.
+// Reading what several gateways share: the record (y, u and the sampling,
+// positional data arrays) and, from the options struct (options_reader.hpp),
+// the model orders, the SVF settings, the adaptation and the initial
+// estimate.
 #pragma once
 
 #include "ctid/adaptation.hpp"
@@ -7,7 +9,7 @@
 #include "ctid/model.hpp"
 #include "ctid/record.hpp"
 #include "ctid/svf_regressor.hpp"
-#include "mex_helpers.hpp"
+#include "options_reader.hpp"
 
 namespace ctid::mex {
 
@@ -38,61 +40,76 @@ inline RecordView<double> read_record(const Gateway& g, const mxArray* y,
   return record;
 }
 
-inline InterSample read_intersample(const Gateway& g, const mxArray* a) {
-  const std::string s = g.text(a, "InterSample");
-  if (s == "zoh") return InterSample::kZoh;
-  if (s == "foh") return InterSample::kFoh;
-  g.fail("badOption", "InterSample must be 'zoh' or 'foh', got '" + s + "'");
+// The options every estimator and simulator shares, by field name:
+//   intersample  'zoh' | 'foh' (of u; default of the core: 'zoh')
+//   na, nb, nk   the orders (nb, nk one entry per input)
+//   lambda_svf   the SVF cut-off (rad/s)
+//   svf          'normalised' (default) | 'normalized' | 'ordinary'
+//   adm, adg     'ff' and the forgetting factor, or 'kf' and the np-by-np Qn
+//   th0, P0      np-by-1 and np-by-np, absent or [] for the core's defaults
+inline InterSample read_intersample(OptionsReader& opt, InterSample fallback) {
+  return opt.choice<InterSample>(
+      "intersample", {{"zoh", InterSample::kZoh}, {"foh", InterSample::kFoh}},
+      fallback);
 }
 
-inline ModelOrders read_orders(const Gateway& g, const mxArray* na,
-                               const mxArray* nb, const mxArray* nk) {
+inline ModelOrders read_orders(const Gateway& g, OptionsReader& opt) {
   ModelOrders orders;
-  orders.na = g.integer(na, "na");
-  orders.nb = g.integer_vector(nb, "nb");
-  orders.nk = g.integer_vector(nk, "nk");
+  orders.na = opt.integer("na");
+  orders.nb = opt.integer_vector("nb");
+  orders.nk = opt.integer_vector("nk");
   g.check(validate_orders(orders));
   return orders;
 }
 
-inline bool read_normalised(const Gateway& g, const mxArray* a) {
-  const std::string s = g.text(a, "the SVF form");
-  if (s == "normalised" || s == "normalized") return true;
-  if (s == "ordinary") return false;
-  g.fail("badOption", "the SVF form must be 'normalised' or 'ordinary'");
+inline void read_svf(OptionsReader& opt, SvfSettings<double>* svf) {
+  svf->u_intersample = read_intersample(opt, svf->u_intersample);
+  svf->lambda_svf = opt.scalar("lambda_svf");
+  svf->normalised = opt.choice<bool>(
+      "svf", {{"normalised", true}, {"normalized", true}, {"ordinary", false}},
+      svf->normalised);
 }
 
-// adm ('ff' or 'kf') and adg (forgetting factor or np-by-np Qn).
-inline Adaptation<double> read_adaptation(const Gateway& g, const mxArray* adm,
-                                          const mxArray* adg, long np) {
-  const std::string kind = g.text(adm, "adm");
-  if (kind == "ff") {
-    return ForgettingFactorAdaptation<double>(g.scalar(adg, "adg"));
+inline Adaptation<double> read_adaptation(OptionsReader& opt, long np) {
+  enum class Kind { kFf, kKf };
+  const Kind kind = opt.choice<Kind>(
+      "adm", {{"ff", Kind::kFf}, {"kf", Kind::kKf}}, Kind::kFf);
+  if (kind == Kind::kFf) {
+    return ForgettingFactorAdaptation<double>(opt.scalar("adg"));
   }
-  if (kind == "kf") {
-    return KalmanAdaptation<double>(g.eigen_matrix(adg, "adg (Qn)", np, np));
-  }
-  g.fail("badOption", "adm must be 'ff' or 'kf', got '" + kind + "'");
+  return KalmanAdaptation<double>(opt.required_matrix("adg", np, np));
 }
 
-// th0 (np-by-1) and P0 (np-by-np), each possibly [] (defaults).
-inline void read_initial_estimate(const Gateway& g, const mxArray* th0,
-                                  const mxArray* P0, long np,
+inline void read_initial_estimate(OptionsReader& opt, long np,
                                   Vector<double>* theta0, Matrix<double>* p0) {
-  if (!mxIsEmpty(th0)) *theta0 = g.eigen_matrix(th0, "th0", np, 1);
-  if (!mxIsEmpty(P0)) *p0 = g.eigen_matrix(P0, "P0", np, np);
+  const Eigen::MatrixXd th0 = opt.matrix("th0", np, 1);
+  if (th0.size() != 0) *theta0 = th0;
+  const Eigen::MatrixXd P0 = opt.matrix("P0", np, np);
+  if (P0.size() != 0) *p0 = P0;
 }
 
-// A discrete transfer function from numerator and denominator rows.
-inline DiscreteTransferFunction<double> read_transfer_function(
-    const Gateway& g, const mxArray* num, const mxArray* den,
-    const std::string& what) {
-  DiscreteTransferFunction<double> tf;
-  g.require_real_double(num, what + " numerator");
-  g.require_real_double(den, what + " denominator");
-  tf.numerator = g.eigen_matrix(num, what + " numerator").reshaped();
-  tf.denominator = g.eigen_matrix(den, what + " denominator").reshaped();
-  return tf;
+// A discrete transfer function from the fields <prefix>_num and
+// <prefix>_den (vectors of coefficients in q^-1); both absent or []:
+// returns false.
+inline bool read_transfer_function(const Gateway& g, OptionsReader& opt,
+                                   const std::string& prefix,
+                                   DiscreteTransferFunction<double>* tf) {
+  const Eigen::MatrixXd num = opt.matrix(prefix + "_num");
+  const Eigen::MatrixXd den = opt.matrix(prefix + "_den");
+  if (num.size() == 0 && den.size() == 0) return false;
+  if (num.size() == 0 || den.size() == 0) {
+    g.fail("badOption", "options '" + prefix + "_num' and '" + prefix +
+                            "_den' must both be non-empty");
+  }
+  if (num.rows() > 1 && num.cols() > 1) {
+    g.fail("badInput", "option '" + prefix + "_num' must be a vector");
+  }
+  if (den.rows() > 1 && den.cols() > 1) {
+    g.fail("badInput", "option '" + prefix + "_den' must be a vector");
+  }
+  tf->numerator = num.reshaped();
+  tf->denominator = den.reshaped();
+  return true;
 }
 
 }  // namespace ctid::mex

@@ -158,7 +158,9 @@ inline std::string public_name(int nrhs, const mxArray* prhs[],
   return fallback;
 }
 
-// Runs body(gateway) and turns every failure into an identified error.
+// Runs body(gateway) and turns every failure into an identified error whose
+// identifier starts with the public name of the call (the fallback only
+// when the first argument names no function this gateway serves).
 template <typename Body>
 void run_gateway(const char* fallback_name,
                  std::initializer_list<const char*> allowed_names, int nrhs,
@@ -167,22 +169,27 @@ void run_gateway(const char* fallback_name,
   static char message[2048];
   bool failed = false;
   {
+    const char* name = fallback_name;
     try {
-      Gateway gateway(public_name(nrhs, prhs, fallback_name, allowed_names));
+      const std::string public_fname =
+          public_name(nrhs, prhs, fallback_name, allowed_names);
+      for (const char* allowed : allowed_names) {
+        if (public_fname == allowed) name = allowed;
+      }
+      Gateway gateway(public_fname);
       body(gateway);
     } catch (const GatewayError& e) {
       std::snprintf(id, sizeof id, "%s", e.id.c_str());
       std::snprintf(message, sizeof message, "%s", e.message.c_str());
       failed = true;
     } catch (const std::bad_alloc&) {
-      std::snprintf(id, sizeof id, "%s:numericalFailure", fallback_name);
-      std::snprintf(message, sizeof message, "%s: out of memory",
-                    fallback_name);
+      std::snprintf(id, sizeof id, "%s:numericalFailure", name);
+      std::snprintf(message, sizeof message, "%s: out of memory", name);
       failed = true;
     } catch (const std::exception& e) {
-      std::snprintf(id, sizeof id, "%s:numericalFailure", fallback_name);
-      std::snprintf(message, sizeof message, "%s: internal error: %s",
-                    fallback_name, e.what());
+      std::snprintf(id, sizeof id, "%s:numericalFailure", name);
+      std::snprintf(message, sizeof message, "%s: internal error: %s", name,
+                    e.what());
       failed = true;
     }
   }

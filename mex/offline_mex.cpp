@@ -2,16 +2,19 @@
 // (octave/private/contsid_offline.m):
 //
 //   [theta, cov, sigma2, iterations, converged] = offline_mex (fname, y, u,
-//       t, intersample, na, nb, nk, lambda_svf, svf_form, method, tol,
-//       maxiter, theta_init, c_num, c_den, r1, r2)
+//       t, options)
 //
-// theta is in the core's order [a1 .. a_na, b ..]; method 'lssvf' |
-// 'ivsvf' | 'srivc' | 'clsrivc'; theta_init [] (IVSVF/CLIVSVF start) or
-// np values; c_num = [] except for clsrivc. An SRIVC that does not converge
-// returns its last iterate with converged = false (the front-end warns).
+// y N-by-1, u N-by-nu, t the sampling interval or the N instants. Fields of
+// options: intersample, na, nb, nk, lambda_svf, svf (gateway_common.hpp),
+// method 'lssvf' | 'ivsvf' | 'srivc' | 'clsrivc'; for srivc and clsrivc
+// tol, maxiter and theta_init (absent or []: the IVSVF/CLIVSVF start, else
+// np values); for clsrivc controller_num, controller_den, r1 and r2.
+// theta is in the core's order [a1 .. a_na, b ..]. An SRIVC that does not
+// converge returns its last iterate with converged = false (the front-end
+// warns).
 //
-//   m = offline_mex (fname, y, u, t, intersample, na, nb, nk, lambda_svf,
-//       svf_form, "scaling", ...)
+//   m = offline_mex (fname, y, u, t, options)   with options.method =
+//                                               "scaling"
 // returns instead the diagonal of the scaling matrix M_s of eq. (3.54) for
 // the SVF regression of this record (svfscaling, rlssvf/rsrivc 'scaling').
 #include "ctid/offline_iv.hpp"
@@ -22,57 +25,84 @@ namespace {
 
 using ctid::mex::Gateway;
 
+enum class Method { kScaling, kLssvf, kIvsvf, kSrivc, kClsrivc };
+
 void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                      const mxArray* prhs[]) {
-  if (nrhs != 18) {
-    g.fail("badInput", "the gateway takes 18 arguments, got " +
-                           std::to_string(nrhs) + " (call " + g.name() +
-                           " instead)");
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call " + g.name() + " instead)");
   }
   if (nlhs > 5) g.fail("badInput", "at most 5 outputs");
   const ctid::RecordView<double> record =
       ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::SvfSettings<double> svf;
-  svf.u_intersample = ctid::mex::read_intersample(g, prhs[4]);
-  const ctid::ModelOrders orders =
-      ctid::mex::read_orders(g, prhs[5], prhs[6], prhs[7]);
-  svf.lambda_svf = g.scalar(prhs[8], "lambda_svf");
-  svf.normalised = ctid::mex::read_normalised(g, prhs[9]);
-  const std::string method = g.text(prhs[10], "method");
-  if (method == "scaling") {
+  ctid::mex::read_svf(opt, &svf);
+  const ctid::ModelOrders orders = ctid::mex::read_orders(g, opt);
+  const Method method = opt.choice<Method>("method",
+                                           {{"scaling", Method::kScaling},
+                                            {"lssvf", Method::kLssvf},
+                                            {"ivsvf", Method::kIvsvf},
+                                            {"srivc", Method::kSrivc},
+                                            {"clsrivc", Method::kClsrivc}},
+                                           Method::kSrivc);
+  if (!opt.has("method")) g.fail("badOption", "option 'method' is missing");
+  if (method == Method::kScaling) {
+    opt.finish();
+    if (nlhs > 1) g.fail("badInput", "the scaling has 1 output");
     ctid::Vector<double> m;
     g.check(ctid::svf_scaling(orders, svf, record, m));
     plhs[0] = ctid::mex::make_output_matrix(m.size(), 1);
     std::copy(m.data(), m.data() + m.size(), mxGetPr(plhs[0]));
     return;
   }
-  ctid::SrivcSettings<double> settings;
-  settings.tolerance = g.scalar(prhs[11], "Tol");
-  settings.max_iterations = g.integer(prhs[12], "MaxIter");
   const long np = orders.num_parameters();
-  if (!mxIsEmpty(prhs[13])) {
-    settings.theta_init =
-        g.eigen_matrix(prhs[13], "the initial estimate", np, 1);
+  ctid::SrivcSettings<double> settings;
+  const bool iterative = method == Method::kSrivc || method == Method::kClsrivc;
+  if (iterative) {
+    settings.tolerance = opt.scalar("tol", settings.tolerance);
+    settings.max_iterations = opt.integer("maxiter", settings.max_iterations);
+    const Eigen::MatrixXd theta_init = opt.matrix("theta_init", np, 1);
+    if (theta_init.size() != 0) settings.theta_init = theta_init;
   }
+  ctid::DiscreteTransferFunction<double> controller;
+  const double* r1 = nullptr;
+  const double* r2 = nullptr;
+  if (method == Method::kClsrivc) {
+    if (!ctid::mex::read_transfer_function(g, opt, "controller", &controller)) {
+      g.fail("badOption",
+             "clsrivc needs the options 'controller_num' and "
+             "'controller_den'");
+    }
+    const long n = record.num_samples;
+    r1 = opt.signal("r1", n);
+    r2 = opt.signal("r2", n);
+    if (r1 == nullptr || r2 == nullptr) {
+      g.fail("badOption", "clsrivc needs the options 'r1' and 'r2'");
+    }
+  }
+  opt.finish();
   ctid::OfflineEstimate<double> estimate;
   ctid::Status status;
-  if (method == "lssvf") {
-    status = ctid::lssvf(orders, svf, record, &estimate);
-  } else if (method == "ivsvf") {
-    status = ctid::ivsvf(orders, svf, record, &estimate);
-  } else if (method == "srivc") {
-    status = ctid::srivc(orders, svf, settings, record, &estimate);
-  } else if (method == "clsrivc") {
-    const ctid::DiscreteTransferFunction<double> controller =
-        ctid::mex::read_transfer_function(g, prhs[14], prhs[15],
-                                          "the controller");
-    const long n = record.num_samples;
-    const double* r1 = g.matrix(prhs[16], "r1", n, 1);
-    const double* r2 = g.matrix(prhs[17], "r2", n, 1);
-    status = ctid::clsrivc(orders, svf, settings, record, r1, r2, controller,
-                           &estimate);
-  } else {
-    g.fail("badOption", "method must be lssvf, ivsvf, srivc or clsrivc");
+  switch (method) {
+    case Method::kLssvf:
+      status = ctid::lssvf(orders, svf, record, &estimate);
+      break;
+    case Method::kIvsvf:
+      status = ctid::ivsvf(orders, svf, record, &estimate);
+      break;
+    case Method::kSrivc:
+      status = ctid::srivc(orders, svf, settings, record, &estimate);
+      break;
+    case Method::kScaling:  // returned above
+      break;
+    case Method::kClsrivc:
+      status = ctid::clsrivc(orders, svf, settings, record, r1, r2, controller,
+                             &estimate);
+      break;
   }
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
   if (estimate.theta.size() != np) {

@@ -26,18 +26,25 @@ namespace ctid::mex {
 
 class OptionsReader {
  public:
-  // options: a 1x1 struct, or an empty array for "no options".
-  OptionsReader(const Gateway& g, const mxArray* options)
-      : g_(g), options_(options) {
-    if (options_ == nullptr) g_.fail("badInput", "the options are missing");
+  // options: a 1x1 struct, or an empty array for "no options". A nested
+  // struct (e.g. the field "plant") is read by a second reader whose prefix
+  // ("plant.") names its fields in the messages.
+  OptionsReader(const Gateway& g, const mxArray* options,
+                std::string prefix = "")
+      : g_(g), options_(options), prefix_(std::move(prefix)) {
+    const std::string whole =
+        prefix_.empty()
+            ? std::string("the options")
+            : "option '" + prefix_.substr(0, prefix_.size() - 1) + "'";
+    if (options_ == nullptr) g_.fail("badInput", whole + " is missing");
     if (mxIsStruct(options_)) {
       if (mxGetNumberOfElements(options_) != 1) {
-        g_.fail("badInput", "the options must be a 1x1 struct");
+        g_.fail("badInput", whole + " must be a 1x1 struct");
       }
     } else if (mxIsEmpty(options_)) {
       options_ = nullptr;
     } else {
-      g_.fail("badInput", "the options must be a struct");
+      g_.fail("badInput", whole + " must be a struct");
     }
   }
 
@@ -52,25 +59,25 @@ class OptionsReader {
   // A required field: absent is an error naming it.
   const mxArray* required(const std::string& name) {
     const mxArray* a = field(name);
-    if (a == nullptr) g_.fail("badOption", "option '" + name + "' is missing");
+    if (a == nullptr) g_.fail("badOption", what(name) + " is missing");
     return a;
   }
 
   double scalar(const std::string& name) {
     return g_.scalar(required(name), what(name));
   }
+  // Optional fields: absent or [] give the fallback.
   double scalar(const std::string& name, double fallback) {
     const mxArray* a = field(name);
-    return a == nullptr ? fallback : g_.scalar(a, what(name));
+    return absent(a) ? fallback : g_.scalar(a, what(name));
   }
   // A scalar that must lie in [lo, hi].
   double scalar_in(const std::string& name, double fallback, double lo,
                    double hi) {
     const double v = scalar(name, fallback);
     if (!(v >= lo && v <= hi)) {
-      g_.fail("badOption", what(name) + " must lie in [" +
-                               std::to_string(lo) + ", " + std::to_string(hi) +
-                               "]");
+      g_.fail("badOption", what(name) + " must lie in [" + std::to_string(lo) +
+                               ", " + std::to_string(hi) + "]");
     }
     return v;
   }
@@ -80,12 +87,12 @@ class OptionsReader {
   }
   int integer(const std::string& name, int fallback) {
     const mxArray* a = field(name);
-    return a == nullptr ? fallback : g_.integer(a, what(name));
+    return absent(a) ? fallback : g_.integer(a, what(name));
   }
 
   bool flag(const std::string& name, bool fallback) {
     const mxArray* a = field(name);
-    if (a == nullptr) return fallback;
+    if (absent(a)) return fallback;
     if (mxIsLogical(a) && mxGetNumberOfElements(a) == 1) {
       return mxIsLogicalScalarTrue(a);
     }
@@ -115,8 +122,27 @@ class OptionsReader {
   Eigen::MatrixXd matrix(const std::string& name, long rows = -1,
                          long cols = -1) {
     const mxArray* a = field(name);
-    if (a == nullptr || mxIsEmpty(a)) return Eigen::MatrixXd();
+    if (absent(a)) return Eigen::MatrixXd();
     return g_.eigen_matrix(a, what(name), rows, cols);
+  }
+  // A required finite real double matrix.
+  Eigen::MatrixXd required_matrix(const std::string& name, long rows = -1,
+                                  long cols = -1) {
+    return g_.eigen_matrix(required(name), what(name), rows, cols);
+  }
+
+  // A signal of n finite values, one per sample, read in place: nullptr when
+  // absent or [].
+  const double* signal(const std::string& name, long n) {
+    const mxArray* a = field(name);
+    if (absent(a)) return nullptr;
+    return g_.matrix(a, what(name), n, 1);
+  }
+
+  // A nested struct field, read by its own reader (whose finish() the
+  // caller calls).
+  OptionsReader nested(const std::string& name) {
+    return OptionsReader(g_, required(name), prefix_ + name + ".");
   }
 
   // One of a fixed list of strings, mapped to a value.
@@ -143,22 +169,26 @@ class OptionsReader {
     for (int i = 0; i < n; ++i) {
       const std::string name = mxGetFieldNameByNumber(options_, i);
       if (std::find(used_.begin(), used_.end(), name) == used_.end()) {
-        g_.fail("badOption", "unknown option '" + name + "'");
+        g_.fail("badOption", "unknown option '" + prefix_ + name + "'");
       }
     }
   }
 
  private:
+  static bool absent(const mxArray* a) {
+    return a == nullptr || (mxIsEmpty(a) && mxIsDouble(a));
+  }
   const mxArray* raw(const std::string& name) const {
     return options_ == nullptr ? nullptr
                                : mxGetField(options_, 0, name.c_str());
   }
-  static std::string what(const std::string& name) {
-    return "option '" + name + "'";
+  std::string what(const std::string& name) const {
+    return "option '" + prefix_ + name + "'";
   }
 
   const Gateway& g_;
   const mxArray* options_;
+  std::string prefix_;
   std::vector<std::string> used_;
 };
 

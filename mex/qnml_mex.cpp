@@ -1,15 +1,17 @@
 // MEX gateway of qnml (octave/qnml.m): maximum-likelihood estimation of the
 // diagonal of Qn, thesis sec. 3.3 (core: qn_ml.hpp; minimiser: NLopt).
 //
-//   [q, V, sigma2, evaluations, converged, message] = qnml_mex ("qnml",
-//       estimator, "search", q0, lb, ub, free, maxeval, xtol, [], <args>)
-//   [V, sigma2] = qnml_mex ("qnml", estimator, "evaluate", [], [], [], [],
-//       [], [], Q, <args>)
+//   [q, V, sigma2, evaluations, converged, message] = qnml_mex ("qnml", y,
+//       u, t, options)            with options.mode = "search"
+//   [V, sigma2] = qnml_mex ("qnml", y, u, t, options)
+//                                 with options.mode = "evaluate"
 //
-// estimator 'rlssvf' (then <args> are the 18 rlssvf arguments of
-// estimator_args.hpp) or 'riv' (the 28 riv arguments); adm must be 'kf' (its
-// adg is replaced by diag(q) at every evaluation). q0, lb, ub, free: np
-// values in the core's parameter order; Q: np-by-M diagonals to evaluate.
+// options holds the fields of the estimator (estimator_args.hpp) named by
+// its field estimator, 'rlssvf' or 'riv'; adm must be 'kf' (its adg is
+// replaced by diag(q) at every evaluation) and precision, if given,
+// 'double'. The search reads q0, lb, ub, free (np values each, in the
+// core's parameter order), maxeval and xtol (the tolerance on log10 q);
+// the evaluation reads Q, the np-by-M diagonals to evaluate.
 #include <nlopt.h>
 
 #include <vector>
@@ -21,6 +23,7 @@
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
 
 // V(q) for one diagonal q: runs the estimator with Qn = diag(q) and
 // concentrates sigma_e^2 out of eq. (3.23).
@@ -60,22 +63,25 @@ class LikelihoodCost {
   ctid::RecursiveOutputs<double> out_;
 };
 
-std::vector<double> read_values(const Gateway& g, const mxArray* a,
-                                const std::string& what, long np) {
-  const double* p = g.matrix(a, what, np, 1, false);
+std::vector<double> read_values(const Gateway& g, OptionsReader& opt,
+                                const std::string& name, long np) {
+  const double* p =
+      g.matrix(opt.required(name), "option '" + name + "'", np, 1, false);
   return std::vector<double>(p, p + np);
 }
 
+// Reads the mode's fields, checks that no other field is left, and runs.
 template <typename Cost>
 void search_or_evaluate(const Gateway& g, int nlhs, mxArray* plhs[],
-                        const mxArray* prhs[], long np, Cost& cost) {
-  const std::string mode = g.text(prhs[2], "mode");
-  if (mode == "evaluate") {
-    const Eigen::Map<const Eigen::MatrixXd> Q =
-        g.eigen_matrix(prhs[9], "the diagonals to evaluate", np, -1);
+                        OptionsReader& opt, bool evaluate, long np,
+                        Cost& cost) {
+  if (evaluate) {
+    const Eigen::MatrixXd Q = opt.required_matrix("Q", np, -1);
+    opt.finish();
     if ((Q.array() < 0).any()) {
       g.fail("badInput", "the diagonals to evaluate must be >= 0");
     }
+    if (nlhs > 2) g.fail("badInput", "the evaluation has at most 2 outputs");
     const long m = static_cast<long>(Q.cols());
     plhs[0] = ctid::mex::make_output_matrix(1, m);
     mxArray* s2 = ctid::mex::make_output_matrix(1, m);
@@ -83,20 +89,23 @@ void search_or_evaluate(const Gateway& g, int nlhs, mxArray* plhs[],
       std::vector<double> q(Q.col(j).data(), Q.col(j).data() + np);
       mxGetPr(plhs[0])[j] = cost(q, mxGetPr(s2) + j);
     }
-    if (nlhs >= 2) plhs[1] = s2;
+    if (nlhs >= 2) {
+      plhs[1] = s2;
+    } else {
+      mxDestroyArray(s2);
+    }
     return;
   }
-  if (mode != "search")
-    g.fail("badOption", "mode must be 'search' or 'evaluate'");
   ctid::QnSearchSettings settings;
-  settings.q0 = read_values(g, prhs[3], "q0", np);
-  settings.lower = read_values(g, prhs[4], "the lower bounds", np);
-  settings.upper = read_values(g, prhs[5], "the upper bounds", np);
-  const std::vector<double> free = read_values(g, prhs[6], "free", np);
+  settings.q0 = read_values(g, opt, "q0", np);
+  settings.lower = read_values(g, opt, "lb", np);
+  settings.upper = read_values(g, opt, "ub", np);
+  const std::vector<double> free = read_values(g, opt, "free", np);
   settings.free.assign(np, false);
   for (long i = 0; i < np; ++i) settings.free[i] = free[i] != 0;
-  settings.max_evaluations = g.integer(prhs[7], "maxeval");
-  settings.xtol_log10 = g.scalar(prhs[8], "the tolerance");
+  settings.max_evaluations = opt.integer("maxeval");
+  settings.xtol_log10 = opt.scalar("xtol");
+  opt.finish();
   ctid::QnSearchResult result;
   g.check(ctid::estimate_qn_diagonal(
       [&](const std::vector<double>& q, double* sigma2) {
@@ -121,18 +130,31 @@ void require_kalman(const Gateway& g, const Adaptation& adaptation) {
 
 void qnml_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
-  if (nrhs < 10) g.fail("badInput", "too few arguments (call qnml instead)");
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call qnml instead)");
+  }
   if (nlhs > 6) g.fail("badInput", "at most 6 outputs");
-  const std::string estimator = g.text(prhs[1], "estimator");
-  const mxArray* const* args = prhs + 10;
-  const int nargs = nrhs - 10;
-  if (estimator == "rlssvf") {
-    if (nargs != ctid::mex::kRlssvfArguments) {
-      g.fail("badInput", "wrong number of rlssvf arguments");
-    }
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
+  OptionsReader opt(g, prhs[4]);
+  enum class Estimator { kRlssvf, kRiv };
+  const Estimator estimator = opt.choice<Estimator>(
+      "estimator", {{"rlssvf", Estimator::kRlssvf}, {"riv", Estimator::kRiv}},
+      Estimator::kRlssvf);
+  if (!opt.has("estimator"))
+    g.fail("badOption", "option 'estimator' is missing");
+  const bool evaluate =
+      opt.choice<bool>("mode", {{"search", false}, {"evaluate", true}}, false);
+  if (!opt.has("mode")) g.fail("badOption", "option 'mode' is missing");
+  if (ctid::mex::read_single_precision(opt)) {
+    g.fail("notSupported", "the Qn search runs in double precision only");
+  }
+  if (estimator == Estimator::kRlssvf) {
     ctid::RlsSvfConfig<double> config;
-    const ctid::RecordView<double> record =
-        ctid::mex::read_rlssvf_config(g, args, &config);
+    ctid::mex::read_rlssvf_config(g, opt, &config);
     require_kalman(g, config.adaptation);
     if (config.form == ctid::UpdateForm::kLevenbergMarquardt) {
       g.fail("badOption", "the Qn search needs a Kalman filter, not LMR");
@@ -145,15 +167,12 @@ void qnml_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     };
     LikelihoodCost<ctid::RlsSvfConfig<double>, decltype(run)> cost(config,
                                                                    record, run);
-    search_or_evaluate(g, nlhs, plhs, prhs, ctid::num_estimated(config), cost);
-  } else if (estimator == "riv") {
-    if (nargs != ctid::mex::kRivArguments) {
-      g.fail("badInput", "wrong number of riv arguments");
-    }
+    search_or_evaluate(g, nlhs, plhs, opt, evaluate,
+                       ctid::num_estimated(config), cost);
+  } else {
     ctid::RecursiveIvConfig<double> config;
     ctid::ClosedLoopSignals<double> loop;
-    const ctid::RecordView<double> record =
-        ctid::mex::read_riv_config(g, args, &config, &loop);
+    ctid::mex::read_riv_config(g, opt, record, &config, &loop);
     require_kalman(g, config.adaptation);
     auto run = [loop](const ctid::RecursiveIvConfig<double>& c,
                       const ctid::RecordView<double>& r,
@@ -162,10 +181,8 @@ void qnml_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     };
     LikelihoodCost<ctid::RecursiveIvConfig<double>, decltype(run)> cost(
         config, record, run);
-    search_or_evaluate(g, nlhs, plhs, prhs, config.orders.num_parameters(),
-                       cost);
-  } else {
-    g.fail("badOption", "the estimator must be 'rlssvf' or 'riv'");
+    search_or_evaluate(g, nlhs, plhs, opt, evaluate,
+                       config.orders.num_parameters(), cost);
   }
 }
 

@@ -1,14 +1,15 @@
 // MEX gateway of the recursive IV estimators rivsvf, rsrivc, clrivsvf and
-// clrsrivc (octave/private/contsid_riv.m): converts the fixed argument list
-// below, runs ctid::run_recursive_iv and returns THM, YH, PSET and INFO.
+// clrsrivc (octave/private/contsid_riv.m): reads the record and the options
+// struct, runs ctid::run_recursive_iv and returns THM, YH, PSET and INFO.
 //
-//   [thm, yh, pset, info] = riv_mex (fname, <28 riv arguments>, precision)
+//   [thm, yh, pset, info] = riv_mex (fname, y, u, t, options)
 //
-// The 28 arguments are listed in estimator_args.hpp; precision 'double' |
-// 'single'. INFO has the number of estimates refused by the stability
-// test, kappa_2(P), prediction errors and innovation scales per sample,
-// and with conditional updating kappa_2 of the parallel RLSSVF-FF, whether
-// each sample updated the estimates, and the number of resets.
+// y N-by-1, u N-by-nu, t the sampling interval or the N instants; the
+// fields of options are listed in estimator_args.hpp, plus precision
+// 'double' | 'single'. INFO has the number of estimates refused by the
+// stability test, kappa_2(P), prediction errors and innovation scales per
+// sample, and with conditional updating kappa_2 of the parallel RLSSVF-FF,
+// whether each sample updated the estimates, and the number of resets.
 #include <vector>
 
 #include "estimator_args.hpp"
@@ -59,18 +60,21 @@ struct RivRun {
 
 void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
-  const int expected = 1 + ctid::mex::kRivArguments + 1;
-  if (nrhs != expected) {
-    g.fail("badInput", "the gateway takes " + std::to_string(expected) +
-                           " arguments, got " + std::to_string(nrhs) +
-                           " (call " + g.name() + " instead)");
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call " + g.name() + " instead)");
   }
   if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, INFO)");
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::RecursiveIvConfig<double> config;
   ctid::ClosedLoopSignals<double> loop;
-  const ctid::RecordView<double> record =
-      ctid::mex::read_riv_config(g, prhs + 1, &config, &loop);
-  const bool single = ctid::mex::read_single_precision(g, prhs[29]);
+  ctid::mex::read_riv_config(g, opt, record, &config, &loop);
+  const bool single = ctid::mex::read_single_precision(opt);
+  opt.finish();
 
   const std::size_t n = record.num_samples;
   const std::size_t np = config.orders.num_parameters();

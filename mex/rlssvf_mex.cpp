@@ -1,13 +1,13 @@
-// MEX gateway of rlssvf (octave/rlssvf.m): converts the fixed argument list
-// below, runs ctid::run_rlssvf and returns THM, YH, PSET and INFO.
+// MEX gateway of rlssvf (octave/rlssvf.m): reads the record and the options
+// struct, runs ctid::run_rlssvf and returns THM, YH, PSET and INFO.
 //
-//   [thm, yh, pset, info] = rlssvf_mex (fname, <18 rlssvf arguments>,
-//                                       precision)
+//   [thm, yh, pset, info] = rlssvf_mex (fname, y, u, t, options)
 //
-// The 18 arguments are listed in estimator_args.hpp (record, orders, SVF,
-// adaptation, th0, P0, update form, Gamma, scaling, ic, tsls); precision
-// 'double' | 'single' (the core instantiated for float on a float copy of
-// the data). YH, PSET and INFO (kappa_2(P), the initial-condition
+// y N-by-1, u N-by-nu, t the sampling interval or the N instants; the
+// fields of options are listed in estimator_args.hpp (orders, SVF,
+// adaptation, th0, P0, update form, Gamma, scaling, ic, tsls) plus
+// precision 'double' | 'single' (the core instantiated for float on a float
+// copy of the data). YH, PSET and INFO (kappa_2(P), the initial-condition
 // coefficients, prediction errors and innovation scales per sample) are
 // computed only when requested.
 #include "estimator_args.hpp"
@@ -18,17 +18,20 @@ using ctid::mex::Gateway;
 
 void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                     const mxArray* prhs[]) {
-  const int expected = 1 + ctid::mex::kRlssvfArguments + 1;
-  if (nrhs != expected) {
-    g.fail("badInput", "the gateway takes " + std::to_string(expected) +
-                           " arguments, got " + std::to_string(nrhs) +
-                           " (call rlssvf instead)");
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, y, u, t, "
+           "options), got " +
+               std::to_string(nrhs) + " (call rlssvf instead)");
   }
   if (nlhs > 4) g.fail("badInput", "at most 4 outputs (THM, YH, PSET, INFO)");
-  ctid::RlsSvfConfig<double> config;
   const ctid::RecordView<double> record =
-      ctid::mex::read_rlssvf_config(g, prhs + 1, &config);
-  const bool single = ctid::mex::read_single_precision(g, prhs[19]);
+      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  ctid::RlsSvfConfig<double> config;
+  ctid::mex::read_rlssvf_config(g, opt, &config);
+  const bool single = ctid::mex::read_single_precision(opt);
+  opt.finish();
   g.check(ctid::validate_record(record, config.orders));
 
   const std::size_t n = record.num_samples;

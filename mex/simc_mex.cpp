@@ -1,13 +1,14 @@
 // MEX gateway of the LTV simulator (octave/simc.m):
 //
-//   [x, y, u] = simc_mex(fname, u, t, intersample, na, nb, nk, theta,
-//                        substeps, x0, noise, c_num, c_den, r2)
+//   [x, y, u] = simc_mex (fname, u, t, theta, options)
 //
 // u: N-by-nu input (r1 in closed loop); t: Ts or N instants; theta: 1-by-np
-// (time-invariant) or N-by-np (values at the samples, linear in between);
-// x0: [] or na*nu initial state; noise: [] or N-by-1 e(t_k) added to y;
-// c_num/c_den: [] for open loop, else the controller C(q^-1) of
-// u = r1 + C (r2 - y), with r2 N-by-1.
+// (time-invariant) or N-by-np (values at the samples, linear in between).
+// Fields of options: intersample, na, nb, nk (gateway_common.hpp),
+// substeps (default 1), x0 (absent or [], or the na*nu initial state),
+// noise (absent or [], or N-by-1 e(t_k) added to y); in closed loop
+// controller_num, controller_den (C(q^-1) of u = r1 + C (r2 - y)) and r2
+// (N-by-1).
 #include "ctid/ltv_simulator.hpp"
 #include "gateway_common.hpp"
 
@@ -17,9 +18,11 @@ using ctid::mex::Gateway;
 
 void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
-  if (nrhs != 14) {
-    g.fail("badInput", "the gateway takes 14 arguments, got " +
-                           std::to_string(nrhs) + " (call simc instead)");
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, u, t, theta, "
+           "options), got " +
+               std::to_string(nrhs) + " (call simc instead)");
   }
   if (nlhs > 3) g.fail("badInput", "at most 3 outputs (x, y, u)");
   g.require_real_double(prhs[1], "u");
@@ -41,9 +44,10 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       }
     }
   }
+  ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::LtvSimulationConfig<double> config;
-  config.u_intersample = ctid::mex::read_intersample(g, prhs[3]);
-  config.orders = ctid::mex::read_orders(g, prhs[4], prhs[5], prhs[6]);
+  config.u_intersample = ctid::mex::read_intersample(opt, config.u_intersample);
+  config.orders = ctid::mex::read_orders(g, opt);
   if (record.num_inputs != config.orders.num_inputs()) {
     g.fail("dimensionMismatch", "u has " + std::to_string(record.num_inputs) +
                                     " column(s) but the model has " +
@@ -54,26 +58,26 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     g.fail("badInput", "nk must be 0 for irregularly sampled data");
   }
   const long np = config.orders.num_parameters();
-  g.require_real_double(prhs[7], "theta");
-  const long theta_rows = static_cast<long>(mxGetM(prhs[7]));
+  g.require_real_double(prhs[3], "theta");
+  const long theta_rows = static_cast<long>(mxGetM(prhs[3]));
   if (theta_rows != 1 && theta_rows != n) {
     g.fail("dimensionMismatch", "theta must have 1 row or one row per sample");
   }
-  const double* theta = g.matrix(prhs[7], "theta", theta_rows, np);
-  config.substeps = g.integer(prhs[8], "substeps");
+  const double* theta = g.matrix(prhs[3], "theta", theta_rows, np);
+  config.substeps = opt.integer("substeps", config.substeps);
   const long ns = static_cast<long>(config.orders.na) * record.num_inputs;
-  if (!mxIsEmpty(prhs[9])) {
-    config.initial_state = g.eigen_matrix(prhs[9], "x0", ns, 1);
+  const Eigen::MatrixXd x0 = opt.matrix("x0", ns, 1);
+  if (x0.size() != 0) config.initial_state = x0;
+  const double* noise = opt.signal("noise", n);
+  config.closed_loop = ctid::mex::read_transfer_function(g, opt, "controller",
+                                                         &config.controller);
+  const double* r2 = opt.signal("r2", n);
+  if (config.closed_loop != (r2 != nullptr)) {
+    g.fail("badOption",
+           "the closed loop needs the options 'controller_num', "
+           "'controller_den' and 'r2' together");
   }
-  const double* noise =
-      mxIsEmpty(prhs[10]) ? nullptr : g.matrix(prhs[10], "noise", n, 1);
-  const double* r2 = nullptr;
-  if (!mxIsEmpty(prhs[11])) {
-    config.closed_loop = true;
-    config.controller = ctid::mex::read_transfer_function(g, prhs[11], prhs[12],
-                                                          "the controller");
-    r2 = g.matrix(prhs[13], "r2", n, 1);
-  }
+  opt.finish();
   ctid::LtvSimulator<double> simulator;
   g.check(simulator.configure(config));
 

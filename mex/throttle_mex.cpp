@@ -2,17 +2,20 @@
 // throttlesim.m and octave/throttleid.m):
 //
 //   [u, i, phi, phi_m, omega, r, info] = throttle_mex ("throttlesim", phi_d,
-//       Ts, R, noise, params, pid_num, pid_den, f_num, f_den, umax,
-//       substeps, phi0)
+//       R, options)
 //   [thm, pset, kappa, phi_hat, u_hat, info] = throttle_mex ("throttleid",
-//       method, phi_d, u, i, phi_m, Ts, params, pid_num, pid_den, f_num,
-//       f_den, umax, substeps, phi0, lambda_svf, Qn, th0, P0, tsiv, phirule)
+//       phi_d, u, i, phi_m, options)
 //
-// Signals are N-by-1; R holds R(t_k) (linear in between); noise and phi0
-// may be []; params is the 18-vector [Ks1 Ks2 Ks3 M_close M_open phi_min
-// phi_max phi_LH delta_phi phi_12 J Kb Mc R L Kv Kt Gr] (SI, rad); umax may
-// be Inf. method is "rlssvf", "clrsrivc" or "rlsprefilter"; phirule "zoh"
-// or "foh". info is [saturated outside_linear events phi_low phi_high]
+// Signals are N-by-1; R holds R(t_k) (linear in between). Fields of
+// options, both modes: Ts; plant, a struct of the 18 parameters of Table
+// 4.3 by name (Ks1 Ks2 Ks3 M_close M_open phi_min phi_max phi_LH delta_phi
+// phi_12 J Kb Mc R L Kv Kt Gr; SI, rad); the loop pid_num, pid_den (the PID
+// of eq. 4.13 in q^-1), filter_num, filter_den (the set-point filter) and
+// umax (may be Inf); substeps (default 1) and phi0 (absent or []: at
+// phi_d(1)). throttlesim also reads noise (absent or []: none);
+// throttleid reads method ('rlssvf' | 'clrsrivc' | 'rlsprefilter'),
+// lambda_svf, adg (the 2-by-2 Qn), th0, P0, tsiv and phirule ('zoh' |
+// 'foh'). info is [saturated outside_linear events phi_low phi_high]
 // (throttlesim) or [rejections] (throttleid).
 #include <limits>
 
@@ -22,6 +25,7 @@
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
 
 // A real N-by-1 column of finite values.
 const double* column(const Gateway& g, const mxArray* a, const char* what,
@@ -29,52 +33,72 @@ const double* column(const Gateway& g, const mxArray* a, const char* what,
   return g.matrix(a, what, n, 1);
 }
 
+// The 18 plant parameters, each read by name from the struct "plant".
 ctid::ThrottleParameters<double> read_parameters(const Gateway& g,
-                                                 const mxArray* a) {
-  g.require_real_double(a, "params");
-  if (mxGetNumberOfElements(a) != 18 || (mxGetM(a) != 1 && mxGetN(a) != 1)) {
-    g.fail("dimensionMismatch", "params must be a vector of 18 values");
-  }
-  const double* v = g.matrix(a, "params");
+                                                 OptionsReader& opt) {
+  OptionsReader plant = opt.nested("plant");
   ctid::ThrottleParameters<double> p;
-  double* fields[18] = {
-      &p.Ks1,     &p.Ks2,    &p.Ks3,       &p.M_close, &p.M_open, &p.phi_min,
-      &p.phi_max, &p.phi_LH, &p.delta_phi, &p.phi_12,  &p.J,      &p.Kb,
-      &p.Mc,      &p.R,      &p.L,         &p.Kv,      &p.Kt,     &p.Gr};
-  for (int k = 0; k < 18; ++k) *fields[k] = v[k];
+  const std::pair<const char*, double*> fields[18] = {
+      {"Ks1", &p.Ks1},
+      {"Ks2", &p.Ks2},
+      {"Ks3", &p.Ks3},
+      {"M_close", &p.M_close},
+      {"M_open", &p.M_open},
+      {"phi_min", &p.phi_min},
+      {"phi_max", &p.phi_max},
+      {"phi_LH", &p.phi_LH},
+      {"delta_phi", &p.delta_phi},
+      {"phi_12", &p.phi_12},
+      {"J", &p.J},
+      {"Kb", &p.Kb},
+      {"Mc", &p.Mc},
+      {"R", &p.R},
+      {"L", &p.L},
+      {"Kv", &p.Kv},
+      {"Kt", &p.Kt},
+      {"Gr", &p.Gr}};
+  for (const auto& f : fields) *f.second = plant.scalar(f.first);
+  plant.finish();
   g.check(ctid::validate(p));
   return p;
 }
 
-ctid::ThrottleController<double> read_loop(const Gateway& g,
-                                           const mxArray* prhs[], int first) {
-  ctid::ThrottleController<double> c;
-  c.pid = ctid::mex::read_transfer_function(g, prhs[first], prhs[first + 1],
-                                            "the PID");
-  c.setpoint_filter = ctid::mex::read_transfer_function(
-      g, prhs[first + 2], prhs[first + 3], "the set-point filter");
-  const mxArray* umax = prhs[first + 4];
-  g.require_real_double(umax, "umax");
-  if (mxGetNumberOfElements(umax) != 1) {
-    g.fail("dimensionMismatch", "umax must be a scalar");
+ctid::DiscreteTransferFunction<double> read_filter(const Gateway& g,
+                                                   OptionsReader& opt,
+                                                   const std::string& prefix,
+                                                   const std::string& what) {
+  ctid::DiscreteTransferFunction<double> tf;
+  if (!ctid::mex::read_transfer_function(g, opt, prefix, &tf)) {
+    g.fail("badOption", what + " (options '" + prefix + "_num' and '" + prefix +
+                            "_den') is missing");
   }
-  c.u_max = *g.matrix(umax, "umax", 1, 1, false);
-  if (!(c.u_max > 0)) g.fail("badInput", "umax must be > 0 (Inf: no limit)");
+  return tf;
+}
+
+ctid::ThrottleController<double> read_loop(const Gateway& g,
+                                           OptionsReader& opt) {
+  ctid::ThrottleController<double> c;
+  c.pid = read_filter(g, opt, "pid", "the PID");
+  c.setpoint_filter = read_filter(g, opt, "filter", "the set-point filter");
+  c.u_max = *g.matrix(opt.required("umax"), "option 'umax'", 1, 1, false);
+  if (!(c.u_max > 0)) {
+    g.fail("badInput", "option 'umax' must be > 0 (Inf: no limit)");
+  }
   g.check(ctid::validate(c));
   return c;
 }
 
-double read_phi0(const Gateway& g, const mxArray* a) {
-  g.require_real_double(a, "phi0");
-  if (mxIsEmpty(a)) return std::numeric_limits<double>::quiet_NaN();
-  return g.scalar(a, "phi0");
+double read_phi0(OptionsReader& opt) {
+  return opt.scalar("phi0", std::numeric_limits<double>::quiet_NaN());
 }
 
 void throttlesim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                          const mxArray* prhs[]) {
-  if (nrhs != 13) {
-    g.fail("badInput", "the gateway takes 13 arguments, got " +
-                           std::to_string(nrhs) + " (call throttlesim)");
+  if (nrhs != 4) {
+    g.fail("badInput",
+           "the gateway takes 4 arguments (fname, phi_d, R, "
+           "options), got " +
+               std::to_string(nrhs) + " (call throttlesim)");
   }
   if (nlhs > 7) g.fail("badInput", "at most 7 outputs");
   g.require_real_double(prhs[1], "phi_d");
@@ -83,15 +107,16 @@ void throttlesim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::ThrottleSimulationInputs<double> in;
   in.phi_d = column(g, prhs[1], "phi_d", n);
   in.num_samples = n;
+  in.resistance = column(g, prhs[2], "R", n);
+  OptionsReader opt(g, prhs[3]);
   ctid::ThrottleSimulationConfig<double> config;
-  config.ts = g.scalar(prhs[2], "Ts");
-  in.resistance = column(g, prhs[3], "R", n);
-  g.require_real_double(prhs[4], "noise");
-  if (!mxIsEmpty(prhs[4])) in.noise = column(g, prhs[4], "noise", n);
-  config.plant = read_parameters(g, prhs[5]);
-  config.controller = read_loop(g, prhs, 6);
-  config.substeps = g.integer(prhs[11], "substeps");
-  config.phi0 = read_phi0(g, prhs[12]);
+  config.ts = opt.scalar("Ts");
+  in.noise = opt.signal("noise", n);
+  config.plant = read_parameters(g, opt);
+  config.controller = read_loop(g, opt);
+  config.substeps = opt.integer("substeps", config.substeps);
+  config.phi0 = read_phi0(opt);
+  opt.finish();
   g.check(ctid::validate(config));
 
   ctid::ThrottleSimulationOutputs<double> out;
@@ -116,46 +141,47 @@ void throttlesim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 
 void throttleid_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
-  if (nrhs != 21) {
-    g.fail("badInput", "the gateway takes 21 arguments, got " +
-                           std::to_string(nrhs) + " (call throttleid)");
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "the gateway takes 6 arguments (fname, phi_d, u, i, "
+           "phi_m, options), got " +
+               std::to_string(nrhs) + " (call throttleid)");
   }
   if (nlhs > 6) g.fail("badInput", "at most 6 outputs");
-  ctid::ThrottleIdConfig<double> config;
-  const std::string method = g.text(prhs[1], "the method");
-  if (method == "rlssvf") {
-    config.method = ctid::ThrottleIdMethod::kRlsSvf;
-  } else if (method == "clrsrivc") {
-    config.method = ctid::ThrottleIdMethod::kClrsrivc;
-  } else if (method == "rlsprefilter") {
-    config.method = ctid::ThrottleIdMethod::kRlsPrefilter;
-  } else {
-    g.fail("badOption",
-           "the method must be 'clrsrivc', 'rlssvf' or 'rlsprefilter', got '" +
-               method + "'");
-  }
-  g.require_real_double(prhs[2], "phi_d");
-  const long n = static_cast<long>(mxGetM(prhs[2]));
+  g.require_real_double(prhs[1], "phi_d");
+  const long n = static_cast<long>(mxGetM(prhs[1]));
   if (n < 2) g.fail("badInput", "the record needs at least 2 samples");
   ctid::ThrottleRecord<double> record;
-  record.phi_d = column(g, prhs[2], "phi_d", n);
-  record.u = column(g, prhs[3], "u", n);
-  record.i = column(g, prhs[4], "i", n);
-  record.phi_m = column(g, prhs[5], "phi_m", n);
+  record.phi_d = column(g, prhs[1], "phi_d", n);
+  record.u = column(g, prhs[2], "u", n);
+  record.i = column(g, prhs[3], "i", n);
+  record.phi_m = column(g, prhs[4], "phi_m", n);
   record.num_samples = n;
-  record.ts = g.scalar(prhs[6], "Ts");
+  OptionsReader opt(g, prhs[5]);
+  ctid::ThrottleIdConfig<double> config;
+  if (!opt.has("method")) g.fail("badOption", "option 'method' is missing");
+  config.method = opt.choice<ctid::ThrottleIdMethod>(
+      "method",
+      {{"rlssvf", ctid::ThrottleIdMethod::kRlsSvf},
+       {"clrsrivc", ctid::ThrottleIdMethod::kClrsrivc},
+       {"rlsprefilter", ctid::ThrottleIdMethod::kRlsPrefilter}},
+      config.method);
+  record.ts = opt.scalar("Ts");
   config.ts = record.ts;
-  config.plant = read_parameters(g, prhs[7]);
-  config.controller = read_loop(g, prhs, 8);
-  config.substeps = g.integer(prhs[13], "substeps");
-  config.phi0 = read_phi0(g, prhs[14]);
-  config.lambda_svf = g.scalar(prhs[15], "lambda_svf");
-  config.adaptation = ctid::KalmanAdaptation<double>(
-      g.eigen_matrix(prhs[16], "adg (Qn)", 2, 2));
-  ctid::mex::read_initial_estimate(g, prhs[17], prhs[18], 2, &config.theta0,
-                                   &config.P0);
-  config.t_s_iv = g.scalar(prhs[19], "tsiv");
-  config.phi_intersample = ctid::mex::read_intersample(g, prhs[20]);
+  config.plant = read_parameters(g, opt);
+  config.controller = read_loop(g, opt);
+  config.substeps = opt.integer("substeps", config.substeps);
+  config.phi0 = read_phi0(opt);
+  config.lambda_svf = opt.scalar("lambda_svf");
+  config.adaptation =
+      ctid::KalmanAdaptation<double>(opt.required_matrix("adg", 2, 2));
+  ctid::mex::read_initial_estimate(opt, 2, &config.theta0, &config.P0);
+  config.t_s_iv = opt.scalar("tsiv", config.t_s_iv);
+  config.phi_intersample = opt.choice<ctid::InterSample>(
+      "phirule",
+      {{"zoh", ctid::InterSample::kZoh}, {"foh", ctid::InterSample::kFoh}},
+      config.phi_intersample);
+  opt.finish();
   g.check(ctid::validate(config));
 
   ctid::ThrottleIdOutputs<double> out;
@@ -183,9 +209,7 @@ void throttleid_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  const std::string name = ctid::mex::public_name(
-      nrhs, prhs, "throttlesim", {"throttlesim", "throttleid"});
-  ctid::mex::run_gateway(name.c_str(), {"throttlesim", "throttleid"}, nrhs,
+  ctid::mex::run_gateway("throttlesim", {"throttlesim", "throttleid"}, nrhs,
                          prhs, [&](const Gateway& g) {
                            if (g.name() == "throttleid") {
                              throttleid_gateway(g, nlhs, plhs, nrhs, prhs);

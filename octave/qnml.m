@@ -84,11 +84,11 @@ function [Qn, V, info] = qnml (varargin)
     p = contsid_rlssvf_args (fname, estimator_args{:});
     perm = 1:p.orders.np;
     kind = "rlssvf";
-    if (p.args{17})
+    if (p.opts.ic)
       error ("qnml:badOption", ...
              "qnml: 'ic' is not supported in the Qn search");
     endif
-    if (strcmp (p.args{14}, "lmr"))
+    if (strcmp (p.opts.form, "lmr"))
       error ("qnml:badOption", "qnml: the Qn search needs a Kalman filter");
     endif
   else
@@ -138,17 +138,24 @@ function [Qn, V, info] = qnml (varargin)
     error ("qnml:badInput", "qnml: tol must be a finite scalar > 0");
   endif
 
-  args = p.args;
+  g = p.opts;
+  g.estimator = kind;
+  g.mode = "search";
+  g.q0 = q0(iperm);
+  g.lb = lb(iperm);
+  g.ub = ub(iperm);
+  g.free = double (free(iperm));
+  g.maxeval = double (maxeval);
+  g.xtol = double (tol);
   try
     [q, V, sigma2, evaluations, converged, message] = qnml_mex (fname,
-        kind, "search", q0(iperm), lb(iperm), ub(iperm),
-        double (free(iperm)), double (maxeval), double (tol), [], args{:});
+                                                                p.data{:}, g);
   catch err
     contsid_rethrow (err);
   end_try_catch
   q = q(perm);
   Qn = diag (q);
-  cost = @(Q) evaluate_cost (fname, kind, args, Q, iperm, np);
+  cost = @(Q) evaluate_cost (fname, kind, p, Q, iperm, np);
   info = struct ("q", q, "free", free, "sigma2", sigma2,
                  "evaluations", evaluations, "converged", converged,
                  "message", message, "lb", lb, "ub", ub, "method", method,
@@ -207,7 +214,7 @@ function v = per_element (fname, v, np, what)
   v = double (v(:));
 endfunction
 
-function V = evaluate_cost (fname, kind, args, Q, iperm, np)
+function V = evaluate_cost (fname, kind, p, Q, iperm, np)
   if (isvector (Q) && numel (Q) == np)
     Q = Q(:);
   endif
@@ -216,8 +223,11 @@ function V = evaluate_cost (fname, kind, args, Q, iperm, np)
            "%s: the diagonals to evaluate must be %d-by-M", fname, np);
   endif
   try
-    V = qnml_mex (fname, kind, "evaluate", [], [], [], [], [], [],
-                  double (Q(iperm, :)), args{:});
+    g = p.opts;
+    g.estimator = kind;
+    g.mode = "evaluate";
+    g.Q = double (Q(iperm, :));
+    V = qnml_mex (fname, p.data{:}, g);
   catch err
     contsid_rethrow (err);
   end_try_catch
@@ -289,6 +299,7 @@ endfunction
 %!error id=qnml:dimensionMismatch qnml (data, [1 1 0], "lambda_svf", 3, "q0", [1 2 3])
 %!error id=qnml:badOption qnml (data, [1 1 0], "lambda_svf", 3, "method", "rlssvf", "adm", "lmr")
 %!error id=qnml:badOption qnml (data, [1 1 0], "lambda_svf", 3, "nonsense", 1)
+%!error id=qnml:notSupported qnml (data, [1 1 0], 3, "precision", "single")
 
 %!demo
 %! ## Thesis example 3.3.3: a1 drifts, b0 is known to be constant.

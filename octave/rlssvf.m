@@ -133,8 +133,8 @@ function varargout = rlssvf (varargin)
   ## Ask the gateway only for the outputs requested: YH costs a matrix
   ## exponential per sample and PSET N*np^2 memory.
   try
-    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", p.args{:},
-                                                 p.precision);
+    [varargout{1:max(1, nargout)}] = rlssvf_mex ("rlssvf", p.data{:},
+                                                 p.opts);
   catch err
     contsid_rethrow (err);
   end_try_catch

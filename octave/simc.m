@@ -171,9 +171,15 @@ endfunction
 function varargout = call_gateway (nout, u, t, intersample, orders, theta,
                                     substeps, x0, e, c_num, c_den, r2)
   try
-    [varargout{1:nout}] = simc_mex ("simc", u, t, intersample, orders.na,
-                                    orders.nb, orders.nk, theta, substeps,
-                                    x0, e, c_num, c_den, r2);
+    g = struct ("intersample", intersample, "na", orders.na,
+                "nb", orders.nb, "nk", orders.nk, "substeps", substeps,
+                "x0", x0, "noise", e);
+    if (! isempty (c_num))
+      g.controller_num = c_num;
+      g.controller_den = c_den;
+      g.r2 = r2;
+    endif
+    [varargout{1:nout}] = simc_mex ("simc", u, t, theta, g);
   catch err
     contsid_rethrow (err);
   end_try_catch

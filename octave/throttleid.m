@@ -141,7 +141,7 @@ function [thm, R, Kv, info] = throttleid (data, method, varargin)
   if (isempty (loop) && isfield (data, "loop"))
     loop = data.loop;
   endif
-  [pvec, p, lvec] = throttle_args (fname, params, loop);
+  [gw, p] = throttle_args (fname, params, loop);
 
   Qn = opts.adg;
   if (! (isnumeric (Qn) && isreal (Qn)))
@@ -172,11 +172,18 @@ function [thm, R, Kv, info] = throttleid (data, method, varargin)
            "throttleid: substeps must be an integer in [1, 1e4]");
   endif
   num = @(v) double (v(:));
-  args = {"throttleid", method, num(data.phi_d), num(data.u), num(data.i), ...
-          num(data.phi_m), double(Ts), pvec, lvec{:}, double(s), ...
-          double(opts.phi0), double(opts.lambda_svf), double(Qn), ...
-          double(opts.th0), double(opts.P0), double(tsiv), ...
-          lower(opts.phirule)};
+  gw.method = method;
+  gw.Ts = double (Ts);
+  gw.substeps = double (s);
+  gw.phi0 = double (opts.phi0);
+  gw.lambda_svf = double (opts.lambda_svf);
+  gw.adg = double (Qn);
+  gw.th0 = double (opts.th0);
+  gw.P0 = double (opts.P0);
+  gw.tsiv = double (tsiv);
+  gw.phirule = lower (opts.phirule);
+  args = {"throttleid", num(data.phi_d), num(data.u), num(data.i), ...
+          num(data.phi_m), gw};
   try
     if (nargout >= 4)
       [thm, pset, kappa, phi_hat, u_hat, rej] = throttle_mex (args{:});

@@ -116,7 +116,7 @@ function sim = throttlesim (varargin)
   defaults = struct ("R", [], "noisevar", 1e-3, "noise", [], "params", [],
                      "loop", [], "substeps", 2, "phi0", [], "duration", 100);
   opts = contsid_options (fname, defaults, args);
-  [pvec, p, lvec, loop] = throttle_args (fname, opts.params, opts.loop);
+  [gw, p, loop] = throttle_args (fname, opts.params, opts.loop);
   if (isempty (Ts))
     Ts = loop.Ts;
   else
@@ -188,10 +188,13 @@ function sim = throttlesim (varargin)
     error ("throttlesim:badInput", "throttlesim: phi0 must be a real scalar");
   endif
 
+  gw.Ts = Ts;
+  gw.noise = e;
+  gw.substeps = double (s);
+  gw.phi0 = double (phi0);
   try
     [u, i, phi, phi_m, omega, r, info] = ...
-      throttle_mex ("throttlesim", phi_d, Ts, R, e, pvec, lvec{:},
-                    double (s), double (phi0));
+      throttle_mex ("throttlesim", phi_d, R, gw);
   catch err
     contsid_rethrow (err);
   end_try_catch

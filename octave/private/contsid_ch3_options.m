@@ -123,9 +123,11 @@ function m = svf_scaling (fname, d, orders, o)
     t = d.t;
   endif
   try
-    m = offline_mex (fname, d.y, d.u, t, d.intersample, orders.na,
-                     orders.nb, orders.nk, o.lambda_svf, o.svf, "scaling",
-                     1e-6, 1, [], [], [], [], []);
+    m = offline_mex (fname, d.y, d.u, t,
+                     struct ("intersample", d.intersample, "na", orders.na,
+                             "nb", orders.nb, "nk", orders.nk,
+                             "lambda_svf", o.lambda_svf, "svf", o.svf,
+                             "method", "scaling"));
   catch err
     contsid_rethrow (err);
   end_try_catch

@@ -85,13 +85,24 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
     endif
     candidates = lam;
   endif
-  method = fname;
+  g = struct ("intersample", d.intersample, "na", na, "nb", orders.nb,
+              "nk", orders.nk, "svf", lower (opts.svf), "method", fname);
+  if (refined)
+    g.tol = tol;
+    g.maxiter = maxiter;
+    g.theta_init = theta_init;
+  endif
+  if (closed)
+    g.controller_num = c_num;
+    g.controller_den = c_den;
+    g.r1 = r1;
+    g.r2 = r2;
+  endif
   best = [];
   for lam_i = candidates
+    g.lambda_svf = lam_i;
     try
-      [theta, cov, s2, iters, conv] = offline_mex (fname, d.y, d.u, t,
-          d.intersample, na, orders.nb, orders.nk, lam_i, lower (opts.svf),
-          method, tol, maxiter, theta_init, c_num, c_den, r1, r2);
+      [theta, cov, s2, iters, conv] = offline_mex (fname, d.y, d.u, t, g);
     catch err
       if (numel (candidates) > 1 && ! isempty (strfind (err.identifier,
                                                          "numericalFailure")))

@@ -10,7 +10,7 @@ function varargout = contsid_riv (fname, nout, varargin)
   p = contsid_riv_args (fname, fname, varargin{:});
   outs = cell (1, max (1, min (nout, 4)));
   try
-    [outs{:}] = riv_mex (fname, p.args{:}, p.precision);
+    [outs{:}] = riv_mex (fname, p.data{:}, p.opts);
   catch err
     contsid_rethrow (err);
   end_try_catch

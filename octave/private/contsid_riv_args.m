@@ -4,8 +4,9 @@
 ## (@var{routine}) and by qnml: parses the data, @var{nn} and the options
 ## (messages start with @var{fname}), reorders from the public parameter
 ## order ([a b] for the SVF methods, [b f] for the SRIVC ones) to the core's
-## [a b], and returns @var{p} with @code{args}, the 28 arguments of the riv
-## gateways (mex/estimator_args.hpp), @code{precision}, @code{perm}
+## [a b], and returns @var{p} with @code{data} = @{y, u, t@} and
+## @code{opts}, the options struct of riv_mex (fields in
+## mex/estimator_args.hpp), @code{perm}
 ## (thm_public = thm_core(:, perm)), @code{tsiv}, @code{d} and @code{orders}.
 ## @end deftypefn
 
@@ -147,12 +148,37 @@ function p = contsid_riv_args (fname, routine, varargin)
 
   p = struct ("d", d, "orders", orders, "perm", perm, "tsiv", tsiv);
   p.tsiv_detector = tsiv_detector;
-  p.args = {d.y, d.u, t, d.intersample, na, orders.nb, orders.nk, ...
-            o.lambda_svf, o.svf, o.adm, adg, th0, P0, method, tsiv, ...
-            dtupdate, lower(opts.stability), m_num, m_den, ...
-            lower(opts.prefilter), A, c_num, c_den, r1, r2, o.scaling, ...
-            o.antiwindup, o.antiwindup_lambda};
-  p.precision = o.precision;
+  p.data = {d.y, d.u, t};
+  ## The gateway's options struct (mex/estimator_args.hpp), field by field.
+  g.intersample = d.intersample;
+  g.na = na;
+  g.nb = orders.nb;
+  g.nk = orders.nk;
+  g.lambda_svf = o.lambda_svf;
+  g.svf = o.svf;
+  g.adm = o.adm;
+  g.adg = adg;
+  g.th0 = th0;
+  g.P0 = P0;
+  g.method = method;
+  g.tsiv = tsiv;
+  g.dtupdate = dtupdate;
+  g.stability = lower (opts.stability);
+  g.mtheta_num = m_num;
+  g.mtheta_den = m_den;
+  g.prefilter = lower (opts.prefilter);
+  g.A = A;
+  if (closed)
+    g.controller_num = c_num;
+    g.controller_den = c_den;
+    g.r1 = r1;
+    g.r2 = r2;
+  endif
+  g.scaling = o.scaling;
+  g.antiwindup = o.antiwindup;
+  g.antiwindup_lambda = o.antiwindup_lambda;
+  g.precision = o.precision;
+  p.opts = g;
 endfunction
 
 function A = check_A (fname, A, na, allowed)

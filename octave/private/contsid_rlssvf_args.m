@@ -2,8 +2,9 @@
 ## @deftypefn {} {@var{p} =} contsid_rlssvf_args (@var{fname}, @dots{})
 ## Argument preparation of rlssvf, shared with qnml: parses the data,
 ## [na nb nk] and the options (messages start with @var{fname}) and returns
-## @var{p} with @code{args}, the 18 arguments of rlssvf_mex
-## (mex/estimator_args.hpp), @code{precision}, @code{d} and @code{orders}.
+## @var{p} with @code{data} = @{y, u, t@} and @code{opts}, the options
+## struct of rlssvf_mex (fields in mex/estimator_args.hpp), @code{d} and
+## @code{orders}.
 ## @end deftypefn
 
 function p = contsid_rlssvf_args (fname, varargin)
@@ -26,10 +27,25 @@ function p = contsid_rlssvf_args (fname, varargin)
     adm = "ff";                          # the forgetting factor of eq. 3.82
   endif
   p = struct ("d", d, "orders", orders);
-  p.args = {d.y, d.u, t, d.intersample, orders.na, orders.nb, orders.nk, ...
-            o.lambda_svf, o.svf, adm, o.adg, o.th0, o.P0, o.form, o.Gamma, ...
-            o.scaling, double(o.ic), o.tsls};
-  p.precision = o.precision;
+  p.data = {d.y, d.u, t};
+  ## The gateway's options struct (mex/estimator_args.hpp), field by field.
+  g.intersample = d.intersample;
+  g.na = orders.na;
+  g.nb = orders.nb;
+  g.nk = orders.nk;
+  g.lambda_svf = o.lambda_svf;
+  g.svf = o.svf;
+  g.adm = adm;
+  g.adg = o.adg;
+  g.th0 = o.th0;
+  g.P0 = o.P0;
+  g.form = o.form;
+  g.Gamma = o.Gamma;
+  g.scaling = o.scaling;
+  g.ic = logical (o.ic);
+  g.tsls = o.tsls;
+  g.precision = o.precision;
+  p.opts = g;
 endfunction
 
 ## With initial conditions the core estimates [theta; c_1 .. c_na]: the

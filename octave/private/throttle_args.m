@@ -1,27 +1,23 @@
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{pvec}, @var{p}, @var{lvec}, @var{loop}] =} @
+## @deftypefn {} {[@var{gw}, @var{p}, @var{loop}] =} @
 ##   throttle_args (@var{fname}, @var{params}, @var{loop})
 ## Shared argument check of throttlesim and throttleid: the plant
 ## parameters @var{params} and the loop @var{loop} as structs whose fields
 ## override those of @code{throttleparams} ([] for the defaults).
 ##
-## Returns @var{pvec}, the 18 parameters in the gateway's order, the full
-## struct @var{p}, @var{lvec} = @{pid_num, pid_den, f_num, f_den, umax@}
-## for the gateway (the PID of eq. 4.13 written as a transfer function in
-## q^-1) and the full @var{loop} struct. Errors carry the identifiers
-## @var{fname}:badOption (unknown field, not a struct) and
-## @var{fname}:badInput (a value that is not a real finite scalar, a
-## filter that is not a pair of real vectors).
+## Returns @var{gw}, the fields of the gateway's options struct they give
+## (mex/throttle_mex.cpp): @code{plant} (the 18 parameters by name),
+## @code{pid_num}, @code{pid_den} (the PID of eq. 4.13 written as a
+## transfer function in q^-1), @code{filter_num}, @code{filter_den} and
+## @code{umax}; the full struct @var{p} and the full @var{loop} struct.
+## Errors carry the identifiers @var{fname}:badOption (unknown field, not a
+## struct) and @var{fname}:badInput (a value that is not a real finite
+## scalar, a filter that is not a pair of real vectors).
 ## @end deftypefn
 
-function [pvec, p, lvec, loop] = throttle_args (fname, params, loop_in)
+function [gw, p, loop] = throttle_args (fname, params, loop_in)
   [p, loop] = throttleparams ();
   p = override (fname, p, params, "params");
-  names = fieldnames (p);
-  pvec = zeros (1, numel (names));
-  for k = 1:numel (names)
-    pvec(k) = p.(names{k});
-  endfor
 
   loop = override (fname, loop, loop_in, "loop");
   if (! (loop.Ts > 0))
@@ -35,7 +31,8 @@ function [pvec, p, lvec, loop] = throttle_args (fname, params, loop_in)
   pid_num = [kp + ki + kd, -kp - 2 * kd, kd];
   pid_den = [1 -1];
   f = loop.setpoint_filter;
-  lvec = {pid_num, pid_den, f.num, f.den, loop.umax};
+  gw = struct ("plant", p, "pid_num", pid_num, "pid_den", pid_den,
+               "filter_num", f.num, "filter_den", f.den, "umax", loop.umax);
 endfunction
 
 function s = override (fname, s, given, what)

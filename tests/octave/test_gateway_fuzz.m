@@ -1,6 +1,12 @@
 ## Calls the compiled gateways directly with arbitrary arguments: every call
-## must either succeed or raise an error with an identifier; none may crash
-## Octave (a crash ends this process and so fails the test).
+## must either succeed or raise an error with an identifier
+## <public name>:<reason>; none may crash Octave (a crash ends this process
+## and so fails the test).  Each gateway takes its data arrays positionally
+## and ONE options struct (mex/options_reader.hpp); besides replacing each
+## positional argument, the test removes each field of the options (a
+## required one must give <name>:badOption), adds an unknown field (must
+## give <name>:badOption), replaces each field by every value of a pool of
+## wrong types and sizes, and passes non-struct or non-scalar options.
 function test_gateway_fuzz ()
   root = getenv ("CTID_ROOT");
   priv = fullfile (root, "octave", "private");
@@ -19,43 +25,94 @@ function test_gateway_fuzz ()
   pool = value_pool ();
   y = randn (50, 1);
   u = randn (50, 1);
-  valid.rlssvf_mex = {"rlssvf", y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", ...
-                      "kf", 1e-4 * eye(3), [], [], "potter", [], ...
-                      [1; 2; 3], 0, 0.5, "single"};
-  valid.simc_mex = {"simc", u, 0.1, "zoh", 2, 1, 0, [2 4 4], 1, [], [], ...
-                    [], [], []};
-  valid.riv_mex = {"clrsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", ...
-                   "kf", 1e-4 * eye(3), [], [], "rsrivc", 1, 0.1, "keep", ...
-                   [], [], "unit", [], [1 -0.5], [1 -1], u, zeros(50, 1), ...
-                   [1; 2; 3], 300, 0.998, "double"};
-  valid.qnml_mex = {"qnml", "rlssvf", "search", [1e-4; 1e-4; 0], ...
-                    [1e-6; 1e-6; 0], [1e-2; 1e-2; 0], [1; 1; 0], 4, 1e-2, ...
-                    [], y, u, 0.1, "zoh", 2, 1, 0, 2, "normalised", "kf", ...
-                    zeros(3), [], [], "standard", [], [], 0, 0};
-  valid.offline_mex = {"clsrivc", y, u, 0.1, "zoh", 2, 1, 0, 2, ...
-                       "normalised", "clsrivc", 1e-6, 5, [], [1 -0.5], ...
-                       [1 -1], u, zeros(50, 1)};
-  ## The throttle gateway, in both modes (the Table 4.3 parameters in the
-  ## gateway's order, a short record near the limp-home position).
+  rls = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
+                "lambda_svf", 2, "svf", "normalised", "adm", "kf",
+                "adg", 1e-4 * eye (3), "th0", [], "P0", [], "form", "potter",
+                "Gamma", [], "scaling", [1; 2; 3], "ic", false, "tsls", 0.5,
+                "precision", "single");
+  riv = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
+                "lambda_svf", 2, "svf", "normalised", "adm", "kf",
+                "adg", 1e-4 * eye (3), "th0", [], "P0", [],
+                "method", "rsrivc", "tsiv", 1, "dtupdate", 0.1,
+                "stability", "keep", "mtheta_num", [], "mtheta_den", [],
+                "prefilter", "unit", "A", [], "controller_num", [1 -0.5],
+                "controller_den", [1 -1], "r1", u, "r2", zeros (50, 1),
+                "scaling", [1; 2; 3], "antiwindup", 300,
+                "antiwindup_lambda", 0.998, "precision", "double");
+  qn = rls;
+  qn.adg = zeros (3);
+  qn.form = "standard";
+  qn.scaling = [];
+  qn.tsls = 0;
+  qn.precision = "double";
+  qn.estimator = "rlssvf";
+  qn.mode = "search";
+  qn.q0 = [1e-4; 1e-4; 0];
+  qn.lb = [1e-6; 1e-6; 0];
+  qn.ub = [1e-2; 1e-2; 0];
+  qn.free = [1; 1; 0];
+  qn.maxeval = 4;
+  qn.xtol = 1e-2;
+  offline = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
+                    "lambda_svf", 2, "svf", "normalised",
+                    "method", "clsrivc", "tol", 1e-6, "maxiter", 5,
+                    "theta_init", [], "controller_num", [1 -0.5],
+                    "controller_den", [1 -1], "r1", u, "r2", zeros (50, 1));
+  sim = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
+                "substeps", 1, "x0", [], "noise", []);
+  ## Calls: {gateway, positional arguments with the options struct last,
+  ## required fields}.
+  calls = {
+    {"rlssvf_mex", {"rlssvf", y, u, 0.1, rls}, ...
+     {"na", "nb", "nk", "lambda_svf", "adg"}}
+    {"simc_mex", {"simc", u, 0.1, [2 4 4], sim}, {"na", "nb", "nk"}}
+    {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
+     {"na", "nb", "nk", "lambda_svf", "adg"}}
+    {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...
+     {"na", "nb", "nk", "lambda_svf", "adg", "estimator", "mode", "q0", ...
+      "lb", "ub", "free", "maxeval", "xtol"}}
+    {"offline_mex", {"clsrivc", y, u, 0.1, offline}, ...
+     {"na", "nb", "nk", "lambda_svf", "method", "controller_num", ...
+      "controller_den", "r1", "r2"}}
+  };
+  ## The throttle gateway, in both modes (the Table 4.3 parameters, a short
+  ## record near the limp-home position).
   addpath (fullfile (root, "octave"));
-  p = throttleparams ();
-  pvec = cellfun (@(f) p.(f), fieldnames (p));
+  plant = throttleparams ();
   phi_d = 0.5 * ones (50, 1);
-  loop = {[3 -2], [1 -1], [0.009901 0.009901], [1 -0.9802], 12};
-  valid.throttle_mex = {"throttlesim", phi_d, 1e-3, 1.4 * ones(50, 1), ...
-                        zeros(50, 1), pvec, loop{:}, 2, []};
-  sim = cell (1, 7);
-  [sim{:}] = throttle_mex (valid.throttle_mex{:});
-  valid_id = {"throttleid", "clrsrivc", phi_d, sim{1}, sim{2}, sim{4}, ...
-              1e-3, pvec, loop{:}, 2, [], 62, diag([1e-6 5e-5]), [], [], ...
-              0.01, "zoh"};
+  loop = struct ("plant", plant, "pid_num", [3 -2], "pid_den", [1 -1],
+                 "filter_num", [0.009901 0.009901],
+                 "filter_den", [1 -0.9802], "umax", 12, "substeps", 2,
+                 "phi0", [], "Ts", 1e-3);
+  tsim = loop;
+  tsim.noise = zeros (50, 1);
+  out = cell (1, 7);
+  [out{:}] = throttle_mex ("throttlesim", phi_d, 1.4 * ones (50, 1), tsim);
+  tid = loop;
+  tid.method = "clrsrivc";
+  tid.lambda_svf = 62;
+  tid.adg = diag ([1e-6 5e-5]);
+  tid.th0 = [];
+  tid.P0 = [];
+  tid.tsiv = 0.01;
+  tid.phirule = "zoh";
+  loop_required = {"Ts", "plant", "pid_num", "pid_den", "filter_num", ...
+                   "filter_den", "umax"};
+  calls(end+1:end+2) = {
+    {"throttle_mex", {"throttlesim", phi_d, 1.4 * ones(50, 1), tsim}, ...
+     loop_required}
+    {"throttle_mex", {"throttleid", phi_d, out{1}, out{2}, out{4}, tid}, ...
+     [loop_required, {"method", "lambda_svf", "adg"}]}
+  };
+
   ncalls = 0;
-  for g = 1:numel (gateways)
-    name = gateways{g};
-    base = valid.(name);
+  for c = 1:numel (calls)
+    [name, base, required] = calls{c}{:};
+    fname = base{1};
     ## The valid call works.
     feval (name, base{:});
-    ## Each argument replaced by every pool value, one at a time.
+    ## Each positional argument (the options too) replaced by every pool
+    ## value, one at a time.
     for k = 1:numel (base)
       for p = 1:numel (pool)
         args = base;
@@ -63,27 +120,89 @@ function test_gateway_fuzz ()
         ncalls += check_call (name, args, nargout_for (p));
       endfor
     endfor
-    if (strcmp (name, "throttle_mex"))   # the estimation mode too
-      for k = 1:numel (valid_id)
-        for p = 1:numel (pool)
-          args = valid_id;
-          args{k} = pool{p};
-          ncalls += check_call (name, args, nargout_for (p));
-        endfor
-      endfor
+    ## The options struct, field by field.
+    ncalls += fuzz_options (name, base, required, pool, "");
+    if (isfield (base{end}, "plant"))    # the nested plant struct
+      ncalls += fuzz_plant (name, base, pool);
     endif
+    ## Non-scalar options: a struct array, a struct in a cell.
+    args = base;
+    args{end} = [base{end}, base{end}];
+    ncalls += expect_id (name, args, [fname ":badInput"]);
+    args{end} = {base{end}};
+    ncalls += expect_id (name, args, [fname ":badInput"]);
+    ## Too few and too many arguments.
+    ncalls += expect_id (name, base(1:end-1), [fname ":badInput"]);
+    ncalls += expect_id (name, [base, {base{end}}], [fname ":badInput"]);
     ## Random argument lists of random length.
     for trial = 1:300
-      n = randi ([0 16]);
+      n = randi ([0 8]);
       args = pool(randi (numel (pool), 1, n));
       if (n > 0 && rand () < 0.7)
-        args{1} = base{1};
+        args{1} = fname;
+      endif
+      if (n > 1 && rand () < 0.5)
+        args{end} = base{end};
       endif
       ncalls += check_call (name, args, randi ([0 4]));
     endfor
   endfor
-  printf ("test_gateway_fuzz: %d calls, all succeeded or raised identified errors\n",
-          ncalls);
+  printf (["test_gateway_fuzz: %d calls, all succeeded or raised ", ...
+           "identified errors\n"], ncalls);
+endfunction
+
+## Removes each field (a required one must give fname:badOption), adds an
+## unknown one (fname:badOption), replaces each by every pool value.
+function n = fuzz_options (name, base, required, pool, prefix)
+  n = 0;
+  fname = base{1};
+  opts = base{end};
+  fields = fieldnames (opts);
+  for f = 1:numel (fields)
+    args = base;
+    args{end} = rmfield (opts, fields{f});
+    if (any (strcmp (fields{f}, required)))
+      n += expect_id (name, args, [fname ":badOption"], fields{f});
+    else
+      n += check_call (name, args, 1);
+    endif
+    for p = 1:numel (pool)
+      args = base;
+      args{end}.(fields{f}) = pool{p};
+      n += check_call (name, args, nargout_for (p));
+    endfor
+  endfor
+  for unknown = {"bogus", "Lambda_svf", "lambda_SVF"}
+    args = base;
+    args{end}.(unknown{1}) = 1;
+    n += expect_id (name, args, [fname ":badOption"], unknown{1});
+  endfor
+endfunction
+
+## The same for the fields of options.plant (throttle_mex).
+function n = fuzz_plant (name, base, pool)
+  n = 0;
+  fname = base{1};
+  plant = base{end}.plant;
+  fields = fieldnames (plant);
+  for f = 1:numel (fields)
+    args = base;
+    args{end}.plant = rmfield (plant, fields{f});
+    n += expect_id (name, args, [fname ":badOption"], ["plant." fields{f}]);
+    for p = 1:numel (pool)
+      args = base;
+      args{end}.plant.(fields{f}) = pool{p};
+      n += check_call (name, args, 1);
+    endfor
+  endfor
+  args = base;
+  args{end}.plant.bogus = 1;
+  n += expect_id (name, args, [fname ":badOption"], "plant.bogus");
+  for p = 1:numel (pool)
+    args = base;
+    args{end}.plant = pool{p};
+    n += check_call (name, args, 1);
+  endfor
 endfunction
 
 function remove_dir (d)
@@ -96,6 +215,27 @@ function n = nargout_for (p)
   n = mod (p, 4);
 endfunction
 
+## The call must fail with exactly this identifier (and its message must
+## name the field, when given).
+function n = expect_id (name, args, id, field)
+  n = 1;
+  try
+    feval (name, args{:});
+  catch err
+    if (! strcmp (err.identifier, id))
+      error ("test_gateway_fuzz: %s: expected '%s', got '%s': %s", name, id,
+             err.identifier, err.message);
+    endif
+    if (nargin > 3 && isempty (strfind (err.message, ["'" field "'"])))
+      error ("test_gateway_fuzz: %s: the message does not name '%s': %s",
+             name, field, err.message);
+    endif
+    return;
+  end_try_catch
+  error ("test_gateway_fuzz: %s: expected the error '%s', the call succeeded",
+         name, id);
+endfunction
+
 function n = check_call (name, args, nout)
   n = 1;
   try
@@ -106,7 +246,11 @@ function n = check_call (name, args, nout)
       error ("test_gateway_fuzz: %s raised an error without identifier: %s",
              name, err.message);
     endif
-    if (isempty (regexp (err.identifier, '^(rlssvf|simc|rivsvf|rsrivc|clrivsvf|clrsrivc|lssvf|ivsvf|srivc|clsrivc|qnml|svfscaling|throttlesim|throttleid):\w+$', "once")))
+    if (isempty (regexp (err.identifier, ['^(rlssvf|simc|rivsvf|rsrivc|', ...
+                                          'clrivsvf|clrsrivc|lssvf|ivsvf|', ...
+                                          'srivc|clsrivc|qnml|svfscaling|', ...
+                                          'throttlesim|throttleid):\w+$'],
+                         "once")))
       ## Octave's own argument errors (e.g. too many outputs) are fine only
       ## when they carry an identifier; ours must use the public name.
       if (! strncmp (err.identifier, "Octave:", 7))
@@ -124,7 +268,8 @@ function pool = value_pool ()
           (0:49)' * 0.1, flipud((0:49)' * 0.1), ones(50, 1), ...
           "zoh", "foh", "kf", "ff", "normalised", "ordinary", "rlssvf", ...
           "simc", "", "x", repmat("a", 1, 300), ["ab"; "cd"], {}, {1}, ...
-          struct(), struct("a", 1), int8(3), uint16([1 2]), single(2), ...
-          true, [true false], sparse(eye(3)), ones(2, 2, 2), @sin, ...
-          zeros(0, 3), zeros(3, 0), [2 2 2], [1 4 0], [-1 1 0], [2.5 1]};
+          struct(), struct("a", 1), struct("na", {1, 2}), int8(3), ...
+          uint16([1 2]), single(2), true, [true false], sparse(eye(3)), ...
+          ones(2, 2, 2), @sin, zeros(0, 3), zeros(3, 0), [2 2 2], [1 4 0], ...
+          [-1 1 0], [2.5 1]};
 endfunction
