@@ -10,8 +10,8 @@
 ## octave-cli -q --eval "addpath octave bench; srivc_octave_bench ('/tmp/old/octave')"
 ## @end example
 ## Both are called through their private back-end
-## (@code{contsid_offline ("srivc", @{data, nn@})}) in the same session, on
-## the same record: a second-order system [1 2 0] (ZOH PRBS input, 10 %
+## (@code{contsid_offline ("srivc", @{data, nn@})}), each in its own
+## octave-cli process started by this function, on the same record: a second-order system [1 2 0] (ZOH PRBS input, 10 %
 ## output noise) and a fourth-order lightly damped one [2 4 0]. Each is
 ## run 3 times and the median kept. Returns a struct array with the
 ## times, the estimates and the ratio.
@@ -25,8 +25,8 @@ function T = srivc_octave_bench (old_dir)
   randn ("state", 11);
   rand ("state", 11);
   u = kron (sign (randn (N / 10, 1)), ones (10, 1));
-  cases = {[1 2 0], idctm (4, [1 2.4 4]);
-           [2 4 0], idctm ([0.5 40], conv ([1 0.4 4], [1 1 25]))};
+  cases = {[1 2 0], idctm(4, [1 2.4 4]); ...
+           [2 4 0], idctm([0.5 40], conv([1 0.4 4], [1 1 25]))};
   T = struct ("nn", {}, "old", {}, "new", {}, "ratio", {}, "old_F", {},
               "new_F", {});
   for c = 1:rows (cases)
@@ -46,17 +46,30 @@ function T = srivc_octave_bench (old_dir)
   endfor
 endfunction
 
+## Times contsid_offline ("srivc", {data, nn}) of the tree `dir` in its own
+## octave-cli process (two trees' functions of the same names cannot share
+## one session), on the record saved to a temporary file.
 function [t, M] = timed (dir, data, nn)
-  back = pwd ();
-  cleanup = onCleanup (@() cd (back));
-  cd (fullfile (dir, "private"));
-  state = warning ("off", "all");
-  times = zeros (1, 3);
-  for k = 1:3
-    tic;
-    M = contsid_offline ("srivc", {data, nn});
-    times(k) = toc;
-  endfor
-  warning (state);
-  t = median (times);
+  file = [tempname() ".mat"];
+  out = [tempname() ".mat"];
+  y = get (data, "OutputData");
+  u = get (data, "InputData");
+  Ts = get (data, "Ts");
+  save ("-binary", file, "y", "u", "Ts", "nn");
+  script = sprintf (["addpath ('%s'); cd ('%s'); load ('%s'); ", ...
+                     "d = iddata (y, u, Ts, 'InterSample', 'zoh'); ", ...
+                     "warning ('off', 'all'); times = zeros (1, 3); ", ...
+                     "for k = 1:3, tic; M = contsid_offline ('srivc', ", ...
+                     "{d, nn}); times(k) = toc; end; F = M.F; ", ...
+                     "save ('-binary', '%s', 'times', 'F');"],
+                    dir, fullfile (dir, "private"), file, out);
+  [status, text] = system (sprintf ("octave-cli -q --eval \"%s\"", script));
+  if (status != 0)
+    error ("srivc_octave_bench: the run in %s failed:\n%s", dir, text);
+  endif
+  r = load (out);
+  delete (file);
+  delete (out);
+  t = median (r.times);
+  M = struct ("F", r.F);
 endfunction

@@ -839,6 +839,11 @@ Status solve_equilibrated(const Matrix<S>& Z, const Matrix<S>& Phi,
                           const Vector<S>& target, const char* instruments,
                           offline_iv_detail::IvSolution<S>& solution,
                           S& condition) {
+  if (!Phi.allFinite() || !Z.allFinite() || !target.allFinite()) {
+    return numerical_failure(
+        "the filtered signals are not finite (the model's time scale is far "
+        "from the data's)");
+  }
   Vector<S> norms = Phi.colwise().norm().transpose();
   for (Eigen::Index i = 0; i < norms.size(); ++i) {
     if (!(norms(i) > 0)) {
@@ -900,13 +905,15 @@ class Estimator {
   void evaluate(Run<S>& run) const {
     const int groups = p_.num_groups();
     xs_.assign(groups, Vector<S>());
+    for (int g = 0; g < groups; ++g) e_.simulate_group(run.theta, g, xs_[g]);
+    finish(run);
+  }
+
+  // y0, c, the simulated output and the loss at the current x_g.
+  void finish(Run<S>& run) const {
     Vector<S> sum = Vector<S>::Zero(e_.samples());
-    for (int g = 0; g < groups; ++g) {
-      e_.simulate_group(run.theta, g, xs_[g]);
-      sum += xs_[g];
-    }
-    Vector<S> residual = e_.y() - sum;
-    e_.fit_free_terms(run.theta, residual, run.x0, run.offset,
+    for (const Vector<S>& x : xs_) sum += x;
+    e_.fit_free_terms(run.theta, e_.y() - sum, run.x0, run.offset,
                       run.free_response);
     run.simulated =
         sum + run.free_response + Vector<S>::Constant(e_.samples(), run.offset);
@@ -1038,6 +1045,14 @@ class Estimator {
   }
 
   // SRIVC / CLSRIVC iterations from run.theta (stable, scaled time).
+  // The SRIVC iteration as a damped fixed-point method: the refined IV
+  // step theta_IV (eqs. 2.9-2.13) is taken in full when it does not
+  // increase the simulation loss, else halved (up to 5 times) until it
+  // does (if none does, the full step is taken). Stops on a fixed point
+  // (relative change of the full step below the tolerance) or on a
+  // stationary loss (relative decrease of an accepted step below the
+  // tolerance); on measured records, where the model is an approximation,
+  // the undamped iteration often cycles.
   Status refine(Run<S>& run) const {
     const int groups = p_.num_groups();
     evaluate(run);
@@ -1046,25 +1061,53 @@ class Estimator {
     run.covariance = Matrix<S>::Zero(run.theta.size(), run.theta.size());
     run.converged = false;
     run.clipped = false;
+    std::string how;
     for (int it = 1; it <= s_.max_iterations; ++it) {
-      const Vector<S> previous = run.theta;
+      const Run<S> previous = run;
       bool clipped = false;
       for (int g = 0; g < groups; ++g) {
         const Vector<S> d = e_.prefilter(run.theta, g, integrator_pole());
         Status status =
             update_group(run, g, d, S(1), true, true, cov, index, run.condition);
         if (!status.ok()) return status;
-        clipped = stabilise(run, previous, g) || clipped;
+        clipped = stabilise(run, previous.theta, g) || clipped;
         store(run, cov, index);
         e_.simulate_group(run.theta, g, xs_[g]);
       }
-      evaluate_free(run);
+      finish(run);
       run.iterations = it;
       run.clipped = clipped;
-      const S change = (run.theta - previous).norm() /
-                       std::max(run.theta.norm(), S(1e-300));
+      const Vector<S> step = run.theta - previous.theta;
+      const S change = step.norm() / std::max(run.theta.norm(), S(1e-300));
+      bool stalled = false;
+      if (!(run.cost <= previous.cost)) {
+        const Vector<S> full = run.theta;
+        bool accepted = false;
+        S alpha = 0.5;
+        for (int k = 0; k < 5 && !accepted; ++k, alpha /= 2) {
+          run.theta = previous.theta + alpha * step;
+          if (!e_.stable(run.theta)) continue;
+          evaluate(run);
+          accepted = run.cost < previous.cost;
+        }
+        if (!accepted) {
+          // No decrease along the step: the plain SRIVC step is taken (the
+          // IV fixed point need not minimise the loss, e.g. with coloured
+          // noise).
+          run.theta = full;
+          evaluate(run);
+          stalled = true;
+        }
+      }
       if (change < s_.tolerance && !clipped) {
         run.converged = true;
+        how = "fixed point";
+        break;
+      }
+      if (!stalled && !clipped &&
+          previous.cost - run.cost <= s_.tolerance * previous.cost) {
+        run.converged = true;
+        how = "stationary simulation loss";
         break;
       }
     }
@@ -1072,7 +1115,7 @@ class Estimator {
     run.stable = e_.stable(run.theta);
     if (run.converged) {
       run.reason = "converged in " + std::to_string(run.iterations) +
-                   " iteration(s)";
+                   " iteration(s) (" + how + ")";
     } else if (run.clipped) {
       run.reason =
           "the unconstrained estimate is unstable: the returned model is the "
@@ -1101,13 +1144,7 @@ class Estimator {
     run.free_response = Vector<S>::Zero(e_.samples());
     run.offset = 0;
   }
-  // y0 and c at the current x_g.
-  void evaluate_free(Run<S>& run) const {
-    Vector<S> sum = Vector<S>::Zero(e_.samples());
-    for (const Vector<S>& x : xs_) sum += x;
-    e_.fit_free_terms(run.theta, e_.y() - sum, run.x0, run.offset,
-                      run.free_response);
-  }
+
 
   Engine<S>& e_;
   const RivProblem<S>& p_;
@@ -1219,12 +1256,21 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     have = true;
   } else {
     const int limit = std::max(1, settings.max_starts);
-    for (std::size_t i = 0; i < starts.size() && tried < limit; ++i) {
+    int attempts = 0;
+    for (std::size_t i = 0; i < starts.size() && tried < limit &&
+                            attempts < 2 * limit + 2;
+         ++i) {
       Candidate& c = starts[i];
       // A start must drive a stable prefilter.
       engine.set_scale(c.sigma);
       Run<S> run = c.run;
-      if (!engine.stable(run.theta)) continue;
+      if (!engine.stable(run.theta)) {
+        // An unstable start drives no prefilter: its roots are reflected.
+        for (int g = 0; g < problem.num_groups(); ++g) {
+          estimator.stabilise(run, run.theta, g);
+        }
+        if (!engine.stable(run.theta)) continue;
+      }
       const Vector<S> original = engine.from_scaled(run.theta, c.sigma);
       S sigma = settings.time_scale > 0
                     ? settings.time_scale
@@ -1232,12 +1278,13 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
       if (!(sigma > 0) || !std::isfinite(sigma)) sigma = c.sigma;
       engine.set_scale(sigma);
       run.theta = engine.to_scaled(original, sigma);
-      ++tried;
+      ++attempts;
       status = estimator.refine(run);
       if (!status.ok()) {
         last_failure = status.message();
         continue;
       }
+      ++tried;
       const bool good = run.converged && run.stable;
       const bool best_good = have && best.converged && best.stable;
       if (!have || (good && !best_good) ||
@@ -1247,9 +1294,9 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
         best_cutoff = c.cutoff;
         have = true;
       }
-      // Two good runs agree on the optimum: stop early.
-      if (good && tried >= 2 && best_good) break;
-      if (good && problem.num_groups() == 1 && tried >= 2) break;
+      // The first stable, converged run from the best-ranked starts ends
+      // the search; the next starts are tried only after a failure.
+      if (good) break;
     }
     if (!have) {
       return numerical_failure("SRIVC failed from every start (last: " +
