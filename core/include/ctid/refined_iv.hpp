@@ -1050,7 +1050,7 @@ class Estimator {
   // increase the simulation loss, else halved (up to 5 times) until it
   // does (if none does, the full step is taken). Stops on a fixed point
   // (relative change of the full step below the tolerance) or on a
-  // stationary loss (relative decrease of an accepted step below the
+  // stationary loss (relative decrease of a damped step below the
   // tolerance); on measured records, where the model is an approximation,
   // the undamped iteration often cycles.
   Status refine(Run<S>& run) const {
@@ -1080,7 +1080,9 @@ class Estimator {
       const Vector<S> step = run.theta - previous.theta;
       const S change = step.norm() / std::max(run.theta.norm(), S(1e-300));
       bool stalled = false;
+      bool damped = false;
       if (!(run.cost <= previous.cost)) {
+        damped = true;
         const Vector<S> full = run.theta;
         bool accepted = false;
         S alpha = 0.5;
@@ -1104,7 +1106,9 @@ class Estimator {
         how = "fixed point";
         break;
       }
-      if (!stalled && !clipped &&
+      // A plateau of the loss reached by damped steps: the IV fixed point
+      // is not approached monotonically (the model is an approximation).
+      if (damped && !stalled && !clipped &&
           previous.cost - run.cost <= s_.tolerance * previous.cost) {
         run.converged = true;
         how = "stationary simulation loss";
