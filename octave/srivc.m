@@ -94,6 +94,33 @@ endfunction
 %! G = tf (M);
 %! assert (isa (G, "tf"));
 
+%!test  # MISO, one denominator per input (CONTSID's [nb1 nb2 nf1 nf2 nk1 nk2])
+%! randn ("state", 5);
+%! u2 = kron (sign (randn (ceil (N / 7), 1)), ones (7, 1))(1:N);
+%! x2 = simc (idctm ([1 2], [1 5 4]), u2, Ts);
+%! [M, ~, ~, info] = srivc (iddata (x + x2, [u u2], Ts), [1 2 2 2 0 0], "Tol", 1e-10);
+%! assert (info.converged && info.stable);
+%! yh = simc (idctm (info.B{1}, info.F{1}), u, Ts) + simc (idctm (info.B{2}, info.F{2}), u2, Ts);
+%! assert (simc (M, [u u2], Ts), yh, 1e-8);
+%! assert (yh, x + x2, 1e-6);
+
+%!test  # output offset and initial state estimated with the model
+%! pkg load control
+%! [a, ~, c] = ssdata (ss (tf (4, [1 2.4 4])));
+%! t = (0:N-1)' * Ts;
+%! yfree = arrayfun (@(tk) c * expm (a * tk) * [2; 1], t);
+%! y = x + yfree + 3;
+%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "OutputOffset", true, "InitialState", "estimate", "Tol", 1e-10);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+%! assert (info.offset, 3, 1e-6);
+%! assert (info.simulated, y, 1e-6);
+
+%!test  # an input offset d: the model sees u + d
+%! y = simc (idctm (4, [1 2.4 4]), u + 0.5, Ts);
+%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "InputOffset", true, "Tol", 1e-10);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+%! assert (info.input_offset, 0.5, 1e-6);
+
 %!warning <no convergence> srivc (iddata (x + 0.3 * sin ((1:N)'), u, Ts), [1 2 0], "lambda", 3, "MaxIter", 1);
 
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "Tol", 0)
@@ -103,6 +130,11 @@ endfunction
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "lambda", -1)
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [4 2 0])
 %!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "bogus", 1)
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "InitialState", "x")
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "TimeScale", -1)
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "MaxStarts", 0)
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "OutputOffset", "yes")
+%!error id=srivc:badInput srivc (iddata (x, [u u], Ts), [1 1 0 3 0 0])
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

@@ -848,8 +848,8 @@ Status solve_equilibrated(const Matrix<S>& Z, const Matrix<S>& Phi,
   for (Eigen::Index i = 0; i < norms.size(); ++i) {
     if (!(norms(i) > 0)) {
       return numerical_failure(
-          "a regressor is identically zero: the input does not excite this "
-          "model structure");
+          "a regressor is identically zero: the input is not persistently "
+          "exciting for this model structure");
     }
   }
   const Vector<S> inv = norms.cwiseInverse();
@@ -1105,6 +1105,24 @@ class Estimator {
         run.converged = true;
         how = "fixed point";
         break;
+      }
+      // Statistically converged: no parameter moves by more than 1 % of
+      // its standard error sigma_i = (cost (sum zeta_f zeta_f^T)^-1)_ii^1/2
+      // (flat directions of over-parameterised structures drift slowly
+      // below the relative tolerance otherwise).
+      if (!clipped && !stalled && std::isfinite(run.cost)) {
+        S worst = 0;
+        for (Eigen::Index i = 0; i < step.size(); ++i) {
+          const S variance = run.cost * run.covariance(i, i);
+          if (variance > 0) {
+            worst = std::max(worst, std::abs(step(i)) / std::sqrt(variance));
+          }
+        }
+        if (worst < S(0.01)) {
+          run.converged = true;
+          how = "changes below 1 % of the standard errors";
+          break;
+        }
       }
       // A plateau of the loss reached by damped steps: the IV fixed point
       // is not approached monotonically (the model is an approximation).
