@@ -32,9 +32,14 @@
 ## on the free responses at each iteration); @var{info}.x0 holds the
 ## initial derivatives y0(t0), y0'(t0), .. of each denominator's part.
 ## @item OutputOffset, InputOffset
-## estimate a constant output offset c (y = x + c + e), or an offset d_j
-## of each input (u_j + d_j enters the model); default false. Reported in
-## @var{info}.offset and @var{info}.input_offset.
+## estimate a constant output offset c (y = x + c + e), true or false,
+## or an offset d_j of each input (u_j + d_j enters the model; default
+## false). Reported in @var{info}.offset and @var{info}.input_offset. The
+## default of OutputOffset, @qcode{"auto"}, estimates c when the record
+## does not start at rest (the median of its first samples exceeds 5 % of
+## the output's range: raw units, an operating point) and says so in
+## @var{info}.reason and @var{info}.output_offset; @var{M} itself is the
+## dynamic model without c.
 ## @item TimeScale
 ## @qcode{"auto"} (default): the iterations run in a time t' = s t with s
 ## the model's characteristic frequency |F(0)|^(1/nf), which keeps
@@ -114,6 +119,15 @@ endfunction
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.offset, 3, 1e-6);
 %! assert (info.simulated, y, 1e-6);
+
+%!test  # raw units: a record that does not start at rest gets an offset
+%! [M, ~, ~, info] = srivc (iddata (x + 5, u, Ts), [1 2 0], "Tol", 1e-10);
+%! assert (info.output_offset);
+%! assert (info.offset, 5, 1e-6);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+%! assert (! isempty (strfind (info.reason, "does not start at rest")));
+%! [~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0]);
+%! assert (! info.output_offset);
 
 %!test  # an input offset d: the model sees u + d
 %! y = simc (idctm (4, [1 2.4 4]), u + 0.5, Ts);

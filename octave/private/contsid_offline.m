@@ -28,7 +28,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     defaults = struct ("lambda_svf", [], "lambda", [], "Tol", 1e-6,
                        "MaxIter", 30, "InitMethod", "ivsvf",
                        "svf", "normalised", "InitialState", "zero",
-                       "OutputOffset", false, "InputOffset", false,
+                       "OutputOffset", "auto", "InputOffset", false,
                        "TimeScale", "auto", "MaxStarts", 3);
   else
     form = "a";
@@ -90,6 +90,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
 
   info.lambda = info.cutoff;
+  info.output_offset = isfield (e, "output_offset") && e.output_offset;
+  if (info.output_offset)
+    info.reason = sprintf ("%s; output offset c = %g estimated%s",
+                           info.reason, info.offset,
+                           ifelse_str (ischar (opts.OutputOffset),
+                                       " (the record does not start at rest)",
+                                       ""));
+  endif
   if (refined && ! info.converged)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
              fname, info.reason);
@@ -126,7 +134,15 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
              "%s: InitialState must be 'zero' or 'estimate'", fname);
     endif
     e.initial_state = any (strcmpi (opts.InitialState, {"estimate", "e"}));
-    e.output_offset = logical_option (opts.OutputOffset, "OutputOffset", 1);
+    if (ischar (opts.OutputOffset) && strcmpi (opts.OutputOffset, "auto"))
+      ## A record that does not start at rest (raw units, an operating
+      ## point) gets an output offset; one that starts at rest does not.
+      m = min (5, n);
+      e.output_offset = abs (median (d.y(1:m))) ...
+                        > 0.05 * (max (d.y) - min (d.y));
+    else
+      e.output_offset = logical_option (opts.OutputOffset, "OutputOffset", 1);
+    endif
     e.input_offset = logical_option (opts.InputOffset, "InputOffset", nu);
     ts = opts.TimeScale;
     if (ischar (ts) && strcmpi (ts, "auto"))
@@ -335,5 +351,13 @@ function varargout = read_datacl (datacl, n, reference)
     varargout{2} = double (datacl(:, 2));
   else
     varargout{2} = zeros (n, 1);
+  endif
+endfunction
+
+function s = ifelse_str (c, a, b)
+  if (c)
+    s = a;
+  else
+    s = b;
   endif
 endfunction

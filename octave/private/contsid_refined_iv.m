@@ -162,6 +162,9 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
     g.fixed_values = values;
   endif
   if (isfield (opts, "theta_init") && ! isempty (opts.theta_init))
+    if (g.output_offset && numel (opts.theta_init) == np_user - 1)
+      opts.theta_init(end+1) = 0;      # c is re-estimated at every step
+    endif
     if (numel (opts.theta_init) != np_user)
       error ([fname ":dimensionMismatch"],
              "%s: theta_init needs %d entries", fname, np_user);
