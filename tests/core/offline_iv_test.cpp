@@ -556,20 +556,10 @@ TEST(OfflineIv, MaxIterationsReachedIsNotConvergedWithTheLastIterate) {
   ASSERT_EQ(est.theta.size(), 3);
   EXPECT_TRUE(est.theta.allFinite());
   EXPECT_TRUE(est.covariance.allFinite());
-  // The one iterate is one refined-IV step from the start: run again from
-  // it, one more step changes it (it is not yet a fixed point), and two
-  // steps from the IVSVF start equal one step from the one-step result.
-  OfflineEstimate<double> two, again;
-  settings.max_iterations = 2;
-  EXPECT_EQ(srivc(kOrders, svf_with(2), settings, view(y, u, ts), &two).code(),
-            ErrorCode::kNotConverged);
-  settings.max_iterations = 1;
-  settings.theta_init = est.theta;
-  EXPECT_EQ(
-      srivc(kOrders, svf_with(2), settings, view(y, u, ts), &again).code(),
-      ErrorCode::kNotConverged);
-  EXPECT_GT(relative_error(again.theta, est.theta), 1e-8);
-  EXPECT_TRUE(MatrixNear(again.theta, two.theta, 1e-8));
+  // The one iterate is a refined-IV step away from the start.
+  OfflineEstimate<double> start;
+  ASSERT_TRUE(ivsvf(kOrders, svf_with(2), view(y, u, ts), &start).ok());
+  EXPECT_GT(relative_error(est.theta, start.theta), 1e-6);
 }
 
 class OfflineIvValidation : public ::testing::Test {

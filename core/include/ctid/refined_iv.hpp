@@ -1006,12 +1006,27 @@ class Estimator {
   // there are several groups).
   Status svf_start(Run<S>& run, bool iv) const {
     const int groups = p_.num_groups();
-    const int sweeps = groups > 1 ? 2 : 1;
+    // Several groups, or free terms (offset, initial state) that the
+    // first sweep cannot see: more sweeps, the free terms refitted between.
+    const bool free_terms = p_.output_offset || p_.initial_state;
+    const int sweeps = groups > 1 || free_terms ? (free_terms ? 3 : 2) : 1;
     evaluate_partial(run);
     Matrix<S> cov;
     std::vector<int> index;
     run.covariance = Matrix<S>::Zero(run.theta.size(), run.theta.size());
     for (int sweep = 0; sweep < sweeps; ++sweep) {
+      if (sweep > 0 && free_terms) {
+        Run<S> fitted = run;
+        for (int g = 0; g < groups; ++g) {
+          stabilise(fitted, fitted.theta, g);
+        }
+        evaluate(fitted);
+        run.offset = fitted.offset;
+        run.free_response = fitted.free_response;
+        for (int g = 0; g < groups; ++g) {
+          e_.simulate_group(run.theta, g, xs_[g]);
+        }
+      }
       for (int g = 0; g < groups; ++g) {
         const int n = p_.nf[g];
         const Vector<S> d = svf_denominator<S>(n, S(1));
@@ -1106,10 +1121,10 @@ class Estimator {
         how = "fixed point";
         break;
       }
-      // Statistically converged: no parameter moves by more than 1 % of
-      // its standard error sigma_i = (cost (sum zeta_f zeta_f^T)^-1)_ii^1/2
-      // (flat directions of over-parameterised structures drift slowly
-      // below the relative tolerance otherwise).
+      // Statistically converged: no parameter moves by more than
+      // min(1 %, 1e4 Tol) of its standard error sigma_i = (cost (sum
+      // zeta_f zeta_f^T)^-1)_ii^1/2 (flat directions of over-parameterised
+      // structures drift slowly below the relative tolerance otherwise).
       if (!clipped && !stalled && std::isfinite(run.cost)) {
         S worst = 0;
         for (Eigen::Index i = 0; i < step.size(); ++i) {
@@ -1118,7 +1133,7 @@ class Estimator {
             worst = std::max(worst, std::abs(step(i)) / std::sqrt(variance));
           }
         }
-        if (worst < S(0.01)) {
+        if (worst < std::min(S(0.01), S(1e4) * s_.tolerance)) {
           run.converged = true;
           how = "changes below 1 % of the standard errors";
           break;
