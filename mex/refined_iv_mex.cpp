@@ -12,9 +12,9 @@
 // fixed_values (np each, or absent), theta_init, cutoffs, tol, maxiter,
 // max_starts, time_scale, integrator_pole, output_offset, initial_state,
 // controller_num, controller_den (descending powers of p; with
-// discrete_controller, powers of q^-1 and r = [r1 r2]). info: converged, stable, iterations,
-// reason, noise_variance, cutoff, time_scale, starts, condition, x0,
-// offset, simulated, free_response.
+// discrete_controller, powers of q^-1 and r = [r1 r2]). info: converged,
+// stable, iterations, reason, noise_variance, cutoff, time_scale, starts,
+// condition, x0, offset, simulated, free_response.
 #include <algorithm>
 
 #include "ctid/refined_iv.hpp"
@@ -45,8 +45,8 @@ ctid::InterSample rule_of(const Gateway& g, int code) {
 void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
   if (nrhs != 6) {
-    g.fail("badInput", "the gateway takes 6 arguments, got " +
-                           std::to_string(nrhs));
+    g.fail("badInput",
+           "the gateway takes 6 arguments, got " + std::to_string(nrhs));
   }
   if (nlhs > 3) g.fail("badInput", "at most 3 outputs");
   const ctid::RecordView<double> record =
@@ -63,21 +63,20 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::RivProblem<double> problem;
   ctid::RivSettings<double> settings;
   OptionsReader opt(g, prhs[5]);
-  settings.method = opt.choice<ctid::RivMethod>(
-      "method",
-      {{"srivc", ctid::RivMethod::kSrivc},
-       {"ivsvf", ctid::RivMethod::kIvsvf},
-       {"lssvf", ctid::RivMethod::kLssvf}},
-      ctid::RivMethod::kSrivc);
+  settings.method =
+      opt.choice<ctid::RivMethod>("method",
+                                  {{"srivc", ctid::RivMethod::kSrivc},
+                                   {"ivsvf", ctid::RivMethod::kIvsvf},
+                                   {"lssvf", ctid::RivMethod::kLssvf}},
+                                  ctid::RivMethod::kSrivc);
   problem.nf = opt.integer_vector("nf");
   const std::vector<int> group = opt.integer_vector("group");
   const std::vector<int> nb = opt.integer_vector("nb");
   const std::vector<int> nk = opt.integer_vector("nk");
   const std::vector<int> rules =
       opt.integer_vector("intersample", std::vector<int>(m, 0));
-  if (static_cast<int>(group.size()) != m ||
-      static_cast<int>(nb.size()) != m || static_cast<int>(nk.size()) != m ||
-      static_cast<int>(rules.size()) != m) {
+  if (static_cast<int>(group.size()) != m || static_cast<int>(nb.size()) != m ||
+      static_cast<int>(nk.size()) != m || static_cast<int>(rules.size()) != m) {
     g.fail("dimensionMismatch",
            "group, nb, nk and intersample need one entry per column of w (" +
                std::to_string(m) + ")");
@@ -107,8 +106,8 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
   if (theta_init.size() > 0) {
-    settings.theta_init = Eigen::Map<const Eigen::VectorXd>(theta_init.data(),
-                                                            theta_init.size());
+    settings.theta_init =
+        Eigen::Map<const Eigen::VectorXd>(theta_init.data(), theta_init.size());
   }
   settings.cutoffs = to_std(opt.matrix("cutoffs"));
   settings.tolerance = opt.scalar("tol", 1e-6);
@@ -151,23 +150,20 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
               mxGetPr(plhs[1]));
   }
   if (nlhs >= 3) {
-    const char* fields[] = {"converged", "stable",    "iterations",
-                            "reason",    "noise_variance", "cutoff",
-                            "time_scale", "starts",   "condition",
-                            "x0",        "offset",    "simulated",
+    const char* fields[] = {"converged",    "stable",         "iterations",
+                            "reason",       "noise_variance", "cutoff",
+                            "time_scale",   "starts",         "condition",
+                            "x0",           "offset",         "simulated",
                             "free_response"};
     mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
-    mxSetField(info, 0, "converged",
-               mxCreateLogicalScalar(result.converged));
+    mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
-    mxSetField(info, 0, "iterations",
-               mxCreateDoubleScalar(result.iterations));
+    mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
     mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
     mxSetField(info, 0, "noise_variance",
                mxCreateDoubleScalar(result.noise_variance));
     mxSetField(info, 0, "cutoff", mxCreateDoubleScalar(result.cutoff));
-    mxSetField(info, 0, "time_scale",
-               mxCreateDoubleScalar(result.time_scale));
+    mxSetField(info, 0, "time_scale", mxCreateDoubleScalar(result.time_scale));
     mxSetField(info, 0, "starts", mxCreateDoubleScalar(result.starts_tried));
     mxSetField(info, 0, "condition", mxCreateDoubleScalar(result.condition));
     mxSetField(info, 0, "x0", column(result.x0));

@@ -2,8 +2,6 @@
 // IV solution, recovery of noise-free LTI systems (open and closed loop),
 // consistency and covariance of SRIVC against a Monte Carlo run, and input
 // validation.
-#include "ctid/refined_iv.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +11,7 @@
 
 #include "ctid/least_squares.hpp"
 #include "ctid/ltv_simulator.hpp"
+#include "ctid/refined_iv.hpp"
 #include "test_util.hpp"
 
 namespace ctid {

@@ -106,9 +106,9 @@ struct RivSettings {
   // SVF cut-offs (rad/s): the one of LSSVF/IVSVF, or the start grid;
   // empty: 12 log-spaced between 5/T and 0.5 pi/Ts.
   std::vector<S> cutoffs;
-  int max_starts = 3;        // SRIVC runs from at most this many starts
-  S time_scale = 0;          // sigma; 0 = automatic
-  S integrator_pole = 0;     // prefilter pole replacing p = 0; 0: 10/T
+  int max_starts = 3;     // SRIVC runs from at most this many starts
+  S time_scale = 0;       // sigma; 0 = automatic
+  S integrator_pole = 0;  // prefilter pole replacing p = 0; 0: 10/T
 };
 
 template <typename S>
@@ -123,10 +123,10 @@ struct RivResult {
   S cutoff = 0;         // cut-off of the SVF start used (0: theta_init)
   S time_scale = 1;     // sigma of the final iterations
   int starts_tried = 0;
-  S condition = 0;       // condition number of Z^T Phi (equilibrated)
-  Vector<S> x0;          // per group: y0_g^(i)(t_0), i = 0..nf_g-1
-  S offset = 0;          // c
-  Vector<S> simulated;   // y_hat = sum x_g + y0 + c at the samples
+  S condition = 0;          // condition number of Z^T Phi (equilibrated)
+  Vector<S> x0;             // per group: y0_g^(i)(t_0), i = 0..nf_g-1
+  S offset = 0;             // c
+  Vector<S> simulated;      // y_hat = sum x_g + y0 + c at the samples
   Vector<S> free_response;  // y0 at the samples
 };
 
@@ -162,7 +162,8 @@ struct Clock {
   S median_interval() const {
     if (instants == nullptr) return ts;
     std::vector<S> d(static_cast<std::size_t>(n - 1));
-    for (Eigen::Index k = 1; k < n; ++k) d[k - 1] = instants[k] - instants[k - 1];
+    for (Eigen::Index k = 1; k < n; ++k)
+      d[k - 1] = instants[k] - instants[k - 1];
     std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
     return d[d.size() / 2];
   }
@@ -297,8 +298,8 @@ Layout<S> make_layout(const RivProblem<S>& problem) {
   }
   if (problem.output_offset) layout.offset_index = at++;
   layout.np = at;
-  layout.fixed = problem.fixed.empty() ? std::vector<bool>(at, false)
-                                       : problem.fixed;
+  layout.fixed =
+      problem.fixed.empty() ? std::vector<bool>(at, false) : problem.fixed;
   for (int g = 0; g < problem.num_groups(); ++g) {
     layout.rank.push_back(
         integrators(problem, layout.f_offset[g], problem.nf[g]));
@@ -454,8 +455,9 @@ Status validate(const RivProblem<S>& problem, const RivSettings<S>& settings,
     }
     if (problem.controller_den.size() < problem.controller_num.size() ||
         problem.controller_den.size() == 0 || problem.controller_den(0) == 0) {
-      return bad_input("the controller must be proper with a nonzero leading "
-                       "denominator coefficient");
+      return bad_input(
+          "the controller must be proper with a nonzero leading "
+          "denominator coefficient");
     }
     if (problem.channels[0].nk != 0) {
       return Status(ErrorCode::kBadOption,
@@ -659,8 +661,7 @@ class Engine {
       filter_derivatives<S>(d, gain, c.rule, clock_, w_.col(j).data(), W);
       Matrix<S> U;
       if (instrument_u != nullptr) {
-        filter_derivatives<S>(d, gain, c.rule, clock_, instrument_u->data(),
-                              U);
+        filter_derivatives<S>(d, gain, c.rule, clock_, instrument_u->data(), U);
       }
       for (int l = 0; l < c.nb; ++l) {
         const int at = layout_.b_offset[j] + l;
@@ -686,8 +687,7 @@ class Engine {
   // p^i x_g / D, i = 0..n, computed exactly: each channel through
   // gain B_j(p) / (F_g(p) D(p)) with its own hold.
   void exact_model_derivatives(const Vector<S>& theta, int g,
-                               const Vector<S>& d, S gain,
-                               Matrix<S>& X) const {
+                               const Vector<S>& d, S gain, Matrix<S>& X) const {
     const int n = p_.nf[g];
     const Vector<S> f = denominator(theta, g);
     // F_g D, monic, order 2n (ascending index = descending powers).
@@ -934,8 +934,8 @@ class Estimator {
   // One group update with prefilter 1/d (gain) and instruments from x_g
   // (or least squares). Returns the raw solution in `theta` (group g's
   // free entries replaced) and the group's covariance block.
-  Status update_group(Run<S>& run, int g, const Vector<S>& d, S gain,
-                      bool iv, bool refined, Matrix<S>& cov_block,
+  Status update_group(Run<S>& run, int g, const Vector<S>& d, S gain, bool iv,
+                      bool refined, Matrix<S>& cov_block,
                       std::vector<int>& index, S& condition) const {
     Vector<S> others = Vector<S>::Zero(e_.samples());
     for (int h = 0; h < p_.num_groups(); ++h) {
@@ -962,9 +962,8 @@ class Estimator {
                   instrument_u, Phi, Z, target, index);
     if (index.empty()) return Status::Ok();
     offline_iv_detail::IvSolution<S> solution;
-    Status status = solve_equilibrated(Z, Phi, target,
-                                       iv ? "instrument" : "regressor",
-                                       solution, condition);
+    Status status = solve_equilibrated(
+        Z, Phi, target, iv ? "instrument" : "regressor", solution, condition);
     if (!status.ok()) return status;
     for (std::size_t i = 0; i < index.size(); ++i) {
       run.theta(index[i]) = solution.theta(static_cast<Eigen::Index>(i));
@@ -1039,8 +1038,9 @@ class Estimator {
           Run<S> driven = run;
           stabilise(driven, previous, g);
           if (!e_.group_stable(driven.theta, g)) {
-            return numerical_failure("the LSSVF estimate cannot be "
-                                     "stabilised");
+            return numerical_failure(
+                "the LSSVF estimate cannot be "
+                "stabilised");
           }
           run.theta = driven.theta;
           e_.simulate_group(run.theta, g, xs_[g]);
@@ -1082,8 +1082,8 @@ class Estimator {
       bool clipped = false;
       for (int g = 0; g < groups; ++g) {
         const Vector<S> d = e_.prefilter(run.theta, g, integrator_pole());
-        Status status =
-            update_group(run, g, d, S(1), true, true, cov, index, run.condition);
+        Status status = update_group(run, g, d, S(1), true, true, cov, index,
+                                     run.condition);
         if (!status.ok()) return status;
         clipped = stabilise(run, previous.theta, g) || clipped;
         store(run, cov, index);
@@ -1182,7 +1182,6 @@ class Estimator {
     run.offset = 0;
   }
 
-
   Engine<S>& e_;
   const RivProblem<S>& p_;
   const RivSettings<S>& s_;
@@ -1192,7 +1191,8 @@ class Estimator {
 
 // |F(0)|^(1/n) of the part without integrators: the scale of the model.
 template <typename S>
-S characteristic_frequency(const Engine<S>& engine, const RivProblem<S>& problem,
+S characteristic_frequency(const Engine<S>& engine,
+                           const RivProblem<S>& problem,
                            const Vector<S>& theta_scaled) {
   S log_sum = 0;
   int count = 0;
@@ -1271,8 +1271,8 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
       starts.push_back(c);
     }
     if (starts.empty()) {
-      return numerical_failure("no SVF cut-off gave an estimate (last: " +
-                               last_failure + ")");
+      return numerical_failure(
+          "no SVF cut-off gave an estimate (last: " + last_failure + ")");
     }
     std::stable_sort(starts.begin(), starts.end(),
                      [](const Candidate& a, const Candidate& b) {
@@ -1294,9 +1294,8 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
   } else {
     const int limit = std::max(1, settings.max_starts);
     int attempts = 0;
-    for (std::size_t i = 0; i < starts.size() && tried < limit &&
-                            attempts < 2 * limit + 2;
-         ++i) {
+    for (std::size_t i = 0;
+         i < starts.size() && tried < limit && attempts < 2 * limit + 2; ++i) {
       Candidate& c = starts[i];
       // A start must drive a stable prefilter.
       engine.set_scale(c.sigma);
@@ -1336,8 +1335,8 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
       if (good) break;
     }
     if (!have) {
-      return numerical_failure("SRIVC failed from every start (last: " +
-                               last_failure + ")");
+      return numerical_failure(
+          "SRIVC failed from every start (last: " + last_failure + ")");
     }
   }
 
