@@ -1,33 +1,61 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} srivc (@var{data}, [@var{nb} @var{nf} @var{nk}])
+## @deftypefnx {} {@var{M} =} srivc (@var{data}, [@var{nb1} @dots{} @var{nbm} @var{nf1} @dots{} @var{nfm} @var{nk1} @dots{} @var{nkm}])
 ## @deftypefnx {} {@var{M} =} srivc (@dots{}, @var{name}, @var{value})
-## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}] =} srivc (@dots{})
+## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} srivc (@dots{})
 ## Simplified refined instrumental variable estimate of a continuous-time
 ## transfer function B(p)/F(p) (SRIVC, thesis eqs. 2.8-2.13), optimal for
 ## output-error models with white noise.
 ##
 ## @var{nn} = [nb nf nk]: nb numerator and nf denominator parameters, nk the
-## input delay in samples. Options:
+## input delay in samples; with m inputs nb and nk have m entries and F is
+## common to all inputs. CONTSID's MISO form [nb1..nbm nf1..nfm nk1..nkm]
+## (3m entries) gives each input its own denominator F_j ('Different'
+## denominators, CONTSID 7.3's default): y = sum_j B_j/F_j u_j, estimated
+## by refined IV steps on each input in turn (backfitting).
+## Options:
 ## @table @code
 ## @item Tol, MaxIter
 ## stop when the relative change of the parameters falls below Tol
-## (default 1e-6), or after MaxIter iterations (default 20); then a warning
-## @code{srivc:notConverged} is raised and the last iterate returned.
+## (default 1e-6), or after MaxIter iterations (default 30).
 ## @item lambda
-## cut-off (rad/s) of the SVF of the IVSVF start. Default: SRIVC is run
-## from IVSVF starts at 12 cut-offs log-spaced over the record's band and
-## the model with the smallest simulation-error variance is kept.
+## cut-off (rad/s) of the SVF of the IVSVF start. Default: IVSVF at 12
+## cut-offs log-spaced over the record's band, ranked by the simulation
+## error of the start model; SRIVC runs from the best @code{MaxStarts}
+## (default 3) starts and keeps the best stable, converged model.
 ## @item InitMethod
 ## @qcode{"ivsvf"} (default), or a stable initial model (an @code{idctm}
 ## or its [f1 .. f_nf, b ..] values).
+## @item InitialState
+## @qcode{"zero"} (default) or @qcode{"estimate"}: the free response of an
+## unknown initial state is estimated with the model (linear least squares
+## on the free responses at each iteration); @var{info}.x0 holds the
+## initial derivatives y0(t0), y0'(t0), .. of each denominator's part.
+## @item OutputOffset, InputOffset
+## estimate a constant output offset c (y = x + c + e), true or false,
+## or an offset d_j of each input (u_j + d_j enters the model; default
+## false). Reported in @var{info}.offset and @var{info}.input_offset. The
+## default of OutputOffset, @qcode{"auto"}, estimates c when the record
+## does not start at rest (the median of its first samples exceeds 5 % of
+## the output's range: raw units, an operating point) and says so in
+## @var{info}.reason and @var{info}.output_offset; @var{M} itself is the
+## dynamic model without c.
+## @item TimeScale
+## @qcode{"auto"} (default): the iterations run in a time t' = s t with s
+## the model's characteristic frequency |F(0)|^(1/nf), which keeps
+## high-order or fast-sampled models well conditioned; or a given s.
 ## @end table
 ##
-## Every iterate is stability-checked: unstable roots of F are reflected
-## before they drive the prefilter 1/F(p) and the auxiliary model. Outputs:
-## the @code{idctm} model @var{M} (with covariance and noise variance),
-## @var{RT2} = 1 - var(e)/var(y) of the simulation error e, and the Young
-## information criterion @var{YIC} = log(var(e)/var(y)) + log(mean(P_ii /
-## theta_i^2)).
+## Every iterate is kept stable (an unstable IV solution is pulled back
+## toward the previous iterate by step halving, reflected as a last resort).
+## A model that did not converge gives the warning @code{srivc:notConverged}
+## (and the last iterate); an unstable one @code{srivc:unstable}.
+## Outputs: the @code{idctm} model @var{M} (with covariance, noise variance,
+## iterations and converged), @var{RT2} = 1 - var(e)/var(y) of the
+## simulation error e, the Young information criterion @var{YIC} =
+## log(var(e)/var(y)) + log(mean(P_ii / theta_i^2)), and @var{info}
+## (converged, stable, iterations, reason, noise_variance, lambda,
+## time_scale, starts, condition, x0, offset, input_offset, simulated).
 ##
 ## @strong{Example}
 ## @example
@@ -35,11 +63,11 @@
 ## y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.2 * randn (N, 1);
 ## [M, RT2] = srivc (iddata (y, u, Ts, "InterSample", "zoh"), [1 2 0])
 ## @end example
-## @seealso{clsrivc, ivsvf, rsrivc, comparec}
+## @seealso{clsrivc, ivsvf, srivcstruc, rsrivc, comparec}
 ## @end deftypefn
 
-function [M, RT2, YIC] = srivc (varargin)
-  [M, RT2, YIC] = contsid_offline ("srivc", varargin);
+function [M, RT2, YIC, info] = srivc (varargin)
+  [M, RT2, YIC, info] = contsid_offline ("srivc", varargin);
 endfunction
 
 %!shared u, Ts, x, N
@@ -71,6 +99,42 @@ endfunction
 %! G = tf (M);
 %! assert (isa (G, "tf"));
 
+%!test  # MISO, one denominator per input (CONTSID's [nb1 nb2 nf1 nf2 nk1 nk2])
+%! randn ("state", 5);
+%! u2 = kron (sign (randn (ceil (N / 7), 1)), ones (7, 1))(1:N);
+%! x2 = simc (idctm ([1 2], [1 5 4]), u2, Ts);
+%! [M, ~, ~, info] = srivc (iddata (x + x2, [u u2], Ts), [1 2 2 2 0 0], "Tol", 1e-10);
+%! assert (info.converged && info.stable);
+%! yh = simc (idctm (info.B{1}, info.F{1}), u, Ts) + simc (idctm (info.B{2}, info.F{2}), u2, Ts);
+%! assert (simc (M, [u u2], Ts), yh, 1e-8);
+%! assert (yh, x + x2, 1e-6);
+
+%!test  # output offset and initial state estimated with the model
+%! pkg load control
+%! [a, ~, c] = ssdata (ss (tf (4, [1 2.4 4])));
+%! t = (0:N-1)' * Ts;
+%! yfree = arrayfun (@(tk) c * expm (a * tk) * [2; 1], t);
+%! y = x + yfree + 3;
+%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "OutputOffset", true, "InitialState", "estimate", "Tol", 1e-10);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+%! assert (info.offset, 3, 1e-6);
+%! assert (info.simulated, y, 1e-6);
+
+%!test  # raw units: a record that does not start at rest gets an offset
+%! [M, ~, ~, info] = srivc (iddata (x + 5, u, Ts), [1 2 0], "Tol", 1e-10);
+%! assert (info.output_offset);
+%! assert (info.offset, 5, 1e-6);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+%! assert (! isempty (strfind (info.reason, "does not start at rest")));
+%! [~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0]);
+%! assert (! info.output_offset);
+
+%!test  # an input offset d: the model sees u + d
+%! y = simc (idctm (4, [1 2.4 4]), u + 0.5, Ts);
+%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "InputOffset", true, "Tol", 1e-10);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+%! assert (info.input_offset, 0.5, 1e-6);
+
 %!warning <no convergence> srivc (iddata (x + 0.3 * sin ((1:N)'), u, Ts), [1 2 0], "lambda", 3, "MaxIter", 1);
 
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "Tol", 0)
@@ -80,6 +144,11 @@ endfunction
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "lambda", -1)
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [4 2 0])
 %!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "bogus", 1)
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "InitialState", "x")
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "TimeScale", -1)
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "MaxStarts", 0)
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "OutputOffset", "yes")
+%!error id=srivc:badInput srivc (iddata (x, [u u], Ts), [1 1 0 3 0 0])
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);
