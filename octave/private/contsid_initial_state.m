@@ -12,29 +12,21 @@
 ## instants. @var{yhat} = @var{yforced} + y0; @var{x0} holds the initial
 ## derivatives y0(t0), y0'(t0), .., y0^(nf-1)(t0) of the free response
 ## (of each denominator in turn when the model has several).
-## @var{M}: an @code{idctm}/@code{idpoly}-like object or struct with
-## @code{B} and @code{F} (cells allowed), or a control-package @code{tf}.
+## @var{M}: any single-output continuous-time model
+## @code{contsid_model} reads (idpoly, idtf, idproc, struct with B and F,
+## control tf).
 ## @end deftypefn
 
 function [yhat, x0] = contsid_initial_state (fname, M, y, yforced, t)
-  if (isa (M, "tf"))
-    [B, F] = tfdata (M);
-  else
-    if (isobject (M))
-      M = struct (M);
-    endif
-    if (! isstruct (M) || ! all (isfield (M, {"B", "F"})))
-      error ([fname ":badInput"],
-             "%s: the initial state needs a model with B and F", fname);
-    endif
-    B = M.B;
-    F = M.F;
+  m = contsid_model (fname, M);
+  if (! strcmp (m.kind, "tf") || m.ny != 1 || m.Ts != 0)
+    error ([fname ":badInput"], ["%s: the initial state is estimated for ", ...
+                                 "single-output continuous-time transfer ", ...
+                                 "function models"], fname);
   endif
-  if (! iscell (B))
-    B = {B};
-  endif
-  if (! iscell (F))
-    F = {F};
+  F = m.F(1, :);
+  if (m.common)
+    F = F(1);
   endif
   ## One free-response set per distinct denominator.
   nf = zeros (1, numel (F));
