@@ -24,7 +24,8 @@
 ## @seealso{srivc, clrsrivc}
 ## @end deftypefn
 
-function [M, RT2, YIC] = clsrivc (varargin)
+function [M, RT2, YIC, varargout] = clsrivc (varargin)
+  contsid_nargchk ("clsrivc", nargin, nargout, [0 Inf], 3);
   [M, RT2, YIC] = contsid_offline ("clsrivc", varargin);
 endfunction
 

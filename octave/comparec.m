@@ -27,7 +27,8 @@
 ## @seealso{residc, simc, srivc}
 ## @end deftypefn
 
-function [yh, fit, rt2, rmse] = comparec (varargin)
+function [yh, fit, rt2, rmse, varargout] = comparec (varargin)
+  contsid_nargchk ("comparec", nargin, nargout, [0 Inf], 4);
   [d, yhat, rest] = contsid_model_output ("comparec", varargin);
   if (! isempty (rest))
     error ("comparec:badOption", "comparec: unexpected extra arguments");

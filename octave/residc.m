@@ -40,7 +40,8 @@
 ## @seealso{comparec, srivc}
 ## @end deftypefn
 
-function R = residc (varargin)
+function [R, varargout] = residc (varargin)
+  contsid_nargchk ("residc", nargin, nargout, [0 Inf], 1);
   [d, yhat, rest] = contsid_model_output ("residc", varargin);
   opts = contsid_options ("residc", struct ("maxlag", 25), rest);
   m = opts.maxlag;

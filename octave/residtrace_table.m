@@ -21,7 +21,8 @@
 ## @seealso{residtrace}
 ## @end deftypefn
 
-function md = residtrace_table (R, file)
+function [md, varargout] = residtrace_table (R, file, varargin)
+  contsid_nargchk ("residtrace_table", nargin, nargout, [1 2], 1);
   if (nargin < 1 || ! isstruct (R) || ! isfield (R, "steps"))
     error ("residtrace_table:badInput",
            "residtrace_table: R must be the result of residtrace");

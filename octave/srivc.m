@@ -38,7 +38,8 @@
 ## @seealso{clsrivc, ivsvf, rsrivc, comparec}
 ## @end deftypefn
 
-function [M, RT2, YIC] = srivc (varargin)
+function [M, RT2, YIC, varargout] = srivc (varargin)
+  contsid_nargchk ("srivc", nargin, nargout, [0 Inf], 3);
   [M, RT2, YIC] = contsid_offline ("srivc", varargin);
 endfunction
 
