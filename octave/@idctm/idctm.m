@@ -92,6 +92,15 @@ function M = idctm (varargin)
       m.(f) = defaults.(f);
     endif
   endfor
+  nk = m.nk;
+  if (! isnumeric (nk) || ! isreal (nk) || numel (nk) != numel (B)
+      || any (! isfinite (nk(:))) || any (nk(:) < 0)
+      || any (nk(:) != fix (nk(:))))
+    error ("idctm:badInput",
+           "idctm: nk must hold %d finite integer delays >= 0 (one per input)",
+           numel (B));
+  endif
+  m.nk = double (nk(:).');
   m.F = F;
   m.B = B;
   if (numel (B) == 1)
@@ -121,6 +130,9 @@ endfunction
 %!error id=idctm:badInput idctm ([1 2 3], [1 1])
 %!error id=idctm:badInput idctm ({"a"}, [1 1])
 %!error id=idctm:badOption idctm (1, [1 1], "bogus", 1)
+%!error id=idctm:badInput idctm (1, [1 1], "nk", NaN)
+%!error id=idctm:badInput idctm (1, [1 1], "nk", -1)
+%!error id=idctm:badInput idctm (1, [1 1], "nk", [0 1])
 
 %!demo
 %! M = idctm (4, [1 2.4 4])
