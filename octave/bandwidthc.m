@@ -50,7 +50,8 @@
 ## @seealso{svfcutoff, srivc, bode4frozensys}
 ## @end deftypefn
 
-function [wb, kind, gref] = bandwidthc (varargin)
+function [wb, kind, gref, varargout] = bandwidthc (varargin)
+  contsid_nargchk ("bandwidthc", nargin, nargout, [0 Inf], 3);
   fname = "bandwidthc";
   if (nargin < 1)
     error ("bandwidthc:badInput", "bandwidthc: expected a model or B and F");

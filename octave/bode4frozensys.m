@@ -32,7 +32,8 @@
 ## @seealso{rlssvf, rivsvf, rsrivc}
 ## @end deftypefn
 
-function [mag, phase, w] = bode4frozensys (THM, nn, varargin)
+function [mag, phase, w, varargout] = bode4frozensys (THM, nn, varargin)
+  contsid_nargchk ("bode4frozensys", nargin, nargout, [2 Inf], 3);
   fname = "bode4frozensys";
   if (nargin >= 1 && (isobject (THM) || isstruct (THM)))
     ## An offline model: its single (time-invariant) frozen model.

@@ -40,6 +40,7 @@
 ## @end deftypefn
 
 function varargout = clrivsvf (varargin)
+  contsid_nargchk ("clrivsvf", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("clrivsvf", nargout,
                                                 varargin{:});
 endfunction

@@ -30,6 +30,7 @@
 ## @end deftypefn
 
 function varargout = clrsrivc (varargin)
+  contsid_nargchk ("clrsrivc", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("clrsrivc", nargout,
                                                 varargin{:});
 endfunction

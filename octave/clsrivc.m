@@ -30,7 +30,8 @@
 ## @seealso{srivc, clrsrivc}
 ## @end deftypefn
 
-function [M, RT2, YIC, info] = clsrivc (varargin)
+function [M, RT2, YIC, info, varargout] = clsrivc (varargin)
+  contsid_nargchk ("clsrivc", nargin, nargout, [0 Inf], 4);
   [M, RT2, YIC, info] = contsid_offline ("clsrivc", varargin);
 endfunction
 

@@ -51,7 +51,8 @@
 ## @seealso{residc, simc, srivc}
 ## @end deftypefn
 
-function [ys, estInfo] = comparec (varargin)
+function [ys, estInfo, varargout] = comparec (varargin)
+  contsid_nargchk ("comparec", nargin, nargout, [0 Inf], 2);
   [d, yhat, rest] = contsid_model_output ("comparec", varargin);
   N = rows (d.y);
   idx = 1:N;

@@ -18,7 +18,8 @@
 ## @seealso{lssvf, srivc, rivsvf}
 ## @end deftypefn
 
-function M = ivsvf (varargin)
+function [M, varargout] = ivsvf (varargin)
+  contsid_nargchk ("ivsvf", nargin, nargout, [0 Inf], 1);
   M = contsid_offline ("ivsvf", varargin);
 endfunction
 
@@ -36,8 +37,8 @@ endfunction
 %! iv = ivsvf (iddata (y, u, Ts), [2 1 0], 3);
 %! assert (norm (iv.theta - [2.4 4 4]) < norm (ls.theta - [2.4 4 4]) / 2);
 
-%!error id=ivsvf:badOption ivsvf (iddata (ones (10, 1), ones (10, 1), 1), [2 1 0])
-%!error id=ivsvf:badInput ivsvf (iddata (ones (10, 1), ones (10, 1), 1), [2 1 0], NaN)
+%!error id=ivsvf:badOption ivsvf (iddata ((1:10)', ones (10, 1), 1), [2 1 0])
+%!error id=ivsvf:badInput ivsvf (iddata ((1:10)', ones (10, 1), 1), [2 1 0], NaN)
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

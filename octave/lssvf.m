@@ -25,7 +25,8 @@
 ## @seealso{ivsvf, srivc, rlssvf, idctm}
 ## @end deftypefn
 
-function M = lssvf (varargin)
+function [M, varargout] = lssvf (varargin)
+  contsid_nargchk ("lssvf", nargin, nargout, [0 Inf], 1);
   M = contsid_offline ("lssvf", varargin);
 endfunction
 
@@ -50,7 +51,10 @@ endfunction
 %!error id=lssvf:badInput lssvf (data, [2 1 0], -3)
 %!error id=lssvf:badInput lssvf (data, [2 5 0], 3)
 %!error id=lssvf:badOption lssvf (data, [2 1 0], 3, "Tol", 1)
-%!error id=lssvf:numericalFailure lssvf (iddata (zeros (100, 1), zeros (100, 1), 0.1), [2 1 0], 3)
+%!error id=lssvf:badInput lssvf (iddata (zeros (100, 1), zeros (100, 1), 0.1), [2 1 0], 3)
+%!error <constant> lssvf (iddata (ones (100, 1), (1:100)', 0.1), [2 1 0], 3)
+%!error <3 \(present\) samples> lssvf (iddata ([1; 2; 4], [1; 0; 1], 0.1), [2 1 0], 3)
+%!error id=lssvf:badInput [a, b] = lssvf (iddata ((1:9)', ones (9, 1), 1), [2 1 0], 3)
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

@@ -64,7 +64,8 @@
 ## @seealso{iddata}
 ## @end deftypefn
 
-function [u, taps] = prbs (varargin)
+function [u, taps, varargout] = prbs (varargin)
+  contsid_nargchk ("prbs", nargin, nargout, [0 Inf], 2);
   if (nargin < 1)
     print_usage ();
   endif

@@ -65,7 +65,8 @@
 ## @seealso{rsrivc, rlssvf}
 ## @end deftypefn
 
-function [Qn, V, info] = qnml (varargin)
+function [Qn, V, info, varargout] = qnml (varargin)
+  contsid_nargchk ("qnml", nargin, nargout, [0 Inf], 3);
   fname = "qnml";
   if (nargin < 2)
     error ("qnml:badInput", "qnml: expected data, nn and options");

@@ -45,7 +45,8 @@
 ## @seealso{comparec, srivc}
 ## @end deftypefn
 
-function R = residc (varargin)
+function [R, varargout] = residc (varargin)
+  contsid_nargchk ("residc", nargin, nargout, [0 Inf], 1);
   [d, yhat, rest] = contsid_model_output ("residc", varargin);
   if (columns (d.y) != 1)
     error ("residc:notSupported", "residc: one output only (%d given)",

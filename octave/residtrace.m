@@ -182,7 +182,8 @@
 ## @seealso{residtrace_table, residc, comparec, srivc, rsrivc}
 ## @end deftypefn
 
-function R = residtrace (varargin)
+function [R, varargout] = residtrace (varargin)
+  contsid_nargchk ("residtrace", nargin, nargout, [0 Inf], 1);
   fname = "residtrace";
   if (nargin < 2)
     error ("residtrace:badInput", "residtrace: expected data and a model");

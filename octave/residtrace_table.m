@@ -21,11 +21,41 @@
 ## @seealso{residtrace}
 ## @end deftypefn
 
-function md = residtrace_table (R, file)
+function [md, varargout] = residtrace_table (R, file, varargin)
+  contsid_nargchk ("residtrace_table", nargin, nargout, [1 2], 1);
   if (nargin < 1 || ! isstruct (R) || ! isfield (R, "steps"))
     error ("residtrace_table:badInput",
            "residtrace_table: R must be the result of residtrace");
   endif
+  try
+    md = markdown (R);
+  catch err
+    ## A damaged or partial result: say so under this function's name.
+    error ("residtrace_table:badInput",
+           "residtrace_table: R is not a complete residtrace result (%s)",
+           err.message);
+  end_try_catch
+  if (nargin > 1)
+    if (! (ischar (file) && rows (file) == 1))
+      error ("residtrace_table:badInput",
+             "residtrace_table: FILE must be a file name");
+    endif
+    fid = fopen (file, "w");
+    if (fid < 0)
+      error ("residtrace_table:badInput",
+             "residtrace_table: cannot write '%s'", file);
+    endif
+    fputs (fid, md);
+    fclose (fid);
+  endif
+  if (nargout == 0 && nargin < 2)
+    printf ("%s", md);
+    clear md;
+  endif
+endfunction
+
+## The report of R as markdown text.
+function md = markdown (R)
   L = {};
   L{end+1} = sprintf ("Effect found: **%s**", R.effect);
   if (! R.testable)
@@ -94,19 +124,6 @@ function md = residtrace_table (R, file)
   endfor
   md = strjoin (L, "\n");
   md = [md "\n"];
-  if (nargin > 1)
-    fid = fopen (file, "w");
-    if (fid < 0)
-      error ("residtrace_table:badInput",
-             "residtrace_table: cannot write '%s'", file);
-    endif
-    fputs (fid, md);
-    fclose (fid);
-  endif
-  if (nargout == 0 && nargin < 2)
-    printf ("%s", md);
-    clear md;
-  endif
 endfunction
 
 function s = num (v, f)
@@ -190,6 +207,8 @@ endfunction
 %! delete (f);
 
 %!error id=residtrace_table:badInput residtrace_table (struct ("a", 1))
+%!error <not a complete> residtrace_table (struct ("steps", 1, "effect", "x"))
+%!error id=residtrace_table:badInput residtrace_table (struct ("steps", 1), 5)
 %!error id=residtrace_table:badInput residtrace_table (R, "/nonexistent/dir/x.md")
 
 %!demo

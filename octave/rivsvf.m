@@ -50,6 +50,9 @@
 ## forgetting factor of that RLSSVF-FF (default 0.998, thesis Table 3.2).
 ## @item precision
 ## @qcode{"double"} (default) or @qcode{"single"}, as in @code{rlssvf}.
+## @item Missing
+## @qcode{"bridge"} (default) or @qcode{"error"}: how a NaN in y or u (a
+## missing sample) is treated, as in @code{rlssvf}.
 ## @end table
 ## The fourth output @var{info} has the number of estimates refused by the
 ## stability test, the tsiv used, @code{kappa}, the N-by-1 condition
@@ -58,7 +61,10 @@
 ## prediction error and its normalised variance 1 + phi_f^T P zeta_f, as
 ## in @code{rlssvf}), and with @code{antiwindup} @code{kappa_ff} (kappa_2
 ## of the parallel RLSSVF-FF), @code{updating} (1 where the estimates were
-## updated, 0 where held) and @code{resets}.
+## updated, 0 where held) and @code{resets}; @code{covariance_guard},
+## what the covariance protection did to P after each recursion (0 nothing,
+## 1 floor, 2 ceiling, 3 both; see @code{rlssvf}); with missing samples
+## @code{missing}, the N-by-1 logical mask of them.
 ##
 ## @strong{Algorithm.} Before tsiv: RLSSVF (eqs. 1.57/1.59). Then the IV
 ## update (2.29) (Kalman filter) or (2.30) (forgetting factor), with the
@@ -79,6 +85,7 @@
 ## @end deftypefn
 
 function varargout = rivsvf (varargin)
+  contsid_nargchk ("rivsvf", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("rivsvf", nargout, varargin{:});
 endfunction
 

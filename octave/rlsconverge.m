@@ -111,7 +111,8 @@
 ## @seealso{rlssvf, rivsvf, rsrivc, svfcutoff}
 ## @end deftypefn
 
-function [tsiv, info, thm, yh] = rlsconverge (varargin)
+function [tsiv, info, thm, yh, varargout] = rlsconverge (varargin)
+  contsid_nargchk ("rlsconverge", nargin, nargout, [0 Inf], 4);
   fname = "rlsconverge";
   rdef = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
                  "P0", [], "svf", "normalised");
@@ -132,6 +133,8 @@ function [tsiv, info, thm, yh] = rlsconverge (varargin)
   endfor
   nn = [orders.na, orders.nb, orders.nk];
   [ts, inf_, th, y_h] = contsid_converge (fname, d, nn, rls, det, false);
+  ex = contsid_expand ({th, y_h}, d);     # back to N rows over gaps
+  [th, y_h] = ex{:};
   if (nargout > 0)
     tsiv = ts; info = inf_; thm = th; yh = y_h;
     return;

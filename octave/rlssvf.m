@@ -81,6 +81,21 @@
 ## time (s) from which the estimates are updated (Suggested procedure 3.7);
 ## the filters run from the first sample, so the transient of the initial
 ## conditions passes before the estimation starts. Default 0.
+## @item Missing
+## @qcode{"bridge"} (default) or @qcode{"error"}. A NaN in y or in an input
+## marks a missing sample. With @qcode{"bridge"} the estimator runs on the
+## present samples at their own (then irregular) instants: the SVF, a
+## continuous-time filter, propagates over the gap (a ZOH input held at its
+## last present value, an FOH input interpolated linearly, y by the
+## trapezoidal rule between the present samples around the gap) and no
+## update is made at a missing sample. The outputs keep N rows: at a
+## missing sample thm, yh, pset, kappa and ic repeat the last present
+## sample (the first present one before it), error and innovation are 0,
+## and @code{info.missing} marks the missing samples. A sample with y
+## present but u missing (or the reverse) is missing as a whole. The
+## Kalman filter adds Qn once per present sample, so a gap counts as one
+## step. Not with nk > 0 (shift the input instead). With @qcode{"error"}
+## a NaN is an error.
 ## @item precision
 ## @qcode{"double"} (default) or @qcode{"single"}: the whole recursion in
 ## single precision (on a single-precision copy of the data), as on a
@@ -104,8 +119,24 @@
 ## once P has lost positive definiteness); @code{error}, the prediction
 ## error y_f^(na) - phi_f^T theta(t_(k-1)) (eq. 1.55); @code{innovation},
 ## its normalised variance 1 + phi_f^T P(t_k|t_(k-1)) phi_f (eq. 3.25;
-## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i.
+## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i;
+## @code{covariance_guard}, what the covariance protection did to P after
+## each recursion (0 nothing, 1 floor, 2 ceiling, 3 both); with missing
+## samples @code{missing} (see the option @code{Missing}).
 ## @end table
+##
+## @strong{Covariance protection.} After each update of the standard form
+## (and of the IV forms of @code{rivsvf}, @code{rsrivc}, ...), the
+## symmetric part of P keeps its eigenvalues at or above np eps times its
+## trace (when it fails, P is replaced by its symmetric part with the
+## eigenvalues raised to that floor): round-off under a long constant input
+## otherwise makes it indefinite. With a forgetting factor < 1, the trace of
+## P is held at or below 1000 times that of P0 (P is scaled down; the
+## factor leaves the start-up alone), since P otherwise
+## grows as lambda^-k without excitation (estimator windup, thesis sec.
+## 3.6) until it overflows. The Potter and LMR forms keep P positive
+## definite by construction and get neither bound. See
+## @file{core/include/ctid/covariance_guard.hpp}.
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
 ## InterSample rule (exact ZOH through the matrix exponential, or the
@@ -129,6 +160,7 @@
 ## @end deftypefn
 
 function varargout = rlssvf (varargin)
+  contsid_nargchk ("rlssvf", nargin, nargout, [0 Inf], 4);
   p = contsid_rlssvf_args ("rlssvf", varargin{:});
   ## Ask the gateway only for the outputs requested: YH costs a matrix
   ## exponential per sample and PSET N*np^2 memory.
@@ -138,6 +170,7 @@ function varargout = rlssvf (varargin)
   catch err
     contsid_rethrow (err);
   end_try_catch
+  varargout = contsid_expand (varargout, p.d);
 endfunction
 
 %!shared Ts, u, y, data
@@ -270,6 +303,42 @@ endfunction
 %! assert (any (b(:) != a(:)));
 
 ## Bad input: each validation branch has its identifier.
+%!test  # missing samples: the run on the present samples, on their instants
+%! ym = y; ym(1001:1040) = NaN;                    # a gap of 2 s
+%! um = u; um(2001) = NaN;                         # and one missing input
+%! [thm, yh, pset, info] = rlssvf (ym, um, Ts, [2 1 0], "lambda_svf", 3);
+%! miss = isnan (ym) | isnan (um);
+%! assert (info.missing, miss);
+%! t = (0:numel (u) - 1)' * Ts;
+%! [thr, yhr, psr] = rlssvf (y(! miss), u(! miss), t(! miss), [2 1 0], ...
+%!                           "lambda_svf", 3);
+%! assert (thm(! miss, :), thr, 0);
+%! assert (yh(! miss), yhr, 0);
+%! assert (pset(:, :, ! miss), psr, 0);
+%! assert (thm(1001:1040, :), repmat (thm(1000, :), 40, 1));  # held
+%! assert (all (info.innovation(miss) == 0));
+%! assert (all (isfinite (thm(:))) && all (isfinite (yh)));
+%! ## y is bridged linearly over the 2 s gap: its error enters a few
+%! ## updates, which forgetting factor 1 never forgets (3.5 % here)
+%! assert (thm(end, :), [2.4 4 4], 0.05 * 4);
+
+%!test  # covariance protection reported per sample; no action here
+%! [~, ~, ~, info] = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.99);
+%! assert (size (info.covariance_guard), [numel(u) 1]);
+%! assert (all (ismember (info.covariance_guard, 0:3)));
+
+%!test  # forgetting factor < 1 without excitation: P held below trace(P0)
+%! uc = [u(1:1000); ones(20000, 1)];
+%! yc = simc (struct ("B", 4, "F", [1 2.4 4]), uc, Ts);
+%! [~, ~, ps, info] = rlssvf (yc, uc, Ts, [2 1 0], "lambda_svf", 3, ...
+%!                           "adg", 0.995, "P0", 10);
+%! tr = squeeze (sum (sum (ps .* eye (3), 1), 2));
+%! assert (max (tr) <= 1000 * 30 * (1 + 1e-12));
+%! assert (any (info.covariance_guard >= 2));
+%! for k = [1000 10000 21000]
+%!   assert (min (eig (ps(:, :, k))) > 0);
+%! endfor
+
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [2.5 1 0], "lambda_svf", 2)
@@ -309,7 +378,18 @@ endfunction
 %!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "P0", eye (2))
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "P0", -1)
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "P0", "big")
-%!error id=rlssvf:badInput rlssvf ([1; NaN; 3; 4; 5], (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ([1; NaN; 3; 4; 5], (1:5)', 0.1, [1 1 0], "lambda_svf", 2, "Missing", "error")
+%!error id=rlssvf:badOption rlssvf ([1; NaN; 3; 4; 5], (1:5)', 0.1, [1 1 0], "lambda_svf", 2, "Missing", "drop")
+%!error id=rlssvf:notSupported rlssvf ([1; NaN; 3; 4; 5], (1:5)', 0.1, [1 1 1], "lambda_svf", 2)
+%!error id=rlssvf:badInput rlssvf ([1; NaN; NaN; NaN; 5], (1:5)', 0.1, [1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:dimensionMismatch rlssvf (iddata (y, [u u], Ts), [2 1 0], 3)
+%!error id=rlssvf:dimensionMismatch rlssvf (y, [u u], Ts, [2 1 0 0 0], 3)
+%!error id=rlssvf:badInput rlssvf (ones (size (y)), u, Ts, [2 1 0], 3)
+%!error id=rlssvf:badInput rlssvf (sparse (y), u, Ts, [2 1 0], 3)
+%!error id=rlssvf:badInput rlssvf (y, int8 (u), Ts, [2 1 0], 3)
+%!error id=rlssvf:badInput rlssvf (y, u, Ts, [1e9 1 0], 3)
+%!error id=rlssvf:badInput rlssvf (y, u, Ts, [2 1 1e9], 3)
+%!error id=rlssvf:badInput [a, b, c, d, e] = rlssvf (data, [2 1 0], 3)
 %!error id=rlssvf:badInput rlssvf ([1; 2; 3; 4; 5], [1; Inf; 3; 4; 5], 0.1, [1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:dimensionMismatch rlssvf ((1:5)', (1:4)', 0.1, [1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf ([1; 2], [1; 2], 0.1, [2 1 0], "lambda_svf", 2)

@@ -92,6 +92,7 @@
 ## @end deftypefn
 
 function varargout = simc (varargin)
+  contsid_nargchk ("simc", nargin, nargout, [0 Inf], 3);
   fname = "simc";
   if (nargin < 2)
     error ("simc:badInput", "simc: expected a model and input data");

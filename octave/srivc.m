@@ -66,7 +66,8 @@
 ## @seealso{clsrivc, ivsvf, srivcstruc, rsrivc, comparec}
 ## @end deftypefn
 
-function [M, RT2, YIC, info] = srivc (varargin)
+function [M, RT2, YIC, info, varargout] = srivc (varargin)
+  contsid_nargchk ("srivc", nargin, nargout, [0 Inf], 4);
   [M, RT2, YIC, info] = contsid_offline ("srivc", varargin);
 endfunction
 

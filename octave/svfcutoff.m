@@ -100,7 +100,8 @@
 ## @seealso{bandwidthc, srivc, rlssvf, rlsconverge}
 ## @end deftypefn
 
-function [lambda, info] = svfcutoff (varargin)
+function [lambda, info, varargout] = svfcutoff (varargin)
+  contsid_nargchk ("svfcutoff", nargin, nargout, [0 Inf], 2);
   fname = "svfcutoff";
   defaults = struct ("segments", [], "seglength", [], "factor", 1.1,
                      "srivc", {{}});

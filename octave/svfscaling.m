@@ -28,7 +28,8 @@
 ## @seealso{rlssvf, rsrivc}
 ## @end deftypefn
 
-function m = svfscaling (varargin)
+function [m, varargout] = svfscaling (varargin)
+  contsid_nargchk ("svfscaling", nargin, nargout, [0 Inf], 1);
   fname = "svfscaling";
   if (nargin < 2)
     error ("svfscaling:badInput", "svfscaling: expected data and nn");

@@ -85,7 +85,8 @@
 ## @seealso{throttlesim, throttleparams, clrsrivc, rlssvf}
 ## @end deftypefn
 
-function [thm, R, Kv, info] = throttleid (data, method, varargin)
+function [thm, R, Kv, info, varargout] = throttleid (data, method, varargin)
+  contsid_nargchk ("throttleid", nargin, nargout, [2 Inf], 4);
   fname = "throttleid";
   if (nargin < 2)
     error ("throttleid:badInput", "throttleid: expected data and a method");

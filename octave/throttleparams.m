@@ -39,7 +39,8 @@
 ## @seealso{throttlesim, throttleid}
 ## @end deftypefn
 
-function [p, loop] = throttleparams ()
+function [p, loop, varargout] = throttleparams (varargin)
+  contsid_nargchk ("throttleparams", nargin, nargout, [0 0], 2);
   deg = pi / 180;
   p = struct ("Ks1", 1.83e-3 / deg, "Ks2", 22.90e-3 / deg,
               "Ks3", 47.15e-3 / deg, "M_close", 28.4162e-3,

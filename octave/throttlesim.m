@@ -88,7 +88,8 @@
 ## @seealso{throttleid, throttleparams}
 ## @end deftypefn
 
-function sim = throttlesim (varargin)
+function [sim, varargout] = throttlesim (varargin)
+  contsid_nargchk ("throttlesim", nargin, nargout, [0 Inf], 1);
   fname = "throttlesim";
   args = varargin;
   phi_d = [];

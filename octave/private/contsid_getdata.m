@@ -1,5 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{d} =} contsid_getdata (@var{fname}, @var{data}, @dots{})
+## @deftypefnx {} {[@var{d}, @var{missing}] =} contsid_getdata (@dots{})
 ## @deftypefnx {} {@var{d} =} contsid_getdata (@var{fname}, @var{y}, @
 ##   @var{u}, @var{Ts})
 ## @deftypefnx {} {@var{d} =} contsid_getdata (@var{fname}, @var{y}, @
@@ -36,6 +37,13 @@
 ## @code{iddata} object, 3 for numeric data.
 ## @end table
 ##
+## Missing samples: a caller that asks for the second output @var{missing}
+## accepts NaN in @var{y} and @var{u} as missing samples; @var{missing} is
+## then the @var{N}-by-1 logical mask of the samples where @var{y} or any
+## input is NaN, and @var{d} still holds every sample (NaN included;
+## @code{contsid_recursive_args} decides how to bridge them).  A caller
+## with one output gets an error for a NaN, as for an Inf.
+##
 ## Checks, with error identifiers @code{@var{fname}:badInput} or
 ## @code{@var{fname}:dimensionMismatch} and messages that start with
 ## @var{fname} and name the argument: @var{y}, @var{u}, @var{t} real,
@@ -47,7 +55,7 @@
 ## @seealso{iddata, samplinginfo, contsid_options}
 ## @end deftypefn
 
-function d = contsid_getdata (fname, varargin)
+function [d, missing] = contsid_getdata (fname, varargin)
   if (nargin < 1 || ! (ischar (fname) && rows (fname) == 1))
     error ("contsid_getdata:badInput",
            "contsid_getdata: 'fname' must be the caller's name");
@@ -74,7 +82,8 @@ function d = contsid_getdata (fname, varargin)
     tname = "t";
   endif
 
-  y = real_signal (fname, y, "y");
+  allow_nan = nargout > 1;
+  y = real_signal (fname, y, "y", allow_nan);
   if (isrow (y))
     y = y.';
   endif
@@ -84,7 +93,7 @@ function d = contsid_getdata (fname, varargin)
            "%s: 'y' must hold a single output (one column), not %d",
            fname, columns (y));
   endif
-  u = real_signal (fname, u, "u");
+  u = real_signal (fname, u, "u", allow_nan);
   if (isrow (u) && numel (u) == n && n > 1)
     u = u.';
   endif
@@ -95,7 +104,7 @@ function d = contsid_getdata (fname, varargin)
 
   if (! (isnumeric (timing) && isreal (timing) && ! isempty (timing)
          && (isa (timing, "double") || isa (timing, "single"))
-         && isvector (timing)))
+         && isvector (timing) && ! issparse (timing)))
     error ([fname, ":badInput"],
            "%s: 'Ts' must be a positive scalar or '%s' a vector of instants",
            fname, tname);
@@ -135,6 +144,9 @@ function d = contsid_getdata (fname, varargin)
 
   d = struct ("y", y, "u", u, "t", t, "Ts", ts, "uniform", uniform,
               "intersample", intersample, "nconsumed", nconsumed);
+  if (allow_nan)
+    missing = isnan (y) | any (isnan (u), 2);
+  endif
 endfunction
 
 ## Signals and sampling of a single-experiment iddata object.  The fields
@@ -177,13 +189,17 @@ function [y, u, timing, intersample] = read_iddata (fname, data)
   intersample = info.InterSample;
 endfunction
 
-## x as a double matrix, after checking it is a real, finite, non-empty
-## double or single 2-D array.
-function x = real_signal (fname, x, name)
+## x as a double matrix, after checking it is a real, finite (or NaN when
+## allow_nan), non-empty, full double or single 2-D array.
+function x = real_signal (fname, x, name, allow_nan)
   if (! ((isa (x, "double") || isa (x, "single")) && ndims (x) == 2))
     error ([fname, ":badInput"],
            "%s: '%s' must be a double or single matrix, not %s", fname,
            name, class (x));
+  endif
+  if (issparse (x))
+    error ([fname, ":badInput"], "%s: '%s' must be a full matrix, not sparse",
+           fname, name);
   endif
   if (isempty (x))
     error ([fname, ":badInput"], "%s: '%s' is empty", fname, name);
@@ -192,9 +208,14 @@ function x = real_signal (fname, x, name)
     error ([fname, ":badInput"], "%s: '%s' must be real, not complex",
            fname, name);
   endif
-  if (! all (isfinite (x(:))))
+  if (any (isinf (x(:))))
+    error ([fname, ":badInput"], "%s: '%s' must be finite (it holds Inf)",
+           fname, name);
+  endif
+  if (! allow_nan && any (isnan (x(:))))
     error ([fname, ":badInput"],
-           "%s: '%s' must be finite (it holds NaN or Inf)", fname, name);
+           ["%s: '%s' must be finite (it holds NaN; %s does not ", ...
+            "bridge missing samples)"], fname, name, fname);
   endif
   x = double (x);
 endfunction

@@ -23,5 +23,5 @@ function varargout = contsid_riv (fname, nout, varargin)
     outs{4}.tsiv = p.tsiv;
     outs{4}.tsiv_detector = p.tsiv_detector;
   endif
-  varargout = outs;
+  varargout = contsid_expand (outs, p.d);
 endfunction

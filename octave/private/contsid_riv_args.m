@@ -131,8 +131,15 @@ function p = contsid_riv_args (fname, routine, varargin)
              "%s: give the external signals r1 and/or r2 (the other is 0)",
              fname);
     endif
+    if (isfield (d, "missing"))
+      n = d.nfull;                       # r1, r2 cover the full record
+    endif
     r1 = check_signal (fname, opts.r1, n, "r1");
     r2 = check_signal (fname, opts.r2, n, "r2");
+    if (isfield (d, "missing"))
+      r1 = r1(! d.missing);
+      r2 = r2(! d.missing);
+    endif
     if (orders.nb > 0 && columns (d.u) != 1)
       error ([fname ":badInput"], "%s: closed loop needs a single input",
              fname);
@@ -249,7 +256,8 @@ function r = check_signal (fname, r, n, what)
     r = zeros (n, 1);
     return;
   endif
-  if (! isnumeric (r) || ! isreal (r) || ! isvector (r) || any (! isfinite (r)))
+  if (! isnumeric (r) || ! isreal (r) || ! isvector (r) || issparse (r)
+      || any (! isfinite (r)))
     error ([fname ":badInput"], "%s: %s must be a finite real vector", fname,
            what);
   endif
