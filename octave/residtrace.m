@@ -48,7 +48,11 @@
 ## @item 'initial_state'
 ## the record did not start at rest: the model's free response from an
 ## initial state fitted on each record (declared: the simulations of such
-## a model are "from the input plus an estimated initial state").
+## a model are "from the input plus an estimated initial state"; tested
+## by the likelihood ratio of its least-squares fit). A property of the
+## record rather than of the system: when significant it is added first
+## and the pass is run again; it is the effect named only when nothing
+## else is found.
 ## @item 'sinusoid'
 ## an additive sinusoid at the strongest line of the residual periodogram
 ## not shared with the input (Fisher's g test); on the validation record
@@ -101,8 +105,10 @@
 ## @qcode{"auto"}, the default, decides it when the model has no
 ## integrator and the mean of the input or of the output lies more than
 ## three standard deviations from zero; @qcode{"estimate"}, @qcode{"none"})
-## has the estimation record's mean input removed from both records and an
-## output offset estimated with the model, and @code{R.levels} says so.
+## has the estimation record's first input sample removed from both
+## records (the record is taken to start at rest there; otherwise see
+## 'initial_state') and an output offset estimated with the model, and
+## @code{R.levels} says so.
 ##
 ## @strong{Iteration.} The winner is added, the model re-estimated, and
 ## the tests run again, until no candidate is significant, the residual
@@ -173,7 +179,8 @@
 ## @code{rmse_after_tracked} (simulation with parameters tracked on the
 ## validation record) or @code{rmse_after_prediction} (one-step
 ## prediction) carries that effect's figure. @code{rmse_refit} is
-## @code{rmse_before}.
+## the re-estimate's RMSE without an initial state; when 'initial_state'
+## is declared before the first effect, @code{rmse_before} includes it.
 ## @item levels
 ## what was done about the record's levels (estimated, u0, y0, text).
 ## @item verdict
@@ -403,15 +410,43 @@ function R = residtrace (varargin)
     return;
   endif
 
-  for pass = 1:opts.iterate
+  pass = 0;
+  x0row = [];
+  while (pass < opts.iterate)
+    pass++;
     tests = residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y));
     if (pass > 1 && tests.testable && tests.white_p > opts.alpha
         && tests.indep_p > opts.alpha)
       break;                          # the residual tests pass
     endif
-    [ranking, winner] = run_pass (cur, ctx, e0, tests, opts);
+    [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts);
     if (opts.verbose)
       print_ranking (pass, ranking);
+    endif
+    if (! isempty (x0win))
+      ## the record's initial state: a property of the record, estimated
+      ## (declared) first, then the pass is run again; named as the effect
+      ## only when nothing else is found
+      x0row = x0win;
+      cur = x0win.model;
+      cur.effects = [cur.effects, {"initial_state"}];
+      e0 = x0win.e1;
+      e_sim = e0;
+      R.steps(end+1) = step_row (sprintf ("+ initial_state (%s)",
+                                          x0win.variant),
+                                 e_sim, V.y,
+                                 residtrace_whiteness (e0, V.u, opts.maxlag,
+                                                       rms_ (V.y)),
+                                 "simulation",
+                                 residtrace_physical (cur, D.Ts));
+      if (strcmp (R.effect, "none"))
+        ## declared before any effect: the baseline includes it
+        R.rmse_before = rms_ (e0);
+        R.fit_before = fit_ (V.y, e0);
+        R.rmse_after = R.rmse_before;
+      endif
+      pass--;
+      continue;
     endif
     h = struct ("effect", "none", "rmse", rms_ (e0), "fit", fit_ (V.y, e0),
                 "white_p", tests.white_p, "indep_p", tests.indep_p,
@@ -459,7 +494,14 @@ function R = residtrace (varargin)
     if (! simulated)
       break;
     endif
-  endfor
+  endwhile
+  if (strcmp (R.effect, "none") && ! isempty (x0row))
+    R.effect = "initial_state";
+    R.rmse_after = rms_ (x0row.e1);
+    R.sim.after = V.y - x0row.e1;
+    R.model = export_model (x0row.model, D.Ts);
+    R.evidence = x0row.evidence;
+  endif
   R.effects = cur.effects;
   R.verdict = verdict_text (R, history);
   R.final_model = export_model (cur, D.Ts);
@@ -484,7 +526,7 @@ endfunction
 
 ## One pass: every candidate fitted, scored on the validation record and
 ## ranked; the winner (or []) with its validation error e1.
-function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
+function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   ## Effects simulated from the input, and effects that use the validation
   ## output itself (tracking, prediction): two groups, each with its own
   ## Bonferroni level and ranking; the second is only looked at when
@@ -492,12 +534,33 @@ function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
   usesv = {"drift", "colored_noise"};
   simset = setdiff (opts.effects, usesv, "stable");
   rows_ = [];
+  ranking = [];
+  winner = [];
+  x0win = [];
+  if (any (strcmp (simset, "initial_state")))
+    ## first the record's initial state: when significant (at the level
+    ## of a full pass) it is added and the pass run again
+    c = residtrace_cand_x0 (cur, ctx);
+    row = score (c, cur, ctx, e0);
+    row.significant = row.applicable && row.p < opts.alpha / numel (simset) ...
+                      && row.score >= opts.minscore;
+    if (row.significant)
+      x0win = row;
+      ranking = row;
+      return;
+    endif
+    rows_ = row;
+    simset = setdiff (simset, {"initial_state"}, "stable");
+  endif
   for k = 1:numel (simset)
     c = feval (["residtrace_cand_" cand_file(simset{k})], cur, ctx);
     row = score (c, cur, ctx, e0);
     rows_ = [rows_; row];
   endfor
   rows_ = significance (rows_, opts);
+  if (! isempty (rows_))
+    [rows_(strcmp ({rows_.effect}, "initial_state")).significant] = deal (false);
+  endif
   vrows = [];
   if (any (strcmp (opts.effects, "drift")))
     c = residtrace_cand_drift (cur, ctx);
@@ -530,7 +593,6 @@ function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
   r1 = rank_rows (rows_, opts);
   r2 = rank_rows (vrows, opts);
   ranking = [r1; r2];
-  winner = [];
   if (! isempty (r1) && r1(1).significant)
     winner = r1(1);
   elseif (! isempty (r2) && r2(1).significant)
@@ -539,22 +601,15 @@ function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
 endfunction
 
 ## A correction fitted on the validation record itself (nadd parameters by
-## least squares): the F test of the drop in the sum of squares, with the
-## effective number of samples of an AR(1) residual, N (1 - r1)/(1 + r1).
-function [p, F] = ftest (e0, e1, nadd)
+## least squares): the likelihood-ratio test N log(s0/s1) against
+## chi^2(nadd), the model choice a BIC would make at the same level.
+function [p, LR] = ftest (e0, e1, nadd)
   N = numel (e1);
-  ec = e1 - mean (e1);
-  r1 = sum (ec(2:end) .* ec(1:end-1)) / sum (ec .^ 2);
-  r1 = min (max (r1, 0), 0.999);
-  Ne = max (N * (1 - r1) / (1 + r1), nadd + 2);
-  s0 = sum (e0 .^ 2); s1 = sum (e1 .^ 2);
-  F = ((s0 - s1) / nadd) / (s1 / (Ne - nadd));
-  if (! (F > 0))
-    p = 1;
-    return;
+  LR = N * log (sum (e0 .^ 2) / sum (e1 .^ 2));
+  p = 1;
+  if (LR > 0)
+    p = gammainc (LR / 2, nadd / 2, "upper");
   endif
-  d2 = Ne - nadd;
-  p = betainc (d2 / (d2 + nadd * F), d2 / 2, nadd / 2);
 endfunction
 
 ## Bonferroni within a group: p < alpha / (applicable candidates), and a
@@ -780,8 +835,8 @@ endfunction
 ## record whose input or output mean lies more than three standard
 ## deviations from zero (a record in raw units, not around its operating
 ## point); "estimate" always, "none" never. The input level removed is the
-## estimation record's mean; the output offset is estimated with the
-## model.
+## estimation record's first sample (the record starts at rest there); the
+## output offset is estimated with the model.
 function L = level_plan (D, Mst, mode)
   L = struct ("estimate", false, "u0", zeros (1, columns (D.u)),
               "why", "");
@@ -804,7 +859,7 @@ function L = level_plan (D, Mst, mode)
       L.estimate = true;
       L.why = "the record is in raw units (means far from zero)";
   endswitch
-  L.u0 = mean (D.u, 1);
+  L.u0 = D.u(1, :);               # the record starts at rest at its first input
 endfunction
 
 function r = level_report (L, cur)
@@ -982,17 +1037,108 @@ endfunction
 %! assert (! R.testable);
 %! assert (! isempty (R.reason));
 
-%!test  # an unstable model as given: RMSE before is its own, refit helps
+%!test  # an unstable model as given: its RMSE is rmse_given, refit helps
 %! randn ("state", 14);
 %! y = x + 0.05 * randn (N, 1);
 %! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -0.5 1]),
 %!                 "effects", {"offset"});
-%! assert (R.rmse_before > 1e3);
-%! assert (R.rmse_refit < 0.1);
+%! assert (R.rmse_given > 1e3);
+%! assert (R.rmse_before < 0.1);
+%! assert (R.rmse_refit, R.rmse_before);
 %! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -30 1]),
 %!                 "effects", {"offset"});
-%! assert (R.rmse_before, Inf);
-%! assert (R.rmse_refit < 0.1);
+%! assert (R.rmse_given, Inf);
+%! assert (R.rmse_before < 0.1);
+
+%!test  # raw units: levels estimated and said; the baseline is the re-fit
+%! randn ("state", 15);
+%! y = 20 + simc (G, u, Ts) + 0.05 * randn (N, 1);
+%! yv = 20 + simc (G, uv, Ts) + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u + 5, Ts), idctm (2, [1 1.2 1]),
+%!                 "validation", iddata (yv, uv + 5, Ts),
+%!                 "effects", {"offset", "saturation"});
+%! assert (R.levels.estimated);
+%! assert (! isempty (strfind (R.levels.text, "raw units")));
+%! assert (R.effect, "none");
+%! assert (R.rmse_before < 0.07);      # the noise level, levels handled
+%! assert (R.rmse_given > 1);          # M as given ignores the levels
+
+%!test  # an output that saturates: level estimated
+%! randn ("state", 16);
+%! y = min (simc (G, u, Ts), 1.2) + 0.03 * randn (N, 1);
+%! yv = min (simc (G, uv, Ts), 1.2) + 0.03 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"saturation", "offset"}, "iterate", 1);
+%! assert (R.effect, "saturation");
+%! assert (R.evidence.value(2), 1.2, 0.1);
+%! assert (R.rmse_after < 0.5 * R.rmse_before);
+
+%!test  # a square-root outflow (a tank): a state nonlinearity
+%! randn ("state", 17);
+%! Tt = 1; q = 1 + 3 * (prbs (9, 20) > 0) .* rand (numel (prbs (9, 20)), 1);
+%! Nq = numel (q); h = zeros (Nq, 1); z = (q(1) / 0.8) ^ 2;
+%! for k = 1:Nq
+%!   h(k) = z;
+%!   for s = 1:10
+%!     z += 0.1 * (q(k) - 0.8 * sqrt (z)) / 2;
+%!   endfor
+%! endfor
+%! y = h + 0.05 * randn (Nq, 1);
+%! n2 = floor (Nq / 2);
+%! d = iddata (y(1:n2), q(1:n2), Tt); dv = iddata (y(n2+1:end), q(n2+1:end), Tt);
+%! M = srivc (iddata (y(1:n2) - mean (y(1:n2)), q(1:n2) - mean (q(1:n2)), Tt),
+%!            [1 1 0]);
+%! R = residtrace (d, M, "validation", dv, "iterate", 1, "levels", "estimate",
+%!                 "effects", {"state_nonlinearity", "order", "offset"});
+%! assert (R.effect, "state_nonlinearity");
+%! assert (strfind (R.ranking(1).variant, "sqrt(y)") > 0);
+%! assert (R.rmse_after < 0.5 * R.rmse_before);
+
+%!test  # a record that did not start at rest: the initial state
+%! randn ("state", 18);
+%! y0 = [3; -2];                        # observable-form initial state
+%! F = [1 1.2 1];
+%! E = expm ([-F(2:3)', [1; 0]] * Ts);
+%! f = zeros (N, 1); z = y0;
+%! for k = 1:N
+%!   f(k) = z(1); z = E * z;
+%! endfor
+%! y = simc (G, u, Ts) + f + 0.03 * randn (N, 1);
+%! yv = simc (G, uv, Ts) + f + 0.03 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), idctm (2, F), "validation",
+%!                 iddata (yv, uv, Ts), "effects", {"initial_state", "delay"},
+%!                 "iterate", 1);
+%! assert (R.effect, "initial_state");
+%! assert (R.rmse_after < 0.5 * R.rmse_before);
+%! assert (R.rmse_after, 0.03, 0.01);
+
+%!test  # a pure output offset scores (the test keeps the means)
+%! randn ("state", 19);
+%! y = x + 0.3 + 0.05 * randn (N, 1);
+%! yv = xv + 0.3 + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), G, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset"}, "iterate", 1);
+%! assert (R.effect, "offset");
+%! assert (R.ranking(1).p < 1e-6);
+
+%!test  # Coulomb with a two-level input through a velocity: not identifiable
+%! randn ("state", 20);
+%! ub = prbs (9, 30); Nb = numel (ub); Tb = 0.01; v = zeros (Nb, 1); w = 0;
+%! for k = 1:Nb
+%!   v(k) = w;
+%!   for s = 1:10
+%!     w += Tb / 10 * (-5 * w + 10 * ub(k) - 2 * sign (w));
+%!   endfor
+%! endfor
+%! y = v + 0.01 * randn (Nb, 1);
+%! yv = circshift (v, 300) + 0.01 * randn (Nb, 1);
+%! M = srivc (iddata (y, ub, Tb), [1 1 0]);
+%! R = residtrace (iddata (y, ub, Tb), M, "validation",
+%!                 iddata (yv, circshift (ub, 300), Tb),
+%!                 "effects", {"coulomb"}, "iterate", 1);
+%! assert (R.effect, "none");
+%! assert (strfind (R.ranking(1).reason, "not identifiable") > 0);
 
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts))
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts), tf (1, [1 1]))
@@ -1014,6 +1160,7 @@ endfunction
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", {"magic"})
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", 3)
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "bogus", 1)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "levels", "raw")
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
 %!error id=residtrace:dimensionMismatch residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0), "r1", 1, "r1v", uv)

@@ -20,9 +20,10 @@
 ## Levels: for each variant, the level minimising the squared error of the
 ## current model with the clip (its gain refitted by least squares) on a
 ## grid of 25 quantiles of the clipped signal (between its median and its
-## maximum, resp. minimum), then the variant is fitted and its level
-## searched again with the fitted model (one refinement). The variant with
-## the smallest BIC on the estimation data is kept. Evidence: the
+## maximum, resp. minimum); the side (upper, lower, both) by the BIC of
+## this screening. Each node's variant and the output's are then fitted
+## and the one with the smallest BIC on the estimation data is kept; its
+## level is searched again with the fitted model (one refinement). Evidence: the
 ## level(s), the share of samples at a level, the node's poles.
 ## @end deftypefn
 
@@ -37,18 +38,25 @@ function c = residtrace_cand_saturation (cur, ctx)
   y = D.y;
   x = y - cur.e_est;                     # the current model's output
   tmpls = {}; names = {}; starts = {};
-  ## output saturation
+  ## output saturation: the side(s) by the screening's BIC
+  best = Inf;
   for side = {"upper", "lower", "both"}
     lv = out_levels (y, x, side{1});
     if (isempty (lv))
       continue;
     endif
-    t = cur;
-    t.out(end+1) = struct ("type", "sat", "c", lv, "cstd", [NaN NaN],
-                           "omega", 0);
-    tmpls{end+1} = t; starts{end+1} = {cur.F};
-    names{end+1} = sprintf ("output, %s level", side{1});
+    v = bic_of (sum ((y - min (max (x, lv(1)), lv(2))) .^ 2), y, lv);
+    if (v < best)
+      best = v;
+      t = cur;
+      t.out(end+1) = struct ("type", "sat", "c", lv, "cstd", [NaN NaN],
+                             "omega", 0);
+      tout = t; nout = sprintf ("output, %s level", side{1});
+    endif
   endfor
+  if (isfinite (best))
+    tmpls{end+1} = tout; starts{end+1} = {cur.F}; names{end+1} = nout;
+  endif
   ## inner-node saturation
   [nt, nn] = node_templates (cur, ctx, y, x);
   tmpls = [tmpls, nt]; names = [names, nn];
@@ -189,22 +197,27 @@ function [tmpls, names] = node_templates (cur, ctx, y, x)
     endif
     lv = {[-Inf hi], [lo Inf], [lo hi]};
     sides = {"upper", "lower", "both"};
-    for s = 1:3
-      t = cur;
-      t.F = Fb;
-      t.fixed = false (1, numel (Fb) - 1);
-      nb = min (ch.nb, numel (Fb) - 1);
-      P = struct ("Fa", Fa, "lo", lv{s}(1), "hi", lv{s}(2), "Ts", D.Ts,
-                  "rule", D.intersample);
-      nc = residtrace_chan ("node", ch.col, [], nb, ch.nk,
-                            sprintf ("clip(z)"));
-      nc.param = P;
-      t.channels(ins) = nc;
-      tmpls{end+1} = t;
-      names{end+1} = sprintf ("inner node after pole(s) %s, %s level",
-                              num2str (roots (Fa).', 3), sides{s});
-    endfor
+    v = cellfun (@(L) bic_of (sse (max (min (z, L(2)), L(1))), y, L), lv);
+    [~, s] = min (v);
+    t = cur;
+    t.F = Fb;
+    t.fixed = false (1, numel (Fb) - 1);
+    nb = min (ch.nb, numel (Fb) - 1);
+    P = struct ("Fa", Fa, "lo", lv{s}(1), "hi", lv{s}(2), "Ts", D.Ts,
+                "rule", D.intersample);
+    nc = residtrace_chan ("node", ch.col, [], nb, ch.nk, "clip(z)");
+    nc.param = P;
+    t.channels(ins) = nc;
+    tmpls{end+1} = t;
+    names{end+1} = sprintf ("inner node after pole(s) %s, %s level",
+                            num2str (roots (Fa).', 3), sides{s});
   endfor
+endfunction
+
+## BIC of a screening fit: N log(sse/N) + (finite levels) log N.
+function v = bic_of (sse, y, lv)
+  N = numel (y);
+  v = N * log (max (sse, realmin) / N) + sum (isfinite (lv)) * log (N);
 endfunction
 
 function v = lsq_sse (t, yb)

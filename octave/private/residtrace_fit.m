@@ -43,6 +43,13 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   rounds = 1;
   if (! isempty (tmpl.out))
     rounds = 3;
+    k = find (strcmp ({tmpl.out.type}, "offset"), 1);
+    if (! isempty (k) && tmpl.F(end) != 0 && isfield (tmpl, "levels")
+        && tmpl.levels)
+      ## the record's level: it starts at rest at its first sample
+      o(:) = mean (y(1:min (5, N)));
+      o_lin = o;
+    endif
   endif
   best = [];
   for round = 1:rounds
