@@ -12,6 +12,11 @@
 ## The model is simulated on the input of @var{data} (an iddata or numeric
 ## y, u, Ts) from rest.
 ##
+## Option @code{"InitialCondition", "e"}: the model's initial state is
+## estimated on @var{data} (least squares on the free responses, with the
+## refined-IV engine) and its free response added to @var{yh}; the
+## printed summary says so. Default @qcode{"z"}: from rest.
+##
 ## Outputs: the simulated output @var{yh}; @var{fit} = 100 (1 - ||y - yh|| /
 ## ||y - mean(y)||) in %; @var{RT2} = 1 - var(y - yh) / var(y) (the
 ## coefficient of determination used by CONTSID); @var{rmse} the root mean
@@ -29,6 +34,25 @@
 
 function [yh, fit, rt2, rmse] = comparec (varargin)
   [d, yhat, rest] = contsid_model_output ("comparec", varargin);
+  x0 = [];
+  if (numel (rest) == 2 && ischar (rest{1})
+      && strcmpi (rest{1}, "InitialCondition"))
+    ## 'e' (estimate) or 'z' (zero): the free response fitted to y.
+    if (! ischar (rest{2}) || ! any (strcmpi (rest{2}, {"e", "z",
+                                                         "estimate", "zero"})))
+      error ("comparec:badOption",
+             "comparec: InitialCondition must be 'e' (estimate) or 'z'");
+    endif
+    if (any (strcmpi (rest{2}, {"e", "estimate"})))
+      t = d.t;
+      if (d.uniform)
+        t = d.Ts;
+      endif
+      [yhat, x0] = contsid_initial_state ("comparec", varargin{2}, d.y,
+                                          yhat, t);
+    endif
+    rest = {};
+  endif
   if (! isempty (rest))
     error ("comparec:badOption", "comparec: unexpected extra arguments");
   endif
@@ -45,6 +69,9 @@ function [yh, fit, rt2, rmse] = comparec (varargin)
   legend ("measured", sprintf ("model (fit %.1f %%)", f));
   xlabel ("time (s)");
   printf ("fit = %.2f %%, RT2 = %.4f, RMSE = %.4g\n", f, r, m);
+  if (! isempty (x0))
+    printf ("initial state estimated: y0^(i)(t0) = %s\n", mat2str (x0', 4));
+  endif
 endfunction
 
 %!shared u, Ts, x, M
@@ -83,3 +110,25 @@ endfunction
 %! u = prbs (9, 8); Ts = 0.05; N = numel (u);
 %! y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.05 * randn (N, 1);
 %! comparec (iddata (y, u, Ts), idctm (4.4, [1 2 4]));
+
+%!test  # InitialCondition 'e': a record that starts away from rest
+%! u = prbs (8, 6); Ts = 0.05; N = numel (u);
+%! M = idctm (4, [1 2.4 4]);
+%! t = (0:N-1)' * Ts;
+%! pkg load control
+%! [a, b, c] = ssdata (ss (tf (4, [1 2.4 4])));
+%! x0 = [1; -2];
+%! yfree = zeros (N, 1);
+%! for k = 1:N
+%!   yfree(k) = c * expm (a * t(k)) * x0;
+%! endfor
+%! y = simc (M, u, Ts) + yfree;
+%! [yz, fz] = comparec (iddata (y, u, Ts), M);
+%! [ye, fe] = comparec (iddata (y, u, Ts), M, "InitialCondition", "e");
+%! assert (fz < 99);
+%! assert (ye, y, 1e-8);
+%! assert (fe, 100, 1e-6);
+%! out = evalc ("comparec (iddata (y, u, Ts), M, 'InitialCondition', 'e')");
+%! assert (! isempty (strfind (out, "initial state estimated")));
+
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "InitialCondition", "x")

@@ -1,0 +1,73 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{yhat}, @var{x0}] =} contsid_initial_state (@var{fname}, @var{M}, @var{y}, @var{yforced}, @var{t})
+## The model output with its initial state estimated on measured data (as
+## MATLAB's @code{compare (..., 'InitialCondition', 'e')}), for
+## @code{comparec} and @code{simc}.
+##
+## With every coefficient of @var{M} fixed the refined-IV engine
+## (@code{contsid_refined_iv}) reduces to a linear least-squares fit of the
+## model's free responses (solutions of F(p) y0 = 0, one set per
+## denominator) to @var{y} - @var{yforced}, where @var{yforced} is the
+## model's response from rest (N-by-1) and @var{t} the sampling interval or
+## instants. @var{yhat} = @var{yforced} + y0; @var{x0} holds the initial
+## derivatives y0(t0), y0'(t0), .., y0^(nf-1)(t0) of the free response
+## (of each denominator in turn when the model has several).
+## @var{M}: an @code{idctm}/@code{idpoly}-like object or struct with
+## @code{B} and @code{F} (cells allowed), or a control-package @code{tf}.
+## @end deftypefn
+
+function [yhat, x0] = contsid_initial_state (fname, M, y, yforced, t)
+  if (isa (M, "tf"))
+    [B, F] = tfdata (M);
+  else
+    if (isobject (M))
+      M = struct (M);
+    endif
+    if (! isstruct (M) || ! all (isfield (M, {"B", "F"})))
+      error ([fname ":badInput"],
+             "%s: the initial state needs a model with B and F", fname);
+    endif
+    B = M.B;
+    F = M.F;
+  endif
+  if (! iscell (B))
+    B = {B};
+  endif
+  if (! iscell (F))
+    F = {F};
+  endif
+  ## One free-response set per distinct denominator.
+  nf = zeros (1, numel (F));
+  theta = [];
+  for g = 1:numel (F)
+    f = F{g}(:).' / F{g}(1);
+    nf(g) = numel (f) - 1;
+    theta = [theta; f(2:end).'];
+  endfor
+  if (any (nf < 1))
+    error ([fname ":badInput"],
+           "%s: a static model has no initial state to estimate", fname);
+  endif
+  y = double (y(:));
+  n = numel (y);
+  resid = y - yforced(:);
+  ## The engine needs a channel per denominator: a zero signal with b = 0
+  ## fixed, so that only the free responses are fitted.
+  ng = numel (nf);
+  theta = [theta; zeros(ng, 1)];
+  e = struct ("nf", nf, "nb", ones (1, ng), "group", 1:ng,
+              "nk", zeros (1, ng), "fixed", true (numel (theta), 1),
+              "fixed_values", theta, "theta_init", theta,
+              "initial_state", true, "maxiter", 1);
+  try
+    [~, ~, info] = contsid_refined_iv (fname, resid, zeros (n, ng), t, e);
+  catch err
+    if (! isempty (strfind (err.message, "stable")))
+      error ([fname ":badInput"], ["%s: the initial state can only be ", ...
+                                   "estimated for a stable model"], fname);
+    endif
+    rethrow (err);
+  end_try_catch
+  yhat = yforced(:) + info.free_response;
+  x0 = info.x0;
+endfunction
