@@ -299,7 +299,6 @@ function R = residtrace (varargin)
   Fp = residtrace_prefilter (Mst.F, wlo);
   ctx.opts = opts;
   ctx.wlo = wlo;
-  ctx.lambda = exp (mean (log (abs (roots (Fp)))));
   ctx.maxiter = opts.maxiter;
   lam_v = opts.lambda_v;
   if (isempty (lam_v))

@@ -2,7 +2,8 @@
 ## @deftypefn {} {@var{model} =} residtrace_fit (@var{tmpl}, @var{D}, @var{ctx}, @var{starts})
 ## Estimates the parameters of the @code{residtrace} model structure
 ## @var{tmpl} on the record @var{D} (fields y, u, Ts, vhat: the velocity
-## from the measured output) by SRIVC (@code{residtrace_srivc}).
+## from the measured output) by SRIVC (@code{residtrace_estimate}, the
+## toolbox's refined-IV engine).
 ##
 ## The channels (inputs, constant, sign of the velocity, powers, clipped
 ## input) are the regressors of the filtered linear regression; the
@@ -14,10 +15,11 @@
 ## the caller) is fitted as censored data: where the model output lies
 ## beyond a level, the measurement carries no information on the linear
 ## part, so SRIVC sees the model's own output there (imputation) and the
-## other terms are fitted on the samples within the levels. @var{starts}: a cell of initial denominators (each of the
-## template's order; an empty entry is the SVF start at
-## @code{ctx.lambda}); the start giving the smallest residual variance is
-## kept.
+## other terms are fitted on the samples within the levels.
+## @var{starts}: a cell of initial denominators (each of the template's
+## order, started with the template's numerators; an empty entry is the
+## engine's automatic start); the start giving the smallest residual
+## variance is kept.
 ##
 ## Adds to the model: @code{theta}, @code{cov} (SRIVC covariance of the
 ## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
@@ -60,13 +62,19 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
       endif
     else
       cands = {best.F};
+      Bprev = best.B;
     endif
     best = [];
     for s = 1:numel (cands)
-      o_ = struct ("F0", cands{s}, "lambda", ctx.lambda, "wlo", ctx.wlo,
-                   "maxiter", ctx.maxiter, "tol", 1e-5, "iv", true);
+      if (round == 1)
+        B0 = {tmpl.channels.B};
+      else
+        B0 = Bprev;
+      endif
+      o_ = struct ("F0", cands{s}, "B0", {B0}, "maxiter", ctx.maxiter,
+                   "tol", 1e-5);
       try
-        est = residtrace_srivc (y - o, ch, D.Ts, spec, o_);
+        est = residtrace_estimate (y - o, ch, D.Ts, spec, o_);
       catch
         continue;
       end_try_catch

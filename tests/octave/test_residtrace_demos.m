@@ -3,12 +3,26 @@
 ## on the EMPS the Coulomb friction (about 20 N in the benchmark's own
 ## identification; here within the range an independent inverse-dynamic
 ## fit of the same record allows) and a lower validation error; on the
-## Silverbox a lower validation error than the LTI model's.
+## Silverbox a lower validation error than the LTI model's. The grey-box
+## demo (simulated rigs, no data needed): on the two tanks a saturation
+## (the overflow) or a state nonlinearity (the square-root outflows)
+## named first and a validation simulation error well below the best
+## linear model's; on the axis the end stops (saturation).
 function test_residtrace_demos ()
   run_demo_test (@check);
 endfunction
 
 function check (out, root)
+  G = demo_greybox (out, true);
+  for f = {"greybox.md", "fig_greybox_tanks.png", "fig_greybox_axis.png"}
+    assert (exist (fullfile (out, f{1}), "file") == 2);
+  endfor
+  assert (any (strcmp (G.tanks.R.effect, {"saturation", ...
+                                          "state_nonlinearity"})));
+  assert (G.tanks.R.rmse_final < 0.5 * G.tanks.rmse_linear);
+  assert (G.axis.R.effect, "saturation");
+  assert (G.axis.R.rmse_final < G.axis.rmse_linear);
+
   if (! exist (fullfile (root, "..", "shared", "data", "emps"), "dir"))
     printf ("test_residtrace_demos: ../shared/data missing, skipped\n");
     return;
