@@ -16,8 +16,9 @@
 ## y is the measured output (its noise biases the coefficients towards
 ## zero, as errors in variables do); the simulation uses the model's own
 ## output (plus its output offset), re-evaluated at each sub-step. The
-## variant with the smallest BIC on the estimation data is kept.
-## Evidence: the coefficients g_k with their standard deviations.
+## variant with the smallest BIC on the estimation data is kept; it is
+## not tested (nor simulated) when none of its coefficients is three
+## standard deviations away from zero. Evidence: the coefficients g_k with their standard deviations.
 ## @end deftypefn
 
 function c = residtrace_cand_state (cur, ctx)
@@ -51,12 +52,19 @@ function c = residtrace_cand_state (cur, ctx)
     c.reason = "the estimation failed";
     return;
   endif
+  nadd = m.np - cur.np;
+  val = m.theta(end-nadd+1:end);
+  sd = sqrt (diag (m.cov))(end-nadd+1:end);
+  if (all (abs (val) < 3 * sd))
+    c.reason = sprintf (["the output terms are not significant on the ", ...
+                         "estimation data (%s +- %s)"],
+                        mat2str (val(:).', 3), mat2str (sd(:).', 2));
+    return;
+  endif
   c.applicable = true;
   c.model = m;
   c.variant = m.variant_;
-  c.nadd = m.np - cur.np;
-  val = m.theta(end-c.nadd+1:end);
-  sd = sqrt (diag (m.cov))(end-c.nadd+1:end);
+  c.nadd = nadd;
   c.evidence = struct ("term", "gains of the output terms", "value",
                        val(:).', "std", sd(:).',
                        "text", sprintf ("%s: coefficients %s +- %s",

@@ -51,6 +51,9 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
     e.fixed = fixed;
     e.fixed_values = values;
   endif
+  if (! isempty (opts.F0) && ! strictly_stable (opts.F0, r))
+    opts.F0 = [];       # the engine starts from stable denominators only
+  endif
   if (! isempty (opts.F0))
     F0 = opts.F0(:).' / opts.F0(1);
     th = [F0(2:end), cell2mat(cellfun (@(b) b(:).', opts.B0(:).',
@@ -69,6 +72,7 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
   est.stable = info.stable;
   est.iterations = info.iterations;
   est.F = info.F{1};
+  est.F(1 + find (fixed_f)) = spec.fval(fixed_f);   # exactly, not to 1e-8
   est.B = info.B;
   free = [! fixed_f(:); true(sum (nb), 1)];
   est.theta = theta(free);
@@ -83,4 +87,11 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
   est.x = x;
   est.np = np;
   est.ok = all (isfinite (x));
+endfunction
+
+## F's roots apart from its r integrators in the open left half-plane.
+function ok = strictly_stable (F, r)
+  F = F(:).';
+  z = roots (F(1:end-r));
+  ok = all (real (z) < 0);
 endfunction
