@@ -22,8 +22,10 @@
 ##
 ## For both, the best linear model is the best of SRIVC [nb nf 0] for nf
 ## = 1..3, nb = 1..nf on the estimation record (means removed), judged by
-## its validation simulation with the estimation record's levels: the
-## linear + traced model is compared with it.
+## its validation simulation with the estimation record's levels, and of
+## residtrace's own linear re-estimate (levels and initial state handled
+## as residtrace handles them): the linear + traced model is compared
+## with the better of them.
 ##
 ## Writes to @var{outdir} (default "results"): greybox.md (the results
 ## table and both residtrace tables), fig_greybox_tanks.png and
@@ -111,6 +113,13 @@ function o = trace (name, u, y, uv, yv, Ts, iterate)
   o.R = residtrace (d, M, "validation", dv, "iterate", iterate);
   o.elapsed = toc;
   o.name = name;
+  ## residtrace's own re-estimate is linear too, with the levels and the
+  ## initial state handled: the best linear model is the better of both
+  if (o.R.rmse_before < o.rmse_linear)
+    o.rmse_linear = o.R.rmse_before;
+    o.linear_nn = [1 2 0];
+    o.sim_linear = o.R.sim.before;
+  endif
 endfunction
 
 ## The best linear model: SRIVC on the estimation record with its means

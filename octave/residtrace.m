@@ -198,7 +198,8 @@
 ## when it ends with drift or coloured noise).
 ## @item sim
 ## the validation output @code{y} and the model outputs on it:
-## @code{given} (M as given), @code{refit}, @code{after} (top effect),
+## @code{given} (M as given), @code{refit}, @code{before} (the refit
+## with a declared initial state), @code{after} (top effect),
 ## @code{final} (a prediction or a tracked simulation where the effect's
 ## kind says so), @code{final_simulation}.
 ## @item history
@@ -388,7 +389,7 @@ function R = residtrace (varargin)
   R.effects = {};
   R.rmse_refit = R.rmse_before;
   R.sim = struct ("y", V.y, "given", V.y - e_given, "refit", V.y - e0,
-                  "after", V.y - e0, "final", V.y - e0);
+                  "before", V.y - e0, "after", V.y - e0, "final", V.y - e0);
   steps = step_row ("M as given", e_given, V.y, R.tests_given, "simulation",
                     R.params_before);
   steps(2) = step_row (["M re-estimated (SRIVC)" R.levels.label], e0, V.y,
@@ -442,6 +443,7 @@ function R = residtrace (varargin)
         ## declared before any effect: the baseline includes it
         R.rmse_before = rms_ (e0);
         R.fit_before = fit_ (V.y, e0);
+        R.sim.before = V.y - e0;
         R.rmse_after = R.rmse_before;
       endif
       pass--;
