@@ -21,9 +21,9 @@ names = {"this tree", ["reference " ref]};
 Ns = [20000 100000];
 T = NaN (2, numel (Ns));
 E = cell (2, numel (Ns));
-for i = 1:2
-  addpath (trees{i});
-  for j = 1:numel (Ns)
+for j = 1:numel (Ns)
+  for i = 1:2
+    addpath (trees{i});
     randn ("state", 1); rand ("state", 1);
     N = Ns(j); Ts = 0.01;
     u = prbs (17, 20, [-1 1], N);
@@ -37,8 +37,8 @@ for i = 1:2
     printf ("%-22s N = %6d: %6.1f s, effect %s\n", names{i}, N, T(i, j),
             R.effect);
     fflush (stdout);
+    rmpath (trees{i});
   endfor
-  rmpath (trees{i});
 endfor
 printf ("\n| N | this tree (s) | %s (s) | speed-up |\n|---|---|---|---|\n",
         names{2});

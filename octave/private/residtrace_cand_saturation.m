@@ -20,7 +20,8 @@
 ## Levels: for each variant, the level minimising the squared error of the
 ## current model with the clip (its gain refitted by least squares) on a
 ## grid of 25 quantiles of the clipped signal (between its median and its
-## maximum, resp. minimum); the side (upper, lower, both) by the BIC of
+## maximum, resp. minimum), refined by a golden-section search between the
+## grid neighbours; the side (upper, lower, both) by the BIC of
 ## this screening. Each node's variant and the output's are then fitted
 ## and the one with the smallest BIC on the estimation data is kept; its
 ## level is searched again with the fitted model (one refinement). Evidence: the
@@ -137,7 +138,30 @@ function L = best_level (f, z, side)
   endif
   v = arrayfun (f, grid);
   [~, i] = min (v);
+  ## golden-section search between the grid neighbours
+  lo = grid(max (i - 1, 1)); hi = grid(min (i + 1, numel (grid)));
+  g = (sqrt (5) - 1) / 2;
+  a = hi - g * (hi - lo); b = lo + g * (hi - lo);
+  fa = f (a); fb = f (b);
+  for it = 1:12
+    if (fa < fb)
+      hi = b; b = a; fb = fa; a = hi - g * (hi - lo); fa = f (a);
+    else
+      lo = a; a = b; fa = fb; b = lo + g * (hi - lo); fb = f (b);
+    endif
+  endfor
   L = grid(i);
+  if (min (fa, fb) < v(i))
+    L = ifelse_ (fa < fb, a, b);
+  endif
+endfunction
+
+function v = ifelse_ (c, a, b)
+  if (c)
+    v = a;
+  else
+    v = b;
+  endif
 endfunction
 
 ## Inner-node variants: each split of F's sections into upstream F_a and
