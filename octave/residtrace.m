@@ -1080,7 +1080,7 @@ endfunction
 %! assert (R.rmse_after < 0.5 * R.rmse_before);
 
 %!test  # a square-root outflow (a tank): a state nonlinearity
-%! randn ("state", 17);
+%! randn ("state", 17); rand ("state", 17);
 %! Tt = 1; q = 1 + 3 * (prbs (9, 20) > 0) .* rand (numel (prbs (9, 20)), 1);
 %! Nq = numel (q); h = zeros (Nq, 1); z = (q(1) / 0.8) ^ 2;
 %! for k = 1:Nq
