@@ -23,9 +23,12 @@
 ## the output.
 ## @item 'coulomb'
 ## the regressor sign(v), v the velocity (SVF derivative of the measured
-## output, filtered forward and backward), as the thesis does for the
-## throttle (sec. 4.2, eq. 4.17). Simulated honestly: sign() of the
-## model's own velocity, in sub-steps (option @code{"substeps"}).
+## output, filtered forward and backward, or the output itself when it is
+## a velocity: both variants, BIC), as the thesis does for the throttle
+## (sec. 4.2, eq. 4.17). Simulated honestly: sign() of the model's own
+## velocity, in sub-steps (option @code{"substeps"}). When sign(v) is
+## explained by the input's levels (a two-level input through a velocity)
+## the verdict is "not identifiable from these data".
 ## @item 'viscous'
 ## the velocity coefficient of F freed when the model has it fixed at zero.
 ## @item 'delay'
@@ -35,6 +38,22 @@
 ## @item 'static_nonlinearity'
 ## u^2, u^3, or the input clipped (saturation, dead zone) as extra
 ## regressors, or a polynomial of the model output.
+## @item 'saturation'
+## the output, or an inner node of the model (a tank that overflows, a
+## valve at its end stop: F split into upstream and downstream sections),
+## limited to levels that are estimated.
+## @item 'state_nonlinearity'
+## a function of the output inside the dynamics: sqrt(y) (the outflow of a
+## tank), y^2 (a time constant that depends on the operating point), y^3
+## or y^2 and y^3 (a nonlinear spring).
+## @item 'initial_state'
+## the record did not start at rest: the model's free response from an
+## initial state fitted on each record (declared: the simulations of such
+## a model are "from the input plus an estimated initial state"; tested
+## by the likelihood ratio of its least-squares fit). A property of the
+## record rather than of the system: when significant it is added first
+## and the pass is run again; it is the effect named only when nothing
+## else is found.
 ## @item 'sinusoid'
 ## an additive sinusoid at the strongest line of the residual periodogram
 ## not shared with the input (Fisher's g test); on the validation record
@@ -65,14 +84,14 @@
 ## time; one-sided normal p-value. (The Diebold-Mariano test of equal
 ## accuracy with a Newey-West variance is reported as @code{p_dm}; it
 ## is far less powerful when the residual is periodic or slow.) A
-## candidate is significant when p < alpha / (number of candidates)
-## (Bonferroni) and its score >= @code{minscore}. Significant candidates
-## are ranked by score, except that the scores of drift (a simulation
-## with parameters tracked on the validation record) and coloured noise
-## (a prediction), which use the validation output itself, count half in
-## the ordering: a time-invariant effect that is simulated without the
-## validation output goes first unless the other explains more than twice
-## as much. One that adds fewer parameters moves ahead of a candidate of
+## candidate is significant when p < alpha / (number of candidates of
+## its group) (Bonferroni) and its score >= @code{minscore}. The
+## candidates form two groups ranked apart: those simulated from the
+## input, and those that use the validation output itself (drift: a
+## simulation with parameters tracked on the validation record; coloured
+## noise: a prediction); the second group is looked at only when nothing
+## in the first is significant. Within a group significant candidates are
+## ranked by score; one that adds fewer parameters moves ahead of a candidate of
 ## the same kind above it unless that one's extra correction is
 ## significant by the same rules (p < alpha and a share >= minscore of
 ## what the simpler one leaves) (parsimony). The
@@ -82,6 +101,15 @@
 ## is re-estimated the same way first, and candidates are scored against
 ## that re-estimate, so that a better estimator is never credited to an
 ## effect.
+##
+## @strong{Levels.} A record in raw units (option @code{levels}:
+## @qcode{"auto"}, the default, decides it when the model has no
+## integrator and the mean of the input or of the output lies more than
+## three standard deviations from zero; @qcode{"estimate"}, @qcode{"none"})
+## has the estimation record's first input sample removed from both
+## records (the record is taken to start at rest there; otherwise see
+## 'initial_state') and an output offset estimated with the model, and
+## @code{R.levels} says so.
 ##
 ## @strong{Iteration.} The winner is added, the model re-estimated, and
 ## the tests run again, until no candidate is significant, the residual
@@ -125,6 +153,9 @@
 ## print the ranking of each pass (default false).
 ## @item table
 ## a file name: the before/after table is written there as Markdown.
+## @item levels
+## @qcode{"auto"} (default), @qcode{"estimate"} or @qcode{"none"}: see
+## Levels.
 ## @end table
 ##
 ## @strong{Outputs}: @var{R} is a struct with
@@ -132,15 +163,29 @@
 ## @item effect
 ## the top-ranked effect of the first pass, or 'none'.
 ## @item ranking
-## struct array of the first pass, best first: effect, score, p, stat
-## (the correlation test's p-value and z), p_dm, significant, variant,
-## nadd (added parameters), rmse (validation),
-## kind, applicable, reason, evidence.
-## @item rmse_before, rmse_after
-## validation RMSE of the simulated output of M as given and of the model
-## with the top effect added (for 'colored_noise' a one-step prediction
-## RMSE, for 'drift' the simulation with tracked parameters; see
-## @code{rmse_after_kind}).
+## struct array of the first pass: the candidates simulated from the
+## input, best first, then those that use the validation output (field
+## @code{group}): effect, score, p, stat (the correlation test's p-value
+## and z), p_dm, significant, variant, nadd (added parameters), rmse
+## (validation simulation; NaN for the second group), rmse_tracked or
+## rmse_prediction (second group), kind, applicable, reason, evidence.
+## @item rmse_given, rmse_before, rmse_after
+## validation RMSE of the output simulated from the input: of M as given,
+## of M re-estimated in its own structure (the baseline every effect is
+## scored against), and of the model with the top effect added. Every
+## RMSE field is a simulation from the input (plus an estimated initial
+## state once 'initial_state' is added) unless its name says otherwise:
+## when the top effect is drift or coloured noise, @code{rmse_after}
+## stays the simulation of the time-invariant model and
+## @code{rmse_after_tracked} (simulation with parameters tracked on the
+## validation record) or @code{rmse_after_prediction} (one-step
+## prediction) carries that effect's figure. @code{rmse_refit} is
+## the re-estimate's RMSE without an initial state; when 'initial_state'
+## is declared before the first effect, @code{rmse_before} includes it.
+## @item levels
+## what was done about the record's levels (estimated, u0, y0, text).
+## @item verdict
+## one line: what was found, or why nothing could be tested.
 ## @item model
 ## the model with the top effect: a struct (F, fixed, channels with their
 ## numerators B and delays nk, output terms @code{out}, @code{ltv},
@@ -149,12 +194,15 @@
 ## @item evidence
 ## the winner's evidence (term, value, std, and what the test saw).
 ## @item effects, final_model, rmse_final
-## all effects added by the iteration, the last model and its RMSE.
+## all effects added by the iteration, the last model and the RMSE of its
+## simulation (@code{rmse_final_tracked}, @code{rmse_final_prediction}
+## when it ends with drift or coloured noise).
 ## @item sim
 ## the validation output @code{y} and the model outputs on it:
-## @code{given} (M as given), @code{refit}, @code{after} (top effect),
+## @code{given} (M as given), @code{refit}, @code{before} (the refit
+## with a declared initial state), @code{after} (top effect),
 ## @code{final} (a prediction or a tracked simulation where the effect's
-## kind says so).
+## kind says so), @code{final_simulation}.
 ## @item history
 ## one entry per pass: effect, rmse, fit, white_p, indep_p, ranking.
 ## @item table, tests_before, tests_after, testable, reason
@@ -199,13 +247,14 @@ function [R, varargout] = residtrace (varargin)
   M = varargin{d.nconsumed + 1};
   args = varargin(d.nconsumed + 2:end);
   all_effects = {"offset", "coulomb", "viscous", "delay", "order", ...
-                 "static_nonlinearity", "sinusoid", "drift", "colored_noise"};
+                 "static_nonlinearity", "saturation", "state_nonlinearity", ...
+                 "initial_state", "sinusoid", "drift", "colored_noise"};
   defaults = struct ("validation", [], "split", 2/3, "effects", {all_effects},
                      "alpha", 0.01, "minscore", 0.01, "maxlag", 25,
                      "maxdelay", 10, "iterate", 3, "substeps", 10,
                      "lambda_v", [], "controller", [], "r1", [], "r2", [],
                      "r1v", [], "r2v", [], "verbose", false, "table", "",
-                     "maxiter", 30);
+                     "maxiter", 30, "levels", "auto");
   opts = contsid_options (fname, defaults, args);
   opts = check_options (opts, all_effects);
   if (! isobject (M) || isa (M, "iddata"))
@@ -253,24 +302,34 @@ function [R, varargout] = residtrace (varargin)
   Fp = residtrace_prefilter (Mst.F, wlo);
   ctx.opts = opts;
   ctx.wlo = wlo;
-  ctx.lambda = exp (mean (log (abs (roots (Fp)))));
   ctx.maxiter = opts.maxiter;
   lam_v = opts.lambda_v;
   if (isempty (lam_v))
     lam_v = min (10 * max (abs (roots (Fp))), pi / D.Ts / 3);
   endif
   is_y = (numel (Mst.F) == 2);
+  ## velocity columns: the default one (dy/dt, or y for a first-order
+  ## model) and the output read as a velocity
+  vel = @(y) [residtrace_velocity(y, D.Ts, lam_v, is_y), ...
+              residtrace_velocity(y, D.Ts, lam_v, true)];
   if (isempty (V.pre))
-    D.vhat = residtrace_velocity (D.y, D.Ts, lam_v, is_y);
-    V.vhat = residtrace_velocity (V.y, V.Ts, lam_v, is_y);
-    D.ysm = D.y;
-    V.ysm = V.y;
+    D.vhat = vel (D.y);
+    V.vhat = vel (V.y);
   else
     ne = numel (D.y);
-    v = residtrace_velocity ([D.y; V.y], D.Ts, lam_v, is_y);
-    D.vhat = v(1:ne); V.vhat = v(ne+1:end);
-    D.ysm = D.y; V.ysm = V.y;
+    v = vel ([D.y; V.y]);
+    D.vhat = v(1:ne, :); V.vhat = v(ne+1:end, :);
+  endif
+  D.ysm = D.y; V.ysm = V.y;
+  ## the record's levels (raw units): the input level is removed from
+  ## both records, an output offset joins the re-estimated model
+  Vraw = V;
+  lev = level_plan (D, Mst, opts.levels);
+  D.u -= lev.u0; V.u -= lev.u0;
+  if (! isempty (V.pre))
     V.pre = struct ("y", D.y, "u", D.u, "vhat", D.vhat, "ysm", D.ysm);
+    Vraw.pre = V.pre;
+    Vraw.pre.u = D.u + lev.u0;
   endif
   ctx.D = D;
   ctx.V = V;
@@ -278,18 +337,25 @@ function [R, varargout] = residtrace (varargin)
   ## M as given, and M re-estimated by SRIVC in its own structure.
   base.np = np;
   try
-    e_given = residtrace_valerror (base, V, ctx);
+    e_given = residtrace_valerror (base, Vraw, ctx);
   catch
     e_given = Inf (size (V.y));        # M as given diverges
   end_try_catch
   R = struct ();
-  R.rmse_before = rms_ (e_given);
-  R.fit_before = fit_ (V.y, e_given);
+  R.rmse_given = rms_ (e_given);
+  R.fit_given = fit_ (V.y, e_given);
   starts = {Mst.F};
   if (any (real (rts) >= 0 & abs (rts) > 1e-9 * max ([abs(rts); 1])))
     starts{end+1} = [];
   endif
-  cur = residtrace_fit (base, D, ctx, starts);
+  tmpl = base;
+  if (lev.estimate)
+    tmpl.out(end+1) = struct ("type", "offset", "c", 0, "cstd", 0,
+                              "omega", 0);
+    tmpl.levels = true;
+  endif
+  cur = residtrace_fit (tmpl, D, ctx, starts);
+  R.levels = level_report (lev, cur);
   if (! cur.ok)
     error ("residtrace:numericalFailure",
            ["residtrace: M could not be re-estimated on the estimation ", ...
@@ -303,46 +369,87 @@ function [R, varargout] = residtrace (varargin)
                     "indep_p", {}, "ranking", {}, "model", {},
                     "kind", {}, "evidence", {});
   [e0, ~] = residtrace_valerror (cur, V, ctx);
+  R.rmse_before = rms_ (e0);
+  R.fit_before = fit_ (V.y, e0);
   R.tests_before = residtrace_whiteness (e0, V.u, opts.maxlag,
                                          rms_ (V.y));
   R.tests_given = residtrace_whiteness (e_given, V.u, opts.maxlag,
                                         rms_ (V.y));
   R.testable = R.tests_before.testable;
   R.reason = R.tests_before.reason;
+  if (R.testable)
+    [R.testable, R.reason] = excitation (D, V, np);
+  endif
   R.effect = "none";
   R.ranking = struct ([]);
   R.rmse_after = R.rmse_before;
   R.rmse_after_kind = "simulation";
+  R.rmse_after_tracked = NaN;
+  R.rmse_after_prediction = NaN;
   R.model = export_model (cur, D.Ts);
   R.evidence = struct ("text", "no effect found");
   R.effects = {};
-  R.rmse_refit = rms_ (e0);
+  R.rmse_refit = R.rmse_before;
   R.sim = struct ("y", V.y, "given", V.y - e_given, "refit", V.y - e0,
-                  "after", V.y - e0, "final", V.y - e0);
+                  "before", V.y - e0, "after", V.y - e0, "final", V.y - e0);
   steps = step_row ("M as given", e_given, V.y, R.tests_given, "simulation",
                     R.params_before);
-  steps(2) = step_row ("M re-estimated (SRIVC)", e0, V.y, R.tests_before,
-                       "simulation", residtrace_physical (cur, D.Ts));
+  steps(2) = step_row (["M re-estimated (SRIVC)" R.levels.label], e0, V.y,
+                       R.tests_before, "simulation",
+                       residtrace_physical (cur, D.Ts));
   R.steps = steps;
+  e_sim = e0;                           # the simulation error of cur
   if (! R.testable)
+    R.verdict = ["cannot test: " R.reason];
     R.tests_after = R.tests_before;
     R.final_model = R.model;
     R.rmse_final = R.rmse_after;
+    R.rmse_final_tracked = NaN;
+    R.rmse_final_prediction = NaN;
     R.history = history;
     R.params_after = R.params_before;
     R.table = residtrace_table (R);
     return;
   endif
 
-  for pass = 1:opts.iterate
+  pass = 0;
+  x0row = [];
+  while (pass < opts.iterate)
+    pass++;
     tests = residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y));
     if (pass > 1 && tests.testable && tests.white_p > opts.alpha
         && tests.indep_p > opts.alpha)
       break;                          # the residual tests pass
     endif
-    [ranking, winner] = run_pass (cur, ctx, e0, tests, opts);
+    [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts);
     if (opts.verbose)
       print_ranking (pass, ranking);
+    endif
+    if (! isempty (x0win))
+      ## the record's initial state: a property of the record, estimated
+      ## (declared) first, then the pass is run again; named as the effect
+      ## only when nothing else is found
+      x0row = x0win;
+      cur = x0win.model;
+      cur.effects = [cur.effects, {"initial_state"}];
+      e0 = x0win.e1;
+      e_sim = e0;
+      R.steps(end+1) = step_row (sprintf ("+ initial_state (%s)",
+                                          x0win.variant),
+                                 e_sim, V.y,
+                                 residtrace_whiteness (e0, V.u, opts.maxlag,
+                                                       rms_ (V.y)),
+                                 "simulation",
+                                 residtrace_physical (cur, D.Ts));
+      if (strcmp (R.effect, "none"))
+        ## declared before any effect: the baseline includes it
+        R.rmse_before = rms_ (e0);
+        R.fit_before = fit_ (V.y, e0);
+        R.sim.before = V.y - e0;
+        R.rmse_after = R.rmse_before;
+      endif
+      pass--;
+      continue;
     endif
     h = struct ("effect", "none", "rmse", rms_ (e0), "fit", fit_ (V.y, e0),
                 "white_p", tests.white_p, "indep_p", tests.indep_p,
@@ -364,29 +471,57 @@ function [R, varargout] = residtrace (varargin)
     next.effects = [cur.effects, {winner.effect}];
     cur = next;
     e0 = winner.e1;
-    R.steps(end+1) = step_row (sprintf ("+ %s (%s)", winner.effect,
-                                        winner.variant),
-                               e0, V.y,
-                               residtrace_whiteness (e0, V.u, opts.maxlag,
-                                                     rms_ (V.y)),
-                               kind_text (winner.kind),
-                               residtrace_physical (cur, D.Ts));
+    simulated = strcmp (winner.kind, "simulation");
+    if (simulated)
+      e_sim = winner.e1;
+    endif
+    st = step_row (sprintf ("+ %s (%s)", winner.effect, winner.variant),
+                   e_sim, V.y,
+                   residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y)),
+                   kind_text (winner.kind), residtrace_physical (cur, D.Ts));
+    st.rmse_other = ifelse_ (simulated, NaN, rms_ (winner.e1));
+    R.steps(end+1) = st;
     if (pass == 1)
       R.sim.after = V.y - winner.e1;
       R.effect = winner.effect;
-      R.rmse_after = rms_ (winner.e1);
+      R.rmse_after = rms_ (e_sim);
+      if (strcmp (winner.kind, "tracking"))
+        R.rmse_after_tracked = rms_ (winner.e1);
+      elseif (strcmp (winner.kind, "prediction"))
+        R.rmse_after_prediction = rms_ (winner.e1);
+      endif
       R.rmse_after_kind = kind_text (winner.kind);
       R.model = export_model (cur, D.Ts);
       R.evidence = winner.evidence;
     endif
-    if (any (strcmp (winner.effect, {"drift", "colored_noise"})))
+    if (! simulated)
       break;
     endif
-  endfor
+  endwhile
+  if (strcmp (R.effect, "none") && ! isempty (x0row))
+    ## the initial state is the effect: "before" is the re-estimate
+    R.rmse_before = R.rmse_refit;
+    R.fit_before = fit_ (V.y, V.y - R.sim.refit);
+    R.sim.before = R.sim.refit;
+    R.effect = "initial_state";
+    R.rmse_after = rms_ (x0row.e1);
+    R.sim.after = V.y - x0row.e1;
+    R.model = export_model (x0row.model, D.Ts);
+    R.evidence = x0row.evidence;
+  endif
   R.effects = cur.effects;
+  R.verdict = verdict_text (R, history);
   R.final_model = export_model (cur, D.Ts);
-  R.rmse_final = rms_ (e0);
+  R.rmse_final = rms_ (e_sim);
+  R.rmse_final_tracked = NaN;
+  R.rmse_final_prediction = NaN;
+  if (! isempty (cur.ltv))
+    R.rmse_final_tracked = rms_ (e0);
+  elseif (! isempty (cur.noise))
+    R.rmse_final_prediction = rms_ (e0);
+  endif
   R.sim.final = V.y - e0;
+  R.sim.final_simulation = V.y - e_sim;
   R.tests_after = residtrace_whiteness (e0, V.u, opts.maxlag, rms_ (V.y));
   R.params_after = residtrace_physical (cur, D.Ts);
   R.history = history;
@@ -398,25 +533,57 @@ endfunction
 
 ## One pass: every candidate fitted, scored on the validation record and
 ## ranked; the winner (or []) with its validation error e1.
-function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
-  det = setdiff (opts.effects, {"colored_noise"}, "stable");
+function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
+  ## Effects simulated from the input, and effects that use the validation
+  ## output itself (tracking, prediction): two groups, each with its own
+  ## Bonferroni level and ranking; the second is only looked at when
+  ## nothing in the first is significant.
+  usesv = {"drift", "colored_noise"};
+  simset = setdiff (opts.effects, usesv, "stable");
   rows_ = [];
-  for k = 1:numel (det)
-    c = feval (["residtrace_cand_" cand_file(det{k})], cur, ctx);
+  ranking = [];
+  winner = [];
+  x0win = [];
+  if (any (strcmp (simset, "initial_state")))
+    ## first the record's initial state: when significant (at the level
+    ## of a full pass) it is added and the pass run again
+    c = residtrace_cand_x0 (cur, ctx);
+    row = score (c, cur, ctx, e0);
+    row.significant = row.applicable && row.p < opts.alpha / numel (simset) ...
+                      && row.score >= opts.minscore;
+    if (row.significant)
+      x0win = row;
+      ranking = row;
+      return;
+    endif
+    rows_ = row;
+    simset = setdiff (simset, {"initial_state"}, "stable");
+  endif
+  for k = 1:numel (simset)
+    c = feval (["residtrace_cand_" cand_file(simset{k})], cur, ctx);
     row = score (c, cur, ctx, e0);
     rows_ = [rows_; row];
   endfor
-  m = max (1, sum ([rows_.applicable]));
-  for k = 1:numel (rows_)
-    rows_(k).significant = rows_(k).applicable ...
-                           && rows_(k).p < opts.alpha / m ...
-                           && rows_(k).score >= opts.minscore;
-  endfor
+  rows_ = significance (rows_, opts);
+  if (! isempty (rows_))
+    [rows_(strcmp ({rows_.effect}, "initial_state")).significant] = deal (false);
+  endif
+  vrows = [];
+  if (any (strcmp (opts.effects, "drift")))
+    c = residtrace_cand_drift (cur, ctx);
+    row = score (c, cur, ctx, e0);
+    vrows = [vrows; row];
+  endif
   ## coloured noise: only when nothing deterministic is significant and
   ## the residual is independent of the input but not white
   if (any (strcmp (opts.effects, "colored_noise")))
     c = residtrace_cand_colored (cur, ctx);
-    if (c.applicable && any ([rows_.significant]))
+    det_sig = any ([rows_.significant]);
+    if (! isempty (vrows))
+      vr = significance (vrows, opts);
+      det_sig = det_sig || any ([vr.significant]);
+    endif
+    if (c.applicable && det_sig)
       c.applicable = false;
       c.reason = "a deterministic effect explains the residual";
     elseif (c.applicable && ! (tests.white_p < opts.alpha
@@ -427,15 +594,42 @@ function [ranking, winner] = run_pass (cur, ctx, e0, tests, opts)
                           tests.indep_p);
     endif
     row = score (c, cur, ctx, e0);
-    row.significant = row.applicable && row.p < opts.alpha ...
-                      && row.score >= opts.minscore;
-    rows_ = [rows_; row];
+    vrows = [vrows; row];
   endif
-  ranking = rank_rows (rows_, e0, opts);
-  winner = [];
-  if (! isempty (ranking) && ranking(1).significant)
-    winner = ranking(1);
+  vrows = significance (vrows, opts);
+  r1 = rank_rows (rows_, opts);
+  r2 = rank_rows (vrows, opts);
+  ranking = [r1; r2];
+  if (! isempty (r1) && r1(1).significant)
+    winner = r1(1);
+  elseif (! isempty (r2) && r2(1).significant)
+    winner = r2(1);
   endif
+endfunction
+
+## A correction fitted on the validation record itself (nadd parameters by
+## least squares): the likelihood-ratio test N log(s0/s1) against
+## chi^2(nadd), the model choice a BIC would make at the same level.
+function [p, LR] = ftest (e0, e1, nadd)
+  N = numel (e1);
+  LR = N * log (sum (e0 .^ 2) / sum (e1 .^ 2));
+  p = 1;
+  if (LR > 0)
+    p = gammainc (LR / 2, nadd / 2, "upper");
+  endif
+endfunction
+
+## Bonferroni within a group: p < alpha / (applicable candidates), and a
+## share of at least minscore.
+function r = significance (r, opts)
+  if (isempty (r))
+    return;
+  endif
+  m = max (1, sum ([r.applicable]));
+  for k = 1:numel (r)
+    r(k).significant = r(k).applicable && r(k).p < opts.alpha / m ...
+                       && r(k).score >= opts.minscore;
+  endfor
 endfunction
 
 function row = score (c, cur, ctx, e0)
@@ -444,7 +638,10 @@ function row = score (c, cur, ctx, e0)
                 "significant", false, "variant", c.variant, "nadd", c.nadd,
                 "rmse", NaN, "kind", c.kind, "applicable", c.applicable,
                 "reason", c.reason, "evidence", c.evidence, "model", [],
-                "e1", []);
+                "e1", [], "rmse_tracked", NaN, "rmse_prediction", NaN,
+                "group", ifelse_ (strcmp (c.kind, "simulation"),
+                                  "simulated from the input",
+                                  "uses the validation output"));
   if (! c.applicable)
     return;
   endif
@@ -465,23 +662,31 @@ function row = score (c, cur, ctx, e0)
   row.p = t.p_corr;
   row.stat = t.z;
   row.p_dm = t.p;
-  row.rmse = rms_ (e1);
+  if (c.insample)
+    [row.p, row.stat] = ftest (e0, e1, c.nadd);
+  endif
+  switch (c.kind)
+    case "tracking"
+      row.rmse_tracked = rms_ (e1);
+    case "prediction"
+      row.rmse_prediction = rms_ (e1);
+    otherwise
+      row.rmse = rms_ (e1);
+  endswitch
   row.model = c.model;
   row.e1 = e1;
 endfunction
 
 ## Significant first by score; a simpler candidate that is not
-## significantly worse than the one above it moves up (parsimony).
-function r = rank_rows (r, e0, opts)
+## significantly worse than the one above it moves up (parsimony). Only
+## rows of one group (all simulated, or all using the validation output)
+## are ranked together.
+function r = rank_rows (r, opts)
   if (isempty (r))
     return;
   endif
   s = [r.score];
   s(! [r.applicable]) = -Inf;
-  ## tracking and prediction use the validation output itself: in the
-  ## ordering their score counts half against simulated effects
-  sim = strcmp ({r.kind}, "simulation");
-  s(! sim) /= 2;
   key = s + 10 * [r.significant];
   [~, order] = sort (key, "descend");
   r = r(order);
@@ -509,6 +714,10 @@ function f = cand_file (effect)
   switch (effect)
     case "static_nonlinearity"
       f = "static";
+    case "state_nonlinearity"
+      f = "state";
+    case "initial_state"
+      f = "x0";
     otherwise
       f = effect;
   endswitch
@@ -619,8 +828,90 @@ function opts = check_options (opts, all_effects)
   if (! isempty (lv) && (! isnumeric (lv) || ! isscalar (lv) || ! (lv > 0)))
     error ("residtrace:badInput", "residtrace: lambda_v must be > 0");
   endif
+  if (! ischar (opts.levels)
+      || ! any (strcmp (opts.levels, {"auto", "estimate", "none"})))
+    error ("residtrace:badOption",
+           "residtrace: levels must be 'auto', 'estimate' or 'none'");
+  endif
   if (! (ischar (opts.table)))
     error ("residtrace:badInput", "residtrace: table must be a file name");
+  endif
+endfunction
+
+## Levels of a raw record: with "auto", a model without integrators on a
+## record whose input or output mean lies more than three standard
+## deviations from zero (a record in raw units, not around its operating
+## point); "estimate" always, "none" never. The input level removed is the
+## estimation record's first sample (the record starts at rest there); the
+## output offset is estimated with the model.
+function L = level_plan (D, Mst, mode)
+  L = struct ("estimate", false, "u0", zeros (1, columns (D.u)),
+              "why", "");
+  switch (mode)
+    case "none"
+      return;
+    case "estimate"
+      L.estimate = true;
+      L.why = "asked for";
+    otherwise
+      if (Mst.F(end) == 0)
+        return;                     # an integrator: levels are initial states
+      endif
+      mu = mean (D.u, 1); su = std (D.u, 0, 1);
+      raw_u = any (abs (mu) > 3 * su);
+      raw_y = abs (mean (D.y)) > 3 * std (D.y);
+      if (! (raw_u || raw_y))
+        return;
+      endif
+      L.estimate = true;
+      L.why = "the record is in raw units (means far from zero)";
+  endswitch
+  L.u0 = D.u(1, :);               # the record starts at rest at its first input
+endfunction
+
+function r = level_report (L, cur)
+  r = struct ("estimated", L.estimate, "u0", L.u0, "y0", 0, "label", "",
+              "text", "");
+  if (! L.estimate || ! cur.ok)
+    return;
+  endif
+  k = find (strcmp ({cur.out.type}, "offset"), 1);
+  r.y0 = cur.out(k).c;
+  r.label = ", levels estimated";
+  r.text = sprintf (["levels handled (%s): input level %s removed from ", ...
+                     "both records, output offset %.4g estimated with ", ...
+                     "the model"], L.why, mat2str (L.u0, 4), r.y0);
+endfunction
+
+## Can the records tell anything? A constant input (or output) cannot.
+function [ok, why] = excitation (D, V, np)
+  ok = true; why = "";
+  for rec = {D, V; "estimation", "validation"}
+    Rr = rec{1};
+    for j = 1:columns (Rr.u)
+      u = Rr.u(:, j);
+      if (max (u) - min (u) <= 1e-12 * max (abs (u)) || all (u == u(1)))
+        ok = false;
+        why = sprintf ("input %d of the %s record is constant", j, rec{2});
+        return;
+      endif
+    endfor
+    if (all (Rr.y == Rr.y(1)))
+      ok = false;
+      why = sprintf ("the output of the %s record is constant", rec{2});
+      return;
+    endif
+  endfor
+endfunction
+
+function s = verdict_text (R, history)
+  if (isempty (R.effects))
+    s = "no effect of the library explains the residual";
+  else
+    s = ["found: " strjoin(R.effects, ", ")];
+  endif
+  if (! isempty (R.levels.text))
+    s = [s "; " R.levels.text];
   endif
 endfunction
 
@@ -668,7 +959,8 @@ function out = export_model (m, Ts)
 endfunction
 
 function s = step_row (label, e, y, tests, kind, params)
-  s = struct ("label", label, "rmse", rms_ (e), "kind", kind,
+  s = struct ("label", label, "rmse", rms_ (e), "rmse_other", NaN,
+              "kind", kind,
               "fit", fit_ (y, e), "white_p", tests.white_p,
               "indep_p", tests.indep_p, "params", {params});
 endfunction
@@ -772,17 +1064,110 @@ endfunction
 %! assert (! R.testable);
 %! assert (! isempty (R.reason));
 
-%!test  # an unstable model as given: RMSE before is its own, refit helps
+%!test  # an unstable model as given: its RMSE is rmse_given, refit helps
 %! randn ("state", 14);
 %! y = x + 0.05 * randn (N, 1);
 %! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -0.5 1]),
 %!                 "effects", {"offset"});
-%! assert (R.rmse_before > 1e3);
-%! assert (R.rmse_refit < 0.1);
+%! assert (R.rmse_given > 1e3);
+%! assert (R.rmse_before < 0.1);
+%! assert (R.rmse_refit, R.rmse_before);
 %! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -30 1]),
 %!                 "effects", {"offset"});
-%! assert (R.rmse_before, Inf);
-%! assert (R.rmse_refit < 0.1);
+%! assert (R.rmse_given, Inf);
+%! assert (R.rmse_before < 0.1);
+
+%!test  # raw units: levels estimated and said; the baseline is the re-fit
+%! randn ("state", 15);
+%! y = 20 + simc (G, u - u(1), Ts) + 0.05 * randn (N, 1); # at rest at u(1)
+%! yv = 20 + simc (G, uv - u(1), Ts) + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u + 5, Ts), idctm (2, [1 1.2 1]),
+%!                 "validation", iddata (yv, uv + 5, Ts),
+%!                 "effects", {"offset", "saturation"});
+%! assert (R.levels.estimated);
+%! assert (! isempty (strfind (R.levels.text, "raw units")));
+%! assert (R.effect, "none");
+%! assert (R.rmse_before < 0.07);      # the noise level, levels handled
+%! assert (R.rmse_given > 1);          # M as given ignores the levels
+
+%!test  # an output that saturates: level estimated
+%! randn ("state", 16);
+%! y = min (simc (G, u, Ts), 0.4) + 0.03 * randn (N, 1);
+%! yv = min (simc (G, uv, Ts), 0.4) + 0.03 * randn (N, 1);
+%! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"saturation", "offset"}, "iterate", 1);
+%! assert (R.effect, "saturation");
+%! assert (R.evidence.value(2), 0.4, 0.02);
+%! assert (R.rmse_after < 0.5 * R.rmse_before);
+
+%!test  # a square-root outflow (a tank): a state nonlinearity
+%! randn ("state", 17); rand ("state", 17);
+%! Tt = 1; q = 1 + 3 * (prbs (9, 20) > 0) .* rand (numel (prbs (9, 20)), 1);
+%! Nq = numel (q); h = zeros (Nq, 1); z = (q(1) / 0.8) ^ 2;
+%! for k = 1:Nq
+%!   h(k) = z;
+%!   for s = 1:10
+%!     z += 0.1 * (q(k) - 0.8 * sqrt (z)) / 2;
+%!   endfor
+%! endfor
+%! y = h + 0.05 * randn (Nq, 1);
+%! n2 = floor (Nq / 2);
+%! d = iddata (y(1:n2), q(1:n2), Tt); dv = iddata (y(n2+1:end), q(n2+1:end), Tt);
+%! M = srivc (iddata (y(1:n2) - mean (y(1:n2)), q(1:n2) - mean (q(1:n2)), Tt),
+%!            [1 1 0]);
+%! R = residtrace (d, M, "validation", dv, "iterate", 1, "levels", "estimate",
+%!                 "effects", {"state_nonlinearity", "order", "offset"});
+%! assert (R.effect, "state_nonlinearity");  # sqrt(y) or a power of y:
+%! ## over one operating range BIC may prefer y^2 to the square root
+%! assert (R.rmse_after < 0.5 * R.rmse_before);
+
+%!test  # a record that did not start at rest: the initial state
+%! randn ("state", 18);
+%! y0 = [3; -2];                        # observable-form initial state
+%! F = [1 1.2 1];
+%! E = expm ([-F(2:3)', [1; 0]] * Ts);
+%! f = zeros (N, 1); z = y0;
+%! for k = 1:N
+%!   f(k) = z(1); z = E * z;
+%! endfor
+%! y = simc (G, u, Ts) + f + 0.03 * randn (N, 1);
+%! yv = simc (G, uv, Ts) + f + 0.03 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), idctm (2, F), "validation",
+%!                 iddata (yv, uv, Ts), "effects", {"initial_state", "delay"},
+%!                 "iterate", 1);
+%! assert (R.effect, "initial_state");
+%! assert (R.rmse_after < 0.5 * R.rmse_before);
+%! ## not down to the noise (0.03): the estimation fit has no initial state
+%! ## of its own, so the start transient biases the re-estimated model
+
+%!test  # a pure output offset scores (the test keeps the means)
+%! randn ("state", 19);
+%! y = x + 0.3 + 0.05 * randn (N, 1);
+%! yv = xv + 0.3 + 0.05 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), G, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset"}, "iterate", 1);
+%! assert (R.effect, "offset");
+%! assert (R.ranking(1).p < 1e-6);
+
+%!test  # Coulomb with a two-level input through a fast velocity: sign(v)
+%! ## follows sign(u), the friction is a lower gain: not identifiable
+%! randn ("state", 20);
+%! ub = prbs (6, 60); Nb = numel (ub); Tb = 0.01; v = zeros (Nb, 1); w = 0;
+%! for k = 1:Nb
+%!   v(k) = w;
+%!   for s = 1:10
+%!     w += Tb / 10 * (-50 * w + 100 * ub(k) - 20 * sign (w));
+%!   endfor
+%! endfor
+%! y = v + 0.01 * randn (Nb, 1);
+%! yv = circshift (v, 300) + 0.01 * randn (Nb, 1);
+%! M = srivc (iddata (y, ub, Tb), [1 1 0]);
+%! R = residtrace (iddata (y, ub, Tb), M, "validation",
+%!                 iddata (yv, circshift (ub, 300), Tb),
+%!                 "effects", {"coulomb"}, "iterate", 1);
+%! assert (R.effect, "none");
+%! assert (strfind (R.ranking(1).reason, "not identifiable") > 0);
 
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts))
 %!error id=residtrace:badInput residtrace (iddata (x, u, Ts), idss (-1, 1, 1, 0))
@@ -805,6 +1190,7 @@ endfunction
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", {"magic"})
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "effects", 3)
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "bogus", 1)
+%!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "levels", "raw")
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
 %!error id=residtrace:badOption residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0))
 %!error id=residtrace:dimensionMismatch residtrace (iddata (x, u, Ts), G, "validation", {xv, uv, Ts}, "controller", struct ("kp", 1, "ki", 0, "kd", 0), "r1", 1, "r1v", uv)

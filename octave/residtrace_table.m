@@ -3,10 +3,16 @@
 ## @deftypefnx {} {@var{md} =} residtrace_table (@var{R}, @var{file})
 ## The before/after table of a @code{residtrace} result @var{R} as
 ## Markdown: one row per model (as given, re-estimated, then each added
-## effect) with the validation RMSE and what kind of output it measures,
+## effect) with the validation RMSE of the output simulated from the
+## input (plus an estimated initial state where 'initial_state' was
+## added) and, in its own column, the RMSE of a simulation with tracked
+## parameters or of a one-step prediction (drift, coloured noise, which
+## use the validation output),
 ## the fit (%), the p-values of the residual's whiteness (Ljung-Box) and
-## of its independence from the input; the ranking of the first pass with
-## each candidate's score, p-value and evidence; a line for each further
+## of its independence from the input; what was done about the record's
+## levels; the ranking of the first pass with each candidate's group
+## (simulated ones and those using the validation output are ranked
+## apart), score, p-value and evidence; a line for each further
 ## pass (what it added, its best scores); and the physical parameters
 ## before and after. Written to @var{file} when given; printed
 ## when no output is asked.
@@ -61,35 +67,52 @@ function md = markdown (R)
   if (! R.testable)
     L{end+1} = sprintf ("Cannot test: %s.", R.reason);
   endif
+  if (isfield (R, "levels") && ! isempty (R.levels.text))
+    L{end+1} = sprintf ("Levels: %s.", R.levels.text);
+  endif
+  if (any (strcmp (R.effects, "initial_state")))
+    L{end+1} = ["Simulations after 'initial_state' include the free ", ...
+                "response from an initial state fitted on each record."];
+  endif
   L{end+1} = "";
-  L{end+1} = ["| model | validation RMSE | of | fit (%) | whiteness p ", ...
+  L{end+1} = ["| model | validation RMSE, simulation | validation RMSE, ", ...
+              "tracked or predicted | fit (%) | whiteness p ", ...
               "| independence p |"];
   L{end+1} = "|---|---|---|---|---|---|";
   for k = 1:numel (R.steps)
     s = R.steps(k);
+    other = "-";
+    if (isfield (s, "rmse_other") && ! isnan (s.rmse_other))
+      other = sprintf ("%s (%s)", num (s.rmse_other), s.kind);
+    endif
     L{end+1} = sprintf ("| %s | %s | %s | %s | %s | %s |", s.label,
-                        num (s.rmse), s.kind, num (s.fit, "%.2f"),
+                        num (s.rmse), other, num (s.fit, "%.2f"),
                         num (s.white_p, "%.2g"), num (s.indep_p, "%.2g"));
   endfor
   if (! isempty (R.ranking))
     L{end+1} = "";
-    L{end+1} = ["| candidate (first pass) | score | p | significant ", ...
-                "| variant | evidence |"];
-    L{end+1} = "|---|---|---|---|---|---|";
+    L{end+1} = ["| candidate (first pass) | ranked among | score | p ", ...
+                "| significant | variant | evidence |"];
+    L{end+1} = "|---|---|---|---|---|---|---|";
     for k = 1:numel (R.ranking)
       r = R.ranking(k);
+      grp = "";
+      if (isfield (r, "group"))
+        grp = r.group;
+      endif
       if (r.applicable)
         ev = "";
         if (isfield (r.evidence, "text"))
           ev = r.evidence.text;
         endif
-        L{end+1} = sprintf ("| %s | %s | %s | %s | %s | %s |", r.effect,
+        L{end+1} = sprintf ("| %s | %s | %s | %s | %s | %s | %s |",
+                            r.effect, grp,
                             num (r.score, "%.4g"), num (r.p, "%.2g"),
                             yesno (r.significant), r.variant,
                             strrep (ev, "|", "/"));
       else
-        L{end+1} = sprintf ("| %s | - | - | no | not tested | %s |",
-                            r.effect, r.reason);
+        L{end+1} = sprintf ("| %s | %s | - | - | no | not tested | %s |",
+                            r.effect, grp, r.reason);
       endif
     endfor
   endif
@@ -169,12 +192,15 @@ function s = pval (p, name)
   parts = {};
   for i = k
     v = p(i).value;
-    if (iscomplex (v) && imag (v) != 0)
+    if (numel (v) > 1)
+      t = ["[" strjoin(arrayfun (@(x) sprintf ("%.4g", x), real (v(:).'),
+                                 "UniformOutput", false), ", ") "]"];
+    elseif (iscomplex (v) && imag (v) != 0)
       t = sprintf ("%.4g%+.4gi", real (v), imag (v));
     else
       t = sprintf ("%.4g", real (v));
     endif
-    if (isfinite (p(i).std))
+    if (isscalar (p(i).std) && isfinite (p(i).std))
       t = sprintf ("%s ± %.2g", t, p(i).std);
     endif
     parts{end+1} = t;

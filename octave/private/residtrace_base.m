@@ -35,5 +35,5 @@ function model = residtrace_base (M, d)
                   "intersample", d.intersample, "Ts", d.Ts,
                   "effects", {{}}, "ltv", [], "noise", [],
                   "theta", [], "cov", [], "s2", NaN, "np", 0, "bic", NaN,
-                  "e_est", [], "ok", true);
+                  "e_est", [], "ok", true, "levels", false, "x0", false);
 endfunction

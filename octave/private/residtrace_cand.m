@@ -5,11 +5,13 @@
 ## chosen on the estimation data, the number of added parameters
 ## @code{nadd}, the @code{kind} of its validation output
 ## (@qcode{"simulation"}, @qcode{"tracking"} or @qcode{"prediction"}) and
-## its @code{evidence}.
+## its @code{evidence}; @code{insample} when its validation output fits
+## parameters on the validation record itself (an initial state).
 ## @end deftypefn
 
 function c = residtrace_cand (effect)
   c = struct ("effect", effect, "applicable", false, "reason", "",
               "variant", "", "model", [], "nadd", 0, "kind", "simulation",
-              "evidence", struct ("text", ""), "variants", {{}});
+              "evidence", struct ("text", ""), "variants", {{}},
+              "insample", false);
 endfunction

@@ -5,11 +5,16 @@
 ## throttle (sec. 4.2, eq. 4.17), v the velocity: the SVF derivative of
 ## the measured output (a first-order model reads the output itself as a
 ## velocity), filtered forward and backward so that its zero crossings
-## are not delayed (@code{ctx.D.vhat}). A second variant adds a constant
+## are not delayed (@code{ctx.D.vhat}), or the output itself when it is
+## a velocity (a variant for models of any order; no differentiation). A
+## second variant adds a constant
 ## too (Coulomb levels that differ with the direction: sign(v) and an
 ## offset); the BIC on the estimation data chooses. A fitted b_s > 0 (F
 ## being monic, a force along the motion) is not friction: the candidate
-## is then reported as not applicable. Evidence: the
+## is then reported as not applicable, and so is a sign(v) that the
+## input's levels and a constant explain to more than 90 % (R^2; with a
+## two-level input through a velocity, sign(v) follows the input): "not
+## identifiable from these data". Evidence: the
 ## correlation of the current residual with the filtered sign(v), the
 ## fitted gain b_s with its standard deviation, and the friction level
 ## -b_s / b_u in input units (a force when the input is a force).
@@ -21,34 +26,66 @@ function c = residtrace_cand_coulomb (cur, ctx)
     c.reason = "the model has Coulomb friction already";
     return;
   endif
-  s = sign (ctx.D.vhat);
-  if (numel (unique (s(s != 0))) < 2)
+  n = numel (cur.F) - 1;
+  ## which velocity: dy/dt (the output a position), or the output itself
+  ## (a velocity; for a first-order model both columns are y)
+  kinds = {"dy", "y"};
+  vnames = {"sign(dy/dt)", "sign(y)"};
+  if (n == 1)
+    kinds = {"y"}; vnames = {"sign(y)"};
+  endif
+  tmpls = {}; names = {}; starts = {}; sigs = {};
+  for i = 1:numel (kinds)
+    col = ifelse_ (strcmp (kinds{i}, "y"), 2, 1);
+    s = sign (ctx.D.vhat(:, col));
+    if (numel (unique (s(s != 0))) < 2)
+      continue;
+    endif
+    t = cur;
+    t.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
+                                         "sign(v)");
+    tmpls{end+1} = t; names{end+1} = vnames{i}; starts{end+1} = {cur.F};
+    sigs{end+1} = s;
+    if (! any (strcmp ({cur.channels.type}, "const")) && ! cur.levels)
+      ## unequal levels for the two directions: sign(v) plus a constant
+      t2 = cur;
+      t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
+      t2.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
+                                            "sign(v)");
+      tmpls{end+1} = t2; names{end+1} = [vnames{i} ", asymmetric"];
+      starts{end+1} = {cur.F};
+      sigs{end+1} = s;
+    endif
+  endfor
+  if (isempty (tmpls))
     c.reason = "the velocity never changes sign";
     return;
-  endif
-  vname = "sign(dy/dt)";
-  if (numel (cur.F) == 2)
-    vname = "sign(y)";
-  endif
-  t = cur;
-  t.channels(end+1) = residtrace_chan ("signv", 0, [], 1, 0, "sign(v)");
-  tmpls = {t}; names = {vname}; starts = {{cur.F}};
-  if (! any (strcmp ({cur.channels.type}, "const")))
-    ## unequal levels for the two directions: sign(v) plus a constant
-    t2 = cur;
-    t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
-    t2.channels(end+1) = residtrace_chan ("signv", 0, [], 1, 0, "sign(v)");
-    tmpls{end+1} = t2; names{end+1} = [vname ", asymmetric"];
-    starts{end+1} = {cur.F};
   endif
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = "the estimation failed";
     return;
   endif
+  s = sigs{strcmp (names, m.variant_)};
   k = numel (m.theta);
   val = m.theta(k); sd = sqrt (m.cov(k, k));
   bu = m.channels(1).B(end);
+  ## identifiable? sign(v) must not be (nearly) a function of the input:
+  ## with a two-level input through a velocity, sign(v) follows sign(u)
+  r2 = explained (s, ctx.D.u);
+  if (r2 > 0.9)
+    c.reason = sprintf (["not identifiable from these data: sign(v) is ", ...
+                         "%.0f %% explained by the input and a constant ", ...
+                         "(%s)"], 100 * r2,
+                        ifelse_ (two_level (ctx.D.u), "a two-level input",
+                                 "the input decides the direction"));
+    return;
+  endif
+  if (abs (val) < 3 * sd)
+    c.reason = sprintf (["the friction term is not significant on the ", ...
+                         "estimation data (b_s = %.3g +- %.2g)"], val, sd);
+    return;
+  endif
   if (val > 0)                  # F monic: friction needs b_s < 0
     c.reason = sprintf (["the fitted term %.3g sign(v) pushes along ", ...
                          "the motion: not a friction"], val);
@@ -64,10 +101,48 @@ function c = residtrace_cand_coulomb (cur, ctx)
   c.evidence = struct ("term", "b_s (gain of sign(v))", "value", val,
                        "std", sd, "physical", -val / bu,
                        "physical_std", sd / abs (bu), "corr", r,
+                       "r2_input", r2,
                        "text", sprintf (["Coulomb level %.4g +- %.2g ", ...
                                          "(input units); corr(residual, ", ...
                                          "sign(v)/F) = %.2f"],
                                         -val / bu, sd / abs (bu), r));
+endfunction
+
+## R^2 of s regressed on the inputs' levels (each distinct level of a
+## few-level input its own indicator) and a constant.
+function r2 = explained (s, u)
+  X = ones (rows (u), 1);
+  for j = 1:columns (u)
+    lv = unique (u(:, j));
+    if (numel (lv) <= 4)
+      for i = 2:numel (lv)
+        X = [X, u(:, j) == lv(i)];
+      endfor
+    else
+      X = [X, u(:, j)];
+    endif
+  endfor
+  sc = s - mean (s);
+  if (! any (sc))
+    r2 = 1;
+    return;
+  endif
+  r2 = 1 - sum ((s - X * (X \ s)) .^ 2) / sum (sc .^ 2);
+endfunction
+
+function t = two_level (u)
+  t = false;
+  for j = 1:columns (u)
+    t = t || numel (unique (u(:, j))) == 2;
+  endfor
+endfunction
+
+function v = ifelse_ (c, a, b)
+  if (c)
+    v = a;
+  else
+    v = b;
+  endif
 endfunction
 
 function r = corr_coef (a, b)

@@ -194,7 +194,7 @@ function Dk = slice (D, idx)
   Dk = D;
   Dk.y = D.y(idx);
   Dk.u = D.u(idx, :);
-  Dk.vhat = D.vhat(idx);
+  Dk.vhat = D.vhat(idx, :);
   Dk.ysm = D.ysm(idx);
   Dk.loop = [];
 endfunction

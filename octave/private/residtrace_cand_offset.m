@@ -12,6 +12,10 @@
 function c = residtrace_cand_offset (cur, ctx)
   c = residtrace_cand ("offset");
   tmpls = {}; names = {}; starts = {};
+  if (cur.levels)
+    c.reason = "the record's levels are estimated with the model already";
+    return;
+  endif
   if (! any (strcmp ({cur.channels.type}, "const")))
     t = cur;
     t.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");

@@ -12,12 +12,9 @@
 ## every static map is affine.
 ## @item on the output (Wiener): y = x + c2 x^2 + c3 x^3 with x the model
 ## output, by alternation with SRIVC.
-## @item of the output inside the dynamics (a nonlinear spring, Duffing):
-## the regressors y^3, or y^2 and y^3, entering like the input (gain b/F),
-## y the measured output (its noise biases the coefficients towards
-## zero, as errors in variables do); simulated with the model's own
-## output.
 ## @end itemize
+## (A nonlinearity of the output inside the dynamics is the effect
+## 'state_nonlinearity', @code{residtrace_cand_state}.)
 ## The variant with the smallest BIC on the estimation data is kept.
 ## Evidence: the fitted coefficients with their standard deviations and
 ## the size of the nonlinear part (its RMS over that of the model output).
@@ -71,18 +68,6 @@ function c = residtrace_cand_static (cur, ctx)
                          "omega", 0);
   tmpls{end+1} = t; starts{end+1} = {cur.F};
   names{end+1} = "output: c2 x^2 + c3 x^3";
-  pw = {[3], [2 3]};
-  for k = 1:numel (pw)
-    t = cur;
-    for p = pw{k}
-      t.channels(end+1) = residtrace_chan ("ypower", 0, p, 1, 0,
-                                           sprintf ("y^%d", p));
-    endfor
-    tmpls{end+1} = t; starts{end+1} = {cur.F};
-    pws = arrayfun (@num2str, pw{k}, "UniformOutput", false);
-    names{end+1} = sprintf ("output in the dynamics: y^%s",
-                            strjoin (pws, ", y^"));
-  endfor
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = [why "the estimation failed"];

@@ -11,7 +11,9 @@
 ## @item const
 ## 1 (an offset entering with the input)
 ## @item signv
-## sign (v) (Coulomb friction, thesis eq. 4.17)
+## sign (v) (Coulomb friction, thesis eq. 4.17); v is the first column of
+## @var{v} (the derivative of the output), or with param "y" its last
+## column (the output read as a velocity)
 ## @item power
 ## u(:, col) .^ param (a polynomial input nonlinearity)
 ## @item clip
@@ -19,7 +21,13 @@
 ## saturation or a dead zone)
 ## @item ypower
 ## y .^ param (a static nonlinearity of the output acting inside the
-## dynamics, e.g. a hardening spring: Duffing's y^3)
+## dynamics, e.g. a hardening spring: Duffing's y^3); a fractional power
+## keeps the sign, sign(y) |y|^param (sqrt: the outflow of a tank)
+## @item node
+## an inner node of the model clipped: z = F_a(0)/F_a(p) u(:, col) (unit
+## static gain; param.Fa, param.Ts, param.rule) limited to [param.lo,
+## param.hi] (a tank that overflows, a valve at its end stop); the model's
+## F is then the part F_b after the node
 ## @end table
 ## Works row by row as well (a 1-by-nu @var{u} and a scalar @var{v}).
 ## @end deftypefn
@@ -37,13 +45,30 @@ function W = residtrace_channels (chans, u, v, y)
       case "const"
         W(:, j) = 1;
       case "signv"
-        W(:, j) = sign (v);
+        if (strcmp (c.param, "y"))
+          W(:, j) = sign (v(:, end));
+        else
+          W(:, j) = sign (v(:, 1));
+        endif
       case "power"
         W(:, j) = u(:, c.col) .^ c.param;
       case "clip"
         W(:, j) = min (max (u(:, c.col), -c.param), c.param);
       case "ypower"
-        W(:, j) = y .^ c.param;
+        W(:, j) = ypow (y, c.param);
+      case "node"
+        P = c.param;
+        z = simc (struct ("B", P.Fa(end), "F", P.Fa), u(:, c.col), P.Ts,
+                  "InterSample", P.rule);
+        W(:, j) = min (max (z, P.lo), P.hi);
     endswitch
   endfor
+endfunction
+
+function w = ypow (y, p)
+  if (p == fix (p))
+    w = y .^ p;
+  else
+    w = sign (y) .* abs (y) .^ p;
+  endif
 endfunction

@@ -12,9 +12,10 @@
 ## the DM test, and @code{z}, @code{p_corr} of the encompassing test
 ## (Harvey, Leybourne and Newbold, J. Bus. Econ. Stat. 16 (1998)
 ## 254-259): does the correction delta = e0 - e1 explain part of e0? In
-## the regression e0 = beta delta + u, the t value of beta_hat = sum e0
-## delta / sum delta^2 with the Newey-West variance of the score u delta
-## (same bandwidth rule). Both series' autocorrelations are accounted
+## the regression e0 = beta delta + u (no intercept, no means removed: a
+## constant correction, i.e. a pure offset, is a correction like any
+## other), the t value of beta_hat = sum e0 delta / sum delta^2 with the
+## Newey-West variance of the score u delta (same bandwidth rule). Both series' autocorrelations are accounted
 ## for, so slow residuals do not fake significance, and since the
 ## variance comes from what is left after the correction, a large effect
 ## does not hide itself (as it can in the DM variance when the residual
@@ -25,9 +26,8 @@ function t = residtrace_dmtest (e0, e1)
   d = e0(:) .^ 2 - e1(:) .^ 2;
   N = numel (d);
   t.score = 1 - mean (e1 .^ 2) / mean (e0 .^ 2);
-  delta = e0(:) - e1(:);
-  dc = delta - mean (delta);
-  a = e0(:) - mean (e0);
+  dc = e0(:) - e1(:);
+  a = e0(:);
   sdd = sum (dc .^ 2);
   t.z = 0;
   if (sdd > 0)

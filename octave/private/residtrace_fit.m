@@ -2,7 +2,8 @@
 ## @deftypefn {} {@var{model} =} residtrace_fit (@var{tmpl}, @var{D}, @var{ctx}, @var{starts})
 ## Estimates the parameters of the @code{residtrace} model structure
 ## @var{tmpl} on the record @var{D} (fields y, u, Ts, vhat: the velocity
-## from the measured output) by SRIVC (@code{residtrace_srivc}).
+## from the measured output) by SRIVC (@code{residtrace_estimate}, the
+## toolbox's refined-IV engine).
 ##
 ## The channels (inputs, constant, sign of the velocity, powers, clipped
 ## input) are the regressors of the filtered linear regression; the
@@ -10,10 +11,15 @@
 ## values. Output terms (an output offset, a polynomial in the model
 ## output, a sinusoid) enter by alternation: SRIVC on y minus the terms,
 ## then the terms by least squares on y minus the model output, three
-## rounds. @var{starts}: a cell of initial denominators (each of the
-## template's order; an empty entry is the SVF start at
-## @code{ctx.lambda}); the start giving the smallest residual variance is
-## kept.
+## rounds. An output saturation (term @qcode{"sat"}, its levels fixed by
+## the caller) is fitted as censored data: where the model output lies
+## beyond a level, the measurement carries no information on the linear
+## part, so SRIVC sees the model's own output there (imputation) and the
+## other terms are fitted on the samples within the levels.
+## @var{starts}: a cell of initial denominators (each of the template's
+## order, started with the template's numerators; an empty entry is the
+## engine's automatic start); the start giving the smallest residual
+## variance is kept.
 ##
 ## Adds to the model: @code{theta}, @code{cov} (SRIVC covariance of the
 ## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
@@ -30,9 +36,22 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   n = numel (tmpl.F) - 1;
   spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end));
   o = zeros (N, 1);
+  o_lin = o;
+  mask = false (N, 1);
+  isat = [];
+  if (! isempty (tmpl.out))
+    isat = find (strcmp ({tmpl.out.type}, "sat"), 1);
+  endif
   rounds = 1;
   if (! isempty (tmpl.out))
     rounds = 3;
+    k = find (strcmp ({tmpl.out.type}, "offset"), 1);
+    if (! isempty (k) && tmpl.F(end) != 0 && isfield (tmpl, "levels")
+        && tmpl.levels)
+      ## the record's level: it starts at rest at its first sample
+      o(:) = mean (y(1:min (5, N)));
+      o_lin = o;
+    endif
   endif
   best = [];
   for round = 1:rounds
@@ -43,13 +62,19 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
       endif
     else
       cands = {best.F};
+      Bprev = best.B;
     endif
     best = [];
     for s = 1:numel (cands)
-      o_ = struct ("F0", cands{s}, "lambda", ctx.lambda, "wlo", ctx.wlo,
-                   "maxiter", ctx.maxiter, "tol", 1e-5, "iv", true);
+      if (round == 1)
+        B0 = {tmpl.channels.B};
+      else
+        B0 = Bprev;
+      endif
+      o_ = struct ("F0", cands{s}, "B0", {B0}, "maxiter", ctx.maxiter,
+                   "tol", 1e-5);
       try
-        est = residtrace_srivc (y - o, ch, D.Ts, spec, o_);
+        est = residtrace_estimate (y - o, ch, D.Ts, spec, o_);
       catch
         continue;
       end_try_catch
@@ -65,15 +90,26 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
       return;
     endif
     if (! isempty (tmpl.out))
-      [o, model.out] = fit_out (tmpl.out, y - best.x, best.x, D.Ts);
+      [o_lin, model.out] = fit_out (tmpl.out, y - best.x, best.x, D.Ts,
+                                    ! mask);
+      o = o_lin;
+      if (! isempty (isat))
+        lv = tmpl.out(isat).c;
+        yl = best.x + o_lin;
+        mask = (yl > lv(2)) | (yl < lv(1));
+        o(mask) = y(mask) - best.x(mask);      # y - o = x: imputed
+      endif
     endif
   endfor
+  if (! isempty (isat))
+    o = min (max (best.x + o_lin, lv(1)), lv(2)) - best.x;
+  endif
   model.F = best.F;
   for j = 1:numel (model.channels)
     model.channels(j).B = best.B{j};
   endfor
   e = y - best.x - o;
-  nout = sum (arrayfun (@(m) numel (m.c), model.out));
+  nout = sum (arrayfun (@(m) sum (isfinite (m.c)), model.out));
   model.np = best.np + nout;
   model.s2 = sum (e .^ 2) / max (N - model.np, 1);
   model.theta = best.theta;
@@ -96,10 +132,10 @@ function ok = stable (F, fixed)
 endfunction
 
 ## Least squares for the output terms on r = y - x (x the model output).
-function [o, out] = fit_out (out, r, x, Ts)
+function [o, out] = fit_out (out, r, x, Ts, use)
   N = numel (r);
   t = (0:N-1)' * Ts;
-  X = [];
+  X = zeros (N, 0);
   for k = 1:numel (out)
     switch (out(k).type)
       case "offset"
@@ -110,12 +146,19 @@ function [o, out] = fit_out (out, r, x, Ts)
         X = [X, sin(out(k).omega * t), cos(out(k).omega * t)];
     endswitch
   endfor
-  c = X \ r;
+  if (columns (X) == 0)
+    o = zeros (N, 1);
+    return;
+  endif
+  c = X(use, :) \ r(use);
   o = X * c;
-  s2 = sum ((r - o) .^ 2) / max (N - numel (c), 1);
-  cstd = sqrt (diag (s2 * inv (X' * X)));
+  s2 = sum ((r(use) - o(use)) .^ 2) / max (sum (use) - numel (c), 1);
+  cstd = sqrt (diag (s2 * inv (X(use, :)' * X(use, :))));
   off = 0;
   for k = 1:numel (out)
+    if (strcmp (out(k).type, "sat"))
+      continue;
+    endif
     m = numel (out(k).c);
     out(k).c = c(off+1:off+m).';
     out(k).cstd = cstd(off+1:off+m).';

@@ -72,6 +72,15 @@ function p = residtrace_physical (model, Ts)
                                            cov_of (C, idxF(1), ib0)));
     endif
   endif
+  if (strcmp (ch1.type, "node"))
+    P = ch1.param;
+    for z = roots (P.Fa).'
+      p(end+1) = struct ("name", "pole before the clipped node", "value", z,
+                         "std", NaN);
+    endfor
+    p(end+1) = struct ("name", "node levels [lo hi] (input units)",
+                       "value", [P.lo P.hi], "std", NaN);
+  endif
   for j = 2:numel (model.channels)
     c = model.channels(j);
     k = idxB{j}(end);
@@ -87,6 +96,9 @@ function p = residtrace_physical (model, Ts)
         s = 1;
       case "clip"
         nm = sprintf ("gain of %s (b/b0)", c.name);
+        s = 1;
+      case "ypower"
+        nm = sprintf ("coefficient of %s in the dynamics (g/b0)", c.name);
         s = 1;
       otherwise
         nm = sprintf ("gain of %s (b/b0)", c.name);
@@ -107,6 +119,9 @@ function p = residtrace_physical (model, Ts)
                            "std", o.cstd(1));
         p(end+1) = struct ("name", "output c3", "value", o.c(2),
                            "std", o.cstd(2));
+      case "sat"
+        p(end+1) = struct ("name", "output saturation [lo hi]",
+                           "value", o.c, "std", NaN);
       case "sinusoid"
         p(end+1) = struct ("name", "disturbance frequency (Hz)",
                            "value", o.omega / (2 * pi), "std", NaN);

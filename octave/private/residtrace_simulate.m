@@ -31,6 +31,8 @@
 ## sub-step of each sampling interval uses the parameters of its first
 ## sample (a single-input model in open loop goes to @code{simc}, which
 ## interpolates them linearly).
+## An output saturation (@code{out} term @qcode{"sat"}, levels c = [lo
+## hi]) clips the output last: y = min (max (x + terms, lo), hi).
 ## @var{x} is the dynamic part alone, @var{uc} the input applied (equal to
 ## @var{u} in open loop).
 ## @end deftypefn
@@ -71,6 +73,7 @@ endfunction
 
 function o = output_terms (model, x, Ts)
   o = zeros (size (x));
+  sat = [];
   t = (0:numel (x) - 1)' * Ts;
   for k = 1:numel (model.out)
     m = model.out(k);
@@ -81,8 +84,14 @@ function o = output_terms (model, x, Ts)
         o += m.c(1) * x .^ 2 + m.c(2) * x .^ 3;
       case "sinusoid"
         o += m.c(1) * sin (m.omega * t) + m.c(2) * cos (m.omega * t);
+      case "sat"
+        sat = m.c;
     endswitch
   endfor
+  if (! isempty (sat))
+    y = x + o;
+    o = min (max (y, sat(1)), sat(2)) - x;
+  endif
 endfunction
 
 function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
@@ -105,6 +114,18 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
   isv = strcmp ({chans.type}, "signv");
   isy = strcmp ({chans.type}, "ypower");
   ypw = [chans(isy).param];
+  yfrac = (ypw != fix (ypw));
+  ## the output level the powers act on: x plus an output offset
+  y_off = 0;
+  for k = 1:numel (model.out)
+    if (strcmp (model.out(k).type, "offset"))
+      y_off += model.out(k).c(1);
+    endif
+  endfor
+  vy = false (1, m);                        # Coulomb on the output itself
+  for j = find (isv)
+    vy(j) = strcmp (chans(j).param, "y");
+  endfor
   isx = isv | isy;                          # fed by the model's own state
   velocity_is_y = (n == 1);
   nk = [chans.nk];
@@ -164,10 +185,14 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
         else
           v = A(1, :) * xs + Bc(1, ! isx) * wk(! isx).';
         endif
-        wk(isv) = sign (v);
+        wk(isv & ! vy) = sign (v);
+        wk(isv & vy) = sign (xs(1) + y_off);
       endif
       if (any (isy))
-        wk(isy) = xs(1) .^ ypw;
+        yk = xs(1) + y_off;
+        p = yk .^ ypw;
+        p(yfrac) = sign (yk) * abs (yk) .^ ypw(yfrac);
+        wk(isy) = p;
       endif
       xs = Phi * xs + Gam * wk.';
     endfor

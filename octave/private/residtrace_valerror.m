@@ -13,6 +13,9 @@
 ## @item A drifting model (@code{model.ltv}) is simulated with the
 ## parameters tracked on V by @code{rsrivc} or @code{residtrace_track}
 ## (see @code{residtrace_cand_drift}), one sample behind.
+## @item With an unknown initial state (@code{model.x0}), the model's free
+## response (@code{residtrace_free}) is fitted on V's error by least
+## squares and added to the output, as MATLAB's @code{compare} does.
 ## @item Sinusoidal output terms keep their frequencies; their amplitudes
 ## and phases, unknown on another record, are fitted on each half of the
 ## residual and applied to the other half (two-fold cross-fitting).
@@ -50,6 +53,12 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
   endif
   yh = yh(npre+1:end);
   e = V.y - yh;
+  if (isfield (m, "x0") && m.x0 && all (isfinite (e)))
+    X = residtrace_free (m.F, N, V.Ts);
+    f = X * (X \ e);
+    yh += f;
+    e -= f;
+  endif
   if (! isempty (omegas) && all (isfinite (e)))
     t = (0:N-1)' * V.Ts;
     X = [sin(t * omegas), cos(t * omegas)];

@@ -3,12 +3,32 @@
 ## on the EMPS the Coulomb friction (about 20 N in the benchmark's own
 ## identification; here within the range an independent inverse-dynamic
 ## fit of the same record allows) and a lower validation error; on the
-## Silverbox a lower validation error than the LTI model's.
+## Silverbox a lower validation error than the LTI model's. The grey-box
+## demo (simulated rigs, no data needed): on the two tanks the overflow (a
+## saturation, or the input clipped) or the square-root outflows (a state
+## nonlinearity) named first and a validation simulation error well below
+## the best linear model's; on the axis the end stops (saturation).
 function test_residtrace_demos ()
   run_demo_test (@check);
 endfunction
 
 function check (out, root)
+  G = demo_greybox (out, true);
+  for f = {"greybox.md", "fig_greybox_tanks.png", "fig_greybox_axis.png"}
+    assert (exist (fullfile (out, f{1}), "file") == 2);
+  endfor
+  ## the overflow as a saturation of an inner node or of the output, or
+  ## as the input clipped (what an overflowing upper tank does to the flow
+  ## into the lower one), or the square-root outflow
+  r = G.tanks.R;
+  over = any (strcmp (r.effect, {"saturation", "state_nonlinearity"})) ...
+         || (strcmp (r.effect, "static_nonlinearity")
+             && any (strcmp ({r.model.channels.type}, "clip")));
+  assert (over);
+  assert (G.tanks.R.rmse_final < 0.5 * G.tanks.rmse_linear);
+  assert (G.axis.R.effect, "saturation");
+  assert (G.axis.R.rmse_final < G.axis.rmse_linear);
+
   if (! exist (fullfile (root, "..", "shared", "data", "emps"), "dir"))
     printf ("test_residtrace_demos: ../shared/data missing, skipped\n");
     return;

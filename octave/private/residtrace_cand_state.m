@@ -1,0 +1,73 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{c} =} residtrace_cand_state (@var{cur}, @var{ctx})
+## State-dependent-dynamics candidate of @code{residtrace}: a function of
+## the output acting inside the dynamics, F(p) y = B(p) u + sum_k g_k
+## y^(q_k), the terms entering like an input (gain g_k/F(p)):
+## @itemize
+## @item q = 1/2 (sign(y) sqrt|y|): the outflow of a tank through an
+## orifice (Torricelli), a square-root law; only when the output is
+## positive on at least 95 % of the samples (a level measured from its
+## physical zero);
+## @item q = 2: a time constant that depends on the operating point
+## (y' = -(a0 + a1 y) y + b u);
+## @item q = 3, and q = 2 with 3: a hardening or softening spring
+## (Duffing's equation).
+## @end itemize
+## y is the measured output (its noise biases the coefficients towards
+## zero, as errors in variables do); the simulation uses the model's own
+## output (plus its output offset), re-evaluated at each sub-step. The
+## variant with the smallest BIC on the estimation data is kept; it is
+## not tested (nor simulated) when none of its coefficients is three
+## standard deviations away from zero. Evidence: the coefficients g_k with their standard deviations.
+## @end deftypefn
+
+function c = residtrace_cand_state (cur, ctx)
+  c = residtrace_cand ("state_nonlinearity");
+  if (any (strcmp ({cur.channels.type}, "ypower")))
+    c.reason = "the model has a nonlinearity of the output already";
+    return;
+  endif
+  y = ctx.D.y;
+  pw = {[2], [3], [2 3]};
+  if (mean (y > 0) >= 0.95)
+    pw = [{0.5}, pw];
+  endif
+  tmpls = {}; names = {}; starts = {};
+  for k = 1:numel (pw)
+    t = cur;
+    for p = pw{k}
+      if (p == 0.5)
+        nm = "sqrt(y)";
+      else
+        nm = sprintf ("y^%d", p);
+      endif
+      t.channels(end+1) = residtrace_chan ("ypower", 0, p, 1, 0, nm);
+    endfor
+    tmpls{end+1} = t; starts{end+1} = {cur.F};
+    names{end+1} = ["output in the dynamics: " ...
+                    strjoin({t.channels(end-numel(pw{k})+1:end).name}, ", ")];
+  endfor
+  [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
+  if (isempty (m))
+    c.reason = "the estimation failed";
+    return;
+  endif
+  nadd = m.np - cur.np;
+  val = m.theta(end-nadd+1:end);
+  sd = sqrt (diag (m.cov))(end-nadd+1:end);
+  if (all (abs (val) < 3 * sd))
+    c.reason = sprintf (["the output terms are not significant on the ", ...
+                         "estimation data (%s +- %s)"],
+                        mat2str (val(:).', 3), mat2str (sd(:).', 2));
+    return;
+  endif
+  c.applicable = true;
+  c.model = m;
+  c.variant = m.variant_;
+  c.nadd = nadd;
+  c.evidence = struct ("term", "gains of the output terms", "value",
+                       val(:).', "std", sd(:).',
+                       "text", sprintf ("%s: coefficients %s +- %s",
+                                        c.variant, mat2str (val(:).', 4),
+                                        mat2str (sd(:).', 2)));
+endfunction
