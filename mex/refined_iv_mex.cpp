@@ -121,9 +121,15 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   opt.finish();
   ctid::DiscreteTransferFunction<double> controller;
   if (cnum.size() > 0 && discrete) {
-    controller = ctid::mex::read_transfer_function(
-        g, mxGetField(prhs[5], 0, "controller_num"),
-        mxGetField(prhs[5], 0, "controller_den"), "the controller");
+    if (cden.size() == 0 || (cnum.rows() > 1 && cnum.cols() > 1) ||
+        (cden.rows() > 1 && cden.cols() > 1)) {
+      g.fail("badOption",
+             "options 'controller_num' and 'controller_den' must be "
+             "non-empty vectors");
+    }
+    controller.numerator = cnum.reshaped();
+    controller.denominator = cden.reshaped();
+    g.check(ctid::validate_controller(controller));
     const double* r = g.matrix(prhs[4], "[r1 r2]", n, 2);
     problem.discrete_controller = &controller;
     problem.r1 = r;
