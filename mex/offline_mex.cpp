@@ -14,7 +14,7 @@
 //       svf_form, "scaling", ...)
 // returns instead the diagonal of the scaling matrix M_s of eq. (3.54) for
 // the SVF regression of this record (svfscaling, rlssvf/rsrivc 'scaling').
-#include "ctid/offline_iv.hpp"
+#include "ctid/refined_iv.hpp"
 #include "ctid/scaling.hpp"
 #include "gateway_common.hpp"
 

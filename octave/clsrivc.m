@@ -1,6 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} clsrivc (@var{data}, @var{datacl}, [@var{nb} @var{nf} @var{nk}], @var{Mc})
-## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}] =} clsrivc (@dots{}, @var{name}, @var{value})
+## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} clsrivc (@dots{}, @var{name}, @var{value})
 ## Closed-loop simplified refined IV estimate (CLSRIVC, thesis eqs.
 ## 2.47-2.50) of a continuous-time plant in the loop
 ## u = r1 + C(q^-1) (r2 - y) with a known discrete controller.
@@ -13,6 +13,12 @@
 ## discrete control-package tf. Options and outputs as for @code{srivc};
 ## the start is the closed-loop IVSVF (eq. 2.44).
 ##
+## CONTSID's form: @var{Mc} a @strong{continuous-time} control-package
+## @code{tf} C(p) in the loop u = C(p) (r - y), and @var{datacl} =
+## @code{iddata (y, r)} (its input is the reference r, or r itself as an
+## N-by-1 vector). The auxiliary model is then the continuous closed loop
+## x_hat = B Nc / (F Dc + B Nc) r, u_hat = F Nc / (F Dc + B Nc) r (nk = 0).
+##
 ## @strong{Example}
 ## @example
 ## Ts = 0.01; r1 = prbs (11, 20); N = numel (r1);
@@ -24,8 +30,8 @@
 ## @seealso{srivc, clrsrivc}
 ## @end deftypefn
 
-function [M, RT2, YIC] = clsrivc (varargin)
-  [M, RT2, YIC] = contsid_offline ("clsrivc", varargin);
+function [M, RT2, YIC, info] = clsrivc (varargin)
+  [M, RT2, YIC, info] = contsid_offline ("clsrivc", varargin);
 endfunction
 
 %!shared Ts, r1, C, y, x, u, N
@@ -45,6 +51,28 @@ endfunction
 %! pkg load control
 %! b = clsrivc (iddata (x, u, Ts), r1, [1 2 0], tf ([0.5 + 2 * Ts, -0.5], [1 -1], Ts), "lambda", 16);
 %! assert (b.theta, a.theta, 1e-9);
+
+%!test  # CONTSID form: continuous-time controller, datacl = iddata (y, r)
+%! pkg load control
+%! Tsc = 0.005; Nc = 4000; tc = (0:Nc-1)' * Tsc;
+%! randn ("state", 2);
+%! r = kron (sign (randn (Nc / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Cc = tf ([0.5 1], [1 0]);
+%! [a, b, c, d] = ssdata (feedback (G * Cc, 1));
+%! [a2, b2, c2, d2] = ssdata (feedback (Cc, G));
+%! yc = zeros (Nc, 1); uc = zeros (Nc, 1);
+%! E = expm ([a b; zeros(1, rows (a) + 1)] * Tsc);
+%! E2 = expm ([a2 b2; zeros(1, rows (a2) + 1)] * Tsc);
+%! s1 = zeros (rows (a), 1); s2 = zeros (rows (a2), 1);
+%! for k = 1:Nc
+%!   yc(k) = c * s1 + d * r(k); uc(k) = c2 * s2 + d2 * r(k);
+%!   s1 = E(1:end-1, 1:end-1) * s1 + E(1:end-1, end) * r(k);
+%!   s2 = E2(1:end-1, 1:end-1) * s2 + E2(1:end-1, end) * r(k);
+%! endfor
+%! yn = yc + 0.01 * randn (Nc, 1);
+%! [M, ~, ~, info] = clsrivc (iddata (yn, uc, Tsc), iddata (yn, r, Tsc), [1 2 0], Cc);
+%! assert (info.converged && info.stable);
+%! assert (M.theta, [2 3 3], 0.05);
 
 %!error <unstable> clsrivc (iddata (x, u, Ts), r1, [1 2 0], struct ("num", [-50 0], "den", [1 0]), "lambda", 16)
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0])

@@ -33,6 +33,13 @@
 ## @end table
 ## Without outputs it plots y and ys against time and prints the figures.
 ##
+## Option @code{"InitialCondition", "e"} (as MATLAB's @code{compare}): the
+## model's initial state is estimated on @var{data} (least squares on the
+## model's free responses, with the refined-IV engine, over the whole
+## record) and its free response added to @var{ys}; @code{estInfo.x0}
+## holds it and the printed summary says so.  Default @qcode{"z"}: from
+## rest (@code{estInfo.x0} empty).
+##
 ## @strong{Example}
 ## @example
 ## u = prbs (9, 8); Ts = 0.05;
@@ -61,6 +68,28 @@ function [ys, estInfo] = comparec (varargin)
              "comparec: INT must be increasing sample indices in 1..%d", N);
     endif
   endif
+  x0 = [];
+  if (numel (rest) == 2 && ischar (rest{1})
+      && strcmpi (rest{1}, "InitialCondition"))
+    if (! ischar (rest{2})
+        || ! any (strcmpi (rest{2}, {"e", "z", "estimate", "zero"})))
+      error ("comparec:badOption",
+             "comparec: InitialCondition must be 'e' (estimate) or 'z'");
+    endif
+    if (thm)
+      error ("comparec:badOption", ["comparec: InitialCondition needs an ", ...
+                                    "LTI model, not a recursive estimate"]);
+    endif
+    if (any (strcmpi (rest{2}, {"e", "estimate"})))
+      t = d.t;
+      if (d.uniform)
+        t = d.Ts;
+      endif
+      M = varargin{d.nconsumed + 1};
+      [yhat, x0] = contsid_initial_state ("comparec", M, d.y, yhat, t);
+    endif
+    rest = {};
+  endif
   if (! isempty (rest))
     error ("comparec:badOption", "comparec: unexpected extra arguments");
   endif
@@ -72,6 +101,7 @@ function [ys, estInfo] = comparec (varargin)
                      ./ sqrt (sum ((y - mean (y)) .^ 2)));
   info.MSE = mean (e .^ 2);
   info.RMSE = sqrt (info.MSE);
+  info.x0 = x0;
   if (nargout > 0)
     ys = yh;
     estInfo = info;
@@ -90,6 +120,9 @@ function [ys, estInfo] = comparec (varargin)
   xlabel ("time (s)");
   printf ("output %d: fit = %.2f %%, RT2 = %.4f, MSE = %.4g\n",
           [1:ny; info.Fit; info.RT2; info.MSE]);
+  if (! isempty (x0))
+    printf ("initial state estimated: y0^(i)(t0) = %s\n", mat2str (x0', 4));
+  endif
 endfunction
 
 %!shared u, Ts, x, M
@@ -135,6 +168,27 @@ endfunction
 %! yh = comparec (iddata (x, u, Ts), idctm (4, [1 2.4 4]));
 %! assert (yh, x, 1e-12);
 
+%!test  # InitialCondition 'e': a record that starts away from rest
+%! u = prbs (8, 6); Ts = 0.05; N = numel (u);
+%! M = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
+%! t = (0:N-1)' * Ts;
+%! a = [0 1; -4 -2.4]; c = [4 0];  # controllable form of 4/(s^2+2.4s+4)
+%! x0 = [1; -2];
+%! yfree = zeros (N, 1);
+%! for k = 1:N
+%!   yfree(k) = c * expm (a * t(k)) * x0;
+%! endfor
+%! y = simc (M, u, Ts) + yfree;
+%! [~, iz] = comparec (iddata (y, u, Ts), M);
+%! [ye, ie] = comparec (iddata (y, u, Ts), M, "InitialCondition", "e");
+%! assert (iz.Fit < 99);
+%! assert (isempty (iz.x0));
+%! assert (ye, y, 1e-8);
+%! assert (ie.Fit, 100, 1e-6);
+%! out = evalc ("comparec (iddata (y, u, Ts), M, 'InitialCondition', 'e')");
+%! assert (! isempty (strfind (out, "initial state estimated")));
+
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "InitialCondition", "x")
 %!error id=comparec:badInput comparec (iddata (x, u, Ts))
 %!error id=comparec:badInput comparec (iddata (x, u, Ts), "model")
 %!error id=comparec:badInput comparec (iddata (x, u, Ts), [2.4 4 4])

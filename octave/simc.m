@@ -71,6 +71,12 @@
 ## @var{x} the noise-free output, @var{uc} the input applied to the system
 ## (differs from the data in closed loop).
 ##
+## Option @code{"InitialCondition"}: @qcode{"z"} (default, from rest) or
+## @qcode{"e"}: with iddata input data that carry the measured output, the
+## model's initial state is estimated on that output (least squares on the
+## free responses, the refined-IV engine with every coefficient fixed) and
+## its free response is added to the simulated output.
+##
 ## @strong{Algorithm.} Each input's transfer function is realised in
 ## controllable canonical form (for nb = 1 the gain enters with the input, so
 ## x^(na) + a1(t) x^(na-1) + .. = b0(t) u is solved exactly); the input is
@@ -101,7 +107,7 @@ function varargout = simc (varargin)
   endif
   defaults = struct ("SNR", [], "noisevar", [], "noise", [],
                      "InterSample", [], "x0", [], "substeps", 1,
-                     "controller", [], "r2", []);
+                     "controller", [], "r2", [], "InitialCondition", "z");
   opts = contsid_options (fname, defaults, rest);
   if (! isempty (opts.InterSample))
     intersample = check_intersample (fname, opts.InterSample);
@@ -166,6 +172,30 @@ function varargout = simc (varargin)
   [outs{:}] = call_gateway (numel (outs), u, t, intersample, orders, theta,
                             substeps, x0, e, c_num, c_den, r2);
   varargout = outs([2 1 3:end]);
+  ic = opts.InitialCondition;
+  if (! ischar (ic) || ! any (strcmpi (ic, {"z", "e", "zero", "estimate"})))
+    error ("simc:badOption",
+           "simc: InitialCondition must be 'z' (zero) or 'e' (estimate)");
+  endif
+  if (any (strcmpi (ic, {"e", "estimate"})))
+    ## The free response of the initial state, fitted to the measured
+    ## output of the iddata given as input data (with the refined-IV
+    ## engine, every model coefficient fixed).
+    if (! isa (varargin{2}, "iddata") || isempty (get (varargin{2},
+                                                       "OutputData"))
+        || rows (theta) != 1 || ! isempty (c_num))
+      error ("simc:badOption", ["simc: InitialCondition 'e' needs iddata ", ...
+                                "with the measured output and a constant ", ...
+                                "open-loop model"]);
+    endif
+    xe = contsid_initial_state (fname, varargin{1},
+                                get (varargin{2}, "OutputData"), outs{1}, t);
+    y0 = xe - outs{1};
+    varargout{1} += y0;
+    if (numel (varargout) > 1)
+      varargout{2} += y0;
+    endif
+  endif
 endfunction
 
 function varargout = call_gateway (nout, u, t, intersample, orders, theta,
@@ -614,3 +644,16 @@ endfunction
 %! theta = [1.2 * wn, wn .^ 2, wn .^ 2];
 %! y = simc (theta, [2 1 0], double (mod (t, 10) < 5), Ts);
 %! plot (t, y); xlabel ("t (s)"); ylabel ("y");
+
+%!test  # InitialCondition 'e': the free response fitted to the measured y
+%! pkg load control
+%! u = prbs (8, 6); Ts = 0.05; N = numel (u); t = (0:N-1)' * Ts;
+%! M = idctm (4, [1 2.4 4]);
+%! [a, b, c] = ssdata (ss (tf (4, [1 2.4 4])));
+%! yfree = arrayfun (@(tk) c * expm (a * tk) * [1; -2], t);
+%! y = simc (M, u, Ts) + yfree;
+%! ye = simc (M, iddata (y, u, Ts), "InitialCondition", "e");
+%! assert (ye, y, 1e-8);
+
+%!error id=simc:badOption simc (idctm (4, [1 2.4 4]), ones (20, 1), 0.1, "InitialCondition", "e")
+%!error id=simc:badOption simc (idctm (4, [1 2.4 4]), ones (20, 1), 0.1, "InitialCondition", "q")

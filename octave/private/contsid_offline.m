@@ -1,16 +1,19 @@
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{M}, @var{RT2}, @var{YIC}] =} contsid_offline (@var{fname}, @var{args})
+## @deftypefn {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} contsid_offline (@var{fname}, @var{args})
 ## Shared back-end of lssvf, ivsvf, srivc and clsrivc: parses the data,
-## nn, the cut-off and the options, calls the compiled gateway and builds
-## the idctm model. For srivc/clsrivc without a cut-off, SRIVC is started
-## from IVSVF at 12 cut-offs log-spaced between 5/T and 0.5*pi/Ts and the
-## result with the smallest simulation-error variance is kept.
+## nn, the cut-off and the options, runs the refined-IV engine
+## (@code{contsid_refined_iv}, core/include/ctid/refined_iv.hpp) and builds
+## the model (built by @code{idctm}, which returns an @code{idpoly}, in @code{make_model}). Without a
+## cut-off, srivc/clsrivc start from IVSVF at 12 cut-offs log-spaced
+## between 5/T and 0.5*pi/Ts; SRIVC runs from the best starts (by
+## simulation error) and keeps the best stable, converged result.
+## A model that did not converge or is unstable comes with a warning
+## (@var{fname}:notConverged, @var{fname}:unstable).
 ## @end deftypefn
 
-function [M, RT2, YIC] = contsid_offline (fname, args)
+function [M, RT2, YIC, info] = contsid_offline (fname, args)
   refined = any (strcmp (fname, {"srivc", "clsrivc"}));
   closed = strcmp (fname, "clsrivc");
-  c_num = []; c_den = []; r1 = []; r2 = [];
   if (closed)
     ## clsrivc (data, datacl, nn, Mc, ...)
     if (numel (args) < 4)
@@ -23,15 +26,20 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
   if (refined)
     form = "f";
     defaults = struct ("lambda_svf", [], "lambda", [], "Tol", 1e-6,
-                       "MaxIter", 20, "InitMethod", "ivsvf",
-                       "svf", "normalised");
+                       "MaxIter", 30, "InitMethod", "ivsvf",
+                       "svf", "normalised", "InitialState", "zero",
+                       "OutputOffset", false, "InputOffset", false,
+                       "TimeScale", "auto", "MaxStarts", 3);
   else
     form = "a";
     defaults = struct ("lambda_svf", [], "svf", "normalised");
   endif
+  ## CONTSID's MISO form [nb1..nbm nf1..nfm nk1..nkm]: one denominator per
+  ## input ('Different'); the parser reads its common-denominator twin.
+  [args, nf_each] = different_denominators (fname, refined, args);
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults, args{:});
   n = rows (d.y);
-  np = orders.np;
+  nu = columns (d.u);
   na = orders.na;
   if (refined && ! isempty (opts.lambda))
     opts.lambda_svf = opts.lambda;
@@ -41,18 +49,68 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
   else
     t = d.t;
   endif
-  if (closed)
-    [r1, r2] = read_datacl (datacl, n);
-    [c_num, c_den] = read_controller (Mc, d);
-  endif
   if (! ischar (opts.svf)
       || ! any (strcmpi (opts.svf, {"normalised", "normalized", "ordinary"})))
     error ([fname ":badOption"], "%s: svf must be 'normalised' or 'ordinary'",
            fname);
   endif
-  tol = 1e-6; maxiter = 20; theta_init = [];
+
+  e = struct ("nb", orders.nb, "nk", orders.nk,
+              "intersample", d.intersample);
+  if (isempty (nf_each))
+    e.nf = na;
+    e.group = ones (1, nu);
+  else
+    e.nf = nf_each;
+    e.group = 1:nu;
+  endif
+  np = sum (e.nf) + sum (e.nb);
+  lam = opts.lambda_svf;
+  if (! isempty (lam))
+    if (! isnumeric (lam) || ! isreal (lam) || ! isscalar (lam)
+        || ! isfinite (lam) || lam <= 0)
+      error ([fname ":badInput"], ...
+             "%s: lambda must be a finite real scalar > 0", fname);
+    endif
+    e.cutoffs = lam;
+  elseif (! refined)
+    error ([fname ":badOption"], ...
+           "%s: the SVF cut-off lambda (rad/s) is required", fname);
+  endif
   if (refined)
-    tol = opts.Tol; maxiter = opts.MaxIter;
+    e.method = "srivc";
+    read_refined_options ();
+  else
+    e.method = fname;
+  endif
+  if (closed)
+    read_loop ();
+  endif
+
+  [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
+
+  info.lambda = info.cutoff;
+  if (refined && ! info.converged)
+    warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
+             fname, info.reason);
+  endif
+  if (! info.stable)
+    warning ([fname ":unstable"], "%s: the estimated model is unstable",
+             fname);
+  endif
+  M = make_model (fname, e, theta, cov, info, d, nu);
+  if (nargout > 1)
+    s2 = info.noise_variance;
+    vy = var (d.y, 1);
+    RT2 = 1 - s2 * (n - np) / n / vy;
+    th = theta(1:np);
+    YIC = log (s2 / vy) + log (mean (diag (cov(1:np, 1:np)) ./ th .^ 2));
+  endif
+
+  ## The refined-method options into the engine's struct e.
+  function read_refined_options ()
+    tol = opts.Tol;
+    maxiter = opts.MaxIter;
     if (! isnumeric (tol) || ! isreal (tol) || ! isscalar (tol) || ! (tol > 0))
       error ([fname ":badInput"], "%s: Tol must be a real scalar > 0", fname);
     endif
@@ -60,87 +118,156 @@ function [M, RT2, YIC] = contsid_offline (fname, args)
         || maxiter != fix (maxiter) || maxiter < 1)
       error ([fname ":badInput"], "%s: MaxIter must be an integer >= 1", fname);
     endif
-    theta_init = init_estimate (fname, opts.InitMethod, orders);
-  endif
-
-  lam = opts.lambda_svf;
-  if (isempty (lam))
-    if (! refined)
-      error ([fname ":badOption"], ...
-             "%s: the SVF cut-off lambda (rad/s) is required", fname);
+    e.tol = tol;
+    e.maxiter = maxiter;
+    e.theta_init = init_estimate (fname, opts.InitMethod, e, np);
+    if (! any (strcmpi (opts.InitialState, {"zero", "estimate", "e", "z"})))
+      error ([fname ":badOption"],
+             "%s: InitialState must be 'zero' or 'estimate'", fname);
     endif
-    T = t(end) - t(1);
-    if (d.uniform)
-      T = (n - 1) * d.Ts;
-      nyquist = pi / d.Ts;
+    e.initial_state = any (strcmpi (opts.InitialState, {"estimate", "e"}));
+    e.output_offset = logical_option (opts.OutputOffset, "OutputOffset", 1);
+    e.input_offset = logical_option (opts.InputOffset, "InputOffset", nu);
+    ts = opts.TimeScale;
+    if (ischar (ts) && strcmpi (ts, "auto"))
+      e.time_scale = 0;
+    elseif (isnumeric (ts) && isscalar (ts) && isreal (ts) && ts > 0
+            && isfinite (ts))
+      e.time_scale = ts;
     else
-      nyquist = pi / median (diff (d.t));
+      error ([fname ":badOption"],
+             "%s: TimeScale must be 'auto' or a scale > 0 (rad/s)", fname);
     endif
-    candidates = logspace (log10 (5 / T), log10 (0.5 * nyquist), 12);
-  else
-    if (! isnumeric (lam) || ! isreal (lam) || ! isscalar (lam)
-        || ! isfinite (lam) || lam <= 0)
-      error ([fname ":badInput"], ...
-             "%s: lambda must be a finite real scalar > 0", fname);
+    ms = opts.MaxStarts;
+    if (! isnumeric (ms) || ! isscalar (ms) || ms != fix (ms) || ms < 1)
+      error ([fname ":badOption"], "%s: MaxStarts must be an integer >= 1",
+             fname);
     endif
-    candidates = lam;
-  endif
-  method = fname;
-  best = [];
-  for lam_i = candidates
-    try
-      [theta, cov, s2, iters, conv] = offline_mex (fname, d.y, d.u, t,
-          d.intersample, na, orders.nb, orders.nk, lam_i, lower (opts.svf),
-          method, tol, maxiter, theta_init, c_num, c_den, r1, r2);
-    catch err
-      if (numel (candidates) > 1 && ! isempty (strfind (err.identifier,
-                                                         "numericalFailure")))
-        continue;                        # that cut-off failed; try the next
+    e.max_starts = ms;
+  endfunction
+
+  function v = logical_option (v, name, count)
+    if (! (islogical (v) || isnumeric (v)) || ! any (numel (v) == [1 count]))
+      error ([fname ":badOption"], "%s: %s must be true/false", fname, name);
+    endif
+    v = logical (v(:).');
+  endfunction
+
+  ## clsrivc: a discrete controller (the thesis' loop u = r1 + C (r2 - y))
+  ## or a continuous-time tf (CONTSID's loop u = C(p) (r - y), datacl =
+  ## iddata (y, r)).
+  function read_loop ()
+    if (nu != 1)
+      error ("clsrivc:badInput", "clsrivc: one input only");
+    endif
+    if (isa (Mc, "tf") && isct (Mc))
+      [num, den] = tfdata (Mc, "vector");
+      if (numel (num) > numel (den) || ! all (isfinite ([num(:); den(:)])))
+        error ("clsrivc:badInput", "clsrivc: the controller must be proper");
       endif
-      contsid_rethrow (err);
-    end_try_catch
-    if (isempty (best) || s2 < best.s2)
-      best = struct ("theta", theta, "cov", cov, "s2", s2, "iters", iters,
-                     "conv", conv, "lambda", lam_i);
+      r = read_datacl (datacl, n, true);
+      e.controller = struct ("num", num, "den", den);
+      e.reference = r;
+      return;
     endif
-  endfor
-  if (isempty (best))
-    error ([fname ":numericalFailure"], ...
-           "%s: no cut-off frequency gave an estimate", fname);
+    [r1, r2] = read_datacl (datacl, n, false);
+    Ts = NaN;
+    if (d.uniform)
+      Ts = d.Ts;
+    endif
+    [c_num, c_den] = contsid_controller ("clsrivc", Mc, Ts);
+    e.controller = struct ("num", c_num, "den", c_den, "discrete", true);
+    e.reference = [r1, r2];
+  endfunction
+endfunction
+
+function [args, nf_each] = different_denominators (fname, refined, args)
+  nf_each = [];
+  if (! refined || numel (args) < 2)
+    return;
   endif
-  if (! best.conv)
-    warning ([fname ":notConverged"], ...
-             ["%s: no convergence in %d iterations; the last iterate ", ...
-              "is returned"],
-             fname, best.iters);
+  if (isa (args{1}, "iddata"))
+    k = 2;
+    nu = size (get (args{1}, "InputData"), 2);
+  elseif (numel (args) >= 4 && isnumeric (args{2}))
+    k = 4;
+    nu = min (size (args{2}));
+    if (isvector (args{2}))
+      nu = 1;
+    endif
+  else
+    return;
   endif
-  a = best.theta(1:na).';
-  B = {};
-  off = na;
-  for j = 1:numel (orders.nb)
-    B{j} = best.theta(off+1:off+orders.nb(j)).';
-    off += orders.nb(j);
-  endfor
-  if (numel (B) == 1)
-    B = B{1};
+  nn = args{k};
+  if (nu > 1 && isnumeric (nn) && isvector (nn) && numel (nn) == 3 * nu
+      && all (isfinite (nn)) && all (nn == fix (nn)))
+    nn = nn(:).';
+    nf_each = nn(nu+1:2*nu);
+    if (any (nf_each < 1))
+      error ([fname ":badInput"], "%s: nn: every nf must be >= 1", fname);
+    endif
+    if (any (nn(1:nu) > nf_each + 1))
+      error ([fname ":badInput"], ...
+             "%s: nn: nb_j must be <= nf_j + 1 (proper model)", fname);
+    endif
+    args{k} = [nn(1:nu), max(nf_each), nn(2*nu+1:end)];
   endif
+endfunction
+
+## The model, built in one place (the idctm call) from the engine's theta.
+function M = make_model (fname, e, theta, cov, info, d, nu)
   Ts = [];
   if (d.uniform)
     Ts = d.Ts;
   endif
-  M = idctm (struct ("B", {B}, "F", [1 a], "nk", orders.nk, "Ts", Ts,
-                     "InterSample", d.intersample, "covariance", best.cov,
-                     "noise_variance", best.s2, "method", fname,
-                     "iterations", best.iters, "converged", best.conv,
-                     "Report", fit_report (d.y, best.s2, n, np)));
-  if (nargout > 1)
-    RT2 = 1 - best.s2 * (n - np) / n / var (d.y, 1);
-    YIC = log (best.s2 / var (d.y, 1)) ...
-          + log (mean (diag (best.cov) ./ best.theta .^ 2));
+  B = info.B;
+  F = info.F;
+  np = sum (e.nf) + sum (e.nb);
+  th = theta(1:np);
+  P = cov(1:np, 1:np);
+  report = fit_report (d.y, info.noise_variance, rows (d.y), np);
+  if (numel (F) > 1)
+    ## 'Different' denominators: a model with one F per input where the
+    ## model class has them, else the exact common-denominator form
+    ## B_j prod_(i != j) F_i / prod F_i.
+    try
+      M = idctm (struct ("B", {B}, "F", {F}, "nk", e.nk, "Ts", Ts,
+                         "InterSample", d.intersample, "covariance", P,
+                         "noise_variance", info.noise_variance,
+                         "method", fname, "iterations", info.iterations,
+                         "converged", info.converged, "Report", report));
+      return;
+    catch
+    end_try_catch
+    Fc = 1;
+    for j = 1:nu
+      Fc = conv (Fc, F{j});
+    endfor
+    for j = 1:nu
+      Bj = B{j};
+      for i = [1:j-1, j+1:nu]
+        Bj = conv (Bj, F{i});
+      endfor
+      B{j} = Bj;
+    endfor
+    F = Fc;
+    th = [F(2:end).'; cell2mat(cellfun (@(b) b(:), B(:), "UniformOutput",
+                                        false))];
+    P = [];                              # not in this parameterisation
+  else
+    F = F{1};
   endif
+  if (numel (B) == 1)
+    B = B{1};
+  endif
+  M = idctm (struct ("B", {B}, "F", F, "nk", e.nk, "Ts", Ts,
+                     "InterSample", d.intersample, "covariance", P,
+                     "noise_variance", info.noise_variance, "method", fname,
+                     "iterations", info.iterations,
+                     "converged", info.converged, "Report", report));
 endfunction
 
-## Report.Fit of the model: best.s2 is the simulation-error variance with
+## Report.Fit of the model: s2 is the simulation-error variance with
 ## n - np degrees of freedom, so the mean square error is s2 (n - np) / n.
 function r = fit_report (y, s2, n, np)
   mse = s2 * (n - np) / n;
@@ -150,7 +277,7 @@ function r = fit_report (y, s2, n, np)
   r.DataUsed = struct ("Length", n);
 endfunction
 
-function theta = init_estimate (fname, init, orders)
+function theta = init_estimate (fname, init, e, np)
   theta = [];
   if (ischar (init) && strcmpi (init, "ivsvf"))
     return;
@@ -158,21 +285,31 @@ function theta = init_estimate (fname, init, orders)
   if (isa (init, "idpoly"))
     init = init.theta;
   endif
-  if (! isnumeric (init) || ! isreal (init) || numel (init) != orders.np
+  if (! isnumeric (init) || ! isreal (init) || numel (init) != np
       || any (! isfinite (init)))
     error ([fname ":badOption"], ...
            "%s: InitMethod must be 'ivsvf', an idpoly or %d values [f b]",
-           fname, orders.np);
+           fname, np);
   endif
   theta = double (init(:));
-  if (any (real (roots ([1; theta(1:orders.na)])) >= 0))
-    error ([fname ":badInput"], "%s: the initial model must be stable", fname);
-  endif
+  off = 0;
+  for k = 1:numel (e.nf)
+    if (any (real (roots ([1; theta(off + (1:e.nf(k)))])) >= 0))
+      error ([fname ":badInput"], "%s: the initial model must be stable",
+             fname);
+    endif
+    off += e.nf(k);
+  endfor
 endfunction
 
-function [r1, r2] = read_datacl (datacl, n)
+function varargout = read_datacl (datacl, n, reference)
   if (isa (datacl, "iddata"))
-    datacl = get (datacl, "InputData");
+    if (reference)
+      ## CONTSID: datacl = iddata (y, r), the reference is its input.
+      datacl = get (datacl, "InputData");
+    else
+      datacl = get (datacl, "InputData");
+    endif
     if (iscell (datacl))
       datacl = datacl{1};
     endif
@@ -186,22 +323,22 @@ function [r1, r2] = read_datacl (datacl, n)
   if (isvector (datacl))
     datacl = datacl(:);
   endif
+  if (reference)
+    if (rows (datacl) != n || columns (datacl) != 1)
+      error ("clsrivc:dimensionMismatch",
+             "clsrivc: the reference r must be %d-by-1", n);
+    endif
+    varargout{1} = double (datacl);
+    return;
+  endif
   if (rows (datacl) != n || columns (datacl) > 2)
     error ("clsrivc:dimensionMismatch", ...
            "clsrivc: datacl must be %d-by-1 (r1) or %d-by-2 ([r1 r2])", n, n);
   endif
-  r1 = double (datacl(:, 1));
+  varargout{1} = double (datacl(:, 1));
   if (columns (datacl) == 2)
-    r2 = double (datacl(:, 2));
+    varargout{2} = double (datacl(:, 2));
   else
-    r2 = zeros (n, 1);
+    varargout{2} = zeros (n, 1);
   endif
-endfunction
-
-function [num, den] = read_controller (C, d)
-  Ts = NaN;
-  if (d.uniform)
-    Ts = d.Ts;
-  endif
-  [num, den] = contsid_controller ("clsrivc", C, Ts);
 endfunction

@@ -23,9 +23,9 @@
 // item 2). The covariance is reported for the monic prefilter 1/A(p) of the
 // thesis, for which the filtered equation error is the white noise e itself.
 //
-// Every iterate that drives the prefilter and the auxiliary model is checked
-// with the Routh test (eq. 3.10); an unstable one has its roots reflected
-// into the left half plane. The returned theta is the raw last iterate.
+// The refined methods (SRIVC, CLSRIVC) are run by the engine of
+// refined_iv.hpp, which uses the pieces of this header (the QR solution,
+// the closed-loop auxiliary model); srivc() and clsrivc() live there.
 #pragma once
 
 #include <cmath>
@@ -415,80 +415,6 @@ Status svf_iv(const ModelOrders& orders, const SvfSettings<S>& svf,
                                    estimate);
 }
 
-// SRIVC (open loop) or CLSRIVC (closed loop) iterations.
-template <typename S>
-Status refined_iv(const ModelOrders& orders, const SvfSettings<S>& init_svf,
-                  const SrivcSettings<S>& settings, const RecordView<S>& record,
-                  const Loop<S>& loop, OfflineEstimate<S>* estimate) {
-  Status status = validate_problem(orders, init_svf, record, loop, estimate);
-  if (!status.ok()) return status;
-  status = validate_srivc_settings(orders, settings);
-  if (!status.ok()) return status;
-  Vector<S> previous = settings.theta_init;
-  if (previous.size() == 0) {
-    OfflineEstimate<S> start;
-    status = svf_iv(orders, init_svf, record, loop, &start);
-    if (!status.ok()) return status;
-    previous = start.theta;
-  }
-  const int na = orders.na;
-  const InterSample y_rule = init_svf.y_intersample;
-  const InterSample u_rule = init_svf.u_intersample;
-  Vector<S> drive, xhat, uhat, target, unused;
-  Matrix<S> Phi, Z;
-  IvSolution<S> solution;
-  S gain = 1;
-  bool converged = false;
-  int iteration = 0;
-  while (iteration < settings.max_iterations && !converged) {
-    ++iteration;
-    status = stabilised(orders, previous, drive);
-    if (!status.ok()) return status;
-    status =
-        simulate_auxiliary(orders, u_rule, drive, record, loop, xhat, uhat);
-    if (!status.ok()) return status;
-    const Vector<S> a = drive.head(na);
-    gain = a(na - 1);  // unit static gain a_na / A(p)
-    build_prefiltered_regression(orders, a, gain, y_rule, u_rule, record, Phi,
-                                 target);
-    build_prefiltered_regression(orders, a, gain, y_rule, u_rule,
-                                 auxiliary_record(record, loop, xhat, uhat), Z,
-                                 unused);
-    status = solve_iv(Z, Phi, target, "instrument", solution);
-    if (!status.ok()) return status;
-    const S change = (solution.theta - previous).norm() / solution.theta.norm();
-    converged = change < settings.tolerance;
-    previous = solution.theta;
-  }
-  S noise_variance = 0;
-  status = simulation_noise_variance(orders, u_rule, solution.theta, record,
-                                     noise_variance);
-  if (!status.ok()) return status;
-  estimate->theta = solution.theta;
-  // sigma^2 (sum zeta_f zeta_f^T)^-1 for the monic prefilter 1/A(p): the
-  // instruments filtered by a_na/A(p) are `gain` times larger.
-  if (std::isfinite(noise_variance)) {
-    estimate->covariance =
-        (noise_variance * gain * gain) * solution.inverse_gram;
-  } else {
-    estimate->covariance =
-        Matrix<S>::Constant(orders.num_parameters(), orders.num_parameters(),
-                            std::numeric_limits<S>::infinity());
-  }
-  estimate->noise_variance = noise_variance;
-  estimate->iterations = iteration;
-  estimate->converged = converged;
-  if (!converged) {
-    return Status(ErrorCode::kNotConverged,
-                  "the iterations did not converge within " +
-                      std::to_string(settings.max_iterations) +
-                      " iteration(s) (tolerance " +
-                      std::to_string(static_cast<double>(settings.tolerance)) +
-                      "); the estimate holds the last iterate");
-  }
-  return Status::Ok();
-}
-
 }  // namespace offline_iv_detail
 
 // IVSVF, eqs. (2.4)-(2.7).
@@ -497,36 +423,6 @@ Status ivsvf(const ModelOrders& orders, const SvfSettings<S>& svf,
              const RecordView<S>& record, OfflineEstimate<S>* estimate) {
   return offline_iv_detail::svf_iv(orders, svf, record,
                                    offline_iv_detail::Loop<S>(), estimate);
-}
-
-// SRIVC, eqs. (2.8)-(2.13). Started from settings.theta_init or IVSVF with
-// init_svf. Covariance: noise_variance (sum zeta_f zeta_f^T)^-1 with the
-// instruments of the last iteration. Returns kNotConverged (estimate filled
-// with the last iterate, converged = false) after max_iterations.
-template <typename S>
-Status srivc(const ModelOrders& orders, const SvfSettings<S>& init_svf,
-             const SrivcSettings<S>& settings, const RecordView<S>& record,
-             OfflineEstimate<S>* estimate) {
-  return offline_iv_detail::refined_iv(orders, init_svf, settings, record,
-                                       offline_iv_detail::Loop<S>(), estimate);
-}
-
-// CLSRIVC, eqs. (2.47)-(2.50), for u = r1 + C(q^-1)(r2 - y): record.u is
-// the measured plant input, r1 and r2 have N samples each. Started from
-// settings.theta_init or CLIVSVF, eq. (2.44), with init_svf. Needs a single
-// ZOH input.
-template <typename S>
-Status clsrivc(const ModelOrders& orders, const SvfSettings<S>& init_svf,
-               const SrivcSettings<S>& settings, const RecordView<S>& record,
-               const S* r1, const S* r2,
-               const DiscreteTransferFunction<S>& controller,
-               OfflineEstimate<S>* estimate) {
-  offline_iv_detail::Loop<S> loop;
-  loop.r1 = r1;
-  loop.r2 = r2;
-  loop.controller = &controller;
-  return offline_iv_detail::refined_iv(orders, init_svf, settings, record, loop,
-                                       estimate);
 }
 
 }  // namespace ctid

@@ -1,0 +1,190 @@
+// MEX gateway of the offline refined-IV engine (core/include/ctid/
+// refined_iv.hpp), called by octave/private/contsid_refined_iv.m:
+//
+//   [theta, cov, info] = refined_iv_mex (fname, y, w, t, r, opts)
+//
+// y N-by-1; w N-by-m (the inputs and extra regressors, one channel each);
+// t a scalar Ts or the N sampling instants; r the reference (N-by-1) of a
+// closed loop with a continuous-time controller, or []. opts fields (see
+// RivProblem/RivSettings): method ('srivc' | 'ivsvf' | 'lssvf'), nf (order
+// of each denominator), group, nb, nk, intersample (per channel; group
+// 1-based, intersample 0 = zoh, 1 = foh), y_intersample, fixed and
+// fixed_values (np each, or absent), theta_init, cutoffs, tol, maxiter,
+// max_starts, time_scale, integrator_pole, output_offset, initial_state,
+// controller_num, controller_den (descending powers of p; with
+// discrete_controller, powers of q^-1 and r = [r1 r2]). info: converged, stable, iterations,
+// reason, noise_variance, cutoff, time_scale, starts, condition, x0,
+// offset, simulated, free_response.
+#include <algorithm>
+
+#include "ctid/refined_iv.hpp"
+#include "gateway_common.hpp"
+#include "options_reader.hpp"
+
+namespace {
+
+using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
+
+mxArray* column(const ctid::Vector<double>& v) {
+  mxArray* a = ctid::mex::make_output_matrix(v.size(), 1);
+  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
+  return a;
+}
+
+std::vector<double> to_std(const Eigen::MatrixXd& m) {
+  return std::vector<double>(m.data(), m.data() + m.size());
+}
+
+ctid::InterSample rule_of(const Gateway& g, int code) {
+  if (code == 0) return ctid::InterSample::kZoh;
+  if (code == 1) return ctid::InterSample::kFoh;
+  g.fail("badOption", "intersample codes must be 0 (zoh) or 1 (foh)");
+}
+
+void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                        const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput", "the gateway takes 6 arguments, got " +
+                           std::to_string(nrhs));
+  }
+  if (nlhs > 3) g.fail("badInput", "at most 3 outputs");
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
+  const long n = record.num_samples;
+  const int m = static_cast<int>(record.num_inputs);
+  ctid::RivData<double> data;
+  data.y = record.y;
+  data.w = record.u;
+  data.num_samples = n;
+  data.ts = record.ts;
+  data.instants = record.instants;
+
+  ctid::RivProblem<double> problem;
+  ctid::RivSettings<double> settings;
+  OptionsReader opt(g, prhs[5]);
+  settings.method = opt.choice<ctid::RivMethod>(
+      "method",
+      {{"srivc", ctid::RivMethod::kSrivc},
+       {"ivsvf", ctid::RivMethod::kIvsvf},
+       {"lssvf", ctid::RivMethod::kLssvf}},
+      ctid::RivMethod::kSrivc);
+  problem.nf = opt.integer_vector("nf");
+  const std::vector<int> group = opt.integer_vector("group");
+  const std::vector<int> nb = opt.integer_vector("nb");
+  const std::vector<int> nk = opt.integer_vector("nk");
+  const std::vector<int> rules =
+      opt.integer_vector("intersample", std::vector<int>(m, 0));
+  if (static_cast<int>(group.size()) != m ||
+      static_cast<int>(nb.size()) != m || static_cast<int>(nk.size()) != m ||
+      static_cast<int>(rules.size()) != m) {
+    g.fail("dimensionMismatch",
+           "group, nb, nk and intersample need one entry per column of w (" +
+               std::to_string(m) + ")");
+  }
+  for (int j = 0; j < m; ++j) {
+    ctid::RivChannel c;
+    c.group = group[j] - 1;
+    c.nb = nb[j];
+    c.nk = nk[j];
+    c.rule = rule_of(g, rules[j]);
+    problem.channels.push_back(c);
+  }
+  problem.y_rule = rule_of(g, opt.integer("y_intersample", 1));
+  problem.output_offset = opt.flag("output_offset", false);
+  problem.initial_state = opt.flag("initial_state", false);
+  const Eigen::MatrixXd fixed = opt.matrix("fixed");
+  const Eigen::MatrixXd fixed_values = opt.matrix("fixed_values");
+  const int np = problem.num_parameters();
+  if (fixed.size() > 0) {
+    if (fixed.size() != np || fixed_values.size() != np) {
+      g.fail("dimensionMismatch", "fixed and fixed_values need " +
+                                      std::to_string(np) + " entries each");
+    }
+    for (int i = 0; i < np; ++i) problem.fixed.push_back(fixed(i) != 0);
+    problem.fixed_values = Eigen::Map<const Eigen::VectorXd>(
+        fixed_values.data(), fixed_values.size());
+  }
+  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
+  if (theta_init.size() > 0) {
+    settings.theta_init = Eigen::Map<const Eigen::VectorXd>(theta_init.data(),
+                                                            theta_init.size());
+  }
+  settings.cutoffs = to_std(opt.matrix("cutoffs"));
+  settings.tolerance = opt.scalar("tol", 1e-6);
+  settings.max_iterations = opt.integer("maxiter", 30);
+  settings.max_starts = opt.integer("max_starts", 3);
+  settings.time_scale = opt.scalar("time_scale", 0);
+  settings.integrator_pole = opt.scalar("integrator_pole", 0);
+  const Eigen::MatrixXd cnum = opt.matrix("controller_num");
+  const Eigen::MatrixXd cden = opt.matrix("controller_den");
+  const bool discrete = opt.flag("discrete_controller", false);
+  opt.finish();
+  ctid::DiscreteTransferFunction<double> controller;
+  if (cnum.size() > 0 && discrete) {
+    controller = ctid::mex::read_transfer_function(
+        g, mxGetField(prhs[5], 0, "controller_num"),
+        mxGetField(prhs[5], 0, "controller_den"), "the controller");
+    const double* r = g.matrix(prhs[4], "[r1 r2]", n, 2);
+    problem.discrete_controller = &controller;
+    problem.r1 = r;
+    problem.r2 = r + n;
+  } else if (cnum.size() > 0) {
+    problem.controller_num =
+        Eigen::Map<const Eigen::VectorXd>(cnum.data(), cnum.size());
+    problem.controller_den =
+        Eigen::Map<const Eigen::VectorXd>(cden.data(), cden.size());
+    problem.reference = g.matrix(prhs[4], "the reference r", n, 1);
+  } else if (!mxIsEmpty(prhs[4])) {
+    g.fail("badInput", "a reference r needs a controller");
+  }
+
+  ctid::RivResult<double> result;
+  const ctid::Status status =
+      ctid::refined_iv(problem, settings, data, &result);
+  if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+
+  plhs[0] = column(result.theta);
+  if (nlhs >= 2) {
+    plhs[1] = ctid::mex::make_output_matrix(np, np);
+    std::copy(result.covariance.data(), result.covariance.data() + np * np,
+              mxGetPr(plhs[1]));
+  }
+  if (nlhs >= 3) {
+    const char* fields[] = {"converged", "stable",    "iterations",
+                            "reason",    "noise_variance", "cutoff",
+                            "time_scale", "starts",   "condition",
+                            "x0",        "offset",    "simulated",
+                            "free_response"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
+    mxSetField(info, 0, "converged",
+               mxCreateLogicalScalar(result.converged));
+    mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
+    mxSetField(info, 0, "iterations",
+               mxCreateDoubleScalar(result.iterations));
+    mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
+    mxSetField(info, 0, "noise_variance",
+               mxCreateDoubleScalar(result.noise_variance));
+    mxSetField(info, 0, "cutoff", mxCreateDoubleScalar(result.cutoff));
+    mxSetField(info, 0, "time_scale",
+               mxCreateDoubleScalar(result.time_scale));
+    mxSetField(info, 0, "starts", mxCreateDoubleScalar(result.starts_tried));
+    mxSetField(info, 0, "condition", mxCreateDoubleScalar(result.condition));
+    mxSetField(info, 0, "x0", column(result.x0));
+    mxSetField(info, 0, "offset", mxCreateDoubleScalar(result.offset));
+    mxSetField(info, 0, "simulated", column(result.simulated));
+    mxSetField(info, 0, "free_response", column(result.free_response));
+    plhs[2] = info;
+  }
+}
+
+}  // namespace
+
+void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  ctid::mex::run_gateway("srivc",
+                         {"lssvf", "ivsvf", "srivc", "clsrivc", "svfcutoff",
+                          "srivcstruc", "residtrace", "comparec", "simc"},
+                         nrhs, prhs, [&](const Gateway& g) {
+                           refined_iv_gateway(g, nlhs, plhs, nrhs, prhs);
+                         });
+}

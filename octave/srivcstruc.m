@@ -1,0 +1,228 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{V} =} srivcstruc (@var{ZE}, @var{ZV}, @var{NN})
+## @deftypefnx {} {@var{V} =} srivcstruc (@var{ZE}, @var{ZV}, @var{NN}, @var{name}, @var{value}, @dots{})
+## @deftypefnx {} {[@var{V}, @var{info}] =} srivcstruc (@dots{})
+## Fit SRIVC models (@code{srivc}, thesis eqs. 2.8-2.13) of several
+## structures and tabulate their quality, for @code{selcstruc} to pick one
+## (CONTSID's structure selection).
+##
+## @var{ZE}: estimation data (@code{iddata}); @var{ZV}: validation data of
+## the same inputs, or [] to judge on @var{ZE}. @var{NN}: the structures,
+## one row [nb nf nk] each (nb, nk one entry per input); a two-row
+## @var{NN} is read as the range [nb nf nk min; max] and expanded to every
+## structure in it with 1 <= nb <= nf + 1 (unless the option
+## @code{"NN", "list"} says the rows are structures).
+##
+## Options: @code{lambda} (the SVF cut-off of the start, default
+## srivc's automatic start), @code{n0e} and @code{n0v} (first sample
+## of ZE and ZV used to compute the criteria, default 1: the transient at
+## the start can be left out), @code{NN} (@qcode{"auto"}, @qcode{"range"}
+## or @qcode{"list"}), and any @code{srivc} option (e.g. @code{Tol},
+## @code{MaxIter}, @code{InitialState}).
+##
+## @var{V}: one row per structure, [RT2 YIC NN log(cond) N]: RT2 = 1 -
+## var(y - y_sim)/var(y) on ZV (on ZE without ZV), YIC the Young
+## information criterion on ZE, the structure, log10 of the condition
+## number of the instrument-regressor matrix, and the number of samples
+## used. A structure whose fit failed has RT2 = YIC = NaN. @var{info}:
+## per structure @code{models} (cell), @code{converged}, @code{stable},
+## @code{fit} (validation fit in per cent, 100 (1 - |y - y_sim| /
+## |y - mean y|)).
+##
+## @strong{Example}
+## @example
+## u = prbs (10, 8); Ts = 0.05; N = numel (u);
+## y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.1 * randn (N, 1);
+## ZE = iddata (y(1:end/2), u(1:end/2), Ts);
+## ZV = iddata (y(end/2+1:end), u(end/2+1:end), Ts);
+## V = srivcstruc (ZE, ZV, [1 1 0; 3 3 0]);
+## selcstruc (V)
+## @end example
+## @seealso{selcstruc, srivc}
+## @end deftypefn
+
+function [V, info] = srivcstruc (varargin)
+  fname = "srivcstruc";
+  if (nargin < 3)
+    error ("srivcstruc:badInput", "srivcstruc: expected ZE, ZV and NN");
+  endif
+  ZE = varargin{1};
+  ZV = varargin{2};
+  NN = varargin{3};
+  rest = varargin(4:end);
+  if (! isa (ZE, "iddata"))
+    error ("srivcstruc:badInput", "srivcstruc: ZE must be an iddata object");
+  endif
+  if (! isempty (ZV) && ! isa (ZV, "iddata"))
+    error ("srivcstruc:badInput",
+           "srivcstruc: ZV must be an iddata object or []");
+  endif
+  if (mod (numel (rest), 2) != 0)
+    error ("srivcstruc:badOption",
+           "srivcstruc: options come as name-value pairs");
+  endif
+  n0e = 1; n0v = 1; form = "auto";
+  pass = {};
+  for i = 1:2:numel (rest)
+    name = rest{i};
+    if (! ischar (name))
+      error ("srivcstruc:badOption", "srivcstruc: option names are strings");
+    endif
+    switch (lower (name))
+      case "n0e"
+        n0e = rest{i+1};
+      case "n0v"
+        n0v = rest{i+1};
+      case "nn"
+        form = rest{i+1};
+      otherwise
+        pass(end+1:end+2) = rest(i:i+1);
+    endswitch
+  endfor
+  ue = get (ZE, "InputData");
+  ye = get (ZE, "OutputData");
+  nu = columns (ue);
+  if (! isempty (ZV))
+    uv = get (ZV, "InputData");
+    yv = get (ZV, "OutputData");
+    if (columns (uv) != nu || columns (yv) != columns (ye))
+      error ("srivcstruc:dimensionMismatch",
+             "srivcstruc: ZV must have the inputs and outputs of ZE");
+    endif
+  endif
+  check_start (n0e, rows (ye), "n0e");
+  if (! isempty (ZV))
+    check_start (n0v, rows (yv), "n0v");
+  endif
+  structures = expand (NN, nu, form);
+
+  ns = rows (structures);
+  V = NaN (ns, 2 + columns (structures) + 2);
+  info = struct ("models", {cell(ns, 1)}, "converged", false (ns, 1),
+                 "stable", false (ns, 1), "fit", NaN (ns, 1));
+  for k = 1:ns
+    nn = structures(k, :);
+    V(k, 3:2+numel (nn)) = nn;
+    try
+      [M, ~, YIC, est] = quiet_srivc (ZE, nn, pass);
+    catch err
+      if (any (strcmp (err.identifier, {"srivc:badOption", "srivc:badInput"}))
+          && isempty (strfind (err.message, "nn")))
+        error (strrep (err.identifier, "srivc", "srivcstruc"), "%s",
+               strrep (err.message, "srivc:", "srivcstruc:"));
+      endif
+      continue;                          # this structure cannot be fitted
+    end_try_catch
+    info.models{k} = M;
+    info.converged(k) = est.converged;
+    info.stable(k) = est.stable;
+    if (isempty (ZV))
+      y = ye(n0e:end);
+      ys = est.simulated(n0e:end);
+    else
+      ys = simc (M, uv, get (ZV, "Ts"));
+      y = yv(n0v:end);
+      ys = ys(n0v:end);
+    endif
+    RT2 = 1 - var (y - ys, 1) / var (y, 1);
+    info.fit(k) = 100 * (1 - norm (y - ys) / norm (y - mean (y)));
+    V(k, 1) = RT2;
+    V(k, 2) = YIC;
+    V(k, end-1) = log10 (est.condition);
+    V(k, end) = numel (y);
+  endfor
+endfunction
+
+function [M, RT2, YIC, info] = quiet_srivc (ZE, nn, pass)
+  state = warning ("off", "srivc:notConverged");
+  state2 = warning ("off", "srivc:unstable");
+  unwind_protect
+    [M, RT2, YIC, info] = srivc (ZE, nn, pass{:});
+  unwind_protect_cleanup
+    warning (state);
+    warning (state2);
+  end_unwind_protect
+endfunction
+
+function check_start (n0, n, name)
+  if (! isnumeric (n0) || ! isscalar (n0) || n0 != fix (n0) || n0 < 1
+      || n0 > n - 10)
+    error ("srivcstruc:badOption",
+           "srivcstruc: %s must be an integer in 1..N-10", name);
+  endif
+endfunction
+
+## The list of structures [nb nf nk] from NN.
+function S = expand (NN, nu, form)
+  width = 1 + 2 * nu;
+  if (! isnumeric (NN) || ! isreal (NN) || isempty (NN) || ndims (NN) > 2
+      || columns (NN) != width || any (! isfinite (NN(:)))
+      || any (NN(:) != fix (NN(:))) || any (NN(:) < 0))
+    error ("srivcstruc:badInput",
+           "srivcstruc: NN must have rows [nb nf nk] of %d non-negative integers",
+           width);
+  endif
+  if (! ischar (form) || ! any (strcmpi (form, {"auto", "range", "list"})))
+    error ("srivcstruc:badOption",
+           "srivcstruc: NN form must be 'auto', 'range' or 'list'");
+  endif
+  range = strcmpi (form, "range") || (strcmpi (form, "auto") && rows (NN) == 2);
+  if (! range)
+    S = NN;
+    return;
+  endif
+  lo = min (NN, [], 1);
+  hi = max (NN, [], 1);
+  axes = arrayfun (@(a, b) a:b, lo, hi, "UniformOutput", false);
+  grids = cell (1, width);
+  [grids{:}] = ndgrid (axes{:});
+  S = cell2mat (cellfun (@(g) g(:), grids, "UniformOutput", false));
+  nb = S(:, 1:nu);
+  nf = S(:, nu + 1);
+  ok = nf >= 1 & all (nb <= nf + 1, 2) & sum (nb, 2) >= 1;
+  S = sortrows (S(ok, :), [nu + 1, 1:nu, nu + 2:width]);
+  if (isempty (S))
+    error ("srivcstruc:badInput", "srivcstruc: NN holds no valid structure");
+  endif
+endfunction
+
+%!shared ZE, ZV
+%! randn ("state", 3);
+%! u = prbs (10, 8); Ts = 0.05; N = numel (u);
+%! y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.1 * randn (N, 1);
+%! h = floor (N / 2);
+%! ZE = iddata (y(1:h), u(1:h), Ts);
+%! ZV = iddata (y(h+1:end), u(h+1:end), Ts);
+
+%!test  # range form: the true structure [1 2 0] is among the best
+%! [V, info] = srivcstruc (ZE, ZV, [1 1 0; 2 3 0]);
+%! assert (columns (V), 7);
+%! assert (V(:, 3:5), [1 1 0; 2 1 0; 1 2 0; 2 2 0; 1 3 0; 2 3 0]);
+%! k = find (ismember (V(:, 3:5), [1 2 0], "rows"));
+%! assert (V(k, 1) > 0.9);
+%! assert (V(k, 1) > V(1, 1));           # better than first order
+%! assert (all (V(:, 7) == V(1, 7)));
+%! assert (info.converged(k) && info.stable(k));
+
+%!test  # list form without validation data
+%! V = srivcstruc (ZE, [], [1 2 0; 1 1 0], "NN", "list");
+%! assert (V(:, 3:5), [1 2 0; 1 1 0]);
+%! assert (V(1, 1) > V(2, 1));
+
+%!error id=srivcstruc:badInput srivcstruc (ZE, [])
+%!error id=srivcstruc:badInput srivcstruc (1, [], [1 2 0])
+%!error id=srivcstruc:badInput srivcstruc (ZE, 3, [1 2 0])
+%!error id=srivcstruc:badInput srivcstruc (ZE, [], [1 2])
+%!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "NN", "bogus")
+%!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e", 0)
+%!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e")
+%!error id=srivcstruc:dimensionMismatch srivcstruc (ZE, iddata (randn (50, 1), randn (50, 2), 0.1), [1 2 0])
+
+%!demo
+%! u = prbs (10, 8); Ts = 0.05; N = numel (u);
+%! y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.1 * randn (N, 1);
+%! h = floor (N / 2);
+%! ZE = iddata (y(1:h), u(1:h), Ts);
+%! ZV = iddata (y(h+1:end), u(h+1:end), Ts);
+%! V = srivcstruc (ZE, ZV, [1 1 0; 3 3 0]);
+%! selcstruc (V, "NberOfModels", 5)
