@@ -2,6 +2,13 @@
 ## against the reported standard deviations. Run from the repository
 ## root: octave-cli --eval "addpath octave; run bench/tfsrivc_mc.m"
 ## (R = 40 runs, about 20-30 s; set R before running for more).
+## Measured (R = 40): ratios MC std / mean reported sd for b1 b0 f1 f2 td
+## 1.33 1.18 1.09 1.04 1.33. This system has relative degree 1: with a
+## ZOH input y(t_k) has kinks in td whenever td crosses a whole sample,
+## and at an sd of 0.2 samples the linearisation behind sigma^2 (J'J)^-1
+## under-reports td and b1. With the delay fixed the ratios are 0.97-1.08;
+## for 4/(s^2+1.2s+4) (relative degree 2, the %!test in tfsrivc.m) they
+## are 0.97-1.05 with td estimated.
 if (! exist ("R", "var"))
   R = 40;
 endif
