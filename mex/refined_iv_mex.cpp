@@ -8,7 +8,8 @@
 // closed loop with a continuous-time controller, or []. opts fields (see
 // RivProblem/RivSettings): method ('srivc' | 'ivsvf' | 'lssvf'), nf (order
 // of each denominator), group, nb, nk, intersample (per channel; group
-// 1-based, intersample 0 = zoh, 1 = foh), y_intersample, fixed and
+// 1-based, intersample 0 = zoh, 1 = foh), delay (per channel, a continuous
+// delay in time units on top of nk, default 0), y_intersample, fixed and
 // fixed_values (np each, or absent), theta_init, cutoffs, tol, maxiter,
 // max_starts, time_scale, integrator_pole, output_offset, initial_state,
 // controller_num, controller_den (descending powers of p; with
@@ -75,8 +76,16 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const std::vector<int> nk = opt.integer_vector("nk");
   const std::vector<int> rules =
       opt.integer_vector("intersample", std::vector<int>(m, 0));
-  if (static_cast<int>(group.size()) != m || static_cast<int>(nb.size()) != m ||
-      static_cast<int>(nk.size()) != m || static_cast<int>(rules.size()) != m) {
+  std::vector<double> delays = to_std(opt.matrix("delay"));
+  if (delays.empty()) delays.assign(m, 0.0);
+  if (static_cast<int>(delays.size()) != m) {
+    g.fail("dimensionMismatch",
+           "delay needs one entry per column of w (" + std::to_string(m) +
+               ")");
+  }
+  if (static_cast<int>(group.size()) != m ||
+      static_cast<int>(nb.size()) != m || static_cast<int>(nk.size()) != m ||
+      static_cast<int>(rules.size()) != m) {
     g.fail("dimensionMismatch",
            "group, nb, nk and intersample need one entry per column of w (" +
                std::to_string(m) + ")");
@@ -87,6 +96,7 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     c.nb = nb[j];
     c.nk = nk[j];
     c.rule = rule_of(g, rules[j]);
+    c.delay = delays[j];
     problem.channels.push_back(c);
   }
   problem.y_rule = rule_of(g, opt.integer("y_intersample", 1));
@@ -185,7 +195,8 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway("srivc",
                          {"lssvf", "ivsvf", "srivc", "clsrivc", "svfcutoff",
-                          "srivcstruc", "residtrace", "comparec", "simc"},
+                          "srivcstruc", "residtrace", "comparec", "simc",
+                          "tfsrivc", "tfsrivc_init", "procsrivc", "tfcoe"},
                          nrhs, prhs, [&](const Gateway& g) {
                            refined_iv_gateway(g, nlhs, plhs, nrhs, prhs);
                          });

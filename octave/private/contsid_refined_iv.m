@@ -19,6 +19,10 @@
 ## @item group, nb, nk
 ## per channel: its denominator (1-based, default all 1), numerator
 ## parameters (required), delay in samples (default 0).
+## @item delay
+## per channel, a continuous delay (time units, >= 0, default 0) on top of
+## nk: any fraction of a sample, also on irregular data; the delayed
+## ZOH/FOH input is filtered exactly.
 ## @item intersample
 ## per channel "zoh" or "foh" (a string for all, or a cellstr); default
 ## "zoh". @code{y_intersample}: the output's rule, default "foh".
@@ -71,6 +75,7 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   endif
   known = {"nf", "group", "nb", "nk", "intersample", "y_intersample", ...
            "integrators", "fixed", "fixed_values", "method", "theta_init", ...
+           "delay", ...
            "cutoffs", "tol", "maxiter", "max_starts", "time_scale", ...
            "integrator_pole", "initial_state", "output_offset", ...
            "input_offset", "controller", "reference"};
@@ -89,9 +94,12 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   g.nb = double (opts.nb(:).');
   g.group = get_or (opts, "group", ones (1, m));
   g.nk = get_or (opts, "nk", zeros (1, m));
-  if (numel (g.nb) != m || numel (g.group) != m || numel (g.nk) != m)
+  g.delay = double (get_or (opts, "delay", zeros (1, m)));
+  if (numel (g.nb) != m || numel (g.group) != m || numel (g.nk) != m
+      || numel (g.delay) != m)
     error ([fname ":dimensionMismatch"],
-           "%s: nb, nk and group need one entry per channel (%d)", fname, m);
+           "%s: nb, nk, delay and group need one entry per channel (%d)",
+           fname, m);
   endif
   g.intersample = rule_codes (fname, get_or (opts, "intersample", "zoh"), m);
   g.y_intersample = rule_codes (fname, get_or (opts, "y_intersample", "foh"),
@@ -123,6 +131,7 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   g.group = [g.group(:).', g.group(extra)];
   g.nb = [g.nb, ones(1, numel (extra))];
   g.nk = [g.nk(:).', zeros(1, numel (extra))];
+  g.delay = [g.delay(:).', zeros(1, numel (extra))];
   g.intersample = [g.intersample, zeros(1, numel (extra))];
 
   ## The full layout (with the constant channels) and its fixed mask.

@@ -61,6 +61,10 @@ struct RivChannel {
   int nb = 1;
   int nk = 0;
   InterSample rule = InterSample::kZoh;
+  // A continuous delay (time units, >= 0) on top of nk samples: not a
+  // multiple of Ts, or on irregularly sampled data (filtered exactly by
+  // filter_delayed_derivatives).
+  double delay = 0;
 };
 
 template <typename S>
@@ -186,8 +190,22 @@ class ExactFilter {
     z_ = Vector<S>::Zero(n_);
     next_ = z_;
   }
+  // Two discretisations are kept (the last two step lengths, equal within
+  // a relative 1e-12): a continuously delayed input alternates between two
+  // sub-step lengths (filter_delayed_derivatives).
   void ensure(S h) {
-    if (h == h_) return;
+    if (same_length(h, h_)) return;
+    if (same_length(h, h2_)) {
+      std::swap(h_, h2_);
+      Phi_.swap(Phi2_);
+      g0_.swap(g02_);
+      g1_.swap(g12_);
+      return;
+    }
+    std::swap(h_, h2_);
+    Phi_.swap(Phi2_);
+    g0_.swap(g02_);
+    g1_.swap(g12_);
     const int m = n_ + 2;
     Matrix<S> big = Matrix<S>::Zero(m, m);
     big.topLeftCorner(n_, n_) = A_ * h;
@@ -218,12 +236,16 @@ class ExactFilter {
   }
 
  private:
+  static bool same_length(S a, S b) {
+    return a == b || std::abs(a - b) <= S(1e-12) * std::abs(a);
+  }
+
   Vector<S> d_;
   InterSample rule_;
   int n_ = 0;
-  Matrix<S> A_, Phi_;
-  Vector<S> g0_, g1_, z_, next_;
-  S h_ = -1;
+  Matrix<S> A_, Phi_, Phi2_;
+  Vector<S> g0_, g1_, g02_, g12_, z_, next_;
+  S h_ = -1, h2_ = -1;
 };
 
 // p^i s / D(p), i = 0..n (columns), for D = p^n + d1 p^(n-1) + .. + dn,
@@ -240,6 +262,72 @@ void filter_derivatives(const Vector<S>& d, S gain, InterSample rule,
       filter.step(s[k - 1], s[k]);
     }
     filter.outputs(gain, s[k], out.row(k));
+  }
+}
+
+// p^i s(t - delay) / D(p), i = 0..n: the signal delayed by a continuous
+// delay >= 0 (original time units), the filter at rest at the first
+// sample. Before its first sample the signal is 0 (ZOH) or a ramp from 0
+// over one sampling interval (FOH), as a delay of whole samples (nk) gives,
+// so a delay of nk Ts equals the nk shift. The delayed signal changes its
+// piece at t_j + delay, between the sampling instants: the filter is
+// stepped exactly (ZOH/FOH rule, App. A.1) from piece to piece.
+template <typename S>
+void filter_delayed_derivatives(const Vector<S>& d, S gain, InterSample rule,
+                                const Clock<S>& clock, const S* s, S delay,
+                                Matrix<S>& out) {
+  const int n = static_cast<int>(d.size());
+  const Eigen::Index count = clock.n;
+  ExactFilter<S> filter(d, rule);
+  out.resize(count, n + 1);
+  std::vector<S> t(static_cast<std::size_t>(count));
+  for (Eigen::Index k = 0; k < count; ++k) {
+    t[k] = clock.instants == nullptr
+               ? clock.ts * static_cast<S>(k)
+               : clock.instants[k] - clock.instants[0];
+  }
+  const S h0 = t[1] - t[0];
+  const S snap = S(1e-9) * clock.median_interval();
+  // The undelayed signal at time tau (relative to t_0); ZOH right-
+  // continuous, evaluated just after tau so that rounding of t_j + delay
+  // does not pick the previous sample.
+  auto value = [&](S tau) -> S {
+    if (rule == InterSample::kZoh) {
+      if (tau + snap < 0) return 0;
+      const auto it = std::upper_bound(t.begin(), t.end(), tau + snap);
+      return s[(it - t.begin()) - 1];
+    }
+    if (tau <= -h0) return 0;
+    if (tau < 0) return s[0] * (1 + tau / h0);
+    const auto it = std::upper_bound(t.begin(), t.end(), tau);
+    const Eigen::Index j = (it - t.begin()) - 1;
+    if (j >= count - 1) return s[count - 1];
+    return s[j] + (s[j + 1] - s[j]) * (tau - t[j]) / (t[j + 1] - t[j]);
+  };
+  // Breakpoints of the undelayed signal: its samples, and the start of the
+  // FOH ramp.
+  std::vector<S> breaks;
+  if (rule == InterSample::kFoh) breaks.push_back(-h0);
+  breaks.insert(breaks.end(), t.begin(), t.end());
+  for (Eigen::Index k = 0; k < count; ++k) {
+    if (k > 0) {
+      S a = t[k - 1] - delay;
+      const S b = t[k] - delay;
+      auto it = std::upper_bound(breaks.begin(), breaks.end(), a + snap);
+      for (;; ++it) {
+        const bool last = it == breaks.end() || *it >= b - snap;
+        const S c = last ? b : *it;
+        filter.ensure(clock.sigma * (c - a));
+        if (rule == InterSample::kZoh) {
+          filter.step(value(S(0.5) * (a + c)), 0);
+        } else {
+          filter.step(value(a), value(c));
+        }
+        a = c;
+        if (last) break;
+      }
+    }
+    filter.outputs(gain, value(t[k] - delay), out.row(k));
   }
 }
 
@@ -351,6 +439,13 @@ Status validate(const RivProblem<S>& problem, const RivSettings<S>& settings,
                        std::to_string(problem.nf[c.group] + 1));
     }
     if (c.nk < 0) return bad_input("nk must be >= 0");
+    if (!(c.delay >= 0) || !std::isfinite(c.delay)) {
+      return bad_input("a channel delay must be finite and >= 0");
+    }
+    if (c.delay > 0 && problem.closed_loop()) {
+      return Status(ErrorCode::kBadOption,
+                    "a continuous delay is not supported in closed loop");
+    }
     if (c.nk > 0 && data.instants != nullptr) {
       return bad_input("nk must be 0 for irregularly sampled data");
     }
@@ -557,6 +652,18 @@ class Engine {
     return poly.tail(poly.size() - 1);
   }
 
+  // p^i w_j / D, i = 0..n, with channel j's hold and delay.
+  void channel_derivatives(std::size_t j, const Vector<S>& d, S gain,
+                           Matrix<S>& out) const {
+    const RivChannel& c = p_.channels[j];
+    if (c.delay > 0) {
+      filter_delayed_derivatives<S>(d, gain, c.rule, clock_, w_.col(j).data(),
+                                    static_cast<S>(c.delay), out);
+    } else {
+      filter_derivatives<S>(d, gain, c.rule, clock_, w_.col(j).data(), out);
+    }
+  }
+
   // x_g = sum_(j in g) B_j / F_g w_j (scaled time): `source` = w or, in
   // closed loop, the reference (then the closed-loop x_hat and u_hat).
   void simulate_group(const Vector<S>& theta, int g, Vector<S>& x) const {
@@ -566,7 +673,7 @@ class Engine {
     for (std::size_t j = 0; j < p_.channels.size(); ++j) {
       const RivChannel& c = p_.channels[j];
       if (c.group != g || c.nb == 0) continue;
-      filter_derivatives<S>(f, S(1), c.rule, clock_, w_.col(j).data(), D);
+      channel_derivatives(j, f, S(1), D);
       for (int l = 0; l < c.nb; ++l) {
         x += theta(layout_.b_offset[j] + l) * D.col(c.nb - 1 - l);
       }
@@ -658,7 +765,7 @@ class Engine {
     for (std::size_t j = 0; j < p_.channels.size(); ++j) {
       const RivChannel& c = p_.channels[j];
       if (c.group != g || c.nb == 0) continue;
-      filter_derivatives<S>(d, gain, c.rule, clock_, w_.col(j).data(), W);
+      channel_derivatives(j, d, gain, W);
       Matrix<S> U;
       if (instrument_u != nullptr) {
         filter_derivatives<S>(d, gain, c.rule, clock_, instrument_u->data(), U);
@@ -707,7 +814,7 @@ class Engine {
     for (std::size_t j = 0; j < p_.channels.size(); ++j) {
       const RivChannel& c = p_.channels[j];
       if (c.group != g || c.nb == 0) continue;
-      filter_derivatives<S>(fd, gain, c.rule, clock_, w_.col(j).data(), D);
+      channel_derivatives(j, fd, gain, D);
       for (int l = 0; l < c.nb; ++l) {
         const S b = theta(layout_.b_offset[j] + l);
         const int power = c.nb - 1 - l;

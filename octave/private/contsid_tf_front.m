@@ -1,0 +1,210 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{M} =} contsid_tf_front (@var{fname}, @var{args})
+## Argument parsing and model building of tfsrivc and tfsrivc_init:
+## (data, np, nz[, IODelay][, Name, Value]) or (data, Mi[, Name, Value]),
+## the options of @code{help tfsrivc}, the estimate by
+## @code{contsid_tfsrivc}, the @code{idtf} with covariance and Report.
+## @end deftypefn
+
+function M = contsid_tf_front (fname, args)
+  init = strcmp (fname, "tfsrivc_init");
+  if (numel (args) < 2)
+    error ([fname ":badInput"], "%s: expected data and np, nz (or a model)",
+           fname);
+  endif
+  d = contsid_getdata (fname, args{:});
+  rest = args(d.nconsumed+1:end);
+  if (isempty (rest))
+    error ([fname ":badInput"], "%s: expected np, nz or a model", fname);
+  endif
+  theta0 = [];
+  td0 = [];
+  if (isobject (rest{1}))
+    Mi = rest{1};
+    if (! isa (Mi, "idtf") || init)
+      error ([fname ":badInput"], "%s: the model must be an idtf", fname);
+    endif
+    [num, den] = tfdata (Mi, "vector");
+    if (iscell (num))
+      num = num{1};
+      den = den{1};
+    endif
+    k = find (num != 0, 1);
+    if (isempty (k))
+      k = numel (num);
+    endif
+    num = num(k:end);
+    np = numel (den) - 1;
+    nz = numel (num) - 1;
+    th = [den(2:end)(:); num(:)];
+    if (all (isfinite (th)) && np >= 1)
+      theta0 = th;
+    endif
+    td0 = get (Mi, "IODelay");
+    if (! isfinite (td0))
+      td0 = [];
+    endif
+    rest = rest(2:end);
+  else
+    if (numel (rest) < 2)
+      error ([fname ":badInput"], "%s: expected np and nz", fname);
+    endif
+    np = rest{1};
+    nz = rest{2};
+    rest = rest(3:end);
+    if (! isempty (rest) && isnumeric (rest{1}))
+      if (init)
+        error ([fname ":badInput"], ["%s: no start delay here (use TdMin, ", ...
+               "TdMax)"], fname);
+      endif
+      td0 = rest{1};
+      rest = rest(2:end);
+      if (! isreal (td0) || ! isscalar (td0) || ! isfinite (td0) || td0 < 0)
+        error ([fname ":badInput"], "%s: IODelay must be a real scalar >= 0",
+               fname);
+      endif
+    endif
+  endif
+  if (! isnumeric (np) || ! isscalar (np) || np != fix (np) || np < 1
+      || ! isnumeric (nz) || ! isscalar (nz) || nz != fix (nz) || nz < 0
+      || nz > np)
+    error ([fname ":badInput"], ...
+           "%s: np must be an integer >= 1 and nz an integer in 0..np", fname);
+  endif
+  T = d.t(end) - d.t(1);
+  h = T / (rows (d.y) - 1);
+  if (! d.uniform)
+    h = median (diff (d.t));
+  endif
+  o = struct ("fixtd", "off", "tdmin", 0, "tdmax", min (T / 10, 50 * h),
+              "numtd", 30,
+              "lambda", [], "maxiter", 30, "tolpar", 1e-5, "tolfun", 1e-8,
+              "stepmax", [], "stepreduction", 0.5, "focus", "simulation");
+  if (mod (numel (rest), 2) != 0)
+    error ([fname ":badOption"], "%s: options come in name-value pairs",
+           fname);
+  endif
+  for i = 1:2:numel (rest)
+    name = rest{i};
+    if (! ischar (name))
+      error ([fname ":badOption"], "%s: option names must be strings", fname);
+    endif
+    key = lower (name);
+    init_keys = {"tdmin", "tdmax", "lambda", "numtd"};
+    if (! isfield (o, key) || init && ! any (strcmp (key, init_keys)))
+      error ([fname ":badOption"], "%s: unknown option '%s'", fname, name);
+    endif
+    o.(key) = rest{i+1};
+  endfor
+  if (ischar (o.fixtd) && any (strcmpi (o.fixtd, {"on", "off"})))
+    o.fixtd = strcmpi (o.fixtd, "on");
+  elseif (! (isscalar (o.fixtd)
+             && (islogical (o.fixtd) || isnumeric (o.fixtd))))
+    error ([fname ":badOption"], "%s: FixTd must be 'on' or 'off'", fname);
+  endif
+  o.fixtd = logical (o.fixtd);
+  if (! (ischar (o.focus) && strcmpi (o.focus, "simulation")))
+    error ([fname ":notSupported"],
+           "%s: Focus: only 'simulation' (SRIVC's criterion); no band filter",
+           fname);
+  endif
+  scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
+  if (! scal (o.tdmin) || ! scal (o.tdmax) || o.tdmin < 0
+      || o.tdmax < o.tdmin)
+    error ([fname ":badOption"], "%s: need 0 <= TdMin <= TdMax (finite)",
+           fname);
+  endif
+  if (! scal (o.numtd) || o.numtd != fix (o.numtd) || o.numtd < 1)
+    error ([fname ":badOption"], "%s: NumTd must be an integer >= 1", fname);
+  endif
+  if (! isempty (o.lambda) && (! scal (o.lambda) || o.lambda <= 0))
+    error ([fname ":badOption"], "%s: Lambda must be a scalar > 0 (rad/s)",
+           fname);
+  endif
+  if (! scal (o.maxiter) || o.maxiter != fix (o.maxiter) || o.maxiter < 1)
+    error ([fname ":badOption"], "%s: MaxIter must be an integer >= 1", fname);
+  endif
+  if (! scal (o.tolpar) || o.tolpar <= 0 || ! scal (o.tolfun)
+      || o.tolfun < 0)
+    error ([fname ":badOption"], "%s: TolPar > 0 and TolFun >= 0 needed",
+           fname);
+  endif
+  if (! scal (o.stepreduction) || o.stepreduction <= 0
+      || o.stepreduction >= 1)
+    error ([fname ":badOption"], "%s: StepReduction must be in (0, 1)",
+           fname);
+  endif
+  if (isempty (o.stepmax))
+    o.stepmax = max ((o.tdmax - o.tdmin) / max (o.numtd - 1, 1), h);
+  elseif (! scal (o.stepmax) || o.stepmax <= 0)
+    error ([fname ":badOption"], "%s: StepMax must be a scalar > 0", fname);
+  endif
+  if (o.fixtd && isempty (td0))
+    error ([fname ":badInput"], "%s: FixTd 'on' needs the delay (IODelay)",
+           fname);
+  endif
+  if (! isempty (td0) && ! o.fixtd && (td0 < o.tdmin || td0 > o.tdmax))
+    if (any (strcmpi (rest(1:2:end), "tdmax")))
+      error ([fname ":badOption"], ["%s: the start delay %g is outside ", ...
+             "[TdMin, TdMax] = [%g, %g]"], fname, td0, o.tdmin, o.tdmax);
+    endif
+    o.tdmax = max (o.tdmax, 2 * td0 + h);
+  endif
+  if (td0 > T / 2)
+    error ([fname ":badInput"],
+           ["%s: the delay %g exceeds half the record ", ...
+           "(%g s)"], fname, td0, T);
+  endif
+  o.td0 = td0;
+  o.theta0 = theta0;
+  o.fixed = [];
+  o.fixed_values = [];
+  o.search_only = init;
+
+  [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o);
+
+  ## The idtf: parameters [b; f] (SITB order), covariance mapped from
+  ## [f; b (; td)].
+  M = idtf (num, den, "IODelay", td);
+  nth = np + nz + 1;
+  perm = [np + (1:nz+1), 1:np];
+  C = P(perm, perm);
+  if (all (isfinite (C(:))))
+    M = setcov (M, C);
+  endif
+  n = rows (d.y);
+  res = d.y - info.simulated;
+  mse = mean (res .^ 2);
+  npar = nth + info.delay_estimated;
+  fit = struct ("FitPercent", 100 * (1 - norm (res) / norm (d.y - mean (d.y))),
+                "LossFcn", mse, "MSE", mse,
+                "FPE", mse * (1 + npar / n) / (1 - npar / n));
+  tdsd = 0;
+  if (info.delay_estimated)
+    tdsd = sqrt (P(end, end));
+  endif
+  Ts = d.Ts;
+  converged = info.converged && info.engine.converged;
+  reason = info.reason;
+  if (! info.engine.converged)
+    reason = [reason "; SRIVC: " info.engine.reason];
+  endif
+  rep = struct ("Fit", fit,
+                "Parameters", struct ("ParVector", getpvec (M),
+                                      "FreeParCovariance", C,
+                                      "IODelay", td, "IODelaySD", tdsd),
+                "Termination", struct ("Iterations", info.iterations,
+                                       "Converged", converged,
+                                       "Reason", reason,
+                                       "DelayGrid", info.grid,
+                                       "DelayGridLoss", info.grid_loss),
+                "DataUsed", struct ("Length", n, "Ts", Ts,
+                                    "InterSample", d.intersample));
+  rep.Method = fname;
+  rep.Status = sprintf ("Estimated using %s", upper (fname));
+  M = set (M, "NoiseVariance", mse, "Report", rep);
+  if (! converged && ! init)
+    warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
+             fname, reason);
+  endif
+endfunction

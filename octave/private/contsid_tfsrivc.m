@@ -1,0 +1,236 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{num}, @var{den}, @var{td}, @var{P}, @var{info}] =} contsid_tfsrivc (@var{fname}, @var{d}, @var{np}, @var{nz}, @var{o})
+## Shared back-end of tfsrivc, tfsrivc_init and procsrivc: SRIVC on the
+## refined-IV engine (core/include/ctid/refined_iv.hpp, thesis eqs.
+## 2.8-2.13) for B(p)/F(p) e^(-td p) with a continuous delay td (any
+## fraction of a sample; the delayed ZOH/FOH input is filtered exactly).
+##
+## @var{d} from @code{contsid_getdata}; @var{o} a struct with fields
+## @code{td0} (start delay or [] for the grid search), @code{fixtd},
+## @code{tdmin}, @code{tdmax}, @code{numtd}, @code{lambda} ([] or a
+## cut-off), @code{maxiter}, @code{tolpar}, @code{tolfun},
+## @code{stepmax}, @code{stepreduction}, @code{theta0} ([] or [f; b]),
+## @code{fixed}, @code{fixed_values} ([] or a mask over [f; b] and the
+## values of the fixed entries, e.g. a pole at 0),
+## @code{search_only} (the grid only: tfsrivc_init).
+##
+## Delay: the loss V(td) (simulation-error variance of the SRIVC model at
+## td) is evaluated on a grid of @code{numtd} delays in [tdmin, tdmax];
+## from the best, Gauss-Newton steps on td, td += (g' e)/(g' g) with the
+## output sensitivity g = dy/dtd (central difference) and SRIVC
+## re-estimated at every new td, halved (by @code{stepreduction}) while
+## the loss does not decrease, bounded by @code{stepmax} and the range.
+## Stops when the step is below @code{tolpar} sampling intervals or the
+## relative loss decrease below @code{tolfun}.
+##
+## @var{P}: covariance of [f; b; td] (td estimated) or [f; b] (fixed),
+## sigma^2 (J' J)^-1 with J the sensitivities of the simulated output
+## (central differences); for [f; b] alone this is SRIVC's eq. (2.13)
+## covariance. @var{info}: loss, grid, grid_loss, iterations,
+## converged, reason, simulated, engine (the engine's info).
+## @end deftypefn
+
+function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
+  if (columns (d.u) != 1)
+    error ([fname ":notSupported"], "%s: one input only (got %d)", fname,
+           columns (d.u));
+  endif
+  if (d.uniform)
+    t = d.Ts;
+    h = d.Ts;
+  else
+    t = d.t;
+    h = median (diff (d.t));
+  endif
+  T = d.t(end) - d.t(1);
+  e = struct ("nf", np, "nb", nz + 1, "nk", 0,
+              "intersample", d.intersample, "maxiter", o.maxiter,
+              "tol", o.tolpar);
+  if (! isempty (o.lambda))
+    e.cutoffs = o.lambda;
+  endif
+  if (! isempty (o.fixed))
+    e.fixed = o.fixed;
+    e.fixed_values = o.fixed_values;
+  endif
+  info = struct ("grid", [], "grid_loss", [], "iterations", 0,
+                 "converged", true, "reason", "");
+
+  if (! isempty (o.td0))
+    tdgrid = [];
+  else
+    tdgrid = linspace (o.tdmin, o.tdmax, o.numtd);
+  endif
+
+  ## The grid search (tfsrivc_init, or tfsrivc without a start delay).
+  if (! isempty (tdgrid))
+    loss = Inf (size (tdgrid));
+    fits = cell (size (tdgrid));
+    for i = 1:numel (tdgrid)
+      try
+        fits{i} = fit (tdgrid(i), o.theta0);
+        loss(i) = fits{i}.loss;
+      catch err
+        if (! any (strcmp (err.identifier, {[fname ":numericalFailure"],
+                                             [fname ":notConverged"]})))
+          rethrow (err);
+        endif
+      end_try_catch
+    endfor
+    info.grid = tdgrid;
+    info.grid_loss = loss;
+    if (all (! isfinite (loss)))
+      error ([fname ":numericalFailure"],
+             "%s: SRIVC failed at every delay of the grid [%g, %g]", fname,
+             o.tdmin, o.tdmax);
+    endif
+    [~, i] = min (loss);
+    cur = fits{i};
+    info.reason = sprintf ("grid search over %d delays", numel (tdgrid));
+  else
+    cur = fit (o.td0, o.theta0);
+    info.reason = "delay fixed";
+  endif
+
+  ## Gauss-Newton refinement of the delay.
+  if (! o.fixtd && ! o.search_only)
+    info.converged = false;
+    for it = 1:o.maxiter
+      info.iterations = it;
+      ## Variable-projection step: the td sensitivity with the part that
+      ## the coefficients re-estimated by SRIVC absorb projected out.
+      g = sensitivity (cur, "td");
+      Jt = theta_jacobian (cur);
+      if (columns (Jt) > 0)
+        g -= Jt * (Jt \ g);
+      endif
+      gg = g' * g;
+      if (! (gg > 0))
+        info.reason = "the output does not depend on the delay";
+        break;
+      endif
+      step = (g' * (d.y - cur.sim)) / gg;
+      step = sign (step) * min (abs (step), o.stepmax);
+      accepted = false;
+      for k = 1:10
+        tdn = min (max (cur.td + step, o.tdmin), o.tdmax);
+        if (tdn == cur.td)
+          break;
+        endif
+        try
+          nxt = fit (tdn, cur.theta);
+          if (nxt.loss < cur.loss)
+            accepted = true;
+            break;
+          endif
+        catch err
+          if (! any (strcmp (err.identifier, {[fname ":numericalFailure"],
+                                               [fname ":notConverged"]})))
+            rethrow (err);
+          endif
+        end_try_catch
+        step *= o.stepreduction;
+      endfor
+      if (! accepted)
+        info.converged = true;
+        info.reason = sprintf (["delay refined in %d Gauss-Newton " ...
+                                "step(s) (no further decrease)"], it - 1);
+        break;
+      endif
+      dl = (cur.loss - nxt.loss) / cur.loss;
+      dstep = abs (nxt.td - cur.td);
+      cur = nxt;
+      if (dstep < o.tolpar * h || dl < o.tolfun)
+        info.converged = true;
+        info.reason = sprintf ("delay refined in %d Gauss-Newton step(s)",
+                               it);
+        break;
+      endif
+    endfor
+    if (! info.converged)
+      info.reason = sprintf (["the delay did not converge in %d " ...
+                              "Gauss-Newton steps"], o.maxiter);
+    endif
+  endif
+
+  td = cur.td;
+  nth = np + nz + 1;
+  ## Covariance sigma^2 (J' J)^-1 from the output sensitivities.
+  [J, idx] = theta_jacobian (cur);
+  est_td = double (! o.fixtd && ! o.search_only);
+  if (est_td)
+    J(:, end+1) = sensitivity (cur, "td");
+  endif
+  A = J' * J;
+  if (rcond (A) > eps)
+    C = cur.loss * inv (A);
+  else
+    C = NaN (columns (J));
+  endif
+  nP = nth + est_td;
+  P = zeros (nP);
+  sel = [idx(:); nth + (1:est_td)'];
+  P(sel, sel) = (C + C') / 2;
+  den = [1, cur.theta(1:np).'];
+  num = cur.theta(np+1:end).';
+  info.loss = cur.loss;
+  info.simulated = cur.sim;
+  info.engine = cur.info;
+  info.delay_estimated = logical (est_td);
+
+  ## SRIVC at delay td from theta0 ([] = the engine's automatic start).
+  function r = fit (td, theta0)
+    ee = e;
+    ee.delay = td;
+    if (! isempty (theta0))
+      ee.theta_init = theta0;
+    endif
+    [th, ~, inf] = contsid_refined_iv (fname, d.y, d.u, t, ee);
+    r = struct ("td", td, "theta", th, "loss", inf.noise_variance,
+                "sim", inf.simulated, "info", inf);
+    if (! inf.stable)
+      r.loss = Inf;
+    endif
+  endfunction
+
+  ## The model's output at theta, td (no iteration).
+  function y = simulate (theta, td)
+    ee = e;
+    ee.delay = td;
+    ee.theta_init = theta;
+    ee.maxiter = 0;
+    [~, ~, inf] = contsid_refined_iv (fname, d.y, d.u, t, ee);
+    y = inf.simulated;
+  endfunction
+
+  ## The sensitivities of the output to the free coefficients.
+  function [J, idx] = theta_jacobian (r)
+    free = true (np + nz + 1, 1);
+    if (! isempty (o.fixed))
+      free = ! logical (o.fixed(:));
+    endif
+    idx = find (free);
+    J = zeros (rows (d.y), numel (idx));
+    for i = 1:numel (idx)
+      J(:, i) = sensitivity (r, idx(i));
+    endfor
+  endfunction
+
+  ## dy/dp by central differences, p = theta(i) or "td".
+  function g = sensitivity (r, which)
+    if (ischar (which))
+      dt = 1e-3 * h;
+      lo = max (r.td - dt, 0);
+      g = (simulate (r.theta, r.td + dt) - simulate (r.theta, lo)) ...
+          / (r.td + dt - lo);
+    else
+      th = r.theta;
+      dp = 1e-6 * max (abs (th(which)), 1e-3 * norm (th));
+      tp = th;
+      tp(which) += dp;
+      tm = th;
+      tm(which) -= dp;
+      g = (simulate (tp, r.td) - simulate (tm, r.td)) / (2 * dp);
+    endif
+  endfunction
+endfunction

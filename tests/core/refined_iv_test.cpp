@@ -1,0 +1,217 @@
+// Tests of core/include/ctid/refined_iv.hpp's continuous channel delay:
+// a delay of whole samples equals the nk shift, and noise-free records of
+// a system with a delay that is not a multiple of Ts (ZOH, FOH, irregular
+// instants) are recovered exactly by SRIVC given the delay. The records are
+// simulated independently on a fine grid on which the delay is a whole
+// number of fine steps (matrix exponential of the state-space model).
+#include "ctid/refined_iv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "test_util.hpp"
+
+namespace ctid {
+namespace {
+
+using test::binary_input;
+using test::relative_error;
+
+// b(p) / f(p) driven by v (fine samples, held or linear between them over
+// the fine step h), output at every fine sample; f monic [1 f1 .. fn].
+std::vector<double> simulate_fine(const Eigen::VectorXd& f,
+                                  const Eigen::VectorXd& b,
+                                  const std::vector<double>& v, double h,
+                                  bool foh) {
+  const int n = static_cast<int>(f.size()) - 1;
+  // Controllable canonical form, x = [w^(n-1) .. w], y = sum b_k p^k w.
+  Eigen::MatrixXd big = Eigen::MatrixXd::Zero(n + 2, n + 2);
+  for (int i = 0; i < n; ++i) big(0, i) = -f(i + 1) * h;
+  for (int i = 1; i < n; ++i) big(i, i - 1) = h;
+  big(0, n) = h;
+  big(n, n + 1) = 1;
+  const Eigen::MatrixXd e = big.exp();
+  const Eigen::MatrixXd phi = e.topLeftCorner(n, n);
+  const Eigen::VectorXd g0 = e.block(0, n, n, 1), g1 = e.block(0, n + 1, n, 1);
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
+  const int nb = static_cast<int>(b.size());
+  for (int l = 0; l < nb; ++l) c(n - nb + l) = b(l);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  std::vector<double> y(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (k > 0) {
+      Eigen::VectorXd next = phi * x + g0 * v[k - 1];
+      if (foh) next += g1 * (v[k] - v[k - 1]);
+      x = next;
+    }
+    y[k] = c.dot(x);
+  }
+  return y;
+}
+
+struct Record {
+  std::vector<double> y, u, instants;
+};
+
+// u on the coarse grid (every `ratio` fine steps), the system delayed by
+// `delay_steps` fine steps; fine input 0 before the start.
+Record make_record(const Eigen::VectorXd& f, const Eigen::VectorXd& b,
+                   const std::vector<double>& u, int ratio, double h,
+                   int delay_steps, bool foh) {
+  const int n = static_cast<int>(u.size());
+  const int fine = (n - 1) * ratio + 1;
+  std::vector<double> v(fine, 0.0);
+  for (int i = 0; i < fine; ++i) {
+    const int src = i - delay_steps;  // fine index of the undelayed signal
+    double value = 0;
+    if (foh) {
+      // linear between coarse samples, a ramp from 0 over the interval
+      // before the first sample
+      const double pos = static_cast<double>(src) / ratio;
+      const int j = static_cast<int>(std::floor(pos));
+      const double frac = pos - j;
+      const double a = j >= 0 && j < n ? u[j] : (j >= n ? u[n - 1] : 0.0);
+      const double c = j + 1 >= 0 && j + 1 < n ? u[j + 1]
+                                               : (j + 1 >= n ? u[n - 1] : 0.0);
+      value = a + (c - a) * frac;
+    } else if (src >= 0) {
+      value = u[src / ratio];
+    }
+    v[i] = value;
+  }
+  const std::vector<double> yf = simulate_fine(f, b, v, h, foh);
+  Record r;
+  r.u = u;
+  for (int k = 0; k < n; ++k) r.y.push_back(yf[k * ratio]);
+  return r;
+}
+
+RivProblem<double> second_order(int nk, double delay, InterSample rule) {
+  RivProblem<double> problem;
+  problem.nf = {2};
+  RivChannel c;
+  c.nb = 2;
+  c.nk = nk;
+  c.delay = delay;
+  c.rule = rule;
+  problem.channels.push_back(c);
+  return problem;
+}
+
+RivData<double> view(const Record& r, double ts) {
+  RivData<double> data;
+  data.y = r.y.data();
+  data.w = r.u.data();
+  data.num_samples = static_cast<Eigen::Index>(r.y.size());
+  data.ts = ts;
+  if (!r.instants.empty()) data.instants = r.instants.data();
+  return data;
+}
+
+const Eigen::VectorXd kF = (Eigen::VectorXd(3) << 1, 1.2, 4).finished();
+const Eigen::VectorXd kB = (Eigen::VectorXd(2) << 0.5, 4).finished();
+const Eigen::VectorXd kTheta =
+    (Eigen::VectorXd(4) << 1.2, 4, 0.5, 4).finished();
+
+TEST(RefinedIvDelay, WholeSampleDelayEqualsTheNkShift) {
+  const double ts = 0.05;
+  const std::vector<double> u = binary_input(1500, 8, 3u);
+  const Record r = make_record(kF, kB, u, 1, ts, 3, false);
+  RivSettings<double> settings;
+  RivResult<double> by_nk, by_delay;
+  ASSERT_TRUE(refined_iv(second_order(3, 0, InterSample::kZoh), settings,
+                         view(r, ts), &by_nk)
+                  .ok());
+  ASSERT_TRUE(refined_iv(second_order(0, 3 * ts, InterSample::kZoh), settings,
+                         view(r, ts), &by_delay)
+                  .ok());
+  EXPECT_TRUE(test::MatrixNear(by_delay.theta, by_nk.theta, 1e-9));
+  EXPECT_LT((by_delay.simulated - by_nk.simulated).norm(),
+            1e-9 * by_nk.simulated.norm());
+}
+
+// Exact recovery with a delay of 2.35 samples, ZOH and FOH input.
+void expect_fractional_recovery(bool foh) {
+  const double ts = 0.05;
+  const int ratio = 20;  // fine step 2.5 ms; delay 47 fine steps
+  const double h = ts / ratio;
+  const std::vector<double> u = binary_input(1500, 8, 5u);
+  const Record r = make_record(kF, kB, u, ratio, h, 47, foh);
+  const InterSample rule = foh ? InterSample::kFoh : InterSample::kZoh;
+  RivSettings<double> settings;
+  RivResult<double> result;
+  ASSERT_TRUE(refined_iv(second_order(0, 47 * h, rule), settings,
+                         view(r, ts), &result)
+                  .ok());
+  const double err = relative_error(result.theta, kTheta);
+  EXPECT_LT(err, 1e-7) << "theta " << result.theta.transpose();
+  // The wrong (whole-sample) delay leaves a visible simulation error.
+  RivResult<double> rounded;
+  refined_iv(second_order(2, 0, rule), settings, view(r, ts), &rounded);
+  EXPECT_GT(relative_error(rounded.theta, kTheta), 100 * err);
+}
+
+TEST(RefinedIvDelay, FractionalDelayZohRecordIsRecovered) {
+  expect_fractional_recovery(false);
+}
+
+TEST(RefinedIvDelay, FractionalDelayFohRecordIsRecovered) {
+  expect_fractional_recovery(true);
+}
+
+TEST(RefinedIvDelay, IrregularRecordWithDelayIsRecovered) {
+  // Instants on a 2.5 ms grid, gaps of 10..30 ms; ZOH between them.
+  const double h = 0.0025;
+  std::mt19937 rng(11u);
+  std::vector<int> at = {0};
+  while (at.size() < 2500) at.push_back(at.back() + 4 + (rng() % 9));
+  const int fine = at.back() + 1;
+  std::vector<double> level = binary_input(static_cast<int>(at.size()), 6, 7u);
+  std::vector<double> v(fine, 0.0);
+  const int delay_steps = 93;  // 0.2325 s
+  std::size_t j = 0;
+  for (int i = 0; i < fine; ++i) {
+    const int src = i - delay_steps;
+    if (src < 0) continue;
+    while (j + 1 < at.size() && at[j + 1] <= src) ++j;
+    v[i] = level[j];
+  }
+  const std::vector<double> yf = simulate_fine(kF, kB, v, h, false);
+  Record r;
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    r.instants.push_back(at[k] * h);
+    r.y.push_back(yf[at[k]]);
+    r.u.push_back(level[k]);
+  }
+  RivSettings<double> settings;
+  RivResult<double> result;
+  ASSERT_TRUE(refined_iv(second_order(0, delay_steps * h, InterSample::kZoh),
+                         settings, view(r, 0), &result)
+                  .ok());
+  EXPECT_LT(relative_error(result.theta, kTheta), 1e-7)
+      << "theta " << result.theta.transpose();
+}
+
+TEST(RefinedIvDelay, BadDelaysAreRejected) {
+  const std::vector<double> u = binary_input(200, 8, 5u);
+  const Record r = make_record(kF, kB, u, 1, 0.05, 0, false);
+  RivSettings<double> settings;
+  RivResult<double> result;
+  Status s = refined_iv(second_order(0, -0.1, InterSample::kZoh), settings,
+                        view(r, 0.05), &result);
+  EXPECT_EQ(s.code(), ErrorCode::kBadInput) << s.message();
+  s = refined_iv(second_order(0, NAN, InterSample::kZoh), settings,
+                 view(r, 0.05), &result);
+  EXPECT_EQ(s.code(), ErrorCode::kBadInput) << s.message();
+  RivProblem<double> loop = second_order(0, 0.1, InterSample::kZoh);
+  loop.controller_num = Eigen::VectorXd::Ones(1);
+  loop.controller_den = Eigen::VectorXd::Ones(1);
+  loop.reference = u.data();
+  s = refined_iv(loop, settings, view(r, 0.05), &result);
+  EXPECT_EQ(s.code(), ErrorCode::kBadOption) << s.message();
+}
+
+}  // namespace
+}  // namespace ctid
