@@ -21,6 +21,10 @@ function y = sim (M, data, Ts)
   if (strcmp (P.kind, "idfrd"))
     error ("idfrd:notSupported", "idfrd: frequency data cannot be simulated");
   endif
+  if (isa (data, "iddata") && strcmpi (data.Domain, "Frequency"))
+    y = sim_frequency (M, P, data);
+    return;
+  endif
   if (isa (data, "iddata"))
     [~, ~, nu] = size (data);
     info = samplinginfo (data);
@@ -63,6 +67,28 @@ endfunction
 
 ## Difference equation of each input-output pair (z rows of equal length
 ## read as polynomials in z^-1), delayed by whole samples.
+## Frequency-domain input data (as tutorial3's U = fft (u); U.Ts = 0;
+## Y = sim (M0, U)): Y(w) = G(jw) U(w) at the data's frequencies, returned
+## as output-only frequency-domain data.
+function y = sim_frequency (M, P, data)
+  U = get (data, "InputData");
+  if (iscell (U))
+    U = U{1};
+  endif
+  if (columns (U) != P.nu)
+    error ([P.kind ":dimensionMismatch"],
+           "%s: the model has %d input(s), the data %d", P.kind, P.nu,
+           columns (U));
+  endif
+  w = data.Frequency(:);
+  H = freqresp (M, w);
+  Y = zeros (numel (w), P.ny);
+  for k = 1:numel (w)
+    Y(k, :) = (H(:, :, k) * U(k, :).').';
+  endfor
+  y = iddata (Y, [], data.Ts, "Frequency", w);
+endfunction
+
 function y = dt_sim (P, u, Ts)
   if (abs (Ts - P.Ts) > 1e-12 * P.Ts)
     error ([P.kind ":badInput"],
@@ -117,6 +143,17 @@ endfunction
 %! Y = sim (M, iddata (zeros (N, 0), u, Ts, "InterSample", "foh"));
 %! assert (Y.y, simc (M, u, Ts, "InterSample", "foh"), 1e-14);
 %! assert (get (Y, "InterSample"), "foh");
+
+%!test  # frequency-domain input: Y(w) = G(jw) U(w) (tutorial3's form)
+%! Ts = 0.05; u = prbs (7, 4);
+%! U = fft (iddata ([], u, Ts, "InterSample", "zoh"));
+%! U.Ts = 0;
+%! M = idtf (2, [1 3 2]);
+%! Y = sim (M, U);
+%! w = U.Frequency(:);
+%! G = 2 ./ ((1i * w) .^ 2 + 3 * 1i * w + 2);
+%! assert (Y.y, G .* U.u, 1e-12 * max (abs (U.u)));
+%! assert (Y.Frequency(:), w);
 
 %!test  # discrete time against the difference equation
 %! u = randn (50, 1);
