@@ -118,6 +118,17 @@ function obj = object_of (cls)
       obj = iddata (y, u, Ts);
     case "idctm"
       obj = idctm (2, [1 2]);
+    case {"idmodel", "idtf"}
+      ## idmodel is the abstract parent: its methods run on a subclass.
+      obj = idtf (2, [1 3 2]);
+    case "idpoly"
+      obj = idpoly (1, 2, 1, 1, [1 3 2], "Ts", 0);
+    case "idss"
+      obj = idss (-1, 1, 1, 0);
+    case "idproc"
+      obj = idproc ("P1D", "Kp", 2, "Tp1", 0.5, "Td", 0.1);
+    case "idfrd"
+      obj = idfrd (1 ./ (1i * (1:5)' + 1), (1:5)', "Ts", 0);
     otherwise
       obj = feval (cls);
   endswitch

@@ -155,6 +155,11 @@ function [targets, gwdir] = discover (root, tmp)
   c = dir (fullfile (root, "octave", "@*"));
   for i = 1:numel (c)
     cls = c(i).name(2:end);
+    if (any (strcmp (cls, {"double", "single", "logical", "char"})))
+      ## Methods of a built-in class (@double: the pre-LTI step/bode/pzmap
+      ## wrappers) are not constructors of ours; not covered here yet.
+      continue;
+    endif
     m = dir (fullfile (root, "octave", c(i).name, "*.m"));
     for j = 1:numel (m)
       name = m(j).name(1:end-2);
