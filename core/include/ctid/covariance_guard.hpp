@@ -20,11 +20,10 @@
 //     1 / rho is meaningless in that precision anyway.
 //   ceiling: with a forgetting factor lambda < 1, P grows as lambda^-k in
 //     the directions the input does not excite, until it overflows
-//     (sec. 3.6). trace(Ps) is held at 1000 trace(P(t_0)) at most (set by
-//     LeastSquaresUpdate::reset): P is scaled down when it exceeds it. The
-//     factor 1000 leaves the start-up alone, when P grows as lambda^-k
-//     while the filters' outputs are still near zero. The Kalman filter's
-//     P grows only linearly (k Qn, its random-walk model): no ceiling.
+//     (sec. 3.6). trace(Ps) is held at trace(P(t_0)) at most: P is scaled
+//     down when it exceeds it, so P never claims more uncertainty than the
+//     start did. The Kalman filter's P grows only linearly (k Qn, its
+//     random-walk model) and gets no ceiling.
 //
 // apply() reports what it did (kFloor, kCeiling, both, or none), which the
 // estimators pass on per sample (info.covariance_guard of the

@@ -176,8 +176,7 @@ class LeastSquaresUpdate {
       reset_internal(theta0.cwiseQuotient(m_), unscale_both_sides<S>(P0, m_));
     }
     refresh_theta();
-    guard_.configure(theta0.size(),
-                     ceiling_ ? S(1000) * working_P().trace() : S(0));
+    guard_.configure(theta0.size(), ceiling_ ? working_P().trace() : S(0));
   }
 
   // Least-squares step on phi_f; returns the prediction error.
