@@ -206,7 +206,6 @@ class SingleBuffers {
     out_.extra = take(out.extra, n * nextra, &extra_);
     out_.error = take(out.error, n, &error_);
     out_.innovation = take(out.innovation, n, &innovation_);
-    out_.guard = take(out.guard, n, &guard_);
   }
   const RecursiveOutputs<float>& outputs() const { return out_; }
   void write() const {
@@ -217,7 +216,6 @@ class SingleBuffers {
     copy(extra_, target_.extra);
     copy(error_, target_.error);
     copy(innovation_, target_.innovation);
-    copy(guard_, target_.guard);
   }
 
  private:
@@ -233,8 +231,7 @@ class SingleBuffers {
   }
   RecursiveOutputs<double> target_;
   RecursiveOutputs<float> out_;
-  std::vector<float> thm_, yh_, pset_, kappa_, extra_, error_, innovation_,
-      guard_;
+  std::vector<float> thm_, yh_, pset_, kappa_, extra_, error_, innovation_;
 };
 
 // ---- outputs -----------------------------------------------------------

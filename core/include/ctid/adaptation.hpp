@@ -201,8 +201,6 @@ class ParameterUpdate {
   // Gain L(t_k) of the last step.
   const Vector<S>& gain() const { return gain_; }
   const Matrix<S>& P() const { return P_; }
-  // For the covariance protection step (covariance_guard.hpp) only.
-  Matrix<S>& mutable_P() { return P_; }
   const Adaptation<S>& adaptation() const { return adaptation_; }
 
  private:

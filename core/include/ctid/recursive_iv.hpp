@@ -309,9 +309,6 @@ class RecursiveIv {
   const Vector<S>& theta() const { return update_.theta(); }
   const Matrix<S>& P() const { return update_.P(); }
   S kappa() const { return update_.kappa(); }
-  // What the covariance protection did at the last update
-  // (covariance_guard.hpp).
-  int covariance_guard() const { return update_.covariance_guard(); }
   // r(t_k)/sigma_e^2 of the last update: 1 + phi^T P^- phi (RLSSVF stage)
   // or 1 + phi^T P^- zeta (IV stage), eq. (3.25); NaN while held.
   S innovation_scale() const {
@@ -565,7 +562,6 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
-    int covariance_guard() const { return e.covariance_guard(); }
   };
   const Status run =
       record_recursive_run(config.orders, config.svf.u_intersample, record, out,

@@ -26,7 +26,6 @@
 #include <string>
 
 #include "ctid/adaptation.hpp"
-#include "ctid/covariance_guard.hpp"
 #include "ctid/auxiliary_model.hpp"
 #include "ctid/lmr.hpp"
 #include "ctid/potter.hpp"
@@ -162,8 +161,6 @@ class LeastSquaresUpdate {
     }
     phi_s_ = Vector<S>::Zero(n);
     zeta_s_ = Vector<S>::Zero(n);
-    const auto* ff = std::get_if<ForgettingFactorAdaptation<S>>(&adaptation);
-    ceiling_ = ff != nullptr && ff->lambda() < 1;
     theta_ = Vector<S>::Zero(n);
     P_ = Matrix<S>::Zero(n, n);
   }
@@ -176,7 +173,6 @@ class LeastSquaresUpdate {
       reset_internal(theta0.cwiseQuotient(m_), unscale_both_sides<S>(P0, m_));
     }
     refresh_theta();
-    guard_.configure(theta0.size(), ceiling_ ? working_P().trace() : S(0));
   }
 
   // Least-squares step on phi_f; returns the prediction error.
@@ -195,7 +191,6 @@ class LeastSquaresUpdate {
         error = lmr_.update(p, target);
         break;
     }
-    protect_covariance();
     refresh_theta();
     return error;
   }
@@ -208,7 +203,6 @@ class LeastSquaresUpdate {
     const Vector<S>& p = scaled_regressor(phi, phi_s_);
     const Vector<S>& z = scaled_regressor(zeta, zeta_s_);
     const S error = standard_.update(p, z, target);
-    protect_covariance();
     refresh_theta();
     return error;
   }
@@ -256,21 +250,11 @@ class LeastSquaresUpdate {
     }
   }
   UpdateForm form() const { return form_; }
-  // What the covariance protection did at the last update (a
-  // CovarianceGuardAction mask).
-  int covariance_guard() const { return guard_.last_action(); }
   bool failed() const {
     return form_ == UpdateForm::kLevenbergMarquardt && lmr_.failed();
   }
 
  private:
-  // The separate protection step of covariance_guard.hpp on the standard
-  // form's P; the Potter and LMR forms keep P positive definite by
-  // construction (S S^T, R^-1).
-  void protect_covariance() {
-    if (form_ == UpdateForm::kStandard) guard_.apply(standard_.mutable_P());
-  }
-
   void reset_internal(const Vector<S>& theta0, const Matrix<S>& P0) {
     switch (form_) {
       case UpdateForm::kStandard:
@@ -321,8 +305,6 @@ class LeastSquaresUpdate {
   Vector<S> m_;
   Vector<S> phi_s_, zeta_s_, theta_;
   mutable Matrix<S> P_;
-  CovarianceGuard<S> guard_;
-  bool ceiling_ = false;  // forgetting factor < 1: P gets a ceiling
 };
 
 template <typename S>
@@ -398,7 +380,6 @@ class RlsSvf {
   // False before t_s,ls.
   bool updating() const { return updating_; }
   bool failed() const { return update_.failed(); }
-  int covariance_guard() const { return update_.covariance_guard(); }
   const SvfRegressor<S>& regressor() const { return regressor_; }
   const RlsSvfConfig<S>& config() const { return config_; }
 
@@ -426,8 +407,6 @@ struct RecursiveOutputs {
                        // initial-condition coefficients c_i)
   S* error = nullptr;  // N: prediction error of each recursion
   S* innovation = nullptr;  // N: r(t_k)/sigma_e^2 of each recursion
-  S* guard = nullptr;  // N: what the covariance protection did to P
-                       // (covariance_guard.hpp: 0, 1 floor, 2 ceiling, 3)
 };
 
 // Runs a recursive estimator over a record. `estimator` provides
@@ -474,7 +453,6 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
     if (out.innovation != nullptr) {
       out.innovation[k] = estimator.innovation_scale();
     }
-    if (out.guard != nullptr) out.guard[k] = S(estimator.covariance_guard());
   }
   for (Eigen::Index i = 0; i < n * np; ++i) {
     if (!std::isfinite(out.thm[i])) {
@@ -504,7 +482,6 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
-    int covariance_guard() const { return e.covariance_guard(); }
   };
   status = record_recursive_run(config.orders, config.svf.u_intersample, record,
                                 out, Adapter{estimator},
