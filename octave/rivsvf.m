@@ -61,9 +61,7 @@
 ## prediction error and its normalised variance 1 + phi_f^T P zeta_f, as
 ## in @code{rlssvf}), and with @code{antiwindup} @code{kappa_ff} (kappa_2
 ## of the parallel RLSSVF-FF), @code{updating} (1 where the estimates were
-## updated, 0 where held) and @code{resets}; @code{covariance_guard},
-## what the covariance protection did to P after each recursion (0 nothing,
-## 1 floor, 2 ceiling, 3 both; see @code{rlssvf}); with missing samples
+## updated, 0 where held) and @code{resets}; with missing samples
 ## @code{missing}, the N-by-1 logical mask of them.
 ##
 ## @strong{Algorithm.} Before tsiv: RLSSVF (eqs. 1.57/1.59). Then the IV

@@ -120,22 +120,8 @@
 ## error y_f^(na) - phi_f^T theta(t_(k-1)) (eq. 1.55); @code{innovation},
 ## its normalised variance 1 + phi_f^T P(t_k|t_(k-1)) phi_f (eq. 3.25;
 ## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i;
-## @code{covariance_guard}, what the covariance protection did to P after
-## each recursion (0 nothing, 1 floor, 2 ceiling, 3 both); with missing
-## samples @code{missing} (see the option @code{Missing}).
+## with missing samples @code{missing} (see the option @code{Missing}).
 ## @end table
-##
-## @strong{Covariance protection.} After each update of the standard form
-## (and of the IV forms of @code{rivsvf}, @code{rsrivc}, ...), the
-## symmetric part of P keeps its eigenvalues at or above np eps times its
-## trace (when it fails, P is replaced by its symmetric part with the
-## eigenvalues raised to that floor): round-off under a long constant input
-## otherwise makes it indefinite. With a forgetting factor < 1, the trace of
-## P is held at or below that of P0 (P is scaled down), since P otherwise
-## grows as lambda^-k without excitation (estimator windup, thesis sec.
-## 3.6) until it overflows. The Potter and LMR forms keep P positive
-## definite by construction and get neither bound. See
-## @file{core/include/ctid/covariance_guard.hpp}.
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
 ## InterSample rule (exact ZOH through the matrix exponential, or the
@@ -320,11 +306,6 @@ endfunction
 %! ## y is bridged linearly over the 2 s gap: its error enters a few
 %! ## updates, which forgetting factor 1 never forgets (3.5 % here)
 %! assert (thm(end, :), [2.4 4 4], 0.05 * 4);
-
-%!test  # covariance protection reported per sample; no action here
-%! [~, ~, ~, info] = rlssvf (data, [2 1 0], "lambda_svf", 3, "adg", 0.99);
-%! assert (size (info.covariance_guard), [numel(u) 1]);
-%! assert (all (ismember (info.covariance_guard, 0:3)));
 
 %!test  # forgetting factor < 1 without excitation: P held below trace(P0)
 %! uc = [u(1:1000); ones(20000, 1)];
