@@ -307,18 +307,6 @@ endfunction
 %! ## updates, which forgetting factor 1 never forgets (3.5 % here)
 %! assert (thm(end, :), [2.4 4 4], 0.05 * 4);
 
-%!test  # forgetting factor < 1 without excitation: P held below trace(P0)
-%! uc = [u(1:1000); ones(20000, 1)];
-%! yc = simc (struct ("B", 4, "F", [1 2.4 4]), uc, Ts);
-%! [~, ~, ps, info] = rlssvf (yc, uc, Ts, [2 1 0], "lambda_svf", 3, ...
-%!                           "adg", 0.995, "P0", 10);
-%! tr = squeeze (sum (sum (ps .* eye (3), 1), 2));
-%! assert (max (tr) <= 30 * (1 + 1e-12));
-%! assert (any (info.covariance_guard >= 2));
-%! for k = [1000 10000 21000]
-%!   assert (min (eig (ps(:, :, k))) > 0);
-%! endfor
-
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [2.5 1 0], "lambda_svf", 2)
