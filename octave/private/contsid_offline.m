@@ -108,6 +108,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
              fname);
   endif
   M = make_model (fname, e, theta, cov, info, d, nu);
+  M = simulation_fit (M, d, np);
   if (nargout > 1)
     s2 = info.noise_variance;
     vy = var (d.y, 1);
@@ -292,6 +293,24 @@ function r = fit_report (y, s2, n, np)
                   "FitPercent", 100 * (1 - sqrt (mse / var (y, 1))),
                   "FPE", mse * (1 + np / n) / (1 - np / n));
   r.DataUsed = struct ("Length", n);
+endfunction
+
+## Report.Fit as the SITB defines it: the fit of the model's simulation
+## (from rest, the data's input and hold) to the estimation output, the
+## numbers comparec reports on the same data.
+function M = simulation_fit (M, d, np)
+  if (d.uniform)
+    data = iddata (d.y, d.u, d.Ts, "InterSample", d.intersample);
+  else
+    data = iddata (d.y, d.u, "SamplingInstants", d.t,
+                   "InterSample", d.intersample);
+  endif
+  [~, est] = comparec (data, M);
+  n = rows (d.y);
+  r = M.Report;
+  r.Fit = struct ("MSE", est.MSE, "LossFcn", est.MSE, "FitPercent", est.Fit,
+                  "FPE", est.MSE * (1 + np / n) / (1 - np / n));
+  M.Report = r;
 endfunction
 
 function theta = init_estimate (fname, init, e, np)
