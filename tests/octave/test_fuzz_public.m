@@ -21,7 +21,9 @@
 ## it holds what it is given.
 ## @end itemize
 ## The number of calls is @env{CTID_FUZZ_CALLS} (default 10000) and the
-## seed @env{CTID_FUZZ_SEED} (default 12).  A summary (calls, accepted,
+## seed @env{CTID_FUZZ_SEED} (default 12).  @env{CTID_FUZZ_ONLY}, a
+## comma-separated list of names (functions, classes or gateways), limits
+## the targets to those, for a developer checking new functions.  A summary (calls, accepted,
 ## identified errors, failures by kind, slowest calls) is printed.
 ## @end deftypefn
 
@@ -37,6 +39,15 @@ function test_fuzz_public ()
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
   [targets, gwdir] = discover (root, tmp);
+  only = getenv ("CTID_FUZZ_ONLY");
+  if (! isempty (only))
+    names = strtrim (strsplit (only, ","));
+    keep = ismember ({targets.name}, names) | ismember ({targets.cls}, names);
+    targets = targets(keep);
+    if (isempty (targets))
+      error ("test_fuzz_public: CTID_FUZZ_ONLY matches no target: %s", only);
+    endif
+  endif
   printf ("test_fuzz_public: %d targets, %d calls, seed %d\n",
           numel (targets), ncalls, seed);
 
