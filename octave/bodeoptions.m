@@ -19,7 +19,8 @@
 ## @seealso{bodeplot, stepplot}
 ## @end deftypefn
 
-function opt = bodeoptions (varargin)
+function [opt, varargout] = bodeoptions (varargin)
+  contsid_nargchk ("bodeoptions", nargin, nargout, [0 Inf], 1);
   if (nargin > 1 || (nargin == 1 && ! strcmpi (varargin{1}, "cstprefs")))
     error ("bodeoptions:badInput",
            "bodeoptions: takes no argument, or \"cstprefs\"");

@@ -34,7 +34,8 @@
 ## @seealso{bodeoptions, stepplot, bode}
 ## @end deftypefn
 
-function h = bodeplot (varargin)
+function [h, varargout] = bodeplot (varargin)
+  contsid_nargchk ("bodeplot", nargin, nargout, [0 Inf], 1);
   [systems, styles, range, opt] = ltiplot_args ("bodeplot", varargin);
   opt = read_options (opt);
   w = frequencies (systems, range);

@@ -18,7 +18,8 @@
 ## @seealso{bode, step}
 ## @end deftypefn
 
-function [mag, phase, w] = dbode (varargin)
+function [mag, phase, w, varargout] = dbode (varargin)
+  contsid_nargchk ("dbode", nargin, nargout, [0 Inf], 3);
   if (! exist ("tf"))
     error ("dbode:notSupported", "dbode: needs the control package");
   endif

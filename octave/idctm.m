@@ -31,7 +31,8 @@
 ## @seealso{idpoly, srivc, lssvf, simc, comparec}
 ## @end deftypefn
 
-function M = idctm (varargin)
+function [M, varargout] = idctm (varargin)
+  contsid_nargchk ("idctm", nargin, nargout, [0 Inf], 1);
   fields = {"B", "F", "nk", "Ts", "InterSample", "theta", "covariance", ...
             "noise_variance", "method", "iterations", "converged", "Report"};
   if (nargin == 1 && isa (varargin{1}, "idpoly"))

@@ -68,9 +68,10 @@
 ## @seealso{prbs, iddata}
 ## @end deftypefn
 
-function [u, freqs] = idinput (N, type = "rgs", band = [0, 1],
-                               levels = [-1, 1], sinedata = [10, 10, 1],
-                               varargin)
+function [u, freqs, varargout] = idinput (N, type = "rgs", band = [0, 1],
+                                          levels = [-1, 1],
+                                          sinedata = [10, 10, 1], varargin)
+  contsid_nargchk ("idinput", nargin, nargout, [0 Inf], 2);
   if (nargin < 1 || nargin > 5)
     error ("idinput:badInput",
            "idinput: takes 1 to 5 arguments, not %d", nargin);

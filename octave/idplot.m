@@ -31,7 +31,9 @@
 ## @seealso{plot, iddata}
 ## @end deftypefn
 
-function ax = idplot (z, int = [], Ts = [], ny = 1, pc = "", varargin)
+function [ax, varargout] = idplot (z, int = [], Ts = [], ny = 1, pc = "",
+                                   varargin)
+  contsid_nargchk ("idplot", nargin, nargout, [0 Inf], 1);
   if (nargin < 1 || nargin > 5)
     error ("idplot:badInput",
            "idplot: takes 1 to 5 arguments, not %d", nargin);

@@ -60,7 +60,9 @@
 ## @seealso{iddata, resample}
 ## @end deftypefn
 
-function [datar, ract] = idresamp (data, R, order = 10, tol = [], varargin)
+function [datar, ract, varargout] = idresamp (data, R, order = 10, tol = [],
+                                              varargin)
+  contsid_nargchk ("idresamp", nargin, nargout, [0 Inf], 2);
   if (nargin < 2 || nargin > 4)
     error ("idresamp:badInput",
            "idresamp: takes 2 to 4 arguments, not %d", nargin);

@@ -28,7 +28,8 @@
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [a, b, c, d] = ord2 (wn, z, varargin)
+function [a, b, c, d, varargout] = ord2 (wn, z, varargin)
+  contsid_nargchk ("ord2", nargin, nargout, [0 Inf], 4);
   if (nargin != 2)
     error ("ord2:badInput",
            "ord2: takes 2 arguments, not %d", nargin);

@@ -41,7 +41,8 @@
 ## @seealso{idproc, tfsrivc}
 ## @end deftypefn
 
-function M = procsrivc (varargin)
+function [M, varargout] = procsrivc (varargin)
+  contsid_nargchk ("procsrivc", nargin, nargout, [0 Inf], 1);
   fname = "procsrivc";
   if (nargin < 2)
     error ("procsrivc:badInput", "procsrivc: expected data and a model");

@@ -41,7 +41,8 @@
 ## @seealso{rarxc, rlssvf}
 ## @end deftypefn
 
-function [thm, yhat, P] = rarx (z, nn, adm, adg, th0, P0)
+function [thm, yhat, P, varargout] = rarx (z, nn, adm, adg, th0, P0, varargin)
+  contsid_nargchk ("rarx", nargin, nargout, [0 6], 3);
   if (nargin < 4)
     error ("rarx:badInput",
            "rarx: needs at least (z, nn, adm, adg), got %d arguments",

@@ -48,7 +48,8 @@
 ## @seealso{rarx, rlssvf}
 ## @end deftypefn
 
-function [THM, YH, info] = rarxc (varargin)
+function [THM, YH, info, varargout] = rarxc (varargin)
+  contsid_nargchk ("rarxc", nargin, nargout, [0 Inf], 3);
   d = contsid_getdata ("rarxc", varargin{:});
   rest = varargin(d.nconsumed + 1:end);
   if (isempty (rest))

@@ -31,7 +31,8 @@
 ## @seealso{srivcstruc, srivc}
 ## @end deftypefn
 
-function [NN, Vcrit] = selcstruc (V, varargin)
+function [NN, Vcrit, varargout] = selcstruc (V, varargin)
+  contsid_nargchk ("selcstruc", nargin, nargout, [0 Inf], 2);
   if (nargin < 1)
     error ("selcstruc:badInput", "selcstruc: expected the matrix V");
   endif

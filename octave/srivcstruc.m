@@ -41,7 +41,8 @@
 ## @seealso{selcstruc, srivc}
 ## @end deftypefn
 
-function [V, info] = srivcstruc (varargin)
+function [V, info, varargout] = srivcstruc (varargin)
+  contsid_nargchk ("srivcstruc", nargin, nargout, [0 Inf], 2);
   fname = "srivcstruc";
   if (nargin < 3)
     error ("srivcstruc:badInput", "srivcstruc: expected ZE, ZV and NN");

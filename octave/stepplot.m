@@ -29,7 +29,8 @@
 ## @seealso{bodeplot, step}
 ## @end deftypefn
 
-function h = stepplot (varargin)
+function [h, varargout] = stepplot (varargin)
+  contsid_nargchk ("stepplot", nargin, nargout, [0 Inf], 1);
   [systems, styles, range, opt] = ltiplot_args ("stepplot", varargin);
   if (! isempty (opt))
     error ("stepplot:notSupported", "stepplot: no options struct");

@@ -66,7 +66,8 @@
 ## @seealso{tfsrivc_init, procsrivc, srivc, idtf}
 ## @end deftypefn
 
-function M = tfsrivc (varargin)
+function [M, varargout] = tfsrivc (varargin)
+  contsid_nargchk ("tfsrivc", nargin, nargout, [0 Inf], 1);
   M = contsid_tf_front ("tfsrivc", varargin);
 endfunction
 

@@ -22,7 +22,8 @@
 ## @seealso{tfsrivc, procsrivc}
 ## @end deftypefn
 
-function M = tfsrivc_init (varargin)
+function [M, varargout] = tfsrivc_init (varargin)
+  contsid_nargchk ("tfsrivc_init", nargin, nargout, [0 Inf], 1);
   M = contsid_tf_front ("tfsrivc_init", varargin);
 endfunction
 

@@ -25,7 +25,8 @@
 ## @seealso{vertcat, horzcat, merge, iddata}
 ## @end deftypefn
 
-function dat = cat (dim, varargin)
+function [dat, varargout] = cat (dim, varargin)
+  contsid_nargchk ("cat", nargin, nargout, [1 Inf], 1);
   if (! (isnumeric (dim) && isscalar (dim) && any (dim == [1, 2, 3])))
     error ("iddata:badInput",
            ["iddata: cat: 'dim' must be 1 (samples), 2 (channels) or 3 ", ...

@@ -43,7 +43,8 @@
 ## @seealso{iddata, detrend}
 ## @end deftypefn
 
-function [dat, trend] = detrend (dat, type = 0, brkp = [], varargin)
+function [dat, trend, varargout] = detrend (dat, type = 0, brkp = [], varargin)
+  contsid_nargchk ("detrend", nargin, nargout, [1 Inf], 2);
   if (nargin > 3)
     error ("iddata:badInput",
            "iddata: detrend: takes 1 to 3 arguments, not %d", nargin);

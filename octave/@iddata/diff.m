@@ -12,7 +12,8 @@
 ## @seealso{iddata, nkshift}
 ## @end deftypefn
 
-function dat = diff (dat, k = 1, varargin)
+function [dat, varargout] = diff (dat, k = 1, varargin)
+  contsid_nargchk ("diff", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 2)
     error ("iddata:badInput",
            "iddata: diff: takes 1 or 2 arguments, not %d", nargin);

@@ -6,7 +6,8 @@
 ## @seealso{iddata, get}
 ## @end deftypefn
 
-function display (dat)
+function varargout = display (dat, varargin)
+  contsid_nargchk ("display", nargin, nargout, [1 1], 0);
   [n, ny, nu, ne] = size (dat);
   plural = {"", "s"};
   printf ("%s =\n\n", inputname (1, false));

@@ -6,7 +6,8 @@
 ## @seealso{iddata, size}
 ## @end deftypefn
 
-function k = end (dat, pos, nidx)
+function [k, varargout] = end (dat, pos, nidx, varargin)
+  contsid_nargchk ("end", nargin, nargout, [1 3], 1);
   if (nidx > 4)
     error ("iddata:badInput",
            "iddata: index as data(samples, outputs, inputs, experiments)");

@@ -19,7 +19,8 @@
 ## @seealso{ifft, iddata}
 ## @end deftypefn
 
-function dat = fft (dat, n = [], varargin)
+function [dat, varargout] = fft (dat, n = [], varargin)
+  contsid_nargchk ("fft", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 2)
     error ("iddata:badInput",
            "iddata: fft: takes 1 or 2 arguments, not %d", nargin);

@@ -6,7 +6,8 @@
 ## @seealso{merge, iddata}
 ## @end deftypefn
 
-function d = getexp (dat, k, varargin)
+function [d, varargout] = getexp (dat, k, varargin)
+  contsid_nargchk ("getexp", nargin, nargout, [1 Inf], 1);
   if (nargin != 2)
     error ("iddata:badInput",
            "iddata: getexp: takes 2 arguments, not %d", nargin);

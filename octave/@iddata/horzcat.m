@@ -14,7 +14,8 @@
 ## @seealso{cat, vertcat, merge}
 ## @end deftypefn
 
-function dat = horzcat (varargin)
+function [dat, varargout] = horzcat (varargin)
+  contsid_nargchk ("horzcat", nargin, nargout, [0 Inf], 1);
   dat = concat_sets (2, varargin, "iddata: horzcat");
 endfunction
 

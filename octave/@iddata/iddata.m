@@ -156,7 +156,8 @@
 ## idresamp, idplot}
 ## @end deftypefn
 
-function dat = iddata (varargin)
+function [dat, varargout] = iddata (varargin)
+  contsid_nargchk ("iddata", nargin, nargout, [0 Inf], 1);
   if (nargin == 1 && isa (varargin{1}, "iddata"))
     dat = varargin{1};
     return;

@@ -13,7 +13,8 @@
 ## @seealso{fft, iddata}
 ## @end deftypefn
 
-function dat = ifft (dat, varargin)
+function [dat, varargout] = ifft (dat, varargin)
+  contsid_nargchk ("ifft", nargin, nargout, [1 Inf], 1);
   if (nargin != 1)
     error ("iddata:badInput",
            "iddata: ifft: takes 1 argument, not %d", nargin);

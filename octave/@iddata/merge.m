@@ -12,7 +12,8 @@
 ## @seealso{getexp, cat, vertcat}
 ## @end deftypefn
 
-function dat = merge (varargin)
+function [dat, varargout] = merge (varargin)
+  contsid_nargchk ("merge", nargin, nargout, [0 Inf], 1);
   dat = concat_sets (3, varargin, "iddata: merge");
 endfunction
 

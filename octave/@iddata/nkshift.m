@@ -15,7 +15,8 @@
 ## @seealso{iddata, diff}
 ## @end deftypefn
 
-function dat = nkshift (dat, nk = 0, append, varargin)
+function [dat, varargout] = nkshift (dat, nk = 0, append, varargin)
+  contsid_nargchk ("nkshift", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 3)
     error ("iddata:badInput",
            "iddata: nkshift: takes 1 to 3 arguments, not %d", nargin);

@@ -8,7 +8,8 @@
 ## @seealso{iddata, size}
 ## @end deftypefn
 
-function n = numel (dat, varargin)
+function [n, varargout] = numel (dat, varargin)
+  contsid_nargchk ("numel", nargin, nargout, [1 Inf], 1);
   if (nargin == 1)
     n = builtin ("numel", dat);
   else

@@ -25,7 +25,8 @@
 ## @seealso{idplot, iddata}
 ## @end deftypefn
 
-function ax = plot (varargin)
+function [ax, varargout] = plot (varargin)
+  contsid_nargchk ("plot", nargin, nargout, [0 Inf], 1);
   [sets, styles] = parse_args (varargin);
   timedomain = cellfun (@(d) struct (d).timedomain, sets);
   if (any (timedomain != timedomain(1)))

@@ -12,7 +12,8 @@
 ## @seealso{idresamp, iddata}
 ## @end deftypefn
 
-function dat = resample (dat, p, q, varargin)
+function [dat, varargout] = resample (dat, p, q, varargin)
+  contsid_nargchk ("resample", nargin, nargout, [1 Inf], 1);
   if (nargin != 3)
     if (nargin == 4)
       error ("iddata:notSupported",

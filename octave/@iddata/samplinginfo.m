@@ -26,7 +26,8 @@
 ## @seealso{iddata, get}
 ## @end deftypefn
 
-function info = samplinginfo (dat)
+function [info, varargout] = samplinginfo (dat, varargin)
+  contsid_nargchk ("samplinginfo", nargin, nargout, [1 1], 1);
   if (! dat.timedomain)
     error ("iddata:badInput",
            "iddata: samplinginfo: 'dat' is a frequency-domain data set");

@@ -14,7 +14,8 @@
 ## @seealso{iddata, get, subsasgn}
 ## @end deftypefn
 
-function retdat = set (dat, varargin)
+function [retdat, varargout] = set (dat, varargin)
+  contsid_nargchk ("set", nargin, nargout, [1 Inf], 1);
   if (nargin == 1)
     names = setdiff (property_name (), {"Domain", "TimeDomain", "N"}, "stable");
     printf ("  %s\n", names{:});

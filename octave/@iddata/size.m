@@ -14,7 +14,8 @@
 ## @seealso{iddata}
 ## @end deftypefn
 
-function varargout = size (dat, dim)
+function varargout = size (dat, dim, varargin)
+  contsid_nargchk ("size", nargin, nargout, [1 2], 4);
   n = cellfun ("rows", dat.y(:).');
   dims = {n, numel(dat.outname), numel(dat.inname), numel(dat.y)};
   if (nargin == 2)

@@ -10,7 +10,8 @@
 ## @seealso{iddata, set, subsref}
 ## @end deftypefn
 
-function dat = subsasgn (dat, s, val)
+function [dat, varargout] = subsasgn (dat, s, val, varargin)
+  contsid_nargchk ("subsasgn", nargin, nargout, [1 3], 1);
   switch (s(1).type)
     case "."
       key = s(1).subs;

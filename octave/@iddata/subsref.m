@@ -16,7 +16,8 @@
 ## @seealso{iddata, get, subsasgn}
 ## @end deftypefn
 
-function val = subsref (dat, s)
+function [val, varargout] = subsref (dat, s, varargin)
+  contsid_nargchk ("subsref", nargin, nargout, [1 2], 1);
   switch (s(1).type)
     case "()"
       val = index_data (dat, s(1).subs);

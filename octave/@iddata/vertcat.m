@@ -18,7 +18,8 @@
 ## @seealso{cat, horzcat, merge}
 ## @end deftypefn
 
-function dat = vertcat (varargin)
+function [dat, varargout] = vertcat (varargin)
+  contsid_nargchk ("vertcat", nargin, nargout, [0 Inf], 1);
   dat = concat_sets (1, varargin, "iddata: vertcat");
 endfunction
 

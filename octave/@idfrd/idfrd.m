@@ -23,7 +23,8 @@
 ## @seealso{idtf, bode, freqresp}
 ## @end deftypefn
 
-function G = idfrd (varargin)
+function [G, varargout] = idfrd (varargin)
+  contsid_nargchk ("idfrd", nargin, nargout, [0 Inf], 1);
   if (nargin < 2)
     if (nargin == 1 && isa (varargin{1}, "idfrd"))
       G = varargin{1};

@@ -16,7 +16,8 @@
 ## package's @code{freqresp} on @code{tf (M)}.
 ## @end deftypefn
 
-function [mag, phase, wout, sdmag, sdphase] = bode (varargin)
+function [mag, phase, wout, sdmag, sdphase, varargout] = bode (varargin)
+  contsid_nargchk ("bode", nargin, nargout, [1 Inf], 5);
   [sys, styles, w, opt] = parse_sys_args ("bode", varargin);
   if (nargout > 0)
     [H, wout, sdm, sdp] = freq_data (sys{1}, w, "bode");

@@ -10,7 +10,8 @@
 ## The covariance is not carried over.
 ## @end deftypefn
 
-function Md = c2d (M, Ts, method)
+function [Md, varargout] = c2d (M, Ts, method, varargin)
+  contsid_nargchk ("c2d", nargin, nargout, [1 3], 1);
   if (nargin < 3)
     method = "zoh";
   endif

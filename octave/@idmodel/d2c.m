@@ -7,7 +7,8 @@
 ## covariance is not carried over.
 ## @end deftypefn
 
-function Mc = d2c (M, method)
+function [Mc, varargout] = d2c (M, method, varargin)
+  contsid_nargchk ("d2c", nargin, nargout, [1 2], 1);
   if (nargin < 2)
     method = "zoh";
   endif

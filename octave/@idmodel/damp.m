@@ -5,7 +5,8 @@
 ## @code{pole}); printed without outputs.
 ## @end deftypefn
 
-function [wn, zeta, p] = damp (M)
+function [wn, zeta, p, varargout] = damp (M, varargin)
+  contsid_nargchk ("damp", nargin, nargout, [1 1], 3);
   P = pstruct (M);
   p = pole (M);
   if (P.Ts > 0)

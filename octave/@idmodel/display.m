@@ -7,7 +7,8 @@
 ## deviations.
 ## @end deftypefn
 
-function display (M)
+function varargout = display (M, varargin)
+  contsid_nargchk ("display", nargin, nargout, [1 1], 0);
   printf ("%s =\n%s\n\n", inputname (1), model_text (pstruct (M), false));
 endfunction
 

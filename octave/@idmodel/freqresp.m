@@ -7,7 +7,8 @@
 ## at its own frequencies (other @var{w}: @code{idfrd:badInput}).
 ## @end deftypefn
 
-function H = freqresp (M, w)
+function [H, varargout] = freqresp (M, w, varargin)
+  contsid_nargchk ("freqresp", nargin, nargout, [1 2], 1);
   P = pstruct (M);
   if (nargin < 2 || ! isnumeric (w) || ! isreal (w) || ! isvector (w)
       || any (! isfinite (w)))

@@ -9,6 +9,7 @@
 ## @end deftypefn
 
 function varargout = get (M, varargin)
+  contsid_nargchk ("get", nargin, nargout, [1 Inf], Inf);
   P = pstruct (M);
   if (nargin == 1)
     names = model_props (P.kind);

@@ -4,7 +4,8 @@
 ## a model that was not estimated.
 ## @end deftypefn
 
-function C = getcov (M)
+function [C, varargout] = getcov (M, varargin)
+  contsid_nargchk ("getcov", nargin, nargout, [1 1], 1);
   C = pstruct (M).cov;
 endfunction
 

@@ -8,7 +8,8 @@
 ## covariance diagonal; NaN without a covariance).
 ## @end deftypefn
 
-function [p, sd] = getpvec (M, varargin)
+function [p, sd, varargout] = getpvec (M, varargin)
+  contsid_nargchk ("getpvec", nargin, nargout, [1 Inf], 2);
   P = pstruct (M);
   if (! isempty (varargin)
       && ! (ischar (varargin{1})

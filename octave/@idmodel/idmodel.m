@@ -16,7 +16,8 @@
 ## @seealso{idpoly, idtf, idproc, idss, idfrd}
 ## @end deftypefn
 
-function M = idmodel (kind, par, ny, nu)
+function [M, varargout] = idmodel (kind, par, ny, nu, varargin)
+  contsid_nargchk ("idmodel", nargin, nargout, [0 4], 1);
   if (nargin != 4 || ! ischar (kind) || ! isstruct (par))
     error ("idmodel:badInput", "idmodel: expected kind, par, ny and nu");
   endif

@@ -11,6 +11,7 @@
 ## @end deftypefn
 
 function varargout = impulse (varargin)
+  contsid_nargchk ("impulse", nargin, nargout, [1 Inf], 2);
   if (nargout == 0)
     time_response ("impulse", "impulse", varargin);
   else

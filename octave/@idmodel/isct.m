@@ -3,7 +3,8 @@
 ## True for a continuous-time model (Ts = 0).
 ## @end deftypefn
 
-function r = isct (M)
+function [r, varargout] = isct (M, varargin)
+  contsid_nargchk ("isct", nargin, nargout, [1 1], 1);
   r = pstruct (M).Ts == 0;
 endfunction
 

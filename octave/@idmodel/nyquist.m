@@ -5,7 +5,8 @@
 ## ny-by-nu-by-N.
 ## @end deftypefn
 
-function [re, im, wout] = nyquist (varargin)
+function [re, im, wout, varargout] = nyquist (varargin)
+  contsid_nargchk ("nyquist", nargin, nargout, [1 Inf], 3);
   [sys, styles, w] = parse_sys_args ("nyquist", varargin);
   if (nargout > 0)
     [H, wout] = freq_data (sys{1}, w, "nyquist");

@@ -4,7 +4,8 @@
 ## delays aside).
 ## @end deftypefn
 
-function p = pole (M)
+function [p, varargout] = pole (M, varargin)
+  contsid_nargchk ("pole", nargin, nargout, [1 1], 1);
   [~, ~, ~, ~, ~, ~, P] = sys_data (M, "pole");
   p = pole (lti_of (P, ifelse_ss (P), "pole"));
 endfunction

@@ -7,7 +7,9 @@
 ## for one input, cells for several.
 ## @end deftypefn
 
-function [A, B, C, D, F, dA, dB, dC, dD, dF] = polydata (M)
+function [A, B, C, D, F, dA, dB, dC, dD, dF, varargout] = polydata (M,
+                                                                    varargin)
+  contsid_nargchk ("polydata", nargin, nargout, [1 1], 10);
   if (! isa (M, "idpoly"))
     M = idpoly (M);
   endif

@@ -9,7 +9,8 @@
 ## With an output, returns the text instead.
 ## @end deftypefn
 
-function txt = present (M)
+function [txt, varargout] = present (M, varargin)
+  contsid_nargchk ("present", nargin, nargout, [1 1], 1);
   s = sprintf ("%s =\n%s\n", inputname (1), model_text (pstruct (M), true));
   if (nargout > 0)
     txt = s;

@@ -4,7 +4,8 @@
 ## Poles (x) and zeros (o) of models in the complex plane.
 ## @end deftypefn
 
-function [pout, zout] = pzmap (varargin)
+function [pout, zout, varargout] = pzmap (varargin)
+  contsid_nargchk ("pzmap", nargin, nargout, [1 Inf], 2);
   [sys, styles] = parse_sys_args ("pzmap", varargin);
   if (nargout > 0)
     pout = pole (sys{1});

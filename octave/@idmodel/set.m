@@ -6,7 +6,8 @@
 ## property names.
 ## @end deftypefn
 
-function M = set (M, varargin)
+function [M, varargout] = set (M, varargin)
+  contsid_nargchk ("set", nargin, nargout, [1 Inf], 1);
   P = pstruct (M);
   if (nargin == 1)
     if (nargout == 0)

@@ -5,7 +5,8 @@
 ## Errors: @code{<class>:dimensionMismatch}, @code{<class>:badInput}.
 ## @end deftypefn
 
-function M = setcov (M, C)
+function [M, varargout] = setcov (M, C, varargin)
+  contsid_nargchk ("setcov", nargin, nargout, [1 2], 1);
   P = pstruct (M);
   np = numel (pvec_of (P));
   if (isempty (C))

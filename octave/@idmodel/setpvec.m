@@ -5,7 +5,8 @@
 ## parameters).  A vector of the wrong length: @code{<class>:dimensionMismatch}.
 ## @end deftypefn
 
-function M = setpvec (M, p)
+function [M, varargout] = setpvec (M, p, varargin)
+  contsid_nargchk ("setpvec", nargin, nargout, [1 2], 1);
   P = pstruct (M);
   p0 = pvec_of (P);
   if (! isnumeric (p) || ! isreal (p) || numel (p) != numel (p0))

@@ -13,7 +13,8 @@
 ## continuous-time one @code{sim (M, u, Ts)}.
 ## @end deftypefn
 
-function y = sim (M, data, Ts)
+function [y, varargout] = sim (M, data, Ts, varargin)
+  contsid_nargchk ("sim", nargin, nargout, [1 3], 1);
   P = pstruct (M);
   if (nargin < 2)
     error ([P.kind ":badInput"], "%s: sim needs input data", P.kind);

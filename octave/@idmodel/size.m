@@ -4,7 +4,8 @@
 ## Numbers of outputs and inputs of a model.
 ## @end deftypefn
 
-function varargout = size (M, dim)
+function varargout = size (M, dim, varargin)
+  contsid_nargchk ("size", nargin, nargout, [1 2], 2);
   P = pstruct (M);
   sz = [P.ny, P.nu];
   if (nargin > 1)

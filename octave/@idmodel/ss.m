@@ -5,7 +5,8 @@
 ## continuous-time delay).
 ## @end deftypefn
 
-function G = ss (M)
+function [G, varargout] = ss (M, varargin)
+  contsid_nargchk ("ss", nargin, nargout, [1 1], 1);
   P = pstruct (M);
   [G, delay] = lti_of (P, "ss", "ss");
   if (any (delay(:) != 0))

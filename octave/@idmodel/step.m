@@ -11,6 +11,7 @@
 ## @end deftypefn
 
 function varargout = step (varargin)
+  contsid_nargchk ("step", nargin, nargout, [1 Inf], 2);
   if (nargout == 0)
     time_response ("step", "step", varargin);
   else

@@ -5,7 +5,8 @@
 ## @code{init_sys.Structure.Td.Value = 0.5} or @code{M.B(2) = 3} work.
 ## @end deftypefn
 
-function M = subsasgn (M, s, v)
+function [M, varargout] = subsasgn (M, s, v, varargin)
+  contsid_nargchk ("subsasgn", nargin, nargout, [1 3], 1);
   P = pstruct (M);
   if (! strcmp (s(1).type, "."))
     error ([P.kind ":notSupported"],

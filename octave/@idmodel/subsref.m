@@ -7,7 +7,8 @@
 ## See @code{get (M)} for the list.
 ## @end deftypefn
 
-function v = subsref (M, s)
+function [v, varargout] = subsref (M, s, varargin)
+  contsid_nargchk ("subsref", nargin, nargout, [1 2], 1);
   P = pstruct (M);
   if (! strcmp (s(1).type, "."))
     error ([P.kind ":notSupported"],

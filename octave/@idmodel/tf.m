@@ -8,7 +8,8 @@
 ## @code{totaldelay (M)}, or @code{c2d} first).
 ## @end deftypefn
 
-function G = tf (M)
+function [G, varargout] = tf (M, varargin)
+  contsid_nargchk ("tf", nargin, nargout, [1 1], 1);
   P = pstruct (M);
   [G, delay] = lti_of (P, "tf", "tf");
   if (any (delay(:) != 0))

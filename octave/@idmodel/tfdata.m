@@ -10,7 +10,8 @@
 ## @code{<class>:badInput} / @code{<class>:notSupported}.
 ## @end deftypefn
 
-function [num, den, Ts] = tfdata (M, form)
+function [num, den, Ts, varargout] = tfdata (M, form, varargin)
+  contsid_nargchk ("tfdata", nargin, nargout, [1 2], 3);
   P = pstruct (M);
   [num, den] = tf_parts (P);
   Ts = P.Ts;

@@ -5,7 +5,8 @@
 ## continuous time, samples in discrete time.
 ## @end deftypefn
 
-function d = totaldelay (M)
+function [d, varargout] = totaldelay (M, varargin)
+  contsid_nargchk ("totaldelay", nargin, nargout, [1 1], 1);
   M = pstruct (M);
   d = repmat (M.InputDelay(:).', M.ny, 1);
   switch (M.kind)

@@ -3,7 +3,8 @@
 ## Zeros of a model (the control package's @code{zero}).
 ## @end deftypefn
 
-function z = zero (M)
+function [z, varargout] = zero (M, varargin)
+  contsid_nargchk ("zero", nargin, nargout, [1 1], 1);
   [~, ~, ~, ~, ~, ~, P] = sys_data (M, "zero");
   z = zero (lti_of (P, "tf", "zero"));
 endfunction

@@ -7,7 +7,8 @@
 ## the parameter covariance).
 ## @end deftypefn
 
-function zpplot (varargin)
+function varargout = zpplot (varargin)
+  contsid_nargchk ("zpplot", nargin, nargout, [1 Inf], 0);
   [sys, styles, ~, opt] = parse_sys_args ("zpplot", varargin);
   args = [sys; styles];
   pzmap (args{:});

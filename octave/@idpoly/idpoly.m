@@ -46,7 +46,8 @@
 ## @seealso{idtf, idproc, idss, idfrd, present, srivc}
 ## @end deftypefn
 
-function M = idpoly (varargin)
+function [M, varargout] = idpoly (varargin)
+  contsid_nargchk ("idpoly", nargin, nargout, [0 Inf], 1);
   if (nargin == 0)
     error ("idpoly:badInput", "idpoly: expected at least A");
   endif

@@ -29,7 +29,8 @@
 ## @seealso{idtf, idpoly, procsrivc}
 ## @end deftypefn
 
-function M = idproc (varargin)
+function [M, varargout] = idproc (varargin)
+  contsid_nargchk ("idproc", nargin, nargout, [0 Inf], 1);
   if (nargin == 0 || ! ischar (varargin{1}))
     if (nargin == 1 && isa (varargin{1}, "idproc"))
       M = varargin{1};

@@ -23,7 +23,8 @@
 ## @seealso{idpoly, idtf, comparec}
 ## @end deftypefn
 
-function M = idss (varargin)
+function [M, varargout] = idss (varargin)
+  contsid_nargchk ("idss", nargin, nargout, [0 Inf], 1);
   if (nargin == 0)
     error ("idss:badInput", "idss: expected A, B, C, D or a model");
   endif

@@ -27,7 +27,8 @@
 ## @seealso{idpoly, idproc, idss, tfsrivc}
 ## @end deftypefn
 
-function M = idtf (varargin)
+function [M, varargout] = idtf (varargin)
+  contsid_nargchk ("idtf", nargin, nargout, [0 Inf], 1);
   if (nargin == 0)
     error ("idtf:badInput", "idtf: expected num and den, or a model");
   endif

@@ -4,7 +4,8 @@
 ## malformed calls listed in @var{specfile} (a MAT file with the fields
 ## root, logfile, targets (struct array: name, kind, cls), first, last and
 ## seed) and logs each call to @var{logfile} before (@code{S k}) and after
-## it (@code{R k status identifier nonfinite seconds}), flushing every line
+## it (@code{R k status identifier nonfinite seconds name class}, the
+## class being that of the object a method was called on), flushing every line
 ## so that the parent can tell which call crashed or hung.
 ## @end deftypefn
 
@@ -24,6 +25,10 @@ function fuzz_public_child (specfile)
     rand ("state", spec.seed * 1e6 + k);
     randn ("state", spec.seed * 1e6 + k);
     [args, nout] = make_call (tgt);
+    objcls = "-";
+    if (strcmp (tgt.kind, "method"))
+      objcls = class (args{1});        # a subclass inheriting the method
+    endif
     fprintf (fid, "S %d\n", k);
     fflush (fid);
     tic;
@@ -42,13 +47,14 @@ function fuzz_public_child (specfile)
       if (isempty (id))
         id = "-";
       endif
-      if (isempty (regexp (id, ['^(' tgt.name '|' tgt.cls '):'], "once")))
+      if (isempty (regexp (id, ['^(' tgt.name '|' tgt.cls '|' objcls '):'],
+                           "once")))
         fprintf (fid, "M %d %s\n", k, strrep (err.message, "\n", " "));
       endif
     end_try_catch
     close all;
-    fprintf (fid, "R %d %s %s %d %.3f %s\n", k, status, id, nonfinite, toc,
-             tgt.name);
+    fprintf (fid, "R %d %s %s %d %.3f %s %s\n", k, status, id, nonfinite,
+             toc, tgt.name, objcls);
     fflush (fid);
   endfor
   fclose (fid);

@@ -12,7 +12,8 @@
 ## @itemize
 ## @item a crash (the child died) or a hang (the batch hit its time limit);
 ## @item an error without an identifier @code{<name>:<reason>}, where
-## <name> is the function called (for a method also its class; for a
+## <name> is the function called (for a method also its class or the
+## class of the object it was called on, a subclass that inherits it; for a
 ## gateway any non-Octave name, since the caller's name is passed in);
 ## @item an accepted call with non-finite inputs (NaN or Inf anywhere in
 ## its arguments) that returns non-finite numbers silently.  NaN in a
@@ -56,7 +57,7 @@ function test_fuzz_public ()
   batch_timeout = 600;
   log = fullfile (tmp, "calls.log");
   res = struct ("k", {}, "status", {}, "id", {}, "nonfinite", {},
-                "sec", {}, "name", {}, "msg", {});
+                "sec", {}, "name", {}, "objcls", {}, "msg", {});
   failures = {};
   t0 = time ();
   for b = 1:nbatch
@@ -113,7 +114,7 @@ function test_fuzz_public ()
                                     "gave non-finite outputs"], r.k,
                                    tgt.name);
       endif
-    elseif (identified (r.id, tgt))
+    elseif (identified (r.id, tgt, r.objcls))
       nid += 1;
     else
       failures{end+1} = sprintf ("call %d (%s): error id '%s': %s", r.k,
@@ -197,20 +198,20 @@ endfunction
 ## An identifier <name>:<reason> naming the function called (or the class
 ## of a method); a gateway receives the caller's name, so any name but
 ## Octave's own counts.
-function tf = identified (id, tgt)
+function tf = identified (id, tgt, objcls)
   tok = regexp (id, '^([A-Za-z]\w*):([A-Za-z]\w*)$', "tokens", "once");
   if (isempty (tok))
     tf = false;
   elseif (strcmp (tgt.kind, "gateway"))
     tf = ! strcmp (tok{1}, "Octave");
   else
-    tf = any (strcmp (tok{1}, {tgt.name, tgt.cls}));
+    tf = any (strcmp (tok{1}, {tgt.name, tgt.cls, objcls}));
   endif
 endfunction
 
 function [r, started] = read_log (log)
   r = struct ("k", {}, "status", {}, "id", {}, "nonfinite", {}, "sec", {},
-              "name", {}, "msg", {});
+              "name", {}, "objcls", {}, "msg", {});
   started = [];
   msgs = {};
   if (! exist (log, "file"))
@@ -227,7 +228,11 @@ function [r, started] = read_log (log)
     elseif (numel (w) >= 7 && strcmp (w{1}, "R"))
       r(end+1) = struct ("k", str2double (w{2}), "status", w{3}, "id", w{4},
                          "nonfinite", str2double (w{5}), "sec",
-                         str2double (w{6}), "name", w{7}, "msg", "");
+                         str2double (w{6}), "name", w{7}, "objcls", "-",
+                         "msg", "");
+      if (numel (w) >= 8)
+        r(end).objcls = w{8};
+      endif
       if (! isempty (msgs))
         r(end).msg = msgs{end};
         msgs = {};
