@@ -7,7 +7,7 @@
 ## @end deftypefn
 
 function [k, varargout] = end (dat, pos, nidx, varargin)
-  contsid_nargchk ("end", nargin, nargout, [1 3], 1);
+  contsid_nargchk ("end", nargin, nargout, [3 3], 1);
   if (nidx > 4)
     error ("iddata:badInput",
            "iddata: index as data(samples, outputs, inputs, experiments)");

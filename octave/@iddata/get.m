@@ -14,7 +14,7 @@
 ## @end deftypefn
 
 function varargout = get (dat, varargin)
-  contsid_nargchk ("get", nargin, nargout, [1 Inf], Inf);
+  contsid_nargchk ("get", nargin, nargout, [1 Inf], max (1, nargin - 1));
   if (nargin == 1)
     names = property_name ();
     vals = cellfun (@(name) property_value (dat, name, false), names,

@@ -11,15 +11,20 @@
 ## @end deftypefn
 
 function [dat, varargout] = subsasgn (dat, s, val, varargin)
-  contsid_nargchk ("subsasgn", nargin, nargout, [1 3], 1);
+  contsid_nargchk ("subsasgn", nargin, nargout, [3 3], 1);
+  check_subs (s, "iddata");
   switch (s(1).type)
     case "."
       key = s(1).subs;
       name = property_name (key, "iddata");
       if (numel (s) > 1)
         control_style = called_from_control (name);
-        val = subsasgn (property_value (dat, name, control_style),
-                        s(2:end), val);
+        try
+          val = subsasgn (property_value (dat, name, control_style),
+                          s(2:end), val);
+        catch err
+          error ("iddata:badInput", "iddata: %s", err.message);
+        end_try_catch
       endif
       dat = assign_property (dat, name, val, key, "iddata");
       check_dataset (dat, "iddata");

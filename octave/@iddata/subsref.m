@@ -17,7 +17,8 @@
 ## @end deftypefn
 
 function [val, varargout] = subsref (dat, s, varargin)
-  contsid_nargchk ("subsref", nargin, nargout, [1 2], 1);
+  contsid_nargchk ("subsref", nargin, nargout, [2 2], 1);
+  check_subs (s, "iddata");
   switch (s(1).type)
     case "()"
       val = index_data (dat, s(1).subs);
@@ -30,7 +31,11 @@ function [val, varargout] = subsref (dat, s, varargin)
              "iddata: use data(...) or data.Name; data{...} is undefined");
   endswitch
   if (numel (s) > 1)
-    val = subsref (val, s(2:end));
+    try
+      val = subsref (val, s(2:end));
+    catch err
+      error ("iddata:badInput", "iddata: %s", err.message);
+    end_try_catch
   endif
 endfunction
 

@@ -42,7 +42,7 @@ function [G, varargout] = idfrd (varargin)
     error ("idfrd:badInput", "idfrd: w must be a vector of frequencies >= 0");
   endif
   w = double (w(:));
-  if (isobject (R))
+  if (isa (R, "idmodel") || isa (R, "lti"))
     R = freqresp (R, w);
   endif
   if (! isnumeric (R) || any (! isfinite (R(:))))

@@ -9,7 +9,7 @@
 ## @end deftypefn
 
 function varargout = get (M, varargin)
-  contsid_nargchk ("get", nargin, nargout, [1 Inf], Inf);
+  contsid_nargchk ("get", nargin, nargout, [1 Inf], max (1, nargin - 1));
   P = pstruct (M);
   if (nargin == 1)
     names = model_props (P.kind);

@@ -6,7 +6,7 @@
 ## @end deftypefn
 
 function [M, varargout] = setcov (M, C, varargin)
-  contsid_nargchk ("setcov", nargin, nargout, [1 2], 1);
+  contsid_nargchk ("setcov", nargin, nargout, [2 2], 1);
   P = pstruct (M);
   np = numel (pvec_of (P));
   if (isempty (C))

@@ -6,7 +6,7 @@
 ## @end deftypefn
 
 function [M, varargout] = setpvec (M, p, varargin)
-  contsid_nargchk ("setpvec", nargin, nargout, [1 2], 1);
+  contsid_nargchk ("setpvec", nargin, nargout, [2 2], 1);
   P = pstruct (M);
   p0 = pvec_of (P);
   if (! isnumeric (p) || ! isreal (p) || numel (p) != numel (p0))

@@ -9,7 +9,7 @@ function varargout = size (M, dim, varargin)
   P = pstruct (M);
   sz = [P.ny, P.nu];
   if (nargin > 1)
-    if (! any (dim == [1 2]))
+    if (! (isnumeric (dim) && isscalar (dim) && any (dim == [1 2])))
       error ([P.kind ":badInput"], "%s: size's dimension must be 1 or 2",
              P.kind);
     endif

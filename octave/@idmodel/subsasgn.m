@@ -6,8 +6,9 @@
 ## @end deftypefn
 
 function [M, varargout] = subsasgn (M, s, v, varargin)
-  contsid_nargchk ("subsasgn", nargin, nargout, [1 3], 1);
+  contsid_nargchk ("subsasgn", nargin, nargout, [3 3], 1);
   P = pstruct (M);
+  check_subs (s, P.kind);
   if (! strcmp (s(1).type, "."))
     error ([P.kind ":notSupported"],
            "%s: use M.Property = value; indexed assignment is not supported",
@@ -15,7 +16,11 @@ function [M, varargout] = subsasgn (M, s, v, varargin)
   endif
   name = match_prop (P, s(1).subs, P.kind);
   if (numel (s) > 1)
-    v = subsasgn (get_prop (P, name), s(2:end), v);
+    try
+      v = subsasgn (get_prop (P, name), s(2:end), v);
+    catch err
+      error ([P.kind ":badInput"], "%s: %s", P.kind, err.message);
+    end_try_catch
   endif
   P = set_prop (P, name, v, P.kind);
   for f = fieldnames (P).'

@@ -8,8 +8,9 @@
 ## @end deftypefn
 
 function [v, varargout] = subsref (M, s, varargin)
-  contsid_nargchk ("subsref", nargin, nargout, [1 2], 1);
+  contsid_nargchk ("subsref", nargin, nargout, [2 2], 1);
   P = pstruct (M);
+  check_subs (s, P.kind);
   if (! strcmp (s(1).type, "."))
     error ([P.kind ":notSupported"],
            "%s: use M.Property to read a model; indexing is not supported",
@@ -17,8 +18,18 @@ function [v, varargout] = subsref (M, s, varargin)
   endif
   v = get_prop (P, match_prop (P, s(1).subs, P.kind));
   if (numel (s) > 1)
-    v = subsref (v, s(2:end));
+    v = nested_ref (v, s(2:end), P.kind);
   endif
+endfunction
+
+## The rest of M.Property(...)...: Octave's own indexing errors become
+## identified ones.
+function v = nested_ref (v, s, kind)
+  try
+    v = subsref (v, s);
+  catch err
+    error ([kind ":badInput"], "%s: %s", kind, err.message);
+  end_try_catch
 endfunction
 
 %!test

@@ -29,6 +29,11 @@ function [sys, styles, x, opt] = parse_sys_args (fname, args)
     elseif (ischar (a) && strcmpi (a, "fill"))
       opt.fill = true;
     elseif (ischar (a) && ! isempty (sys) && isempty (styles{end}))
+      [~, valid] = __pltopt__ (fname, a, false);
+      if (! valid)
+        error ([fname ":badInput"], "%s: '%s' is not a line style", fname,
+               a);
+      endif
       styles{end} = a;
     elseif ((isnumeric (a) && isreal (a)) || iscell (a))
       if (iscell (a))

@@ -1,0 +1,1 @@
+../../@idmodel/private/check_subs.m
