@@ -145,7 +145,7 @@ function [M, varargout] = procsrivc (varargin)
 
   est_td = info.delay_estimated;
   theta = [den(2:end).'; num(:)];
-  names = proc_params (type);
+  names = fieldnames (get (idproc (type), "Structure")).';   # idproc's table
   p = to_process (theta, td);
   ## Delta method: the Jacobian of the process parameters in [f; b; td].
   z = [theta; td];
@@ -238,23 +238,6 @@ function [M, varargout] = procsrivc (varargin)
   endfunction
 endfunction
 
-function names = proc_params (type)
-  n = type(2) - "0";
-  names = {"Kp"};
-  if (any (type == "U"))
-    extra = {"Tp3"};
-    names = [names, extra(1:n-2), {"Tw", "Zeta"}];
-  else
-    tp = {"Tp1", "Tp2", "Tp3"};
-    names = [names, tp(1:n)];
-  endif
-  if (any (type == "D"))
-    names{end+1} = "Td";
-  endif
-  if (any (type == "Z"))
-    names{end+1} = "Tz";
-  endif
-endfunction
 
 %!shared data, M0, Ts, u
 %! Ts = 0.05;

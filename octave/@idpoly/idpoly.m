@@ -59,20 +59,8 @@ function [M, varargout] = idpoly (varargin)
     M = convert (varargin{:});
     return;
   endif
-  npos = find (cellfun ("ischar", varargin), 1) - 1;
-  if (isempty (npos))
-    npos = nargin;
-  endif
-  if (npos > 7)
-    error ("idpoly:badInput", "idpoly: at most 7 positional arguments");
-  endif
-  pos = [varargin(1:npos), cell(1, 7 - npos)];
+  [pos, pairs, Tsp] = ctor_args ("idpoly", varargin, [1 7]);
   [A, B, C, D, F, lambda, Ts] = pos{:};
-  pairs = varargin(npos+1:end);
-  if (mod (numel (pairs), 2) != 0)
-    error ("idpoly:badInput",
-           "idpoly: properties must come in name-value pairs");
-  endif
   if (iscell (B))
     nu = numel (B);
   elseif (isempty (B))
@@ -81,10 +69,8 @@ function [M, varargout] = idpoly (varargin)
     nu = rows (B);
   endif
   ## Ts first: it decides how delays are checked.
-  k = find (strcmpi (pairs(1:2:end), "Ts"), 1, "last");
-  if (! isempty (k))
-    Ts = pairs{2*k};
-    pairs(2*k-1:2*k) = [];
+  if (! isempty (Tsp))
+    Ts = Tsp;
   endif
   if (isempty (Ts))
     Ts = 1;

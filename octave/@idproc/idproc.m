@@ -39,7 +39,7 @@ function [M, varargout] = idproc (varargin)
     error ("idproc:badInput", "idproc: expected a type such as 'P2DU'");
   endif
   type = upper (varargin{1});
-  names = proc_names_ (type);
+  names = proc_names (type);   # @idmodel/private, linked here
   pairs = varargin(2:end);
   if (mod (numel (pairs), 2) != 0)
     error ("idproc:badInput",
@@ -62,33 +62,6 @@ function [M, varargout] = idproc (varargin)
   catch
   end_try_catch
   M = set (M, pairs{:});
-endfunction
-
-## proc_names of @idmodel is private there; the type check is repeated
-## here through a model of that type.
-function names = proc_names_ (type)
-  if (isempty (regexp (type, '^P[0-3][DZUI]*$', "once"))
-      || numel (unique (double (type(3:end)))) != numel (type) - 2
-      || (any (type == "U") && type(2) < "2"))
-    error ("idproc:badInput",
-           ["idproc: Type must be 'P', 0-3 poles and any of D, Z, U, I ", ...
-            "(U needs 2 or 3 poles), got '%s'"], type);
-  endif
-  np = type(2) - "0";
-  names = {"Kp"};
-  if (any (type == "U"))
-    extra = {"Tp3"};
-    names = [names, extra(1:np-2), {"Tw", "Zeta"}];
-  else
-    all_tp = {"Tp1", "Tp2", "Tp3"};
-    names = [names, all_tp(1:np)];
-  endif
-  if (any (type == "D"))
-    names{end+1} = "Td";
-  endif
-  if (any (type == "Z"))
-    names{end+1} = "Tz";
-  endif
 endfunction
 
 %!test

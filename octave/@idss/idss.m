@@ -36,14 +36,7 @@ function [M, varargout] = idss (varargin)
     M = convert (varargin{:});
     return;
   endif
-  npos = find (cellfun ("ischar", varargin), 1) - 1;
-  if (isempty (npos))
-    npos = nargin;
-  endif
-  if (npos < 4 || npos > 7)
-    error ("idss:badInput", "idss: expected A, B, C, D[, K, x0, Ts]");
-  endif
-  pos = [varargin(1:npos), cell(1, 7 - npos)];
+  [pos, pairs, Tsp] = ctor_args ("idss", varargin, [4 7]);
   [A, B, C, D, K, x0, Ts] = pos{:};
   for v = {A, B, C, D, K, x0, Ts}
     if (! isnumeric (v{1}) || ! isreal (v{1}) || any (! isfinite (v{1}(:))))
@@ -79,14 +72,8 @@ function [M, varargout] = idss (varargin)
     superiorto ("tf", "ss", "frd", "lti");
   catch
   end_try_catch
-  pairs = varargin(npos+1:end);
-  if (mod (numel (pairs), 2) != 0)
-    error ("idss:badInput", "idss: properties must come in name-value pairs");
-  endif
-  k = find (strcmpi (pairs(1:2:end), "Ts"), 1, "last");
-  if (! isempty (k))
-    Ts = pairs{2*k};
-    pairs(2*k-1:2*k) = [];
+  if (! isempty (Tsp))
+    Ts = Tsp;
   endif
   M = set (M, "Ts", Ts, pairs{:});
 endfunction

@@ -40,27 +40,12 @@ function [M, varargout] = idtf (varargin)
     M = convert (varargin{:});
     return;
   endif
-  npos = find (cellfun ("ischar", varargin), 1) - 1;
-  if (isempty (npos))
-    npos = nargin;
-  endif
-  if (npos < 2 || npos > 3)
-    error ("idtf:badInput", "idtf: expected num, den and optionally Ts");
-  endif
-  num = varargin{1};
-  den = varargin{2};
-  Ts = 0;
-  if (npos == 3)
-    Ts = varargin{3};
-  endif
-  pairs = varargin(npos+1:end);
-  if (mod (numel (pairs), 2) != 0)
-    error ("idtf:badInput", "idtf: properties must come in name-value pairs");
-  endif
-  k = find (strcmpi (pairs(1:2:end), "Ts"), 1, "last");
-  if (! isempty (k))
-    Ts = pairs{2*k};
-    pairs(2*k-1:2*k) = [];
+  [pos, pairs, Tsp] = ctor_args ("idtf", varargin, [2 3]);
+  [num, den, Ts] = pos{:};
+  if (! isempty (Tsp))
+    Ts = Tsp;
+  elseif (isempty (Ts))
+    Ts = 0;
   endif
   if (! iscell (num))
     num = {num};

@@ -1,0 +1,1 @@
+../../@idmodel/private/proc_names.m

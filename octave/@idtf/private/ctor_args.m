@@ -1,0 +1,1 @@
+../../@idmodel/private/ctor_args.m
