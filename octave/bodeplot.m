@@ -47,23 +47,14 @@ function [h, varargout] = bodeplot (varargin)
     error ("bodeplot:badInput",
            "bodeplot: MagVisible and PhaseVisible are both off");
   endif
-  ax = zeros (nrow, nu);
-  for r = 1:nrow
-    for c = 1:nu
-      ax(r,c) = subplot (nrow, nu, (r - 1) * nu + c);
-      hold (ax(r,c), "on");
-    endfor
-  endfor
+  ax = ltiplot_axes (nrow, nu);
   for k = 1:numel (systems)
     [H, wk] = response (systems{k}, w);
     x = wk;
     if (strcmpi (opt.FreqUnits, "Hz"))
       x = wk / (2*pi);
     endif
-    style = {};
-    if (! isempty (styles{k}))
-      style = styles(k);
-    endif
+    style = styles{k};
     for i = 1:rows (systems{k})
       for j = 1:columns (systems{k})
         g = squeeze (H(i,j,:));

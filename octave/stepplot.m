@@ -54,20 +54,11 @@ function [h, varargout] = stepplot (varargin)
   endif
   ny = max (cellfun ("rows", systems));
   nu = max (cellfun ("columns", systems));
-  ax = zeros (ny, nu);
-  for i = 1:ny
-    for j = 1:nu
-      ax(i,j) = subplot (ny, nu, (i - 1) * nu + j);
-      hold (ax(i,j), "on");
-    endfor
-  endfor
+  ax = ltiplot_axes (ny, nu);
   for k = 1:numel (systems)
     sys = systems{k};
     [y, t] = step (sys, range);
-    style = {};
-    if (! isempty (styles{k}))
-      style = styles(k);
-    endif
+    style = styles{k};
     for i = 1:rows (sys)
       for j = 1:columns (sys)
         if (isct (sys))

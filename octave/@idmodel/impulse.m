@@ -12,12 +12,7 @@
 
 function varargout = impulse (varargin)
   contsid_nargchk ("impulse", nargin, nargout, [1 Inf], 2);
-  if (nargout == 0)
-    time_response ("impulse", "impulse", varargin);
-  else
-    [y, t] = time_response ("impulse", "impulse", varargin);
-    varargout = {y, t};
-  endif
+  [varargout{1:nargout}] = time_response ("impulse", "impulse", varargin);
 endfunction
 
 %!test  # against the control package's impulse of the same tf

@@ -12,12 +12,7 @@
 
 function varargout = step (varargin)
   contsid_nargchk ("step", nargin, nargout, [1 Inf], 2);
-  if (nargout == 0)
-    time_response ("step", "step", varargin);
-  else
-    [y, t] = time_response ("step", "step", varargin);
-    varargout = {y, t};
-  endif
+  [varargout{1:nargout}] = time_response ("step", "step", varargin);
 endfunction
 
 %!test  # against the control package's step of the same tf

@@ -9,7 +9,8 @@
 ## classes' conversion), else through @code{frd (model)}, else as
 ## @code{frd (model.ResponseData, model.Frequency, model.Ts)} (SITB's
 ## @code{idfrd} properties).  A string after a
-## model is its line style.  @var{range} is the numeric (or cell
+## model is its line style: @var{styles}@{k@} is @code{@{style@}} or
+## @code{@{@}}, to pass on as @code{plot (x, y, styles@{k@}@{:@})}.  @var{range} is the numeric (or cell
 ## @code{@{wmin, wmax@}}) argument after the models, @code{[]} when
 ## absent; @var{opt} a trailing options struct (one without a
 ## @code{ResponseData} field, which marks frequency response data),
@@ -39,7 +40,7 @@ function [systems, styles, range, opt] = ltiplot_args (who, args)
         error ([who, ":badInput"],
                "%s: argument %d: '%s' is not a line style", who, k, x);
       endif
-      styles{end} = x;
+      styles{end} = {x};
     elseif (isstruct (x) && ! isfield (x, "ResponseData"))
       if (k != numel (args))
         error ([who, ":badInput"],
@@ -59,7 +60,7 @@ function [systems, styles, range, opt] = ltiplot_args (who, args)
              who, k);
     else
       systems{end+1} = to_lti (who, x, k);
-      styles{end+1} = "";
+      styles{end+1} = {};
     endif
     k++;
   endwhile
