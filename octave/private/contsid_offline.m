@@ -95,9 +95,9 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   if (info.output_offset)
     info.reason = sprintf ("%s; output offset c = %g estimated%s",
                            info.reason, info.offset,
-                           ifelse_str (ischar (opts.OutputOffset),
-                                       " (the record does not start at rest)",
-                                       ""));
+                           merge (ischar (opts.OutputOffset),
+                                  " (the record does not start at rest)",
+                                  ""));
   endif
   if (refined && ! info.converged)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
@@ -386,13 +386,5 @@ function varargout = read_datacl (datacl, n, reference)
     varargout{2} = double (datacl(:, 2));
   else
     varargout{2} = zeros (n, 1);
-  endif
-endfunction
-
-function s = ifelse_str (c, a, b)
-  if (c)
-    s = a;
-  else
-    s = b;
   endif
 endfunction

@@ -18,7 +18,7 @@ function v = get_prop (M, name)
     case "Variable"
       v = "s";
       if (M.Ts > 0)
-        v = ifelse_str (strcmp (M.kind, "idpoly"), "z^-1", "z");
+        v = merge (strcmp (M.kind, "idpoly"), "z^-1", "z");
       endif
       return;
   endswitch
@@ -103,14 +103,6 @@ function nk = delays_in_samples (M)
             "of the estimation data; read InputDelay (seconds)"]);
   else
     nk = round (d / Ts);
-  endif
-endfunction
-
-function s = ifelse_str (c, a, b)
-  if (c)
-    s = a;
-  else
-    s = b;
   endif
 endfunction
 
