@@ -4,8 +4,10 @@
 ## Simulates a model (its input-output part, from rest, noise-free) on
 ## the inputs of @var{data}, an @code{iddata} set (input-only
 ## @code{iddata ([], u, Ts)} or with outputs; its outputs are ignored).
-## Returns an @code{iddata} set with the simulated output, the same inputs,
-## sampling and InterSample.  A continuous-time model is simulated by
+## Returns, as the System Identification Toolbox, an output-only
+## @code{iddata} set of the simulated output with the data's sampling
+## interval (or sampling instants) and InterSample, one experiment per
+## experiment of @var{data}.  A continuous-time model is simulated by
 ## @code{simc} (exact for ZOH or FOH inputs, delays included); a
 ## discrete-time model by its difference equation, which needs the data's
 ## sampling interval to equal the model's.  Numeric @var{u} (N-by-nu)
@@ -27,23 +29,27 @@ function [y, varargout] = sim (M, data, Ts, varargin)
     return;
   endif
   if (isa (data, "iddata"))
-    [~, ~, nu] = size (data);
-    info = samplinginfo (data);
-    u = get (data, "InputData");
-    if (iscell (u))
-      u = u{1};
+    nexp = size (data, 4);
+    if (nexp > 1)                      # one simulation per experiment
+      ys = cell (1, nexp);
+      for k = 1:nexp
+        ys{k} = sim (M, getexp (data, k));
+      endfor
+      y = merge (ys{:});
+      return;
     endif
+    info = samplinginfo (data);
     if (P.Ts == 0)
       yv = simc (M, data);
     else
-      yv = dt_sim (P, u, info.Ts);
+      yv = dt_sim (P, get (data, "InputData"), info.Ts);
     endif
-    if (info.Uniform)
-      y = iddata (yv, u, info.Ts, "InterSample", info.InterSample);
-    else
-      y = iddata (yv, u, info.SamplingInstants, "InterSample",
-                  info.InterSample);
+    ## As the SITB: the simulated output only, sampled as the data.
+    t = info.Ts;
+    if (! info.Uniform)
+      t = info.SamplingInstants;
     endif
+    y = iddata (yv, [], t, "InterSample", info.InterSample);
     return;
   endif
   if (! isnumeric (data) || ! isreal (data))
@@ -91,10 +97,10 @@ function y = sim_frequency (M, P, data)
 endfunction
 
 function y = dt_sim (P, u, Ts)
-  if (abs (Ts - P.Ts) > 1e-12 * P.Ts)
+  if (! (isscalar (Ts) && abs (Ts - P.Ts) <= 1e-12 * P.Ts))
     error ([P.kind ":badInput"],
-           "%s: the data's Ts (%g) differs from the model's (%g)", P.kind,
-           Ts, P.Ts);
+           "%s: the data's Ts (%s) differs from the model's (%g)", P.kind,
+           merge (isscalar (Ts), num2str (Ts), "irregular"), P.Ts);
   endif
   if (columns (u) != P.nu)
     error ([P.kind ":dimensionMismatch"],
@@ -145,6 +151,19 @@ endfunction
 %! assert (Y.y, simc (M, u, Ts, "InterSample", "foh"), 1e-14);
 %! assert (get (Y, "InterSample"), "foh");
 
+%!test  # output-only iddata sampled as the data: 1/(s+1), unit step
+%! t = cumsum ([0; 0.05 + 0.1 * rand(29, 1)]);     # irregular instants
+%! d = iddata ([], ones (30, 1), "SamplingInstants", t);
+%! Y = sim (idtf (1, [1 1]), d);
+%! assert (size (Y), [30 1 0 1]);
+%! assert (Y.SamplingInstants, t, 1e-15);
+%! assert (Y.y, 1 - exp (-t), 1e-12);         # exact ZOH step response
+%! Y2 = sim (idtf (1, [1 1]), merge (iddata ([], ones (10, 1), 0.1),
+%!                                   iddata ([], ones (20, 1), 0.2)));
+%! assert (size (Y2, 4), 2);
+%! assert (Y2.y{2}, 1 - exp (-0.2 * (0:19)'), 1e-12);
+%! assert ([get(Y2, "Ts"){:}], [0.1 0.2]);
+
 %!test  # frequency-domain input: Y(w) = G(jw) U(w) (tutorial3's form)
 %! Ts = 0.05; u = prbs (7, 4);
 %! U = fft (iddata ([], u, Ts, "InterSample", "zoh"));
@@ -170,6 +189,7 @@ endfunction
 %!error id=idpoly:badInput sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), iddata (zeros (5, 0), ones (5, 1), 0.2))
 %!error id=idpoly:dimensionMismatch sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), ones (5, 2))
 %!error id=idfrd:notSupported sim (idfrd (1, 1), ones (5, 1))
+%!error id=idpoly:badInput sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), iddata ([], ones (3, 1), "SamplingInstants", [0; 0.1; 0.3]))
 
 %!demo
 %! Ts = 0.05; u = prbs (7, 4);
