@@ -189,6 +189,7 @@ endfunction
 %! out = evalc ("comparec (iddata (y, u, Ts), M, 'InitialCondition', 'e')");
 %! assert (! isempty (strfind (out, "initial state estimated")));
 
+%!error id=comparec:badInput comparec (ones (20, 1), ones (20, 1), 0.1)
 %!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "InitialCondition", "x")
 %!error id=comparec:badInput comparec (iddata (x, u, Ts))
 %!error id=comparec:badInput comparec (iddata (x, u, Ts), "model")

@@ -16,6 +16,10 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
     error ([fname ":badInput"], "%s: expected data and a model", fname);
   endif
   d = read_data (fname, args);
+  if (numel (args) <= d.nconsumed)
+    error ([fname ":badInput"], "%s: expected a model after the data",
+           fname);
+  endif
   M = args{d.nconsumed + 1};
   rest = args(d.nconsumed + 2:end);
   if (d.uniform)
