@@ -8,6 +8,10 @@
 
 function [k, varargout] = end (dat, pos, nidx, varargin)
   contsid_nargchk ("end", nargin, nargout, [3 3], 1);
+  if (! (isnumeric (pos) && isscalar (pos) && isnumeric (nidx)
+         && isscalar (nidx) && any (pos == 1:4) && pos <= nidx))
+    error ("iddata:badInput", "iddata: end (data, k, n) needs 1 <= k <= n");
+  endif
   if (nidx > 4)
     error ("iddata:badInput",
            "iddata: index as data(samples, outputs, inputs, experiments)");
@@ -30,6 +34,7 @@ endfunction
 %! two = iddata ({(1:6).', (1:6).'}, {(1:6).', (1:6).'}, 1);
 %! assert (size (two(:, :, :, end)), [6, 1, 1, 1]);
 
+%!error id=iddata:badInput feval ("end", iddata (ones (3, 1), [], 1), {1}, 1)
 %!error id=iddata:dimensionMismatch
 %! data = iddata ({(1:6).', (1:4).'}, {(1:6).', (1:4).'}, 1);
 %! data(end);

@@ -14,6 +14,12 @@ function [Md, varargout] = c2d (M, Ts, method, varargin)
   contsid_nargchk ("c2d", nargin, nargout, [1 3], 1);
   if (nargin < 3)
     method = "zoh";
+  elseif (! (ischar (method)
+              && any (strcmpi (method, {"zoh", "foh", "tustin", "impulse", ...
+                                        "matched"}))))
+    error ("c2d:badInput",
+           ["c2d: method must be 'zoh', 'foh', 'tustin', 'impulse' or ", ...
+            "'matched'"]);
   endif
   P = pstruct (M);
   if (P.Ts > 0)
@@ -58,6 +64,8 @@ endfunction
 %! assert (class (S), "idss");
 %! assert (S.A, expm ([-1 0; 1 -2] * Ts), 1e-12);
 
+%!error id=c2d:badInput c2d (idtf (1, [1 1]), 0.1, 3)
+%!error id=c2d:badInput c2d (idtf (1, [1 1]), 0.1, "bogus")
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), -1)
 %!error id=c2d:badInput c2d (idpoly (1, [0 1], 1, 1, [1 -0.5], 1, 0.1), 0.1)
 %!error id=c2d:notSupported c2d (idtf (1, [1 1], "IODelay", 0.15), 0.1)

@@ -11,6 +11,9 @@ function [Mc, varargout] = d2c (M, method, varargin)
   contsid_nargchk ("d2c", nargin, nargout, [1 2], 1);
   if (nargin < 2)
     method = "zoh";
+  elseif (! (ischar (method)
+              && any (strcmpi (method, {"zoh", "tustin", "matched"}))))
+    error ("d2c:badInput", "d2c: method must be 'zoh', 'tustin' or 'matched'");
   endif
   P = pstruct (M);
   if (P.Ts == 0)
@@ -33,6 +36,7 @@ endfunction
 %! assert (Mc.IODelay, 0.2, 1e-12);
 %! g = polyval (Mc.Numerator{1}, 0) / polyval (Mc.Denominator{1}, 0);
 %! assert (g, 1, 1e-9);
+%!error id=d2c:badInput d2c (idtf (1, [1 -0.5], 0.1), "foh")
 %!error id=d2c:badInput d2c (idtf (1, [1 1]))
 
 %!demo

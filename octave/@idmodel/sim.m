@@ -66,6 +66,11 @@ function [y, varargout] = sim (M, data, Ts, varargin)
              "%s: a continuous-time model needs sim (M, u, Ts) or iddata",
              P.kind);
     endif
+    if (! (isnumeric (Ts) && isreal (Ts) && isscalar (Ts) && Ts > 0
+           && isfinite (Ts)))
+      error ([P.kind ":badInput"], "%s: sim's Ts must be a finite scalar > 0",
+             P.kind);
+    endif
     y = simc (M, u, Ts);
   else
     y = dt_sim (P, u, P.Ts);
@@ -183,6 +188,7 @@ endfunction
 %! S = idss (0.9, 1, 0.5, 0, [], [], 0.1);
 %! assert (sim (S, u), filter ([0 0.5], [1 -0.9], u), 1e-13);
 
+%!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1), [0.1 0.2])
 %!error id=idtf:badInput sim (idtf (1, [1 1]))
 %!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1))
 %!error id=idtf:badInput sim (idtf (1, [1 1]), "u")

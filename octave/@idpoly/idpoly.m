@@ -174,6 +174,7 @@ endfunction
 %! M = idpoly (tf (4, [2 2]));
 %! assert ({M.B, M.F}, {2, [1 1]});
 
+%!error id=idpoly:badInput idpoly (1, ones (2, 2, 2), 1, 1, 1, "Ts", 0)
 %!error id=idpoly:badInput idpoly ()
 %!error id=idpoly:badInput idpoly (1, 2, 1, 1, [2 1], "Ts", 0)
 %!error id=idpoly:badInput idpoly ([2 1], 2, 1, 1, [1 1], "Ts", 0)

@@ -296,6 +296,11 @@ function r = monic_row (v, name, fname, allow_empty)
 endfunction
 
 function c = poly_cells (v, nu, name, fname)
+  if (! (iscell (v) || (isnumeric (v) && ismatrix (v))))
+    error ([fname ":badInput"],
+           "%s: %s must be a row, a matrix with one row per input or a cell",
+           fname, name);
+  endif
   if (iscell (v))
     c = v(:).';
   elseif (nu > 1 && rows (v) == nu)
