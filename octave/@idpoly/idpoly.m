@@ -48,14 +48,7 @@
 
 function [M, varargout] = idpoly (varargin)
   contsid_nargchk ("idpoly", nargin, nargout, [0 Inf], 1);
-  if (nargin == 0)
-    error ("idpoly:badInput", "idpoly: expected at least A");
-  endif
-  if (nargin == 1 && isa (varargin{1}, "idpoly"))
-    M = varargin{1};
-    return;
-  endif
-  if (isobject (varargin{1}) || isstruct (varargin{1}))
+  if (nargin > 0 && (isobject (varargin{1}) || isstruct (varargin{1})))
     M = convert (varargin{:});
     return;
   endif
@@ -103,7 +96,10 @@ function v = ifempty (v)
 endfunction
 
 function M = convert (sys, varargin)
-  if (isa (sys, "idmodel") || isa (sys, "lti"))
+  if (isa (sys, "idpoly"))
+    M = set (sys, varargin{:});
+    return;
+  elseif (isa (sys, "idmodel") || isa (sys, "lti"))
     [num, den] = tfdata (sys);
     if (isa (sys, "idmodel"))
       Ts = get (sys, "Ts");
@@ -166,6 +162,11 @@ endfunction
 %! assert (M.InputDelay, [0.1; 0.25], 1e-15);
 %! M2 = idpoly (1, {[1 2], 3}, 1, 1, {[1 3 2], [1 4 4]}, "Ts", 0);
 %! assert (numel (getpvec (M2)), 7);
+
+%!test  # idpoly (M, name, value): the same model with properties set
+%! M = idpoly (1, 2, [1 0.5], 1, [1 -0.8], 1, 0.1);
+%! M2 = idpoly (M, "Name", "plant");
+%! assert ({M2.C, M2.F, M2.Name}, {[1 0.5], [1 -0.8], "plant"});
 
 %!test  # conversion from idtf and from control's tf
 %! M = idpoly (idtf (2, [1 3 2]));

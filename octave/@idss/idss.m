@@ -25,14 +25,7 @@
 
 function [M, varargout] = idss (varargin)
   contsid_nargchk ("idss", nargin, nargout, [0 Inf], 1);
-  if (nargin == 0)
-    error ("idss:badInput", "idss: expected A, B, C, D or a model");
-  endif
-  if (nargin == 1 && isa (varargin{1}, "idss"))
-    M = varargin{1};
-    return;
-  endif
-  if (isobject (varargin{1}))
+  if (nargin > 0 && isobject (varargin{1}))
     M = convert (varargin{:});
     return;
   endif

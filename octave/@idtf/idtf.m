@@ -29,14 +29,7 @@
 
 function [M, varargout] = idtf (varargin)
   contsid_nargchk ("idtf", nargin, nargout, [0 Inf], 1);
-  if (nargin == 0)
-    error ("idtf:badInput", "idtf: expected num and den, or a model");
-  endif
-  if (nargin == 1 && isa (varargin{1}, "idtf"))
-    M = varargin{1};
-    return;
-  endif
-  if (isobject (varargin{1}))
+  if (nargin > 0 && isobject (varargin{1}))
     M = convert (varargin{:});
     return;
   endif
@@ -85,6 +78,10 @@ function [M, varargout] = idtf (varargin)
 endfunction
 
 function M = convert (sys, varargin)
+  if (isa (sys, "idtf"))
+    M = set (sys, varargin{:});
+    return;
+  endif
   if (! isa (sys, "idmodel") && ! isa (sys, "lti"))
     error ("idtf:badInput", "idtf: cannot convert a %s", class (sys));
   endif
