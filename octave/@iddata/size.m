@@ -50,7 +50,7 @@ endfunction
 %! assert (size (data, 3), 2);
 
 %!error id=iddata:badInput size (data, 5)
-%!error id=iddata:badInput [a, b, c, d, e] = size (data);
+%!error id=size:badInput [a, b, c, d, e] = size (data);
 
 %!demo
 %! size (iddata (randn (100, 1), randn (100, 2), 0.1))

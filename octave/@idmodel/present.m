@@ -29,7 +29,7 @@ endfunction
 %!test
 %! t = present (idtf (2, [1 3 2]));
 %! assert (isempty (strfind (t, "+/-")));
-%!error <called with too many inputs> present (idtf (1, [1 1]), 2)
+%!error id=present:badInput present (idtf (1, [1 1]), 2)
 
 %!demo
 %! M = setcov (idtf (2, [1 3]), diag ([0.04 0.01]));
