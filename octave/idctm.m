@@ -47,8 +47,8 @@ function [M, varargout] = idctm (varargin)
     s.F = varargin{2};
     for i = 3:2:nargin
       if (! ischar (varargin{i}) || ! any (strcmp (varargin{i}, fields)))
-        error ("idctm:badOption", "idctm: unknown property '%s'",
-               num2str (varargin{i}));
+        error ("idctm:badOption", "idctm: argument %d is not a property name",
+               i);
       endif
       s.(varargin{i}) = varargin{i+1};
     endfor

@@ -65,10 +65,7 @@
 ## @end deftypefn
 
 function [u, taps, varargout] = prbs (varargin)
-  contsid_nargchk ("prbs", nargin, nargout, [0 Inf], 2);
-  if (nargin < 1)
-    print_usage ();
-  endif
+  contsid_nargchk ("prbs", nargin, nargout, [1 Inf], 2);
   npos = find (cellfun ("ischar", varargin), 1) - 1;
   if (isempty (npos))
     npos = nargin;
@@ -253,7 +250,7 @@ endfunction
 %!   assert (u(k), double (next));
 %! endfor
 
-%!error <Invalid call> prbs ()
+%!error id=prbs:badInput prbs ()
 %!error id=prbs:badInput prbs (1)
 %!error id=prbs:badInput prbs (33)
 %!error id=prbs:badInput prbs (4.5)

@@ -107,6 +107,11 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     warning ([fname ":unstable"], "%s: the estimated model is unstable",
              fname);
   endif
+  if (! (isfinite (info.noise_variance) && info.noise_variance >= 0))
+    error ([fname ":numericalFailure"],
+           "%s: the noise variance of the estimate is %g (unstable model?)",
+           fname, info.noise_variance);
+  endif
   M = make_model (fname, e, theta, cov, info, d, nu);
   M = simulation_fit (M, d, np, info.simulated);
   if (nargout > 1)

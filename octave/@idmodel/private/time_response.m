@@ -21,11 +21,20 @@ function [yout, tout] = time_response (kind, fname, args)
   T = cell (size (sys));
   for s = 1:numel (sys)
     [a, b, c, d, Ts, delay] = sys_data (sys{s}, fname);
+    tmax = max ([tgiven(:); tfinal]);
+    if (Ts > 0 && tmax / Ts > 1e7)
+      error ([fname ":badInput"],
+             "%s: more than 1e7 samples up to t = %g", fname, tmax);
+    endif
     t = tgiven;
     if (isempty (t))
       t = default_time (a, Ts, delay, tfinal);
     endif
     Y{s} = response (kind, a, b, c, d, Ts, delay, t);
+    if (any (! isfinite (Y{s}(:))))
+      error ([fname ":numericalFailure"],
+             "%s: the response is not finite up to t = %g", fname, max (t));
+    endif
     T{s} = t;
   endfor
   if (nargout > 0)
