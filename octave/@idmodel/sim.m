@@ -195,7 +195,9 @@ endfunction
 %!error id=idpoly:badInput sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), iddata (zeros (5, 0), ones (5, 1), 0.2))
 %!error id=idpoly:dimensionMismatch sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), ones (5, 2))
 %!error id=idfrd:notSupported sim (idfrd (1, 1), ones (5, 1))
-%!error id=idpoly:badInput sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), iddata ([], ones (3, 1), "SamplingInstants", [0; 0.1; 0.3]))
+%!error id=idpoly:badInput
+%! sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1),
+%!      iddata ([], ones (3, 1), "SamplingInstants", [0; 0.1; 0.3]))
 
 %!demo
 %! Ts = 0.05; u = prbs (7, 4);

@@ -47,8 +47,12 @@ endfunction
 %! P = idproc ("P2DU");
 %! assert (isnan (P.structure.Td.Value));
 %!error id=idpoly:badInput idpoly (1, 2, 1, 1, [1 1], "Ts", 0).nothing
-%!error id=idpoly:notSupported subsref (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), struct ("type", "{}", "subs", {{1}}))
-%!error id=idpoly:badInput subsref (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), struct ("type", "()", "subs", {{1}}))
+%!error id=idpoly:notSupported
+%! subsref (idpoly (1, 2, 1, 1, [1 1], "Ts", 0),
+%!          struct ("type", "{}", "subs", {{1}}))
+%!error id=idpoly:badInput
+%! subsref (idpoly (1, 2, 1, 1, [1 1], "Ts", 0),
+%!          struct ("type", "()", "subs", {{1}}))
 %!error id=idtf:badInput idtf ({1, 2}, {[1 1], [1 2]})(1, 3)
 %!error id=idtf:badInput idtf ({1, 2}, {[1 1], [1 2]})(1, [])
 

@@ -10,7 +10,8 @@
 ## @code{frd (model.ResponseData, model.Frequency, model.Ts)} (SITB's
 ## @code{idfrd} properties).  A string after a
 ## model is its line style: @var{styles}@{k@} is @code{@{style@}} or
-## @code{@{@}}, to pass on as @code{plot (x, y, styles@{k@}@{:@})}.  @var{range} is the numeric (or cell
+## @code{@{@}}, to pass on as @code{plot (x, y, styles@{k@}@{:@})}.
+## @var{range} is the numeric (or cell
 ## @code{@{wmin, wmax@}}) argument after the models, @code{[]} when
 ## absent; @var{opt} a trailing options struct (one without a
 ## @code{ResponseData} field, which marks frequency response data),

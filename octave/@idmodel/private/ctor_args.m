@@ -1,5 +1,6 @@
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{pos}, @var{pairs}, @var{Ts}] =} ctor_args (@var{cls}, @var{args}, @var{npos})
+## @deftypefn {} {[@var{pos}, @var{pairs}, @var{Ts}] =} @
+##   ctor_args (@var{cls}, @var{args}, @var{npos})
 ## Splits the arguments @var{args} of the constructor of class @var{cls}
 ## (@code{idpoly}, @code{idtf}, @code{idss}) into positional arguments,
 ## all before the first string, and name-value pairs.  There must be
