@@ -222,6 +222,8 @@ function [M, info, d] = run_tfrivc (args)
   info = derived (info, d, theta, cov);
   M.Report.Fit = fit_struct (info, d, numel (theta));
   M.Report.Parameters.IODelay = tdel;
+  M.Report.Status = "Estimated using TFRIVC";
+  M.Report.Method = "tfrivc";
   M.Report.Termination = struct ("Iterations", info.iterations,
                                  "Converged", info.converged,
                                  "Reason", info.reason);
