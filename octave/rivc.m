@@ -59,3 +59,91 @@ function [M, C, varargout] = rivc (varargin)
   out = {info.D, info.RT2, info.YIC, info.condition, info.AIC};
   varargout = out(1:max (nargout - 2, 0));
 endfunction
+
+%!shared u, x, Ts, N, G
+%! pkg load control
+%! Ts = 0.05; N = 3000; randn ("state", 11);
+%! u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! G = c2d (tf ([1.5 4], [1 1.2 4]), Ts);
+%! x = lsim (G, u);
+
+%!test  # noise-free: exact, with any ARMA orders
+%! [M, C, D, RT2] = rivc (iddata (x, u, Ts), [2 1 2 2 0], "Tol", 1e-10);
+%! assert (M.theta, [1.2 4 1.5 4], 1e-8);
+%! assert (size (C), [1 2]);
+%! assert (size (D), [1 3]);
+%! assert (RT2, 1, 1e-10);
+%! assert (size (M.covariance), [4 4]);
+
+%!test  # nc = nd = 0: RIVC's iteration is SRIVC's; same fixed point
+%! randn ("state", 3);
+%! y = x + 0.1 * randn (N, 1);
+%! Ms = srivc (iddata (y, u, Ts), [2 2 0], "Tol", 1e-12, "MaxIter", 200);
+%! M = rivc (iddata (y, u, Ts), [2 0 0 2 0], "InitMethod", Ms, "Tol", 1e-10);
+%! assert (M.theta, Ms.theta, 1e-6 * norm (Ms.theta));
+%! M2 = rivc (iddata (y, u, Ts), [2 0 0 2 0]);
+%! assert (M2.theta, Ms.theta, 1e-4 * norm (Ms.theta));
+
+%!test  # the noise model of coloured noise, and the model-in form
+%! randn ("state", 5);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0]);
+%! assert (D(2), -0.9, 0.05);
+%! assert (C(2), 0.5, 0.1);
+%! sd = sqrt (diag (M.covariance)).';
+%! assert (all (abs (M.theta - [1.2 4 1.5 4]) < 4 * sd));
+%! Mi = idpoly (1, [1.5 4], [1 0], [1 0], [1 1.2 4], 1, 0);
+%! M2 = rivc (iddata (x + v, u, Ts), Mi);
+%! assert (M2.theta, M.theta, 1e-4 * norm (M.theta));
+
+%!test  # delay in samples
+%! xd = lsim (G, [zeros(3, 1); u(1:end-3)]);
+%! M = rivc (iddata (xd, u, Ts), [2 1 1 2 3], "Tol", 1e-10);
+%! assert (M.theta, [1.2 4 1.5 4], 1e-8);
+
+%!test  # a small Monte Carlo: spread vs reported sd (20 runs; the full
+%! # 200-run check is bench/rivc_mc.m)
+%! randn ("state", 9);
+%! R = 20; T = zeros (R, 4); S = T;
+%! for i = 1:R
+%!   v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%!   M = rivc (iddata (x + v, u, Ts), [2 1 1 2 0]);
+%!   T(i, :) = M.theta; S(i, :) = sqrt (diag (M.covariance)).';
+%! endfor
+%! ratio = std (T) ./ mean (S);
+%! ## 20 runs: the sample sd has a relative sd of ~16 %.
+%! assert (all (ratio > 0.6 & ratio < 1.6), sprintf ("%g ", ratio));
+
+%!warning <no convergence> rivc (iddata (x + 0.1 * randn (N, 1), u, Ts), [2 1 1 2 0], "MaxIter", 1, "Tol", 1e-15);
+
+%!error id=rivc:badInput rivc (iddata (x, u, Ts))
+%!error id=rivc:badInput rivc ()
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 -1])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [4 1 1 2 0])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 N])
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "Bogus", 1)
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], "Tol")
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], 3, 1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "Tol", -1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "MaxIter", 0.5)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "lambda", -1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMaxIter", -1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", "xx")
+%!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", "ivarma")
+%!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", "lssvf")
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [1 2])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [-1 4 1 1])
+%!error id=rivc:notSupported rivc (iddata (x, [u u], Ts), [2 1 1 2 0])
+%!error id=rivc:notSupported rivc (iddata (x(1:50), u(1:50), "SamplingInstants", cumsum (0.01 + rand (50, 1) / 100)), [2 1 1 2 0])
+%!error id=rivc:badInput rivc (iddata (x(1:40), u(1:40), Ts), [2 1 1 2 0])
+%!error id=rivc:numericalFailure rivc (iddata (x, zeros (N, 1), Ts), [2 1 1 2 0])
+
+%!demo
+%! ## RIVC against SRIVC on coloured noise (bench/rivc_mc.m runs 200)
+%! pkg load control
+%! Ts = 0.05; N = 3000; u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0])
+%! Ms = srivc (iddata (x + v, u, Ts), [2 2 0])
