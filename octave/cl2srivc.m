@@ -52,3 +52,48 @@ function [M, M_T, varargout] = cl2srivc (varargin)
   endif
   varargout = {info.u_hat}(1:max (nargout - 2, 0));
 endfunction
+
+%!shared y, u, r, Ts, N, Mc, G
+%! pkg load control
+%! Ts = 0.01; N = 6000; randn ("state", 3);
+%! r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+%! y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+%! u = lsim (c2d (feedback (Mc, G), Ts), r);
+
+%!test  # noise-free: stage 1 exact (ZOH r), stage 2 exact to O((w Ts)^2)
+%! [M, MT, uh] = cl2srivc (iddata (y, u, Ts), iddata (u, r, Ts), ...
+%!                         [1 2 0], [4 4 0]);
+%! assert (M.theta, [2 3 3], 1e-3);
+%! T = feedback (Mc, G);
+%! [num, den] = tfdata (T, "vector");
+%! k = find (den, 1);
+%! assert (MT.F, den(k:end) / den(k), 1e-6 * norm (den));
+%! assert (uh, u, 1e-8 * norm (u));
+
+%!test  # noise on y and u through the loop: consistent (within 4 sd)
+%! randn ("state", 4);
+%! v = 0.02 * randn (N, 1);
+%! yn = y + lsim (c2d (feedback (1, G * Mc), Ts), v);
+%! un = u - lsim (c2d (feedback (Mc, G), Ts), v);
+%! M = cl2srivc (iddata (yn, un, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", 1e-6, 50);
+%! assert (abs (M.theta - [2 3 3]) < 0.1 * [2 3 3]);
+
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0])
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2], [4 4 0])
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0.5])
+%!error id=cl2srivc:dimensionMismatch cl2srivc (iddata (y, u, Ts), r(1:5), [1 2 0], [4 4 0])
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], idpoly (1, 1, 1, 1, [1 1], 0, 0))
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 3)
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "lssvf")
+%!error id=cl2srivc:badOption cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", -1)
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", 1e-6, 30, 1)
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [3 2 0], [4 4 0])
+
+%!demo
+%! pkg load control
+%! Ts = 0.01; N = 6000; r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+%! y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+%! u = lsim (c2d (feedback (Mc, G), Ts), r);
+%! M = cl2srivc (iddata (y, u, Ts), iddata (u, r, Ts), [1 2 0], [4 4 0])

@@ -47,3 +47,43 @@ function [sys, sysN, varargout] = tfrivc (varargin)
     sysN = idpoly (1, info.C, 1, 1, info.D, info.noise_variance, d.Ts);
   endif
 endfunction
+
+%!shared u, x, Ts, N, M0
+%! Ts = 0.05; N = 3000; randn ("state", 3);
+%! u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! M0 = idtf (4, [1 1.2 4], "IODelay", 0.37);
+%! x = simc (M0, iddata ([], u, Ts, "InterSample", "zoh"));
+
+%!test  # noise-free, delay a fraction of a sample, kept: exact
+%! [MP, MN] = tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", ...
+%!                    "NN", [1 1]);
+%! assert (MP.IODelay, 0.37);
+%! assert ([MP.num{1}, MP.den{1}], [4 1 1.2 4], 1e-7);
+%! assert (isa (MN, "idpoly") && MN.Ts == Ts);
+
+%!test  # coloured noise: the noise model and the reported sd
+%! randn ("state", 8);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [MP, MN] = tfrivc (iddata (x + v, u, Ts), 2, 0, 0.37, "FixTd", "on", ...
+%!                    "NN", [1 1]);
+%! sd = sqrt (diag (getcov (MP))).';
+%! assert (all (abs ([MP.num{1}, MP.den{1}(2:3)] - [4 1.2 4]) < 4 * sd));
+%! assert (MN.F(2), -0.9, 0.05);
+%! assert (MN.B(2), 0.5, 0.1);
+
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2)
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 0, 0, "NN", [1 1])
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2, 3, "NN", [1 1])
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2, 0, -1, "NN", [1 1])
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2, 0, "NN", [1 1 1])
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2, 0, "NN")
+%!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2, 0, 3, 4)
+%!error id=tfrivc:badOption tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", "Bogus", 1)
+%!error id=tfrivc:badOption tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", "MaxIter", 0)
+
+%!demo
+%! Ts = 0.05; u = kron (sign (randn (300, 1)), ones (10, 1));
+%! M0 = idtf (4, [1 1.2 4], "IODelay", 0.37);
+%! x = simc (M0, iddata ([], u, Ts, "InterSample", "zoh"));
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (3000, 1));
+%! [MP, MN] = tfrivc (iddata (x + v, u, Ts), 2, 0, "NN", [1 1])

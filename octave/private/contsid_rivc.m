@@ -110,6 +110,11 @@ function [M, info, d] = run_cl2srivc (args)
   r = read_reference (fname, rest{1}, rows (d.y), 2);
   nol = read_orders (fname, rest{2}, 3, "nn_ol = [nb nf nk]");
   ncl = read_orders (fname, rest{3}, 3, "nn_cl = [nb nf nk]");
+  if (nol(1) > nol(2) + 1 || ncl(1) > ncl(2) + 1 || nol(2) < 1
+      || ncl(2) < 1)
+    error ("cl2srivc:badInput",
+           "cl2srivc: each stage needs nf >= 1 and nb <= nf + 1");
+  endif
   if (numel (rest) >= 4 && ! isempty (rest{4}))
     error ("cl2srivc:notSupported",
            "cl2srivc: an initial model is not supported; pass []");

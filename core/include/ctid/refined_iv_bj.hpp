@@ -779,6 +779,12 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
       loop.num_groups() != 1 || loop.channels.size() != 1) {
     return bad_input("cl2srivc: one input and one denominator per stage");
   }
+  for (const RivProblem<S>* stage : {&plant, &loop}) {
+    if (stage->channels[0].nb > stage->nf[0] + 1) {
+      return bad_input("cl2srivc: nb must be at most nf + 1 (a proper "
+                       "model) in each stage");
+    }
+  }
   RivData<S> d1;
   d1.y = u;
   d1.w = r;
