@@ -103,6 +103,14 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const int cl_nf = opt.integer("cl_nf", 1);
   const int cl_nk = opt.integer("cl_nk", 0);
   opt.finish();
+  if (settings.max_iterations < 1 || settings.max_iterations > 100000 ||
+      settings.arma.max_iterations < 0 ||
+      settings.arma.max_iterations > 100000 || settings.start.max_starts < 1 ||
+      settings.start.max_starts > 100) {
+    g.fail("badOption",
+           "maxiter must be in 1..1e5, arma_maxiter in 0..1e5 and max_starts "
+           "in 1..100");
+  }
 
   const char* fields[] = {"converged",      "iterations",       "reason",
                           "C",              "D",                "noise_variance",
