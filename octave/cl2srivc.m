@@ -88,7 +88,7 @@ endfunction
 %!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "lssvf")
 %!error id=cl2srivc:badOption cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", -1)
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", 1e-6, 30, 1)
-%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [3 2 0], [4 4 0])
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [4 2 0], [4 4 0])
 
 %!demo
 %! pkg load control
