@@ -103,6 +103,9 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const int cl_nf = opt.integer("cl_nf", 1);
   const int cl_nk = opt.integer("cl_nk", 0);
   opt.finish();
+  if (method == Method::kCl2srivc) {
+    settings.start.max_iterations = settings.max_iterations;
+  }
   if (settings.max_iterations < 1 || settings.max_iterations > 100000 ||
       settings.arma.max_iterations < 0 ||
       settings.arma.max_iterations > 100000 || settings.start.max_starts < 1 ||
@@ -150,15 +153,18 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     cl.nk = cl_nk;
     loop.channels.push_back(cl);
     ctid::Cl2srivcResult<double> res;
-    g.check(ctid::cl2srivc<double>(plant, loop, settings.start, record.y,
-                                   record.u, r, n, record.ts, &res));
+    const ctid::Status status = ctid::cl2srivc<double>(
+        plant, loop, settings.start, record.y, record.u, r, n, record.ts, &res);
+    if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
     theta = res.plant.theta;
     cov = res.plant.covariance;
     set_info(info, "converged",
              mxCreateLogicalScalar(res.plant.converged &&
                                    res.sensitivity.converged));
     set_info(info, "iterations", mxCreateDoubleScalar(res.plant.iterations));
-    set_info(info, "reason", mxCreateString(res.plant.reason.c_str()));
+    set_info(info, "reason",
+             mxCreateString(status.ok() ? res.plant.reason.c_str()
+                                        : status.message().c_str()));
     set_info(info, "noise_variance",
              mxCreateDoubleScalar(res.plant.noise_variance));
     set_info(info, "simulation_variance",

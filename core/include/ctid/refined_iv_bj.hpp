@@ -790,8 +790,13 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
   d1.w = r;
   d1.num_samples = n;
   d1.ts = ts;
+  // A stage that does not converge returns its last iterate (reported as
+  // kNotConverged at the end, as refined_iv does).
   Status status = refined_iv<S>(loop, settings, d1, &result->sensitivity);
-  if (!status.ok()) {
+  std::string not_converged;
+  if (status.code() == ErrorCode::kNotConverged) {
+    not_converged = "stage 1 (u on r): " + status.message();
+  } else if (!status.ok()) {
     return Status(status.code(),
                   "stage 1 (u on r): " + status.message());
   }
@@ -802,8 +807,14 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
   d2.num_samples = n;
   d2.ts = ts;
   status = refined_iv<S>(plant, settings, d2, &result->plant);
-  if (!status.ok()) {
+  if (status.code() == ErrorCode::kNotConverged) {
+    if (!not_converged.empty()) not_converged += "; ";
+    not_converged += "stage 2 (y on u_hat): " + status.message();
+  } else if (!status.ok()) {
     return Status(status.code(), "stage 2 (y on u_hat): " + status.message());
+  }
+  if (!not_converged.empty()) {
+    return Status(ErrorCode::kNotConverged, not_converged);
   }
   return Status::Ok();
 }
