@@ -71,12 +71,11 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     g.fail("badInput", "regularly sampled data only (a scalar Ts)");
   }
   OptionsReader opt(g, prhs[5]);
-  const Method method = opt.choice<Method>(
-      "method",
-      {{"rivc", Method::kRivc},
-       {"cl2srivc", Method::kCl2srivc},
-       {"arma", Method::kArma}},
-      Method::kRivc);
+  const Method method = opt.choice<Method>("method",
+                                           {{"rivc", Method::kRivc},
+                                            {"cl2srivc", Method::kCl2srivc},
+                                            {"arma", Method::kArma}},
+                                           Method::kRivc);
   ctid::RivcProblem<double> problem;
   ctid::RivcSettings<double> settings;
   problem.nb = opt.integer("nb", 1);
@@ -115,11 +114,20 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
            "in 1..100");
   }
 
-  const char* fields[] = {"converged",      "iterations",       "reason",
-                          "C",              "D",                "noise_variance",
-                          "noise_covariance", "simulation_variance",
-                          "simulated",      "condition",        "start_theta",
-                          "cl_theta",       "cl_covariance",    "u_hat"};
+  const char* fields[] = {"converged",
+                          "iterations",
+                          "reason",
+                          "C",
+                          "D",
+                          "noise_variance",
+                          "noise_covariance",
+                          "simulation_variance",
+                          "simulated",
+                          "condition",
+                          "start_theta",
+                          "cl_theta",
+                          "cl_covariance",
+                          "u_hat"};
   mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
   ctid::Vector<double> theta;
   ctid::Matrix<double> cov;
@@ -218,8 +226,7 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("rivc", {"rivc", "tfrivc", "clrivc", "cl2srivc"},
-                         nrhs, prhs, [&](const Gateway& g) {
-                           rivc_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "rivc", {"rivc", "tfrivc", "clrivc", "cl2srivc"}, nrhs, prhs,
+      [&](const Gateway& g) { rivc_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

@@ -54,8 +54,8 @@ std::vector<double> simulate_zoh(const Eigen::VectorXd& num,
 }
 
 std::vector<double> arma_process(const Eigen::VectorXd& c,
-                                 const Eigen::VectorXd& d, int n,
-                                 double sd, unsigned seed) {
+                                 const Eigen::VectorXd& d, int n, double sd,
+                                 unsigned seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0, sd);
   std::vector<double> e(n), x(n);
@@ -102,8 +102,8 @@ TEST(ArmaEstimate, KnownArma11WithinReportedErrors) {
   // Asymptotic ARMA(1,1) variances (Box-Jenkins): var(d) = (1-d^2)(1+cd)^2
   // / ((c+d)^2 N) with d the AR coefficient 0.8 and c = 0.5.
   const double phi = 0.8, th = 0.5;
-  const double v_ar = (1 - phi * phi) * std::pow(1 + phi * th, 2) /
-                      std::pow(phi + th, 2) / n;
+  const double v_ar =
+      (1 - phi * phi) * std::pow(1 + phi * th, 2) / std::pow(phi + th, 2) / n;
   EXPECT_NEAR(sd_d / std::sqrt(v_ar), 1.0, 0.1);
   EXPECT_NEAR(r.innovation_variance / 0.09, 1.0, 0.05);
 }
@@ -188,8 +188,7 @@ TEST(Rivc, NoiseFreeExactOpenLoop) {
   RivcResult<double> r;
   const Status s = rivc<double>(problem, settings, data, &r);
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_LT(relative_error(r.theta, truth(p)), 1e-8)
-      << r.theta.transpose();
+  EXPECT_LT(relative_error(r.theta, truth(p)), 1e-8) << r.theta.transpose();
 }
 
 TEST(Rivc, NoiseFreeExactWithDelay) {

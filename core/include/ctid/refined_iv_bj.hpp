@@ -156,8 +156,9 @@ bool least_squares(const Matrix<S>& A, const Vector<S>& b, Vector<S>& x,
   if (qr.rank() < A.cols()) return false;
   x = qr.solve(b);
   if (inverse_gram) {
-    *inverse_gram = (A.transpose() * A).ldlt().solve(
-        Matrix<S>::Identity(A.cols(), A.cols()));
+    *inverse_gram = (A.transpose() * A)
+                        .ldlt()
+                        .solve(Matrix<S>::Identity(A.cols(), A.cols()));
   }
   return x.allFinite();
 }
@@ -248,8 +249,9 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     ar.tail(L) = a;
     const Vector<S> e = filter_dt<S>(ar, Vector<S>::Ones(1), Vector<S>(x));
     if (!regress(e, eta)) {
-      return numerical_failure("the Hannan-Rissanen regression is rank "
-                               "deficient");
+      return numerical_failure(
+          "the Hannan-Rissanen regression is rank "
+          "deficient");
     }
   }
 
@@ -300,8 +302,9 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     jacobian(eta, e);
     Vector<S> step;
     if (!least_squares<S>(J, e, step)) {
-      return numerical_failure("the ARMA Gauss-Newton step is rank deficient "
-                               "(ARMA orders too high for the noise?)");
+      return numerical_failure(
+          "the ARMA Gauss-Newton step is rank deficient "
+          "(ARMA orders too high for the noise?)");
     }
     S alpha = 1;
     bool improved = false;
@@ -331,8 +334,7 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   jacobian(eta, e);
   const Matrix<S> gram = J.transpose() * J;
   const Eigen::LDLT<Matrix<S>> ldlt(gram);
-  result->covariance =
-      v * ldlt.solve(Matrix<S>::Identity(np, np));
+  result->covariance = v * ldlt.solve(Matrix<S>::Identity(np, np));
   polys(eta, result->d, result->c);
   result->innovation_variance = v;
   if (!result->covariance.allFinite()) {
@@ -343,11 +345,11 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
 
 template <typename S>
 struct RivcProblem {
-  int nb = 1;  // B(p) = b_0 p^(nb-1) + .. + b_(nb-1)
-  int nc = 0;  // C(q^-1) = 1 + c1 q^-1 + .. (noise numerator)
-  int nd = 0;  // D(q^-1) = 1 + d1 q^-1 + .. (noise denominator)
-  int nf = 1;  // F(p) = p^nf + f1 p^(nf-1) + .. + f_nf
-  int nk = 0;  // input delay in samples
+  int nb = 1;   // B(p) = b_0 p^(nb-1) + .. + b_(nb-1)
+  int nc = 0;   // C(q^-1) = 1 + c1 q^-1 + .. (noise numerator)
+  int nd = 0;   // D(q^-1) = 1 + d1 q^-1 + .. (noise denominator)
+  int nf = 1;   // F(p) = p^nf + f1 p^(nf-1) + .. + f_nf
+  int nk = 0;   // input delay in samples
   S delay = 0;  // continuous delay on top of nk (time units, >= 0)
   InterSample u_rule = InterSample::kZoh;
   // Closed loop u = Nc(p) / Dc(p) (r - y) (descending powers of p); empty
@@ -362,17 +364,17 @@ template <typename S>
 struct RivcSettings {
   S tolerance = S(1e-6);  // on ||theta_i - theta_(i-1)|| / ||theta_i||, t'
   int max_iterations = 30;
-  Vector<S> theta_init;   // [f b], original time; empty: the SRIVC start
-  RivSettings<S> start;   // the SRIVC (or CLSRIVC) start's settings
+  Vector<S> theta_init;  // [f b], original time; empty: the SRIVC start
+  RivSettings<S> start;  // the SRIVC (or CLSRIVC) start's settings
   ArmaSettings<S> arma;
 };
 
 template <typename S>
 struct RivcResult {
-  Vector<S> theta;       // [f1 .. f_nf, b_0 .. b_(nb-1)], original time
-  Matrix<S> covariance;  // sigma_e^2 (sum zeta_f zeta_f^T)^-1, eq. 2.13
-  ArmaResult<S> noise;   // C, D, innovation variance, their covariance
-  Vector<S> start_theta;  // the SRIVC start
+  Vector<S> theta;            // [f1 .. f_nf, b_0 .. b_(nb-1)], original time
+  Matrix<S> covariance;       // sigma_e^2 (sum zeta_f zeta_f^T)^-1, eq. 2.13
+  ArmaResult<S> noise;        // C, D, innovation variance, their covariance
+  Vector<S> start_theta;      // the SRIVC start
   S simulation_variance = 0;  // ||y - x_hat||^2 / (N - np)
   S condition = 0;
   int iterations = 0;
@@ -420,20 +422,19 @@ Status validate(const RivcProblem<S>& problem, const RivcData<S>& data) {
     return bad_input("y and u are required");
   }
   if (problem.nf < 1 || problem.nf > 20) {
-    return bad_input("nf must be in 1..20, got " +
-                     std::to_string(problem.nf));
+    return bad_input("nf must be in 1..20, got " + std::to_string(problem.nf));
   }
   if (problem.nb < 1 || problem.nb > problem.nf + 1) {
     return bad_input("nb must be in 1..nf+1 (a proper plant), got " +
                      std::to_string(problem.nb));
   }
-  if (problem.nc < 0 || problem.nd < 0 || problem.nc > 20 ||
-      problem.nd > 20) {
+  if (problem.nc < 0 || problem.nd < 0 || problem.nc > 20 || problem.nd > 20) {
     return bad_input("nc and nd must be in 0..20");
   }
   if (!(data.ts > 0) || !std::isfinite(data.ts)) {
-    return bad_input("the sampling interval must be finite and > 0 (RIVC "
-                     "needs regularly sampled data)");
+    return bad_input(
+        "the sampling interval must be finite and > 0 (RIVC "
+        "needs regularly sampled data)");
   }
   const Eigen::Index n = data.num_samples;
   const int np = problem.num_parameters() + problem.nc + problem.nd;
@@ -462,8 +463,9 @@ Status validate(const RivcProblem<S>& problem, const RivcData<S>& data) {
         problem.controller_den(0) == S(0) ||
         !problem.controller_num.allFinite() ||
         !problem.controller_den.allFinite()) {
-      return bad_input("the controller must be proper with finite "
-                       "coefficients and a non-zero leading denominator");
+      return bad_input(
+          "the controller must be proper with finite "
+          "coefficients and a non-zero leading denominator");
     }
     if (problem.nk != 0 || problem.delay != 0) {
       return bad_input("the closed loop takes no input delay (nk = 0)");
@@ -479,8 +481,7 @@ Status validate(const RivcProblem<S>& problem, const RivcData<S>& data) {
 template <typename S>
 class BjIteration {
  public:
-  BjIteration(const RivcProblem<S>& problem, const RivcData<S>& data,
-              S sigma)
+  BjIteration(const RivcProblem<S>& problem, const RivcData<S>& data, S sigma)
       : problem_(problem), n_(data.num_samples), sigma_(sigma) {
     clock_.ts = data.ts;
     clock_.n = n_;
@@ -498,10 +499,11 @@ class BjIteration {
   // p'^i s / D', i = 0..order, s the (delayed) input.
   void filter_input(const Vector<S>& d, Matrix<S>& out) const {
     if (problem_.delay > 0) {
-      riv_detail::filter_delayed_derivatives<S>(d, S(1), problem_.u_rule, clock_,
-                                    u_.data(), problem_.delay, out);
+      riv_detail::filter_delayed_derivatives<S>(
+          d, S(1), problem_.u_rule, clock_, u_.data(), problem_.delay, out);
     } else {
-      riv_detail::filter_derivatives<S>(d, S(1), problem_.u_rule, clock_, u_.data(), out);
+      riv_detail::filter_derivatives<S>(d, S(1), problem_.u_rule, clock_,
+                                        u_.data(), out);
     }
   }
 
@@ -543,7 +545,8 @@ class BjIteration {
     // p'^i y / F = p'^i x_hat / F + p'^i xi / F (xi linear between
     // samples): exact where the model fits, as refined_iv.hpp does.
     Matrix<S> E;
-    riv_detail::filter_derivatives<S>(f, S(1), InterSample::kFoh, clock_, xi.data(), E);
+    riv_detail::filter_derivatives<S>(f, S(1), InterSample::kFoh, clock_,
+                                      xi.data(), E);
     const Matrix<S> Yf = Xf + E;
 
     // Instruments: closed loop, from the loop driven by r.
@@ -581,9 +584,8 @@ class BjIteration {
       }
     }
     offline_iv_detail::IvSolution<S> solution;
-    Status s = riv_detail::solve_equilibrated<S>(Z, Phi, target,
-                                                 "RIVC instrument", solution,
-                                                 condition);
+    Status s = riv_detail::solve_equilibrated<S>(
+        Z, Phi, target, "RIVC instrument", solution, condition);
     if (!s.ok()) return s;
     next = solution.theta;
     inverse_gram = solution.inverse_gram;
@@ -619,7 +621,7 @@ class BjIteration {
     const Vector<S> den = conv<S>(acl, fpoly);  // monic, order nf + ncl
     Matrix<S> R;
     riv_detail::filter_derivatives<S>(den.tail(den.size() - 1), S(1) / lead,
-                          InterSample::kZoh, clock_, r_.data(), R);
+                                      InterSample::kZoh, clock_, r_.data(), R);
     const Vector<S> fnc = conv<S>(fpoly, nc);
     // sum_k num_k p'^(k + i) r / (Acl F), num in descending powers.
     auto apply = [&](const Vector<S>& num, int count, Matrix<S>& out) {
@@ -737,8 +739,8 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   }
   result->iterations = it;
   // The noise model, covariance and fit at the final estimate.
-  status = iteration.step(theta, settings.arma, true, next, inverse_gram,
-                          arma, x_hat, condition);
+  status = iteration.step(theta, settings.arma, true, next, inverse_gram, arma,
+                          x_hat, condition);
   if (!status.ok()) return status;
   result->noise = arma;
   result->condition = condition;
@@ -754,15 +756,14 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   if (!result->converged) {
     return Status(ErrorCode::kNotConverged,
                   "RIVC did not converge in " +
-                      std::to_string(settings.max_iterations) +
-                      " iterations");
+                      std::to_string(settings.max_iterations) + " iterations");
   }
   return Status::Ok();
 }
 
 template <typename S>
 struct Cl2srivcResult {
-  RivResult<S> plant;      // stage 2: y on u_hat
+  RivResult<S> plant;        // stage 2: y on u_hat
   RivResult<S> sensitivity;  // stage 1: u on r
 };
 
@@ -772,8 +773,7 @@ struct Cl2srivcResult {
 template <typename S>
 Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
                 const RivSettings<S>& settings, const S* y, const S* u,
-                const S* r, Eigen::Index n, S ts,
-                Cl2srivcResult<S>* result) {
+                const S* r, Eigen::Index n, S ts, Cl2srivcResult<S>* result) {
   if (result == nullptr) return bad_input("cl2srivc: no result");
   if (plant.num_groups() != 1 || plant.channels.size() != 1 ||
       loop.num_groups() != 1 || loop.channels.size() != 1) {
@@ -781,8 +781,9 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
   }
   for (const RivProblem<S>* stage : {&plant, &loop}) {
     if (stage->channels[0].nb > stage->nf[0] + 1) {
-      return bad_input("cl2srivc: nb must be at most nf + 1 (a proper "
-                       "model) in each stage");
+      return bad_input(
+          "cl2srivc: nb must be at most nf + 1 (a proper "
+          "model) in each stage");
     }
   }
   RivData<S> d1;
@@ -797,8 +798,7 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
   if (status.code() == ErrorCode::kNotConverged) {
     not_converged = "stage 1 (u on r): " + status.message();
   } else if (!status.ok()) {
-    return Status(status.code(),
-                  "stage 1 (u on r): " + status.message());
+    return Status(status.code(), "stage 1 (u on r): " + status.message());
   }
   const Vector<S> u_hat = result->sensitivity.simulated;
   RivData<S> d2;
