@@ -76,7 +76,8 @@ endfunction
 %! v = 0.02 * randn (N, 1);
 %! yn = y + lsim (c2d (feedback (1, G * Mc), Ts), v);
 %! un = u - lsim (c2d (feedback (Mc, G), Ts), v);
-%! M = cl2srivc (iddata (yn, un, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", 1e-6, 50);
+%! M = cl2srivc (iddata (yn, un, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc",
+%!               1e-6, 50);
 %! assert (abs (M.theta - [2 3 3]) < 0.1 * [2 3 3]);
 
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0])

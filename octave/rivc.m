@@ -114,7 +114,9 @@ endfunction
 %! ## 20 runs: the sample sd has a relative sd of ~16 %.
 %! assert (all (ratio > 0.6 & ratio < 1.6), sprintf ("%g ", ratio));
 
-%!warning <no convergence> rivc (iddata (x + 0.1 * randn (N, 1), u, Ts), [2 1 1 2 0], "MaxIter", 1, "Tol", 1e-15);
+%!warning <no convergence>
+%! rivc (iddata (x + 0.1 * randn (N, 1), u, Ts), [2 1 1 2 0], "MaxIter", 1,
+%!       "Tol", 1e-15);
 
 %!error id=rivc:badInput rivc (iddata (x, u, Ts))
 %!error id=rivc:badInput rivc ()
