@@ -35,8 +35,8 @@ function S = rivc_mc (R)
     Ms = srivc (data, [2 2 0]);
     TS(i, :) = Ms.theta; SS(i, :) = sqrt (diag (Ms.covariance)).';
   endfor
-  S.rivc = summary ("rivc [2 1 1 2 0]", TR, SR, th0);
-  S.srivc = summary ("srivc [2 2 0] (same records)", TS, SS, th0);
+  S.rivc = summary ("rivc [2 1 1 2 0]", TR, SR, th0, R);
+  S.srivc = summary ("srivc [2 2 0] (same records)", TS, SS, th0, R);
 
   ## tfrivc, delay 0.37 s kept.
   M0 = idtf (4, [1 1.2 4], "IODelay", 0.37);
@@ -49,7 +49,7 @@ function S = rivc_mc (R)
     T(i, :) = [MP.num{1}, MP.den{1}(2:3)];
     SD(i, :) = sqrt (diag (getcov (MP))).';
   endfor
-  S.tfrivc = summary ("tfrivc 2,0 NN [1 1]", T, SD, [4 1.2 4]);
+  S.tfrivc = summary ("tfrivc 2,0 NN [1 1]", T, SD, [4 1.2 4], R);
 
   ## Closed loop: clrivc and cl2srivc on the same records.
   Ts = 0.01; N = 6000;
@@ -70,24 +70,22 @@ function S = rivc_mc (R)
     M2 = cl2srivc (iddata (yc, uc, Ts), r, [1 2 0], [4 4 0]);
     T2(i, :) = M2.theta; S2(i, :) = sqrt (diag (M2.covariance)).';
   endfor
-  S.clrivc = summary ("clrivc [1 1 1 2 0]", TC, SC, [2 3 3]);
-  S.cl2srivc = summary ("cl2srivc [1 2 0] [4 4 0]", T2, S2, [2 3 3]);
-
-  for f = fieldnames (S).'
-    s = S.(f{1});
-    printf ("%s (R = %d)\n", s.name, R);
-    printf ("  bias      %s\n  MC sd     %s\n  rep. sd   %s\n",
-            mat2str (s.bias, 3), mat2str (s.mc_sd, 3), mat2str (s.rep_sd, 3));
-    printf ("  ratio     %s\n  RMSE      %s\n", mat2str (s.ratio, 3),
-            mat2str (s.rmse, 3));
-  endfor
+  S.clrivc = summary ("clrivc [1 1 1 2 0]", TC, SC, [2 3 3], R);
+  S.cl2srivc = summary ("cl2srivc [1 2 0] [4 4 0]", T2, S2, [2 3 3], R);
 endfunction
 
-function s = summary (name, T, SD, th0)
+## The statistics of one estimator, printed at once.
+function s = summary (name, T, SD, th0, R)
   s.name = name;
   s.bias = mean (T) - th0;
   s.mc_sd = std (T);
   s.rep_sd = mean (SD);
   s.ratio = s.mc_sd ./ s.rep_sd;
   s.rmse = sqrt (mean ((T - th0) .^ 2));
+  printf ("%s (R = %d)\n", s.name, R);
+  printf ("  bias      %s\n  MC sd     %s\n  rep. sd   %s\n",
+          mat2str (s.bias, 3), mat2str (s.mc_sd, 3), mat2str (s.rep_sd, 3));
+  printf ("  ratio     %s\n  RMSE      %s\n", mat2str (s.ratio, 3),
+          mat2str (s.rmse, 3));
+  fflush (stdout);
 endfunction

@@ -7,7 +7,8 @@
 ## p^i s / F(p) by the state recursion z(k+1) = Phi z(k) + g s(k) (a loop
 ## over the samples, as the control package's lsim), the auxiliary model
 ## x_hat = B/F u through 1/F^2, the ARMA model of y - x_hat
-## (Hannan-Rissanen then Gauss-Newton with @code{filter}), the D/C
+## (Hannan-Rissanen, or the previous iteration's model, then Gauss-Newton
+## with @code{filter}), the D/C
 ## prefilter (@code{filter}) and the IV solve. With @var{cnum}, @var{cden}
 ## (a continuous controller) and @var{r}: the closed-loop instruments of
 ## CLRIVC. Differences from the core: no time scaling, the noise estimate
@@ -21,6 +22,7 @@ function [theta, P, C, D] = rivc_plain_octave (y, u, Ts, nn, theta, iters,
   y = y(:); u = u(:); theta = theta(:);
   N = numel (y);
   closed = nargin >= 9 && ! isempty (cnum);
+  start = [];
   for it = 1:iters
     F = [1, theta(1:nf).'];
     b = theta(nf+1:end);
@@ -49,7 +51,8 @@ function [theta, P, C, D] = rivc_plain_octave (y, u, Ts, nn, theta, iters,
     Phi = [-Yf(:, nf:-1:1), Uf(:, nb:-1:1)];
     Z = [-Zx(:, nf:-1:1), Zu(:, nb:-1:1)];
     target = Yf(:, nf+1);
-    [C, D, s2] = arma_plain (xi, nd, nc);
+    [C, D, s2] = arma_plain (xi, nd, nc, start);
+    start = [D(2:end), C(2:end)].';
     Phi = filter (D, C, Phi);
     Z = filter (D, C, Z);
     target = filter (D, C, target);
@@ -93,7 +96,7 @@ function out = apply_num (num, count, R)
 endfunction
 
 ## Hannan-Rissanen and Gauss-Newton prediction-error steps, D xi = C e.
-function [C, D, s2] = arma_plain (x, nd, nc)
+function [C, D, s2] = arma_plain (x, nd, nc, start)
   N = numel (x);
   np = nd + nc;
   if (np == 0)
@@ -101,7 +104,9 @@ function [C, D, s2] = arma_plain (x, nd, nc)
     return;
   endif
   e = zeros (N, 1);
-  if (nc > 0)
+  if (nc > 0 && numel (start) == np)
+    eta = start(:);
+  elseif (nc > 0)
     L = min (max (20, 3 * np + 10), floor (N / 10));
     A = zeros (N - L, L);
     for i = 1:L
@@ -110,15 +115,17 @@ function [C, D, s2] = arma_plain (x, nd, nc)
     a = A \ x(L+1:N);
     e = filter ([1; a], 1, x);
   endif
-  s = max (nd, nc);
-  A = zeros (N - s, np);
-  for i = 1:nd
-    A(:, i) = -x(s+1-i:N-i);
-  endfor
-  for i = 1:nc
-    A(:, nd+i) = e(s+1-i:N-i);
-  endfor
-  eta = A \ x(s+1:N);
+  if (! (nc > 0 && numel (start) == np))
+    s = max (nd, nc);
+    A = zeros (N - s, np);
+    for i = 1:nd
+      A(:, i) = -x(s+1-i:N-i);
+    endfor
+    for i = 1:nc
+      A(:, nd+i) = e(s+1-i:N-i);
+    endfor
+    eta = A \ x(s+1:N);
+  endif
   loss = @(p) mean (filter ([1; p(1:nd)], [1; p(nd+1:end)], x) .^ 2);
   v = loss (eta);
   for it = 1:50

@@ -52,6 +52,9 @@ struct ArmaSettings {
   int max_iterations = 50;  // Gauss-Newton steps after Hannan-Rissanen
   S tolerance = S(1e-8);    // relative decrease of the loss
   int long_ar_order = 0;    // Hannan-Rissanen's long AR; 0: automatic
+  // A warm start [d1 .. d_nd, c1 .. c_nc] (e.g. the previous RIVC
+  // iteration's model) in place of Hannan-Rissanen; empty: none.
+  Vector<S> start;
 };
 
 template <typename S>
@@ -225,7 +228,9 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   };
 
   Vector<S> eta(np);
-  if (nc == 0) {
+  if (nc > 0 && settings.start.size() == np && settings.start.allFinite()) {
+    eta = settings.start;
+  } else if (nc == 0) {
     if (!regress(Vector<S>::Zero(n), eta)) {
       return numerical_failure("the AR regression is rank deficient");
     }
@@ -715,9 +720,16 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   result->converged = false;
   result->reason = "maximum number of iterations reached";
   int it = 0;
+  // The noise model of each iteration starts Gauss-Newton from the
+  // previous one (the noise estimate changes little between iterations).
+  ArmaSettings<S> arma_settings = settings.arma;
   for (; it < settings.max_iterations; ++it) {
-    status = iteration.step(theta, settings.arma, true, next, inverse_gram,
+    status = iteration.step(theta, arma_settings, true, next, inverse_gram,
                             arma, x_hat, condition);
+    if (status.ok() && problem.nc > 0) {
+      arma_settings.start.resize(problem.nd + problem.nc);
+      arma_settings.start << arma.d.tail(problem.nd), arma.c.tail(problem.nc);
+    }
     if (!status.ok()) return status;
     // Keep F stable: step halving toward the previous (stable) iterate.
     int halvings = 0;
@@ -739,7 +751,7 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   }
   result->iterations = it;
   // The noise model, covariance and fit at the final estimate.
-  status = iteration.step(theta, settings.arma, true, next, inverse_gram, arma,
+  status = iteration.step(theta, arma_settings, true, next, inverse_gram, arma,
                           x_hat, condition);
   if (!status.ok()) return status;
   result->noise = arma;
