@@ -95,7 +95,7 @@ function S = rivc_mc (R, only_open)
 endfunction
 
 ## rivc vs srivc, a slow drift in the noise, D = 1 - 0.98 q^-1, C = 1
-## (seeded on its own: rivc_mc_drift (R) reproduces it alone).
+## (seeded on its own, so its numbers do not depend on the cases before).
 function S = drift_case (R, x, u, Ts, th0)
   randn ("state", 3);
   N = numel (x);
