@@ -23,8 +23,10 @@
 ## (30).
 ##
 ## @var{M_G}: the plant, a continuous-time @code{idpoly} with its SRIVC
-## covariance (stage 2; it does not include the stage-1 estimation error of
-## u_hat); @var{M_T}: the stage-1 model u/r (@code{idpoly}); @var{uhat}.
+## covariance (stage 2; it assumes white output noise and does not include
+## the stage-1 estimation error of u_hat: with coloured noise it is too
+## small, by 5-6 times in @file{bench/rivc_mc.m}'s closed loop);
+## @var{M_T}: the stage-1 model u/r (@code{idpoly}); @var{uhat}.
 ##
 ## @strong{Example}
 ## @example
