@@ -14,7 +14,7 @@ function test_gateway_fuzz ()
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
   gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex", ...
-              "qnml_mex", "throttle_mex"};
+              "qnml_mex", "throttle_mex", "rivc_mex"};
   for i = 1:numel (gateways)
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
   endfor
@@ -62,6 +62,15 @@ function test_gateway_fuzz ()
                     "method", "clsrivc", "tol", 1e-6, "maxiter", 5,
                     "theta_init", [], "controller_num", [1 -0.5],
                     "controller_den", [1 -1], "r1", u, "r2", zeros (50, 1));
+  ## Box-Jenkins refined IV (rivc_mex): 200 samples (the ARMA model needs
+  ## more than 50).
+  ub = randn (200, 1);
+  yb = filter ([0 0.05], [1 -1.6 0.7], ub) + 0.01 * randn (200, 1);
+  bj = struct ("method", "rivc", "nb", 1, "nc", 1, "nd", 1, "nf", 2,
+               "nk", 0, "delay", 0, "intersample", 0, "tol", 1e-6,
+               "maxiter", 5, "theta_init", [], "cutoffs", [],
+               "max_starts", 3, "arma_maxiter", 10, "controller_num", [],
+               "controller_den", [], "cl_nb", 1, "cl_nf", 1, "cl_nk", 0);
   sim = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
                 "substeps", 1, "x0", [], "noise", []);
   ## Calls: {gateway, positional arguments with the options struct last,
@@ -75,6 +84,7 @@ function test_gateway_fuzz ()
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...
      {"na", "nb", "nk", "lambda_svf", "adg", "estimator", "mode", "q0", ...
       "lb", "ub", "free", "maxeval", "xtol"}}
+    {"rivc_mex", {"rivc", yb, ub, 0.1, [], bj}, {}}
     {"offline_mex", {"clsrivc", yp, u, 0.1, offline}, ...
      {"na", "nb", "nk", "lambda_svf", "method", "controller_num", ...
       "controller_den", "r1", "r2"}}
@@ -253,7 +263,8 @@ function n = check_call (name, args, nout)
     if (isempty (regexp (err.identifier, ['^(rlssvf|simc|rivsvf|rsrivc|', ...
                                           'clrivsvf|clrsrivc|lssvf|ivsvf|', ...
                                           'srivc|clsrivc|qnml|svfscaling|', ...
-                                          'throttlesim|throttleid):\w+$'],
+                                          'throttlesim|throttleid|rivc|', ...
+                                          'tfrivc|clrivc|cl2srivc):\w+$'],
                          "once")))
       ## Octave's own argument errors (e.g. too many outputs) are fine only
       ## when they carry an identifier; ours must use the public name.

@@ -1,0 +1,232 @@
+// MEX gateway of the Box-Jenkins refined IV (core/include/ctid/
+// refined_iv_bj.hpp), called by rivc.m, tfrivc.m, clrivc.m, cl2srivc.m:
+//
+//   [theta, cov, info] = rivc_mex (fname, y, u, Ts, r, opts)
+//
+// y, u N-by-1, Ts the sampling interval (regular data), r the reference
+// (N-by-1) of a closed loop or []. opts fields:
+//   method  'rivc' (default; with controller_num/_den: CLRIVC),
+//           'cl2srivc' (two-stage SRIVC: u on r, then y on u_hat) or
+//           'arma' (the ARMA estimator alone on y: nd, nc).
+//   nb, nc, nd, nf, nk, delay (continuous, time units), intersample
+//   (0 zoh, 1 foh), tol, maxiter, theta_init ([f b]), cutoffs,
+//   max_starts (the SRIVC start), arma_maxiter, controller_num,
+//   controller_den (descending powers of p); cl2srivc: cl_nb, cl_nf, cl_nk.
+// info: converged, iterations, reason, C, D (q^-1), noise_variance (of e),
+// noise_covariance ([d c]), simulation_variance, simulated, condition,
+// start_theta; cl2srivc: cl_theta, cl_covariance, u_hat.
+#include <algorithm>
+
+#include "ctid/refined_iv_bj.hpp"
+#include "gateway_common.hpp"
+#include "options_reader.hpp"
+
+namespace {
+
+using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
+
+mxArray* column(const ctid::Vector<double>& v) {
+  mxArray* a = ctid::mex::make_output_matrix(v.size(), 1);
+  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
+  return a;
+}
+
+mxArray* row(const ctid::Vector<double>& v) {
+  mxArray* a = ctid::mex::make_output_matrix(1, v.size());
+  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
+  return a;
+}
+
+mxArray* matrix(const ctid::Matrix<double>& m) {
+  mxArray* a = ctid::mex::make_output_matrix(m.rows(), m.cols());
+  std::copy(m.data(), m.data() + m.size(), mxGetPr(a));
+  return a;
+}
+
+ctid::InterSample rule_of(const Gateway& g, int code) {
+  if (code == 0) return ctid::InterSample::kZoh;
+  if (code == 1) return ctid::InterSample::kFoh;
+  g.fail("badOption", "intersample must be 0 (zoh) or 1 (foh)");
+}
+
+enum class Method { kRivc, kCl2srivc, kArma };
+
+void set_info(mxArray* info, const char* name, mxArray* value) {
+  mxSetField(info, 0, name, value);
+}
+
+void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                  const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "the gateway takes 6 arguments, got " + std::to_string(nrhs));
+  }
+  if (nlhs > 3) g.fail("badInput", "at most 3 outputs");
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
+  const long n = record.num_samples;
+  if (record.num_inputs != 1) g.fail("badInput", "one input only");
+  if (record.instants != nullptr) {
+    g.fail("badInput", "regularly sampled data only (a scalar Ts)");
+  }
+  OptionsReader opt(g, prhs[5]);
+  const Method method = opt.choice<Method>("method",
+                                           {{"rivc", Method::kRivc},
+                                            {"cl2srivc", Method::kCl2srivc},
+                                            {"arma", Method::kArma}},
+                                           Method::kRivc);
+  ctid::RivcProblem<double> problem;
+  ctid::RivcSettings<double> settings;
+  problem.nb = opt.integer("nb", 1);
+  problem.nc = opt.integer("nc", 0);
+  problem.nd = opt.integer("nd", 0);
+  problem.nf = opt.integer("nf", 1);
+  problem.nk = opt.integer("nk", 0);
+  problem.delay = opt.scalar("delay", 0);
+  problem.u_rule = rule_of(g, opt.integer("intersample", 0));
+  settings.tolerance = opt.scalar("tol", 1e-6);
+  settings.max_iterations = opt.integer("maxiter", 30);
+  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
+  if (theta_init.size() > 0) settings.theta_init = theta_init.reshaped();
+  const Eigen::MatrixXd cutoffs = opt.matrix("cutoffs");
+  settings.start.cutoffs.assign(cutoffs.data(),
+                                cutoffs.data() + cutoffs.size());
+  settings.start.max_starts = opt.integer("max_starts", 3);
+  settings.start.tolerance = settings.tolerance;
+  settings.start.max_iterations = std::max(settings.max_iterations, 30);
+  settings.arma.max_iterations = opt.integer("arma_maxiter", 50);
+  const Eigen::MatrixXd cnum = opt.matrix("controller_num");
+  const Eigen::MatrixXd cden = opt.matrix("controller_den");
+  const int cl_nb = opt.integer("cl_nb", 1);
+  const int cl_nf = opt.integer("cl_nf", 1);
+  const int cl_nk = opt.integer("cl_nk", 0);
+  opt.finish();
+  if (method == Method::kCl2srivc) {
+    settings.start.max_iterations = settings.max_iterations;
+  }
+  if (settings.max_iterations < 1 || settings.max_iterations > 100000 ||
+      settings.arma.max_iterations < 0 ||
+      settings.arma.max_iterations > 100000 || settings.start.max_starts < 1 ||
+      settings.start.max_starts > 100) {
+    g.fail("badOption",
+           "maxiter must be in 1..1e5, arma_maxiter in 0..1e5 and max_starts "
+           "in 1..100");
+  }
+
+  const char* fields[] = {"converged",
+                          "iterations",
+                          "reason",
+                          "C",
+                          "D",
+                          "noise_variance",
+                          "noise_covariance",
+                          "simulation_variance",
+                          "simulated",
+                          "condition",
+                          "start_theta",
+                          "cl_theta",
+                          "cl_covariance",
+                          "u_hat"};
+  mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
+  ctid::Vector<double> theta;
+  ctid::Matrix<double> cov;
+
+  if (method == Method::kArma) {
+    ctid::ArmaResult<double> arma;
+    g.check(ctid::arma_estimate<double>(record.y, n, problem.nd, problem.nc,
+                                        settings.arma, &arma));
+    theta.resize(problem.nd + problem.nc);
+    theta << arma.d.tail(problem.nd), arma.c.tail(problem.nc);
+    cov = arma.covariance;
+    set_info(info, "converged", mxCreateLogicalScalar(arma.converged));
+    set_info(info, "iterations", mxCreateDoubleScalar(arma.iterations));
+    set_info(info, "C", row(arma.c));
+    set_info(info, "D", row(arma.d));
+    set_info(info, "noise_variance",
+             mxCreateDoubleScalar(arma.innovation_variance));
+  } else if (method == Method::kCl2srivc) {
+    if (mxIsEmpty(prhs[4])) g.fail("badInput", "cl2srivc needs r");
+    const double* r = g.matrix(prhs[4], "the reference r", n, 1);
+    ctid::RivProblem<double> plant, loop;
+    plant.nf = {problem.nf};
+    ctid::RivChannel c;
+    c.nb = problem.nb;
+    c.nk = problem.nk;
+    c.rule = problem.u_rule;
+    plant.channels.push_back(c);
+    loop.nf = {cl_nf};
+    ctid::RivChannel cl;
+    cl.nb = cl_nb;
+    cl.nk = cl_nk;
+    loop.channels.push_back(cl);
+    ctid::Cl2srivcResult<double> res;
+    const ctid::Status status = ctid::cl2srivc<double>(
+        plant, loop, settings.start, record.y, record.u, r, n, record.ts, &res);
+    if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+    theta = res.plant.theta;
+    cov = res.plant.covariance;
+    set_info(info, "converged",
+             mxCreateLogicalScalar(res.plant.converged &&
+                                   res.sensitivity.converged));
+    set_info(info, "iterations", mxCreateDoubleScalar(res.plant.iterations));
+    set_info(info, "reason",
+             mxCreateString(status.ok() ? res.plant.reason.c_str()
+                                        : status.message().c_str()));
+    set_info(info, "noise_variance",
+             mxCreateDoubleScalar(res.plant.noise_variance));
+    set_info(info, "simulation_variance",
+             mxCreateDoubleScalar(res.plant.noise_variance));
+    set_info(info, "simulated", column(res.plant.simulated));
+    set_info(info, "condition", mxCreateDoubleScalar(res.plant.condition));
+    set_info(info, "cl_theta", column(res.sensitivity.theta));
+    set_info(info, "cl_covariance", matrix(res.sensitivity.covariance));
+    set_info(info, "u_hat", column(res.sensitivity.simulated));
+  } else {
+    if (cnum.size() > 0) {
+      if (cden.size() == 0) {
+        g.fail("badOption", "controller_num needs controller_den");
+      }
+      problem.controller_num = cnum.reshaped();
+      problem.controller_den = cden.reshaped();
+      problem.reference = g.matrix(prhs[4], "the reference r", n, 1);
+    } else if (!mxIsEmpty(prhs[4])) {
+      g.fail("badInput", "a reference r needs a controller");
+    }
+    ctid::RivcData<double> data{record.y, record.u, n, record.ts};
+    ctid::RivcResult<double> res;
+    const ctid::Status status =
+        ctid::rivc<double>(problem, settings, data, &res);
+    if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+    theta = res.theta;
+    cov = res.covariance;
+    set_info(info, "converged", mxCreateLogicalScalar(res.converged));
+    set_info(info, "iterations", mxCreateDoubleScalar(res.iterations));
+    set_info(info, "reason", mxCreateString(res.reason.c_str()));
+    set_info(info, "C", row(res.noise.c));
+    set_info(info, "D", row(res.noise.d));
+    set_info(info, "noise_variance",
+             mxCreateDoubleScalar(res.noise.innovation_variance));
+    set_info(info, "noise_covariance", matrix(res.noise.covariance));
+    set_info(info, "simulation_variance",
+             mxCreateDoubleScalar(res.simulation_variance));
+    set_info(info, "simulated", column(res.simulated));
+    set_info(info, "condition", mxCreateDoubleScalar(res.condition));
+    set_info(info, "start_theta", column(res.start_theta));
+  }
+  plhs[0] = column(theta);
+  if (nlhs >= 2) plhs[1] = matrix(cov);
+  if (nlhs >= 3) {
+    plhs[2] = info;
+  } else {
+    mxDestroyArray(info);
+  }
+}
+
+}  // namespace
+
+void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  ctid::mex::run_gateway(
+      "rivc", {"rivc", "tfrivc", "clrivc", "cl2srivc"}, nrhs, prhs,
+      [&](const Gateway& g) { rivc_gateway(g, nlhs, plhs, nrhs, prhs); });
+}

@@ -1,0 +1,102 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{M_G} =} cl2srivc (@var{data_yu}, @var{data_ur}, @var{nn_ol}, @var{nn_cl})
+## @deftypefnx {} {[@var{M_G}, @var{M_T}, @var{uhat}] =} cl2srivc (@dots{}, @var{model}, @var{T0}, @var{init_method}, @var{tol}, @var{maxiter})
+## Two-stage closed-loop simplified refined IV (CL2SRIVC): in a loop with
+## an unknown controller and reference r,
+## @enumerate
+## @item SRIVC (thesis eqs. 2.8-2.13) of the plant input's response to the
+## reference, u = B_T(p)/F_T(p) r (orders @var{nn_cl} = [nb nf nk]), gives
+## the noise-free input u_hat = B_T/F_T r;
+## @item SRIVC of the output on u_hat, y = B(p)/F(p) u_hat (orders
+## @var{nn_ol} = [nb nf nk]) gives the plant.
+## @end enumerate
+## The noise in the measured u (correlated with the output noise through
+## the loop) does not reach the second stage, so the plant estimate is
+## consistent without knowing the controller
+## (core/include/ctid/refined_iv_bj.hpp, @code{cl2srivc}).
+##
+## @var{data_yu}: @code{iddata (y, u, Ts)}; @var{data_ur}: @code{iddata
+## (u, r, Ts)} or r (N-by-1, held between samples). u_hat is the output
+## of a continuous model and is filtered as linear between samples (FOH).
+## @var{model} must be [] (no initial model), @var{T0} 1 (the whole
+## record), @var{init_method} 'srivc'; @var{tol} (1e-6), @var{maxiter}
+## (30).
+##
+## @var{M_G}: the plant, a continuous-time @code{idpoly} with its SRIVC
+## covariance (stage 2; it assumes white output noise and does not include
+## the stage-1 estimation error of u_hat: with coloured noise it is too
+## small, by 5-6 times in @file{bench/rivc_mc.m}'s closed loop);
+## @var{M_T}: the stage-1 model u/r (@code{idpoly}); @var{uhat}.
+##
+## @strong{Example}
+## @example
+## pkg load control
+## Ts = 0.01; N = 6000; r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+## G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+## y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+## u = lsim (c2d (feedback (Mc, G), Ts), r);
+## M = cl2srivc (iddata (y, u, Ts), iddata (u, r, Ts), [1 2 0], [4 4 0])
+## @end example
+## @seealso{clrivc, clsrivc, srivc}
+## @end deftypefn
+
+function [M, M_T, varargout] = cl2srivc (varargin)
+  contsid_nargchk ("cl2srivc", nargin, nargout, [4 9], 3);
+  [M, info, d] = contsid_rivc ("cl2srivc", varargin);
+  M_T = [];
+  if (nargout > 1)
+    ncl = varargin{4};
+    nf = ncl(2);
+    th = info.cl_theta;
+    M_T = idctm (struct ("B", th(nf+1:end).', "F", [1, th(1:nf).'],
+                         "nk", ncl(3), "Ts", d.Ts, "covariance",
+                         info.cl_covariance, "method", "cl2srivc"));
+  endif
+  varargout = {info.u_hat}(1:max (nargout - 2, 0));
+endfunction
+
+%!shared y, u, r, Ts, N, Mc, G
+%! pkg load control
+%! Ts = 0.01; N = 6000; randn ("state", 3);
+%! r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+%! y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+%! u = lsim (c2d (feedback (Mc, G), Ts), r);
+
+%!test  # noise-free: stage 1 exact (ZOH r), stage 2 exact to O((w Ts)^2)
+%! [M, MT, uh] = cl2srivc (iddata (y, u, Ts), iddata (u, r, Ts), ...
+%!                         [1 2 0], [4 4 0]);
+%! assert (M.theta, [2 3 3], 1e-3);
+%! T = feedback (Mc, G);
+%! [num, den] = tfdata (T, "vector");
+%! k = find (den, 1);
+%! assert (MT.F, den(k:end) / den(k), 1e-6 * norm (den));
+%! assert (uh, u, 1e-8 * norm (u));
+
+%!test  # noise on y and u through the loop: consistent (within 4 sd)
+%! randn ("state", 4);
+%! v = 0.02 * randn (N, 1);
+%! yn = y + lsim (c2d (feedback (1, G * Mc), Ts), v);
+%! un = u - lsim (c2d (feedback (Mc, G), Ts), v);
+%! M = cl2srivc (iddata (yn, un, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc",
+%!               1e-6, 50);
+%! assert (abs (M.theta - [2 3 3]) < 0.1 * [2 3 3]);
+
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0])
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2], [4 4 0])
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0.5])
+%!error id=cl2srivc:dimensionMismatch cl2srivc (iddata (y, u, Ts), r(1:5), [1 2 0], [4 4 0])
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], idpoly (1, 1, 1, 1, [1 1], 0, 0))
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 3)
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "lssvf")
+%!error id=cl2srivc:badOption cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", -1)
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", 1e-6, 30, 1)
+%!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [4 2 0], [4 4 0])
+
+%!demo
+%! pkg load control
+%! Ts = 0.01; N = 6000; r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+%! y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+%! u = lsim (c2d (feedback (Mc, G), Ts), r);
+%! M = cl2srivc (iddata (y, u, Ts), iddata (u, r, Ts), [1 2 0], [4 4 0])

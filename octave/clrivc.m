@@ -1,0 +1,109 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{M} =} clrivc (@var{data_yu}, @var{data_yr}, [@var{nb} @var{nc} @var{nd} @var{nf} @var{nk}], @var{Mc})
+## @deftypefnx {} {@var{M} =} clrivc (@dots{}, @var{Mc}, @var{T0}, @var{tol}, @var{maxiter})
+## @deftypefnx {} {[@var{M}, @var{C}, @var{D}] =} clrivc (@dots{})
+## Closed-loop refined IV (CLRIVC) of the hybrid Box-Jenkins model
+## @example
+## y(t_k) = B(p)/F(p) u(t_k) + C(q^-1)/D(q^-1) e(t_k),
+## u(t) = Mc(p) (r(t) - y(t)),
+## @end example
+## with a known continuous-time controller Mc = Nc/Dc. As @code{rivc}
+## (core/include/ctid/refined_iv_bj.hpp), but the instruments come from
+## the closed loop driven by the reference r: x_hat = B Nc / (F Dc + B Nc)
+## r and u_hat = F Nc / (F Dc + B Nc) r (thesis eqs. 2.48-2.49 with a
+## continuous controller), prefiltered by 1/F(p) and then D/C; the
+## regressors use the measured y and u, and the noise model is fitted to
+## y - B/F u. The start is CLSRIVC with the same controller.
+##
+## @var{data_yu}: @code{iddata (y, u, Ts)} (regular sampling; u is
+## filtered by its InterSample rule, 'foh' suits a continuous controller
+## output); @var{data_yr}: @code{iddata (y, r, Ts)} or r itself (N-by-1,
+## held between samples); nn = [nb nc nd nf nk] with nk = 0; @var{Mc}: a
+## continuous-time control-package @code{tf}, an @code{idpoly}/@code{idtf}
+## with Ts = 0, or a struct with @code{num} and @code{den} (descending
+## powers of s). @var{T0}: CONTSID's first sample, only 1 (the whole
+## record); @var{tol} (1e-6) and @var{maxiter} (30).
+##
+## @var{M}: a continuous-time @code{idpoly} with the covariance
+## sigma_e^2 (sum zeta_f zeta_f')^-1 and @code{Report.Parameters.NoiseModel};
+## @var{C}, @var{D}: the noise polynomials (q^-1).
+##
+## @strong{Example}
+## @example
+## pkg load control
+## Ts = 0.01; N = 6000; r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+## G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+## y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+## u = lsim (c2d (feedback (Mc, G), Ts), r);
+## M = clrivc (iddata (y, u, Ts, "InterSample", "foh"), iddata (y, r, Ts),
+##             [1 1 1 2 0], Mc, 1)
+## @end example
+## @seealso{rivc, clsrivc, cl2srivc}
+## @end deftypefn
+
+function [M, C, varargout] = clrivc (varargin)
+  contsid_nargchk ("clrivc", nargin, nargout, [4 7], 3);
+  [M, info] = contsid_rivc ("clrivc", varargin);
+  C = info.C;
+  varargout = {info.D}(1:max (nargout - 2, 0));
+endfunction
+
+%!shared y, u, r, Ts, N, Mc, G
+%! pkg load control
+%! Ts = 0.01; N = 6000; randn ("state", 3);
+%! r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+%! y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+%! u = lsim (c2d (feedback (Mc, G), Ts), r);
+
+%!test  # noise-free closed loop: exact up to the FOH rule on the measured
+%! # (continuous, not piecewise linear) u: O((w Ts)^2)
+%! [M, C, D] = clrivc (iddata (y, u, Ts, "InterSample", "foh"), ...
+%!                     iddata (y, r, Ts), [1 1 1 2 0], Mc, 1);
+%! assert (M.theta, [2 3 3], 1e-3);
+%! assert (size (C), [1 2]);
+%! assert (size (D), [1 2]);
+
+%!test  # controller as a struct and as an idpoly: the same estimate
+%! a = clrivc (iddata (y, u, Ts, "InterSample", "foh"), r, [1 1 1 2 0], ...
+%!             struct ("num", [0.5 1], "den", [0.1 1 0]));
+%! b = clrivc (iddata (y, u, Ts, "InterSample", "foh"), r, [1 1 1 2 0], ...
+%!             idpoly ([0.1 1 0] / 0.1, [0.5 1] / 0.1, 1, 1, 1, 0, "Ts", 0));
+%! assert (a.theta, b.theta, 1e-8);
+%! assert (a.theta, [2 3 3], 1e-3);
+
+%!test  # coloured output noise: within the reported sd
+%! randn ("state", 4);
+%! v = filter ([1 0.3], [1 -0.95], 0.005 * randn (N, 1));
+%! ## the loop feeds the noise back: simulate it through the sensitivity
+%! yn = y + lsim (c2d (feedback (1, G * Mc), Ts), v);
+%! un = u - lsim (c2d (feedback (Mc, G), Ts), v);
+%! [M, C, D] = clrivc (iddata (yn, un, Ts, "InterSample", "foh"), r, ...
+%!                     [1 1 1 2 0], Mc);
+%! sd = sqrt (diag (M.covariance)).';
+%! assert (all (abs (M.theta - [2 3 3]) < 4 * sd + 2e-3));
+%! assert (D(2), -0.95, 0.05);
+
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0])
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, 1, 1e-6, 30, 4)
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2], Mc)
+%!error id=clrivc:dimensionMismatch clrivc (iddata (y, u, Ts), r(1:10), [1 1 1 2 0], Mc)
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), {r}, [1 1 1 2 0], Mc)
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], 3)
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], tf (1, [1 1], 0.1))
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], struct ("num", [1 2 3], "den", [1 1]))
+%!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], struct ("num", 1, "den", 0))
+%!error id=clrivc:notSupported clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, 2)
+%!error id=clrivc:notSupported clrivc (iddata (y, u, Ts), r, [1 1 1 2 1], Mc)
+%!error id=clrivc:badOption clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, 1, -1)
+%!error id=clrivc:badOption clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, 1, 1e-6, 0)
+%!error id=clrivc:numericalFailure clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], struct ("num", -50, "den", 1))
+
+%!demo
+%! pkg load control
+%! Ts = 0.01; N = 6000; r = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);
+%! y = lsim (c2d (feedback (G * Mc, 1), Ts), r);
+%! u = lsim (c2d (feedback (Mc, G), Ts), r);
+%! M = clrivc (iddata (y, u, Ts, "InterSample", "foh"), iddata (y, r, Ts),
+%!             [1 1 1 2 0], Mc, 1)

@@ -1,0 +1,515 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{M}, @var{info}, @var{d}] =} contsid_rivc (@var{fname}, @var{args})
+## Back-end of rivc, tfrivc, clrivc and cl2srivc: parses the arguments of
+## the public function @var{fname} (its @code{varargin} @var{args}), runs
+## the core (core/include/ctid/refined_iv_bj.hpp through rivc_mex) and
+## returns the plant model @var{M} (an @code{idpoly}, continuous time,
+## with the covariance and Report; for tfrivc an @code{idtf}), the
+## gateway's @var{info} (C, D, noise_variance, condition, ...) plus the
+## derived RT2, YIC, AIC, and the data @var{d}. Every error identifier
+## starts with @var{fname}.
+## @end deftypefn
+
+function [M, info, d] = contsid_rivc (fname, args)
+  switch (fname)
+    case "rivc"
+      [M, info, d] = run_rivc (args);
+    case "clrivc"
+      [M, info, d] = run_clrivc (args);
+    case "cl2srivc"
+      [M, info, d] = run_cl2srivc (args);
+    case "tfrivc"
+      [M, info, d] = run_tfrivc (args);
+    otherwise
+      error ("contsid_rivc:badInput", "contsid_rivc: unknown caller %s",
+             fname);
+  endswitch
+endfunction
+
+## rivc (data, [nb nc nd nf nk], Name, Value) or rivc (data, Mi, ...)
+function [M, info, d] = run_rivc (args)
+  fname = "rivc";
+  [d, rest] = read_data (fname, args);
+  if (isempty (rest))
+    error ("rivc:badInput", "rivc: expected the structure [nb nc nd nf nk]");
+  endif
+  nn = rest{1};
+  theta_init = [];
+  if (isa (nn, "idpoly"))
+    Mi = nn;
+    B = Mi.B;
+    F = Mi.F;
+    C = Mi.C;
+    D = Mi.D;
+    if (iscell (B) || iscell (F))
+      error ("rivc:badInput", "rivc: the initial model must have one input");
+    endif
+    nn = [numel(B), numel(C) - 1, numel(D) - 1, numel(F) - 1, Mi.nk(1)];
+    theta_init = [F(2:end) / F(1), B / F(1)];
+  endif
+  nn = read_orders (fname, nn, 5, "[nb nc nd nf nk]");
+  opts = read_options (fname, rest(2:end),
+                       {"lambda", "Tol", "MaxIter", "InitMethod", ...
+                        "ArmaMethod", "ArmaMaxIter"}, ...
+                       {[], 1e-6, 30, "srivc", "pem", 50});
+  e = engine_options (fname, opts, d);
+  e.nb = nn(1); e.nc = nn(2); e.nd = nn(3); e.nf = nn(4); e.nk = nn(5);
+  e = init_option (fname, opts.InitMethod, e, theta_init);
+  [theta, cov, info] = call_mex (fname, d, [], e);
+  info = derived (info, d, theta, cov);
+  M = plant_model (fname, theta, cov, info, d, e);
+endfunction
+
+## clrivc (data_yu, data_yr, [nb nc nd nf nk], Mc[, T0, tol, maxiter])
+function [M, info, d] = run_clrivc (args)
+  fname = "clrivc";
+  [d, rest] = read_data (fname, args);
+  if (numel (rest) < 3)
+    error ("clrivc:badInput",
+           "clrivc: expected data_yu, data_yr, [nb nc nd nf nk] and Mc");
+  endif
+  r = read_reference (fname, rest{1}, rows (d.y), 2);
+  nn = read_orders (fname, rest{2}, 5, "[nb nc nd nf nk]");
+  [num, den] = read_controller (fname, rest{3});
+  pos = {"T0", "tol", "maxiter"};
+  if (numel (rest) > 6)
+    error ("clrivc:badInput", "clrivc: takes at most 7 arguments");
+  endif
+  opts = struct ("lambda", [], "Tol", 1e-6, "MaxIter", 30, "ArmaMaxIter", 50);
+  positional (fname, rest(4:end), pos);
+  if (numel (rest) >= 5 && ! isempty (rest{5}))
+    opts.Tol = rest{5};
+  endif
+  if (numel (rest) >= 6 && ! isempty (rest{6}))
+    opts.MaxIter = rest{6};
+  endif
+  e = engine_options (fname, opts, d);
+  e.nb = nn(1); e.nc = nn(2); e.nd = nn(3); e.nf = nn(4); e.nk = nn(5);
+  if (e.nk != 0)
+    error ("clrivc:notSupported", "clrivc: the closed loop takes nk = 0");
+  endif
+  e.controller_num = num;
+  e.controller_den = den;
+  [theta, cov, info] = call_mex (fname, d, r, e);
+  info = derived (info, d, theta, cov);
+  M = plant_model (fname, theta, cov, info, d, e);
+endfunction
+
+## cl2srivc (data_yu, data_ur, nn_ol, nn_cl[, model, T0, init, tol, maxiter])
+function [M, info, d] = run_cl2srivc (args)
+  fname = "cl2srivc";
+  [d, rest] = read_data (fname, args);
+  if (numel (rest) < 3)
+    error ("cl2srivc:badInput",
+           "cl2srivc: expected data_yu, data_ur, nn_ol and nn_cl");
+  endif
+  if (numel (rest) > 8)
+    error ("cl2srivc:badInput", "cl2srivc: takes at most 9 arguments");
+  endif
+  ## data_ur = iddata (u, r): its input is the reference r.
+  r = read_reference (fname, rest{1}, rows (d.y), 2);
+  nol = read_orders (fname, rest{2}, 3, "nn_ol = [nb nf nk]");
+  ncl = read_orders (fname, rest{3}, 3, "nn_cl = [nb nf nk]");
+  if (nol(1) > nol(2) + 1 || ncl(1) > ncl(2) + 1 || nol(2) < 1
+      || ncl(2) < 1)
+    error ("cl2srivc:badInput",
+           "cl2srivc: each stage needs nf >= 1 and nb <= nf + 1");
+  endif
+  if (numel (rest) >= 4 && ! isempty (rest{4}))
+    error ("cl2srivc:notSupported",
+           "cl2srivc: an initial model is not supported; pass []");
+  endif
+  positional (fname, rest(5:min (end, 5)), {"T0"});
+  if (numel (rest) >= 6 && ! isempty (rest{6})
+      && ! (ischar (rest{6}) && any (strcmpi (rest{6}, {"srivc", "sriv"}))))
+    error ("cl2srivc:notSupported",
+           "cl2srivc: init_method must be 'srivc' (the engine's start)");
+  endif
+  opts = struct ("lambda", [], "Tol", 1e-6, "MaxIter", 30, "ArmaMaxIter", 50);
+  if (numel (rest) >= 7 && ! isempty (rest{7}))
+    opts.Tol = rest{7};
+  endif
+  if (numel (rest) >= 8 && ! isempty (rest{8}))
+    opts.MaxIter = rest{8};
+  endif
+  e = engine_options (fname, opts, d);
+  e.method = "cl2srivc";
+  e.nb = nol(1); e.nf = nol(2); e.nk = nol(3);
+  e.cl_nb = ncl(1); e.cl_nf = ncl(2); e.cl_nk = ncl(3);
+  ## u_hat is the output of a continuous model: smooth between samples.
+  e.intersample = 1;
+  [theta, cov, info] = call_mex (fname, d, r, e);
+  info = derived (info, d, theta, cov);
+  M = plant_model (fname, theta, cov, info, d, e);
+endfunction
+
+## tfrivc (data, np, nz[, IODelay][, Name, Value]), 'NN', [nd nc]
+function [M, info, d] = run_tfrivc (args)
+  fname = "tfrivc";
+  [d, rest] = read_data (fname, args);
+  if (numel (rest) < 2)
+    error ("tfrivc:badInput", "tfrivc: expected data, np and nz");
+  endif
+  np = read_orders (fname, rest{1}, 1, "np");
+  nz = read_orders (fname, rest{2}, 1, "nz");
+  if (np < 1 || nz > np)
+    error ("tfrivc:badInput", "tfrivc: need np >= 1 and 0 <= nz <= np");
+  endif
+  rest = rest(3:end);
+  td = [];
+  if (! isempty (rest) && isnumeric (rest{1}))
+    td = rest{1};
+    if (! isreal (td) || ! isscalar (td) || ! isfinite (td) || td < 0)
+      error ("tfrivc:badInput", "tfrivc: IODelay must be a scalar >= 0");
+    endif
+    rest = rest(2:end);
+  endif
+  ## 'NN' is ours; every other option goes to tfsrivc (the plant start).
+  NN = [0 0];
+  pass = {};
+  if (mod (numel (rest), 2) != 0)
+    error ("tfrivc:badInput", "tfrivc: options must be name-value pairs");
+  endif
+  tol = 1e-6;
+  maxiter = 30;
+  for i = 1:2:numel (rest)
+    name = rest{i};
+    if (! ischar (name))
+      error ("tfrivc:badInput", "tfrivc: option names must be strings");
+    endif
+    if (strcmpi (name, "NN"))
+      NN = read_orders (fname, rest{i+1}, 2, "NN = [nd nc]");
+    else
+      pass(end+1:end+2) = rest(i:i+1);
+      if (strcmpi (name, "MaxIter"))
+        maxiter = rest{i+1};
+      elseif (strcmpi (name, "TolPar"))
+        tol = rest{i+1};
+      endif
+    endif
+  endfor
+  data = iddata (d.y, d.u, d.Ts, "InterSample", d.intersample);
+  if (isempty (td))
+    targs = {data, np, nz, pass{:}};
+  else
+    targs = {data, np, nz, td, pass{:}};
+  endif
+  try
+    Ms = tfsrivc (targs{:});
+  catch err
+    id = err.identifier;
+    k = index (id, ":");
+    reason = "badInput";
+    if (k > 0)
+      reason = id(k+1:end);
+    endif
+    error (["tfrivc:" reason], "tfrivc: %s",
+           regexprep (err.message, "^tfsrivc: ", ""));
+  end_try_catch
+  [num, den] = tfdata (Ms, "vector");
+  num = num(end - nz:end);
+  tdel = Ms.IODelay;
+  opts = struct ("lambda", [], "Tol", tol, "MaxIter", maxiter,
+                 "ArmaMaxIter", 50);
+  e = engine_options (fname, opts, d);
+  e.nf = np; e.nb = nz + 1; e.nd = NN(1); e.nc = NN(2);
+  e.nk = floor (tdel / d.Ts + 1e-9);
+  e.delay = max (tdel - e.nk * d.Ts, 0);
+  e.theta_init = [den(2:end) / den(1), num / den(1)];
+  [theta, cov, info] = call_mex (fname, d, [], e);
+  info.start = Ms;
+  f = theta(1:np).';
+  b = theta(np+1:end).';
+  M = idtf (b, [1 f], "IODelay", tdel);
+  ## idtf's parameter order is [b; f].
+  perm = [np + (1:nz+1), 1:np];
+  M = setcov (M, cov(perm, perm));
+  info = derived (info, d, theta, cov);
+  M.Report.Fit = fit_struct (info, d, numel (theta));
+  M.Report.Parameters.IODelay = tdel;
+  M.Report.Status = "Estimated using TFRIVC";
+  M.Report.Method = "tfrivc";
+  M.Report.Termination = struct ("Iterations", info.iterations,
+                                 "Converged", info.converged,
+                                 "Reason", info.reason);
+  M.Report.Parameters.NoiseModel = struct ("C", info.C, "D", info.D,
+                                "NoiseVariance", info.noise_variance);
+endfunction
+
+function [d, rest] = read_data (fname, args)
+  if (isempty (args))
+    error ([fname ":badInput"], "%s: expected the data", fname);
+  endif
+  d = contsid_getdata (fname, args{1});
+  rest = args(2:end);
+  if (! d.uniform)
+    error ([fname ":notSupported"],
+           "%s: regularly sampled data only (the noise model is discrete)",
+           fname);
+  endif
+  if (columns (d.u) != 1)
+    error ([fname ":notSupported"], "%s: one input only", fname);
+  endif
+endfunction
+
+function nn = read_orders (fname, nn, count, what)
+  if (! isnumeric (nn) || ! isreal (nn) || numel (nn) != count
+      || any (! isfinite (nn(:))) || any (nn(:) != fix (nn(:)))
+      || any (nn(:) < 0))
+    error ([fname ":badInput"],
+           "%s: %s must be %d non-negative integers", fname, what, count);
+  endif
+  nn = double (nn(:).');
+endfunction
+
+function r = read_reference (fname, data, n, ~)
+  if (isa (data, "iddata"))
+    r = get (data, "InputData");
+    if (iscell (r))
+      r = r{1};
+    endif
+  else
+    r = data;
+  endif
+  if (! isnumeric (r) || ! isreal (r) || ! isvector (r)
+      || any (! isfinite (r(:))))
+    error ([fname ":badInput"],
+           "%s: the closed-loop data must hold one finite reference r",
+           fname);
+  endif
+  if (numel (r) != n)
+    error ([fname ":dimensionMismatch"],
+           "%s: the reference r needs %d samples, got %d", fname, n,
+           numel (r));
+  endif
+  r = double (r(:));
+endfunction
+
+## Mc: a continuous-time tf/idpoly/idtf, or a struct with num and den
+## (descending powers of s).
+function [num, den] = read_controller (fname, Mc)
+  num = [];
+  den = [];
+  if (isstruct (Mc) && isscalar (Mc) && isfield (Mc, "num")
+      && isfield (Mc, "den"))
+    num = Mc.num;
+    den = Mc.den;
+  elseif (isobject (Mc))
+    try
+      if (! isa (Mc, "tf"))
+        Mc = tf (Mc);
+      endif
+      if (! isct (Mc))
+        error ([fname ":badInput"], "%s: the controller must be continuous",
+               fname);
+      endif
+      [num, den] = tfdata (Mc, "vector");
+    catch err
+      if (strncmp (err.identifier, fname, numel (fname)))
+        rethrow (err);
+      endif
+      error ([fname ":badInput"],
+             "%s: the controller Mc must be a continuous-time tf (%s)",
+             fname, err.message);
+    end_try_catch
+  endif
+  if (! isnumeric (num) || ! isnumeric (den) || isempty (num)
+      || isempty (den) || ! isreal (num) || ! isreal (den)
+      || any (! isfinite ([num(:); den(:)])))
+    error ([fname ":badInput"],
+           ["%s: the controller Mc must be a continuous-time tf or a ", ...
+            "struct with finite num and den"], fname);
+  endif
+  num = double (num(:).');
+  den = double (den(:).');
+  k = find (den != 0, 1);
+  if (isempty (k))
+    error ([fname ":badInput"], "%s: the controller denominator is zero",
+           fname);
+  endif
+  den = den(k:end);
+  k = find (num != 0, 1);
+  if (isempty (k))
+    num = 0;
+  else
+    num = num(k:end);
+  endif
+  if (numel (num) > numel (den))
+    error ([fname ":badInput"], "%s: the controller must be proper", fname);
+  endif
+endfunction
+
+## CONTSID's positional T0: the first sample used; only 1 (all samples).
+function positional (fname, vals, names)
+  if (! isempty (vals) && ! isempty (vals{1}))
+    T0 = vals{1};
+    if (! isnumeric (T0) || ! isscalar (T0) || ! isreal (T0) || T0 != 1)
+      error ([fname ":notSupported"],
+             "%s: T0 must be 1 (estimation on the whole record)", fname);
+    endif
+  endif
+endfunction
+
+function opts = read_options (fname, args, names, defaults)
+  opts = cell2struct (defaults(:), names(:), 1);
+  if (mod (numel (args), 2) != 0)
+    error ([fname ":badInput"], "%s: options must be name-value pairs",
+           fname);
+  endif
+  for i = 1:2:numel (args)
+    if (! ischar (args{i}))
+      error ([fname ":badInput"], "%s: option names must be strings", fname);
+    endif
+    k = find (strcmpi (args{i}, names));
+    if (isempty (k))
+      error ([fname ":badOption"], "%s: unknown option '%s'", fname,
+             args{i});
+    endif
+    opts.(names{k}) = args{i+1};
+  endfor
+endfunction
+
+function e = engine_options (fname, opts, d)
+  e = struct ();
+  if (! isnumeric (opts.Tol) || ! isscalar (opts.Tol) || ! isreal (opts.Tol)
+      || ! (opts.Tol > 0) || ! isfinite (opts.Tol))
+    error ([fname ":badOption"], "%s: Tol must be a finite scalar > 0",
+           fname);
+  endif
+  if (! isnumeric (opts.MaxIter) || ! isscalar (opts.MaxIter)
+      || ! isreal (opts.MaxIter) || opts.MaxIter < 1
+      || opts.MaxIter != fix (opts.MaxIter) || opts.MaxIter > 1e6)
+    error ([fname ":badOption"], "%s: MaxIter must be an integer >= 1",
+           fname);
+  endif
+  e.tol = double (opts.Tol);
+  e.maxiter = double (opts.MaxIter);
+  if (isfield (opts, "ArmaMaxIter"))
+    a = opts.ArmaMaxIter;
+    if (! isnumeric (a) || ! isscalar (a) || ! isreal (a) || a < 0
+        || a != fix (a) || a > 1e6)
+      error ([fname ":badOption"],
+             "%s: ArmaMaxIter must be an integer >= 0", fname);
+    endif
+    e.arma_maxiter = double (a);
+  endif
+  if (isfield (opts, "ArmaMethod"))
+    m = opts.ArmaMethod;
+    if (! ischar (m) || ! any (strcmpi (m, {"pem", "ivarma"})))
+      error ([fname ":badOption"],
+             "%s: ArmaMethod must be 'pem' or 'ivarma'", fname);
+    endif
+    if (strcmpi (m, "ivarma"))
+      error ([fname ":notSupported"],
+             ["%s: ArmaMethod 'ivarma' is not implemented; 'pem' ", ...
+              "(Hannan-Rissanen + Gauss-Newton) is"], fname);
+    endif
+  endif
+  lam = opts.lambda;
+  if (! isempty (lam))
+    if (! isnumeric (lam) || ! isreal (lam) || ! isscalar (lam)
+        || ! isfinite (lam) || lam <= 0)
+      error ([fname ":badOption"], "%s: lambda must be a finite scalar > 0",
+             fname);
+    endif
+    e.cutoffs = double (lam);
+  endif
+  e.intersample = double (strcmpi (d.intersample, "foh"));
+endfunction
+
+function e = init_option (fname, init, e, theta_init)
+  if (! isempty (theta_init))
+    e.theta_init = theta_init;
+  endif
+  if (ischar (init))
+    if (! any (strcmpi (init, {"srivc", "sriv"})))
+      error ([fname ":notSupported"],
+             ["%s: InitMethod '%s' is not supported ('srivc', an ", ...
+              "idpoly or [f b])"], fname, init);
+    endif
+    return;
+  endif
+  if (isa (init, "idpoly"))
+    F = init.F;
+    B = init.B;
+    if (iscell (F) || iscell (B))
+      error ([fname ":badOption"], "%s: InitMethod: one input only", fname);
+    endif
+    init = [F(2:end) / F(1), B / F(1)];
+  endif
+  np = e.nf + e.nb;
+  if (! isnumeric (init) || ! isreal (init) || numel (init) != np
+      || any (! isfinite (init(:))))
+    error ([fname ":badOption"],
+           "%s: InitMethod must be 'srivc', an idpoly or %d values [f b]",
+           fname, np);
+  endif
+  e.theta_init = double (init(:).');
+endfunction
+
+function [theta, cov, info] = call_mex (fname, d, r, e)
+  if (isfield (e, "theta_init"))
+    e.theta_init = e.theta_init(:);
+    np = e.nf + e.nb;
+    if (numel (e.theta_init) != np)
+      error ([fname ":badInput"], "%s: the initial model needs %d values",
+             fname, np);
+    endif
+    if (any (real (roots ([1; e.theta_init(1:e.nf)])) >= 0))
+      error ([fname ":badInput"], "%s: the initial model must be stable",
+             fname);
+    endif
+  endif
+  [theta, cov, info] = rivc_mex (fname, double (d.y), double (d.u),
+                                 double (d.Ts), r, e);
+  if (! info.converged)
+    warning ([fname ":notConverged"],
+             "%s: no convergence (%s); the last iterate is returned", fname,
+             info.reason);
+  endif
+endfunction
+
+function info = derived (info, d, theta, cov)
+  n = rows (d.y);
+  np = numel (theta);
+  vy = var (d.y, 1);
+  sim_err = d.y - info.simulated;
+  info.RT2 = 1 - mean (sim_err .^ 2) / vy;
+  s2 = max (info.noise_variance, eps * vy);
+  th = theta(:);
+  info.YIC = log (mean (sim_err .^ 2) / vy) ...
+             + log (mean (diag (cov) ./ th .^ 2));
+  nparam = np + max (numel (info.C) - 1, 0) + max (numel (info.D) - 1, 0);
+  info.AIC = log (s2) + 2 * nparam / n;
+endfunction
+
+function F = fit_struct (info, d, np)
+  n = rows (d.y);
+  e = d.y - info.simulated;
+  mse = mean (e .^ 2);
+  F = struct ("MSE", mse, "LossFcn", info.noise_variance,
+              "FitPercent", 100 * (1 - norm (e) / norm (d.y - mean (d.y))),
+              "FPE", info.noise_variance * (1 + np / n) / (1 - np / n));
+endfunction
+
+## The continuous plant as an idpoly (idctm) with the covariance of [f b],
+## the noise model in Report.NoiseModel (C, D in q^-1 at Ts).
+function M = plant_model (fname, theta, cov, info, d, e)
+  nf = e.nf;
+  F = [1, theta(1:nf).'];
+  B = theta(nf+1:end).';
+  report = struct ();
+  report.Fit = fit_struct (info, d, numel (theta));
+  report.DataUsed = struct ("Length", rows (d.y), "Ts", d.Ts);
+  report.Parameters.NoiseModel = struct ("C", info.C, "D", info.D,
+                              "NoiseVariance", info.noise_variance,
+                              "Ts", d.Ts);
+  report.Termination = struct ("Iterations", info.iterations,
+                               "Converged", info.converged,
+                               "Reason", info.reason);
+  M = idctm (struct ("B", B, "F", F, "nk", e.nk, "Ts", d.Ts,
+                     "InterSample", d.intersample, "covariance", cov,
+                     "noise_variance", info.noise_variance, "method", fname,
+                     "iterations", info.iterations,
+                     "converged", info.converged, "Report", report));
+endfunction

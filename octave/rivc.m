@@ -1,0 +1,151 @@
+## -*- texinfo -*-
+## @deftypefn  {} {[@var{M}, @var{C}, @var{D}] =} rivc (@var{data}, [@var{nb} @var{nc} @var{nd} @var{nf} @var{nk}])
+## @deftypefnx {} {[@var{M}, @var{C}, @var{D}, @var{RT2}, @var{YIC}, @var{Cond_IPM}, @var{AIC}] =} rivc (@dots{})
+## @deftypefnx {} {@dots{} =} rivc (@var{data}, @var{Mi})
+## @deftypefnx {} {@dots{} =} rivc (@dots{}, @var{name}, @var{value}, @dots{})
+## Refined instrumental-variable estimate (RIVC, Young and Garnier) of the
+## hybrid Box-Jenkins model
+## @example
+## y(t_k) = B(p)/F(p) u(t_k - nk Ts) + C(q^-1)/D(q^-1) e(t_k)
+## @end example
+## a continuous-time plant with a discrete-time ARMA noise model.
+##
+## Each iteration (core/include/ctid/refined_iv_bj.hpp) simulates the
+## auxiliary model x_hat = B/F u, fits an ARMA model D xi = C e to the
+## noise estimate xi = y - x_hat (Hannan-Rissanen, then Gauss-Newton
+## prediction-error steps), and solves the IV equations of thesis
+## eqs. 2.10-2.12 with the hybrid prefilter: 1/F(p) in continuous time
+## (exact ZOH/FOH filters), then D/C on the samples (eq. 2.9 with the
+## Box-Jenkins optimal prefilter). The start is SRIVC (eqs. 2.8-2.13).
+## With nc = nd = 0 this is SRIVC.
+##
+## @var{data}: an @code{iddata} (one output, one input, regular sampling,
+## InterSample 'zoh' or 'foh'). Orders: B has nb parameters (1 <= nb <=
+## nf + 1), F order nf, C order nc, D order nd, delay nk samples.
+## @var{Mi}: an @code{idpoly} whose B, C, D, F give the orders and whose
+## B, F start the iterations.
+##
+## Options: @code{lambda} (SVF cut-off of the SRIVC start, rad/s),
+## @code{Tol} (1e-6, relative parameter change), @code{MaxIter} (30),
+## @code{InitMethod} ('srivc', an @code{idpoly} or [f b]),
+## @code{ArmaMethod} ('pem'; CONTSID's 'ivarma' is not implemented),
+## @code{ArmaMaxIter} (50).
+##
+## @var{M}: a continuous-time @code{idpoly} B/F with the covariance of
+## [f b], sigma_e^2 (sum zeta_f zeta_f')^-1 (eq. 2.13 with the innovation
+## variance sigma_e^2 of the noise model), @code{Report.NoiseModel}
+## (C, D, NoiseVariance, Ts) and @code{Report.Fit}. @var{C}, @var{D}:
+## the noise polynomials in q^-1 (rows [1 c1 ..], [1 d1 ..]). @var{RT2}:
+## 1 - var(y - x_hat)/var(y); @var{YIC}; @var{Cond_IPM}: the condition
+## number of the instrumental product matrix; @var{AIC}:
+## log(sigma_e^2) + 2 (nb + nf + nc + nd)/N. A run that does not
+## converge warns @code{rivc:notConverged} and returns the last iterate.
+##
+## @strong{Example}
+## @example
+## pkg load control
+## Ts = 0.05; u = kron (sign (randn (400, 1)), ones (10, 1));
+## x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u);
+## v = filter ([1 0.5], [1 -0.9], 0.3 * randn (4000, 1));
+## [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0])
+## @end example
+## @seealso{srivc, tfrivc, clrivc, cl2srivc}
+## @end deftypefn
+
+function [M, C, varargout] = rivc (varargin)
+  contsid_nargchk ("rivc", nargin, nargout, [2 Inf], 7);
+  [M, info] = contsid_rivc ("rivc", varargin);
+  C = info.C;
+  out = {info.D, info.RT2, info.YIC, info.condition, info.AIC};
+  varargout = out(1:max (nargout - 2, 0));
+endfunction
+
+%!shared u, x, Ts, N, G
+%! pkg load control
+%! Ts = 0.05; N = 3000; randn ("state", 11);
+%! u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! G = c2d (tf ([1.5 4], [1 1.2 4]), Ts);
+%! x = lsim (G, u);
+
+%!test  # noise-free: exact, with any ARMA orders
+%! [M, C, D, RT2] = rivc (iddata (x, u, Ts), [2 1 2 2 0], "Tol", 1e-10);
+%! assert (M.theta, [1.2 4 1.5 4], 1e-8);
+%! assert (size (C), [1 2]);
+%! assert (size (D), [1 3]);
+%! assert (RT2, 1, 1e-10);
+%! assert (size (M.covariance), [4 4]);
+
+%!test  # nc = nd = 0: RIVC's iteration is SRIVC's; same fixed point
+%! randn ("state", 3);
+%! y = x + 0.1 * randn (N, 1);
+%! Ms = srivc (iddata (y, u, Ts), [2 2 0], "Tol", 1e-12, "MaxIter", 200);
+%! M = rivc (iddata (y, u, Ts), [2 0 0 2 0], "InitMethod", Ms, "Tol", 1e-10);
+%! assert (M.theta, Ms.theta, 1e-6 * norm (Ms.theta));
+%! M2 = rivc (iddata (y, u, Ts), [2 0 0 2 0]);
+%! assert (M2.theta, Ms.theta, 1e-4 * norm (Ms.theta));
+
+%!test  # the noise model of coloured noise, and the model-in form
+%! randn ("state", 5);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0]);
+%! assert (D(2), -0.9, 0.05);
+%! assert (C(2), 0.5, 0.1);
+%! sd = sqrt (diag (M.covariance)).';
+%! assert (all (abs (M.theta - [1.2 4 1.5 4]) < 4 * sd));
+%! Mi = idpoly (1, [1.5 4], [1 0], [1 0], [1 1.2 4], 1, 0);
+%! M2 = rivc (iddata (x + v, u, Ts), Mi);
+%! assert (M2.theta, M.theta, 1e-4 * norm (M.theta));
+
+%!test  # delay in samples
+%! xd = lsim (G, [zeros(3, 1); u(1:end-3)]);
+%! M = rivc (iddata (xd, u, Ts), [2 1 1 2 3], "Tol", 1e-10);
+%! assert (M.theta, [1.2 4 1.5 4], 1e-8);
+
+%!test  # a small Monte Carlo: spread vs reported sd (20 runs; the full
+%! # check is bench/rivc_mc.m)
+%! randn ("state", 9);
+%! R = 20; T = zeros (R, 4); S = T;
+%! for i = 1:R
+%!   v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%!   M = rivc (iddata (x + v, u, Ts), [2 1 1 2 0]);
+%!   T(i, :) = M.theta; S(i, :) = sqrt (diag (M.covariance)).';
+%! endfor
+%! ratio = std (T) ./ mean (S);
+%! ## 20 runs: the sample sd has a relative sd of ~16 %.
+%! assert (all (ratio > 0.6 & ratio < 1.6), sprintf ("%g ", ratio));
+
+%!warning <no convergence>
+%! rivc (iddata (x + 0.1 * randn (N, 1), u, Ts), [2 1 1 2 0], "MaxIter", 1,
+%!       "Tol", 1e-15);
+
+%!error id=rivc:badInput rivc (iddata (x, u, Ts))
+%!error id=rivc:badInput rivc ()
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 -1])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [4 1 1 2 0])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 N])
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "Bogus", 1)
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], "Tol")
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], 3, 1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "Tol", -1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "MaxIter", 0.5)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "lambda", -1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMaxIter", -1)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", "xx")
+%!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", "ivarma")
+%!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", "lssvf")
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [1 2])
+%!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [-1 4 1 1])
+%!error id=rivc:notSupported rivc (iddata (x, [u u], Ts), [2 1 1 2 0])
+%!error id=rivc:notSupported rivc (iddata (x(1:50), u(1:50), "SamplingInstants", cumsum (0.01 + rand (50, 1) / 100)), [2 1 1 2 0])
+%!error id=rivc:badInput rivc (iddata (x(1:40), u(1:40), Ts), [2 1 1 2 0])
+%!error id=rivc:numericalFailure rivc (iddata (x, zeros (N, 1), Ts), [2 1 1 2 0])
+
+%!demo
+%! ## RIVC against SRIVC on coloured noise (Monte Carlo: bench/rivc_mc.m)
+%! pkg load control
+%! Ts = 0.05; N = 3000; u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0])
+%! Ms = srivc (iddata (x + v, u, Ts), [2 2 0])
