@@ -21,8 +21,9 @@
 ## fit (alpha_1 = 1), beta_j from least squares against [1 f]. The x^j are
 ## the model's noise-free x_hat = g^-1(B/F f(u)) (real root nearest the
 ## previous sample), y in the first pass; iterated until the separated
-## parameters stop changing. Options @code{"Tol"} (1e-6), @code{"MaxIter"}
-## (30), @code{"lambda"}.
+## parameters stop changing; the Wiener step is halved (the noise makes the
+## plain fixed-point iteration overshoot). Options @code{"Tol"} (1e-6),
+## @code{"MaxIter"} (100), @code{"lambda"}.
 ##
 ## Outputs: @var{model}, the linear part B/F (@code{idpoly}, covariance of
 ## [f b], @code{Report.Fit} of @var{yhat}); @var{Infos} with @code{NL_H}

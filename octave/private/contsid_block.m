@@ -62,6 +62,9 @@ function [M, Infos, yhat] = contsid_block (fname, args)
     error ([fname ":badInput"], "%s: a basis column of the input is zero",
            fname);
   endif
+  if (strcmp (fname, "hwsrivc"))
+    o.maxiter = 100;      # the damped Wiener fixed point converges slowly
+  endif
   o.intersample = double (strcmpi (d.intersample, "foh"));
   read_options ();
   if (d.uniform)

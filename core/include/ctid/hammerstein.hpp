@@ -467,6 +467,9 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
     const S change =
         sep.size() > 0 ? (next - sep).norm() / std::max(next.norm(), S(1e-300))
                        : std::numeric_limits<S>::infinity();
+    // The Wiener pass is a fixed-point iteration on x_hat that overshoots
+    // with noise: half steps (the fixed point is unchanged).
+    if (wiener && sep.size() > 0) next = sep + S(0.5) * (next - sep);
     sep = next;
     status = simulate(sep);
     if (!status.ok()) return status;
