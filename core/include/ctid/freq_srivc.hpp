@@ -166,7 +166,8 @@ Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
   return Status::Ok();
 }
 
-// Output error E_k = Y_k - G U_k and its stacked Jacobian in [a' b' td'].
+// Output error E_k = Y_k - G U_k (td in time units) and its stacked
+// Jacobian in [a' b' td'], td' = sigma td.
 template <typename S>
 S residual(const Scaled<S>& p, const Vector<S>& theta, S td, bool jac,
            Vector<S>& r, Matrix<S>* J) {
@@ -216,7 +217,7 @@ bool stabilise(int n, Vector<S>& theta) {
   return true;
 }
 
-// SRIVC at the fixed scaled delay td'. theta' in/out (empty: LS start).
+// SRIVC at the fixed delay td. theta' in/out (empty: LS start).
 template <typename S>
 Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings, S td,
                    Vector<S>& theta, int& iterations, bool& converged,
@@ -333,7 +334,7 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   auto srivc_at = [&](S td, Vector<S>& theta, int& its, bool& conv,
                       S& cost) -> Status {
     theta = start;
-    return srivc_fixed(p, settings, td * p.sigma, theta, its, conv, cost);
+    return srivc_fixed(p, settings, td, theta, its, conv, cost);
   };
 
   Vector<S> theta;
@@ -414,8 +415,7 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
     if (settings.estimate_delay) x(n + m) = td * p.sigma;
     Vector<S> r;
     Matrix<S> J;
-    S f = residual(p, theta, x.size() > n + m ? x(n + m) : td * p.sigma,
-                   true, r, &J);
+    S f = residual(p, theta, td, true, r, &J);
     S mu = S(1e-3);
     bool done = false;
     int it = 0;
@@ -440,8 +440,9 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
         }
         Vector<S> rn;
         Matrix<S> Jn;
-        const S fn = residual(p, th, settings.estimate_delay ? xn(n + m)
-                                                             : td * p.sigma,
+        const S fn = residual(p, th, settings.estimate_delay
+                                         ? xn(n + m) / p.sigma
+                                         : td,
                               true, rn, &Jn);
         if (fn < f) {
           const S rel = (xn - x).norm() / std::max(xn.norm(), S(1e-300));
@@ -473,7 +474,7 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   // Covariance in scaled units, mapped back.
   Vector<S> r;
   Matrix<S> J;
-  cost = residual(p, theta, td * p.sigma, true, r, &J);
+  cost = residual(p, theta, td, true, r, &J);
   const int q = settings.estimate_delay ? n + m + 1 : n + m;
   const Matrix<S> Jq = J.leftCols(q);
   const S dof = std::max(S(1), S(2 * K - q));
