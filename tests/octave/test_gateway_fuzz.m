@@ -109,6 +109,22 @@ function test_gateway_fuzz ()
      [loop_required, {"method", "lambda_svf", "adg"}]}
   };
 
+  ## The block-oriented (Hammerstein) and frequency-domain gateways.
+  yh = filter ([0 0.05], [1 -1.6 0.7], u + 0.5 * u .^ 2);
+  hopts = struct ("model", "hsrivc", "nb", 1, "nf", 2, "nk", 0, "nc", 0,
+                  "nd", 0, "nw", 1, "intersample", 0, "y_intersample", 1,
+                  "tol", 1e-6, "maxiter", 3, "cutoffs", []);
+  wf = logspace (-1, 1, 20)';
+  Gf = 4 ./ ((1i * wf) .^ 2 + 2 * 1i * wf + 4) .* exp (-0.2i * wf);
+  fopts = struct ("na", 2, "nb", 1, "tol", 1e-8, "maxiter", 20,
+                  "delay", 0, "estimate_delay", true, "td_min", 0,
+                  "td_max", 1, "num_td", 5, "grid", true,
+                  "output_error", true, "theta_init", []);
+  calls(end+1:end+2) = {
+    {"hammerstein_mex", {"hsrivc", yh, [u u.^2], 0.1, hopts}, {"nb", "nf"}}
+    {"freq_srivc_mex", {"tffcoe", wf, Gf, [], fopts}, {"na", "nb"}}
+  };
+
   ncalls = 0;
   for c = 1:numel (calls)
     [name, base, required] = calls{c}{:};

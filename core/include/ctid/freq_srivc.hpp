@@ -270,9 +270,9 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
     return bad_input("orders must be np >= 1 and 0 <= nz <= np");
   }
   if (settings.max_iterations < 1 || !(settings.tolerance > 0) ||
-      settings.num_td < 2) {
+      settings.num_td < 2 || settings.num_td > 100000) {
     return Status(ErrorCode::kBadOption,
-                  "MaxIter must be >= 1, Tol > 0 and NumTd >= 2");
+                  "MaxIter must be >= 1, Tol > 0 and 2 <= NumTd <= 1e5");
   }
   const Eigen::Index K = data.num_frequencies;
   if (data.w == nullptr || data.y == nullptr || K < 1) {

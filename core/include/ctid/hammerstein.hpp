@@ -353,6 +353,9 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
   if (o.nf < 1 || o.nb < 1 || o.nk < 0 || o.nc < 0 || o.nd < 0 || o.nw < 1) {
     return bad_input("orders must be nf >= 1, nb >= 1, nk, nc, nd >= 0");
   }
+  if (o.nw > 20 || l > 20) {
+    return bad_input("at most 20 terms in each nonlinearity");
+  }
   if (o.nb > o.nf + 1) {
     return bad_input("nb must not exceed nf + 1 (proper B/A)");
   }
