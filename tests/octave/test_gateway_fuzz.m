@@ -14,7 +14,7 @@ function test_gateway_fuzz ()
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
   gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex", ...
-              "qnml_mex", "throttle_mex", "hammerstein_mex",
+              "qnml_mex", "throttle_mex", "hammerstein_mex", ...
               "freq_srivc_mex"};
   for i = 1:numel (gateways)
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
