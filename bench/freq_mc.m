@@ -24,9 +24,10 @@ function R = freq_mc (runs)
   G1 = (2 * s + 6) ./ (s.^2 + 1.5 * s + 9);
   G2 = (0.5 * s + 4) ./ (s.^2 + 1.2 * s + 4) .* exp (-0.37 * s);
   noise = @() 0.05 * (randn (50, 1) + 1i * randn (50, 1)) / sqrt (2);
-  R.srivc = mc ("srivc (idfrd)", runs, @() srivc_th (idfrd (G1 + noise (), w, "Ts", 0)));
-  R.tffsrivc = mc ("tffsrivc (idfrd)", runs, @() tf_th (@tffsrivc, idfrd (G2 + noise (), w, "Ts", 0)));
-  R.tffcoe = mc ("tffcoe (idfrd)", runs, @() tf_th (@tffcoe, idfrd (G2 + noise (), w, "Ts", 0)));
+  frd = @(G) idfrd (G + noise (), w, "Ts", 0);
+  R.srivc = mc ("srivc (idfrd)", runs, @() srivc_th (frd (G1)));
+  R.tffsrivc = mc ("tffsrivc (idfrd)", runs, @() tf_th (@tffsrivc, frd (G2)));
+  R.tffcoe = mc ("tffcoe (idfrd)", runs, @() tf_th (@tffcoe, frd (G2)));
 endfunction
 
 function [th, sd] = srivc_th (G)

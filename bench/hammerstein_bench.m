@@ -26,15 +26,22 @@ function T = hammerstein_bench ()
   warning ("off", "all");
   tc = zeros (1, 3); tp = tc;
   for k = 1:3
-    tic; [~, I] = hsrivc (data, [2 2 0], "lambda", lambda, "Tol", 1e-6); tc(k) = toc;
-    tic; [f, b, alpha, it] = hsrivc_plain_octave (y, W, Ts, 2, 2, lambda, 30, 1e-6); tp(k) = toc;
+    tic;
+    [~, I] = hsrivc (data, [2 2 0], "lambda", lambda, "Tol", 1e-6);
+    tc(k) = toc;
+    tic;
+    [f, b, alpha, it] = hsrivc_plain_octave (y, W, Ts, 2, 2, lambda, 30,
+                                             1e-6);
+    tp(k) = toc;
   endfor
   T = struct ("core", median (tc), "plain", median (tp),
               "ratio", median (tp) / median (tc), "core_theta", I.theta.',
               "plain_theta", [f b alpha(2:end)], "core_iter", I.iternum,
               "plain_iter", it);
-  printf ("hsrivc on %d samples: core %.3f s (%d iterations), plain Octave %.3f s (%d iterations), ratio %.1f\n",
+  printf (["hsrivc on %d samples: core %.3f s (%d iterations), plain ", ...
+           "Octave %.3f s (%d iterations), ratio %.1f\n"],
           N, T.core, I.iternum, T.plain, it, T.ratio);
-  printf ("  truth        [1 5 10 30 0.5 0.25]\n  core  theta  %s\n  plain theta  %s\n",
+  printf (["  truth        [1 5 10 30 0.5 0.25]\n  core  theta  %s\n", ...
+           "  plain theta  %s\n"],
           mat2str (T.core_theta, 4), mat2str (T.plain_theta, 4));
 endfunction

@@ -29,8 +29,11 @@ function R = hammerstein_mc (runs)
   truth = [1 5 10 30 0.5 0.25]';
   sig = sqrt (var (ydet) / 10);
   R = struct ();
-  R.hsrivc = run_mc ("hsrivc", runs, truth, @(k) hsrivc (iddata (ydet + sig * randn (N, 1), W, Ts), [2 2 0]));
-  R.hrivc = run_mc ("hrivc", runs, truth, @(k) hrivc (iddata (ydet + filter ([1 0.5], [1 -0.85], 0.5 * sig * randn (N, 1)), W, Ts), [2 1 1 2 0]));
+  R.hsrivc = run_mc ("hsrivc", runs, truth, @(k) hsrivc (
+    iddata (ydet + sig * randn (N, 1), W, Ts), [2 2 0]));
+  arma = @() filter ([1 0.5], [1 -0.85], 0.5 * sig * randn (N, 1));
+  R.hrivc = run_mc ("hrivc", runs, truth, @(k) hrivc (
+    iddata (ydet + arma (), W, Ts), [2 1 1 2 0]));
   Ts2 = 5e-3; N2 = 5000;
   u2 = 0.5 * kron (2 * rand (13, 1) - 1, ones (400, 1));
   u2 = u2(1:N2);
@@ -40,7 +43,9 @@ function R = hammerstein_mc (runs)
   for k = 1:60
     x -= (x + 1.5 * x.^2 + x.^3 - xbar) ./ (1 + 3 * x + 3 * x.^2);
   endfor
-  R.hwsrivc = run_mc ("hwsrivc", max (20, round (runs / 2)), [2 1 -2 0.8 1.5 1]', @(k) hwsrivc_infos (iddata (x + 0.03 * randn (N2, 1), u2, Ts2)));
+  R.hwsrivc = run_mc ("hwsrivc", max (20, round (runs / 2)),
+                      [2 1 -2 0.8 1.5 1]', @(k) hwsrivc_infos (
+                        iddata (x + 0.03 * randn (N2, 1), u2, Ts2)));
 endfunction
 
 function [M, I] = hwsrivc_infos (data)
