@@ -18,8 +18,9 @@
 ## with variance var(y) 10^(-SNR/10) of the noise-free oscillation;
 ## @code{IntSamp} @qcode{"on"} (default: y_k is the mean of y over
 ## (t_(k-1), t_k], integrated sampling) or @qcode{"off"} (y_k = y(t_k)).
-## The plant must be strictly proper and oscillate in the loop, else
-## @code{relay:notConverged}.
+## The plant must be strictly proper and oscillate in the loop: without
+## an upward switch for 2e4 samples, or after 2e5 samples in all, the
+## error is @code{relay:notConverged}.
 ## @seealso{tffsrivc, tffcoe}
 ## @end deftypefn
 
@@ -101,7 +102,9 @@ function [data, varargout] = relay (varargin)
 
   function [y, u] = simulate (sd)
     total = opts.StartCycle + opts.NumCycle;
-    limit = 2e6;
+    ## a budget of samples: at most 2e5, and 2e4 without a switch
+    limit = 2e5;
+    quiet = 2e4;
     x = zeros (n + 1, 1);
     ys = zeros (1024, 1);
     us = zeros (1024, 1);
@@ -112,9 +115,13 @@ function [data, varargout] = relay (varargin)
     k = 0;
     while (numel (edges) < total + 1)
       k++;
-      if (k > limit)
+      last = 0;
+      if (! isempty (edges))
+        last = edges(end);
+      endif
+      if (k > limit || k - last > quiet)
         error ("relay:notConverged", ["relay: no sustained oscillation "
-               "after %d samples"], limit);
+               "(%d samples, %d since the last switch)"], k, k - last);
       endif
       if (intsamp)
         yk = (x(end) - zprev) / Ts;
@@ -180,6 +187,7 @@ endfunction
 %!error id=relay:badOption relay (1, [1 2 1], 0.01, "SNR", NaN)
 %!error id=relay:badOption relay (1, [1 2 1], 0.01, "Bogus", 1)
 %!error id=relay:badInput [a, b] = relay (1, [1 2 1], 0.01)
+%!error id=relay:notConverged relay (1, [1 2 1], 0.01, "Hyst", [5 -5])
 
 %!demo
 %! data = relay (1, [1 2 1], 0.01, "IODelay", 0.5, "SNR", 20);
