@@ -33,9 +33,10 @@
 // regressors are noise-free; the first pass uses y. Iterated to a fixed
 // point of the separated parameters.
 //
-// Covariances: the engine's covariance P of the unstructured products at
-// the final step (eq. 2.13), mapped through the Jacobian G of the
-// separation (central differences): G P G^T.
+// Separation: the rank-one fit starts a minimum-distance fit of the
+// structured parameters to the engine's products, weighted by the inverse
+// of their covariance P (eq. 2.13); the covariance of the separated
+// parameters is (J^T P^-1 J)^-1, J the Jacobian of the structure.
 #pragma once
 
 #include <Eigen/Dense>
@@ -313,25 +314,63 @@ Vector<S> reconstruct(const BlockOrders& o, int l, const Vector<S>& sep) {
   return theta;
 }
 
-// Central-difference Jacobian of the separation at theta.
+// Minimum-distance separation: sep minimising (theta - R(sep))^T P^-1
+// (theta - R(sep)) by Gauss-Newton from the rank-one start, with P the
+// engine's covariance of the unstructured theta; its covariance is
+// (J^T P^-1 J)^-1, J = dR/dsep (the efficient use of the products: an
+// unweighted rank-one fit ignores how well each product is known).
 template <typename S>
-Status separation_jacobian(const BlockOrders& o, int l, const Vector<S>& theta,
-                           Matrix<S>& G) {
-  Vector<S> s0;
-  Status status = separate(o, l, theta, s0);
+Status weighted_separate(const BlockOrders& o, int l, const Vector<S>& theta,
+                         const Matrix<S>& P, Vector<S>& sep, Matrix<S>& cov) {
+  Status status = separate(o, l, theta, sep);
   if (!status.ok()) return status;
-  G.resize(s0.size(), theta.size());
-  for (Eigen::Index k = 0; k < theta.size(); ++k) {
-    const S h = S(1e-6) * std::max(std::abs(theta(k)), theta.norm() * S(1e-3));
-    Vector<S> tp = theta, tm = theta, sp, sm;
-    tp(k) += h;
-    tm(k) -= h;
-    status = separate(o, l, tp, sp);
-    if (!status.ok()) return status;
-    status = separate(o, l, tm, sm);
-    if (!status.ok()) return status;
-    G.col(k) = (sp - sm) / (2 * h);
+  Eigen::CompleteOrthogonalDecomposition<Matrix<S>> cod(P);
+  if (cod.rank() < P.rows()) {
+    return numerical_failure("the covariance of the products is singular");
   }
+  const Matrix<S> W = cod.pseudoInverse();
+  auto jacobian = [&](const Vector<S>& x) {
+    Matrix<S> J(theta.size(), x.size());
+    for (Eigen::Index k = 0; k < x.size(); ++k) {
+      const S h = S(1e-6) * std::max(std::abs(x(k)), x.norm() * S(1e-3));
+      Vector<S> xp = x, xm = x;
+      xp(k) += h;
+      xm(k) -= h;
+      J.col(k) = (reconstruct(o, l, xp) - reconstruct(o, l, xm)) / (2 * h);
+    }
+    return J;
+  };
+  auto loss = [&](const Vector<S>& x) {
+    const Vector<S> r = theta - reconstruct(o, l, x);
+    return S(r.dot(W * r));
+  };
+  S f = loss(sep);
+  for (int it = 0; it < 50; ++it) {
+    const Matrix<S> J = jacobian(sep);
+    const Vector<S> r = theta - reconstruct(o, l, sep);
+    const Matrix<S> H = J.transpose() * W * J;
+    const Vector<S> dx = H.ldlt().solve(Vector<S>(J.transpose() * W * r));
+    S step = 1;
+    bool moved = false;
+    for (int k = 0; k < 20; ++k, step /= 2) {
+      const Vector<S> x = sep + step * dx;
+      const S fx = loss(x);
+      if (fx < f) {
+        sep = x;
+        f = fx;
+        moved = true;
+        break;
+      }
+    }
+    if (!moved || step * dx.norm() <= S(1e-12) * (S(1) + sep.norm())) break;
+  }
+  const Matrix<S> J = jacobian(sep);
+  const Matrix<S> H = J.transpose() * W * J;
+  Eigen::CompleteOrthogonalDecomposition<Matrix<S>> hcod(H);
+  if (hcod.rank() < H.rows()) {
+    return numerical_failure("the separated parameters are not identifiable");
+  }
+  cov = hcod.pseudoInverse();
   return Status::Ok();
 }
 
@@ -408,6 +447,7 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
   riv.cutoffs = settings.cutoffs;
   RivResult<S> step;
   Vector<S> sep, theta;
+  Matrix<S> sep_cov;
   Status status;
   bool converged = false;
   int iterations = 0;
@@ -463,8 +503,11 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
       break;
     }
     Vector<S> next;
-    status = separate(ow, l, step.theta, next);
+    Matrix<S> next_cov;
+    status = weighted_separate(ow, l, step.theta, step.covariance, next,
+                               next_cov);
     if (!status.ok()) return status;
+    sep_cov = next_cov;
     theta = step.theta;
     iterations = it;
     const S change =
@@ -487,11 +530,7 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
     }
   }
 
-  Matrix<S> G;
-  status = separation_jacobian(ow, l, theta, G);
-  if (!status.ok()) return status;
-  const Matrix<S> P = step.covariance;
-  result->covariance = G * P * G.transpose();
+  result->covariance = sep_cov;
   // MISO form: the structured products and their covariance through the
   // Jacobian of reconstruct at sep.
   Vector<S> full = reconstruct(ow, l, sep);
