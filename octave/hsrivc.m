@@ -16,12 +16,14 @@
 ## Algorithm: the model is linear in the products alpha_i b, a MISO model
 ## whose inputs share F, estimated by SRIVC (thesis eqs. 2.8-2.13, the
 ## engine of @code{srivc}); each iteration then takes one refined-IV step
-## from the structured model and separates alpha and b by the best
-## rank-one approximation of the matrix of products (its leading singular
-## pair), until the separated parameters stop changing (relative change
-## < @var{tol}, default 1e-6; at most @var{maxiter} = 30 iterations).
-## The covariance of the separated parameters is that of the products
-## (eq. 2.13) through the Jacobian of the separation.
+## from the structured model and separates alpha and b: the best rank-one
+## approximation of the matrix of products (its leading singular pair)
+## starts a minimum-distance fit of the structure to the products,
+## weighted by the inverse of their covariance P (eq. 2.13), until the
+## separated parameters stop changing (relative change < @var{tol},
+## default 1e-6; at most @var{maxiter} = 30 iterations). Their covariance
+## is (J' P^-1 J)^-1, J the Jacobian of the products in the separated
+## parameters.
 ##
 ## Options (positional as CONTSID, [] for a default, or name-value):
 ## @var{lambda0} / @code{"lambda"} the SVF cut-off of the IVSVF start

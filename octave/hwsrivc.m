@@ -17,8 +17,10 @@
 ## Algorithm: g(x) = B/F f(u) gives y = B/F f(u) - sum_j beta_j x^j + e,
 ## linear in the products alpha_i b and beta_j [1 f]: the refined-IV engine
 ## (thesis eqs. 2.8-2.13) estimates them with the channels u^i and x^j
-## (x^j with numerator -beta_j F(p)); alpha, b come from the best rank-one
-## fit (alpha_1 = 1), beta_j from least squares against [1 f]. The x^j are
+## (x^j with numerator -beta_j F(p)); alpha, b (alpha_1 = 1) and beta
+## from a fit of the structure to the products weighted by their inverse
+## covariance (started from the rank-one fit and least squares of each
+## -beta_j F against [1 f]), as @code{hsrivc}. The x^j are
 ## the model's noise-free x_hat = g^-1(B/F f(u)) (real root nearest the
 ## previous sample), y in the first pass; iterated until the separated
 ## parameters stop changing; the Wiener step is halved (the noise makes the

@@ -10,9 +10,10 @@
 // linear in the products beta_i = alpha_i b: a MISO model whose inputs f_i
 // share the denominator A. Each iteration takes one refined-IV step of the
 // engine from the structured model (prefilter 1/A, auxiliary model B/A
-// f(u)) and separates the products by the best rank-one approximation of
+// f(u)) and separates the products: the best rank-one approximation of
 // the matrix [beta_1; ..; beta_l] = alpha b^T (its leading singular pair,
-// Bai 1998), normalised so that alpha_1 = 1.
+// Bai 1998, normalised so that alpha_1 = 1) starts a minimum-distance fit
+// of the structure weighted by the products' inverse covariance.
 //
 // HRIVC adds a discrete-time ARMA noise v = C(q^-1)/D(q^-1) e: the data
 // (y and every f_i(u), ZOH) are prefiltered by D/C, which commutes with the
