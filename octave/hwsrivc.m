@@ -33,7 +33,9 @@
 ## 1), @code{NL_H_sd}, @code{NL_W_sd}, @code{theta} = [f b alpha(2:end)
 ## beta(2:end)]', @code{covariance}, @code{sd}, @code{InfoCriterion},
 ## @code{Cond_IPM}, @code{iternum}, @code{converged}, @code{reason};
-## @var{yhat} the simulated output x_hat.
+## @var{yhat} the simulated output x_hat. Caution: in a Monte Carlo
+## (@file{bench/hammerstein_mc.m}) the spread of the estimates was 0.5-0.75
+## of the reported sd: the covariance is conservative.
 ## @seealso{hsrivc, hrivc}
 ## @end deftypefn
 
