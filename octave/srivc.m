@@ -13,6 +13,10 @@
 ## (3m entries) gives each input its own denominator F_j ('Different'
 ## denominators, CONTSID 7.3's default): y = sum_j B_j/F_j u_j, estimated
 ## by refined IV steps on each input in turn (backfitting).
+## On frequency data (an @code{idfrd} with Ts = 0, or frequency-domain
+## @code{iddata} [Y U] with Ts = 0), @var{nn} = [nb nf] and SRIVC runs in
+## the frequency domain (prefilter 1/F(jw), see @code{tffsrivc});
+## @var{RT2} and @var{YIC} are then empty.
 ## Options:
 ## @table @code
 ## @item Tol, MaxIter
@@ -68,6 +72,12 @@
 
 function [M, RT2, YIC, info, varargout] = srivc (varargin)
   contsid_nargchk ("srivc", nargin, nargout, [0 Inf], 4);
+  if (nargin > 0 && (isa (varargin{1}, "idfrd") || (isa (varargin{1},
+      "iddata") && strcmp (get (varargin{1}, "Domain"), "Frequency"))))
+    [M, info] = contsid_freq ("srivc", varargin);   # frequency domain
+    [RT2, YIC] = deal ([]);
+    return;
+  endif
   [M, RT2, YIC, info] = contsid_offline ("srivc", varargin);
 endfunction
 
@@ -150,6 +160,14 @@ endfunction
 %!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "MaxStarts", 0)
 %!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "OutputOffset", "yes")
 %!error id=srivc:badInput srivc (iddata (x, [u u], Ts), [1 1 0 3 0 0])
+
+%!test  # frequency domain: exact frequency response (idfrd), exact model
+%! w = logspace (-1, 2, 40);
+%! G = idfrd (freqresp (idctm ([2 6], [1 1.5 9]), w), w, "Ts", 0);
+%! M = srivc (G, [2 2]);
+%! assert (M.F, [1 1.5 9], 1e-9);
+%! assert (M.B, [2 6], 1e-9);
+%!error id=srivc:badInput srivc (idfrd (ones (1, 5), 1:5, "Ts", 0), [2 2 0 1])
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

@@ -1,0 +1,122 @@
+// MEX gateway of the frequency-domain estimators (core/include/ctid/
+// freq_srivc.hpp), called by octave/private/contsid_freq.m:
+//
+//   [theta, cov, info] = freq_srivc_mex (fname, w, Y, U, opts)
+//
+// w K-by-1 frequencies (rad/s, >= 0); Y K-by-1 complex output (or the
+// frequency response); U K-by-1 complex input, or [] (U = 1). opts fields:
+// na, nb (required), tol, maxiter, delay, estimate_delay, td_min, td_max,
+// num_td, grid, output_error, theta_init ([a b]). theta = [a; b] or
+// [a; b; td] (estimate_delay); cov its covariance; info: delay,
+// noise_variance, loss, iterations, converged, stable, reason.
+#include <algorithm>
+#include <complex>
+#include <vector>
+
+#include "ctid/freq_srivc.hpp"
+#include "gateway_common.hpp"
+#include "options_reader.hpp"
+
+namespace {
+
+using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
+
+std::vector<std::complex<double>> complex_column(const Gateway& g,
+                                                 const mxArray* a,
+                                                 const char* name, long n) {
+  if (!mxIsDouble(a) || mxIsSparse(a) ||
+      mxGetNumberOfElements(a) != static_cast<size_t>(n) ||
+      (mxGetM(a) != 1 && mxGetN(a) != 1)) {
+    g.fail("badInput", std::string(name) + " must be a double vector of " +
+                           std::to_string(n) + " values");
+  }
+  std::vector<std::complex<double>> v(n);
+  const double* re = mxGetPr(a);
+  const double* im = mxIsComplex(a) ? mxGetPi(a) : nullptr;
+  for (long k = 0; k < n; ++k) {
+    v[k] = std::complex<double>(re[k], im != nullptr ? im[k] : 0.0);
+  }
+  return v;
+}
+
+void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                  const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments, got " + std::to_string(nrhs));
+  }
+  if (nlhs > 3) g.fail("badInput", "at most 3 outputs");
+  g.require_real_double(prhs[1], "w");
+  const long K = static_cast<long>(mxGetNumberOfElements(prhs[1]));
+  if (K < 1) g.fail("badInput", "w must not be empty");
+  const double* w = g.matrix(prhs[1], "w", K, 1);
+  const std::vector<std::complex<double>> Y =
+      complex_column(g, prhs[2], "Y", K);
+  std::vector<std::complex<double>> U;
+  if (!mxIsEmpty(prhs[3])) U = complex_column(g, prhs[3], "U", K);
+
+  OptionsReader opt(g, prhs[4]);
+  ctid::FreqSettings<double> s;
+  s.na = opt.integer("na");
+  s.nb = opt.integer("nb");
+  s.tolerance = opt.scalar("tol", 1e-8);
+  s.max_iterations = opt.integer("maxiter", 50);
+  s.delay = opt.scalar("delay", 0);
+  s.estimate_delay = opt.flag("estimate_delay", false);
+  s.td_min = opt.scalar("td_min", 0);
+  s.td_max = opt.scalar("td_max", 0);
+  s.num_td = opt.integer("num_td", 50);
+  s.grid = opt.flag("grid", true);
+  s.output_error = opt.flag("output_error", false);
+  const Eigen::MatrixXd init = opt.matrix("theta_init");
+  if (init.size() > 0) {
+    s.theta_init = Eigen::Map<const Eigen::VectorXd>(init.data(), init.size());
+  }
+  opt.finish();
+
+  ctid::FreqData<double> data;
+  data.w = w;
+  data.y = Y.data();
+  data.u = U.empty() ? nullptr : U.data();
+  data.num_frequencies = K;
+  ctid::FreqResult<double> result;
+  const ctid::Status status = ctid::freq_srivc(s, data, &result);
+  if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+
+  const long np = s.na + s.nb + (s.estimate_delay ? 1 : 0);
+  plhs[0] = ctid::mex::make_output_matrix(np, 1);
+  double* th = mxGetPr(plhs[0]);
+  std::copy(result.a.data(), result.a.data() + s.na, th);
+  std::copy(result.b.data(), result.b.data() + s.nb, th + s.na);
+  if (s.estimate_delay) th[s.na + s.nb] = result.delay;
+  if (nlhs >= 2) {
+    plhs[1] = ctid::mex::make_output_matrix(np, np);
+    std::copy(result.covariance.data(), result.covariance.data() + np * np,
+              mxGetPr(plhs[1]));
+  }
+  if (nlhs >= 3) {
+    const char* fields[] = {"delay",      "noise_variance", "loss",
+                            "iterations", "converged",      "stable",
+                            "reason"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 7, fields);
+    mxSetField(info, 0, "delay", mxCreateDoubleScalar(result.delay));
+    mxSetField(info, 0, "noise_variance",
+               mxCreateDoubleScalar(result.noise_variance));
+    mxSetField(info, 0, "loss", mxCreateDoubleScalar(result.loss));
+    mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
+    mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
+    mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
+    mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
+    plhs[2] = info;
+  }
+}
+
+}  // namespace
+
+void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  ctid::mex::run_gateway("srivc", {"srivc", "tffsrivc", "tffcoe"}, nrhs, prhs,
+                         [&](const Gateway& g) {
+                           freq_gateway(g, nlhs, plhs, nrhs, prhs);
+                         });
+}

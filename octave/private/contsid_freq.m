@@ -1,0 +1,336 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{M}, @var{info}] =} contsid_freq (@var{fname}, @var{args})
+## The shared back-end of the frequency-domain estimators (core
+## @file{core/include/ctid/freq_srivc.hpp} through @code{freq_srivc_mex}):
+## @code{srivc} on an @code{idfrd} or frequency-domain @code{iddata}
+## (@var{args} = @{data, nn, name, value, ..@}, an @code{idpoly}), and
+## @code{tffsrivc}/@code{tffcoe} (@var{args} = @{data, np, nz [, IODelay],
+## name, value, ..@} or @{data, Mi, ..@}, an @code{idtf}) on those or on
+## regular time-domain relay-feedback data, whose limit cycle is turned
+## into frequency data first (see @code{tffsrivc}). @var{fname} names the
+## caller in every error identifier.
+## @end deftypefn
+
+function [M, info] = contsid_freq (fname, args)
+  if (numel (args) < 2)
+    error ([fname ":badInput"], "%s: expected the data and the structure",
+           fname);
+  endif
+  data = args{1};
+  opts = struct ("Tol", [], "MaxIter", [], "TdMin", 0, "TdMax", [],
+                 "NumTd", 50, "FixTd", "off", "IntSamp", "on",
+                 "TolPar", [], "TolFun", [], "StepMax", [],
+                 "StepReduction", [], "Lambda", []);
+  o = struct ();
+  theta_init = [];
+  td0 = [];
+  if (strcmp (fname, "srivc"))
+    nn = args{2};
+    if (! isnumeric (nn) || ! isreal (nn) || ! any (numel (nn) == [2 3])
+        || any (nn != round (nn)) || any (nn < 0))
+      error ("srivc:badInput",
+             "srivc: on frequency data nn must be [nb nf] or [nb nf 0]");
+    endif
+    if (numel (nn) == 3 && nn(3) != 0)
+      error ("srivc:notSupported",
+             "srivc: a delay nk on frequency data is not supported");
+    endif
+    [nb, na] = deal (nn(1), nn(2));
+    rest = args(3:end);
+  else
+    if (isa (args{2}, "idtf"))
+      Mi = args{2};
+      [num, den] = tfdata (Mi, "v");
+      num = num(find (num != 0, 1):end);
+      na = numel (den) - 1;
+      nb = max (numel (num), 1);
+      if (all (isfinite ([num(:); den(:)])) && ! isempty (num))
+        theta_init = [den(2:end) / den(1), num / den(1)];
+      endif
+      td0 = get (Mi, "IODelay");
+      rest = args(3:end);
+    else
+      if (numel (args) < 3)
+        error ([fname ":badInput"], "%s: expected data, np and nz", fname);
+      endif
+      [np, nz] = deal (args{2:3});
+      if (! isnumeric (np) || ! isscalar (np) || np != round (np) || np < 1
+          || ! isnumeric (nz) || ! isscalar (nz) || nz != round (nz)
+          || nz < 0 || nz > np)
+        error ([fname ":badInput"],
+               "%s: np must be an integer >= 1 and nz one in 0..np", fname);
+      endif
+      na = double (np);
+      nb = double (nz) + 1;
+      rest = args(4:end);
+      if (! isempty (rest) && isnumeric (rest{1}))
+        td0 = rest{1};
+        rest = rest(2:end);
+        if (! isscalar (td0) || ! isreal (td0) || ! (td0 >= 0)
+            || ! isfinite (td0))
+          error ([fname ":badInput"], "%s: IODelay must be a scalar >= 0",
+                 fname);
+        endif
+      endif
+    endif
+  endif
+  if (na < 1 || nb < 1 || nb > na + 1)
+    error ([fname ":badInput"], ["%s: the orders must be nf >= 1 and "
+           "1 <= nb <= nf + 1"], fname);
+  endif
+  opts = contsid_options (fname, opts, rest);
+  fix_td = onoff (opts.FixTd, "FixTd");
+  intsamp = onoff (opts.IntSamp, "IntSamp");
+
+  [w, Y, U, period, Ts] = frequency_data (data);
+  o.na = na;
+  o.nb = nb;
+  tol = opts.Tol;
+  if (isempty (tol))
+    tol = opts.TolPar;
+  endif
+  if (! isempty (tol))
+    check_positive (tol, "Tol");
+    o.tol = tol;
+  endif
+  if (! isempty (opts.MaxIter))
+    if (! isscalar (opts.MaxIter) || opts.MaxIter < 1
+        || opts.MaxIter != round (opts.MaxIter))
+      error ([fname ":badOption"], "%s: MaxIter must be an integer >= 1",
+             fname);
+    endif
+    o.maxiter = opts.MaxIter;
+  endif
+  if (! isempty (theta_init))
+    o.theta_init = theta_init;
+  endif
+  estimate_td = ! strcmp (fname, "srivc") && ! fix_td;
+  if (fix_td && isempty (td0))
+    error ([fname ":badInput"], "%s: FixTd 'on' needs the IODelay", fname);
+  endif
+  if (! isempty (td0))
+    o.delay = td0;
+  endif
+  if (estimate_td)
+    o.estimate_delay = true;
+    tdmax = opts.TdMax;
+    if (isempty (tdmax))
+      if (isfinite (period))
+        tdmax = period / 2;
+      else
+        tdmax = pi / median (w(w > 0));
+      endif
+    endif
+    check_nonneg (opts.TdMin, "TdMin");
+    check_nonneg (tdmax, "TdMax");
+    if (tdmax < opts.TdMin)
+      error ([fname ":badOption"], "%s: TdMax must be >= TdMin", fname);
+    endif
+    o.td_min = opts.TdMin;
+    o.td_max = tdmax;
+    if (! isscalar (opts.NumTd) || opts.NumTd < 2
+        || opts.NumTd != round (opts.NumTd))
+      error ([fname ":badOption"], "%s: NumTd must be an integer >= 2", fname);
+    endif
+    o.num_td = opts.NumTd;
+    o.grid = isempty (td0);
+    if (! isempty (td0))
+      o.td_min = min (o.td_min, td0);
+      o.td_max = max (o.td_max, td0);
+    endif
+  endif
+  o.output_error = strcmp (fname, "tffcoe");
+
+  [theta, P, info] = freq_srivc_mex (fname, w, Y, U, o);
+  if (! info.converged)
+    warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
+             fname, info.reason);
+  endif
+  a = theta(1:na).';
+  b = theta(na+1:na+nb).';
+  F = [1 a];
+  if (isempty (U))
+    Uc = ones (size (Y));
+  else
+    Uc = U;
+  endif
+  G = polyval (b, 1i * w) ./ polyval (F, 1i * w) .* exp (-1i * w * info.delay);
+  E = Y - G .* Uc;
+  K = numel (w);
+  npar = numel (theta);
+  mse = mean (abs (E) .^ 2);
+  fit = struct ("FitPercent", 100 * (1 - norm (E) / norm (Y)),
+                "LossFcn", mse, "MSE", mse,
+                "FPE", mse * (1 + npar / (2 * K)) / (1 - npar / (2 * K)));
+  info.w = w;
+  info.Y = Y;
+  info.U = U;
+  if (strcmp (fname, "srivc"))
+    report = struct ("Fit", fit, "Method", "srivc (frequency domain)",
+                     "DataUsed", struct ("Length", K, "Domain", "Frequency"));
+    M = idctm (struct ("B", b, "F", F, "nk", 0, "Ts", [],
+                       "covariance", P, "noise_variance",
+                       info.noise_variance, "method", "srivc",
+                       "iterations", info.iterations,
+                       "converged", info.converged, "Report", report));
+    return;
+  endif
+  M = idtf (b, F, "IODelay", info.delay);
+  perm = [na + (1:nb), 1:na];
+  C = P(perm, perm);
+  if (all (isfinite (C(:))))
+    M = setcov (M, C);
+  endif
+  tdsd = 0;
+  if (estimate_td)
+    tdsd = sqrt (P(end, end));
+  endif
+  rep = struct ("Fit", fit,
+                "Parameters", struct ("ParVector", getpvec (M),
+                                      "FreeParCovariance", C,
+                                      "IODelay", info.delay,
+                                      "IODelaySD", tdsd),
+                "Termination", struct ("Iterations", info.iterations,
+                                       "Converged", info.converged,
+                                       "Reason", info.reason),
+                "DataUsed", struct ("Length", K, "Ts", Ts,
+                                    "Harmonics", w));
+  rep.Method = fname;
+  rep.Status = sprintf ("Estimated using %s", upper (fname));
+  M = set (M, "NoiseVariance", info.noise_variance, "Report", rep);
+
+  function v = onoff (v, name)
+    if (islogical (v) || isnumeric (v))
+      v = logical (v);
+    elseif (ischar (v) && any (strcmpi (v, {"on", "off"})))
+      v = strcmpi (v, "on");
+    else
+      error ([fname ":badOption"], "%s: %s must be 'on' or 'off'", fname,
+             name);
+    endif
+  endfunction
+
+  function check_positive (v, name)
+    if (! isnumeric (v) || ! isscalar (v) || ! isreal (v) || ! (v > 0)
+        || ! isfinite (v))
+      error ([fname ":badOption"], "%s: %s must be a scalar > 0", fname, name);
+    endif
+  endfunction
+
+  function check_nonneg (v, name)
+    if (! isnumeric (v) || ! isscalar (v) || ! isreal (v) || ! (v >= 0)
+        || ! isfinite (v))
+      error ([fname ":badOption"], "%s: %s must be a finite scalar >= 0",
+             fname, name);
+    endif
+  endfunction
+
+  ## w, Y, U from an idfrd, frequency-domain iddata, or (tffsrivc/tffcoe)
+  ## regular time-domain data with a periodic (relay) input.
+  function [w, Y, U, period, Ts] = frequency_data (data)
+    period = Inf;
+    Ts = 0;
+    U = [];
+    if (isa (data, "idfrd"))
+      R = get (data, "ResponseData");
+      if (size (R, 1) != 1 || size (R, 2) != 1)
+        error ([fname ":notSupported"], "%s: the idfrd must be SISO", fname);
+      endif
+      w = get (data, "Frequency");
+      Y = R(:);
+      if (get (data, "Ts") != 0)
+        error ([fname ":notSupported"],
+               "%s: the idfrd must be continuous-time (Ts = 0)", fname);
+      endif
+    elseif (isa (data, "iddata") && strcmp (get (data, "Domain"),
+                                             "Frequency"))
+      y = get (data, "OutputData");
+      u = get (data, "InputData");
+      if (columns (y) != 1 || columns (u) != 1)
+        error ([fname ":notSupported"],
+               "%s: the frequency data must have one output and one input",
+               fname);
+      endif
+      if (get (data, "Ts") != 0)
+        error ([fname ":notSupported"], ["%s: set data.Ts = 0 to declare "
+               "the frequencies continuous-time"], fname);
+      endif
+      w = get (data, "Frequency");
+      Y = y;
+      U = u;
+    elseif (! strcmp (fname, "srivc") && isa (data, "iddata"))
+      [w, Y, U, period, Ts] = relay_frequency_data (data);
+    else
+      error ([fname ":badInput"], ...
+             "%s: the data must be an idfrd or frequency-domain iddata%s",
+             fname, ifelse (strcmp (fname, "srivc"), "",
+                            " or regular time-domain iddata"));
+    endif
+    w = double (w(:));
+    Y = double (Y(:));
+    if (! isempty (U))
+      U = double (U(:));
+      keep = abs (U) > 0;
+      w = w(keep); Y = Y(keep); U = U(keep);
+    endif
+    if (any (! isfinite (Y)) || any (! isfinite (U)))
+      error ([fname ":badInput"], "%s: the frequency data must be finite",
+             fname);
+    endif
+  endfunction
+
+  ## The limit cycle of a relay-feedback record as frequency data: the
+  ## record between the first and the last upward switch of u (a whole
+  ## number c of periods), its DFT at the multiples of c (the harmonics of
+  ## the cycle) where u has at least 1 % of its largest harmonic and below
+  ## a quarter of the sampling frequency; U corrected for the hold
+  ## (u is ZOH): U_c = U_d (1 - e^(-jw Ts)) / (jw Ts); with IntSamp 'on'
+  ## (y_k the mean of y over the interval) Y is corrected likewise.
+  function [w, Y, U, period, Ts] = relay_frequency_data (data)
+    Ts = get (data, "Ts");
+    y = get (data, "OutputData");
+    u = get (data, "InputData");
+    if (! isscalar (Ts) || ! (Ts > 0) || columns (y) != 1 || columns (u) != 1)
+      error ([fname ":badInput"], ["%s: time-domain data must be regular "
+             "with one output and one input"], fname);
+    endif
+    level = (max (u) + min (u)) / 2;
+    up = find (u(1:end-1) <= level & u(2:end) > level) + 1;
+    if (numel (up) < 3)
+      error ([fname ":badInput"], ["%s: the input shows fewer than two "
+             "periods of a limit cycle (relay feedback data expected)"],
+             fname);
+    endif
+    idx = up(1):(up(end) - 1);
+    c = numel (up) - 1;
+    n = numel (idx);
+    period = n / c * Ts;
+    Yd = fft (y(idx));
+    Ud = fft (u(idx));
+    r = (c:c:floor (n / 4)).';
+    if (abs (Ud(1)) > 1e-9 * n * max (abs (u)))
+      r = [0; r];
+    endif
+    Yd = Yd(r + 1);
+    Ud = Ud(r + 1);
+    keep = abs (Ud) >= 0.01 * max (abs (Ud));
+    r = r(keep); Yd = Yd(keep); Ud = Ud(keep);
+    w = 2 * pi * r / (n * Ts);
+    h = ones (size (w));
+    nz = w > 0;
+    h(nz) = (1 - exp (-1i * w(nz) * Ts)) ./ (1i * w(nz) * Ts);
+    U = Ud .* h;
+    Y = Yd;
+    if (intsamp)
+      Y = Yd ./ h;
+    endif
+  endfunction
+endfunction
+
+function s = ifelse (c, a, b)
+  if (c)
+    s = a;
+  else
+    s = b;
+  endif
+endfunction
