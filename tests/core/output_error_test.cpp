@@ -123,6 +123,40 @@ TEST(OutputError, ContinuousFractionalDelayIsExact) {
       << r.theta.transpose();
 }
 
+TEST(OutputError, ContinuousDelayIsEstimatedWithinItsBounds) {
+  // The record of the previous test (td = 0.25 s = 2.5 samples); the delay
+  // is estimated from 0.18 s, kept in [0, 0.5].
+  const std::vector<double> coarse = binary_input(600, 6, 5);
+  std::vector<double> fine(2 * coarse.size());
+  for (std::size_t k = 0; k < fine.size(); ++k) fine[k] = coarse[k / 2];
+  std::vector<double> shifted(fine.size(), 0.0);
+  for (std::size_t k = 5; k < fine.size(); ++k) shifted[k] = fine[k - 5];
+  Eigen::VectorXd f(3), b(2);
+  f << 1, 1.4, 2;
+  b << 0.5, 3;
+  const std::vector<double> yf = simulate(f, b, shifted, 0.05, false);
+  std::vector<double> y(coarse.size());
+  for (std::size_t k = 0; k < y.size(); ++k) y[k] = yf[2 * k];
+  OeStructure s;
+  s.nf = 2;
+  s.nb = 2;
+  s.delay = 0.18;
+  s.estimate_delay = true;
+  s.delay_max = 0.5;
+  OeSettings<double> settings;
+  OeResult<double> r;
+  const Status st = output_error(s, settings, make_data(y, coarse, 0.1), &r);
+  ASSERT_TRUE(st.ok()) << st.message();
+  Eigen::VectorXd expected(5);
+  expected << 1.4, 2, 0.5, 3, 0.25;
+  EXPECT_LT(relative_error(r.theta, expected), 1e-7) << r.theta.transpose();
+  EXPECT_EQ(r.covariance.rows(), 5);
+  // A start outside the bounds is refused.
+  s.delay = 0.6;
+  EXPECT_EQ(output_error(s, settings, make_data(y, coarse, 0.1), &r).code(),
+            ErrorCode::kBadInput);
+}
+
 // The model's Jacobian against central differences of its simulation.
 template <typename Fn>
 Eigen::MatrixXd central_differences(const Eigen::VectorXd& theta, Fn&& sim) {
@@ -150,10 +184,12 @@ TEST(OutputError, JacobianMatchesCentralDifferences) {
       s.nk = 1;
       s.rule = rule;
       s.delay = time == OeTime::kContinuous ? 0.013 : 0;
+      s.estimate_delay = time == OeTime::kContinuous;
+      s.nb = time == OeTime::kContinuous ? 1 : 2;
       oe_detail::OeModel<double> model(s, make_data(y, u, 0.05));
       Eigen::Vector4d theta;
       if (time == OeTime::kContinuous) {
-        theta << 1.5, 6, 0.7, 5;
+        theta << 1.5, 6, 5, 0.083;  // f1 f2 b0 td
       } else {
         theta << -1.2, 0.5, 0.3, 0.2;
       }

@@ -4,7 +4,7 @@
 //   continuous time   y(t_k) = B(p)/F(p) u(t - td) |_(t = t_k) + e(t_k),
 //   discrete time     y(k)   = B(q)/F(q) u(k) + e(k),
 //
-// theta = [f_1 .. f_nf, b_0 .. b_(nb-1)] (descending powers of p; in
+// theta = [f_1 .. f_nf, b_0 .. b_(nb-1) (, td)] (descending powers of p; in
 // discrete time F = 1 + f_1 q^-1 + .., B = q^-nk (b_0 + b_1 q^-1 + ..)),
 // minimising V(theta) = 1/N sum_k (y_k - y_hat_k(theta))^2 from rest.
 //
@@ -17,8 +17,10 @@
 //   d y_hat / d f_i = -p^(nf-i) B u / F^2
 // are filtered from u by the same exact rule (one filter 1/F and one
 // 1/F^2 per iteration), so they are the derivatives of the sampled
-// simulation, not approximations. In discrete time the sensitivities are
-// 1/F applied to u and to y_hat, shifted.
+// simulation, not approximations. With the delay td estimated,
+//   d y_hat / d td = -p y_hat = -p B u(t - td) / F
+// (strictly proper models: y_hat is then differentiable in t). In discrete time
+// the sensitivities are 1/F applied to u and to y_hat, shifted.
 //
 // Minimiser: Levenberg-Marquardt (Marquardt's scaled damping) on the
 // equilibrated Jacobian, each damped step solved by QR of [J; sqrt(mu) I],
@@ -63,7 +65,12 @@ struct OeStructure {
   // Continuous time: an extra delay in time units (>= 0) on top of nk.
   double delay = 0;
   InterSample rule = InterSample::kZoh;  // of u (continuous time)
-  int num_parameters() const { return nf + nb; }
+  // Continuous time: estimate the total delay td (time units) as the last
+  // parameter, started from nk Ts + delay and kept in [0, delay_max] (the
+  // bounds of the iteration); needs a strictly proper model (nb <= nf).
+  bool estimate_delay = false;
+  double delay_max = 0;
+  int num_parameters() const { return nf + nb + (estimate_delay ? 1 : 0); }
 };
 
 template <typename S>
@@ -72,6 +79,7 @@ struct OeSettings {
   S tolerance = S(1e-8);            // relative step and relative loss decrease
   S gradient_tolerance = S(1e-10);  // on the scaled gradient, relative
   Vector<S> theta_init;             // empty: SRIVC / ARX start
+  S srivc_cutoff = 0;  // SVF cut-off of SRIVC's start (rad/s); 0: a grid
   S initial_damping = S(1e-3);
 };
 
@@ -188,6 +196,8 @@ class OeModel {
           s.nk * (d.instants == nullptr ? d.ts : clock_.median_interval());
     }
   }
+  // The total delay nk Ts + delay (time units, continuous time).
+  double total_delay() const { return delay_; }
   void set_scale(S sigma) { clock_.sigma = sigma; }
   S sigma() const { return clock_.sigma; }
   Eigen::Index samples() const { return d_.num_samples; }
@@ -199,7 +209,7 @@ class OeModel {
     for (int i = 0; i < s_.nf; ++i) d(i) = std::pow(sigma, S(i + 1));
     for (int k = 0; k < s_.nb; ++k)
       d(s_.nf + k) = std::pow(sigma, S(s_.nf - (s_.nb - 1 - k)));
-    return d;
+    return d;  // td stays in time units
   }
 
   bool stable(const Vector<S>& theta) {
@@ -231,13 +241,20 @@ class OeModel {
   void continuous(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
     const int nf = s_.nf, nb = s_.nb;
     const Vector<S> f = theta.head(nf);
-    const Vector<S> b = theta.tail(nb);
+    const Vector<S> b = theta.segment(nf, nb);
+    if (s_.estimate_delay) delay_ = static_cast<double>(theta(nf + nb));
     filter(f, X_);  // columns p^i u / F, i = 0..nf
     yhat = Vector<S>::Zero(d_.num_samples);
     for (int k = 0; k < nb; ++k) yhat += b(k) * X_.col(nb - 1 - k);
     if (J == nullptr) return;
-    J->resize(d_.num_samples, nf + nb);
+    J->resize(d_.num_samples, s_.num_parameters());
     for (int k = 0; k < nb; ++k) J->col(nf + k) = X_.col(nb - 1 - k);
+    if (s_.estimate_delay) {
+      // -p y_hat in original time: p = sigma p'.
+      auto col = J->col(nf + nb);
+      col.setZero();
+      for (int k = 0; k < nb; ++k) col -= clock_.sigma * b(k) * X_.col(nb - k);
+    }
     filter(polynomial_square<S>(f), X2_);  // p^j u / F^2, j = 0..2 nf
     for (int i = 1; i <= nf; ++i) {
       auto col = J->col(i - 1);
@@ -375,12 +392,18 @@ Status validate(const OeStructure& s, const OeSettings<S>& settings,
     if (s.nf < 1) return bad_input("nf must be >= 1 in continuous time");
     if (s.nb > s.nf + 1)
       return bad_input("the model must be proper (nb <= nf + 1)");
+    if (s.estimate_delay && s.nb > s.nf)
+      return bad_input("estimating the delay needs a strictly proper model");
+    if (s.estimate_delay && !(s.delay_max >= 0 && std::isfinite(s.delay_max)))
+      return bad_input("the delay bound must be finite and >= 0");
     if (!(s.delay >= 0) || !std::isfinite(s.delay))
       return bad_input("the delay must be finite and >= 0");
     if (d.instants == nullptr && !(d.ts > 0))
       return bad_input("Ts must be > 0");
   } else {
     if (s.nf < 0) return bad_input("nf must be >= 0");
+    if (s.estimate_delay)
+      return bad_input("a discrete-time delay is nk, not estimated here");
     if (d.instants != nullptr)
       return bad_input("a discrete-time model needs regular sampling");
   }
@@ -406,8 +429,8 @@ Status validate(const OeStructure& s, const OeSettings<S>& settings,
 }
 
 template <typename S>
-Status start_estimate(const OeStructure& s, const OeData<S>& d,
-                      Vector<S>* theta, std::string* how) {
+Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
+                      double start_delay, Vector<S>* theta, std::string* how) {
   const int nf = s.nf, nb = s.nb;
   if (s.time == OeTime::kContinuous) {
     RivProblem<S> problem;
@@ -417,8 +440,13 @@ Status start_estimate(const OeStructure& s, const OeData<S>& d,
     c.nk = s.nk;
     c.rule = s.rule;
     c.delay = s.delay;
+    if (s.estimate_delay) {
+      c.nk = 0;
+      c.delay = start_delay;
+    }
     problem.channels.push_back(c);
     RivSettings<S> settings;
+    if (cutoff > 0) settings.cutoffs = {cutoff};
     RivData<S> data;
     data.y = d.y;
     data.w = d.u;
@@ -430,7 +458,9 @@ Status start_estimate(const OeStructure& s, const OeData<S>& d,
     if (!st.ok() && st.code() != ErrorCode::kNotConverged) {
       return Status(st.code(), "SRIVC start: " + st.message());
     }
-    *theta = r.theta;
+    *theta = Vector<S>(s.num_parameters());
+    theta->head(nf + nb) = r.theta;
+    if (s.estimate_delay) (*theta)(nf + nb) = static_cast<S>(start_delay);
     *how = "srivc";
     return Status::Ok();
   }
@@ -466,8 +496,15 @@ Status output_error(const OeStructure& s, const OeSettings<S>& settings,
     theta0 = settings.theta_init;
     result->start = "given";
   } else {
-    status = start_estimate(s, data, &theta0, &result->start);
+    status = start_estimate(s, data, settings.srivc_cutoff, model.total_delay(),
+                            &theta0, &result->start);
     if (!status.ok()) return status;
+  }
+  const int td_index = s.estimate_delay ? np - 1 : -1;
+  if (td_index >= 0) {
+    if (!(theta0(td_index) >= 0 && theta0(td_index) <= s.delay_max)) {
+      return bad_input("the start delay lies outside [0, delay_max]");
+    }
   }
   result->theta_start = theta0;
   if (!model.stable(theta0)) {
@@ -551,6 +588,12 @@ Status output_error(const OeStructure& s, const OeSettings<S>& settings,
       const Vector<S> dn = A.householderQr().solve(rhs);
       step = dn.cwiseQuotient(scale);
       trial = theta + step;
+      if (td_index >= 0) {
+        // Projection on the delay's bounds.
+        trial(td_index) =
+            std::clamp(trial(td_index), S(0), static_cast<S>(s.delay_max));
+        step(td_index) = trial(td_index) - theta(td_index);
+      }
       if (model.stable(trial)) {
         model.evaluate(trial, trial_yhat, nullptr);
         new_cost = (y - trial_yhat).squaredNorm();
