@@ -58,8 +58,8 @@ function [ir, R, cl, varargout] = cra (varargin)
       Phi(:, i) = -u(k - i);
     endfor
     if (rank (Phi) < na)
-      error ("cra:numericalFailure", "cra: the input has too little " ...
-             "excitation for an AR(%d) prewhitening filter", na);
+      error ("cra:numericalFailure", ["cra: the input has too little ", ...
+             "excitation for an AR(%d) prewhitening filter"], na);
     endif
     a = [1; Phi \ u(k)];
     uf = filter (a, 1, u)(na+1:end);

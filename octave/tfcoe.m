@@ -65,7 +65,7 @@ endfunction
 %! assert (all (sd > 0 & sd < 1));
 
 %!test  # delay estimated from a start 0.07 s away
-%! xd = simc (idctm ([1.5 4], [1 2.4 4]), u, Ts, "InputDelay", 0.12);
+%! xd = simc (idtf ([1.5 4], [1 2.4 4], "IODelay", 0.12), u, Ts);
 %! M = tfcoe (iddata (xd, u, Ts), 2, 1, 0.05);
 %! assert (get (M, "IODelay"), 0.12, 1e-6);
 
@@ -89,7 +89,7 @@ endfunction
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);
-%! y = simc (idctm (4, [1 2.4 4]), u, Ts, "InputDelay", 0.12) ...
+%! y = simc (idtf (4, [1 2.4 4], "IODelay", 0.12), u, Ts) ...
 %!     + 0.1 * randn (N, 1);
 %! M = tfcoe (iddata (y, u, Ts), 2, 0, 0.05)    # delay estimated from 0.05
 %! M.Report.Fit

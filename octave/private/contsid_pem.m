@@ -60,8 +60,8 @@ function o = read_options (fname, rest, o)
   if (numel (rest) == 1 && isstruct (rest{1}))
     s = rest{1};
     if (! isfield (s, "OptionSet"))
-      error ([fname ":badOption"], "%s: the options struct must come from " ...
-             "oeOptions or tfestOptions", fname);
+      error ([fname ":badOption"], ["%s: the options struct must come from ", ...
+              "oeOptions or tfestOptions"], fname);
     endif
     o.focus = s.Focus;
     o.maxiter = s.SearchOptions.MaxIterations;
@@ -242,8 +242,8 @@ function [M, info] = oe_model (fname, d, rest)
     error ([fname ":notSupported"], "%s: one input only", fname);
   endif
   if (! d.uniform)
-    error ([fname ":badInput"], "%s: a discrete-time OE model needs " ...
-           "regularly sampled data", fname);
+    error ([fname ":badInput"], ["%s: a discrete-time OE model needs ", ...
+           "regularly sampled data"], fname);
   endif
   nn = rest{1};
   nb = nn(1); nf = nn(2); nk = nn(3);
@@ -325,8 +325,8 @@ function [M, info] = tf_model (fname, d, rest)
   endif
   if (! (ischar (o.overpar) && strcmpi (o.overpar, "off")))
     error ([fname ":notSupported"],
-           "%s: OverPar 'on' is not supported (the model is estimated in " ...
-           "its own parameters)", fname);
+           ["%s: OverPar 'on' is not supported (the model is estimated ", ...
+            "in its own parameters)"], fname);
   endif
   if (! isempty (o.lambda) && ! (isnumeric (o.lambda) && isscalar (o.lambda)
                                  && isreal (o.lambda) && o.lambda > 0

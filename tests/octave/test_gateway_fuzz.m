@@ -14,7 +14,7 @@ function test_gateway_fuzz ()
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
   gateways = {"rlssvf_mex", "simc_mex", "riv_mex", "offline_mex", ...
-              "qnml_mex", "throttle_mex"};
+              "qnml_mex", "throttle_mex", "pem_mex"};
   for i = 1:numel (gateways)
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
   endfor
@@ -62,6 +62,10 @@ function test_gateway_fuzz ()
                     "method", "clsrivc", "tol", 1e-6, "maxiter", 5,
                     "theta_init", [], "controller_num", [1 -0.5],
                     "controller_den", [1 -1], "r1", u, "r2", zeros (50, 1));
+  pem = struct ("model", "oe_ct", "nf", 2, "nb", 1, "nk", 0, "delay", 0.05,
+                "estimate_delay", true, "delay_max", 1, "cutoff", 0,
+                "intersample", 0, "theta_init", [], "maxiter", 5, "tol", 1e-8);
+  pemarx = struct ("model", "arx", "na", 2, "nb", 1, "nk", 1);
   sim = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
                 "substeps", 1, "x0", [], "noise", []);
   ## Calls: {gateway, positional arguments with the options struct last,
@@ -70,6 +74,8 @@ function test_gateway_fuzz ()
     {"rlssvf_mex", {"rlssvf", y, u, 0.1, rls}, ...
      {"na", "nb", "nk", "lambda_svf", "adg"}}
     {"simc_mex", {"simc", u, 0.1, [2 4 4], sim}, {"na", "nb", "nk"}}
+    {"pem_mex", {"tfcoe", yp, u, 0.1, pem}, {"model", "nf", "nb"}}
+    {"pem_mex", {"arx", yp, u, 1, pemarx}, {"model", "na", "nb", "nk"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf", "adg"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...
