@@ -191,7 +191,13 @@ function [M, info] = arx_model (fname, d, rest)
     B = B{1};
   endif
   M = idpoly (A, B, 1, 1, 1, info.noise_variance, d.Ts);
-  M = set_cov (M, P, theta);
+  free = 1:na;
+  at = na;
+  for j = 1:nu
+    free = [free, at + nk(j) + (1:nb(j))];
+    at += nk(j) + nb(j);
+  endfor
+  M = set_cov (M, P, theta, free);
   n = rows (d.y);
   e = d.y - sim_arx (A, B, d, nu);
   M = set_report (M, fname, d, e, numel (theta), 0, true, "linear LS", n);
@@ -210,11 +216,21 @@ function e = sim_arx (A, B, d, nu)
   e = d.y - yp;
 endfunction
 
-function M = set_cov (M, P, theta)
+## The covariance in getpvec's layout: P is over the free parameters
+## (theta); entries of getpvec that are fixed (the leading zeros of an
+## idpoly's B, the delay) get zero rows and columns.  free: the indices of
+## theta in getpvec (M), or [] when they coincide.
+function M = set_cov (M, P, theta, free)
   p = getpvec (M);
-  if (numel (p) == numel (theta) && all (isfinite (P(:))))
-    M = setcov (M, P);
+  if (nargin < 4 || isempty (free))
+    free = 1:numel (theta);
   endif
+  if (numel (free) != numel (theta) || ! all (isfinite (P(:))))
+    return;
+  endif
+  C = zeros (numel (p));
+  C(free, free) = P;
+  M = setcov (M, C);
 endfunction
 
 function M = set_report (M, fname, d, e, npar, iters, conv, reason, n)
@@ -265,7 +281,7 @@ function [M, info] = oe_model (fname, d, rest)
   B = [zeros(1, nk) theta(nf+(1:nb)).'];
   M = idpoly (1, B, 1, 1, F, info.noise_variance, d.Ts);
   perm = [nf + (1:nb), 1:nf];
-  M = set_cov (M, P(perm, perm), theta);
+  M = set_cov (M, P(perm, perm), theta, [nk + (1:nb), nk + nb + (1:nf)]);
   e = df.y - info.simulated;
   M = set_report (M, fname, d, e, nb + nf, info.iterations, info.converged,
                   info.reason, rows (d.y));

@@ -14,7 +14,7 @@ function opt = contsid_pem_options (fname, args)
     error ([fname ":badOption"], "%s: options come in name-value pairs",
            fname);
   endif
-  names = {"Focus", "InitialCondition", "Display", "SearchMethod",
+  names = {"Focus", "InitialCondition", "Display", "SearchMethod", ...
            "SearchOptions"};
   for i = 1:2:numel (args)
     if (! ischar (args{i}))
@@ -27,9 +27,9 @@ function opt = contsid_pem_options (fname, args)
     v = args{i+1};
     switch (names{k})
       case "Focus"
-        ok = (ischar (v) && any (strcmpi (v, {"simulation", "prediction"})))
-             || (isnumeric (v) && isreal (v) && numel (v) == 2
-                 && all (isfinite (v)) && v(1) >= 0 && v(2) > v(1));
+        ok = ((ischar (v) && any (strcmpi (v, {"simulation", "prediction"})))
+              || (isnumeric (v) && isreal (v) && numel (v) == 2
+                  && all (isfinite (v)) && v(1) >= 0 && v(2) > v(1)));
       case "InitialCondition"
         ok = ischar (v) && any (strcmpi (v, {"zero", "auto"}));
       case "Display"
@@ -37,8 +37,8 @@ function opt = contsid_pem_options (fname, args)
       case "SearchMethod"
         ok = ischar (v) && any (strcmpi (v, {"lm", "auto"}));
       case "SearchOptions"
-        ok = isstruct (v) && isscalar (v)
-             && all (isfield (v, {"MaxIterations", "Tolerance"}));
+        ok = (isstruct (v) && isscalar (v)
+              && all (isfield (v, {"MaxIterations", "Tolerance"})));
     endswitch
     if (! ok)
       error ([fname ":badOption"], "%s: bad value for '%s'", fname,
