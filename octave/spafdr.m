@@ -44,9 +44,9 @@ function [G, varargout] = spafdr (varargin)
     w = {2 * pi / T, pi / Ts, 100};
   endif
   if (iscell (w))
-    if (numel (w) < 2 || numel (w) > 3
-        || ! all (cellfun (@(v) isnumeric (v) && isscalar (v) && isreal (v)
-                                && isfinite (v) && v > 0, w)))
+    good = @(v) isnumeric (v) && isscalar (v) && isreal (v) ...
+                && isfinite (v) && v > 0;
+    if (numel (w) < 2 || numel (w) > 3 || ! all (cellfun (good, w)))
       error ("spafdr:badInput", "spafdr: w = {wmin, wmax[, n]}, positive");
     endif
     if (numel (w) == 2)
