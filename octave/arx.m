@@ -17,7 +17,8 @@
 ##
 ## The control package's forms (a scalar order @var{n}, the keys
 ## @qcode{'na'}, @qcode{'nb'}, or an options struct) are passed on to the
-## control package's @code{arx} unchanged.
+## control package's @code{arx} unchanged (its errors are raised again
+## as @code{arx:badInput}).
 ##
 ## @strong{Example}
 ## @example
@@ -50,11 +51,18 @@ function [a, b] = control_arx (args, nout)
     error ("arx:notSupported", ["arx: this form needs the control ", ...
            "package; the toolbox's form is arx (data, [na nb nk])"]);
   endif
-  if (nout < 2)
-    a = contsid_call_shadowed (list{1}.dir, "arx", 1, args);
-  else
-    [a, b] = contsid_call_shadowed (list{1}.dir, "arx", 2, args);
-  endif
+  ## The control package's errors carry no identifier: they are raised
+  ## again as arx:badInput with its message (its results are untouched).
+  try
+    if (nout < 2)
+      a = contsid_call_shadowed (list{1}.dir, "arx", 1, args);
+    else
+      [a, b] = contsid_call_shadowed (list{1}.dir, "arx", 2, args);
+    endif
+  catch err
+    msg = regexprep (err.message, '^arx: ', '');
+    error ("arx:badInput", "arx: %s (the control package's arx)", msg);
+  end_try_catch
 endfunction
 
 %!shared u, y, N
@@ -91,6 +99,7 @@ endfunction
 %!error id=arx:dimensionMismatch arx (iddata (y, u, 1), [2 2 1 1])
 %!error id=arx:numericalFailure arx (iddata (y, zeros (N, 1), 1), [2 2 1])
 %!error id=arx:badInput arx (iddata (y(1:4), u(1:4), 1), [2 2 1])
+%!error id=arx:badInput arx (1, 2)
 
 %!demo
 %! u = sign (randn (500, 1));
