@@ -28,11 +28,15 @@ for r = 1:5
 endfor
 cd (old);
 tic; [thp, itp] = pem_plain_octave (y, u, Ts, 2, 2, th0, "ct", 100); tp = toc;
+tic; [thf, itf] = pem_plain_octave (y, u, Ts, 2, 2, th0, "ctf", 100); tf_ = toc;
 printf ("CT OE (tfcoe/tfest core), N = %d, nn = [2 poles, 1 zero]\n", N);
 printf ("  core from th0: %.4f s (%d iterations)\n", best, ic.iterations);
 printf ("  plain Octave:  %.4f s (%d iterations)\n", tp, itp);
 printf ("  ratio %.0fx; max |theta_core - theta_plain| / |theta| = %.1e\n",
         tp / best, max (abs (thc - thp) ./ abs (thp)));
+printf ("  plain Octave, c2d + filter: %.4f s (%d iterations), ratio %.0fx,",
+        tf_, itf, tf_ / best);
+printf (" max rel. difference %.1e\n", max (abs (thc - thf) ./ abs (thf)));
 printf ("  tfcoe end to end (SRIVC start + LM): %.4f s\n", t_front);
 
 ## Discrete time: oe [2 2 1]

@@ -8,6 +8,9 @@
 ## ZOH input, simulated by the ZOH-discretised state-space model sample by
 ## sample (expm of the companion form), sensitivities by the same rule
 ## through 1/F^2; "dt": B(q)/F(q) q^-1 with Octave's @code{filter}.
+## "ctf": as "ct" with each filter p^i / F discretised by the control
+## package's c2d (ZOH) and run by Octave's compiled @code{filter} (the
+## fastest plain-Octave form).
 ## theta = [f; b] as in the core (continuous time, unscaled).
 ## @end deftypefn
 
@@ -58,7 +61,7 @@ endfunction
 
 function ok = stable (f, kind)
   r = roots ([1; f(:)]);
-  if (strcmp (kind, "ct"))
+  if (kind(1) == "c")
     ok = all (real (r) < 0);
   else
     ok = all (abs (r) < 1);
@@ -85,6 +88,11 @@ function [yh, J] = model (theta, u, Ts, nf, nb, kind, want)
     endif
     return;
   endif
+  if (strcmp (kind, "ctf"))
+    derivs = @derivs_filter;
+  else
+    derivs = @derivs_loop;
+  endif
   X = derivs ([1; f], u, Ts);            # p^i u / F, i = 0..nf
   yh = X(:, nb:-1:1) * b;
   if (want)
@@ -98,7 +106,17 @@ function [yh, J] = model (theta, u, Ts, nf, nb, kind, want)
 endfunction
 
 ## p^i u / D(p), i = 0..n, u held between samples (ZOH), at rest at t0.
-function X = derivs (D, u, Ts)
+function X = derivs_filter (D, u, Ts)
+  n = numel (D) - 1;
+  X = zeros (numel (u), n + 1);
+  for i = 0:n
+    [b, a] = tfdata (c2d (tf ([1, zeros(1, i)], D(:)'), Ts, "zoh"), "vector");
+    b = [zeros(1, numel (a) - numel (b)), b];
+    X(:, i + 1) = filter (b, a, u);
+  endfor
+endfunction
+
+function X = derivs_loop (D, u, Ts)
   n = numel (D) - 1;
   A = [zeros(n - 1, 1), eye(n - 1); -flipud(D(2:end))'];
   E = expm ([A, [zeros(n - 1, 1); 1]; zeros(1, n + 1)] * Ts);

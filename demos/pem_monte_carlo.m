@@ -26,10 +26,12 @@ t0 = tic ();
 for r = 1:R
   y = x + 0.3 * randn (N, 1);
   M = tfcoe (iddata (y, u, Ts), 2, 1);
-  [thc(r, :), sdc(r, :)] = getpvec (M);
+  [p, sd] = getpvec (M);                # [b1 b0 f1 f2]
+  thc(r, :) = p; sdc(r, :) = sd;
   yd = xd + 0.3 * randn (N, 1);
   Md = oe (iddata (yd, u, 1), [2 2 1]);
-  [thd(r, :), sdd(r, :)] = getpvec (Md);
+  [p, sd] = getpvec (Md);               # [0 b1 b2 f1 f2]: B's nk zero
+  thd(r, :) = p(2:end); sdd(r, :) = sd(2:end);
 endfor
 printf ("R = %d runs, N = %d, %.1f s\n", R, N, toc (t0));
 names = {"b1", "b0", "f1", "f2"};
