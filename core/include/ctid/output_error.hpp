@@ -575,7 +575,13 @@ Status output_error(const OeStructure& s, const OeSettings<S>& settings,
     const Eigen::HouseholderQR<Matrix<S>> qr(Jn);
     const Matrix<S> R =
         qr.matrixQR().topRows(np).template triangularView<Eigen::Upper>();
-    const Vector<S> qte = (qr.householderQ().transpose() * e).head(np);
+    // Q^T e = R^-T Jn^T e (cheaper than applying Q to e; equal while R is
+    // regular, else Q is applied).
+    Vector<S> qte =
+        R.transpose().template triangularView<Eigen::Lower>().solve(gn);
+    if (!qte.allFinite()) {
+      qte = (qr.householderQ().transpose() * e).head(np);
+    }
     bool accepted = false;
     S new_cost = cost;
     Vector<S> step, trial;
