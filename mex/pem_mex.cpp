@@ -147,6 +147,6 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway(
-      "pem", {"tfcoe", "oe", "tfest", "arx", "delayest"}, nrhs, prhs,
+      "tfcoe", {"tfcoe", "oe", "tfest", "arx", "delayest"}, nrhs, prhs,
       [&](const Gateway& g) { pem_gateway(g, nlhs, plhs, nrhs, prhs); });
 }
