@@ -73,6 +73,10 @@ function test_gateway_fuzz ()
                "maxiter", 5, "theta_init", [], "cutoffs", [],
                "max_starts", 3, "arma_maxiter", 10, "controller_num", [],
                "controller_den", [], "cl_nb", 1, "cl_nf", 1, "cl_nk", 0);
+  pem = struct ("model", "oe_ct", "nf", 2, "nb", 1, "nk", 0, "delay", 0.05,
+                "estimate_delay", true, "delay_max", 1, "cutoff", 0,
+                "intersample", 0, "theta_init", [], "maxiter", 5, "tol", 1e-8);
+  pemarx = struct ("model", "arx", "na", 2, "nb", 1, "nk", 1);
   sim = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
                 "substeps", 1, "x0", [], "noise", []);
   ## Calls: {gateway, positional arguments with the options struct last,
@@ -81,6 +85,8 @@ function test_gateway_fuzz ()
     {"rlssvf_mex", {"rlssvf", y, u, 0.1, rls}, ...
      {"na", "nb", "nk", "lambda_svf", "adg"}}
     {"simc_mex", {"simc", u, 0.1, [2 4 4], sim}, {"na", "nb", "nk"}}
+    {"pem_mex", {"tfcoe", yp, u, 0.1, pem}, {"model", "nf", "nb"}}
+    {"pem_mex", {"arx", yp, u, 1, pemarx}, {"model", "na", "nb", "nk"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf", "adg"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

@@ -1,0 +1,402 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{M}, @var{info}] =} contsid_pem (@var{fname}, @var{args})
+## Back-end of the prediction-error estimators @code{tfcoe}, @code{tfest},
+## @code{oe} and @code{arx}: reads the data (@code{contsid_getdata}), the
+## orders and the options of @var{fname}, calls the core through
+## @code{pem_mex} (core/include/ctid/output_error.hpp) and builds the
+## @code{idtf}/@code{idpoly} with covariance and Report (Fit.FitPercent,
+## LossFcn, MSE, FPE as the SITB defines them; Termination with the
+## iterations, convergence flag and reason).  @var{info} is the gateway's.
+## @end deftypefn
+
+function [M, info] = contsid_pem (fname, args)
+  if (isempty (args))
+    error ([fname ":badInput"], "%s: expected data and orders", fname);
+  endif
+  a1 = args{1};
+  if (isa (a1, "idfrd") || (isa (a1, "iddata") && isfield_domain (a1)))
+    error ([fname ":notSupported"],
+           "%s: frequency-domain data are not supported here (time domain)",
+           fname);
+  endif
+  d = contsid_getdata (fname, args{:});
+  rest = args(d.nconsumed+1:end);
+  if (size (d.u, 2) < 1)
+    error ([fname ":badInput"], "%s: the data need an input", fname);
+  endif
+  switch (fname)
+    case "arx"
+      [M, info] = arx_model (fname, d, rest);
+    case "oe"
+      [M, info] = oe_model (fname, d, rest);
+    otherwise
+      [M, info] = tf_model (fname, d, rest);
+  endswitch
+endfunction
+
+function tf = isfield_domain (dat)
+  tf = false;
+  try
+    tf = strncmpi (get (dat, "Domain"), "f", 1);
+  catch
+  end_try_catch
+endfunction
+
+function t = time_arg (d)
+  if (d.uniform)
+    t = d.Ts;
+  else
+    t = d.t;
+  endif
+endfunction
+
+function ok = isorder (v)
+  ok = isnumeric (v) && isreal (v) && all (isfinite (v(:))) ...
+       && all (v(:) == fix (v(:))) && all (v(:) >= 0);
+endfunction
+
+## Name-value pairs or an options struct of oeOptions/tfestOptions.
+function o = read_options (fname, rest, o)
+  if (numel (rest) == 1 && isstruct (rest{1}))
+    s = rest{1};
+    if (! isfield (s, "OptionSet"))
+      error ([fname ":badOption"], ["%s: the options struct must come from ", ...
+              "oeOptions or tfestOptions"], fname);
+    endif
+    o.focus = s.Focus;
+    o.maxiter = s.SearchOptions.MaxIterations;
+    o.tol = s.SearchOptions.Tolerance;
+    rest = {};
+  endif
+  if (mod (numel (rest), 2) != 0)
+    error ([fname ":badOption"], "%s: options come in name-value pairs", fname);
+  endif
+  for i = 1:2:numel (rest)
+    if (! ischar (rest{i}))
+      error ([fname ":badOption"], "%s: option names must be strings", fname);
+    endif
+    key = lower (rest{i});
+    switch (key)
+      case {"focus", "maxiter", "tol", "lambda", "overpar", "tdmax"}
+        o.(key) = rest{i+1};
+      case "maxiterations"
+        o.maxiter = rest{i+1};
+      case "tolerance"
+        o.tol = rest{i+1};
+      otherwise
+        error ([fname ":badOption"], "%s: unknown option '%s'", fname,
+               rest{i});
+    endswitch
+  endfor
+  scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
+  if (! scal (o.maxiter) || o.maxiter != fix (o.maxiter) || o.maxiter < 0)
+    error ([fname ":badOption"], "%s: MaxIter must be an integer >= 0", fname);
+  endif
+  if (! scal (o.tol) || o.tol <= 0)
+    error ([fname ":badOption"], "%s: Tol must be a scalar > 0", fname);
+  endif
+  o.band = [];
+  if (ischar (o.focus))
+    if (! any (strcmpi (o.focus, {"simulation", "prediction"})))
+      error ([fname ":badOption"], ["%s: Focus must be 'simulation', ", ...
+             "'prediction' or a band [w1 w2] (rad/s)"], fname);
+    endif
+  elseif (isnumeric (o.focus) && isreal (o.focus) && numel (o.focus) == 2
+          && all (isfinite (o.focus)) && o.focus(1) >= 0
+          && o.focus(2) > o.focus(1))
+    o.band = o.focus(:).';
+  else
+    error ([fname ":badOption"], ["%s: Focus must be 'simulation', ", ...
+           "'prediction' or a band [w1 w2] (rad/s)"], fname);
+  endif
+endfunction
+
+## Focus band: the data are prefiltered by a fourth-order Butterworth band
+## (low-pass for w1 = 0), discretised by the Tustin map with prewarping;
+## minimising ||L y - G L u|| is the output error weighted by |L|^2.
+function d = focus_filter (fname, d, band)
+  if (isempty (band))
+    return;
+  endif
+  if (! d.uniform)
+    error ([fname ":notSupported"],
+           "%s: a Focus band needs regularly sampled data", fname);
+  endif
+  Ts = d.Ts;
+  wn = pi / Ts;
+  [b, a] = butter_tustin (4, min (band(2), 0.95 * wn), Ts, false);
+  if (band(2) >= wn)
+    b = 1; a = 1;
+  endif
+  if (band(1) > 0)
+    [bh, ah] = butter_tustin (4, band(1), Ts, true);
+    b = conv (b, bh); a = conv (a, ah);
+  endif
+  d.y = filter (b, a, d.y);
+  d.u = filter (b, a, d.u);
+endfunction
+
+function [b, a] = butter_tustin (n, wc, Ts, high)
+  w = 2 / Ts * tan (wc * Ts / 2);              # prewarped
+  k = 1:n;
+  p = w * exp (1i * pi * (2 * k + n - 1) / (2 * n));
+  ## Tustin map of each pole s = p: z = (1 + p Ts/2) / (1 - p Ts/2).
+  zp = (1 + p * Ts / 2) ./ (1 - p * Ts / 2);
+  a = real (poly (zp));
+  if (high)
+    b = poly (ones (1, n));                    # zeros at z = 1
+    g = abs (polyval (a, -1) / polyval (b, -1));
+  else
+    b = poly (-ones (1, n));                   # zeros at z = -1
+    g = abs (polyval (a, 1) / polyval (b, 1));
+  endif
+  b = b * g;
+endfunction
+
+function [theta, P, info] = call_gateway (fname, d, opts)
+  [theta, P, info] = pem_mex (fname, d.y, d.u, time_arg (d), opts);
+endfunction
+
+function [M, info] = arx_model (fname, d, rest)
+  if (isempty (rest) || ! isorder (rest{1}))
+    error ([fname ":badInput"], "%s: expected orders [na nb nk]", fname);
+  endif
+  nn = rest{1};
+  nu = size (d.u, 2);
+  if (numel (nn) != 1 + 2 * nu)
+    error ([fname ":dimensionMismatch"],
+           "%s: [na nb nk] needs 1 + 2*%d entries for %d input(s)", fname,
+           nu, nu);
+  endif
+  if (numel (rest) > 1)
+    error ([fname ":badOption"], "%s: no options are taken in this form",
+           fname);
+  endif
+  if (! d.uniform)
+    error ([fname ":badInput"], "%s: ARX needs regularly sampled data",
+           fname);
+  endif
+  na = nn(1); nb = nn(2:1+nu); nk = nn(2+nu:end);
+  [theta, P, info] = call_gateway (fname, d,
+                                   struct ("model", "arx", "na", na,
+                                           "nb", nb, "nk", nk));
+  A = [1 theta(1:na).'];
+  B = cell (1, nu);
+  at = na;
+  for j = 1:nu
+    B{j} = [zeros(1, nk(j)) theta(at+(1:nb(j))).'];
+    at += nb(j);
+  endfor
+  if (nu == 1)
+    B = B{1};
+  endif
+  M = idpoly (A, B, 1, 1, 1, info.noise_variance, d.Ts);
+  free = 1:na;
+  at = na;
+  for j = 1:nu
+    free = [free, at + nk(j) + (1:nb(j))];
+    at += nk(j) + nb(j);
+  endfor
+  M = set_cov (M, P, theta, free);
+  n = rows (d.y);
+  e = d.y - sim_arx (A, B, d, nu);
+  M = set_report (M, fname, d, e, numel (theta), 0, true, "linear LS", n);
+endfunction
+
+## One-step prediction of the ARX model, for its Report.Fit (the SITB
+## reports the prediction fit for ARX).
+function e = sim_arx (A, B, d, nu)
+  if (! iscell (B))
+    B = {B};
+  endif
+  yp = filter ([0 -A(2:end)], 1, d.y);
+  for j = 1:nu
+    yp += filter (B{j}, 1, d.u(:, j));
+  endfor
+  e = d.y - yp;
+endfunction
+
+## The covariance in getpvec's layout: P is over the free parameters
+## (theta); entries of getpvec that are fixed (the leading zeros of an
+## idpoly's B, the delay) get zero rows and columns.  free: the indices of
+## theta in getpvec (M), or [] when they coincide.
+function M = set_cov (M, P, theta, free)
+  p = getpvec (M);
+  if (nargin < 4 || isempty (free))
+    free = 1:numel (theta);
+  endif
+  if (numel (free) != numel (theta) || ! all (isfinite (P(:))))
+    return;
+  endif
+  C = zeros (numel (p));
+  C(free, free) = P;
+  M = setcov (M, C);
+endfunction
+
+function M = set_report (M, fname, d, e, npar, iters, conv, reason, n)
+  mse = mean (e .^ 2);
+  fit = struct ("FitPercent", 100 * (1 - norm (e) / norm (d.y - mean (d.y))),
+                "LossFcn", mse, "MSE", mse,
+                "FPE", mse * (1 + npar / n) / (1 - npar / n));
+  rep = struct ("Method", upper (fname),
+                "Status", sprintf ("Estimated using %s", upper (fname)),
+                "Fit", fit,
+                "Parameters", struct ("ParVector", getpvec (M)),
+                "Termination", struct ("Iterations", iters,
+                                       "Converged", conv,
+                                       "Reason", reason),
+                "DataUsed", struct ("Length", n, "Ts", d.Ts,
+                                    "InterSample", d.intersample));
+  M = set (M, "Report", rep);
+endfunction
+
+function [M, info] = oe_model (fname, d, rest)
+  if (isempty (rest) || ! isorder (rest{1}) || numel (rest{1}) != 3)
+    error ([fname ":badInput"], "%s: expected orders [nb nf nk]", fname);
+  endif
+  if (size (d.u, 2) != 1)
+    error ([fname ":notSupported"], "%s: one input only", fname);
+  endif
+  if (! d.uniform)
+    error ([fname ":badInput"], ["%s: a discrete-time OE model needs ", ...
+           "regularly sampled data"], fname);
+  endif
+  nn = rest{1};
+  nb = nn(1); nf = nn(2); nk = nn(3);
+  if (nb < 1)
+    error ([fname ":badInput"], "%s: nb must be >= 1", fname);
+  endif
+  o = read_options (fname, rest(2:end),
+                    struct ("focus", "simulation", "maxiter", 100,
+                            "tol", 1e-8, "lambda", [], "overpar", "off",
+                            "tdmax", []));
+  check_unused (fname, o, {"lambda", "overpar", "tdmax"});
+  df = focus_filter (fname, d, o.band);
+  [theta, P, info] = call_gateway (fname, df,
+                                   struct ("model", "oe_dt", "nf", nf,
+                                           "nb", nb, "nk", nk,
+                                           "maxiter", o.maxiter,
+                                           "tol", o.tol));
+  F = [1 theta(1:nf).'];
+  B = [zeros(1, nk) theta(nf+(1:nb)).'];
+  M = idpoly (1, B, 1, 1, F, info.noise_variance, d.Ts);
+  perm = [nf + (1:nb), 1:nf];
+  M = set_cov (M, P(perm, perm), theta, [nk + (1:nb), nk + nb + (1:nf)]);
+  e = df.y - info.simulated;
+  M = set_report (M, fname, d, e, nb + nf, info.iterations, info.converged,
+                  info.reason, rows (d.y));
+  warn_unconverged (fname, info);
+endfunction
+
+function check_unused (fname, o, keys)
+  for i = 1:numel (keys)
+    if (! isempty (o.(keys{i})) && ! strcmpi (o.(keys{i}), "off"))
+      error ([fname ":badOption"], "%s: option '%s' is not one of %s's",
+             fname, keys{i}, fname);
+    endif
+  endfor
+endfunction
+
+function warn_unconverged (fname, info)
+  if (! info.converged)
+    warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
+             fname, info.reason);
+  endif
+endfunction
+
+## tfest (data, np, nz[, iodelay][, opt]) and tfcoe (data, np, nz[, td][,
+## Name, Value]): continuous-time idtf; tfcoe estimates a given delay.
+function [M, info] = tf_model (fname, d, rest)
+  if (numel (rest) < 2 || ! isorder (rest{1}) || ! isscalar (rest{1})
+      || ! isorder (rest{2}) || ! isscalar (rest{2}))
+    error ([fname ":badInput"], "%s: expected np and nz (integers)", fname);
+  endif
+  np = rest{1}; nz = rest{2};
+  if (np < 1 || nz > np)
+    error ([fname ":badInput"], "%s: need np >= 1 and 0 <= nz <= np", fname);
+  endif
+  if (size (d.u, 2) != 1)
+    error ([fname ":notSupported"], "%s: one input only", fname);
+  endif
+  rest = rest(3:end);
+  td = [];
+  if (! isempty (rest) && isnumeric (rest{1}))
+    td = rest{1};
+    rest = rest(2:end);
+    if (! isnumeric (td) || ! isreal (td) || ! isscalar (td)
+        || ! isfinite (td) || td < 0)
+      error ([fname ":badInput"], "%s: IODelay must be a real scalar >= 0",
+             fname);
+    endif
+  endif
+  T = d.t(end) - d.t(1);
+  o = read_options (fname, rest,
+                    struct ("focus", "simulation", "maxiter", 100,
+                            "tol", 1e-8, "lambda", [], "overpar", "off",
+                            "tdmax", []));
+  if (strcmp (fname, "tfest"))
+    check_unused (fname, o, {"lambda", "overpar", "tdmax"});
+  elseif (! isempty (o.band))
+    error ([fname ":badOption"], "%s: Focus is 'simulation' here", fname);
+  endif
+  if (! (ischar (o.overpar) && strcmpi (o.overpar, "off")))
+    error ([fname ":notSupported"],
+           ["%s: OverPar 'on' is not supported (the model is estimated ", ...
+            "in its own parameters)"], fname);
+  endif
+  if (! isempty (o.lambda) && ! (isnumeric (o.lambda) && isscalar (o.lambda)
+                                 && isreal (o.lambda) && o.lambda > 0
+                                 && isfinite (o.lambda)))
+    error ([fname ":badOption"], "%s: Lambda must be a scalar > 0 (rad/s)",
+           fname);
+  endif
+  estimate = strcmp (fname, "tfcoe") && ! isempty (td);
+  if (isempty (o.tdmax))
+    o.tdmax = T / 2;
+  elseif (! (isnumeric (o.tdmax) && isscalar (o.tdmax) && o.tdmax >= 0
+             && isfinite (o.tdmax)))
+    error ([fname ":badOption"], "%s: TdMax must be a scalar >= 0", fname);
+  endif
+  if (isempty (td))
+    td = 0;
+  endif
+  if (td > T / 2 || (estimate && td > o.tdmax))
+    error ([fname ":badInput"], "%s: the delay %g exceeds %g s", fname, td,
+           min (T / 2, o.tdmax));
+  endif
+  if (estimate && nz >= np)
+    error ([fname ":badInput"],
+           "%s: estimating the delay needs nz < np (strictly proper)", fname);
+  endif
+  df = focus_filter (fname, d, o.band);
+  rule = double (strcmpi (d.intersample, "foh"));
+  opts = struct ("model", "oe_ct", "nf", np, "nb", nz + 1, "nk", 0,
+                 "delay", td, "intersample", rule, "maxiter", o.maxiter,
+                 "tol", o.tol, "estimate_delay", estimate,
+                 "delay_max", o.tdmax, "cutoff", 0);
+  if (! isempty (o.lambda))
+    opts.cutoff = o.lambda;
+  endif
+  [theta, P, info] = call_gateway (fname, df, opts);
+  den = [1 theta(1:np).'];
+  num = theta(np+(1:nz+1)).';
+  if (estimate)
+    td = theta(end);
+  endif
+  M = idtf (num, den, "IODelay", td);
+  perm = [np + (1:nz+1), 1:np];
+  M = set_cov (M, P(perm, perm), theta(1:np+nz+1));
+  e = df.y - info.simulated;
+  M = set_report (M, fname, d, e, numel (theta), info.iterations,
+                  info.converged, info.reason, rows (d.y));
+  r = get (M, "Report");
+  r.Parameters.IODelay = td;
+  r.Parameters.IODelaySD = NaN;
+  if (estimate)
+    r.Parameters.IODelaySD = sqrt (P(end, end));
+  endif
+  r.Parameters.FullCovariance = P;
+  r.Termination.Start = info.start;
+  M = set (M, "NoiseVariance", info.noise_variance, "Report", r);
+  warn_unconverged (fname, info);
+endfunction

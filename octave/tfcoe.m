@@ -1,0 +1,95 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{M} =} tfcoe (@var{data}, @var{np}, @var{nz})
+## @deftypefnx {} {@var{M} =} tfcoe (@var{data}, @var{np}, @var{nz}, @var{td})
+## @deftypefnx {} {@var{M} =} tfcoe (@dots{}, @var{name}, @var{value})
+## @deftypefnx {} {[@var{M}, @var{info}] =} tfcoe (@dots{})
+## Continuous-time output-error (COE) estimate of B(p)/F(p) e^(-td p),
+## @var{np} poles and @var{nz} zeros, by prediction-error minimisation
+## (thesis sec. 1.3.3, eq. 1.16 with H = 1): Levenberg-Marquardt on the
+## simulation error, started from SRIVC (thesis eqs. 2.8-2.13), every
+## iterate kept stable.
+##
+## The model is simulated exactly under the data's intersample rule (ZOH or
+## FOH, regular or irregular sampling) and the Jacobian is exact (the
+## sensitivity filters p^i u / F and p^j B u / F^2).  With @var{td} given,
+## the delay is estimated too (a parameter of the iteration started at
+## @var{td}, kept in [0, TdMax]; needs @var{nz} < @var{np}); without it the
+## model has no delay.
+##
+## Options: @code{Lambda} (SVF cut-off of the SRIVC start, rad/s; default
+## a grid), @code{MaxIter} (default 100), @code{Tol} (relative step and
+## loss decrease, default 1e-8), @code{TdMax} (default half the record),
+## @code{Focus} (@qcode{"simulation"}), @code{OverPar} (@qcode{"off"};
+## @qcode{"on"} gives @code{tfcoe:notSupported}).
+##
+## @var{M} is an @code{idtf} with covariance s^2 (J'J)^-1 (s^2 = e'e/(N -
+## np)) and @code{Report} (Fit.FitPercent, LossFcn = MSE = e'e/N, FPE;
+## Termination.Iterations, Converged, Reason; Parameters.IODelay and
+## IODelaySD).  A run that does not converge warns
+## @code{tfcoe:notConverged} and returns the last iterate.
+##
+## @strong{Example}
+## @example
+## u = prbs (10, 8); Ts = 0.05; N = numel (u);
+## y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.1 * randn (N, 1);
+## M = tfcoe (iddata (y, u, Ts), 2, 0)
+## @end example
+## @seealso{tfsrivc, srivc, tfest, oe}
+## @end deftypefn
+
+function [M, info, varargout] = tfcoe (varargin)
+  contsid_nargchk ("tfcoe", nargin, nargout, [3 Inf], 2);
+  [M, info] = contsid_pem ("tfcoe", varargin);
+endfunction
+
+%!shared u, Ts, x, N
+%! u = prbs (10, 8); Ts = 0.05; N = numel (u);
+%! x = simc (idctm ([1.5 4], [1 2.4 4]), u, Ts);
+
+%!test  # noise-free: exact
+%! M = tfcoe (iddata (x, u, Ts), 2, 1);
+%! [num, den] = tfdata (M, "vector");
+%! assert (den, [1 2.4 4], 1e-8);
+%! assert (num(end-1:end), [1.5 4], 1e-8);
+%! assert (M.Report.Termination.Converged, true);
+
+%!test  # noisy: the optimum is stationary (gradient of the loss ~ 0)
+%! randn ("state", 3);
+%! y = x + 0.2 * randn (N, 1);
+%! [M, info] = tfcoe (iddata (y, u, Ts), 2, 1);
+%! assert (info.converged);
+%! assert (info.gradient_norm < 1e-5);
+%! p = [M.Report.Parameters.ParVector];
+%! assert (M.Report.Fit.MSE, mean ((y - info.simulated) .^ 2), 1e-12);
+%! sd = sqrt (diag (M.Report.Parameters.FullCovariance));
+%! assert (all (sd > 0 & sd < 1));
+
+%!test  # delay estimated from a start 0.07 s away
+%! xd = simc (idtf ([1.5 4], [1 2.4 4], "IODelay", 0.12), u, Ts);
+%! M = tfcoe (iddata (xd, u, Ts), 2, 1, 0.05);
+%! assert (get (M, "IODelay"), 0.12, 1e-6);
+
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 0, 0)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 3)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 1, -1)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 2, 0.1)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 1, 1e4)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Bogus", 1)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "MaxIter", -1)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Tol", 0)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Lambda", -1)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Focus", [0 1])
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, 0.1, "TdMax", -1)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "MaxIter")
+%!error id=tfcoe:notSupported tfcoe (iddata (x, u, Ts), 2, 1, "OverPar", "on")
+%!error id=tfcoe:notSupported tfcoe (iddata (x, [u u], Ts), 2, 1)
+%!error id=tfcoe:badInput tfcoe (1, 2, 3, 4, 5, 6, 7, 8)
+%!warning id=tfcoe:notConverged tfcoe (iddata (x + 0.1 * sin (1:N)', u, Ts), 2, 1, "MaxIter", 1, "Tol", 1e-15);
+
+%!demo
+%! u = prbs (10, 8); Ts = 0.05; N = numel (u);
+%! y = simc (idtf (4, [1 2.4 4], "IODelay", 0.12), u, Ts) ...
+%!     + 0.1 * randn (N, 1);
+%! M = tfcoe (iddata (y, u, Ts), 2, 0, 0.05)    # delay estimated from 0.05
+%! M.Report.Fit
