@@ -33,8 +33,14 @@
 ## initial derivatives y0(t0), y0'(t0), .. of each denominator's part.
 ## @item OutputOffset, InputOffset
 ## estimate a constant output offset c (y = x + c + e), true or false,
-## or an offset d_j of each input (u_j + d_j enters the model; default
-## false). Reported in @var{info}.offset and @var{info}.input_offset. The
+## or an offset d_j of each input (u_j + d_j enters the model). The
+## default of InputOffset, @qcode{"auto"}, fits without input offsets and,
+## when that fit does not converge to a stable model (an input offset on
+## an integrating axis drives the estimate toward an unstable pole), fits
+## again with them and keeps that fit when it converges to a stable model
+## with a smaller loss (said in @var{info}.reason; not with a given
+## initial estimate). Reported in @var{info}.offset and
+## @var{info}.input_offset. The
 ## default of OutputOffset, @qcode{"auto"}, estimates c when the record
 ## does not start at rest (the median of its first samples exceeds 5 % of
 ## the output's range: raw units, an operating point) and says so in
@@ -48,6 +54,13 @@
 ##
 ## Every iterate is kept stable (an unstable IV solution is pulled back
 ## toward the previous iterate by step halving, reflected as a last resort).
+## Convergence: a fixed point of the iteration, parameter changes below 1 %
+## of their standard errors, or a simulation loss that stays within
+## max(10 Tol, 1e-5) of itself over 5 iterations. When the loss is
+## stationary but some parameter still moves by more than its standard
+## error per iteration, the structure has directions the data do not
+## determine: the warning @code{srivc:overParameterised} says so and
+## @var{info}.determined is false (try a lower order).
 ## A model that did not converge gives the warning @code{srivc:notConverged}
 ## (and the last iterate); an unstable one @code{srivc:unstable}.
 ## Outputs: the @code{idctm} model @var{M} (with covariance, noise variance,
@@ -55,7 +68,8 @@
 ## simulation error e, the Young information criterion @var{YIC} =
 ## log(var(e)/var(y)) + log(mean(P_ii / theta_i^2)), and @var{info}
 ## (converged, stable, iterations, reason, noise_variance, lambda,
-## time_scale, starts, condition, x0, offset, input_offset, simulated).
+## time_scale, starts, condition, x0, offset, input_offset, simulated,
+## determined).
 ##
 ## @strong{Example}
 ## @example
