@@ -18,8 +18,8 @@
 ## other terms are fitted on the samples within the levels.
 ## @var{starts}: a cell of initial denominators (each of the template's
 ## order, started with the template's numerators; an empty entry is the
-## engine's automatic start); the start giving the smallest residual
-## variance is kept.
+## engine's automatic start, tried only when no given start gives a stable
+## estimate); the start giving the smallest residual variance is kept.
 ##
 ## Adds to the model: @code{theta}, @code{cov} (SRIVC covariance of the
 ## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
@@ -56,7 +56,12 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   best = [];
   for round = 1:rounds
     if (round == 1)
+      ## the given starts first; the engine's automatic start (a grid of
+      ## SVF cut-offs, the costly one) only when none of them gives a
+      ## stable estimate
       cands = starts(:)';
+      auto = cellfun ("isempty", cands);
+      cands = [cands(! auto), cands(auto)];
       if (isempty (cands))
         cands = {[]};
       endif
@@ -66,6 +71,9 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
     endif
     best = [];
     for s = 1:numel (cands)
+      if (isempty (cands{s}) && ! isempty (best))
+        break;                 # a given start gave a stable estimate
+      endif
       if (round == 1)
         B0 = {tmpl.channels.B};
       else

@@ -24,7 +24,11 @@
 ## exponential) for inputs held over the sub-step; sign(v) is re-evaluated
 ## at each sub-step from the simulated velocity v = dy/dt (or v = y for a
 ## first-order model: the output is then read as a velocity). The other
-## inputs are held over the sampling interval (ZOH).
+## inputs are held over the sampling interval (ZOH). This loop runs in
+## the core (core/include/ctid/effect_simulator.hpp, gateway
+## @code{effect_sim_mex}); in closed loop the channels of the controlled
+## first input may be the input, a power or a clipped value of it
+## (another kind is @code{residtrace:notSupported}).
 ## @end itemize
 ## With @var{thm} (N-by-np, the dynamic parameters at each sample as
 ## @code{residtrace_unpack} reads them) the model is time-varying: the
@@ -130,7 +134,8 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
           kind(j) = 6; param(j) = chans(j).param;
         otherwise
           error ("residtrace:notSupported",
-                 "residtrace: a '%s' channel of the controlled input", types{j});
+                 "residtrace: a '%s' channel of the controlled input",
+                 types{j});
       endswitch
     endfor
   endif
