@@ -35,9 +35,9 @@
 ## estimate a constant output offset c (y = x + c + e), true or false,
 ## or an offset d_j of each input (u_j + d_j enters the model). The
 ## default of InputOffset, @qcode{"auto"}, fits without input offsets and,
-## when that fit does not converge to a stable model (an input offset on
-## an integrating axis drives the estimate toward an unstable pole), fits
-## again with them and keeps that fit when it converges to a stable model
+## when that fit ends unstable or does not converge because its
+## unconstrained iterates are unstable (an input offset on an integrating
+## axis drives the estimate toward an unstable pole), fits again with them and keeps that fit when it converges to a stable model
 ## with a smaller loss (said in @var{info}.reason; not with a given
 ## initial estimate). Reported in @var{info}.offset and
 ## @var{info}.input_offset. The

@@ -94,11 +94,16 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     read_refined_options ();
   endif
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
-  if (auto_input_offset && ! (info.converged && info.stable))
+  ## the engine's words for an iterate it had to pull back into the
+  ## stable region (core/include/ctid/refined_iv.hpp, Estimator::refine)
+  pulled_back = ! isempty (strfind (info.reason,
+                                    "unconstrained estimate is unstable"));
+  if (auto_input_offset && (! info.stable || (! info.converged
+                                              && pulled_back)))
     ## An offset of the input (raw units, a force that does not average to
     ## zero on an integrating axis) drives the estimate toward an unstable
-    ## or drifting model: the fit is repeated with input offsets and kept
-    ## when it converges to a stable model with a smaller loss.
+    ## model: the fit is repeated with input offsets and kept when it
+    ## converges to a stable model with a smaller loss.
     e2 = e;
     e2.input_offset = true (1, nu);
     try
