@@ -62,7 +62,9 @@
 ## determine: the warning @code{srivc:overParameterised} says so and
 ## @var{info}.determined is false (try a lower order).
 ## A model that did not converge gives the warning @code{srivc:notConverged}
-## (and the last iterate); an unstable one @code{srivc:unstable}.
+## (and the last iterate); an unstable one @code{srivc:unstable}; one whose
+## simulation explains less than 1 % of the output's variance (R_T^2 <
+## 0.01, e.g. a fixed point at a useless model) @code{srivc:noFit}.
 ## Outputs: the @code{idctm} model @var{M} (with covariance, noise variance,
 ## iterations and converged), @var{RT2} = 1 - var(e)/var(y) of the
 ## simulation error e, the Young information criterion @var{YIC} =
@@ -150,6 +152,10 @@ endfunction
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.input_offset, 0.5, 1e-6);
 
+%!warning id=srivc:noFit
+%! randn ("state", 3);
+%! u = sign (randn (2000, 1));
+%! srivc (iddata (randn (2000, 1), u, 0.01), [1 1 0]);
 %!warning <no convergence> srivc (iddata (x + 0.3 * sin ((1:N)'), u, Ts), [1 2 0], "lambda", 3, "MaxIter", 1);
 
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "Tol", 0)

@@ -141,6 +141,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
       && ! info.determined)
     warning ([fname ":overParameterised"], "%s: %s", fname, info.reason);
   endif
+  if (refined && info.noise_variance * (n - np) / n > 0.99 * var (d.y, 1))
+    ## R_T^2 < 0.01: a fixed point of the iteration need not be a useful
+    ## model
+    warning ([fname ":noFit"],
+             ["%s: the simulated output explains less than 1 %% of the ", ...
+              "output's variance (R_T^2 < 0.01); try another structure ", ...
+              "or start"], fname);
+  endif
   M = make_model (fname, e, theta, cov, info, d, nu);
   M = simulation_fit (M, d, np, info.simulated);
   if (nargout > 1)
