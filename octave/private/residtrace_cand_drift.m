@@ -5,7 +5,8 @@
 ##
 ## Evidence on the estimation record: the model is re-estimated by SRIVC
 ## on K consecutive segments (K = 4 to 8, at least 40 samples per
-## parameter each); under a constant parameter vector the statistic
+## parameter each; the segments after the first with their initial state
+## estimated, as they do not start at rest); under a constant parameter vector the statistic
 ## sum_k (theta_k - theta_bar)' P_k^-1 (theta_k - theta_bar), theta_bar
 ## the precision-weighted mean, is chi^2 with (K - 1) np degrees of
 ## freedom; the trend of each parameter over the segments is given with
@@ -207,4 +208,5 @@ function Dk = slice (D, idx)
   Dk.vhat = D.vhat(idx, :);
   Dk.ysm = D.ysm(idx);
   Dk.loop = [];
+  Dk.initial_state = (idx(1) > 1);   # a segment does not start at rest
 endfunction

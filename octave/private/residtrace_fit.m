@@ -2,7 +2,9 @@
 ## @deftypefn {} {@var{model} =} residtrace_fit (@var{tmpl}, @var{D}, @var{ctx}, @var{starts})
 ## Estimates the parameters of the @code{residtrace} model structure
 ## @var{tmpl} on the record @var{D} (fields y, u, Ts, vhat: the velocity
-## from the measured output) by SRIVC (@code{residtrace_estimate}, the
+## from the measured output; optional initial_state: true for a record
+## that does not start at rest, whose initial state is then estimated
+## with the model) by SRIVC (@code{residtrace_estimate}, the
 ## toolbox's refined-IV engine).
 ##
 ## The channels (inputs, constant, sign of the velocity, powers, clipped
@@ -34,7 +36,9 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   N = numel (y);
   ch = residtrace_chdata (tmpl, D);
   n = numel (tmpl.F) - 1;
-  spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end));
+  spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end),
+                 "initial_state", isfield (D, "initial_state")
+                                  && D.initial_state);
   o = zeros (N, 1);
   o_lin = o;
   mask = false (N, 1);
