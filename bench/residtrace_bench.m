@@ -5,7 +5,11 @@
 ## third validating. Run from the repository root:
 ##   octave-cli -q bench/residtrace_bench.m [commit]
 ## The reference tree is exported with git archive into a temporary folder
-## and given this tree's compiled gateways.
+## and given this tree's compiled gateways (which works only while the
+## gateways' calling conventions are those of the reference: simc_mex
+## changed after e5c0877), or given as the octave/ folder of a tree with
+## its own compiled gateways:
+##   octave-cli -q bench/residtrace_bench.m /tmp/main/octave
 args = argv ();
 ref = "e5c0877";
 if (! isempty (args))
@@ -14,32 +18,48 @@ endif
 root = pwd ();
 tmp = tempname ();
 mkdir (tmp);
-system (sprintf ("git archive %s octave | tar -x -C %s", ref, tmp));
-system (sprintf ("cp %s/octave/private/*.mex %s/octave/private/", root, tmp));
-trees = {fullfile(root, "octave"), fullfile(tmp, "octave")};
+if (exist (ref, "dir"))
+  ## a tree with its own compiled gateways (its octave/ folder)
+  trees = {fullfile(root, "octave"), ref};
+else
+  system (sprintf ("git archive %s octave | tar -x -C %s", ref, tmp));
+  system (sprintf ("cp %s/octave/private/*.mex %s/octave/private/", root,
+                   tmp));
+  trees = {fullfile(root, "octave"), fullfile(tmp, "octave")};
+endif
 names = {"this tree", ["reference " ref]};
 Ns = [20000 100000];
 T = NaN (2, numel (Ns));
 E = cell (2, numel (Ns));
+## each run in its own octave-cli process (two trees' classes and private
+## functions must not meet in one session)
+job = [tempname() ".m"];
 for j = 1:numel (Ns)
   for i = 1:2
-    addpath (trees{i});
-    randn ("state", 1); rand ("state", 1);
-    N = Ns(j); Ts = 0.01;
-    u = prbs (17, 20, [-1 1], N);
-    y = simc (idctm (4, [1 1.2 4]), u, Ts) + 0.05 * randn (N, 1);
-    d = iddata (y, u, Ts);
-    M = srivc (d, [1 2 0]);
-    tic;
-    R = residtrace (d, M);
-    T(i, j) = toc;
-    E{i, j} = R.effect;
-    printf ("%-22s N = %6d: %6.1f s, effect %s\n", names{i}, N, T(i, j),
-            R.effect);
+    fid = fopen (job, "w");
+    fprintf (fid, "addpath ('%s');\n", trees{i});
+    fprintf (fid, "randn ('state', 1); rand ('state', 1);\n");
+    fprintf (fid, "N = %d; Ts = 0.01;\n", Ns(j));
+    fprintf (fid, "u = prbs (17, 20, [-1 1], N);\n");
+    fprintf (fid, ["y = simc (idctm (4, [1 1.2 4]), u, Ts) ", ...
+                   "+ 0.05 * randn (N, 1);\n"]);
+    fprintf (fid, "d = iddata (y, u, Ts);\n");
+    fprintf (fid, "M = srivc (d, [1 2 0]);\n");
+    fprintf (fid, "tic; R = residtrace (d, M); t = toc;\n");
+    fprintf (fid, "printf ('RESULT %%.3f %%s\\n', t, R.effect);\n");
+    fclose (fid);
+    [~, out] = system (sprintf ("octave-cli -q %s 2>/dev/null", job));
+    tok = regexp (out, 'RESULT (\S+) (\S+)', "tokens", "once");
+    if (! isempty (tok))
+      T(i, j) = str2double (tok{1});
+      E{i, j} = tok{2};
+    endif
+    printf ("%-22s N = %6d: %6.1f s, effect %s\n", names{i}, Ns(j), T(i, j),
+            E{i, j});
     fflush (stdout);
-    rmpath (trees{i});
   endfor
 endfor
+delete (job);
 printf ("\n| N | this tree (s) | %s (s) | speed-up |\n|---|---|---|---|\n",
         names{2});
 for j = 1:numel (Ns)

@@ -15,7 +15,9 @@
 // controller_num, controller_den (descending powers of p; with
 // discrete_controller, powers of q^-1 and r = [r1 r2]). info: converged,
 // stable, iterations, reason, noise_variance, cutoff, time_scale, starts,
-// condition, x0, offset, simulated, free_response.
+// condition, x0, offset, simulated, free_response, determined (false: the
+// simulation loss converged while parameters moved in directions the data
+// do not determine).
 #include <algorithm>
 
 #include "ctid/refined_iv.hpp"
@@ -170,8 +172,8 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                             "reason",       "noise_variance", "cutoff",
                             "time_scale",   "starts",         "condition",
                             "x0",           "offset",         "simulated",
-                            "free_response"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
+                            "free_response", "determined"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
     mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
@@ -186,6 +188,7 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     mxSetField(info, 0, "offset", mxCreateDoubleScalar(result.offset));
     mxSetField(info, 0, "simulated", column(result.simulated));
     mxSetField(info, 0, "free_response", column(result.free_response));
+    mxSetField(info, 0, "determined", mxCreateLogicalScalar(result.determined));
     plhs[2] = info;
   }
 }

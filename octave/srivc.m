@@ -37,8 +37,14 @@
 ## initial derivatives y0(t0), y0'(t0), .. of each denominator's part.
 ## @item OutputOffset, InputOffset
 ## estimate a constant output offset c (y = x + c + e), true or false,
-## or an offset d_j of each input (u_j + d_j enters the model; default
-## false). Reported in @var{info}.offset and @var{info}.input_offset. The
+## or an offset d_j of each input (u_j + d_j enters the model). The
+## default of InputOffset, @qcode{"auto"}, fits without input offsets and,
+## when that fit ends unstable or does not converge because its
+## unconstrained iterates are unstable (an input offset on an integrating
+## axis drives the estimate toward an unstable pole), fits again with them and keeps that fit when it converges to a stable model
+## with a smaller loss (said in @var{info}.reason; not with a given
+## initial estimate). Reported in @var{info}.offset and
+## @var{info}.input_offset. The
 ## default of OutputOffset, @qcode{"auto"}, estimates c when the record
 ## does not start at rest (the median of its first samples exceeds 5 % of
 ## the output's range: raw units, an operating point) and says so in
@@ -52,14 +58,24 @@
 ##
 ## Every iterate is kept stable (an unstable IV solution is pulled back
 ## toward the previous iterate by step halving, reflected as a last resort).
+## Convergence: a fixed point of the iteration, parameter changes below 1 %
+## of their standard errors, or a simulation loss that stays within
+## max(10 Tol, 1e-5) of itself over 5 iterations. When the loss is
+## stationary but some parameter still moves by more than its standard
+## error per iteration, the structure has directions the data do not
+## determine: the warning @code{srivc:overParameterised} says so and
+## @var{info}.determined is false (try a lower order).
 ## A model that did not converge gives the warning @code{srivc:notConverged}
-## (and the last iterate); an unstable one @code{srivc:unstable}.
+## (and the last iterate); an unstable one @code{srivc:unstable}; one whose
+## simulation explains less than 1 % of the output's variance (R_T^2 <
+## 0.01, e.g. a fixed point at a useless model) @code{srivc:noFit}.
 ## Outputs: the @code{idctm} model @var{M} (with covariance, noise variance,
 ## iterations and converged), @var{RT2} = 1 - var(e)/var(y) of the
 ## simulation error e, the Young information criterion @var{YIC} =
 ## log(var(e)/var(y)) + log(mean(P_ii / theta_i^2)), and @var{info}
 ## (converged, stable, iterations, reason, noise_variance, lambda,
-## time_scale, starts, condition, x0, offset, input_offset, simulated).
+## time_scale, starts, condition, x0, offset, input_offset, simulated,
+## determined).
 ##
 ## @strong{Example}
 ## @example
@@ -146,6 +162,10 @@ endfunction
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.input_offset, 0.5, 1e-6);
 
+%!warning id=srivc:noFit
+%! randn ("state", 3);
+%! u = sign (randn (2000, 1));
+%! srivc (iddata (randn (2000, 1), u, 0.01), [1 1 0]);
 %!warning <no convergence> srivc (iddata (x + 0.3 * sin ((1:N)'), u, Ts), [1 2 0], "lambda", 3, "MaxIter", 1);
 
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "Tol", 0)

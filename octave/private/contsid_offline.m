@@ -9,7 +9,9 @@
 ## between 5/T and 0.5*pi/Ts; SRIVC runs from the best starts (by
 ## simulation error) and keeps the best stable, converged result.
 ## A model that did not converge or is unstable comes with a warning
-## (@var{fname}:notConverged, @var{fname}:unstable).
+## (@var{fname}:notConverged, @var{fname}:unstable); one whose simulation
+## loss converged while parameters kept moving in directions the data do
+## not determine with @var{fname}:overParameterised.
 ## @end deftypefn
 
 function [M, RT2, YIC, info] = contsid_offline (fname, args)
@@ -29,7 +31,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     defaults = struct ("lambda_svf", [], "lambda", [], "Tol", 1e-6,
                        "MaxIter", 30, "InitMethod", "ivsvf",
                        "svf", "normalised", "InitialState", "zero",
-                       "OutputOffset", "auto", "InputOffset", false,
+                       "OutputOffset", "auto", "InputOffset", "auto",
                        "TimeScale", "auto", "MaxStarts", 3);
   else
     form = "a";
@@ -80,7 +82,6 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   if (refined)
     e.method = "srivc";
-    read_refined_options ();
   else
     e.method = fname;
   endif
@@ -88,7 +89,36 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     read_loop ();
   endif
 
+  auto_input_offset = false;
+  if (refined)
+    read_refined_options ();
+  endif
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
+  ## the engine's words for an iterate it had to pull back into the
+  ## stable region (core/include/ctid/refined_iv.hpp, Estimator::refine)
+  pulled_back = ! isempty (strfind (info.reason,
+                                    "unconstrained estimate is unstable"));
+  if (auto_input_offset && (! info.stable || (! info.converged
+                                              && pulled_back)))
+    ## An offset of the input (raw units, a force that does not average to
+    ## zero on an integrating axis) drives the estimate toward an unstable
+    ## model: the fit is repeated with input offsets and kept when it
+    ## converges to a stable model with a smaller loss.
+    e2 = e;
+    e2.input_offset = true (1, nu);
+    try
+      [theta2, cov2, info2] = contsid_refined_iv (fname, d.y, d.u, t, e2);
+      if (info2.converged && info2.stable
+          && info2.noise_variance < info.noise_variance)
+        info2.reason = sprintf (["%s; input offset(s) %s estimated (the ", ...
+                                 "fit without: %s)"], info2.reason,
+                                mat2str (info2.input_offset, 4), info.reason);
+        e = e2; theta = theta2; cov = cov2; info = info2;
+      endif
+    catch
+      ## the fit without input offsets stands, with its warning
+    end_try_catch
+  endif
 
   info.lambda = info.cutoff;
   info.output_offset = isfield (e, "output_offset") && e.output_offset;
@@ -111,6 +141,18 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     error ([fname ":numericalFailure"],
            "%s: the noise variance of the estimate is %g (unstable model?)",
            fname, info.noise_variance);
+  endif
+  if (refined && info.converged && isfield (info, "determined")
+      && ! info.determined)
+    warning ([fname ":overParameterised"], "%s: %s", fname, info.reason);
+  endif
+  if (refined && info.noise_variance * (n - np) / n > 0.99 * var (d.y, 1))
+    ## R_T^2 < 0.01: a fixed point of the iteration need not be a useful
+    ## model
+    warning ([fname ":noFit"],
+             ["%s: the simulated output explains less than 1 %% of the ", ...
+              "output's variance (R_T^2 < 0.01); try another structure ", ...
+              "or start"], fname);
   endif
   M = make_model (fname, e, theta, cov, info, d, nu);
   M = simulation_fit (M, d, np, info.simulated);
@@ -150,7 +192,12 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     else
       e.output_offset = logical_option (opts.OutputOffset, "OutputOffset", 1);
     endif
-    e.input_offset = logical_option (opts.InputOffset, "InputOffset", nu);
+    if (ischar (opts.InputOffset) && strcmpi (opts.InputOffset, "auto"))
+      e.input_offset = false (1, nu);
+      auto_input_offset = ! closed && isempty (e.theta_init);
+    else
+      e.input_offset = logical_option (opts.InputOffset, "InputOffset", nu);
+    endif
     ts = opts.TimeScale;
     if (ischar (ts) && strcmpi (ts, "auto"))
       e.time_scale = 0;

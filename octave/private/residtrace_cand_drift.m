@@ -5,11 +5,13 @@
 ##
 ## Evidence on the estimation record: the model is re-estimated by SRIVC
 ## on K consecutive segments (K = 4 to 8, at least 40 samples per
-## parameter each); under a constant parameter vector the statistic
+## parameter each; the segments after the first with their initial state
+## estimated, as they do not start at rest); under a constant parameter vector the statistic
 ## sum_k (theta_k - theta_bar)' P_k^-1 (theta_k - theta_bar), theta_bar
 ## the precision-weighted mean, is chi^2 with (K - 1) np degrees of
 ## freedom; the trend of each parameter over the segments is given with
-## its t value.
+## its t value. When that test does not reject (p >= alpha) the candidate
+## stops there (not applicable, with the test in its reason).
 ##
 ## The drifting model has random-walk parameters with a diagonal Qn,
 ## tracked by the recursive IV estimator with a Kalman filter (thesis eq.
@@ -74,6 +76,15 @@ function c = residtrace_cand_drift (cur, ctx)
   endfor
   dof = (Kk - 1) * np;
   pchi = gammainc (chi2 / 2, dof / 2, "upper");
+  if (pchi >= ctx.opts.alpha)
+    ## the segments agree: no evidence of a change on the estimation
+    ## record, and the costly tracking (Qn by maximum likelihood) is
+    ## not run
+    c.reason = sprintf (["the segment fits agree (K = %d: chi^2 = %.1f ", ...
+                         "on %d dof, p = %.2g >= alpha)"], Kk, chi2, dof,
+                        pchi);
+    return;
+  endif
   ## per-parameter trend over the segments (weighted least squares)
   slope = zeros (1, np); tval = zeros (1, np);
   for i = 1:np
@@ -197,4 +208,5 @@ function Dk = slice (D, idx)
   Dk.vhat = D.vhat(idx, :);
   Dk.ysm = D.ysm(idx);
   Dk.loop = [];
+  Dk.initial_state = (idx(1) > 1);   # a segment does not start at rest
 endfunction

@@ -78,11 +78,18 @@ function c = residtrace_cand_sinusoid (cur, ctx)
                                         w / (2 * pi), w, A, sA, g, pg));
 endfunction
 
+## Running median over windows of L samples, shortened at the ends: the
+## interior from one L-by-n matrix of windows, the 2 h end points one by one.
 function m = movmedian_ (x, L)
+  x = x(:);
   n = numel (x);
   m = zeros (n, 1);
   h = floor (L / 2);
-  for i = 1:n
+  inner = (h + 1):(n - h);
+  if (! isempty (inner))
+    m(inner) = median (x(inner + (-h:h)'), 1)';
+  endif
+  for i = [1:min(h, n), max(n - h + 1, h + 1):n]
     m(i) = median (x(max (1, i - h):min (n, i + h)));
   endfor
 endfunction

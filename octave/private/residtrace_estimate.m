@@ -13,7 +13,8 @@
 ## @var{ch}: struct array of channels with fields @code{w} (N-by-1),
 ## @code{nb}, @code{nk}, @code{rule} (@qcode{"zoh"} or @qcode{"foh"}).
 ## @var{spec}: @code{n} (order of F), @code{fixed} (1-by-n logical over
-## f1..fn) and @code{fval} (their values). @var{opts}: @code{F0} (a start
+## f1..fn), @code{fval} (their values) and optionally
+## @code{initial_state} (true: its free response estimated with the model). @var{opts}: @code{F0} (a start
 ## for F, with @code{B0} the channels' numerators (a cell, zeros where
 ## unknown); [] for the engine's automatic start), @code{maxiter},
 ## @code{tol}.
@@ -47,6 +48,9 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
   e = struct ("nf", n, "nb", nb, "nk", [ch.nk], "intersample", {{ch.rule}},
               "integrators", r, "method", "srivc", "tol", opts.tol,
               "maxiter", opts.maxiter);
+  if (isfield (spec, "initial_state") && spec.initial_state)
+    e.initial_state = true;   # a record that does not start at rest
+  endif
   if (any (fixed))
     e.fixed = fixed;
     e.fixed_values = values;

@@ -2,7 +2,9 @@
 ## @deftypefn {} {@var{model} =} residtrace_fit (@var{tmpl}, @var{D}, @var{ctx}, @var{starts})
 ## Estimates the parameters of the @code{residtrace} model structure
 ## @var{tmpl} on the record @var{D} (fields y, u, Ts, vhat: the velocity
-## from the measured output) by SRIVC (@code{residtrace_estimate}, the
+## from the measured output; optional initial_state: true for a record
+## that does not start at rest, whose initial state is then estimated
+## with the model) by SRIVC (@code{residtrace_estimate}, the
 ## toolbox's refined-IV engine).
 ##
 ## The channels (inputs, constant, sign of the velocity, powers, clipped
@@ -18,8 +20,8 @@
 ## other terms are fitted on the samples within the levels.
 ## @var{starts}: a cell of initial denominators (each of the template's
 ## order, started with the template's numerators; an empty entry is the
-## engine's automatic start); the start giving the smallest residual
-## variance is kept.
+## engine's automatic start, tried only when no given start gives a stable
+## estimate); the start giving the smallest residual variance is kept.
 ##
 ## Adds to the model: @code{theta}, @code{cov} (SRIVC covariance of the
 ## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
@@ -34,7 +36,9 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   N = numel (y);
   ch = residtrace_chdata (tmpl, D);
   n = numel (tmpl.F) - 1;
-  spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end));
+  spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end),
+                 "initial_state", isfield (D, "initial_state")
+                                  && D.initial_state);
   o = zeros (N, 1);
   o_lin = o;
   mask = false (N, 1);
@@ -56,7 +60,12 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   best = [];
   for round = 1:rounds
     if (round == 1)
+      ## the given starts first; the engine's automatic start (a grid of
+      ## SVF cut-offs, the costly one) only when none of them gives a
+      ## stable estimate
       cands = starts(:)';
+      auto = cellfun ("isempty", cands);
+      cands = [cands(! auto), cands(auto)];
       if (isempty (cands))
         cands = {[]};
       endif
@@ -66,6 +75,9 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
     endif
     best = [];
     for s = 1:numel (cands)
+      if (isempty (cands{s}) && ! isempty (best))
+        break;                 # a given start gave a stable estimate
+      endif
       if (round == 1)
         B0 = {tmpl.channels.B};
       else

@@ -24,7 +24,11 @@
 ## exponential) for inputs held over the sub-step; sign(v) is re-evaluated
 ## at each sub-step from the simulated velocity v = dy/dt (or v = y for a
 ## first-order model: the output is then read as a velocity). The other
-## inputs are held over the sampling interval (ZOH).
+## inputs are held over the sampling interval (ZOH). This loop runs in
+## the core (core/include/ctid/effect_simulator.hpp, gateway
+## @code{effect_sim_mex}); in closed loop the channels of the controlled
+## first input may be the input, a power or a clipped value of it
+## (another kind is @code{residtrace:notSupported}).
 ## @end itemize
 ## With @var{thm} (N-by-np, the dynamic parameters at each sample as
 ## @code{residtrace_unpack} reads them) the model is time-varying: the
@@ -95,108 +99,107 @@ function o = output_terms (model, x, Ts)
 endfunction
 
 function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
+  ## the core's effect-model simulator (core/include/ctid/
+  ## effect_simulator.hpp) through effect_sim_mex
   N = rows (u);
   F = model.F;
   n = numel (F) - 1;
   chans = model.channels;
   m = numel (chans);
-  ## Observable canonical form: x1 = y, x1' = -f1 x1 + x2 + b_(1) w, ...
-  A = [-F(2:end)(:), eye(n, n-1)];
-  Bc = zeros (n, m);
-  for j = 1:m
-    b = chans(j).B(:).';
-    Bc(n-numel(b)+1:n, j) = b(:);
+  closed = ! isempty (loop);
+  types = {chans.type};
+  kind = zeros (1, m);
+  param = zeros (1, m);
+  kind(strcmp (types, "signv")) = 1;
+  for j = find (strcmp (types, "signv"))
+    if (strcmp (chans(j).param, "y"))
+      kind(j) = 2;
+    endif
   endfor
-  h = Ts / substeps;
-  E = expm ([A, Bc; zeros(m, n + m)] * h);
-  Phi = E(1:n, 1:n);
-  Gam = E(1:n, n+1:end);
-  isv = strcmp ({chans.type}, "signv");
-  isy = strcmp ({chans.type}, "ypower");
-  ypw = [chans(isy).param];
-  yfrac = (ypw != fix (ypw));
+  isy = strcmp (types, "ypower");
+  kind(isy) = 3;
+  param(isy) = [chans(isy).param];
+  if (closed)
+    ## the channels of the controlled first input are formed in the loop
+    for j = find (kind == 0)
+      if (isempty (chans(j).col) || chans(j).col != 1)
+        continue;
+      endif
+      switch (types{j})
+        case "input"
+          kind(j) = 4;
+        case "power"
+          kind(j) = 5; param(j) = chans(j).param;
+        case "clip"
+          kind(j) = 6; param(j) = chans(j).param;
+        otherwise
+          error ("residtrace:notSupported",
+                 "residtrace: a '%s' channel of the controlled input",
+                 types{j});
+      endswitch
+    endfor
+  endif
+  W = zeros (N, m);
+  ex = (kind == 0);
+  if (any (ex))
+    W(:, ex) = residtrace_channels (chans(ex), u, zeros (N, 1));
+  endif
+  b = zeros (n, m);
+  for j = 1:m
+    bj = chans(j).B(:);
+    b(n-numel(bj)+1:n, j) = bj;
+  endfor
   ## the output level the powers act on: x plus an output offset
   y_off = 0;
+  poly = [0 0];
   for k = 1:numel (model.out)
-    if (strcmp (model.out(k).type, "offset"))
-      y_off += model.out(k).c(1);
-    endif
+    switch (model.out(k).type)
+      case "offset"
+        y_off += model.out(k).c(1);
+      case "poly"
+        poly = model.out(k).c(1:2);
+    endswitch
   endfor
-  vy = false (1, m);                        # Coulomb on the output itself
-  for j = find (isv)
-    vy(j) = strcmp (chans(j).param, "y");
-  endfor
-  isx = isv | isy;                          # fed by the model's own state
-  velocity_is_y = (n == 1);
-  nk = [chans.nk];
-  closed = ! isempty (loop);
-  uc = u;
-  xs = zeros (n, 1);
-  x = zeros (N, 1);
+  o = struct ("ts", Ts, "f", F(2:end) / F(1), "b", b / F(1), "kind", kind,
+              "nk", [chans.nk], "param", param, "y_off", y_off,
+              "substeps", substeps);
   if (closed)
-    cn = loop.num(:).'; cd = loop.den(:).';
-    ebuf = zeros (1, numel (cn));           # r2 - y at k, k-1, ..
-    ubuf = zeros (1, numel (cd));           # controller output at k, k-1, ..
-  endif
-  uin = find (! isx);
-  if (! closed)
-    Wpre = residtrace_channels (chans, u, zeros (N, 1));
-    for j = uin
-      Wpre(:, j) = [zeros(nk(j), 1); Wpre(1:end-nk(j), j)];
-    endfor
-  endif
-  for k = 1:N
-    if (! isempty (thm))
-      mk = residtrace_unpack (model, thm(k, :));
-      A = [-mk.F(2:end)(:), eye(n, n-1)];
-      for j = 1:m
-        b = mk.channels(j).B(:).';
-        Bc(:, j) = 0;
-        Bc(n-numel(b)+1:n, j) = b(:);
-      endfor
-      E = expm ([A, Bc; zeros(m, n + m)] * h);
-      Phi = E(1:n, 1:n);
-      Gam = E(1:n, n+1:end);
-    endif
-    x(k) = xs(1);
-    if (closed)
-      yk = xs(1) + out_at (model, xs(1), (k - 1) * Ts);
-      ebuf = [loop.r2(k) - yk, ebuf(1:end-1)];
-      c = (cn * ebuf.' - cd(2:end) * ubuf(1:end-1).') / cd(1);
-      ubuf = [c, ubuf(1:end-1)];
-      uc(k, 1) = u(k, 1) + c;
-    endif
-    ## channel values at this sample (delayed ones from the history)
-    if (closed)
-      wk = zeros (1, m);
-      for j = uin
-        kk = k - nk(j);
-        if (kk >= 1)
-          wk(j) = residtrace_channels (chans(j), uc(kk, :), 0);
-        endif
-      endfor
-    else
-      wk = Wpre(k, :);
-    endif
-    for s = 1:substeps
-      if (any (isv))
-        if (velocity_is_y)
-          v = xs(1);
-        else
-          v = A(1, :) * xs + Bc(1, ! isx) * wk(! isx).';
-        endif
-        wk(isv & ! vy) = sign (v);
-        wk(isv & vy) = sign (xs(1) + y_off);
+    o.controller_num = loop.num(:).';
+    o.controller_den = loop.den(:).';
+    o.r1 = loop.r1(:);
+    o.r2 = loop.r2(:);
+    o.poly = poly;
+    t = (0:N-1)' * Ts;
+    s = zeros (N, 1);
+    for k = 1:numel (model.out)
+      if (strcmp (model.out(k).type, "sinusoid"))
+        c = model.out(k).c;
+        s += c(1) * sin (model.out(k).omega * t) ...
+             + c(2) * cos (model.out(k).omega * t);
       endif
-      if (any (isy))
-        yk = xs(1) + y_off;
-        p = yk .^ ypw;
-        p(yfrac) = sign (yk) * abs (yk) .^ ypw(yfrac);
-        wk(isy) = p;
-      endif
-      xs = Phi * xs + Gam * wk.';
     endfor
-  endfor
+    o.s = s;
+  endif
+  if (! isempty (thm))
+    free = find (! model.fixed);
+    ft = repmat (F(2:end), N, 1);
+    ft(:, free) = thm(:, 1:numel (free));
+    bt = zeros (N, n * m);
+    off = numel (free);
+    for j = 1:m
+      nb = chans(j).nb;
+      bt(:, (j-1)*n + (n-nb+1:n)) = thm(:, off+1:off+nb);
+      off += nb;
+    endfor
+    o.f_t = ft;
+    o.b_t = bt;
+  endif
+  uc = u;
+  if (closed)
+    [x, uc(:, 1)] = effect_sim_mex ("residtrace", W, o);
+  else
+    x = effect_sim_mex ("residtrace", W, o);
+  endif
 endfunction
 
 function o = out_at (model, x, t)

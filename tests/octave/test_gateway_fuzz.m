@@ -79,6 +79,15 @@ function test_gateway_fuzz ()
   pemarx = struct ("model", "arx", "na", 2, "nb", 1, "nk", 1);
   sim = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
                 "substeps", 1, "x0", [], "noise", []);
+  ## residtrace's effect model: input, Coulomb and y^3 channels, closed
+  ## loop, per-sample coefficients
+  eff = struct ("ts", 0.1, "f", [1.2 4], "b", [0 0.5 0; 4 -1 0.1],
+                "kind", [4 1 3], "nk", [1 0 0], "param", [0 0 3],
+                "y_off", 0.1, "substeps", 2, "controller_num", [1 -0.5],
+                "controller_den", [1 -1], "r1", u, "r2", zeros (50, 1),
+                "s", zeros (50, 1), "poly", [0 0.1],
+                "f_t", repmat ([1.2 4], 50, 1),
+                "b_t", repmat ([0 4 0.5 -1 0 0.1], 50, 1));
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -87,6 +96,8 @@ function test_gateway_fuzz ()
     {"simc_mex", {"simc", u, 0.1, [2 4 4], sim}, {"na", "nb", "nk"}}
     {"pem_mex", {"tfcoe", yp, u, 0.1, pem}, {"model", "nf", "nb"}}
     {"pem_mex", {"arx", yp, u, 1, pemarx}, {"model", "na", "nb", "nk"}}
+    {"effect_sim_mex", {"residtrace", [u, u, u], eff}, ...
+     {"ts", "f", "b", "kind", "nk", "param"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf", "adg"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

@@ -123,6 +123,10 @@ struct RivResult {
   int iterations = 0;
   bool converged = false;
   bool stable = false;  // every F_g (without integrators) Hurwitz
+  // False when SRIVC converged on its simulation loss while parameters
+  // still moved by more than their standard errors: directions the data
+  // do not determine (an over-parameterised structure).
+  bool determined = true;
   std::string reason;   // why it stopped, in words
   S cutoff = 0;         // cut-off of the SVF start used (0: theta_init)
   S time_scale = 1;     // sigma of the final iterations
@@ -995,6 +999,7 @@ struct Run {
   bool converged = false;
   bool stable = false;
   bool clipped = false;  // the last iterate had to be stabilised
+  bool determined = true;
   S condition = 0;
   std::string reason;
 };
@@ -1183,7 +1188,12 @@ class Estimator {
     run.covariance = Matrix<S>::Zero(run.theta.size(), run.theta.size());
     run.converged = false;
     run.clipped = false;
+    run.determined = true;
     std::string how;
+    // The simulation losses of the last iterations (a loss that stays put
+    // while the parameters move: flat directions).
+    std::vector<S> losses;
+    constexpr int kLossWindow = 5;
     for (int it = 1; it <= s_.max_iterations; ++it) {
       const Run<S> previous = run;
       bool clipped = false;
@@ -1232,19 +1242,51 @@ class Estimator {
       // min(1 %, 1e4 Tol) of its standard error sigma_i = (cost (sum
       // zeta_f zeta_f^T)^-1)_ii^1/2 (flat directions of over-parameterised
       // structures drift slowly below the relative tolerance otherwise).
-      if (!clipped && !stalled && std::isfinite(run.cost)) {
-        S worst = 0;
+      S worst = std::numeric_limits<S>::infinity();
+      if (!clipped && std::isfinite(run.cost)) {
+        worst = 0;
         for (Eigen::Index i = 0; i < step.size(); ++i) {
           const S variance = run.cost * run.covariance(i, i);
           if (variance > 0) {
             worst = std::max(worst, std::abs(step(i)) / std::sqrt(variance));
           }
         }
+      }
+      if (!clipped && !stalled && std::isfinite(run.cost)) {
         if (worst < std::min(S(0.01), S(1e4) * s_.tolerance)) {
           run.converged = true;
           how = "changes below 1 % of the standard errors";
           break;
         }
+      }
+      // Converged on the simulation error: over the last kLossWindow
+      // iterations the loss changed by less than max(10 Tol, 1e-5) of
+      // itself (relative spread). The parameters may still move in
+      // directions that do not change the simulated output; the result
+      // says so (determined = false) when they move by more than their
+      // standard errors.
+      if (!clipped && std::isfinite(run.cost)) {
+        losses.push_back(run.cost);
+        if (static_cast<int>(losses.size()) >= kLossWindow) {
+          const auto first = losses.end() - kLossWindow;
+          const S hi = *std::max_element(first, losses.end());
+          const S lo = *std::min_element(first, losses.end());
+          if (hi - lo <= std::max(S(10) * s_.tolerance, S(1e-5)) * lo) {
+            run.converged = true;
+            run.determined = !(worst > S(1));
+            how = "simulation loss stationary over " +
+                  std::to_string(kLossWindow) + " iterations";
+            if (!run.determined) {
+              how += "; parameters still move by up to " +
+                     std::to_string(static_cast<int>(std::ceil(worst))) +
+                     " standard error(s) per iteration in directions the "
+                     "data do not determine (over-parameterised structure?)";
+            }
+            break;
+          }
+        }
+      } else {
+        losses.clear();
       }
       // A plateau of the loss reached by damped steps: the IV fixed point
       // is not approached monotonically (the model is an approximation).
@@ -1463,6 +1505,7 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
   result->noise_variance = best.cost;
   result->iterations = best.iterations;
   result->converged = best.converged;
+  result->determined = best.determined;
   result->stable = best.stable;
   result->reason = best.reason;
   result->cutoff = best_cutoff;
