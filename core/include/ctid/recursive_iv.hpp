@@ -76,6 +76,8 @@ struct RecursiveIvConfig {
   S antiwindup_gamma = 0;  // gamma of eq. (3.79); 0: no conditional updating
   S antiwindup_lambda = S(0.998);  // forgetting factor of the parallel
                                    // RLSSVF-FF (thesis Table 3.2)
+  bool covariance_guard = true;  // covariance_guard.hpp, on P and on the
+                                 // parallel RLSSVF-FF's P
 };
 
 template <typename S>
@@ -171,12 +173,12 @@ class RecursiveIv {
     }
     ls_regressor_.configure(orders, config.svf);
     update_.configure(np, UpdateForm::kStandard, config.adaptation, Matrix<S>(),
-                      config.scaling);
+                      config.scaling, config.covariance_guard);
     if (antiwindup()) {
       windup_monitor_.configure(
           np, UpdateForm::kStandard,
           ForgettingFactorAdaptation<S>(config.antiwindup_lambda), Matrix<S>(),
-          config.scaling);
+          config.scaling, config.covariance_guard);
       eigen_ = Eigen::SelfAdjointEigenSolver<Matrix<S>>(np);
     }
 
@@ -309,6 +311,11 @@ class RecursiveIv {
   const Vector<S>& theta() const { return update_.theta(); }
   const Matrix<S>& P() const { return update_.P(); }
   S kappa() const { return update_.kappa(); }
+  // What the covariance protection did to P at the last update (a
+  // CovarianceGuardAction mask; kGuardNone while held).
+  int covariance_guard() const {
+    return excited_ ? update_.covariance_guard() : int(kGuardNone);
+  }
   // r(t_k)/sigma_e^2 of the last update: 1 + phi^T P^- phi (RLSSVF stage)
   // or 1 + phi^T P^- zeta (IV stage), eq. (3.25); NaN while held.
   S innovation_scale() const {
@@ -562,6 +569,7 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
+    int covariance_guard() const { return e.covariance_guard(); }
   };
   const Status run =
       record_recursive_run(config.orders, config.svf.u_intersample, record, out,

@@ -12,7 +12,11 @@
 //   - initial-condition regressors (eqs. 3.36-3.41): theta is extended by
 //     c_1 .. c_na;
 //   - a delayed start t_s,ls (Suggested procedure 3.7): the filters run from
-//     the first sample, the estimates are updated from t_s,ls on.
+//     the first sample, the estimates are updated from t_s,ls on;
+//   - the covariance protection of the standard form (covariance_guard.hpp,
+//     on by default; not part of the thesis): P is repaired when it has
+//     lost positive definiteness and its variances are held below the
+//     range of the precision.
 //
 // RlsSvf is the online estimator (configure once, then update() per sample,
 // no allocation per sample for uniformly sampled data); run_rlssvf() runs it
@@ -58,6 +62,7 @@ struct RlsSvfConfig {
   Vector<S> scaling;    // diagonal of M_s; empty: no scaling
   bool initial_conditions = false;
   S t_s_ls = 0;  // first update at the first sample with t - t_1 >= t_s_ls
+  bool covariance_guard = true;  // covariance_guard.hpp (standard form)
 };
 
 // Parameters the estimator updates: np, plus na with initial conditions.
@@ -139,7 +144,7 @@ class LeastSquaresUpdate {
  public:
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
-                 const Vector<S>& scaling) {
+                 const Vector<S>& scaling, bool covariance_guard = true) {
     form_ = form;
     m_ = scaling;
     const bool scaled = m_.size() != 0;
@@ -147,7 +152,7 @@ class LeastSquaresUpdate {
         scaled ? scaled_adaptation(adaptation, m_) : adaptation;
     switch (form_) {
       case UpdateForm::kStandard:
-        standard_.configure(n, a);
+        standard_.configure(n, a, covariance_guard);
         break;
       case UpdateForm::kPotter:
         potter_.configure(n, a);
@@ -250,6 +255,12 @@ class LeastSquaresUpdate {
     }
   }
   UpdateForm form() const { return form_; }
+  // What the covariance protection did at the last step (standard form;
+  // the Potter and LMR forms keep P positive definite by construction).
+  int covariance_guard() const {
+    return form_ == UpdateForm::kStandard ? standard_.covariance_guard()
+                                          : int(kGuardNone);
+  }
   bool failed() const {
     return form_ == UpdateForm::kLevenbergMarquardt && lmr_.failed();
   }
@@ -329,7 +340,7 @@ class RlsSvf {
     }
     regressor_.configure(config.orders, svf);
     update_.configure(n, config.form, config.adaptation, config.lmr_gamma,
-                      config.scaling);
+                      config.scaling, config.covariance_guard);
     phi_ = Vector<S>::Zero(n);
     reset();
     return Status::Ok();
@@ -380,6 +391,11 @@ class RlsSvf {
   // False before t_s,ls.
   bool updating() const { return updating_; }
   bool failed() const { return update_.failed(); }
+  // What the covariance protection did at the last update (a
+  // CovarianceGuardAction mask; kGuardNone before t_s,ls).
+  int covariance_guard() const {
+    return updating_ ? update_.covariance_guard() : int(kGuardNone);
+  }
   const SvfRegressor<S>& regressor() const { return regressor_; }
   const RlsSvfConfig<S>& config() const { return config_; }
 
@@ -407,12 +423,14 @@ struct RecursiveOutputs {
                        // initial-condition coefficients c_i)
   S* error = nullptr;  // N: prediction error of each recursion
   S* innovation = nullptr;  // N: r(t_k)/sigma_e^2 of each recursion
+  S* guard = nullptr;  // N: what the covariance protection did to P
+                       // (covariance_guard.hpp: 0, 1 repair, 2 ceiling, 3)
 };
 
 // Runs a recursive estimator over a record. `estimator` provides
 // update(u_k, y_k, h, k) -> theta(t_k) (np model parameters first),
-// covariance() (P after it), kappa(), prediction_error() and
-// innovation_scale(). Writes THM, and when asked YH (the frozen model of
+// covariance() (P after it), kappa(), prediction_error(),
+// innovation_scale() and covariance_guard(). Writes THM, and when asked YH (the frozen model of
 // each sample simulated along the record, eq. 1.60), PSET and the rest;
 // fails if an estimate is not finite, with `hint` saying what to check.
 template <typename S, typename Estimator>
@@ -453,6 +471,7 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
     if (out.innovation != nullptr) {
       out.innovation[k] = estimator.innovation_scale();
     }
+    if (out.guard != nullptr) out.guard[k] = S(estimator.covariance_guard());
   }
   for (Eigen::Index i = 0; i < n * np; ++i) {
     if (!std::isfinite(out.thm[i])) {
@@ -482,6 +501,7 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
+    int covariance_guard() const { return e.covariance_guard(); }
   };
   status = record_recursive_run(config.orders, config.svf.u_intersample, record,
                                 out, Adapter{estimator},
