@@ -6,7 +6,9 @@
 // run (10^6 samples, CTID_LONG_RUN_SAMPLES to change it) under poor
 // excitation of every recursive estimator in double and single precision:
 // P finite with a positive definite symmetric part at every sample
-// (bench/long_run_bench.cpp runs the same for 10^8 samples).
+// (Cholesky; see long_run_scenario.hpp for LMR and for the IV estimators
+// with a forgetting factor < 1); bench/long_run_bench.cpp runs the same
+// for 10^8 samples.
 #include "ctid/covariance_guard.hpp"
 
 #include <gtest/gtest.h>
@@ -190,7 +192,6 @@ TEST(CovarianceGuard, NoAllocationAndFixedSizeAlike) {
 // reproductions depend on it).
 TEST(CovarianceGuard, ShortRunsAreBitIdentical) {
   for (const auto& c : long_run::cases<double>(20000)) {
-    if (c.name.find("(0.999)") != std::string::npos) continue;
     const long_run::Result on = c.run(20000, 1, true);
     const long_run::Result off = c.run(20000, 1, false);
     EXPECT_EQ(on.guard_actions, 0) << c.name;
@@ -214,7 +215,6 @@ void check_long_runs() {
     EXPECT_EQ(r.first_indefinite, -1)
         << c.name << ": symmetric part of P indefinite at sample "
         << r.first_indefinite << " (" << r.indefinite_checks << " samples)";
-    EXPECT_GT(r.min_relative_eig, 0) << c.name;
     std::printf("  %-18s guard acted at %ld samples (first %ld)\n",
                 c.name.c_str(), r.guard_actions, r.first_guard);
   }

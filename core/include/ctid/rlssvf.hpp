@@ -63,6 +63,13 @@ struct RlsSvfConfig {
   bool initial_conditions = false;
   S t_s_ls = 0;  // first update at the first sample with t - t_1 >= t_s_ls
   bool covariance_guard = true;  // covariance_guard.hpp (standard form)
+  // Gaps of missing samples (bridged by the caller: the record holds the
+  // present samples on their instants). An interval h > gap_interval is a
+  // gap (0: none); the filters run through it with the input held, but
+  // the input during the gap is unknown, so their states are off for a
+  // while after it: no update for gap_settle seconds after a gap.
+  S gap_interval = 0;
+  S gap_settle = 0;
 };
 
 // Parameters the estimator updates: np, plus na with initial conditions.
@@ -129,6 +136,10 @@ Status validate(const RlsSvfConfig<S>& config) {
   status = validate_update_form(config.form, config.adaptation,
                                 config.lmr_gamma, config.scaling, n);
   if (!status.ok()) return status;
+  if (!(config.gap_interval >= 0) || !std::isfinite(config.gap_interval) ||
+      !(config.gap_settle >= 0) || !std::isfinite(config.gap_settle)) {
+    return bad_input("gap_interval and gap_settle must be finite and >= 0");
+  }
   if (!(config.t_s_ls >= 0) || !std::isfinite(config.t_s_ls)) {
     return bad_input("tsls must be finite and >= 0");
   }
@@ -351,6 +362,7 @@ class RlsSvf {
     ic_regressor_.reset();
     update_.reset(config_.theta0, config_.P0);
     elapsed_ = 0;
+    since_gap_ = std::numeric_limits<S>::infinity();
     first_ = true;
     updating_ = false;
     prediction_error_ = 0;
@@ -360,7 +372,12 @@ class RlsSvf {
   // h = t_k - t_(k-1). Returns theta(t_k) (with the c_i last when initial
   // conditions are estimated).
   const Vector<S>& update(const S* u, S y, S h) {
-    if (!first_) elapsed_ += h;
+    if (!first_) {
+      elapsed_ += h;
+      since_gap_ = config_.gap_interval > 0 && h > config_.gap_interval
+                       ? S(0)
+                       : since_gap_ + h;
+    }
     first_ = false;
     regressor_.step(u, y, h);
     const Eigen::Index np = config_.orders.num_parameters();
@@ -369,7 +386,8 @@ class RlsSvf {
       ic_regressor_.step(h);
       phi_.tail(config_.orders.na) = ic_regressor_.phi();
     }
-    updating_ = elapsed_ >= config_.t_s_ls * (1 - 1e-12);
+    updating_ = elapsed_ >= config_.t_s_ls * (1 - 1e-12) &&
+                since_gap_ >= config_.gap_settle * (1 - 1e-12);
     if (updating_) {
       prediction_error_ = update_.update(phi_, regressor_.target());
     } else {
@@ -406,6 +424,7 @@ class RlsSvf {
   LeastSquaresUpdate<S> update_;
   Vector<S> phi_;
   S elapsed_ = 0;
+  S since_gap_ = std::numeric_limits<S>::infinity();
   bool first_ = true;
   bool updating_ = false;
   S prediction_error_ = 0;
