@@ -15,8 +15,8 @@
 // scale = 1/lambda or 1. zeta = phi gives the least-squares form; its
 // covariance update is done as a symmetric rank-one update so that P stays
 // exactly symmetric. After each step the covariance protection of
-// covariance_guard.hpp checks P (on by default). No allocation happens in
-// update().
+// covariance_guard.hpp checks P when asked (the estimators' default). No
+// allocation happens in update().
 #pragma once
 
 #include <cmath>
@@ -139,14 +139,19 @@ class ParameterUpdate {
  public:
   ParameterUpdate() = default;
   ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation,
-                  bool covariance_guard = true) {
+                  bool covariance_guard = false) {
     configure(np, std::move(adaptation), covariance_guard);
   }
 
   // covariance_guard: the protection of P (covariance_guard.hpp) after
-  // each step.
+  // each step. Off in the bare kernel, which keeps the exact identities
+  // of eqs. (2.29)/(2.30) (an IV P whose symmetric part is indefinite
+  // because the instruments are weakly correlated with the regressors is
+  // legitimate, and the guard would change it); the estimators
+  // (LeastSquaresUpdate: RLSSVF, RIVSVF, RSRIVC, CL*) turn it on by
+  // default through their configs.
   void configure(Eigen::Index np, Adaptation<S> adaptation,
-                 bool covariance_guard = true) {
+                 bool covariance_guard = false) {
     adaptation_ = std::move(adaptation);
     guard_.configure(np, covariance_guard);
     theta_ = Vector<S>::Zero(np);
