@@ -224,7 +224,14 @@ function s = list_or_none (c)
   endif
 endfunction
 
+## Single precision reproduces the thesis' recursions (sec. 3.5), without
+## the covariance protection (on by default; it leaves every double run
+## here untouched, but would repair the float P where it loses
+## definiteness, which is what this demo shows).
 function [thm, info] = run_method (method, data, nn, opts, prec)
+  if (strcmp (prec, "single"))
+    opts = [opts, {"covariance_guard", false}];
+  endif
   if (strcmp (method, "rlssvf"))
     [thm, ~, ~, info] = rlssvf (data, nn, opts{:}, "precision", prec);
   else

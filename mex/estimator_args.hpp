@@ -6,13 +6,16 @@
 //
 // rlssvf fields: intersample, na, nb, nk, lambda_svf, svf, adm, adg, th0,
 //   P0, form ('standard' | 'potter' | 'lmr'), Gamma (n-by-n), scaling
-//   (n-by-1 M_s), ic (estimate the initial conditions), tsls;
+//   (n-by-1 M_s), ic (estimate the initial conditions), tsls,
+//   covariance_guard (logical, default true: covariance_guard.hpp),
+//   gap_interval, gap_settle (gaps of bridged missing samples);
 // riv fields: intersample, na, nb, nk, lambda_svf, svf, adm, adg, th0, P0,
 //   method ('rivsvf' | 'rsrivc'), tsiv, dtupdate, stability ('keep' |
 //   'reflect'), mtheta_num/mtheta_den (M_theta), prefilter ('unit' |
 //   'monic'), A (1-by-na initial denominator), controller_num/
 //   controller_den and r1, r2 (closed loop), scaling, antiwindup (gamma of
-//   eq. 3.79, 0: none), antiwindup_lambda.
+//   eq. 3.79, 0: none), antiwindup_lambda, covariance_guard, gap_interval,
+//   gap_settle.
 // Absent optional fields keep the core's defaults (its config structs).
 #pragma once
 
@@ -43,6 +46,10 @@ inline void read_rlssvf_config(const Gateway& g, OptionsReader& opt,
   if (gamma.size() != 0) config->lmr_gamma = gamma;
   config->scaling = opt.matrix("scaling", n, 1);
   config->t_s_ls = opt.scalar("tsls", config->t_s_ls);
+  config->covariance_guard =
+      opt.flag("covariance_guard", config->covariance_guard);
+  config->gap_interval = opt.scalar("gap_interval", config->gap_interval);
+  config->gap_settle = opt.scalar("gap_settle", config->gap_settle);
   g.check(validate(*config));
 }
 
@@ -89,6 +96,10 @@ inline void read_riv_config(const Gateway& g, OptionsReader& opt,
   config->antiwindup_gamma = opt.scalar("antiwindup", config->antiwindup_gamma);
   config->antiwindup_lambda =
       opt.scalar("antiwindup_lambda", config->antiwindup_lambda);
+  config->covariance_guard =
+      opt.flag("covariance_guard", config->covariance_guard);
+  config->gap_interval = opt.scalar("gap_interval", config->gap_interval);
+  config->gap_settle = opt.scalar("gap_settle", config->gap_settle);
   g.check(validate(*config));
 }
 
@@ -146,6 +157,9 @@ RlsSvfConfig<T> cast(const RlsSvfConfig<double>& c) {
   out.scaling = cast<T>(c.scaling);
   out.initial_conditions = c.initial_conditions;
   out.t_s_ls = static_cast<T>(c.t_s_ls);
+  out.covariance_guard = c.covariance_guard;
+  out.gap_interval = static_cast<T>(c.gap_interval);
+  out.gap_settle = static_cast<T>(c.gap_settle);
   return out;
 }
 
@@ -170,6 +184,9 @@ RecursiveIvConfig<T> cast(const RecursiveIvConfig<double>& c) {
   out.scaling = cast<T>(c.scaling);
   out.antiwindup_gamma = static_cast<T>(c.antiwindup_gamma);
   out.antiwindup_lambda = static_cast<T>(c.antiwindup_lambda);
+  out.covariance_guard = c.covariance_guard;
+  out.gap_interval = static_cast<T>(c.gap_interval);
+  out.gap_settle = static_cast<T>(c.gap_settle);
   return out;
 }
 
@@ -206,6 +223,7 @@ class SingleBuffers {
     out_.extra = take(out.extra, n * nextra, &extra_);
     out_.error = take(out.error, n, &error_);
     out_.innovation = take(out.innovation, n, &innovation_);
+    out_.guard = take(out.guard, n, &guard_);
   }
   const RecursiveOutputs<float>& outputs() const { return out_; }
   void write() const {
@@ -216,6 +234,7 @@ class SingleBuffers {
     copy(extra_, target_.extra);
     copy(error_, target_.error);
     copy(innovation_, target_.innovation);
+    copy(guard_, target_.guard);
   }
 
  private:
@@ -231,7 +250,8 @@ class SingleBuffers {
   }
   RecursiveOutputs<double> target_;
   RecursiveOutputs<float> out_;
-  std::vector<float> thm_, yh_, pset_, kappa_, extra_, error_, innovation_;
+  std::vector<float> thm_, yh_, pset_, kappa_, extra_, error_, innovation_,
+      guard_;
 };
 
 // ---- outputs -----------------------------------------------------------

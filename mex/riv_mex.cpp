@@ -88,6 +88,7 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     out.kappa = info.add("kappa", n, 1);
     out.error = info.add("error", n, 1);
     out.innovation = info.add("innovation", n, 1);
+    out.guard = info.add("covariance_guard", n, 1);
     if (config.antiwindup_gamma != 0) {
       run.monitor_kappa = info.add("kappa_ff", n, 1);
       run.updating = info.add("updating", n, 1);

@@ -44,6 +44,7 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     out.kappa = info.add("kappa", n, 1);
     out.error = info.add("error", n, 1);
     out.innovation = info.add("innovation", n, 1);
+    out.guard = info.add("covariance_guard", n, 1);
     if (nextra > 0) out.extra = info.add("ic", n, nextra);
   }
   g.check(ctid::mex::run_in_precision(

@@ -53,6 +53,15 @@
 ## @item Missing
 ## @qcode{"bridge"} (default) or @qcode{"error"}: how a NaN in y or u (a
 ## missing sample) is treated, as in @code{rlssvf}.
+## @item GapSettle
+## seconds without update after a gap of missing samples (default 20 /
+## lambda_svf), as in @code{rlssvf}.
+## @item covariance_guard
+## true (default) or false: the protection of P after each update (and of
+## the parallel RLSSVF-FF's P with @code{antiwindup}), as in
+## @code{rlssvf}: left untouched while its symmetric part is positive
+## definite in correlation form, repaired there when it is not, variances
+## held below sqrt(realmax) of the precision.
 ## @end table
 ## The fourth output @var{info} has the number of estimates refused by the
 ## stability test, the tsiv used, @code{kappa}, the N-by-1 condition
@@ -61,7 +70,9 @@
 ## prediction error and its normalised variance 1 + phi_f^T P zeta_f, as
 ## in @code{rlssvf}), and with @code{antiwindup} @code{kappa_ff} (kappa_2
 ## of the parallel RLSSVF-FF), @code{updating} (1 where the estimates were
-## updated, 0 where held) and @code{resets}; with missing samples
+## updated, 0 where held) and @code{resets}; @code{covariance_guard},
+## @code{guard_samples} and @code{guard_first}, what the covariance
+## protection did (as in @code{rlssvf}; 0 while held); with missing samples
 ## @code{missing}, the N-by-1 logical mask of them.
 ##
 ## @strong{Algorithm.} Before tsiv: RLSSVF (eqs. 1.57/1.59). Then the IV

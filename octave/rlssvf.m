@@ -96,6 +96,16 @@
 ## Kalman filter adds Qn once per present sample, so a gap counts as one
 ## step. Not with nk > 0 (shift the input instead). With @qcode{"error"}
 ## a NaN is an error.
+## @item GapSettle
+## seconds after a gap of missing samples (an interval between present
+## samples above 1.5 times the median sampling interval) during which the
+## filters run but the estimates are not updated (default 20 /
+## lambda_svf): the input during the gap is unknown, so the filters'
+## states are off until they have settled, and an update on them would
+## leave an error that the estimator forgets slowly (never with forgetting
+## factor 1). 0 updates from the first sample after the gap.
+## @item covariance_guard
+## true (default) or false: the protection of P described below.
 ## @item precision
 ## @qcode{"double"} (default) or @qcode{"single"}: the whole recursion in
 ## single precision (on a single-precision copy of the data), as on a
@@ -120,8 +130,33 @@
 ## error y_f^(na) - phi_f^T theta(t_(k-1)) (eq. 1.55); @code{innovation},
 ## its normalised variance 1 + phi_f^T P(t_k|t_(k-1)) phi_f (eq. 3.25;
 ## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i;
-## with missing samples @code{missing} (see the option @code{Missing}).
+## @code{covariance_guard}, N-by-1, what the covariance protection did to
+## P at each recursion (0 nothing, 1 repair, 2 ceiling, 3 both), with its
+## summary @code{guard_samples} (how many samples) and @code{guard_first}
+## (the first, 0 if none); with missing samples @code{missing} (see the
+## option @code{Missing}).
 ## @end table
+##
+## @strong{Covariance protection} (option @code{covariance_guard}, default
+## true; not part of the thesis). After each update of the standard form
+## (here, and in the IV forms of @code{rivsvf}, @code{rsrivc},
+## @code{clrivsvf}, @code{clrsrivc}) P is left untouched, bit for bit, as
+## long as its symmetric part is positive definite at working precision in
+## correlation form C = D^-1 P D^-1, D = sqrt(diag P) (an LDL^T test whose
+## pivots must exceed np eps times the diagonal; O(np^2) per sample on
+## average). Under a long constant input round-off otherwise makes it
+## indefinite after millions of samples. When the test fails, the
+## eigenvalues of C below 10 np eps lambda_max(C) are raised to that level
+## and only this correction is added to P (the antisymmetric part of an IV
+## P is kept). A variance above sqrt(realmax) of the precision (or above
+## the largest of P0) scales its row and column down to it, which keeps C:
+## with a forgetting factor < 1, P grows as lambda^-k without excitation
+## (estimator windup, sec. 3.6) and would overflow. Nothing is relative to
+## the trace of P, so a badly scaled P0 (sec. 4.1) is left alone. The
+## Potter and LMR forms keep P positive definite by construction and get
+## no protection. @code{"covariance_guard", false} turns it off, as in the
+## thesis' demonstrations of lost definiteness (sec. 3.5). See
+## @file{core/include/ctid/covariance_guard.hpp}.
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
 ## InterSample rule (exact ZOH through the matrix exponential, or the
@@ -291,7 +326,8 @@ endfunction
 %!test  # missing samples: the run on the present samples, on their instants
 %! ym = y; ym(1001:1040) = NaN;                    # a gap of 2 s
 %! um = u; um(2001) = NaN;                         # and one missing input
-%! [thm, yh, pset, info] = rlssvf (ym, um, Ts, [2 1 0], "lambda_svf", 3);
+%! [thm, yh, pset, info] = rlssvf (ym, um, Ts, [2 1 0], "lambda_svf", 3, ...
+%!                                 "GapSettle", 0);
 %! miss = isnan (ym) | isnan (um);
 %! assert (info.missing, miss);
 %! t = (0:numel (u) - 1)' * Ts;
@@ -306,6 +342,23 @@ endfunction
 %! ## y is bridged linearly over the 2 s gap: its error enters a few
 %! ## updates, which forgetting factor 1 never forgets (3.5 % here)
 %! assert (thm(end, :), [2.4 4 4], 0.05 * 4);
+
+%!test  # after a gap the filters settle GapSettle s (20/lambda_svf) unused
+%! ym = y; ym(1001:1040) = NaN;
+%! thm = rlssvf (ym, u, Ts, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6);
+%! held = 1041:1040 + floor (20 / 3 / Ts);
+%! assert (thm(held, :), repmat (thm(1000, :), numel (held), 1));
+%! assert (any (thm(held(end) + 2, :) != thm(1000, :)));
+%! thm = rlssvf (ym, u, Ts, [2 1 0], "lambda_svf", 3, "GapSettle", 1);
+%! assert (thm(1041:1059, :), repmat (thm(1000, :), 19, 1));
+%! assert (any (thm(1062, :) != thm(1000, :)));
+
+%!test  # covariance protection: reported, silent here, off on request
+%! [a, ~, ~, info] = rlssvf (data, [2 1 0], "lambda_svf", 3);
+%! assert (size (info.covariance_guard), [numel(u) 1]);
+%! assert ([info.guard_samples info.guard_first], [0 0]);
+%! b = rlssvf (data, [2 1 0], "lambda_svf", 3, "covariance_guard", false);
+%! assert (a, b, 0);                    # untouched: the same bits
 
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
@@ -385,6 +438,8 @@ endfunction
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", -1)
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", [1 2])
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "covariance_guard", "yes")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "GapSettle", -1)
 %!error id=rlssvf:badInput rlssvf ()
 %!error id=rlssvf:badInput rlssvf (data)
 

@@ -15,10 +15,17 @@
 ## the bridged record does; @code{info.innovation} and @code{info.error}
 ## are 0 there (no update was made).  @var{info} gains the field
 ## @code{missing}: the @var{N}-by-1 logical mask of the missing samples.
+##
+## With or without missing samples, an @var{info} with the per-sample field
+## @code{covariance_guard} (what the covariance protection did: 0 nothing,
+## 1 repair, 2 ceiling, 3 both; 0 at a missing sample) gains its summary:
+## @code{guard_samples}, the number of samples where it acted, and
+## @code{guard_first}, the first of them (0: never).
 ## @end deftypefn
 
 function outs = contsid_expand (outs, d)
   if (! isfield (d, "missing"))
+    outs = summarise_guard (outs);
     return;
   endif
   present = ! d.missing;
@@ -35,6 +42,20 @@ function outs = contsid_expand (outs, d)
       outs{k} = x(src, :);
     endif
   endfor
+  outs = summarise_guard (outs);
+endfunction
+
+function outs = summarise_guard (outs)
+  if (numel (outs) >= 4 && isstruct (outs{4})
+      && isfield (outs{4}, "covariance_guard"))
+    acted = outs{4}.covariance_guard != 0;
+    outs{4}.guard_samples = nnz (acted);
+    first = find (acted, 1);
+    if (isempty (first))
+      first = 0;
+    endif
+    outs{4}.guard_first = first;
+  endif
 endfunction
 
 function info = expand_info (info, src, n, missing)
@@ -43,7 +64,8 @@ function info = expand_info (info, src, n, missing)
     x = info.(names{j});
     if (isnumeric (x) || islogical (x)) && rows (x) == n && n > 1
       x = x(src, :);
-      if (any (strcmp (names{j}, {"innovation", "error"})))
+      zeroed = {"innovation", "error", "covariance_guard"};
+      if (any (strcmp (names{j}, zeroed)))
         x(missing, :) = 0;
       endif
       info.(names{j}) = x;

@@ -31,7 +31,9 @@
 ## present value across the gap, a first-order-hold input is interpolated
 ## linearly, and the recursive estimators make no update at a missing
 ## sample.  @var{d} then has the extra fields @code{missing} (the
-## @var{N}-by-1 logical mask of the full record) and @code{nfull}; see
+## @var{N}-by-1 logical mask of the full record), @code{nfull} and
+## @code{gap_interval} (1.5 times the median sampling interval of the full
+## record: a longer interval between present samples is a gap); see
 ## @code{contsid_expand} for how per-sample outputs are brought back to
 ## @var{N} rows.  With @code{"Missing", "error"} a NaN is an error
 ## (@code{@var{fname}:badInput}).  Missing samples with a delay nk > 0
@@ -97,6 +99,11 @@ function d = bridge_missing (fname, d, missing, how, orders)
   present = ! missing;
   d.missing = missing;
   d.nfull = rows (d.y);
+  if (numel (d.t) > 1)
+    d.gap_interval = 1.5 * median (diff (d.t));
+  else
+    d.gap_interval = 0;
+  endif
   d.y = d.y(present);
   d.u = d.u(present, :);
   d.t = d.t(present);

@@ -20,6 +20,13 @@
 ## @item svf
 ## @qcode{"normalised"} (default, thesis eq. 3.1) or @qcode{"ordinary"}
 ## (eq. 1.19).
+## @item covariance_guard
+## logical scalar (default true): the protection of P of
+## @file{core/include/ctid/covariance_guard.hpp} after each update of the
+## standard form (see @code{rlssvf}).
+## @item GapSettle
+## seconds without update after a gap of missing samples (finite, >= 0;
+## default [] = 20 / lambda_svf).
 ## @end table
 ## @end deftypefn
 
@@ -127,6 +134,29 @@ function o = contsid_recursive_options (fname, opts, np)
            "%s: svf must be 'normalised' or 'ordinary'", fname);
   endif
   o.svf = lower (opts.svf);
+
+  cg = true;
+  if (isfield (opts, "covariance_guard"))
+    cg = opts.covariance_guard;
+  endif
+  if (! ((islogical (cg) || (isnumeric (cg) && isreal (cg))) && isscalar (cg)
+         && (cg == 0 || cg == 1)))
+    error ([fname ":badOption"], ...
+           "%s: covariance_guard must be true or false", fname);
+  endif
+  o.covariance_guard = logical (cg);
+
+  if (isfield (opts, "GapSettle"))
+    gs = opts.GapSettle;
+    if (isempty (gs))
+      gs = 20 / o.lambda_svf;
+    elseif (! (real_scalar (gs) && isfinite (gs) && gs >= 0))
+      error ([fname ":badOption"], ...
+             "%s: GapSettle must be a finite real scalar >= 0 (seconds)",
+             fname);
+    endif
+    o.GapSettle = double (gs);
+  endif
 endfunction
 
 function tf = real_scalar (x)

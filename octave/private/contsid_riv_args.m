@@ -25,7 +25,8 @@ function p = contsid_riv_args (fname, routine, varargin)
                      "dtupdate", [], "stability", "keep", "mtheta", [],
                      "prefilter", "unit", "A", [], "controller", [],
                      "r1", [], "r2", [], "scaling", [], "antiwindup", 0,
-                     "antiwindup_lambda", 0.998, "precision", "double");
+                     "antiwindup_lambda", 0.998, "precision", "double",
+                     "covariance_guard", true, "GapSettle", []);
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults,
                                               varargin{:});
   np = orders.np;
@@ -185,6 +186,8 @@ function p = contsid_riv_args (fname, routine, varargin)
   g.antiwindup = o.antiwindup;
   g.antiwindup_lambda = o.antiwindup_lambda;
   g.precision = o.precision;
+  g.covariance_guard = o.covariance_guard;
+  [g.gap_interval, g.gap_settle] = gap_options (d, o);
   p.opts = g;
 endfunction
 
@@ -273,5 +276,16 @@ function check_scalar (fname, v, what)
   if (! isnumeric (v) || ! isreal (v) || ! isscalar (v) || ! isfinite (v))
     error ([fname ":badInput"], "%s: %s must be a finite real scalar", fname,
            what);
+  endif
+endfunction
+
+## Gaps of missing samples (contsid_recursive_args bridged them): no update
+## for GapSettle seconds after each (default 20 / lambda_svf).
+function [interval, settle] = gap_options (d, o)
+  interval = 0;
+  settle = 0;
+  if (isfield (d, "gap_interval"))
+    interval = d.gap_interval;
+    settle = o.GapSettle;
   endif
 endfunction

@@ -11,7 +11,7 @@ function p = contsid_rlssvf_args (fname, varargin)
   defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
                      "P0", [], "svf", "normalised", "potter", false,
                      "Gamma", [], "scaling", [], "ic", false, "tsls", 0,
-                     "precision", "double");
+                     "precision", "double", "covariance_guard", true, "GapSettle", []);
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                              varargin{:});
   o = contsid_recursive_options (fname, opts, orders.np);
@@ -45,6 +45,8 @@ function p = contsid_rlssvf_args (fname, varargin)
   g.ic = logical (o.ic);
   g.tsls = o.tsls;
   g.precision = o.precision;
+  g.covariance_guard = o.covariance_guard;
+  [g.gap_interval, g.gap_settle] = gap_options (d, o);
   p.opts = g;
 endfunction
 
@@ -73,3 +75,14 @@ function o = extend_for_initial_conditions (o, orders)
   endif
 endfunction
 
+
+## Gaps of missing samples (contsid_recursive_args bridged them): no update
+## for GapSettle seconds after each (default 20 / lambda_svf).
+function [interval, settle] = gap_options (d, o)
+  interval = 0;
+  settle = 0;
+  if (isfield (d, "gap_interval"))
+    interval = d.gap_interval;
+    settle = o.GapSettle;
+  endif
+endfunction

@@ -14,7 +14,9 @@
 // with P- = P (+ Qn for the Kalman filter), offset = lambda or 1 and
 // scale = 1/lambda or 1. zeta = phi gives the least-squares form; its
 // covariance update is done as a symmetric rank-one update so that P stays
-// exactly symmetric. No allocation happens in update().
+// exactly symmetric. After each step the covariance protection of
+// covariance_guard.hpp checks P when asked (the estimators' default). No
+// allocation happens in update().
 #pragma once
 
 #include <cmath>
@@ -22,6 +24,7 @@
 #include <string>
 #include <variant>
 
+#include "ctid/covariance_guard.hpp"
 #include "ctid/status.hpp"
 #include "ctid/types.hpp"
 
@@ -135,12 +138,22 @@ template <typename S>
 class ParameterUpdate {
  public:
   ParameterUpdate() = default;
-  ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
-    configure(np, std::move(adaptation));
+  ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation,
+                  bool covariance_guard = false) {
+    configure(np, std::move(adaptation), covariance_guard);
   }
 
-  void configure(Eigen::Index np, Adaptation<S> adaptation) {
+  // covariance_guard: the protection of P (covariance_guard.hpp) after
+  // each step. Off in the bare kernel, which keeps the exact identities
+  // of eqs. (2.29)/(2.30) (an IV P whose symmetric part is indefinite
+  // because the instruments are weakly correlated with the regressors is
+  // legitimate, and the guard would change it); the estimators
+  // (LeastSquaresUpdate: RLSSVF, RIVSVF, RSRIVC, CL*) turn it on by
+  // default through their configs.
+  void configure(Eigen::Index np, Adaptation<S> adaptation,
+                 bool covariance_guard = false) {
     adaptation_ = std::move(adaptation);
+    guard_.configure(np, covariance_guard);
     theta_ = Vector<S>::Zero(np);
     P_ = Matrix<S>::Identity(np, np);
     p_zeta_ = Vector<S>::Zero(np);
@@ -151,6 +164,7 @@ class ParameterUpdate {
   void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
     theta_ = theta0;
     P_ = P0;
+    guard_.reset(P_);
   }
 
   // Least-squares step (zeta = phi). Returns the prediction error
@@ -172,6 +186,7 @@ class ParameterUpdate {
       for (Eigen::Index i = 0; i < j; ++i) P_(i, j) = P_(j, i);
     }
     scale_covariance();
+    guard_.apply(P_);
     return error;
   }
 
@@ -189,6 +204,7 @@ class ParameterUpdate {
     theta_ += gain_ * error;
     P_.noalias() -= gain_ * pt_phi_.transpose();
     scale_covariance();
+    guard_.apply(P_);
     return error;
   }
 
@@ -202,6 +218,9 @@ class ParameterUpdate {
   const Vector<S>& gain() const { return gain_; }
   const Matrix<S>& P() const { return P_; }
   const Adaptation<S>& adaptation() const { return adaptation_; }
+  // What the covariance protection did to P at the last step (a
+  // CovarianceGuardAction mask).
+  int covariance_guard() const { return guard_.last_action(); }
 
  private:
   void predict() {
@@ -224,6 +243,7 @@ class ParameterUpdate {
   Vector<S> pt_phi_;
   Vector<S> gain_;
   S innovation_scale_ = 1;
+  CovarianceGuard<S> guard_;
 };
 
 }  // namespace ctid

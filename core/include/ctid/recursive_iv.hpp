@@ -76,6 +76,11 @@ struct RecursiveIvConfig {
   S antiwindup_gamma = 0;  // gamma of eq. (3.79); 0: no conditional updating
   S antiwindup_lambda = S(0.998);  // forgetting factor of the parallel
                                    // RLSSVF-FF (thesis Table 3.2)
+  bool covariance_guard = true;  // covariance_guard.hpp, on P and on the
+                                 // parallel RLSSVF-FF's P
+  S gap_interval = 0;  // gaps of missing samples, as in RlsSvfConfig: no
+  S gap_settle = 0;    // update for gap_settle s after an interval above
+                       // gap_interval (0: none)
 };
 
 template <typename S>
@@ -87,6 +92,8 @@ Status validate(const RecursiveIvConfig<S>& c) {
   ls.theta0 = c.theta0;
   ls.P0 = c.P0;
   ls.scaling = c.scaling;
+  ls.gap_interval = c.gap_interval;
+  ls.gap_settle = c.gap_settle;
   Status status = validate(ls);
   if (!status.ok()) return status;
   if (c.antiwindup_gamma != 0) {
@@ -171,12 +178,12 @@ class RecursiveIv {
     }
     ls_regressor_.configure(orders, config.svf);
     update_.configure(np, UpdateForm::kStandard, config.adaptation, Matrix<S>(),
-                      config.scaling);
+                      config.scaling, config.covariance_guard);
     if (antiwindup()) {
       windup_monitor_.configure(
           np, UpdateForm::kStandard,
           ForgettingFactorAdaptation<S>(config.antiwindup_lambda), Matrix<S>(),
-          config.scaling);
+          config.scaling, config.covariance_guard);
       eigen_ = Eigen::SelfAdjointEigenSolver<Matrix<S>>(np);
     }
 
@@ -234,6 +241,8 @@ class RecursiveIv {
     theta_fb_.head(config_.orders.na) = config_.initial_denominator;
     apply_feedback_parameters();
     elapsed_ = 0;
+    since_gap_ = std::numeric_limits<S>::infinity();
+    gap_hold_ = false;
     since_refresh_ = 0;
     first_ = true;
     iv_active_ = false;
@@ -247,7 +256,11 @@ class RecursiveIv {
     if (!first_) {
       elapsed_ += h;
       since_refresh_ += h;
+      since_gap_ = config_.gap_interval > 0 && h > config_.gap_interval
+                       ? S(0)
+                       : since_gap_ + h;
     }
+    gap_hold_ = since_gap_ < config_.gap_settle * (1 - 1e-12);
     first_ = false;
     const ModelOrders& orders = config_.orders;
     const int na = orders.na;
@@ -295,6 +308,11 @@ class RecursiveIv {
       update_.reset(config_.theta0, config_.P0);
       prediction_error_ =
           ls_regressor_.target() - ls_regressor_.phi().dot(update_.theta());
+    } else if (gap_hold_) {  // filters settling after a gap: no update
+      prediction_error_ =
+          iv_active_ ? yf(na) - phi_.dot(update_.theta())
+                     : ls_regressor_.target() -
+                           ls_regressor_.phi().dot(update_.theta());
     } else if (!iv_active_) {
       prediction_error_ =
           update_.update(ls_regressor_.phi(), ls_regressor_.target());
@@ -309,11 +327,17 @@ class RecursiveIv {
   const Vector<S>& theta() const { return update_.theta(); }
   const Matrix<S>& P() const { return update_.P(); }
   S kappa() const { return update_.kappa(); }
+  // What the covariance protection did to P at the last update (a
+  // CovarianceGuardAction mask; kGuardNone while held).
+  int covariance_guard() const {
+    return excited_ && !gap_hold_ ? update_.covariance_guard()
+                                  : int(kGuardNone);
+  }
   // r(t_k)/sigma_e^2 of the last update: 1 + phi^T P^- phi (RLSSVF stage)
   // or 1 + phi^T P^- zeta (IV stage), eq. (3.25); NaN while held.
   S innovation_scale() const {
-    return excited_ ? update_.innovation_scale()
-                    : std::numeric_limits<S>::quiet_NaN();
+    return excited_ && !gap_hold_ ? update_.innovation_scale()
+                                  : std::numeric_limits<S>::quiet_NaN();
   }
   // Conditional updating (eq. 3.79): kappa_2(P) of the parallel RLSSVF-FF,
   // whether the estimates are updated, and how many times they were reset.
@@ -472,6 +496,8 @@ class RecursiveIv {
   S gain_ = 1;
   bool svf_set_ = false;
   S elapsed_ = 0, since_refresh_ = 0;
+  S since_gap_ = std::numeric_limits<S>::infinity();
+  bool gap_hold_ = false;
   bool first_ = true, iv_active_ = false;
   long rejections_ = 0;
   S prediction_error_ = 0, last_xhat_ = 0;
@@ -562,6 +588,7 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
+    int covariance_guard() const { return e.covariance_guard(); }
   };
   const Status run =
       record_recursive_run(config.orders, config.svf.u_intersample, record, out,

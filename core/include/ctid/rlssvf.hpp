@@ -12,7 +12,11 @@
 //   - initial-condition regressors (eqs. 3.36-3.41): theta is extended by
 //     c_1 .. c_na;
 //   - a delayed start t_s,ls (Suggested procedure 3.7): the filters run from
-//     the first sample, the estimates are updated from t_s,ls on.
+//     the first sample, the estimates are updated from t_s,ls on;
+//   - the covariance protection of the standard form (covariance_guard.hpp,
+//     on by default; not part of the thesis): P is repaired when it has
+//     lost positive definiteness and its variances are held below the
+//     range of the precision.
 //
 // RlsSvf is the online estimator (configure once, then update() per sample,
 // no allocation per sample for uniformly sampled data); run_rlssvf() runs it
@@ -58,6 +62,14 @@ struct RlsSvfConfig {
   Vector<S> scaling;    // diagonal of M_s; empty: no scaling
   bool initial_conditions = false;
   S t_s_ls = 0;  // first update at the first sample with t - t_1 >= t_s_ls
+  bool covariance_guard = true;  // covariance_guard.hpp (standard form)
+  // Gaps of missing samples (bridged by the caller: the record holds the
+  // present samples on their instants). An interval h > gap_interval is a
+  // gap (0: none); the filters run through it with the input held, but
+  // the input during the gap is unknown, so their states are off for a
+  // while after it: no update for gap_settle seconds after a gap.
+  S gap_interval = 0;
+  S gap_settle = 0;
 };
 
 // Parameters the estimator updates: np, plus na with initial conditions.
@@ -124,6 +136,10 @@ Status validate(const RlsSvfConfig<S>& config) {
   status = validate_update_form(config.form, config.adaptation,
                                 config.lmr_gamma, config.scaling, n);
   if (!status.ok()) return status;
+  if (!(config.gap_interval >= 0) || !std::isfinite(config.gap_interval) ||
+      !(config.gap_settle >= 0) || !std::isfinite(config.gap_settle)) {
+    return bad_input("gap_interval and gap_settle must be finite and >= 0");
+  }
   if (!(config.t_s_ls >= 0) || !std::isfinite(config.t_s_ls)) {
     return bad_input("tsls must be finite and >= 0");
   }
@@ -139,7 +155,7 @@ class LeastSquaresUpdate {
  public:
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
-                 const Vector<S>& scaling) {
+                 const Vector<S>& scaling, bool covariance_guard = true) {
     form_ = form;
     m_ = scaling;
     const bool scaled = m_.size() != 0;
@@ -147,7 +163,7 @@ class LeastSquaresUpdate {
         scaled ? scaled_adaptation(adaptation, m_) : adaptation;
     switch (form_) {
       case UpdateForm::kStandard:
-        standard_.configure(n, a);
+        standard_.configure(n, a, covariance_guard);
         break;
       case UpdateForm::kPotter:
         potter_.configure(n, a);
@@ -250,6 +266,12 @@ class LeastSquaresUpdate {
     }
   }
   UpdateForm form() const { return form_; }
+  // What the covariance protection did at the last step (standard form;
+  // the Potter and LMR forms keep P positive definite by construction).
+  int covariance_guard() const {
+    return form_ == UpdateForm::kStandard ? standard_.covariance_guard()
+                                          : int(kGuardNone);
+  }
   bool failed() const {
     return form_ == UpdateForm::kLevenbergMarquardt && lmr_.failed();
   }
@@ -329,7 +351,7 @@ class RlsSvf {
     }
     regressor_.configure(config.orders, svf);
     update_.configure(n, config.form, config.adaptation, config.lmr_gamma,
-                      config.scaling);
+                      config.scaling, config.covariance_guard);
     phi_ = Vector<S>::Zero(n);
     reset();
     return Status::Ok();
@@ -340,6 +362,7 @@ class RlsSvf {
     ic_regressor_.reset();
     update_.reset(config_.theta0, config_.P0);
     elapsed_ = 0;
+    since_gap_ = std::numeric_limits<S>::infinity();
     first_ = true;
     updating_ = false;
     prediction_error_ = 0;
@@ -349,7 +372,12 @@ class RlsSvf {
   // h = t_k - t_(k-1). Returns theta(t_k) (with the c_i last when initial
   // conditions are estimated).
   const Vector<S>& update(const S* u, S y, S h) {
-    if (!first_) elapsed_ += h;
+    if (!first_) {
+      elapsed_ += h;
+      since_gap_ = config_.gap_interval > 0 && h > config_.gap_interval
+                       ? S(0)
+                       : since_gap_ + h;
+    }
     first_ = false;
     regressor_.step(u, y, h);
     const Eigen::Index np = config_.orders.num_parameters();
@@ -358,7 +386,8 @@ class RlsSvf {
       ic_regressor_.step(h);
       phi_.tail(config_.orders.na) = ic_regressor_.phi();
     }
-    updating_ = elapsed_ >= config_.t_s_ls * (1 - 1e-12);
+    updating_ = elapsed_ >= config_.t_s_ls * (1 - 1e-12) &&
+                since_gap_ >= config_.gap_settle * (1 - 1e-12);
     if (updating_) {
       prediction_error_ = update_.update(phi_, regressor_.target());
     } else {
@@ -380,6 +409,11 @@ class RlsSvf {
   // False before t_s,ls.
   bool updating() const { return updating_; }
   bool failed() const { return update_.failed(); }
+  // What the covariance protection did at the last update (a
+  // CovarianceGuardAction mask; kGuardNone before t_s,ls).
+  int covariance_guard() const {
+    return updating_ ? update_.covariance_guard() : int(kGuardNone);
+  }
   const SvfRegressor<S>& regressor() const { return regressor_; }
   const RlsSvfConfig<S>& config() const { return config_; }
 
@@ -390,6 +424,7 @@ class RlsSvf {
   LeastSquaresUpdate<S> update_;
   Vector<S> phi_;
   S elapsed_ = 0;
+  S since_gap_ = std::numeric_limits<S>::infinity();
   bool first_ = true;
   bool updating_ = false;
   S prediction_error_ = 0;
@@ -407,12 +442,14 @@ struct RecursiveOutputs {
                        // initial-condition coefficients c_i)
   S* error = nullptr;  // N: prediction error of each recursion
   S* innovation = nullptr;  // N: r(t_k)/sigma_e^2 of each recursion
+  S* guard = nullptr;  // N: what the covariance protection did to P
+                       // (covariance_guard.hpp: 0, 1 repair, 2 ceiling, 3)
 };
 
 // Runs a recursive estimator over a record. `estimator` provides
 // update(u_k, y_k, h, k) -> theta(t_k) (np model parameters first),
-// covariance() (P after it), kappa(), prediction_error() and
-// innovation_scale(). Writes THM, and when asked YH (the frozen model of
+// covariance() (P after it), kappa(), prediction_error(),
+// innovation_scale() and covariance_guard(). Writes THM, and when asked YH (the frozen model of
 // each sample simulated along the record, eq. 1.60), PSET and the rest;
 // fails if an estimate is not finite, with `hint` saying what to check.
 template <typename S, typename Estimator>
@@ -453,6 +490,7 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
     if (out.innovation != nullptr) {
       out.innovation[k] = estimator.innovation_scale();
     }
+    if (out.guard != nullptr) out.guard[k] = S(estimator.covariance_guard());
   }
   for (Eigen::Index i = 0; i < n * np; ++i) {
     if (!std::isfinite(out.thm[i])) {
@@ -482,6 +520,7 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
+    int covariance_guard() const { return e.covariance_guard(); }
   };
   status = record_recursive_run(config.orders, config.svf.u_intersample, record,
                                 out, Adapter{estimator},
