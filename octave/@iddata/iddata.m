@@ -325,7 +325,7 @@ endfunction
 %!   here = fileparts (fileparts (which ("iddata")));
 %!   pkg unload control
 %!   unwind_protect
-%!     assert (isempty (which ("arx")));
+%!     assert (isempty (which ("moen4")));
 %!     data = iddata (y, u, 0.1, "InterSample", "foh");
 %!     assert (data.InterSample, "foh");
 %!     assert (data(1:10).y, y(1:10));

@@ -324,6 +324,18 @@ TEST(OutputError, BadInputAndNonConvergenceAreReported) {
       arx_least_squares<double>(y.data(), zero.data(), 200, 1, 1, {1}, {1}, &a)
           .code(),
       ErrorCode::kNumericalFailure);
+  // Orders near INT_MAX (their sum overflows int): refused, no allocation
+  // (the public fuzz test found a heap corruption here through tfest).
+  OeStructure huge;
+  huge.nf = 1000000000;
+  huge.nb = 1000000000;
+  OeSettings<double> fresh;
+  EXPECT_EQ(output_error(huge, fresh, make_data(y, u, 0.1), &r).code(),
+            ErrorCode::kBadInput);
+  EXPECT_EQ(arx_least_squares<double>(y.data(), u.data(), 200, 1, 1000000000,
+                                      {1000000000}, {1}, &a)
+                .code(),
+            ErrorCode::kBadInput);
 }
 
 }  // namespace

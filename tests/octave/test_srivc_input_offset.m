@@ -25,7 +25,11 @@ function test_srivc_input_offset ()
   Ts = s.t(2) - s.t(1);
   d = iddata (s.qm(:), s.gtau * s.vir(:), Ts, "InterSample", "zoh");
   lastwarn ("");
+  ## R_T^2 < 0.01 also raises srivc:noFit after srivc:notConverged; the
+  ## latter is the one checked here.
+  state = warning ("off", "srivc:noFit");
   [~, RT2a, ~, ia] = srivc (d, [1 2 0], "InputOffset", false);
+  warning (state);
   [~, id] = lastwarn ();
   printf ("InputOffset false: converged %d, stable %d, R_T^2 %.4f (%s)\n",
           ia.converged, ia.stable, RT2a, ia.reason);

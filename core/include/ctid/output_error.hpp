@@ -324,9 +324,13 @@ Status arx_least_squares(const S* y, const S* u, Eigen::Index n, int m, int na,
     return Status(ErrorCode::kDimensionMismatch,
                   "nb and nk need one entry per input");
   }
+  if (na > n) return bad_input("na must be smaller than the record");
   int np = na, start = na;
   for (int j = 0; j < m; ++j) {
     if (nb[j] < 0 || nk[j] < 0) return bad_input("nb and nk must be >= 0");
+    // Each order against the record before the sums (int overflow).
+    if (nb[j] > n || nk[j] > n)
+      return bad_input("nb and nk must be smaller than the record");
     np += nb[j];
     if (nb[j] > 0) start = std::max(start, nk[j] + nb[j] - 1);
   }
@@ -388,6 +392,10 @@ Status validate(const OeStructure& s, const OeSettings<S>& settings,
   if (d.y == nullptr || d.u == nullptr) return bad_input("no data given");
   if (s.nb < 1) return bad_input("nb must be >= 1");
   if (s.nk < 0) return bad_input("nk must be >= 0");
+  // Each order against the record before any sum of them (which would
+  // overflow int for orders near INT_MAX).
+  if (s.nf > d.num_samples || s.nb > d.num_samples || s.nk > d.num_samples)
+    return bad_input("orders and delay must be smaller than the record");
   if (s.time == OeTime::kContinuous) {
     if (s.nf < 1) return bad_input("nf must be >= 1 in continuous time");
     if (s.nb > s.nf + 1)
