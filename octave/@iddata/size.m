@@ -22,6 +22,9 @@ function varargout = size (dat, dim, varargin)
     if (! (isnumeric (dim) && isscalar (dim) && any (dim == 1:4)))
       error ("iddata:badInput", "iddata: size: 'dim' must be 1, 2, 3 or 4");
     endif
+    if (nargout > 1)
+      error ("iddata:badInput", "iddata: size (dat, dim) has one output");
+    endif
     varargout{1} = dims{dim};
   elseif (nargout == 0)
     plural = {"", "s"};
@@ -49,6 +52,7 @@ endfunction
 %! assert (size (data, 1), [5, 3]);
 %! assert (size (data, 3), 2);
 
+%!error id=iddata:badInput [a, b] = size (iddata (ones (5, 1), ones (5, 1), 1), 1)
 %!error id=iddata:badInput size (data, 5)
 %!error id=size:badInput [a, b, c, d, e] = size (data);
 

@@ -118,6 +118,7 @@ endfunction
 %! bode (idfrd (idtf (2, [1 3]), logspace (-1, 1, 20)));
 %! close (h);
 
+%!error id=bode:badInput bode (idtf (1, [1 1]), realmax)
 %!error id=bode:badInput bode (idtf (1, [1 1]), "sd")
 %!error id=bode:badInput bode (idtf (1, [1 1]), {1})
 %!error id=bode:badInput bode (idtf (1, [1 1]), struct ())

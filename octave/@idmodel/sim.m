@@ -38,9 +38,20 @@ function [y, varargout] = sim (M, data, Ts, varargin)
       y = merge (ys{:});
       return;
     endif
+    if (nargin > 2)
+      error ([P.kind ":badInput"],
+             "%s: sim (M, data) takes no third argument with iddata", P.kind);
+    endif
     info = samplinginfo (data);
     if (P.Ts == 0)
-      yv = simc (M, data);
+      ## The inputs only: the measured outputs (which may have missing
+      ## samples) play no part in a simulation.
+      try
+        yv = simc (M, data(:, [], :));
+      catch err
+        error ([P.kind ":" regexprep(err.identifier, '^.*:', "")], "%s",
+               regexprep (err.message, '^simc:', [P.kind ": sim:"]));
+      end_try_catch
     else
       yv = dt_sim (P, get (data, "InputData"), info.Ts);
     endif
@@ -148,6 +159,13 @@ function ud = shift (u, d)
     ud(d(j)+1:N, j) = u(1:N-d(j), j);
   endfor
 endfunction
+
+%!test  # the measured outputs (missing samples included) play no part
+%! u = sin ((0:39)' / 4); y = u; y(3) = NaN;
+%! M = idtf (1, [1 1]);
+%! Y = sim (M, iddata (y, u, 0.1));
+%! assert (Y.y, simc (M, u, 0.1), 1e-14);
+%!error <no third argument> sim (idtf (1, [1 1]), iddata (ones (9, 1), ones (9, 1), 0.1), 0.1)
 
 %!test  # continuous time: the same as simc; returns iddata
 %! Ts = 0.05; u = prbs (7, 4); N = numel (u);

@@ -46,6 +46,13 @@ function [sys, styles, x, opt] = parse_sys_args (fname, args)
         error ([fname ":badInput"],
                "%s: frequencies or times must be finite and >= 0", fname);
       endif
+      if (any (a(:) > 1e100))
+        ## Octave's plotting runs out of memory on such axes (and no model
+        ## response means anything there).
+        error ([fname ":badInput"],
+               "%s: frequencies or times above 1e100 are not supported",
+               fname);
+      endif
       x = double (a(:));
     else
       error ([fname ":badInput"], "%s: unexpected argument %d (%s)",
