@@ -83,7 +83,7 @@ function [u, freqs, varargout] = idinput (N, type = "rgs", band = [0, 1],
   endif
   N = double ([N(:).', 1, 1](1:3));
   [P, nu, M] = deal (N(1), N(2), N(3));
-  if (P * nu * M > 1e9)
+  if (P * nu * M > 1e8)                # 800 MB; a session must survive
     error ("idinput:badInput", "idinput: %g samples is too many",
            P * nu * M);
   endif

@@ -18,8 +18,8 @@ function [dat, varargout] = diff (dat, k = 1, varargin)
     error ("iddata:badInput",
            "iddata: diff: takes 1 or 2 arguments, not %d", nargin);
   endif
-  if (! (isnumeric (k) && isscalar (k) && isreal (k) && k >= 0
-         && k == fix (k)))
+  if (! (isnumeric (k) && isscalar (k) && isreal (k) && ! issparse (k)
+         && k >= 0 && k == fix (k)))
     error ("iddata:badInput",
            "iddata: diff: 'k' must be a non-negative integer");
   endif
@@ -48,6 +48,7 @@ endfunction
 %! assert (d.y, (3:2:19).');
 %! assert (d.Ts, 0.5);
 
+%!error id=iddata:badInput diff (iddata ((1:5).', (1:5).', 1), sparse (1))
 %!error id=iddata:badInput diff (iddata ((1:5).', (1:5).', 1), -1)
 %!error id=iddata:badInput diff (iddata ((1:5).', (1:5).', 1), 5)
 %!error id=iddata:notSupported diff (fft (iddata ((1:5).', (1:5).', 1)))

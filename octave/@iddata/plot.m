@@ -52,7 +52,7 @@ function [ax, varargout] = plot (varargin)
     hold (h(a), "off");
   endfor
   first = struct (sets{1});
-  labels = [channel_labels(first.outname, ny, "y"),
+  labels = [channel_labels(first.outname, ny, "y"), ...
             channel_labels(first.inname, nu, "u")];
   for a = 1:nax
     ylabel (h(a), labels{a});
@@ -153,6 +153,13 @@ endfunction
 %!shared fig, y, u
 %! y = sin ((0:99).' / 10);
 %! u = sign (y);
+
+%!test  # sets with different numbers of inputs: one axis per channel
+%! v = sin ((1:40)' / 5);
+%! f = figure ("visible", "off");
+%! h = plot (iddata (v, v, 1), iddata (v, [v 2*v], 1));
+%! assert (numel (h), 3);
+%! close (f);
 
 %!test
 %! fig = figure ("visible", "off");

@@ -25,8 +25,8 @@ function [Md, varargout] = c2d (M, Ts, method, varargin)
   if (P.Ts > 0)
     error ("c2d:badInput", "c2d: the model is already discrete-time");
   endif
-  if (nargin < 2 || ! isnumeric (Ts) || ! isscalar (Ts) || ! (Ts > 0)
-      || ! isfinite (Ts))
+  if (nargin < 2 || ! isnumeric (Ts) || ! isscalar (Ts) || issparse (Ts)
+      || ! (Ts > 0) || ! isfinite (Ts))
     error ("c2d:badInput", "c2d: Ts must be a finite scalar > 0");
   endif
   [G, delay] = lti_of (P, form_of (P), "c2d");
@@ -64,6 +64,7 @@ endfunction
 %! assert (class (S), "idss");
 %! assert (S.A, expm ([-1 0; 1 -2] * Ts), 1e-12);
 
+%!error id=c2d:badInput c2d (idtf (1, [1 1]), sparse (1))
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), 0.1, 3)
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), 0.1, "bogus")
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), -1)
