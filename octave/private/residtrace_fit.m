@@ -84,7 +84,7 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
         B0 = Bprev;
       endif
       o_ = struct ("F0", cands{s}, "B0", {B0}, "maxiter", ctx.maxiter,
-                   "tol", 1e-5);
+                   "tol", 1e-6);
       try
         est = residtrace_estimate (y - o, ch, D.Ts, spec, o_);
       catch
