@@ -24,7 +24,8 @@ endfunction
 %! ## first order, exact: 2 e^(-3 t)
 %! assert (impulse (idproc ("P1", "Kp", 2/3, "Tp1", 1/3), t), 2 * exp (-3 * t),
 %!         1e-12);
-%!error id=impulse:numericalFailure impulse (idtf (2, [1 3 2]), realmax)
+%!error id=impulse:badInput impulse (idtf (2, [1 3 2]), realmax)
+%!error id=impulse:numericalFailure impulse (idtf (1, [1 -1]), 1000)
 %!error id=impulse:badInput impulse (idtf (1, [1 -0.5], 0.1), 1e9)
 %!error id=impulse:badInput impulse (idtf (1, [1 1]), "sd", -1)
 
