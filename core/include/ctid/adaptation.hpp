@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "ctid/status.hpp"
@@ -131,9 +132,26 @@ S kappa_2(const Matrix<S>& P) {
   return sv(0) / sv(sv.size() - 1);
 }
 
-template <typename S>
+// The same for the fixed-size kernels (formed on request, not per sample
+// unless asked for).
+template <typename S, int N, std::enable_if_t<N != Eigen::Dynamic, int> = 0>
+S condition_number(const MatrixN<S, N>& P) {
+  return condition_number<S>(Matrix<S>(P));
+}
+template <typename S, int N, std::enable_if_t<N != Eigen::Dynamic, int> = 0>
+S kappa_2(const MatrixN<S, N>& P) {
+  return kappa_2<S>(Matrix<S>(P));
+}
+
+// NP: the number of parameters when known at compile time (fixed_size.hpp),
+// Eigen::Dynamic for the general path. The adaptation is read once, in
+// configure(): per step only its offset, scale and Qn are used.
+template <typename S, int NP = Eigen::Dynamic>
 class ParameterUpdate {
  public:
+  using Vec = VectorN<S, NP>;
+  using Mat = MatrixN<S, NP>;
+
   ParameterUpdate() = default;
   ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
     configure(np, std::move(adaptation));
@@ -141,14 +159,23 @@ class ParameterUpdate {
 
   void configure(Eigen::Index np, Adaptation<S> adaptation) {
     adaptation_ = std::move(adaptation);
-    theta_ = Vector<S>::Zero(np);
-    P_ = Matrix<S>::Identity(np, np);
-    p_zeta_ = Vector<S>::Zero(np);
-    pt_phi_ = Vector<S>::Zero(np);
-    gain_ = Vector<S>::Zero(np);
+    theta_ = Vec::Zero(np);
+    P_ = Mat::Identity(np, np);
+    p_zeta_ = Vec::Zero(np);
+    pt_phi_ = Vec::Zero(np);
+    gain_ = Vec::Zero(np);
+    offset_ = std::visit([](const auto& a) { return a.gain_offset(); },
+                         adaptation_);
+    scale_ = std::visit([](const auto& a) { return a.covariance_scale(); },
+                        adaptation_);
+    const auto* kf = std::get_if<KalmanAdaptation<S>>(&adaptation_);
+    has_qn_ = kf != nullptr && kf->qn().size() != 0;
+    qn_ = has_qn_ ? Mat(kf->qn()) : Mat::Zero(np, np);
   }
 
-  void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
+  template <typename D1, typename D2>
+  void reset(const Eigen::MatrixBase<D1>& theta0,
+             const Eigen::MatrixBase<D2>& P0) {
     theta_ = theta0;
     P_ = P0;
   }
@@ -160,7 +187,7 @@ class ParameterUpdate {
     predict();
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * phi;
-    const S denominator = offset() + phi.dot(p_zeta_);
+    const S denominator = offset_ + phi.dot(p_zeta_);
     innovation_scale_ = denominator;
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
@@ -183,7 +210,7 @@ class ParameterUpdate {
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * zeta;
     pt_phi_.noalias() = P_.transpose() * phi;
-    const S denominator = offset() + phi.dot(p_zeta_);
+    const S denominator = offset_ + phi.dot(p_zeta_);
     innovation_scale_ = denominator;
     gain_ = p_zeta_ / denominator;
     theta_ += gain_ * error;
@@ -192,37 +219,35 @@ class ParameterUpdate {
     return error;
   }
 
-  const Vector<S>& theta() const { return theta_; }
+  const Vec& theta() const { return theta_; }
   // The gain denominator of the last step, lambda (or 1) + phi^T P^- zeta:
   // for the least-squares Kalman filter the variance of the prediction error
   // over sigma_e^2, r(t_k) / sigma_e^2 of eq. (3.18)/(3.25); for the IV
   // update the quantity RSRIVC computes in its place.
   S innovation_scale() const { return innovation_scale_; }
   // Gain L(t_k) of the last step.
-  const Vector<S>& gain() const { return gain_; }
-  const Matrix<S>& P() const { return P_; }
+  const Vec& gain() const { return gain_; }
+  const Mat& P() const { return P_; }
   const Adaptation<S>& adaptation() const { return adaptation_; }
 
  private:
   void predict() {
-    std::visit([this](const auto& a) { a.predict(P_); }, adaptation_);
-  }
-  S offset() const {
-    return std::visit([](const auto& a) { return a.gain_offset(); },
-                      adaptation_);
+    if (has_qn_) P_ += qn_;
   }
   void scale_covariance() {
-    const S scale = std::visit(
-        [](const auto& a) { return a.covariance_scale(); }, adaptation_);
-    if (scale != S(1)) P_ *= scale;
+    if (scale_ != S(1)) P_ *= scale_;
   }
 
   Adaptation<S> adaptation_;
-  Vector<S> theta_;
-  Matrix<S> P_;
-  Vector<S> p_zeta_;
-  Vector<S> pt_phi_;
-  Vector<S> gain_;
+  S offset_ = 1;  // lambda (forgetting factor) or 1
+  S scale_ = 1;   // 1 / lambda or 1
+  bool has_qn_ = false;
+  Mat qn_;
+  Vec theta_;
+  Mat P_;
+  Vec p_zeta_;
+  Vec pt_phi_;
+  Vec gain_;
   S innovation_scale_ = 1;
 };
 

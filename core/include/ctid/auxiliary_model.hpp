@@ -17,7 +17,9 @@
 
 namespace ctid {
 
-template <typename S>
+// NA, NP: na and the number of parameters when known at compile time
+// (fixed_size.hpp), Eigen::Dynamic for the general path.
+template <typename S, int NA = Eigen::Dynamic, int NP = Eigen::Dynamic>
 class AuxiliaryModel {
  public:
   AuxiliaryModel() = default;
@@ -31,7 +33,7 @@ class AuxiliaryModel {
       channels_[j].configure(orders.na);
       delays_[j].configure(orders.nk[j]);
     }
-    theta_ = Vector<S>::Zero(orders.num_parameters());
+    theta_ = VectorN<S, NP>::Zero(orders.num_parameters());
   }
 
   void reset() {
@@ -52,7 +54,7 @@ class AuxiliaryModel {
     disc_.ensure(h);
     for (int j = 0; j < orders_.num_inputs(); ++j) {
       channels_[j].step(disc_, S(1), delays_[j].push(u[j]));
-      const Vector<S>& w = channels_[j].outputs();
+      const auto& w = channels_[j].outputs();
       const int nb = orders_.nb[j];
       const int offset = orders_.numerator_offset(j);
       for (int l = 0; l < nb; ++l) x += theta_(offset + l) * w(nb - 1 - l);
@@ -62,10 +64,10 @@ class AuxiliaryModel {
 
  private:
   ModelOrders orders_;
-  FilterDiscretization<S> disc_;
-  std::vector<FilterChannel<S>> channels_;
+  FilterDiscretization<S, NA> disc_;
+  std::vector<FilterChannel<S, NA>> channels_;
   std::vector<DelayLine<S>> delays_;
-  Vector<S> theta_;
+  VectorN<S, NP> theta_;
 };
 
 }  // namespace ctid

@@ -60,6 +60,38 @@ void trapezoidal_discretize(const Matrix<S>& F, const Matrix<S>& G, S h,
   Bd = lu.solve(G * (h / 2));
 }
 
+// Fixed-size kernels (order N known at compile time, fixed_size.hpp) for the
+// companion realisation, G = e_N: the same algorithms as above on stack
+// matrices. ZOH: Eigen's Pade approximant with scaling and squaring (the
+// degree chosen from the 1-norm, Higham 2005) of the (N+1)-by-(N+1)
+// augmented matrix of eq. (A.6); trapezoidal rule: the partial-pivoting LU
+// of I - h/2 F.
+template <typename S, int N>
+void zoh_discretize_companion(const MatrixN<S, N>& F, S h, MatrixN<S, N>& Phi,
+                              VectorN<S, N>& gamma) {
+  using Augmented = MatrixN<S, N + 1>;
+  Augmented augmented = Augmented::Zero();
+  augmented.template topLeftCorner<N, N>() = F * h;
+  augmented(N - 1, N) = h;
+  const Augmented e = augmented.exp();
+  Phi = e.template topLeftCorner<N, N>();
+  gamma = e.template topRightCorner<N, 1>();
+}
+
+template <typename S, int N>
+void trapezoidal_discretize_companion(const MatrixN<S, N>& F, S h,
+                                      MatrixN<S, N>& Ad, VectorN<S, N>& bd) {
+  MatrixN<S, N> work = -(h / 2) * F;
+  work.diagonal().array() += 1;
+  const Eigen::PartialPivLU<MatrixN<S, N>> lu(work);
+  work = (h / 2) * F;
+  work.diagonal().array() += 1;
+  Ad.noalias() = lu.solve(work);
+  VectorN<S, N> g = VectorN<S, N>::Zero();
+  g(N - 1) = h / 2;
+  bd.noalias() = lu.solve(g);
+}
+
 // Companion (controllable canonical) matrix of the monic polynomial
 // D(p) = p^n + d1 p^(n-1) + ... + dn, with state z = [w, w', .., w^(n-1)]
 // for D(p) w = s.

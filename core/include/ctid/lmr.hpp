@@ -22,25 +22,31 @@
 
 namespace ctid {
 
-template <typename S>
+// NP: the number of parameters when known at compile time (fixed_size.hpp),
+// Eigen::Dynamic for the general path.
+template <typename S, int NP = Eigen::Dynamic>
 class LmrUpdate {
  public:
+  using Vec = VectorN<S, NP>;
+  using Mat = MatrixN<S, NP>;
+
   void configure(Eigen::Index np, S lambda, const Matrix<S>& gamma) {
     lambda_ = lambda;
     gamma_ = (gamma + gamma.transpose()) / 2;
-    theta_ = Vector<S>::Zero(np);
-    R_ = Matrix<S>::Identity(np, np);
-    P_ = Matrix<S>::Identity(np, np);
-    work_ = Vector<S>::Zero(np);
-    llt_ = Eigen::LLT<Matrix<S>>(np);
+    theta_ = Vec::Zero(np);
+    R_ = Mat::Identity(np, np);
+    P_ = Mat::Identity(np, np);
+    work_ = Vec::Zero(np);
+    llt_ = Eigen::LLT<Mat>(np);
   }
 
   // R(t_0) = P0^-1 (P0 positive definite, see validate_covariance).
-  void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
+  template <typename D1>
+  void reset(const Eigen::MatrixBase<D1>& theta0, const Matrix<S>& P0) {
     theta_ = theta0;
     const Eigen::Index np = P0.rows();
     R_ = Eigen::LLT<Matrix<S>>(P0).solve(Matrix<S>::Identity(np, np));
-    R_ = (R_ + R_.transpose()) / 2;
+    R_ = Mat((R_ + R_.transpose()) / 2);  // evaluated first: no aliasing
     failed_ = false;
   }
 
@@ -67,13 +73,13 @@ class LmrUpdate {
     return error;
   }
 
-  const Vector<S>& theta() const { return theta_; }
-  const Matrix<S>& information() const { return R_; }
+  const Vec& theta() const { return theta_; }
+  const Mat& information() const { return R_; }
   // P(t_k) = R(t_k)^-1, formed on request.
-  const Matrix<S>& P() const {
+  const Mat& P() const {
     const Eigen::Index np = R_.rows();
-    P_ = Eigen::LLT<Matrix<S>>(R_).solve(Matrix<S>::Identity(np, np));
-    P_ = (P_ + P_.transpose()) / 2;
+    P_ = Eigen::LLT<Mat>(R_).solve(Mat::Identity(np, np));
+    P_ = Mat((P_ + P_.transpose()) / 2);
     return P_;
   }
   S condition_number() const { return ctid::condition_number<S>(R_); }
@@ -81,12 +87,12 @@ class LmrUpdate {
 
  private:
   S lambda_ = 1;
-  Matrix<S> gamma_;
-  Vector<S> theta_;
-  Matrix<S> R_;
-  mutable Matrix<S> P_;
-  Vector<S> work_;
-  Eigen::LLT<Matrix<S>> llt_;
+  Mat gamma_;
+  Vec theta_;
+  Mat R_;
+  mutable Mat P_;
+  Vec work_;
+  Eigen::LLT<Mat> llt_;
   bool failed_ = false;
 };
 

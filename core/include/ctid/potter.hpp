@@ -37,6 +37,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "ctid/adaptation.hpp"
@@ -80,11 +81,22 @@ S condition_number_from_square_root(const Matrix<S>& sqrt_P) {
   return ratio * ratio;
 }
 
-template <typename S>
+template <typename S, int N, std::enable_if_t<N != Eigen::Dynamic, int> = 0>
+S condition_number_from_square_root(const MatrixN<S, N>& sqrt_P) {
+  return condition_number_from_square_root<S>(Matrix<S>(sqrt_P));
+}
+
+// NP: the number of parameters when known at compile time (fixed_size.hpp;
+// NP >= 2), Eigen::Dynamic for the general path.
+template <typename S, int NP = Eigen::Dynamic>
 class PotterUpdate {
  public:
+  // [S^T; Qn^(T/2)]: at most 2 NP rows.
   using RowMatrix =
-      Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      Eigen::Matrix<S, Eigen::Dynamic, NP, Eigen::RowMajor,
+                    NP == Eigen::Dynamic ? Eigen::Dynamic : 2 * NP, NP>;
+  using Vec = VectorN<S, NP>;
+  using Mat = MatrixN<S, NP>;
 
   PotterUpdate() = default;
   PotterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
@@ -107,19 +119,20 @@ class PotterUpdate {
     qn_root_t_ = qn.size() == 0
                      ? Matrix<S>(0, np)
                      : Matrix<S>(semidefinite_square_root(qn).transpose());
-    theta_ = Vector<S>::Zero(np);
-    S_ = Matrix<S>::Identity(np, np);
-    P_ = Matrix<S>::Identity(np, np);
+    theta_ = Vec::Zero(np);
+    S_ = Mat::Identity(np, np);
+    P_ = Mat::Identity(np, np);
     stacked_ = RowMatrix::Zero(np + qn_root_t_.rows(), np);
     stacked_.topRows(np).setIdentity();
-    f_ = Vector<S>::Zero(np);
-    s_f_ = Vector<S>::Zero(np);
-    gain_ = Vector<S>::Zero(np);
+    f_ = Vec::Zero(np);
+    s_f_ = Vec::Zero(np);
+    gain_ = Vec::Zero(np);
   }
 
   // S(t_0) is the Cholesky factor of P0; a P0 that is only semi-definite
   // (within rounding) gets its eigen-based square root instead.
-  void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
+  template <typename D1>
+  void reset(const Eigen::MatrixBase<D1>& theta0, const Matrix<S>& P0) {
     const Eigen::LLT<Matrix<S>> llt(P0);
     if (llt.info() == Eigen::Success) {
       reset_square_root(theta0, llt.matrixL());
@@ -132,7 +145,9 @@ class PotterUpdate {
   }
 
   // Starts from a given square root, P0 = S0 S0^T.
-  void reset_square_root(const Vector<S>& theta0, const Matrix<S>& S0) {
+  template <typename D1>
+  void reset_square_root(const Eigen::MatrixBase<D1>& theta0,
+                         const Matrix<S>& S0) {
     theta_ = theta0;
     stacked_.topRows(S0.rows()) = S0.transpose();
   }
@@ -174,18 +189,18 @@ class PotterUpdate {
     return condition_number_from_square_root(sqrt_P());
   }
 
-  const Vector<S>& theta() const { return theta_; }
+  const Vec& theta() const { return theta_; }
   // Gain L(t_k) of the last step, eq. (3.73h).
-  const Vector<S>& gain() const { return gain_; }
+  const Vec& gain() const { return gain_; }
   // S(t_k), formed on request; not unique (any S Q with Q orthogonal gives
   // the same P).
-  const Matrix<S>& sqrt_P() const {
+  const Mat& sqrt_P() const {
     S_ = stacked_.topRows(theta_.size()).transpose();
     return S_;
   }
   // P(t_k) = S S^T, formed on request (exactly symmetric).
-  const Matrix<S>& P() const {
-    const Matrix<S>& root = sqrt_P();
+  const Mat& P() const {
+    const Mat& root = sqrt_P();
     P_.noalias() = root * root.transpose();
     for (Eigen::Index j = 1; j < P_.cols(); ++j) {
       for (Eigen::Index i = 0; i < j; ++i) P_(i, j) = P_(j, i);
@@ -237,16 +252,16 @@ class PotterUpdate {
   Adaptation<S> adaptation_;
   S lambda_ = 1;  // forgetting factor (1 for the Kalman filter)
   S innovation_scale_ = 1;
-  Matrix<S> qn_root_t_;  // Qn^(T/2), rank-by-np
-  Vector<S> theta_;
-  mutable Matrix<S> S_;
-  mutable Matrix<S> P_;
+  RowMatrix qn_root_t_;  // Qn^(T/2), rank-by-np
+  Vec theta_;
+  mutable Mat S_;
+  mutable Mat P_;
   // [S^T; Qn^(T/2)], row-major: the top rows are S^T (the state), the
   // bottom ones the workspace of the time update.
   RowMatrix stacked_;
-  Vector<S> f_;
-  Vector<S> s_f_;
-  Vector<S> gain_;
+  Vec f_;
+  Vec s_f_;
+  Vec gain_;
 };
 
 }  // namespace ctid

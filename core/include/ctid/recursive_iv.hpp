@@ -76,6 +76,9 @@ struct RecursiveIvConfig {
   S antiwindup_gamma = 0;  // gamma of eq. (3.79); 0: no conditional updating
   S antiwindup_lambda = S(0.998);  // forgetting factor of the parallel
                                    // RLSSVF-FF (thesis Table 3.2)
+  // run_recursive_iv(): compile-time kernels for one input and na <= 4
+  // (fixed_size.hpp); false forces the general dynamic-size path.
+  bool fixed_size = true;
 };
 
 template <typename S>
@@ -146,12 +149,22 @@ Status validate(const RecursiveIvConfig<S>& c) {
   return Status::Ok();
 }
 
-template <typename S>
+// NA, NP: na and np when known at compile time (fixed_size.hpp; one input),
+// Eigen::Dynamic for the general path.
+template <typename S, int NA = Eigen::Dynamic, int NP = Eigen::Dynamic>
 class RecursiveIv {
  public:
+  using Theta = VectorN<S, NP>;
+  using Covariance = MatrixN<S, NP>;
+
   Status configure(const RecursiveIvConfig<S>& config) {
     const Status status = validate(config);
     if (!status.ok()) return status;
+    if (!sizes_match<NA, NP>(config.orders, 0)) {
+      return bad_input(
+          "the orders do not fit the compile-time sizes of this "
+          "RecursiveIv; use the dynamic-size one");
+    }
     config_ = config;
     const ModelOrders& orders = config.orders;
     const int na = orders.na;
@@ -177,7 +190,7 @@ class RecursiveIv {
           np, UpdateForm::kStandard,
           ForgettingFactorAdaptation<S>(config.antiwindup_lambda), Matrix<S>(),
           config.scaling);
-      eigen_ = Eigen::SelfAdjointEigenSolver<Matrix<S>>(np);
+      eigen_ = Eigen::SelfAdjointEigenSolver<Covariance>(np);
     }
 
     // Fixed SVF (RIVSVF) or adaptive prefilter (RSRIVC) on y, x_hat
@@ -203,10 +216,10 @@ class RecursiveIv {
     m_filters_.assign(np, DiscreteFilter<S>());
     for (auto& f : m_filters_) f.configure(config_.m_theta);
     hurwitz_.configure(na);
-    phi_ = Vector<S>::Zero(np);
-    zeta_ = Vector<S>::Zero(np);
-    theta_m_ = Vector<S>::Zero(np);
-    theta_fb_ = Vector<S>::Zero(np);
+    phi_ = Theta::Zero(np);
+    zeta_ = Theta::Zero(np);
+    theta_m_ = Theta::Zero(np);
+    theta_fb_ = Theta::Zero(np);
     reset();
     return Status::Ok();
   }
@@ -243,7 +256,7 @@ class RecursiveIv {
 
   // One recursion: u(t_k) (one value per input), y(t_k), h = t_k - t_(k-1),
   // and in closed loop the external signals r1(t_k), r2(t_k).
-  const Vector<S>& update(const S* u, S y, S h, S r1 = 0, S r2 = 0) {
+  const Theta& update(const S* u, S y, S h, S r1 = 0, S r2 = 0) {
     if (!first_) {
       elapsed_ += h;
       since_refresh_ += h;
@@ -266,8 +279,8 @@ class RecursiveIv {
                                        : open_loop_auxiliary(u);
     y_channel_.step(signal_disc_, gain_, y);
     xhat_channel_.step(signal_disc_, gain_, xhat);
-    const Vector<S>& yf = y_channel_.outputs();
-    const Vector<S>& xf = xhat_channel_.outputs();
+    const auto& yf = y_channel_.outputs();
+    const auto& xf = xhat_channel_.outputs();
     for (int i = 0; i < na; ++i) {
       phi_(i) = -yf(na - 1 - i);
       zeta_(i) = -xf(na - 1 - i);
@@ -275,14 +288,14 @@ class RecursiveIv {
     int offset = na;
     for (int j = 0; j < nu; ++j) {
       input_channels_[j].step(input_filter(), gain_, delays_[j].push(u[j]));
-      const Vector<S>& uf = input_channels_[j].outputs();
+      const auto& uf = input_channels_[j].outputs();
       const int nb = orders.nb[j];
       for (int l = 0; l < nb; ++l) phi_(offset + l) = uf(nb - 1 - l);
       offset += nb;
     }
     const Eigen::Index nnum = phi_.size() - na;
     if (config_.closed_loop) {  // instruments from u_hat, eq. (2.51)
-      const Vector<S>& uhf = uhat_channel_.outputs();
+      const auto& uhf = uhat_channel_.outputs();
       const int nb = orders.nb[0];
       for (int l = 0; l < nb; ++l) zeta_(na + l) = uhf(nb - 1 - l);
     } else {  // eq. (2.17): the input part of zeta is u_f itself
@@ -304,10 +317,10 @@ class RecursiveIv {
     feed_back(update_.theta());
     return update_.theta();
   }
-  const Vector<S>& update(S u, S y) { return update(&u, y, config_.ts); }
+  const Theta& update(S u, S y) { return update(&u, y, config_.ts); }
 
-  const Vector<S>& theta() const { return update_.theta(); }
-  const Matrix<S>& P() const { return update_.P(); }
+  const Theta& theta() const { return update_.theta(); }
+  const Covariance& P() const { return update_.P(); }
   S kappa() const { return update_.kappa(); }
   // r(t_k)/sigma_e^2 of the last update: 1 + phi^T P^- phi (RLSSVF stage)
   // or 1 + phi^T P^- zeta (IV stage), eq. (3.25); NaN while held.
@@ -321,7 +334,7 @@ class RecursiveIv {
   bool updating() const { return excited_; }
   long resets() const { return resets_; }
   // The estimate that currently drives the auxiliary model and prefilter.
-  const Vector<S>& feedback_parameters() const { return theta_fb_; }
+  const Theta& feedback_parameters() const { return theta_fb_; }
   bool iv_active() const { return iv_active_; }
   long stability_rejections() const { return rejections_; }
   S prediction_error() const { return prediction_error_; }
@@ -393,11 +406,12 @@ class RecursiveIv {
 
   // The input's filter: RSRIVC's prefilter has the auxiliary model's
   // denominator and rule, so the two share one discretisation.
-  const FilterDiscretization<S>& input_filter() const {
+  const FilterDiscretization<S, NA>& input_filter() const {
     return config_.method == IvMethod::kRsrivc ? aux_disc_ : input_disc_;
   }
 
-  S numerator_output(int j, const Vector<S>& w) const {
+  template <typename Outputs>
+  S numerator_output(int j, const Outputs& w) const {
     const int nb = config_.orders.nb[j];
     const int offset = config_.orders.numerator_offset(j);
     S x = 0;
@@ -406,7 +420,7 @@ class RecursiveIv {
   }
 
   // M_theta, stability test, refresh of auxiliary model and prefilter.
-  void feed_back(const Vector<S>& theta) {
+  void feed_back(const Theta& theta) {
     const Eigen::Index np = theta.size();
     for (Eigen::Index i = 0; i < np; ++i)
       theta_m_(i) = m_filters_[i].step(theta(i));
@@ -453,22 +467,22 @@ class RecursiveIv {
   }
 
   RecursiveIvConfig<S> config_;
-  SvfRegressor<S> ls_regressor_;
-  LeastSquaresUpdate<S> update_;
-  LeastSquaresUpdate<S> windup_monitor_;
-  Eigen::SelfAdjointEigenSolver<Matrix<S>> eigen_;
+  SvfRegressor<S, NA, NP> ls_regressor_;
+  LeastSquaresUpdate<S, NP> update_;
+  LeastSquaresUpdate<S, NP> windup_monitor_;
+  Eigen::SelfAdjointEigenSolver<Covariance> eigen_;
   S monitor_kappa_ = 1;
   bool armed_ = false, excited_ = true;
   S stage_start_ = 0;
   long resets_ = 0;
-  FilterDiscretization<S> signal_disc_, input_disc_, aux_disc_;
-  FilterChannel<S> y_channel_, xhat_channel_, uhat_channel_;
-  std::vector<FilterChannel<S>> input_channels_, aux_channels_;
+  FilterDiscretization<S, NA> signal_disc_, input_disc_, aux_disc_;
+  FilterChannel<S, NA> y_channel_, xhat_channel_, uhat_channel_;
+  std::vector<FilterChannel<S, NA>> input_channels_, aux_channels_;
   std::vector<DelayLine<S>> delays_, aux_delays_;
   std::vector<DiscreteFilter<S>> m_filters_;
   DiscreteFilter<S> controller_;
   HurwitzTest<S> hurwitz_;
-  Vector<S> phi_, zeta_, theta_m_, theta_fb_;
+  Theta phi_, zeta_, theta_m_, theta_fb_;
   S gain_ = 1;
   bool svf_set_ = false;
   S elapsed_ = 0, since_refresh_ = 0;
@@ -505,6 +519,13 @@ struct AntiWindupOutputs {
 // Runs a RecursiveIv over a record (see run_rlssvf for the outputs).
 // `rejections` (optional) receives the number of estimates refused by the
 // stability test.
+template <typename S, int NA, int NP>
+Status run_recursive_iv_sized(const RecursiveIvConfig<S>& config,
+                              const RecordView<S>& record,
+                              const ClosedLoopSignals<S>& loop,
+                              const RecursiveOutputs<S>& out, long* rejections,
+                              AntiWindupOutputs<S>* windup);
+
 template <typename S>
 Status run_recursive_iv(const RecursiveIvConfig<S>& config,
                         const RecordView<S>& record,
@@ -539,34 +560,50 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
       }
     }
   }
+  return with_fixed_sizes(config.orders, config.fixed_size,
+                          [&](auto na, auto np) {
+                            return run_recursive_iv_sized<
+                                S, decltype(na)::value, decltype(np)::value>(
+                                config, record, loop, out, rejections, windup);
+                          });
+}
+
+// run_recursive_iv() with the sizes chosen (fixed_size.hpp), after the
+// checks of the record.
+template <typename S, int NA, int NP>
+Status run_recursive_iv_sized(const RecursiveIvConfig<S>& config,
+                              const RecordView<S>& record,
+                              const ClosedLoopSignals<S>& loop,
+                              const RecursiveOutputs<S>& out, long* rejections,
+                              AntiWindupOutputs<S>* windup) {
   RecursiveIvConfig<S> adjusted = config;
   adjusted.ts = record.ts;
-  RecursiveIv<S> estimator;
-  status = estimator.configure(adjusted);
+  RecursiveIv<S, NA, NP> estimator;
+  const Status status = estimator.configure(adjusted);
   if (!status.ok()) return status;
   struct Adapter {
-    RecursiveIv<S>& e;
+    RecursiveIv<S, NA, NP>& e;
     const ClosedLoopSignals<S>& loop;
     AntiWindupOutputs<S>* windup;
-    const Vector<S>& update(const S* u, S y, S h, Eigen::Index k) {
+    const auto& update(const S* u, S y, S h, Eigen::Index k) {
       const S r1 = loop.r1 ? loop.r1[k] : S(0);
       const S r2 = loop.r2 ? loop.r2[k] : S(0);
-      const Vector<S>& theta = e.update(u, y, h, r1, r2);
+      const auto& theta = e.update(u, y, h, r1, r2);
       if (windup != nullptr) {
         if (windup->monitor_kappa) windup->monitor_kappa[k] = e.monitor_kappa();
         if (windup->updating) windup->updating[k] = e.updating() ? 1 : 0;
       }
       return theta;
     }
-    const Matrix<S>& covariance() const { return e.P(); }
+    const auto& covariance() const { return e.P(); }
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
   };
-  const Status run =
-      record_recursive_run(config.orders, config.svf.u_intersample, record, out,
-                           Adapter{estimator, loop, windup},
-                           "the scaling of the data, lambda_svf and tsiv");
+  const Status run = record_recursive_run_sized<NA, NP>(
+      config.orders, config.svf.u_intersample, record, out,
+      Adapter{estimator, loop, windup},
+      "the scaling of the data, lambda_svf and tsiv");
   if (rejections != nullptr) *rejections = estimator.stability_rejections();
   if (windup != nullptr) windup->resets = estimator.resets();
   return run;

@@ -24,9 +24,11 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "ctid/adaptation.hpp"
 #include "ctid/auxiliary_model.hpp"
+#include "ctid/fixed_size.hpp"
 #include "ctid/lmr.hpp"
 #include "ctid/potter.hpp"
 #include "ctid/record.hpp"
@@ -58,6 +60,9 @@ struct RlsSvfConfig {
   Vector<S> scaling;    // diagonal of M_s; empty: no scaling
   bool initial_conditions = false;
   S t_s_ls = 0;  // first update at the first sample with t - t_1 >= t_s_ls
+  // run_rlssvf(): compile-time kernels for one input and na <= 4
+  // (fixed_size.hpp); false forces the general dynamic-size path.
+  bool fixed_size = true;
 };
 
 // Parameters the estimator updates: np, plus na with initial conditions.
@@ -134,9 +139,12 @@ Status validate(const RlsSvfConfig<S>& config) {
 // forms, with optional signal scaling: update() takes the unscaled phi_f,
 // theta() and P() are unscaled, kappa() is kappa_2 of the matrix actually
 // propagated (P_s, S_s S_s^T or R_s).
-template <typename S>
+template <typename S, int NP = Eigen::Dynamic>
 class LeastSquaresUpdate {
  public:
+  using Vec = VectorN<S, NP>;
+  using Mat = MatrixN<S, NP>;
+
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
                  const Vector<S>& scaling) {
@@ -159,10 +167,10 @@ class LeastSquaresUpdate {
                    : gamma);
         break;
     }
-    phi_s_ = Vector<S>::Zero(n);
-    zeta_s_ = Vector<S>::Zero(n);
-    theta_ = Vector<S>::Zero(n);
-    P_ = Matrix<S>::Zero(n, n);
+    phi_s_ = Vec::Zero(n);
+    zeta_s_ = Vec::Zero(n);
+    theta_ = Vec::Zero(n);
+    P_ = Mat::Zero(n, n);
   }
 
   // Unscaled theta(t_0) and P(t_0).
@@ -178,7 +186,7 @@ class LeastSquaresUpdate {
   // Least-squares step on phi_f; returns the prediction error.
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
-    const Vector<S>& p = scaled_regressor(phi, phi_s_);
+    const Vec& p = scaled_regressor(phi, phi_s_);
     S error = 0;
     switch (form_) {
       case UpdateForm::kStandard:
@@ -200,17 +208,17 @@ class LeastSquaresUpdate {
   template <typename D1, typename D2>
   S update(const Eigen::MatrixBase<D1>& phi, const Eigen::MatrixBase<D2>& zeta,
            S target) {
-    const Vector<S>& p = scaled_regressor(phi, phi_s_);
-    const Vector<S>& z = scaled_regressor(zeta, zeta_s_);
+    const Vec& p = scaled_regressor(phi, phi_s_);
+    const Vec& z = scaled_regressor(zeta, zeta_s_);
     const S error = standard_.update(p, z, target);
     refresh_theta();
     return error;
   }
 
-  const Vector<S>& theta() const { return theta_; }
+  const Vec& theta() const { return theta_; }
   // Unscaled P(t_k) (M_s P_s M_s), formed on request.
-  const Matrix<S>& P() const {
-    const Matrix<S>& working = working_P();
+  const Mat& P() const {
+    const Mat& working = working_P();
     if (m_.size() == 0) return working;
     P_.noalias() = m_.asDiagonal() * working * m_.asDiagonal();
     return P_;
@@ -239,7 +247,7 @@ class LeastSquaresUpdate {
   }
   // The covariance the recursion propagates: P_s with scaling (formed from
   // S_s or R_s for the Potter and LMR forms).
-  const Matrix<S>& working_P() const {
+  const Mat& working_P() const {
     switch (form_) {
       case UpdateForm::kPotter:
         return potter_.P();
@@ -270,8 +278,7 @@ class LeastSquaresUpdate {
   }
 
   template <typename Derived>
-  const Vector<S>& scaled_regressor(const Eigen::MatrixBase<Derived>& v,
-                                    Vector<S>& work) {
+  const Vec& scaled_regressor(const Eigen::MatrixBase<Derived>& v, Vec& work) {
     if (m_.size() == 0) {
       work = v;
     } else {
@@ -280,7 +287,7 @@ class LeastSquaresUpdate {
     return work;
   }
 
-  const Vector<S>& internal_theta() const {
+  const Vec& internal_theta() const {
     switch (form_) {
       case UpdateForm::kPotter:
         return potter_.theta();
@@ -299,23 +306,34 @@ class LeastSquaresUpdate {
   }
 
   UpdateForm form_ = UpdateForm::kStandard;
-  ParameterUpdate<S> standard_;
-  PotterUpdate<S> potter_;
-  LmrUpdate<S> lmr_;
+  ParameterUpdate<S, NP> standard_;
+  PotterUpdate<S, NP> potter_;
+  LmrUpdate<S, NP> lmr_;
   Vector<S> m_;
-  Vector<S> phi_s_, zeta_s_, theta_;
-  mutable Matrix<S> P_;
+  Vec phi_s_, zeta_s_, theta_;
+  mutable Mat P_;
 };
 
-template <typename S>
+// NA, NP: na and np when known at compile time (fixed_size.hpp; one input,
+// no initial-condition regressors), Eigen::Dynamic for the general path.
+template <typename S, int NA = Eigen::Dynamic, int NP = Eigen::Dynamic>
 class RlsSvf {
  public:
+  using Theta = VectorN<S, NP>;
+  using Covariance = MatrixN<S, NP>;
+
   RlsSvf() = default;
 
   // Validates the configuration, allocates, and resets the estimator.
   Status configure(const RlsSvfConfig<S>& config) {
     const Status status = validate(config);
     if (!status.ok()) return status;
+    if (!sizes_match<NA, NP>(config.orders,
+                             config.initial_conditions ? config.orders.na : 0)) {
+      return bad_input(
+          "the orders (or the initial-condition regressors) do not fit the "
+          "compile-time sizes of this RlsSvf; use the dynamic-size one");
+    }
     config_ = config;
     const Eigen::Index n = num_estimated(config);
     if (config_.theta0.size() == 0) config_.theta0 = Vector<S>::Zero(n);
@@ -330,7 +348,7 @@ class RlsSvf {
     regressor_.configure(config.orders, svf);
     update_.configure(n, config.form, config.adaptation, config.lmr_gamma,
                       config.scaling);
-    phi_ = Vector<S>::Zero(n);
+    phi_ = Theta::Zero(n);
     reset();
     return Status::Ok();
   }
@@ -348,7 +366,7 @@ class RlsSvf {
   // One recursion with u(t_k) (one value per input) and y(t_k), where
   // h = t_k - t_(k-1). Returns theta(t_k) (with the c_i last when initial
   // conditions are estimated).
-  const Vector<S>& update(const S* u, S y, S h) {
+  const Theta& update(const S* u, S y, S h) {
     if (!first_) elapsed_ += h;
     first_ = false;
     regressor_.step(u, y, h);
@@ -366,10 +384,10 @@ class RlsSvf {
     }
     return update_.theta();
   }
-  const Vector<S>& update(S u, S y) { return update(&u, y, config_.ts); }
+  const Theta& update(S u, S y) { return update(&u, y, config_.ts); }
 
-  const Vector<S>& theta() const { return update_.theta(); }
-  const Matrix<S>& P() const { return update_.P(); }
+  const Theta& theta() const { return update_.theta(); }
+  const Covariance& P() const { return update_.P(); }
   S kappa() const { return update_.kappa(); }
   S prediction_error() const { return prediction_error_; }
   // r(t_k)/sigma_e^2 of the last update (eq. 3.25); NaN before t_s,ls.
@@ -380,15 +398,15 @@ class RlsSvf {
   // False before t_s,ls.
   bool updating() const { return updating_; }
   bool failed() const { return update_.failed(); }
-  const SvfRegressor<S>& regressor() const { return regressor_; }
+  const SvfRegressor<S, NA, NP>& regressor() const { return regressor_; }
   const RlsSvfConfig<S>& config() const { return config_; }
 
  private:
   RlsSvfConfig<S> config_;
-  SvfRegressor<S> regressor_;
+  SvfRegressor<S, NA, NP> regressor_;
   InitialConditionRegressor<S> ic_regressor_;
-  LeastSquaresUpdate<S> update_;
-  Vector<S> phi_;
+  LeastSquaresUpdate<S, NP> update_;
+  Theta phi_;
   S elapsed_ = 0;
   bool first_ = true;
   bool updating_ = false;
@@ -415,21 +433,24 @@ struct RecursiveOutputs {
 // innovation_scale(). Writes THM, and when asked YH (the frozen model of
 // each sample simulated along the record, eq. 1.60), PSET and the rest;
 // fails if an estimate is not finite, with `hint` saying what to check.
-template <typename S, typename Estimator>
-Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
-                            const RecordView<S>& record,
-                            const RecursiveOutputs<S>& out,
-                            Estimator&& estimator, const char* hint) {
+// NA, NP: the compile-time sizes of the estimator (fixed_size.hpp), which the
+// frozen model of YH shares.
+template <int NA, int NP, typename S, typename Estimator>
+Status record_recursive_run_sized(const ModelOrders& orders,
+                                  InterSample u_rule,
+                                  const RecordView<S>& record,
+                                  const RecursiveOutputs<S>& out,
+                                  Estimator&& estimator, const char* hint) {
   const Eigen::Index n = record.num_samples;
   const Eigen::Index np = orders.num_parameters();
   const Eigen::Index nu = record.num_inputs;
-  AuxiliaryModel<S> frozen_model;
+  AuxiliaryModel<S, NA, NP> frozen_model;
   if (out.yh != nullptr) frozen_model.configure(orders, u_rule);
   Vector<S> u_k(nu);
   for (Eigen::Index k = 0; k < n; ++k) {
     for (Eigen::Index j = 0; j < nu; ++j) u_k(j) = record.u_at(k, j);
     const S h = record.interval(k);
-    const Vector<S>& theta = estimator.update(u_k.data(), record.y[k], h, k);
+    const auto& theta = estimator.update(u_k.data(), record.y[k], h, k);
     for (Eigen::Index i = 0; i < np; ++i) out.thm[i * n + k] = theta(i);
     if (out.extra != nullptr) {
       for (Eigen::Index i = np; i < theta.size(); ++i) {
@@ -441,7 +462,7 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
       out.yh[k] = frozen_model.step(u_k.data(), h);
     }
     if (out.pset != nullptr) {
-      const Matrix<S>& P = estimator.covariance();
+      const auto& P = estimator.covariance();
       for (Eigen::Index j = 0; j < np; ++j) {
         for (Eigen::Index i = 0; i < np; ++i) {
           out.pset[k * np * np + j * np + i] = P(i, j);
@@ -463,35 +484,56 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
   return Status::Ok();
 }
 
-template <typename S>
-Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
-                  const RecursiveOutputs<S>& out) {
-  Status status = validate_record(record, config.orders);
-  if (!status.ok()) return status;
+template <typename S, typename Estimator>
+Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
+                            const RecordView<S>& record,
+                            const RecursiveOutputs<S>& out,
+                            Estimator&& estimator, const char* hint) {
+  return record_recursive_run_sized<Eigen::Dynamic, Eigen::Dynamic>(
+      orders, u_rule, record, out, std::forward<Estimator>(estimator), hint);
+}
+
+// run_rlssvf() with the sizes chosen (fixed_size.hpp).
+template <typename S, int NA, int NP>
+Status run_rlssvf_sized(const RlsSvfConfig<S>& config,
+                        const RecordView<S>& record,
+                        const RecursiveOutputs<S>& out) {
   RlsSvfConfig<S> adjusted = config;
   adjusted.ts = record.ts;
-  RlsSvf<S> estimator;
-  status = estimator.configure(adjusted);
+  RlsSvf<S, NA, NP> estimator;
+  Status status = estimator.configure(adjusted);
   if (!status.ok()) return status;
   struct Adapter {
-    RlsSvf<S>& e;
-    const Vector<S>& update(const S* u, S y, S h, Eigen::Index) {
+    RlsSvf<S, NA, NP>& e;
+    const auto& update(const S* u, S y, S h, Eigen::Index) {
       return e.update(u, y, h);
     }
-    const Matrix<S>& covariance() const { return e.P(); }
+    const auto& covariance() const { return e.P(); }
     S kappa() const { return e.kappa(); }
     S prediction_error() const { return e.prediction_error(); }
     S innovation_scale() const { return e.innovation_scale(); }
   };
-  status = record_recursive_run(config.orders, config.svf.u_intersample, record,
-                                out, Adapter{estimator},
-                                "the scaling of the data and lambda_svf");
+  status = record_recursive_run_sized<NA, NP>(
+      config.orders, config.svf.u_intersample, record, out, Adapter{estimator},
+      "the scaling of the data and lambda_svf");
   if (status.ok() && estimator.failed()) {
     return numerical_failure(
         "R of LMR-RLSSVF lost positive definiteness; check Gamma and the "
         "scaling of the data");
   }
   return status;
+}
+
+template <typename S>
+Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
+                  const RecursiveOutputs<S>& out) {
+  const Status status = validate_record(record, config.orders);
+  if (!status.ok()) return status;
+  const bool fixed = config.fixed_size && !config.initial_conditions;
+  return with_fixed_sizes(config.orders, fixed, [&](auto na, auto np) {
+    return run_rlssvf_sized<S, decltype(na)::value, decltype(np)::value>(
+        config, record, out);
+  });
 }
 
 }  // namespace ctid

@@ -49,16 +49,22 @@ S svf_gain(int n, S lambda, bool normalised) {
 // The discretised filter of one denominator D(p) and one intersample rule,
 // shared by every signal filtered through it (y, u_j, the instrument x_hat):
 // the matrices are recomputed only when h or D changes, so a uniformly
-// sampled, fixed filter allocates nothing per sample.
-template <typename S>
+// sampled, fixed filter allocates nothing per sample. N is the order when it
+// is known at compile time (the fixed-size kernels of fixed_size.hpp: the
+// same arithmetic on stack matrices whose loops the compiler unrolls),
+// Eigen::Dynamic for the general path.
+template <typename S, int N = Eigen::Dynamic>
 class FilterDiscretization {
  public:
+  using Vec = VectorN<S, N>;
+  using Mat = MatrixN<S, N>;
+
   void configure(int order, InterSample intersample) {
     n_ = order;
     intersample_ = intersample;
-    d_ = Vector<S>::Zero(n_);
-    Phi_ = Matrix<S>::Identity(n_, n_);
-    gamma_ = Vector<S>::Zero(n_);
+    d_ = Vec::Zero(n_);
+    Phi_ = Mat::Identity(n_, n_);
+    gamma_ = Vec::Zero(n_);
     dirty_ = true;
   }
 
@@ -79,39 +85,46 @@ class FilterDiscretization {
     F_.setZero(n_, n_);
     for (int i = 0; i + 1 < n_; ++i) F_(i, i + 1) = 1;
     for (int j = 0; j < n_; ++j) F_(n_ - 1, j) = -d_(n_ - 1 - j);
-    G_.setZero(n_, 1);
-    G_(n_ - 1, 0) = 1;
-    if (intersample_ == InterSample::kZoh) {
-      zoh_discretize<S>(F_, G_, h, Phi_, Gamma_);
+    if constexpr (N == Eigen::Dynamic) {
+      G_.setZero(n_, 1);
+      G_(n_ - 1, 0) = 1;
+      if (intersample_ == InterSample::kZoh) {
+        zoh_discretize<S>(F_, G_, h, Phi_, Gamma_);
+      } else {
+        // (I - h/2 F)^-1 (I + h/2 F) and (I - h/2 F)^-1 G h/2, see
+        // discretization.hpp.
+        work_ = -(h / 2) * F_;
+        work_.diagonal().array() += 1;
+        lu_.compute(work_);
+        work_ = (h / 2) * F_;
+        work_.diagonal().array() += 1;
+        Phi_.noalias() = lu_.solve(work_);
+        Gamma_.noalias() = lu_.solve(G_ * (h / 2));
+      }
+      gamma_ = Gamma_.col(0);
+    } else if (intersample_ == InterSample::kZoh) {
+      zoh_discretize_companion<S, N>(F_, h, Phi_, gamma_);
     } else {
-      // (I - h/2 F)^-1 (I + h/2 F) and (I - h/2 F)^-1 G h/2, see
-      // discretization.hpp.
-      work_ = -(h / 2) * F_;
-      work_.diagonal().array() += 1;
-      lu_.compute(work_);
-      work_ = (h / 2) * F_;
-      work_.diagonal().array() += 1;
-      Phi_.noalias() = lu_.solve(work_);
-      Gamma_.noalias() = lu_.solve(G_ * (h / 2));
+      trapezoidal_discretize_companion<S, N>(F_, h, Phi_, gamma_);
     }
-    gamma_ = Gamma_.col(0);
     h_ = h;
     dirty_ = false;
   }
 
   int order() const { return n_; }
   InterSample intersample() const { return intersample_; }
-  const Vector<S>& denominator() const { return d_; }
-  const Matrix<S>& Phi() const { return Phi_; }
-  const Vector<S>& Gamma() const { return gamma_; }
+  const Vec& denominator() const { return d_; }
+  const Mat& Phi() const { return Phi_; }
+  const Vec& Gamma() const { return gamma_; }
 
  private:
   int n_ = 0;
   InterSample intersample_ = InterSample::kZoh;
-  Vector<S> d_;
-  Matrix<S> Phi_;
-  Vector<S> gamma_;
-  Matrix<S> F_, G_, Gamma_, work_;
+  Vec d_;
+  Mat Phi_;
+  Vec gamma_;
+  Mat F_;
+  Matrix<S> G_, Gamma_, work_;  // general path only
   Eigen::PartialPivLU<Matrix<S>> lu_;
   S h_ = 0;
   bool dirty_ = true;
@@ -119,14 +132,17 @@ class FilterDiscretization {
 
 // The state of one signal in a FilterDiscretization: outputs()(i) =
 // p^i F(p) s(t_k), i = 0..n, with F = gain / D(p).
-template <typename S>
+template <typename S, int N = Eigen::Dynamic>
 class FilterChannel {
  public:
+  using Vec = VectorN<S, N>;
+  using Outputs = VectorN<S, size_plus(N, 1)>;
+
   void configure(int order) {
     n_ = order;
-    z_ = Vector<S>::Zero(n_);
-    z_next_ = Vector<S>::Zero(n_);
-    out_ = Vector<S>::Zero(n_ + 1);
+    z_ = Vec::Zero(n_);
+    z_next_ = Vec::Zero(n_);
+    out_ = Outputs::Zero(n_ + 1);
     reset();
   }
 
@@ -144,7 +160,7 @@ class FilterChannel {
   }
 
   // Feeds s(t_k); `disc` must hold the matrices of t_k - t_(k-1).
-  void step(const FilterDiscretization<S>& disc, S gain, S s) {
+  void step(const FilterDiscretization<S, N>& disc, S gain, S s) {
     const bool zoh = disc.intersample() == InterSample::kZoh;
     if (!first_) {
       z_next_.noalias() = disc.Phi() * z_;
@@ -155,7 +171,7 @@ class FilterChannel {
     }
     first_ = false;
     s_prev_ = s;
-    const Vector<S>& d = disc.denominator();
+    const Vec& d = disc.denominator();
     S highest = s;
     for (int i = 0; i < n_; ++i) {
       out_(i) = gain * z_(i);
@@ -171,14 +187,14 @@ class FilterChannel {
     s_prev_ = s;
   }
 
-  const Vector<S>& outputs() const { return out_; }
-  const Vector<S>& state() const { return z_; }
+  const Outputs& outputs() const { return out_; }
+  const Vec& state() const { return z_; }
 
  private:
   int n_ = 0;
-  Vector<S> z_;
-  Vector<S> z_next_;
-  Vector<S> out_;
+  Vec z_;
+  Vec z_next_;
+  Outputs out_;
   S s_prev_ = 0;
   bool first_ = true;
   bool rest_at_first_sample_ = false;

@@ -37,9 +37,13 @@ Status validate_svf_settings(const SvfSettings<S>& svf) {
   return Status::Ok();
 }
 
-template <typename S>
+// NA, NP: na and the number of parameters when known at compile time
+// (fixed_size.hpp), Eigen::Dynamic for the general path.
+template <typename S, int NA = Eigen::Dynamic, int NP = Eigen::Dynamic>
 class SvfRegressor {
  public:
+  using Phi = VectorN<S, NP>;
+
   SvfRegressor() = default;
 
   void configure(const ModelOrders& orders, const SvfSettings<S>& svf) {
@@ -60,7 +64,7 @@ class SvfRegressor {
       u_channels_[j].set_rest_at_first_sample(svf.rest_at_first_sample);
       delays_[j].configure(orders.nk[j]);
     }
-    phi_ = Vector<S>::Zero(orders.num_parameters());
+    phi_ = Phi::Zero(orders.num_parameters());
     target_ = 0;
   }
 
@@ -76,32 +80,32 @@ class SvfRegressor {
     y_disc_.ensure(h);
     u_disc_.ensure(h);
     y_channel_.step(y_disc_, gain_, y);
-    const Vector<S>& yf = y_channel_.outputs();
+    const auto& yf = y_channel_.outputs();
     for (int i = 0; i < na; ++i) phi_(i) = -yf(na - 1 - i);
     target_ = yf(na);
     int offset = na;
     for (int j = 0; j < orders_.num_inputs(); ++j) {
       u_channels_[j].step(u_disc_, gain_, delays_[j].push(u[j]));
-      const Vector<S>& uf = u_channels_[j].outputs();
+      const auto& uf = u_channels_[j].outputs();
       const int nb = orders_.nb[j];
       for (int l = 0; l < nb; ++l) phi_(offset + l) = uf(nb - 1 - l);
       offset += nb;
     }
   }
 
-  const Vector<S>& phi() const { return phi_; }
+  const Phi& phi() const { return phi_; }
   S target() const { return target_; }
   const ModelOrders& orders() const { return orders_; }
 
  private:
   ModelOrders orders_;
-  FilterDiscretization<S> y_disc_;
-  FilterDiscretization<S> u_disc_;
-  FilterChannel<S> y_channel_;
-  std::vector<FilterChannel<S>> u_channels_;
+  FilterDiscretization<S, NA> y_disc_;
+  FilterDiscretization<S, NA> u_disc_;
+  FilterChannel<S, NA> y_channel_;
+  std::vector<FilterChannel<S, NA>> u_channels_;
   S gain_ = 1;
   std::vector<DelayLine<S>> delays_;
-  Vector<S> phi_;
+  Phi phi_;
   S target_ = 0;
 };
 

@@ -11,6 +11,19 @@ using Vector = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 template <typename S>
 using Matrix = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
 
+// Sizes known at compile time for the small orders users run (fixed_size.hpp
+// dispatches to them once, at configure time); Eigen::Dynamic gives the
+// general path, Vector<S> and Matrix<S>.
+template <typename S, int N>
+using VectorN = Eigen::Matrix<S, N, 1>;
+template <typename S, int N>
+using MatrixN = Eigen::Matrix<S, N, N>;
+
+// N + k, or Dynamic when N is.
+constexpr int size_plus(int n, int k) {
+  return n == Eigen::Dynamic ? Eigen::Dynamic : n + k;
+}
+
 // How the signal behaves between samples (the data's InterSample property).
 //   kZoh: piecewise constant, held from one sample to the next (exact
 //         discretisation through the matrix exponential, thesis App. A.1);
