@@ -10,6 +10,17 @@
 //                         denominator changes at every sample, so the ZOH
 //                         discretisation (a matrix exponential) is redone per
 //                         sample: expect it to be much slower.
+//   The update loops above run the dynamic-size RlsSvf<double>; the batch
+//   functions the fixed-size kernels (fixed_size.hpp), as the gateway does.
+//   BM_RlsSvfUpdate_KF_Fixed, BM_RlsSvfUpdate_FF_Fixed
+//                         the update loops with RlsSvf<double, 2, 3>;
+//   BM_RunRlsSvf/order:n/fixed:f/yh:y
+//                         run_rlssvf() for na = n = 1..4 (nb = 1; true
+//                         system 4 / (p^2 + 2.4 p + 4) for n = 2, 2^n /
+//                         (p + 2)^n otherwise), fixed-size kernels (f = 1)
+//                         or the dynamic path (f = 0), THM only (y = 0) or
+//                         THM and YH (y = 1). The summary prints per order
+//                         fixed / dynamic and (THM+YH) / THM side by side.
 //
 // Each iteration is one pass over a record of 1e6 samples generated once:
 // a random binary (PRBS-like) input and the ZOH response of
@@ -49,14 +60,18 @@ struct BenchData {
 // Random binary input that switches with probability 0.1 per sample (mean
 // hold 10 samples, rich enough for the 3 parameters), the exact ZOH response
 // of the true system, and output noise of standard deviation 0.05.
-BenchData make_data() {
+BenchData make_data(int n) {
   BenchData data;
   data.u.resize(kNumSamples);
   data.y.resize(kNumSamples);
-  Eigen::VectorXd d(2);
-  d << kTheta[0], kTheta[1];
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(2, 1);
-  G(1, 0) = 1;
+  Eigen::VectorXd d = ctid::svf_denominator<double>(n, 2.0);
+  double b0 = std::pow(2.0, n);
+  if (n == 2) {
+    d << kTheta[0], kTheta[1];
+    b0 = kTheta[2];
+  }
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, 1);
+  G(n - 1, 0) = 1;
   Eigen::MatrixXd Phi, Gamma;
   ctid::zoh_discretize<double>(ctid::companion_matrix<double>(d), G, kTs, Phi,
                                Gamma);
@@ -64,27 +79,29 @@ BenchData make_data() {
   std::bernoulli_distribution toggle(0.1);
   std::normal_distribution<double> noise(0.0, 0.05);
   double level = 1;
-  Eigen::Vector2d z = Eigen::Vector2d::Zero();
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   for (Eigen::Index k = 0; k < kNumSamples; ++k) {
     if (toggle(rng)) level = -level;
     data.u[k] = level;
-    data.y[k] = kTheta[2] * z(0) + noise(rng);
+    data.y[k] = b0 * z(0) + noise(rng);
     z = Phi * z + Gamma.col(0) * level;
   }
   return data;
 }
 
-const BenchData& bench_data() {
-  static const BenchData data = make_data();
-  return data;
+// The record of order n (1..4), generated on first use.
+const BenchData& bench_data(int n = 2) {
+  static std::vector<BenchData> data(4);
+  if (data[n - 1].u.empty()) data[n - 1] = make_data(n);
+  return data[n - 1];
 }
 
-ctid::RlsSvfConfig<double> kf_config() {
+ctid::RlsSvfConfig<double> kf_config(int n = 2) {
   ctid::RlsSvfConfig<double> config;
-  config.orders = ctid::siso_orders(2, 1, 0);
+  config.orders = ctid::siso_orders(n, 1, 0);
   config.svf.lambda_svf = kLambdaSvf;
-  config.adaptation =
-      ctid::KalmanAdaptation<double>(1e-4 * Eigen::MatrixXd::Identity(3, 3));
+  config.adaptation = ctid::KalmanAdaptation<double>(
+      1e-4 * Eigen::MatrixXd::Identity(n + 1, n + 1));
   config.ts = kTs;
   return config;
 }
@@ -125,10 +142,11 @@ void report_samples(benchmark::State& state) {
                           kNumSamples);
 }
 
+template <typename Estimator = ctid::RlsSvf<double>>
 void run_update_loop(benchmark::State& state,
                      const ctid::RlsSvfConfig<double>& config) {
   const BenchData& data = bench_data();
-  ctid::RlsSvf<double> estimator;
+  Estimator estimator;
   const ctid::Status status = estimator.configure(config);
   if (!status.ok()) {
     state.SkipWithError(status.message().c_str());
@@ -154,11 +172,13 @@ void BM_RlsSvfUpdate_FF(benchmark::State& state) {
   run_update_loop(state, ff_config());
 }
 
-void run_batch(benchmark::State& state, bool with_yh) {
-  const BenchData& data = bench_data();
-  const ctid::RlsSvfConfig<double> config = kf_config();
+void run_batch(benchmark::State& state, bool with_yh, int n = 2,
+               bool fixed = true) {
+  const BenchData& data = bench_data(n);
+  ctid::RlsSvfConfig<double> config = kf_config(n);
+  config.fixed_size = fixed;
   const ctid::RecordView<double> record = record_view(data);
-  std::vector<double> thm(kNumSamples * 3);
+  std::vector<double> thm(kNumSamples * (n + 1));
   std::vector<double> yh(with_yh ? kNumSamples : 0);
   ctid::RecursiveOutputs<double> out;
   out.thm = thm.data();
@@ -173,8 +193,23 @@ void run_batch(benchmark::State& state, bool with_yh) {
     benchmark::DoNotOptimize(yh.data());
     benchmark::ClobberMemory();
   }
-  check_final_estimate(state, thm.data() + kNumSamples - 1, kNumSamples);
+  if (n == 2) {
+    check_final_estimate(state, thm.data() + kNumSamples - 1, kNumSamples);
+  }
   report_samples(state);
+}
+
+void BM_RlsSvfUpdate_KF_Fixed(benchmark::State& state) {
+  run_update_loop<ctid::RlsSvf<double, 2, 3>>(state, kf_config());
+}
+
+void BM_RlsSvfUpdate_FF_Fixed(benchmark::State& state) {
+  run_update_loop<ctid::RlsSvf<double, 2, 3>>(state, ff_config());
+}
+
+void BM_RunRlsSvf(benchmark::State& state) {
+  run_batch(state, state.range(2) != 0, static_cast<int>(state.range(0)),
+            state.range(1) != 0);
 }
 
 void BM_RunRlsSvf_Thm(benchmark::State& state) { run_batch(state, false); }
@@ -185,6 +220,43 @@ BENCHMARK(BM_RlsSvfUpdate_KF)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RlsSvfUpdate_FF)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RunRlsSvf_Thm)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RunRlsSvf_ThmYh)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RlsSvfUpdate_KF_Fixed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RlsSvfUpdate_FF_Fixed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RunRlsSvf)
+    ->ArgsProduct({{1, 2, 3, 4}, {1, 0}, {0, 1}})
+    ->ArgNames({"order", "fixed", "yh"})
+    ->Unit(benchmark::kMillisecond);
+
+// Per order: run_rlssvf fixed and dynamic, THM and THM+YH, side by side.
+void print_fixed_vs_dynamic(
+    const std::vector<std::pair<std::string, double>>& rates) {
+  auto rate_of = [&](int n, int fixed, int yh) {
+    const std::string name = "BM_RunRlsSvf/order:" + std::to_string(n) +
+                             "/fixed:" + std::to_string(fixed) +
+                             "/yh:" + std::to_string(yh);
+    double best = 0;
+    for (const auto& [key, value] : rates) {
+      if (key.rfind(name, 0) == 0 && value > best) best = value;
+    }
+    return best;
+  };
+  bool header = false;
+  for (int n = 1; n <= 4; ++n) {
+    const double f = rate_of(n, 1, 0), d = rate_of(n, 0, 0);
+    const double fy = rate_of(n, 1, 1), dy = rate_of(n, 0, 1);
+    if (f == 0 || d == 0) continue;
+    if (!header) {
+      std::printf(
+          "\nrun_rlssvf RLSSVF-KF (M samples/s):\n"
+          "  order  fixed THM  dyn. THM  fixed/dyn  fixed THM+YH  dyn. "
+          "THM+YH  fixed/dyn  THM/(THM+YH) fixed\n");
+      header = true;
+    }
+    std::printf("  %5d %10.3f %9.3f %10.2f %13.3f %12.3f %10.2f %19.2f\n", n,
+                f / 1e6, d / 1e6, f / d, fy / 1e6, dy / 1e6,
+                dy > 0 ? fy / dy : 0.0, fy > 0 ? f / fy : 0.0);
+  }
+}
 
 // The console table, then one line per benchmark in million samples/s.
 class SummaryReporter : public benchmark::ConsoleReporter {
@@ -208,8 +280,9 @@ class SummaryReporter : public benchmark::ConsoleReporter {
     std::printf("\nThroughput (million samples/s, %lld samples per pass):\n",
                 static_cast<long long>(kNumSamples));
     for (const auto& [name, rate] : rates_) {
-      std::printf("  %-28s %8.3f\n", name.c_str(), rate / 1e6);
+      std::printf("  %-36s %8.3f\n", name.c_str(), rate / 1e6);
     }
+    print_fixed_vs_dynamic(rates_);
     std::fflush(stdout);
   }
 

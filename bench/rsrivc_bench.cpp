@@ -16,6 +16,17 @@
 //                         RSRIVC-KF: what the gateway runs for
 //                         thm = rsrivc (...), including the checks of the
 //                         record and the writing of THM.
+//   BM_RsrivcUpdate_KF, BM_RivsvfUpdate_KF and the batch above use the
+//   dynamic-size object RecursiveIv<double> for the update loops and the
+//   fixed-size kernels (fixed_size.hpp) for the batch; the *_Fixed update
+//   loops run RecursiveIv<double, 2, 3>, and
+//   BM_RunRsrivc/order:n/fixed:f
+//                         run_recursive_iv() THM only for na = n = 1..4
+//                         (nb = 1, true system 4 / (p^2 + 2.4 p + 4) for
+//                         n = 2, 2^n / (p + 2)^n otherwise), with the
+//                         fixed-size kernels (f = 1) or the dynamic path
+//                         (f = 0). The summary prints the ratio fixed /
+//                         dynamic per order: side by side in one run.
 //
 // Model nn = [2 1 0] (na = 2, nb = 1, nk = 0, three parameters [a1 a2 b0]),
 // lambda_svf = 3.2, RLSSVF until tsiv = 100 s, then IV. Each iteration is
@@ -56,16 +67,21 @@ struct BenchData {
 };
 
 // Random binary input that switches with probability 0.1 per sample (mean
-// hold 10 samples, rich enough for the 3 parameters), the exact ZOH response
-// of the true system, and output noise of standard deviation 0.05.
-BenchData make_data() {
+// hold 10 samples, rich enough for the parameters), the exact ZOH response
+// of the true system of order n, and output noise of standard deviation
+// 0.05: 4 / (p^2 + 2.4 p + 4) for n = 2, 2^n / (p + 2)^n otherwise.
+BenchData make_data(int n) {
   BenchData data;
   data.u.resize(kNumSamples);
   data.y.resize(kNumSamples);
-  Eigen::VectorXd d(2);
-  d << kTheta[0], kTheta[1];
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(2, 1);
-  G(1, 0) = 1;
+  Eigen::VectorXd d = ctid::svf_denominator<double>(n, 2.0);
+  double b0 = std::pow(2.0, n);
+  if (n == 2) {
+    d << kTheta[0], kTheta[1];
+    b0 = kTheta[2];
+  }
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, 1);
+  G(n - 1, 0) = 1;
   Eigen::MatrixXd Phi, Gamma;
   ctid::zoh_discretize<double>(ctid::companion_matrix<double>(d), G, kTs, Phi,
                                Gamma);
@@ -73,31 +89,32 @@ BenchData make_data() {
   std::bernoulli_distribution toggle(0.1);
   std::normal_distribution<double> noise(0.0, 0.05);
   double level = 1;
-  Eigen::Vector2d z = Eigen::Vector2d::Zero();
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   for (Eigen::Index k = 0; k < kNumSamples; ++k) {
     if (toggle(rng)) level = -level;
     data.u[k] = level;
-    data.y[k] = kTheta[2] * z(0) + noise(rng);
+    data.y[k] = b0 * z(0) + noise(rng);
     z = Phi * z + Gamma.col(0) * level;
   }
   return data;
 }
 
-const BenchData& bench_data() {
-  static const BenchData data = make_data();
-  return data;
+const BenchData& bench_data(int n = 2) {
+  static const BenchData data[4] = {make_data(1), make_data(2), make_data(3),
+                                    make_data(4)};
+  return data[n - 1];
 }
 
-ctid::RecursiveIvConfig<double> iv_config(ctid::IvMethod method) {
+ctid::RecursiveIvConfig<double> iv_config(ctid::IvMethod method, int n = 2) {
   ctid::RecursiveIvConfig<double> config;
-  config.orders = ctid::siso_orders(2, 1, 0);
+  config.orders = ctid::siso_orders(n, 1, 0);
   config.method = method;
   config.svf.lambda_svf = kLambdaSvf;
   config.ts = kTs;
   config.t_s_iv = kTsIv;
   config.dtupdate = 0;  // refresh every sample
-  config.adaptation =
-      ctid::KalmanAdaptation<double>(1e-4 * Eigen::MatrixXd::Identity(3, 3));
+  config.adaptation = ctid::KalmanAdaptation<double>(
+      1e-4 * Eigen::MatrixXd::Identity(n + 1, n + 1));
   return config;
 }
 
@@ -120,9 +137,10 @@ void report_samples(benchmark::State& state) {
                           kNumSamples);
 }
 
+template <typename Estimator = ctid::RecursiveIv<double>>
 void run_update_loop(benchmark::State& state, ctid::IvMethod method) {
   const BenchData& data = bench_data();
-  ctid::RecursiveIv<double> estimator;
+  Estimator estimator;
   const ctid::Status status = estimator.configure(iv_config(method));
   if (!status.ok()) {
     state.SkipWithError(status.message().c_str());
@@ -150,6 +168,48 @@ void BM_RsrivcUpdate_KF(benchmark::State& state) {
 
 void BM_RivsvfUpdate_KF(benchmark::State& state) {
   run_update_loop(state, ctid::IvMethod::kRivsvf);
+}
+
+void BM_RsrivcUpdate_KF_Fixed(benchmark::State& state) {
+  run_update_loop<ctid::RecursiveIv<double, 2, 3>>(state,
+                                                   ctid::IvMethod::kRsrivc);
+}
+
+void BM_RivsvfUpdate_KF_Fixed(benchmark::State& state) {
+  run_update_loop<ctid::RecursiveIv<double, 2, 3>>(state,
+                                                   ctid::IvMethod::kRivsvf);
+}
+
+// run_recursive_iv() THM only, order state.range(0), fixed-size kernels when
+// state.range(1) is 1.
+void BM_RunRsrivc(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const BenchData& data = bench_data(n);
+  ctid::RecursiveIvConfig<double> config =
+      iv_config(ctid::IvMethod::kRsrivc, n);
+  config.fixed_size = state.range(1) != 0;
+  ctid::RecordView<double> record;
+  record.y = data.y.data();
+  record.u = data.u.data();
+  record.num_samples = kNumSamples;
+  record.num_inputs = 1;
+  record.ts = kTs;
+  std::vector<double> thm(kNumSamples * (n + 1));
+  ctid::RecursiveOutputs<double> out;
+  out.thm = thm.data();
+  for (auto _ : state) {
+    const ctid::Status status = ctid::run_recursive_iv(
+        config, record, ctid::ClosedLoopSignals<double>(), out);
+    if (!status.ok()) {
+      state.SkipWithError(status.message().c_str());
+      return;
+    }
+    benchmark::DoNotOptimize(thm.data());
+    benchmark::ClobberMemory();
+  }
+  if (n == 2) check_final_estimate(state, thm.data() + kNumSamples - 1,
+                                   kNumSamples);
+  report_samples(state);
 }
 
 void BM_RunRecursiveIv_Rsrivc_Thm(benchmark::State& state) {
@@ -184,6 +244,40 @@ void BM_RunRecursiveIv_Rsrivc_Thm(benchmark::State& state) {
 BENCHMARK(BM_RsrivcUpdate_KF)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RivsvfUpdate_KF)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RunRecursiveIv_Rsrivc_Thm)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RsrivcUpdate_KF_Fixed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RivsvfUpdate_KF_Fixed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RunRsrivc)
+    ->ArgsProduct({{1, 2, 3, 4}, {1, 0}})
+    ->ArgNames({"order", "fixed"})
+    ->Unit(benchmark::kMillisecond);
+
+// Per order, fixed-size and dynamic run_recursive_iv side by side and their
+// ratio (from the best of repeated runs when there are several).
+void print_fixed_vs_dynamic(
+    const std::vector<std::pair<std::string, double>>& rates) {
+  auto rate_of = [&](int n, int fixed) {
+    const std::string name = "BM_RunRsrivc/order:" + std::to_string(n) +
+                             "/fixed:" + std::to_string(fixed);
+    double best = 0;
+    for (const auto& [key, value] : rates) {
+      if (key.rfind(name, 0) == 0 && value > best) best = value;
+    }
+    return best;
+  };
+  bool header = false;
+  for (int n = 1; n <= 4; ++n) {
+    const double fixed = rate_of(n, 1), dynamic = rate_of(n, 0);
+    if (fixed == 0 || dynamic == 0) continue;
+    if (!header) {
+      std::printf(
+          "\nrun_recursive_iv RSRIVC-KF, THM, per-sample refresh "
+          "(M samples/s):\n  order   fixed  dynamic  fixed/dynamic\n");
+      header = true;
+    }
+    std::printf("  %5d %7.3f %8.3f %14.2f\n", n, fixed / 1e6, dynamic / 1e6,
+                fixed / dynamic);
+  }
+}
 
 // The console table, then one line per benchmark in million samples/s.
 class SummaryReporter : public benchmark::ConsoleReporter {
@@ -206,11 +300,12 @@ class SummaryReporter : public benchmark::ConsoleReporter {
     if (rates_.empty()) return;
     std::printf(
         "\nThroughput (million samples/s, %lld samples per pass; "
-        "target for RSRIVC-KF: 1):\n",
+        "bar for RSRIVC-KF, 2nd order: 3):\n",
         static_cast<long long>(kNumSamples));
     for (const auto& [name, rate] : rates_) {
       std::printf("  %-36s %8.3f\n", name.c_str(), rate / 1e6);
     }
+    print_fixed_vs_dynamic(rates_);
     std::fflush(stdout);
   }
 
