@@ -54,7 +54,9 @@ function rates = run_core_benchmark (bin, filter)
   rates = struct ();
   for i = 1:numel (runs)
     if (isfield (runs{i}, "items_per_second"))
-      rates.(runs{i}.name) = runs{i}.items_per_second;
+      ## "BM_RunRsrivc/order:2/fixed:1" -> "BM_RunRsrivc_order_2_fixed_1"
+      name = strrep (strrep (runs{i}.name, "/", "_"), ":", "_");
+      rates.(name) = runs{i}.items_per_second;
     endif
   endfor
 endfunction
@@ -77,6 +79,15 @@ function best = best_time (f, runs)
   endfor
 endfunction
 
+## r.(f) if the field exists, else NaN.
+function v = ifelse_num (has, r, f)
+  if (has)
+    v = r.(f);
+  else
+    v = NaN;
+  endif
+endfunction
+
 function s = ifelse_str (c, a, b)
   if (c)
     s = a;
@@ -94,7 +105,8 @@ addpath (fullfile (root, "octave"));
 addpath (fullfile (root, "bench"));
 args_in = argv ();
 bin = find_core_benchmark (root, args_in);
-core_filter = "^BM_(RsrivcUpdate_KF|RivsvfUpdate_KF|RunRecursiveIv_Rsrivc_Thm)$";
+core_filter = ["^BM_(RsrivcUpdate_KF|RivsvfUpdate_KF|RunRecursiveIv_Rsrivc_Thm|", ...
+               "RsrivcUpdate_KF_Fixed|RunRsrivc/order:[1-4]/fixed:[01])$"];
 
 ## Data: a random binary input switching with probability 0.1 per sample,
 ## the exact ZOH response of 4/(p^2 + 2.4 p + 4) (the same system as the
@@ -178,6 +190,8 @@ if (! isempty (bin))
           best ("BM_RunRecursiveIv_Rsrivc_Thm") / r_front);
   printf ("  core update loop RSRIVC-KF / baseline          %9.1f\n",
           best ("BM_RsrivcUpdate_KF") / r_plain);
+  printf ("  core fixed-size update loop / dynamic one      %9.2f\n",
+          best ("BM_RsrivcUpdate_KF_Fixed") / best ("BM_RsrivcUpdate_KF"));
 endif
 
 ## Agreement: both are causal, so the baseline on the first Nb samples must
@@ -195,3 +209,47 @@ endif
 printf ("rsrivc over the whole record: final [b0 f1 f2] = [%.3f %.3f %.3f] ",
         thm(end, :));
 printf ("(true [4 2.4 4]), %d stability rejections\n", info.stability_rejections);
+
+## Orders 1 to 4 side by side: nn = [1 n 0], true system 2^n / (p + 2)^n
+## (n = 2: the record above), the same options with Qn = 1e-4 I. Core
+## run_recursive_iv with the fixed-size kernels and with the dynamic path
+## (the better of the two core runs), the front-end end to end (best of 3)
+## and the plain-Octave baseline on the first Nn samples (rates per sample).
+Nn = 2000;
+printf ("\norders 1-4, RSRIVC-KF, per-sample refresh (M samples/s; baseline on %d samples):\n", Nn);
+printf ("  order  core fixed  core dynamic  fixed/dyn   rsrivc   baseline  rsrivc/baseline\n");
+for n = 1:4
+  if (n == 2)
+    yn = y;
+  else
+    a = poly (-2 * ones (1, n));
+    sysd = expm ([[zeros(n - 1, 1), eye(n - 1); -a(end:-1:2)], [zeros(n - 1, 1); 1];
+                  zeros(1, n + 1)] * Ts);
+    Phin = sysd(1:n, 1:n);
+    Gamn = sysd(1:n, n + 1);
+    Cn = [2 ^ n, zeros(1, n - 1)];
+    denn = poly (Phin);
+    numn = poly (Phin - Gamn * Cn) - denn;
+    yn = filter (numn, denn, u) + 0.05 * randn (N, 1);
+  endif
+  Qnn = 1e-4 * eye (n + 1);
+  optn = {"lambda_svf", lambda_svf, "adm", "kf", "adg", Qnn, "tsiv", tsiv};
+  datan = iddata (yn, u, Ts, "InterSample", "zoh");
+  rsrivc (datan, [1 n 0], optn{:});            # warm-up
+  tn = best_time (@() rsrivc_thm ({datan, [1 n 0], optn{:}}), 3);
+  t0 = tic ();
+  rsrivc_plain_octave (yn(1:Nn), u(1:Nn), Ts, lambda_svf, Qnn, tsiv);
+  tp = toc (t0);
+  cf = NaN;
+  cd = NaN;
+  if (! isempty (bin))
+    f1 = sprintf ("BM_RunRsrivc/order:%d/fixed:1", n);
+    f0 = sprintf ("BM_RunRsrivc/order:%d/fixed:0", n);
+    key = @(s) strrep (strrep (strrep (s, "/", "_"), ":", "_"), "-", "_");
+    pick = @(r, f) ifelse_num (isfield (r, key (f)), r, key (f));
+    cf = max (pick (core_before, f1), pick (core_after, f1));
+    cd = max (pick (core_before, f0), pick (core_after, f0));
+  endif
+  printf ("  %5d %11.3f %13.3f %10.2f %8.3f %10.4f %16.0f\n", n, cf / 1e6,
+          cd / 1e6, cf / cd, N / tn / 1e6, Nn / tp / 1e6, (N / tn) / (Nn / tp));
+endfor
