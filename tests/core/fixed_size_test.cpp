@@ -380,7 +380,8 @@ void expect_no_allocation_per_sample() {
                     Variant::kLmr}) {
     RlsSvf<S, 2, 3> estimator;
     ASSERT_TRUE(estimator.configure(rlssvf_config<S>(2, 1, v)).ok());
-    for (int k = 0; k < 5; ++k) estimator.update(S(1), S(0.5), S(kTs));
+    const S one = 1;
+    for (int k = 0; k < 5; ++k) estimator.update(&one, S(0.5), S(kTs));
     const long before = g_allocations.load();
     S sum = 0;
     for (int k = 0; k < 5000; ++k) {
