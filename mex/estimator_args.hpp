@@ -24,6 +24,14 @@
 
 namespace ctid::mex {
 
+// 'fixed' (default): the compile-time kernels for one input and
+// nb <= na <= 4 (core/include/ctid/fixed_size.hpp); 'dynamic': the general
+// dynamic-size path, the reference (benchmarks compare the two).
+inline bool read_kernels(OptionsReader& opt, bool fallback) {
+  return opt.choice<bool>("kernels", {{"fixed", true}, {"dynamic", false}},
+                          fallback);
+}
+
 // The rlssvf configuration; the caller calls opt.finish().
 inline void read_rlssvf_config(const Gateway& g, OptionsReader& opt,
                                RlsSvfConfig<double>* config) {
@@ -43,6 +51,7 @@ inline void read_rlssvf_config(const Gateway& g, OptionsReader& opt,
   if (gamma.size() != 0) config->lmr_gamma = gamma;
   config->scaling = opt.matrix("scaling", n, 1);
   config->t_s_ls = opt.scalar("tsls", config->t_s_ls);
+  config->fixed_size = read_kernels(opt, config->fixed_size);
   g.check(validate(*config));
 }
 
@@ -89,6 +98,7 @@ inline void read_riv_config(const Gateway& g, OptionsReader& opt,
   config->antiwindup_gamma = opt.scalar("antiwindup", config->antiwindup_gamma);
   config->antiwindup_lambda =
       opt.scalar("antiwindup_lambda", config->antiwindup_lambda);
+  config->fixed_size = read_kernels(opt, config->fixed_size);
   g.check(validate(*config));
 }
 
@@ -146,6 +156,7 @@ RlsSvfConfig<T> cast(const RlsSvfConfig<double>& c) {
   out.scaling = cast<T>(c.scaling);
   out.initial_conditions = c.initial_conditions;
   out.t_s_ls = static_cast<T>(c.t_s_ls);
+  out.fixed_size = c.fixed_size;
   return out;
 }
 
@@ -170,6 +181,7 @@ RecursiveIvConfig<T> cast(const RecursiveIvConfig<double>& c) {
   out.scaling = cast<T>(c.scaling);
   out.antiwindup_gamma = static_cast<T>(c.antiwindup_gamma);
   out.antiwindup_lambda = static_cast<T>(c.antiwindup_lambda);
+  out.fixed_size = c.fixed_size;
   return out;
 }
 

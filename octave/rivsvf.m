@@ -50,6 +50,8 @@
 ## forgetting factor of that RLSSVF-FF (default 0.998, thesis Table 3.2).
 ## @item precision
 ## @qcode{"double"} (default) or @qcode{"single"}, as in @code{rlssvf}.
+## @item kernels
+## @qcode{"fixed"} (default) or @qcode{"dynamic"}, as in @code{rlssvf}.
 ## @item Missing
 ## @qcode{"bridge"} (default) or @qcode{"error"}: how a NaN in y or u (a
 ## missing sample) is treated, as in @code{rlssvf}.

@@ -100,6 +100,12 @@
 ## @qcode{"double"} (default) or @qcode{"single"}: the whole recursion in
 ## single precision (on a single-precision copy of the data), as on a
 ## microcontroller; the outputs are returned as double.
+## @item kernels
+## @qcode{"fixed"} (default) or @qcode{"dynamic"}: with one input,
+## nb <= na <= 4 and double precision the core runs compile-time-size
+## kernels (the same arithmetic on fixed-size matrices); @qcode{"dynamic"}
+## forces the general path, the reference they are tested against (for
+## benchmarks).
 ## @end table
 ##
 ## @strong{Outputs}
@@ -385,6 +391,7 @@ endfunction
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", -1)
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", [1 2])
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "kernels", "static")
 %!error id=rlssvf:badInput rlssvf ()
 %!error id=rlssvf:badInput rlssvf (data)
 

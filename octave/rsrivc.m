@@ -17,7 +17,8 @@
 ## (@code{lambda_svf}, @code{adm}, @code{adg}, @code{th0}, @code{P0},
 ## @code{tsiv} (also "auto"), @code{dtupdate}, @code{stability},
 ## @code{mtheta}, @code{svf}, @code{scaling}, @code{antiwindup},
-## @code{antiwindup_lambda}, @code{precision}; @var{info} as there) plus:
+## @code{antiwindup_lambda}, @code{precision}, @code{kernels}; @var{info} as
+## there) plus:
 ## @table @code
 ## @item A
 ## a stable denominator [1 f1 .. f_nf] that starts the adaptive prefilter
@@ -142,6 +143,7 @@ endfunction
 %!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "adm", "lmr")
 %!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "potter", true)
 %!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "precision", "x")
+%!error id=rsrivc:badOption rsrivc (data, [1 2 0], "lambda_svf", 3, "kernels", "x")
 %!error id=rsrivc:dimensionMismatch rsrivc (data, [1 2 0], "lambda_svf", 3, "scaling", [1 2])
 %!error id=rsrivc:dimensionMismatch rsrivc (data, [1 2 0], "A", [1 2 3 4])
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "A", "x")

@@ -25,7 +25,8 @@ function p = contsid_riv_args (fname, routine, varargin)
                      "dtupdate", [], "stability", "keep", "mtheta", [],
                      "prefilter", "unit", "A", [], "controller", [],
                      "r1", [], "r2", [], "scaling", [], "antiwindup", 0,
-                     "antiwindup_lambda", 0.998, "precision", "double");
+                     "antiwindup_lambda", 0.998, "precision", "double",
+                     "kernels", "fixed");
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults,
                                               varargin{:});
   np = orders.np;
@@ -185,6 +186,7 @@ function p = contsid_riv_args (fname, routine, varargin)
   g.antiwindup = o.antiwindup;
   g.antiwindup_lambda = o.antiwindup_lambda;
   g.precision = o.precision;
+  g.kernels = opts.kernels;
   p.opts = g;
 endfunction
 

@@ -11,7 +11,7 @@ function p = contsid_rlssvf_args (fname, varargin)
   defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
                      "P0", [], "svf", "normalised", "potter", false,
                      "Gamma", [], "scaling", [], "ic", false, "tsls", 0,
-                     "precision", "double");
+                     "precision", "double", "kernels", "fixed");
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                              varargin{:});
   o = contsid_recursive_options (fname, opts, orders.np);
@@ -45,6 +45,7 @@ function p = contsid_rlssvf_args (fname, varargin)
   g.ic = logical (o.ic);
   g.tsls = o.tsls;
   g.precision = o.precision;
+  g.kernels = opts.kernels;
   p.opts = g;
 endfunction
 

@@ -20,8 +20,11 @@
 
 namespace ctid {
 
-// Orders 1..4 cover what users run; each (na, nb) pair is one instantiation
-// (14 of them per scalar type and estimator).
+// Orders 1..4 with the usual strictly proper nb <= na cover what users run;
+// each (na, nb) pair is one instantiation (10 of them per scalar type and
+// estimator, besides the dynamic one), a cost every gateway that runs the
+// recursive path pays in compile time. Other orders (nb = na + 1 included)
+// take the dynamic path.
 constexpr int kMaxFixedOrder = 4;
 
 template <int N>
@@ -31,7 +34,7 @@ namespace detail {
 
 template <int NA, int NB, typename F>
 auto dispatch_numerator(int nb, F& f) {
-  if constexpr (NB > NA + 1) {
+  if constexpr (NB > NA) {
     return f(SizeConstant<Eigen::Dynamic>{}, SizeConstant<Eigen::Dynamic>{});
   } else {
     if (nb == NB) return f(SizeConstant<NA>{}, SizeConstant<NA + NB>{});
@@ -55,17 +58,26 @@ auto dispatch_order(int na, int nb, F& f) {
 inline bool has_fixed_sizes(const ModelOrders& orders) {
   return orders.num_inputs() == 1 && orders.na >= 1 &&
          orders.na <= kMaxFixedOrder && orders.nb[0] >= 1 &&
-         orders.nb[0] <= orders.na + 1;
+         orders.nb[0] <= orders.na;
 }
 
 // Calls f(SizeConstant<NA>, SizeConstant<NP>) with na and np = na + nb as
-// compile-time constants for a one-input model with na <= kMaxFixedOrder
-// when `enabled`, and f(SizeConstant<Dynamic>, SizeConstant<Dynamic>)
+// compile-time constants for a one-input model with nb <= na <=
+// kMaxFixedOrder when `enabled`, and f(SizeConstant<Dynamic>, SizeConstant<Dynamic>)
 // otherwise; returns what f returns.
-template <typename F>
+//
+// Only in double: every fixed size is compiled again for each scalar type,
+// and the gateways' single-precision option (meant for checking what a
+// float implementation would give, not for speed) does not justify doubling
+// their compile time, so run_rlssvf<float> and run_recursive_iv<float> take
+// the dynamic path. The float kernels exist all the same (RlsSvf<float, 2,
+// 3>, ...) and tests/core/fixed_size_test.cpp checks them.
+template <typename S, typename F>
 auto with_fixed_sizes(const ModelOrders& orders, bool enabled, F&& f) {
-  if (enabled && has_fixed_sizes(orders)) {
-    return detail::dispatch_order<1>(orders.na, orders.nb[0], f);
+  if constexpr (std::is_same_v<S, double>) {
+    if (enabled && has_fixed_sizes(orders)) {
+      return detail::dispatch_order<1>(orders.na, orders.nb[0], f);
+    }
   }
   return f(SizeConstant<Eigen::Dynamic>{}, SizeConstant<Eigen::Dynamic>{});
 }

@@ -76,8 +76,9 @@ struct RecursiveIvConfig {
   S antiwindup_gamma = 0;  // gamma of eq. (3.79); 0: no conditional updating
   S antiwindup_lambda = S(0.998);  // forgetting factor of the parallel
                                    // RLSSVF-FF (thesis Table 3.2)
-  // run_recursive_iv(): compile-time kernels for one input and na <= 4
-  // (fixed_size.hpp); false forces the general dynamic-size path.
+  // run_recursive_iv() in double: compile-time kernels for one input and
+  // nb <= na <= 4 (fixed_size.hpp); false forces the general dynamic-size
+  // path.
   bool fixed_size = true;
 };
 
@@ -560,7 +561,7 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
       }
     }
   }
-  return with_fixed_sizes(config.orders, config.fixed_size,
+  return with_fixed_sizes<S>(config.orders, config.fixed_size,
                           [&](auto na, auto np) {
                             return run_recursive_iv_sized<
                                 S, decltype(na)::value, decltype(np)::value>(

@@ -60,8 +60,9 @@ struct RlsSvfConfig {
   Vector<S> scaling;    // diagonal of M_s; empty: no scaling
   bool initial_conditions = false;
   S t_s_ls = 0;  // first update at the first sample with t - t_1 >= t_s_ls
-  // run_rlssvf(): compile-time kernels for one input and na <= 4
-  // (fixed_size.hpp); false forces the general dynamic-size path.
+  // run_rlssvf() in double: compile-time kernels for one input and
+  // nb <= na <= 4 (fixed_size.hpp); false forces the general dynamic-size
+  // path.
   bool fixed_size = true;
 };
 
@@ -530,7 +531,7 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
   const Status status = validate_record(record, config.orders);
   if (!status.ok()) return status;
   const bool fixed = config.fixed_size && !config.initial_conditions;
-  return with_fixed_sizes(config.orders, fixed, [&](auto na, auto np) {
+  return with_fixed_sizes<S>(config.orders, fixed, [&](auto na, auto np) {
     return run_rlssvf_sized<S, decltype(na)::value, decltype(np)::value>(
         config, record, out);
   });
