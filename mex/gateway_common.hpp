@@ -112,4 +112,20 @@ inline bool read_transfer_function(const Gateway& g, OptionsReader& opt,
   return true;
 }
 
+// A new output array holding a copy of the double matrix m (a vector is
+// one column; pass v.transpose() for a row).
+template <typename Derived>
+mxArray* to_output(const Eigen::DenseBase<Derived>& m) {
+  mxArray* a = make_output_matrix(m.rows(), m.cols());
+  Eigen::Map<Eigen::MatrixXd>(mxGetPr(a), m.rows(), m.cols()) = m;
+  return a;
+}
+
+// The intersample rule of an option code: 0 zoh, 1 foh.
+inline InterSample intersample_rule(const Gateway& g, int code) {
+  if (code == 0) return InterSample::kZoh;
+  if (code == 1) return InterSample::kFoh;
+  g.fail("badOption", "intersample codes must be 0 (zoh) or 1 (foh)");
+}
+
 }  // namespace ctid::mex

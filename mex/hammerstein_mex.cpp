@@ -20,28 +20,12 @@
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
+using ctid::mex::to_output;
 
-mxArray* column(const ctid::Vector<double>& v) {
-  mxArray* a = ctid::mex::make_output_matrix(v.size(), 1);
-  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
-  return a;
-}
-
-mxArray* matrix(const ctid::Matrix<double>& m) {
-  mxArray* a = ctid::mex::make_output_matrix(m.rows(), m.cols());
-  std::copy(m.data(), m.data() + m.size(), mxGetPr(a));
-  return a;
-}
-
-ctid::InterSample rule_of(const Gateway& g, int code) {
-  if (code == 0) return ctid::InterSample::kZoh;
-  if (code == 1) return ctid::InterSample::kFoh;
-  g.fail("badOption", "intersample codes must be 0 (zoh) or 1 (foh)");
-}
-
-void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
-                         int nrhs, const mxArray* prhs[]) {
+void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                         const mxArray* prhs[]) {
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments, got " + std::to_string(nrhs));
@@ -50,9 +34,8 @@ void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
   const ctid::RecordView<double> record =
       ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   for (long k = 0; k < record.num_samples * (1 + record.num_inputs); ++k) {
-    const double v = k < record.num_samples
-                         ? record.y[k]
-                         : record.u[k - record.num_samples];
+    const double v =
+        k < record.num_samples ? record.y[k] : record.u[k - record.num_samples];
     if (!std::isfinite(v)) g.fail("badInput", "y and w must be finite");
   }
   if (record.num_inputs < 1) g.fail("badInput", "w needs a basis column");
@@ -78,8 +61,8 @@ void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
   orders.nd = opt.integer("nd", 0);
   orders.nw = opt.integer("nw", 1);
   ctid::BlockSettings<double> settings;
-  settings.u_rule = rule_of(g, opt.integer("intersample", 0));
-  settings.y_rule = rule_of(g, opt.integer("y_intersample", 1));
+  settings.u_rule = intersample_rule(g, opt.integer("intersample", 0));
+  settings.y_rule = intersample_rule(g, opt.integer("y_intersample", 1));
   settings.tolerance = opt.scalar("tol", 1e-6);
   settings.max_iterations = opt.integer("maxiter", 30);
   const Eigen::MatrixXd cutoffs = opt.matrix("cutoffs");
@@ -87,39 +70,38 @@ void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
   opt.finish();
 
   ctid::BlockResult<double> result;
-  const ctid::Status status = ctid::block_srivc(
-      model, orders, settings, data, static_cast<int>(record.num_inputs),
-      &result);
+  const ctid::Status status =
+      ctid::block_srivc(model, orders, settings, data,
+                        static_cast<int>(record.num_inputs), &result);
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
 
   const int l = static_cast<int>(result.alpha.size());
   const int m = static_cast<int>(result.beta.size());
   ctid::Vector<double> sep(result.f.size() + result.b.size() + l - 1 + m - 1);
   sep << result.f, result.b, result.alpha.tail(l - 1), result.beta.tail(m - 1);
-  plhs[0] = column(sep);
-  if (nlhs >= 2) plhs[1] = matrix(result.covariance);
+  plhs[0] = to_output(sep);
+  if (nlhs >= 2) plhs[1] = to_output(result.covariance);
   if (nlhs >= 3) {
-    const char* fields[] = {"f",          "b",          "alpha",
-                            "beta",       "c",          "d",
-                            "theta_miso", "cov_miso",   "noise_variance",
-                            "condition",  "iterations", "converged",
-                            "reason",     "simulated"};
+    const char* fields[] = {
+        "f",          "b",          "alpha",    "beta",           "c",
+        "d",          "theta_miso", "cov_miso", "noise_variance", "condition",
+        "iterations", "converged",  "reason",   "simulated"};
     mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
-    mxSetField(info, 0, "f", column(result.f));
-    mxSetField(info, 0, "b", column(result.b));
-    mxSetField(info, 0, "alpha", column(result.alpha));
-    mxSetField(info, 0, "beta", column(result.beta));
-    mxSetField(info, 0, "c", column(result.c));
-    mxSetField(info, 0, "d", column(result.d));
-    mxSetField(info, 0, "theta_miso", column(result.theta_miso));
-    mxSetField(info, 0, "cov_miso", matrix(result.covariance_miso));
+    mxSetField(info, 0, "f", to_output(result.f));
+    mxSetField(info, 0, "b", to_output(result.b));
+    mxSetField(info, 0, "alpha", to_output(result.alpha));
+    mxSetField(info, 0, "beta", to_output(result.beta));
+    mxSetField(info, 0, "c", to_output(result.c));
+    mxSetField(info, 0, "d", to_output(result.d));
+    mxSetField(info, 0, "theta_miso", to_output(result.theta_miso));
+    mxSetField(info, 0, "cov_miso", to_output(result.covariance_miso));
     mxSetField(info, 0, "noise_variance",
                mxCreateDoubleScalar(result.noise_variance));
     mxSetField(info, 0, "condition", mxCreateDoubleScalar(result.condition));
     mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
-    mxSetField(info, 0, "simulated", column(result.simulated));
+    mxSetField(info, 0, "simulated", to_output(result.simulated));
     plhs[2] = info;
   }
 }

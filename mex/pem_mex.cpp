@@ -24,18 +24,7 @@ namespace {
 
 using ctid::mex::Gateway;
 using ctid::mex::OptionsReader;
-
-mxArray* column(const ctid::Vector<double>& v) {
-  mxArray* a = ctid::mex::make_output_matrix(v.size(), 1);
-  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
-  return a;
-}
-
-mxArray* square(const ctid::Matrix<double>& m) {
-  mxArray* a = ctid::mex::make_output_matrix(m.rows(), m.cols());
-  std::copy(m.data(), m.data() + m.size(), mxGetPr(a));
-  return a;
-}
+using ctid::mex::to_output;
 
 void arx_gateway(const Gateway& g, OptionsReader& opt,
                  const ctid::RecordView<double>& record, int nlhs,
@@ -51,8 +40,8 @@ void arx_gateway(const Gateway& g, OptionsReader& opt,
   g.check(ctid::arx_least_squares<double>(
       record.y, record.u, record.num_samples,
       static_cast<int>(record.num_inputs), na, nb, nk, &r));
-  plhs[0] = column(r.theta);
-  if (nlhs >= 2) plhs[1] = square(r.covariance);
+  plhs[0] = to_output(r.theta);
+  if (nlhs >= 2) plhs[1] = to_output(r.covariance);
   if (nlhs >= 3) {
     const char* fields[] = {"loss", "noise_variance", "rows"};
     mxArray* info = mxCreateStructMatrix(1, 1, 3, fields);
@@ -120,8 +109,8 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::OeResult<double> r;
   const ctid::Status status = ctid::output_error(s, settings, data, &r);
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
-  plhs[0] = column(r.theta);
-  if (nlhs >= 2) plhs[1] = square(r.covariance);
+  plhs[0] = to_output(r.theta);
+  if (nlhs >= 2) plhs[1] = to_output(r.covariance);
   if (nlhs >= 3) {
     const char* fields[] = {"converged", "iterations",     "reason",
                             "loss",      "noise_variance", "gradient_norm",
@@ -137,8 +126,8 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     mxSetField(info, 0, "gradient_norm", mxCreateDoubleScalar(r.gradient_norm));
     mxSetField(info, 0, "damping", mxCreateDoubleScalar(r.damping));
     mxSetField(info, 0, "start", mxCreateString(r.start.c_str()));
-    mxSetField(info, 0, "theta_start", column(r.theta_start));
-    mxSetField(info, 0, "simulated", column(r.simulated));
+    mxSetField(info, 0, "theta_start", to_output(r.theta_start));
+    mxSetField(info, 0, "simulated", to_output(r.simulated));
     plhs[2] = info;
   }
 }

@@ -27,22 +27,12 @@
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
-
-mxArray* column(const ctid::Vector<double>& v) {
-  mxArray* a = ctid::mex::make_output_matrix(v.size(), 1);
-  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
-  return a;
-}
+using ctid::mex::to_output;
 
 std::vector<double> to_std(const Eigen::MatrixXd& m) {
   return std::vector<double>(m.data(), m.data() + m.size());
-}
-
-ctid::InterSample rule_of(const Gateway& g, int code) {
-  if (code == 0) return ctid::InterSample::kZoh;
-  if (code == 1) return ctid::InterSample::kFoh;
-  g.fail("badOption", "intersample codes must be 0 (zoh) or 1 (foh)");
 }
 
 void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
@@ -82,12 +72,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (delays.empty()) delays.assign(m, 0.0);
   if (static_cast<int>(delays.size()) != m) {
     g.fail("dimensionMismatch",
-           "delay needs one entry per column of w (" + std::to_string(m) +
-               ")");
+           "delay needs one entry per column of w (" + std::to_string(m) + ")");
   }
-  if (static_cast<int>(group.size()) != m ||
-      static_cast<int>(nb.size()) != m || static_cast<int>(nk.size()) != m ||
-      static_cast<int>(rules.size()) != m) {
+  if (static_cast<int>(group.size()) != m || static_cast<int>(nb.size()) != m ||
+      static_cast<int>(nk.size()) != m || static_cast<int>(rules.size()) != m) {
     g.fail("dimensionMismatch",
            "group, nb, nk and intersample need one entry per column of w (" +
                std::to_string(m) + ")");
@@ -97,11 +85,11 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     c.group = group[j] - 1;
     c.nb = nb[j];
     c.nk = nk[j];
-    c.rule = rule_of(g, rules[j]);
+    c.rule = intersample_rule(g, rules[j]);
     c.delay = delays[j];
     problem.channels.push_back(c);
   }
-  problem.y_rule = rule_of(g, opt.integer("y_intersample", 1));
+  problem.y_rule = intersample_rule(g, opt.integer("y_intersample", 1));
   problem.output_offset = opt.flag("output_offset", false);
   problem.initial_state = opt.flag("initial_state", false);
   const Eigen::MatrixXd fixed = opt.matrix("fixed");
@@ -161,18 +149,18 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       ctid::refined_iv(problem, settings, data, &result);
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
 
-  plhs[0] = column(result.theta);
+  plhs[0] = to_output(result.theta);
   if (nlhs >= 2) {
     plhs[1] = ctid::mex::make_output_matrix(np, np);
     std::copy(result.covariance.data(), result.covariance.data() + np * np,
               mxGetPr(plhs[1]));
   }
   if (nlhs >= 3) {
-    const char* fields[] = {"converged",    "stable",         "iterations",
-                            "reason",       "noise_variance", "cutoff",
-                            "time_scale",   "starts",         "condition",
-                            "x0",           "offset",         "simulated",
-                            "free_response", "determined"};
+    const char* fields[] = {
+        "converged",      "stable",    "iterations", "reason",
+        "noise_variance", "cutoff",    "time_scale", "starts",
+        "condition",      "x0",        "offset",     "simulated",
+        "free_response",  "determined"};
     mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
@@ -184,10 +172,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     mxSetField(info, 0, "time_scale", mxCreateDoubleScalar(result.time_scale));
     mxSetField(info, 0, "starts", mxCreateDoubleScalar(result.starts_tried));
     mxSetField(info, 0, "condition", mxCreateDoubleScalar(result.condition));
-    mxSetField(info, 0, "x0", column(result.x0));
+    mxSetField(info, 0, "x0", to_output(result.x0));
     mxSetField(info, 0, "offset", mxCreateDoubleScalar(result.offset));
-    mxSetField(info, 0, "simulated", column(result.simulated));
-    mxSetField(info, 0, "free_response", column(result.free_response));
+    mxSetField(info, 0, "simulated", to_output(result.simulated));
+    mxSetField(info, 0, "free_response", to_output(result.free_response));
     mxSetField(info, 0, "determined", mxCreateLogicalScalar(result.determined));
     plhs[2] = info;
   }

@@ -24,31 +24,9 @@
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
-
-mxArray* column(const ctid::Vector<double>& v) {
-  mxArray* a = ctid::mex::make_output_matrix(v.size(), 1);
-  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
-  return a;
-}
-
-mxArray* row(const ctid::Vector<double>& v) {
-  mxArray* a = ctid::mex::make_output_matrix(1, v.size());
-  std::copy(v.data(), v.data() + v.size(), mxGetPr(a));
-  return a;
-}
-
-mxArray* matrix(const ctid::Matrix<double>& m) {
-  mxArray* a = ctid::mex::make_output_matrix(m.rows(), m.cols());
-  std::copy(m.data(), m.data() + m.size(), mxGetPr(a));
-  return a;
-}
-
-ctid::InterSample rule_of(const Gateway& g, int code) {
-  if (code == 0) return ctid::InterSample::kZoh;
-  if (code == 1) return ctid::InterSample::kFoh;
-  g.fail("badOption", "intersample must be 0 (zoh) or 1 (foh)");
-}
+using ctid::mex::to_output;
 
 enum class Method { kRivc, kCl2srivc, kArma };
 
@@ -84,7 +62,7 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   problem.nf = opt.integer("nf", 1);
   problem.nk = opt.integer("nk", 0);
   problem.delay = opt.scalar("delay", 0);
-  problem.u_rule = rule_of(g, opt.integer("intersample", 0));
+  problem.u_rule = intersample_rule(g, opt.integer("intersample", 0));
   settings.tolerance = opt.scalar("tol", 1e-6);
   settings.max_iterations = opt.integer("maxiter", 30);
   const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
@@ -141,8 +119,8 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     cov = arma.covariance;
     set_info(info, "converged", mxCreateLogicalScalar(arma.converged));
     set_info(info, "iterations", mxCreateDoubleScalar(arma.iterations));
-    set_info(info, "C", row(arma.c));
-    set_info(info, "D", row(arma.d));
+    set_info(info, "C", to_output(arma.c.transpose()));
+    set_info(info, "D", to_output(arma.d.transpose()));
     set_info(info, "noise_variance",
              mxCreateDoubleScalar(arma.innovation_variance));
   } else if (method == Method::kCl2srivc) {
@@ -177,11 +155,11 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
              mxCreateDoubleScalar(res.plant.noise_variance));
     set_info(info, "simulation_variance",
              mxCreateDoubleScalar(res.plant.noise_variance));
-    set_info(info, "simulated", column(res.plant.simulated));
+    set_info(info, "simulated", to_output(res.plant.simulated));
     set_info(info, "condition", mxCreateDoubleScalar(res.plant.condition));
-    set_info(info, "cl_theta", column(res.sensitivity.theta));
-    set_info(info, "cl_covariance", matrix(res.sensitivity.covariance));
-    set_info(info, "u_hat", column(res.sensitivity.simulated));
+    set_info(info, "cl_theta", to_output(res.sensitivity.theta));
+    set_info(info, "cl_covariance", to_output(res.sensitivity.covariance));
+    set_info(info, "u_hat", to_output(res.sensitivity.simulated));
   } else {
     if (cnum.size() > 0) {
       if (cden.size() == 0) {
@@ -203,19 +181,19 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     set_info(info, "converged", mxCreateLogicalScalar(res.converged));
     set_info(info, "iterations", mxCreateDoubleScalar(res.iterations));
     set_info(info, "reason", mxCreateString(res.reason.c_str()));
-    set_info(info, "C", row(res.noise.c));
-    set_info(info, "D", row(res.noise.d));
+    set_info(info, "C", to_output(res.noise.c.transpose()));
+    set_info(info, "D", to_output(res.noise.d.transpose()));
     set_info(info, "noise_variance",
              mxCreateDoubleScalar(res.noise.innovation_variance));
-    set_info(info, "noise_covariance", matrix(res.noise.covariance));
+    set_info(info, "noise_covariance", to_output(res.noise.covariance));
     set_info(info, "simulation_variance",
              mxCreateDoubleScalar(res.simulation_variance));
-    set_info(info, "simulated", column(res.simulated));
+    set_info(info, "simulated", to_output(res.simulated));
     set_info(info, "condition", mxCreateDoubleScalar(res.condition));
-    set_info(info, "start_theta", column(res.start_theta));
+    set_info(info, "start_theta", to_output(res.start_theta));
   }
-  plhs[0] = column(theta);
-  if (nlhs >= 2) plhs[1] = matrix(cov);
+  plhs[0] = to_output(theta);
+  if (nlhs >= 2) plhs[1] = to_output(cov);
   if (nlhs >= 3) {
     plhs[2] = info;
   } else {
