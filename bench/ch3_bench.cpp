@@ -29,9 +29,9 @@
 #include <string>
 #include <vector>
 
-#include "ctid/discretization.hpp"
-#include "ctid/recursive_iv.hpp"
-#include "ctid/rlssvf.hpp"
+#include "ctid/filters/discretization.hpp"
+#include "ctid/recursive/recursive_iv.hpp"
+#include "ctid/recursive/rlssvf.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // reports per estimator whether P stayed finite with a positive definite
 // symmetric part at every check, the smallest lambda_min / lambda_max of
 // that symmetric part, on how many samples the covariance protection
-// (core/include/ctid/covariance_guard.hpp) acted and the first, the final
+// (core/include/ctid/adaptation/covariance_guard.hpp) acted and the first, the final
 // estimate (true [2.4 4 4]) and the run time. Usage:
 //   bench_long_run [samples (default 1e8)] [check_every (default 1)]
 //                  [name filter, e.g. RSRIVC] [precision: both | double |

@@ -1,7 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{theta}, @var{iters}] =} pem_plain_octave (@var{y}, @var{u}, @var{Ts}, @var{nf}, @var{nb}, @var{theta0}, @var{kind}, @var{maxiter})
 ## The baseline of bench/pem_octave_bench.m: the iteration of
-## core/include/ctid/output_error.hpp written in plain Octave as a user
+## core/include/ctid/offline/output_error.hpp written in plain Octave as a user
 ## would without the toolbox: Levenberg-Marquardt (scaled damping, steps
 ## refused while F is unstable or the loss does not fall) on the
 ## simulation error, exact Jacobian.  @var{kind} "ct": B(p)/F(p) with a

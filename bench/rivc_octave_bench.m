@@ -2,7 +2,7 @@
 ## @deftypefn {} {@var{T} =} rivc_octave_bench ()
 ## Side-by-side timing on 10 000 samples (issue 11 bar: at least 50 times
 ## faster than plain Octave): the core estimators rivc, clrivc and
-## cl2srivc (core/include/ctid/refined_iv_bj.hpp through rivc_mex) against
+## cl2srivc (core/include/ctid/offline/refined_iv_bj.hpp through rivc_mex) against
 ## @file{rivc_plain_octave.m}, the same iteration in plain Octave, run for
 ## the same number of iterations K (10) from the same start; the core is
 ## timed at its gateway (median of 3 runs). For cl2srivc the core's time

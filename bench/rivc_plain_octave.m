@@ -1,6 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{theta}, @var{P}, @var{C}, @var{D}] =} rivc_plain_octave (@var{y}, @var{u}, @var{Ts}, @var{nn}, @var{theta}, @var{iters}, @var{r}, @var{cnum}, @var{cden})
-## The RIVC / CLRIVC iteration of core/include/ctid/refined_iv_bj.hpp
+## The RIVC / CLRIVC iteration of core/include/ctid/offline/refined_iv_bj.hpp
 ## written in plain Octave, the baseline of @file{rivc_octave_bench.m}:
 ## @var{iters} iterations from @var{theta} = [f b] (original time; no time
 ## scaling), nn = [nb nc nd nf]. Each iteration: the exact ZOH filters

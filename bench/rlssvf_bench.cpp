@@ -29,8 +29,8 @@
 #include <utility>
 #include <vector>
 
-#include "ctid/discretization.hpp"
-#include "ctid/rlssvf.hpp"
+#include "ctid/filters/discretization.hpp"
+#include "ctid/recursive/rlssvf.hpp"
 
 namespace {
 

@@ -38,8 +38,8 @@
 #include <utility>
 #include <vector>
 
-#include "ctid/discretization.hpp"
-#include "ctid/recursive_iv.hpp"
+#include "ctid/filters/discretization.hpp"
+#include "ctid/recursive/recursive_iv.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 ## uniformly sampled data, u held constant between samples (ZOH). @var{Qn}
 ## is the 3-by-3 normalised covariance of the random walk of the parameters
 ## and @var{thm} (N-by-3) is ordered [b0 f1 f2], as @code{rsrivc}. The same
-## algorithm as the core (core/include/ctid/recursive_iv.hpp) and so as
+## algorithm as the core (core/include/ctid/recursive/recursive_iv.hpp) and so as
 ##
 ##   rsrivc (iddata (y, u, Ts, "InterSample", "zoh"), [1 2 0],
 ##           "lambda_svf", lambda_svf, "adm", "kf", "adg", Qn, "tsiv", tsiv)

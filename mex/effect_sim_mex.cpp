@@ -12,7 +12,7 @@
 // level), y_off, substeps; in closed loop controller_num, controller_den,
 // r1, r2 (N-by-1 each), s (N-by-1 sampled output terms, optional) and poly
 // ([c2 c3]); for per-sample coefficients f_t (N-by-n) and b_t (N-by-nm).
-#include "ctid/effect_simulator.hpp"
+#include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
 
 namespace {

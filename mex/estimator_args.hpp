@@ -21,8 +21,8 @@
 
 #include <vector>
 
-#include "ctid/recursive_iv.hpp"
-#include "ctid/rlssvf.hpp"
+#include "ctid/recursive/recursive_iv.hpp"
+#include "ctid/recursive/rlssvf.hpp"
 #include "gateway_common.hpp"
 
 namespace ctid::mex {

@@ -13,7 +13,7 @@
 #include <complex>
 #include <vector>
 
-#include "ctid/freq_srivc.hpp"
+#include "ctid/offline/freq_srivc.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 

@@ -4,11 +4,11 @@
 // estimate.
 #pragma once
 
-#include "ctid/adaptation.hpp"
-#include "ctid/controller.hpp"
-#include "ctid/model.hpp"
-#include "ctid/record.hpp"
-#include "ctid/svf_regressor.hpp"
+#include "ctid/adaptation/adaptation.hpp"
+#include "ctid/simulation/controller.hpp"
+#include "ctid/base/model.hpp"
+#include "ctid/base/record.hpp"
+#include "ctid/filters/svf_regressor.hpp"
 #include "options_reader.hpp"
 
 namespace ctid::mex {

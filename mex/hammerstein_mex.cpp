@@ -1,5 +1,5 @@
 // MEX gateway of the block-oriented refined-IV estimators (core/include/
-// ctid/hammerstein.hpp), called by octave/private/contsid_block.m:
+// ctid/offline/hammerstein.hpp), called by octave/private/contsid_block.m:
 //
 //   [sep, cov, info] = hammerstein_mex (fname, y, w, t, opts)
 //
@@ -13,7 +13,7 @@
 // iterations, converged, reason, simulated.
 #include <algorithm>
 
-#include "ctid/hammerstein.hpp"
+#include "ctid/offline/hammerstein.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 

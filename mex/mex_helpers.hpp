@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "ctid/status.hpp"
+#include "ctid/base/status.hpp"
 
 namespace ctid::mex {
 

@@ -17,8 +17,8 @@
 //                                               "scaling"
 // returns instead the diagonal of the scaling matrix M_s of eq. (3.54) for
 // the SVF regression of this record (svfscaling, rlssvf/rsrivc 'scaling').
-#include "ctid/refined_iv.hpp"
-#include "ctid/scaling.hpp"
+#include "ctid/offline/refined_iv.hpp"
+#include "ctid/recursive/scaling.hpp"
 #include "gateway_common.hpp"
 
 namespace {

@@ -16,7 +16,7 @@
 // theta_start, simulated (output error) or rows (arx).
 #include <algorithm>
 
-#include "ctid/output_error.hpp"
+#include "ctid/offline/output_error.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 

@@ -16,8 +16,8 @@
 
 #include <vector>
 
-#include "ctid/nlopt_minimizer.hpp"
-#include "ctid/qn_ml.hpp"
+#include "ctid/adaptation/nlopt_minimizer.hpp"
+#include "ctid/adaptation/qn_ml.hpp"
 #include "estimator_args.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 // adg (forgetting factor or (na+nb)-square Qn), th0, P0 ([] = defaults),
 // lambda (bilinear SVF prefilter cut-off, 0 = none), continuous (convert
 // to CT at every step).
-#include "ctid/recursive_arx.hpp"
+#include "ctid/recursive/recursive_arx.hpp"
 #include "mex_helpers.hpp"
 #include "options_reader.hpp"
 

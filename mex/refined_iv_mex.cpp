@@ -20,7 +20,7 @@
 // do not determine).
 #include <algorithm>
 
-#include "ctid/refined_iv.hpp"
+#include "ctid/offline/refined_iv.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 

@@ -17,7 +17,7 @@
 // start_theta; cl2srivc: cl_theta, cl_covariance, u_hat.
 #include <algorithm>
 
-#include "ctid/refined_iv_bj.hpp"
+#include "ctid/offline/refined_iv_bj.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 

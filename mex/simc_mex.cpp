@@ -9,7 +9,7 @@
 // noise (absent or [], or N-by-1 e(t_k) added to y); in closed loop
 // controller_num, controller_den (C(q^-1) of u = r1 + C (r2 - y)) and r2
 // (N-by-1).
-#include "ctid/ltv_simulator.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
 #include "gateway_common.hpp"
 
 namespace {

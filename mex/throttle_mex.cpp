@@ -19,7 +19,7 @@
 // (throttlesim) or [rejections] (throttleid).
 #include <limits>
 
-#include "ctid/throttle.hpp"
+#include "ctid/apps/throttle.hpp"
 #include "gateway_common.hpp"
 
 namespace {

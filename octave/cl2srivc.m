@@ -13,7 +13,7 @@
 ## The noise in the measured u (correlated with the output noise through
 ## the loop) does not reach the second stage, so the plant estimate is
 ## consistent without knowing the controller
-## (core/include/ctid/refined_iv_bj.hpp, @code{cl2srivc}).
+## (core/include/ctid/offline/refined_iv_bj.hpp, @code{cl2srivc}).
 ##
 ## @var{data_yu}: @code{iddata (y, u, Ts)}; @var{data_ur}: @code{iddata
 ## (u, r, Ts)} or r (N-by-1, held between samples). u_hat is the output

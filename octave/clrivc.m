@@ -8,7 +8,7 @@
 ## u(t) = Mc(p) (r(t) - y(t)),
 ## @end example
 ## with a known continuous-time controller Mc = Nc/Dc. As @code{rivc}
-## (core/include/ctid/refined_iv_bj.hpp), but the instruments come from
+## (core/include/ctid/offline/refined_iv_bj.hpp), but the instruments come from
 ## the closed loop driven by the reference r: x_hat = B Nc / (F Dc + B Nc)
 ## r and u_hat = F Nc / (F Dc + B Nc) r (thesis eqs. 2.48-2.49 with a
 ## continuous controller), prefiltered by 1/F(p) and then D/C; the

@@ -10,7 +10,7 @@
 ## @end example
 ## a continuous-time plant with a discrete-time ARMA noise model.
 ##
-## Each iteration (core/include/ctid/refined_iv_bj.hpp) simulates the
+## Each iteration (core/include/ctid/offline/refined_iv_bj.hpp) simulates the
 ## auxiliary model x_hat = B/F u, fits an ARMA model D xi = C e to the
 ## noise estimate xi = y - x_hat (Hannan-Rissanen, then Gauss-Newton
 ## prediction-error steps), and solves the IV equations of thesis

@@ -156,7 +156,7 @@
 ## Potter and LMR forms keep P positive definite by construction and get
 ## no protection. @code{"covariance_guard", false} turns it off, as in the
 ## thesis' demonstrations of lost definiteness (sec. 3.5). See
-## @file{core/include/ctid/covariance_guard.hpp}.
+## @file{core/include/ctid/adaptation/covariance_guard.hpp}.
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
 ## InterSample rule (exact ZOH through the matrix exponential, or the

@@ -10,7 +10,7 @@
 ## @end example
 ## by refined IV: @code{tfsrivc} gives the delay td (search and
 ## refinement, or fixed with 'FixTd') and the start; RIVC
-## (core/include/ctid/refined_iv_bj.hpp, as @code{rivc}) then iterates
+## (core/include/ctid/offline/refined_iv_bj.hpp, as @code{rivc}) then iterates
 ## the plant and the noise model with td kept, the delayed input filtered
 ## exactly for any fraction of a sample.
 ##

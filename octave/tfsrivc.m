@@ -8,7 +8,7 @@
 ## y(t) = B(p)/F(p) u(t - td) + e(t),   deg F = np, deg B = nz,
 ## @end example
 ## by the simplified refined instrumental-variable method (SRIVC, thesis
-## eqs. 2.8-2.13; one engine, core/include/ctid/refined_iv.hpp) with the
+## eqs. 2.8-2.13; one engine, core/include/ctid/offline/refined_iv.hpp) with the
 ## delay td estimated by a grid search and Gauss-Newton refinement, or
 ## fixed. td may be any fraction of a sampling interval: the delayed input
 ## is filtered exactly under its ZOH or FOH rule (also on irregularly

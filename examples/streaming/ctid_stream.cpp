@@ -17,7 +17,7 @@
 #include <sstream>
 #include <string>
 
-#include "ctid/rlssvf.hpp"
+#include "ctid/ctid.hpp"  // the whole core; "ctid/recursive/rlssvf.hpp" alone would do
 
 namespace {
 

@@ -2,7 +2,7 @@
 ## @deftypefn {} {[@var{M}, @var{Infos}, @var{yhat}] =} contsid_block (@var{fname}, @var{args})
 ## The shared back-end of @code{hsrivc}, @code{hrivc} and @code{hwsrivc}
 ## (block-oriented models by refined IV, core
-## @file{core/include/ctid/hammerstein.hpp} through
+## @file{core/include/ctid/offline/hammerstein.hpp} through
 ## @code{hammerstein_mex}). @var{fname} names the caller in every error
 ## identifier; @var{args} is its argument list: data (an @code{iddata} or
 ## y, u, Ts), @var{nn}, then CONTSID's positional options (lambda0, t0,

@@ -1,7 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{info}] =} contsid_freq (@var{fname}, @var{args})
 ## The shared back-end of the frequency-domain estimators (core
-## @file{core/include/ctid/freq_srivc.hpp} through @code{freq_srivc_mex}):
+## @file{core/include/ctid/offline/freq_srivc.hpp} through @code{freq_srivc_mex}):
 ## @code{srivc} on an @code{idfrd} or frequency-domain @code{iddata}
 ## (@var{args} = @{data, nn, name, value, ..@}, an @code{idpoly}), and
 ## @code{tffsrivc}/@code{tffcoe} (@var{args} = @{data, np, nz [, IODelay],

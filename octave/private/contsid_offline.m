@@ -2,7 +2,7 @@
 ## @deftypefn {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} contsid_offline (@var{fname}, @var{args})
 ## Shared back-end of lssvf, ivsvf, srivc and clsrivc: parses the data,
 ## nn, the cut-off and the options, runs the refined-IV engine
-## (@code{contsid_refined_iv}, core/include/ctid/refined_iv.hpp) and builds
+## (@code{contsid_refined_iv}, core/include/ctid/offline/refined_iv.hpp) and builds
 ## the model (built by @code{idctm},
 ## which returns an @code{idpoly}, in @code{make_model}). Without a
 ## cut-off, srivc/clsrivc start from IVSVF at 12 cut-offs log-spaced
@@ -95,7 +95,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
   ## the engine's words for an iterate it had to pull back into the
-  ## stable region (core/include/ctid/refined_iv.hpp, Estimator::refine)
+  ## stable region (core/include/ctid/offline/refined_iv.hpp, Estimator::refine)
   pulled_back = ! isempty (strfind (info.reason,
                                     "unconstrained estimate is unstable"));
   if (auto_input_offset && (! info.stable || (! info.converged

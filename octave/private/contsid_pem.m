@@ -3,7 +3,7 @@
 ## Back-end of the prediction-error estimators @code{tfcoe}, @code{tfest},
 ## @code{oe} and @code{arx}: reads the data (@code{contsid_getdata}), the
 ## orders and the options of @var{fname}, calls the core through
-## @code{pem_mex} (core/include/ctid/output_error.hpp) and builds the
+## @code{pem_mex} (core/include/ctid/offline/output_error.hpp) and builds the
 ## @code{idtf}/@code{idpoly} with covariance and Report (Fit.FitPercent,
 ## LossFcn, MSE, FPE as the SITB defines them; Termination with the
 ## iterations, convergence flag and reason).  @var{info} is the gateway's.

@@ -22,7 +22,7 @@
 ## (eq. 1.19).
 ## @item covariance_guard
 ## logical scalar (default true): the protection of P of
-## @file{core/include/ctid/covariance_guard.hpp} after each update of the
+## @file{core/include/ctid/adaptation/covariance_guard.hpp} after each update of the
 ## standard form (see @code{rlssvf}).
 ## @item GapSettle
 ## seconds without update after a gap of missing samples (finite, >= 0;

@@ -1,7 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{theta}, @var{cov}, @var{info}] =} contsid_refined_iv (@var{fname}, @var{y}, @var{W}, @var{t}, @var{opts})
 ## The Octave entry point of the offline refined-IV engine
-## (core/include/ctid/refined_iv.hpp): LSSVF (thesis eq. 1.32), IVSVF
+## (core/include/ctid/offline/refined_iv.hpp): LSSVF (thesis eq. 1.32), IVSVF
 ## (eqs. 2.4-2.7), SRIVC (eqs. 2.8-2.13) and CLSRIVC with a
 ## continuous-time controller (eqs. 2.47-2.50) for the model
 ## @example

@@ -2,7 +2,7 @@
 ## @deftypefn {} {[@var{M}, @var{info}, @var{d}] =} contsid_rivc (@var{fname}, @var{args})
 ## Back-end of rivc, tfrivc, clrivc and cl2srivc: parses the arguments of
 ## the public function @var{fname} (its @code{varargin} @var{args}), runs
-## the core (core/include/ctid/refined_iv_bj.hpp through rivc_mex) and
+## the core (core/include/ctid/offline/refined_iv_bj.hpp through rivc_mex) and
 ## returns the plant model @var{M} (an @code{idpoly}, continuous time,
 ## with the covariance and Report; for tfrivc an @code{idtf}), the
 ## gateway's @var{info} (C, D, noise_variance, condition, ...) plus the

@@ -1,7 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{num}, @var{den}, @var{td}, @var{P}, @var{info}] =} contsid_tfsrivc (@var{fname}, @var{d}, @var{np}, @var{nz}, @var{o})
 ## Shared back-end of tfsrivc, tfsrivc_init and procsrivc: SRIVC on the
-## refined-IV engine (core/include/ctid/refined_iv.hpp, thesis eqs.
+## refined-IV engine (core/include/ctid/offline/refined_iv.hpp, thesis eqs.
 ## 2.8-2.13) for B(p)/F(p) e^(-td p) with a continuous delay td (any
 ## fraction of a sample; the delayed ZOH/FOH input is filtered exactly).
 ##

@@ -6,7 +6,7 @@
 ## F(p) y(t) = sum_j B_j(p) w_j(t - nk_j Ts) + e(t)
 ## @end example
 ## by the toolbox's offline refined-IV engine
-## (@code{contsid_refined_iv}, core/include/ctid/refined_iv.hpp), the
+## (@code{contsid_refined_iv}, core/include/ctid/offline/refined_iv.hpp), the
 ## channels w_j (inputs and effect terms) as its extra regressors, some
 ## coefficients of F fixed (integrators, a missing damping term).
 ##

@@ -25,7 +25,7 @@
 ## at each sub-step from the simulated velocity v = dy/dt (or v = y for a
 ## first-order model: the output is then read as a velocity). The other
 ## inputs are held over the sampling interval (ZOH). This loop runs in
-## the core (core/include/ctid/effect_simulator.hpp, gateway
+## the core (core/include/ctid/simulation/effect_simulator.hpp, gateway
 ## @code{effect_sim_mex}); in closed loop the channels of the controlled
 ## first input may be the input, a power or a clipped value of it
 ## (another kind is @code{residtrace:notSupported}).

@@ -1,6 +1,6 @@
-// Tests of core/include/ctid/adaptation.hpp: the recursive updates against
+// Tests of core/include/ctid/adaptation/adaptation.hpp: the recursive updates against
 // their batch (information-form) solutions.
-#include "ctid/adaptation.hpp"
+#include "ctid/adaptation/adaptation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Tests of core/include/ctid/controller.hpp: the backward-Euler PID against
+// Tests of core/include/ctid/simulation/controller.hpp: the backward-Euler PID against
 // its definition, run sample by sample.
-#include "ctid/controller.hpp"
+#include "ctid/simulation/controller.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Tests of core/include/ctid/covariance_guard.hpp: P left alone bit for
+// Tests of core/include/ctid/adaptation/covariance_guard.hpp: P left alone bit for
 // bit while its symmetric part is positive definite, however badly scaled;
 // an indefinite symmetric part repaired in correlation form with the
 // antisymmetric part kept, the same way in any units; the ceiling as a
@@ -9,7 +9,7 @@
 // (Cholesky; see long_run_scenario.hpp for LMR and for the IV estimators
 // with a forgetting factor < 1); bench/long_run_bench.cpp runs the same
 // for 10^8 samples.
-#include "ctid/covariance_guard.hpp"
+#include "ctid/adaptation/covariance_guard.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// Tests of core/include/ctid/lmr.hpp: LMR-RLSSVF, eq. (3.82), against the
+// Tests of core/include/ctid/adaptation/lmr.hpp: LMR-RLSSVF, eq. (3.82), against the
 // covariance-form least squares it generalises, its bounded information
 // under poor excitation (sec. 3.6.3), and no allocation per step.
-#include "ctid/lmr.hpp"
+#include "ctid/adaptation/lmr.hpp"
 
 #include <gtest/gtest.h>
 

@@ -28,8 +28,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "ctid/recursive_iv.hpp"
-#include "ctid/rlssvf.hpp"
+#include "ctid/recursive/recursive_iv.hpp"
+#include "ctid/recursive/rlssvf.hpp"
 
 namespace ctid {
 namespace long_run {

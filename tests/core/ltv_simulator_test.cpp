@@ -1,6 +1,6 @@
-// Tests of core/include/ctid/ltv_simulator.hpp against analytic responses
+// Tests of core/include/ctid/simulation/ltv_simulator.hpp against analytic responses
 // and an independently discretised closed loop.
-#include "ctid/ltv_simulator.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Tests of core/include/ctid/model.hpp.
-#include "ctid/model.hpp"
+// Tests of core/include/ctid/base/model.hpp.
+#include "ctid/base/model.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Tests of core/include/ctid/offline_iv.hpp: identities of the QR-based
+// Tests of core/include/ctid/offline/offline_iv.hpp: identities of the QR-based
 // IV solution, recovery of noise-free LTI systems (open and closed loop),
 // consistency and covariance of SRIVC against a Monte Carlo run, and input
 // validation.
@@ -9,9 +9,9 @@
 #include <random>
 #include <vector>
 
-#include "ctid/least_squares.hpp"
-#include "ctid/ltv_simulator.hpp"
-#include "ctid/refined_iv.hpp"
+#include "ctid/offline/least_squares.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
+#include "ctid/offline/refined_iv.hpp"
 #include "test_util.hpp"
 
 namespace ctid {

@@ -1,9 +1,9 @@
-// Tests of core/include/ctid/output_error.hpp: exact recovery from
+// Tests of core/include/ctid/offline/output_error.hpp: exact recovery from
 // noise-free records (continuous time ZOH/FOH and with a fractional delay,
 // discrete time), the exact Jacobian against central differences of the
 // simulation, the optimum as a stationary point, ARX against the normal
 // equations, and the identified failures.
-#include "ctid/output_error.hpp"
+#include "ctid/offline/output_error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// Tests of core/include/ctid/potter.hpp (and condition_number in
+// Tests of core/include/ctid/adaptation/potter.hpp (and condition_number in
 // adaptation.hpp): the square-root filter PotterSVF, eq. (3.73), against the
 // standard normalised Kalman filter, eq. (1.59); its behaviour in single
 // precision on badly scaled regressors; no allocation per step.
-#include "ctid/potter.hpp"
+#include "ctid/adaptation/potter.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// Tests of core/include/ctid/qn_ml.hpp and nlopt_minimizer.hpp: the cost
+// Tests of core/include/ctid/adaptation/qn_ml.hpp and nlopt_minimizer.hpp: the cost
 // (3.23) with sigma_e^2 concentrated out against its definition, the
 // search's checks, and the ML estimate of Qn recovering the random-walk
 // variance that generated a regression (sec. 3.3, model 3.12).
-#include "ctid/qn_ml.hpp"
+#include "ctid/adaptation/qn_ml.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "ctid/adaptation.hpp"
-#include "ctid/nlopt_minimizer.hpp"
+#include "ctid/adaptation/adaptation.hpp"
+#include "ctid/adaptation/nlopt_minimizer.hpp"
 #include "test_util.hpp"
 
 namespace ctid {

@@ -1,9 +1,9 @@
 // Tests of recursive_arx.hpp: the indirect route (DT ARX + ZOH conversion).
-#include "ctid/recursive_arx.hpp"
+#include "ctid/recursive/recursive_arx.hpp"
 
 #include <gtest/gtest.h>
 
-#include "ctid/discretization.hpp"
+#include "ctid/filters/discretization.hpp"
 #include "test_util.hpp"
 
 namespace {

@@ -1,7 +1,7 @@
-// Tests of core/include/ctid/recursive_iv.hpp: RLSSVF before t_s_iv,
+// Tests of core/include/ctid/recursive/recursive_iv.hpp: RLSSVF before t_s_iv,
 // recovery of noise-free systems in open and closed loop, reduced bias
 // under noise, the stability policies and the configuration checks.
-#include "ctid/recursive_iv.hpp"
+#include "ctid/recursive/recursive_iv.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "ctid/ltv_simulator.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
 #include "test_util.hpp"
 
 namespace ctid {

@@ -1,11 +1,11 @@
-// Tests of core/include/ctid/refined_iv_bj.hpp: the ARMA estimator against
+// Tests of core/include/ctid/offline/refined_iv_bj.hpp: the ARMA estimator against
 // known ARMA processes (estimate within its reported standard errors; the
 // pure AR case equals the least-squares solution), the discrete filter
 // against a direct recursion, and exact recovery of a continuous plant from
 // noise-free records by RIVC (open loop, fractional delay), CLRIVC and
 // CL2SRIVC. The records are simulated independently: controllable
 // canonical state space, exact ZOH step by the matrix exponential.
-#include "ctid/refined_iv_bj.hpp"
+#include "ctid/offline/refined_iv_bj.hpp"
 
 #include <gtest/gtest.h>
 

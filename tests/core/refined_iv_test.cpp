@@ -1,10 +1,10 @@
-// Tests of core/include/ctid/refined_iv.hpp's continuous channel delay:
+// Tests of core/include/ctid/offline/refined_iv.hpp's continuous channel delay:
 // a delay of whole samples equals the nk shift, and noise-free records of
 // a system with a delay that is not a multiple of Ts (ZOH, FOH, irregular
 // instants) are recovered exactly by SRIVC given the delay. The records are
 // simulated independently on a fine grid on which the delay is a whole
 // number of fine steps (matrix exponential of the state-space model).
-#include "ctid/refined_iv.hpp"
+#include "ctid/offline/refined_iv.hpp"
 
 #include <gtest/gtest.h>
 

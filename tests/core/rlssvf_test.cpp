@@ -1,7 +1,7 @@
-// Tests of core/include/ctid/rlssvf.hpp (and least_squares.hpp,
+// Tests of core/include/ctid/recursive/rlssvf.hpp (and least_squares.hpp,
 // auxiliary_model.hpp): recursive vs batch identities, exact recovery of
 // noise-free systems, no allocation per sample, validation.
-#include "ctid/rlssvf.hpp"
+#include "ctid/recursive/rlssvf.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
-#include "ctid/least_squares.hpp"
-#include "ctid/ltv_simulator.hpp"
+#include "ctid/offline/least_squares.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
 #include "test_util.hpp"
 
 namespace ctid {

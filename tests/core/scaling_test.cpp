@@ -1,16 +1,16 @@
-// Tests of core/include/ctid/scaling.hpp: M_s of eq. (3.54), its checks,
+// Tests of core/include/ctid/recursive/scaling.hpp: M_s of eq. (3.54), its checks,
 // the claim of sec. 3.5.2 that it improves the conditioning of the normal
 // equations, and the identity behind eqs. (3.66)/(3.74): the scaled
 // recursions give the unscaled estimates.
-#include "ctid/scaling.hpp"
+#include "ctid/recursive/scaling.hpp"
 
 #include <gtest/gtest.h>
 
 #include <random>
 #include <vector>
 
-#include "ctid/ltv_simulator.hpp"
-#include "ctid/rlssvf.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
+#include "ctid/recursive/rlssvf.hpp"
 #include "test_util.hpp"
 
 namespace ctid {

@@ -1,6 +1,6 @@
-// Tests of core/include/ctid/stability.hpp: the Routh test against the
+// Tests of core/include/ctid/base/stability.hpp: the Routh test against the
 // roots computed by an eigenvalue solver, and the reflection of roots.
-#include "ctid/stability.hpp"
+#include "ctid/base/stability.hpp"
 
 #include <gtest/gtest.h>
 

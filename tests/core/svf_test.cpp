@@ -1,8 +1,8 @@
-// Tests of core/include/ctid/svf.hpp and discretization.hpp against
+// Tests of core/include/ctid/filters/svf.hpp and discretization.hpp against
 // independent computations: analytic step responses, fine-step Runge-Kutta
 // integration, the closed-form Tustin recursion and the balanced
 // trapezoidal form of thesis eq. (A.7).
-#include "ctid/svf.hpp"
+#include "ctid/filters/svf.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// Tests of core/include/ctid/throttle.hpp: the plate's integration against
+// Tests of core/include/ctid/apps/throttle.hpp: the plate's integration against
 // closed forms and an independent matrix-exponential solution of the
 // piecewise-linear modes, the loop against its definitions, and the
 // estimators of sec. 4.2.3 (exact on noise-free data, IV unbiased where
 // least squares is not, tracking R(t)), no allocation per sample,
 // validation.
-#include "ctid/throttle.hpp"
+#include "ctid/apps/throttle.hpp"
 
 #include <gtest/gtest.h>
 

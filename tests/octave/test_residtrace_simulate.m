@@ -1,6 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_simulate ()
-## The core's effect-model simulator (core/include/ctid/effect_simulator.hpp,
+## The core's effect-model simulator (core/include/ctid/simulation/effect_simulator.hpp,
 ## gateway effect_sim_mex, used by residtrace's private
 ## residtrace_simulate) against independent computations:
 ## @itemize

@@ -14,7 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 cmake --install "$build" --prefix "$tmp/prefix" > "$tmp/install.log"
-for f in include/ctid/rlssvf.hpp cmake/ctid/ctidConfig.cmake \
+for f in include/ctid/recursive/rlssvf.hpp cmake/ctid/ctidConfig.cmake \
          cmake/ctid/ctidConfigVersion.cmake cmake/ctid/ctidTargets.cmake; do
   if ! find "$tmp/prefix" -path "*/$f" | grep -q .; then
     echo "FAIL: $f was not installed" >&2

@@ -1,0 +1,232 @@
+// State-variable filters: for a sampled signal s they produce the
+// prefiltered time derivatives p^i F(p) s, i = 0..n, with
+//
+//   F(p) = g / D(p),  D(p) = p^n + d1 p^(n-1) + ... + dn,
+//
+// covering the normalised SVF (lambda/(p+lambda))^n (thesis eq. 3.1), the
+// ordinary SVF 1/(p+lambda)^n (eq. 1.19), and a general, possibly
+// time-varying denominator such as the adaptive prefilter of RSRIVC
+// (eq. 2.19). Outputs follow eq. (1.21): outputs()(i) = p^i F(p) s(t_k).
+//
+// Realisation: D(p) w = s in controllable canonical form, z = [w .. w^(n-1)],
+// so p^i F s = g z_i (i < n) and p^n F s = g (s - d^T z reversed). The state
+// keeps its meaning when D changes, so a time-varying filter carries it
+// across a change of coefficients. Discretisation per sample interval h_k
+// (irregular sampling allowed): exact ZOH or the trapezoidal rule, see
+// discretization.hpp. Signals that share a denominator and a rule share one
+// FilterDiscretization (one matrix exponential per change) and keep their
+// own FilterChannel state.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "ctid/filters/discretization.hpp"
+#include "ctid/base/types.hpp"
+
+namespace ctid {
+
+// Denominator and gain of the normalised (eq. 3.1) or ordinary (eq. 1.19)
+// SVF of order n and cut-off lambda: D(p) = (p + lambda)^n.
+template <typename S>
+Vector<S> svf_denominator(int n, S lambda) {
+  Vector<S> d(n);
+  S binomial = 1;
+  S power = 1;
+  for (int i = 1; i <= n; ++i) {
+    binomial = binomial * static_cast<S>(n - i + 1) / static_cast<S>(i);
+    power *= lambda;
+    d(i - 1) = binomial * power;
+  }
+  return d;
+}
+
+template <typename S>
+S svf_gain(int n, S lambda, bool normalised) {
+  return normalised ? std::pow(lambda, static_cast<S>(n)) : S(1);
+}
+
+// The discretised filter of one denominator D(p) and one intersample rule,
+// shared by every signal filtered through it (y, u_j, the instrument x_hat):
+// the matrices are recomputed only when h or D changes, so a uniformly
+// sampled, fixed filter allocates nothing per sample.
+template <typename S>
+class FilterDiscretization {
+ public:
+  void configure(int order, InterSample intersample) {
+    n_ = order;
+    intersample_ = intersample;
+    d_ = Vector<S>::Zero(n_);
+    Phi_ = Matrix<S>::Identity(n_, n_);
+    gamma_ = Vector<S>::Zero(n_);
+    dirty_ = true;
+  }
+
+  // D(p) = p^n + d1 p^(n-1) + .. + dn, used from the next ensure() on.
+  template <typename Derived>
+  void set_denominator(const Eigen::MatrixBase<Derived>& d) {
+    if (!(d == d_)) {
+      d_ = d;
+      dirty_ = true;
+    }
+  }
+
+  // Makes Phi and Gamma those of the interval h. The work matrices are
+  // members, so this allocates only on the first call.
+  void ensure(S h) {
+    const S tolerance = 64 * std::numeric_limits<S>::epsilon();
+    if (!dirty_ && std::abs(h - h_) <= tolerance * h_) return;
+    F_.setZero(n_, n_);
+    for (int i = 0; i + 1 < n_; ++i) F_(i, i + 1) = 1;
+    for (int j = 0; j < n_; ++j) F_(n_ - 1, j) = -d_(n_ - 1 - j);
+    G_.setZero(n_, 1);
+    G_(n_ - 1, 0) = 1;
+    if (intersample_ == InterSample::kZoh) {
+      zoh_discretize<S>(F_, G_, h, Phi_, Gamma_);
+    } else {
+      // (I - h/2 F)^-1 (I + h/2 F) and (I - h/2 F)^-1 G h/2, see
+      // discretization.hpp.
+      work_ = -(h / 2) * F_;
+      work_.diagonal().array() += 1;
+      lu_.compute(work_);
+      work_ = (h / 2) * F_;
+      work_.diagonal().array() += 1;
+      Phi_.noalias() = lu_.solve(work_);
+      Gamma_.noalias() = lu_.solve(G_ * (h / 2));
+    }
+    gamma_ = Gamma_.col(0);
+    h_ = h;
+    dirty_ = false;
+  }
+
+  int order() const { return n_; }
+  InterSample intersample() const { return intersample_; }
+  const Vector<S>& denominator() const { return d_; }
+  const Matrix<S>& Phi() const { return Phi_; }
+  const Vector<S>& Gamma() const { return gamma_; }
+
+ private:
+  int n_ = 0;
+  InterSample intersample_ = InterSample::kZoh;
+  Vector<S> d_;
+  Matrix<S> Phi_;
+  Vector<S> gamma_;
+  Matrix<S> F_, G_, Gamma_, work_;
+  Eigen::PartialPivLU<Matrix<S>> lu_;
+  S h_ = 0;
+  bool dirty_ = true;
+};
+
+// The state of one signal in a FilterDiscretization: outputs()(i) =
+// p^i F(p) s(t_k), i = 0..n, with F = gain / D(p).
+template <typename S>
+class FilterChannel {
+ public:
+  void configure(int order) {
+    n_ = order;
+    z_ = Vector<S>::Zero(n_);
+    z_next_ = Vector<S>::Zero(n_);
+    out_ = Vector<S>::Zero(n_ + 1);
+    reset();
+  }
+
+  // Zero state; the next sample is the first of a record. ZOH starts with
+  // the state at rest at t_k, the trapezoidal rule by default as if s and
+  // the state were zero one interval earlier (a discrete filter from rest);
+  // with rest_at_first_sample, at rest at t_k like ZOH (the continuous
+  // filter started at the first sample, which is what the initial-condition
+  // regressors of eqs. 3.36-3.41 describe).
+  void set_rest_at_first_sample(bool rest) { rest_at_first_sample_ = rest; }
+  void reset() {
+    z_.setZero();
+    first_ = true;
+    s_prev_ = 0;
+  }
+
+  // Feeds s(t_k); `disc` must hold the matrices of t_k - t_(k-1).
+  void step(const FilterDiscretization<S>& disc, S gain, S s) {
+    const bool zoh = disc.intersample() == InterSample::kZoh;
+    if (!first_) {
+      z_next_.noalias() = disc.Phi() * z_;
+      z_next_ += disc.Gamma() * (zoh ? s_prev_ : s_prev_ + s);
+      z_.swap(z_next_);
+    } else if (!zoh && !rest_at_first_sample_) {
+      z_.noalias() = disc.Gamma() * s;
+    }
+    first_ = false;
+    s_prev_ = s;
+    const Vector<S>& d = disc.denominator();
+    S highest = s;
+    for (int i = 0; i < n_; ++i) {
+      out_(i) = gain * z_(i);
+      highest -= d(i) * z_(n_ - 1 - i);
+    }
+    out_(n_) = gain * highest;
+  }
+
+  // Replaces s(t_k) of the last step by `s` (ZOH only, where the state at
+  // t_k does not depend on s(t_k)): used to close an algebraic loop.
+  void replace_last_input(S gain, S s) {
+    out_(n_) += gain * (s - s_prev_);
+    s_prev_ = s;
+  }
+
+  const Vector<S>& outputs() const { return out_; }
+  const Vector<S>& state() const { return z_; }
+
+ private:
+  int n_ = 0;
+  Vector<S> z_;
+  Vector<S> z_next_;
+  Vector<S> out_;
+  S s_prev_ = 0;
+  bool first_ = true;
+  bool rest_at_first_sample_ = false;
+};
+
+// One signal through its own filter: a FilterDiscretization with a single
+// FilterChannel.
+template <typename S>
+class StateVariableFilter {
+ public:
+  StateVariableFilter() = default;
+  StateVariableFilter(int order, InterSample intersample) {
+    configure(order, intersample);
+  }
+
+  // Allocates the filter of order n >= 1; denominator p^n, gain 1 until set.
+  void configure(int order, InterSample intersample) {
+    disc_.configure(order, intersample);
+    channel_.configure(order);
+    gain_ = 1;
+  }
+
+  // Sets D(p) = p^n + d1 p^(n-1) + .. + dn and the gain g. The new filter
+  // governs the intervals advanced from the next step on.
+  template <typename Derived>
+  void set_denominator(const Eigen::MatrixBase<Derived>& d, S gain) {
+    disc_.set_denominator(d);
+    gain_ = gain;
+  }
+
+  void reset() { channel_.reset(); }
+
+  // Feeds s(t_k), where h = t_k - t_(k-1) (for the first sample of a record
+  // the nominal interval).
+  void step(S s, S h) {
+    disc_.ensure(h);
+    channel_.step(disc_, gain_, s);
+  }
+
+  // p^i F(p) s(t_k), i = 0..n, after the last step.
+  const Vector<S>& outputs() const { return channel_.outputs(); }
+  int order() const { return disc_.order(); }
+  const Vector<S>& state() const { return channel_.state(); }
+
+ private:
+  FilterDiscretization<S> disc_;
+  FilterChannel<S> channel_;
+  S gain_ = 1;
+};
+
+}  // namespace ctid

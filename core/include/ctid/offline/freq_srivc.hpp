@@ -1,0 +1,504 @@
+// Continuous-time transfer functions (with a time delay) from frequency
+// data: SRIVC in the frequency domain and output-error refinement.
+//
+//   Y_k = G(j w_k) U_k + V_k,  G(s) = B(s)/A(s) e^(-s td),
+//   A(s) = s^n + a_1 s^(n-1) + .. + a_n,  B(s) = b_0 s^(m-1) + .. + b_(m-1)
+//
+// (U_k = 1 for a frequency response, idfrd). SRIVC (thesis eqs. 2.8-2.13
+// with the prefilter 1/A applied in the frequency domain): with the
+// current A_i, B_i the filtered data Y_f = Y / A_i(jw), U_f = e^(-jw td)
+// U / A_i(jw) and the auxiliary-model output X_f = B_i/A_i U_f give the
+// regressor phi = [-(jw)^(n-1) Y_f .. -Y_f, (jw)^(m-1) U_f .. U_f] and
+// the instrument zeta (the same with X_f for Y_f); theta solves
+// Re sum zeta^* phi^T theta = Re sum zeta^* (jw)^n Y_f (real and imaginary
+// parts stacked). The start is least squares with the prefilter
+// 1/(jw + lambda)^n. Frequencies are scaled by sigma (jw' = jw / sigma,
+// the geometric centre of the band) for conditioning; coefficients map
+// back exactly (a_i = sigma^i a'_i, b of power p: sigma^(n-p) b').
+//
+// The delay: fixed, or a grid search of the SRIVC loss over
+// [td_min, td_max] refined by golden section (the loss is separable in
+// td, Chen, Zhuan, Garnier & Gilson, Automatica 2018). Output error
+// (TFFCOE): Levenberg-Marquardt on sum |Y - G U|^2 over [a b td] from the
+// SRIVC estimate. Covariance (both): s^2 (J^T J)^-1 with J the Jacobian
+// of the stacked model output and s^2 = sum |Y - G U|^2 / (2K - np), the
+// asymptotic covariance of SRIVC (eq. 2.13) and of the output-error fit.
+#pragma once
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ctid/base/stability.hpp"
+#include "ctid/base/status.hpp"
+#include "ctid/base/types.hpp"
+
+namespace ctid {
+
+template <typename S>
+struct FreqData {
+  const S* w = nullptr;                 // K frequencies (rad/s), >= 0
+  const std::complex<S>* y = nullptr;   // K output values (or G)
+  const std::complex<S>* u = nullptr;   // K input values, null: 1
+  Eigen::Index num_frequencies = 0;
+};
+
+template <typename S>
+struct FreqSettings {
+  int na = 1;
+  int nb = 1;
+  S tolerance = S(1e-8);
+  int max_iterations = 50;
+  S delay = 0;                 // fixed or initial delay
+  bool estimate_delay = false;
+  S td_min = 0, td_max = 0;    // search range (estimate_delay)
+  int num_td = 50;             // grid points (estimate_delay)
+  bool grid = true;            // search the grid (else refine from delay)
+  bool output_error = false;   // Levenberg-Marquardt refinement (TFFCOE)
+  Vector<S> theta_init;        // [a b] start (empty: LS with 1/(s+l)^n)
+};
+
+template <typename S>
+struct FreqResult {
+  Vector<S> a, b;         // A without its leading 1, B descending
+  S delay = 0;
+  Matrix<S> covariance;   // of [a b] or [a b td] (estimate_delay)
+  S noise_variance = 0;   // sum |Y - G U|^2 / (K - np/2): E|V_k|^2
+  S loss = 0;             // sum |Y - G U|^2 / K
+  int iterations = 0;
+  bool converged = false;
+  bool stable = false;
+  std::string reason;
+};
+
+namespace freq_detail {
+
+template <typename S>
+using Complex = std::complex<S>;
+
+template <typename S>
+Complex<S> polyval(const Vector<S>& c, Complex<S> s) {
+  Complex<S> v = 0;
+  for (Eigen::Index i = 0; i < c.size(); ++i) v = v * s + c(i);
+  return v;
+}
+
+// The problem in scaled frequency w' = w / sigma.
+template <typename S>
+struct Scaled {
+  std::vector<Complex<S>> s, y, u;  // jw', Y, U (U without the delay)
+  std::vector<S> w;                 // original w
+  S sigma = 1;
+  int na = 1, nb = 1;
+  Eigen::Index K = 0;
+
+  Vector<S> monic(const Vector<S>& a) const {
+    Vector<S> A(na + 1);
+    A << 1, a;
+    return A;
+  }
+  Complex<S> delayed_u(Eigen::Index k, S td) const {
+    return u[k] * std::exp(Complex<S>(0, -w[k] * td));
+  }
+};
+
+// One SRIVC step (or LS with instruments = regressors when aux is false)
+// from the prefilter 1/Af; returns theta' = [a' b'].
+template <typename S>
+Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
+               bool aux, S td, Vector<S>& theta) {
+  const int n = p.na, m = p.nb, np = n + m;
+  Matrix<S> Phi(2 * p.K, np), Z(2 * p.K, np);
+  Vector<S> T(2 * p.K);
+  for (Eigen::Index k = 0; k < p.K; ++k) {
+    const Complex<S> s = p.s[k];
+    const Complex<S> A = polyval(Af, s);
+    const Complex<S> U = p.delayed_u(k, td);
+    const Complex<S> Yf = p.y[k] / A, Uf = U / A;
+    const Complex<S> Xf =
+        aux ? polyval(Bx, s) / polyval(Af, s) * Uf : Yf;
+    std::vector<Complex<S>> phi(np), zeta(np);
+    Complex<S> power = 1;
+    // powers s^0 .. s^(n-1) for a_n .. a_1; s^0 .. s^(m-1) for b.
+    for (int i = 0; i < std::max(n, m); ++i) {
+      if (i < n) {
+        phi[n - 1 - i] = -power * Yf;
+        zeta[n - 1 - i] = -power * Xf;
+      }
+      if (i < m) {
+        phi[n + m - 1 - i] = power * Uf;
+        zeta[n + m - 1 - i] = power * Uf;
+      }
+      power *= s;
+    }
+    Complex<S> sn = 1;
+    for (int i = 0; i < n; ++i) sn *= s;
+    const Complex<S> t = sn * Yf;
+    for (int j = 0; j < np; ++j) {
+      Phi(k, j) = phi[j].real();
+      Phi(p.K + k, j) = phi[j].imag();
+      Z(k, j) = zeta[j].real();
+      Z(p.K + k, j) = zeta[j].imag();
+    }
+    T(k) = t.real();
+    T(p.K + k) = t.imag();
+  }
+  Vector<S> d = Phi.colwise().norm().transpose();
+  for (int j = 0; j < np; ++j) {
+    if (!(d(j) > 0)) {
+      return numerical_failure(
+          "the frequency data do not excite the model (a regressor is zero)");
+    }
+  }
+  const Matrix<S> M = Z.transpose() * Phi * d.cwiseInverse().asDiagonal();
+  Eigen::ColPivHouseholderQR<Matrix<S>> qr(M);
+  if (qr.rank() < np) {
+    return numerical_failure(
+        "the instrument matrix is rank deficient: too few frequencies or "
+        "too little excitation for this model order");
+  }
+  theta = d.cwiseInverse().asDiagonal() * qr.solve(Vector<S>(Z.transpose() * T));
+  if (!theta.allFinite()) return numerical_failure("the IV step diverged");
+  return Status::Ok();
+}
+
+// Output error E_k = Y_k - G U_k (td in time units) and its stacked
+// Jacobian in [a' b' td'], td' = sigma td.
+template <typename S>
+S residual(const Scaled<S>& p, const Vector<S>& theta, S td, bool jac,
+           Vector<S>& r, Matrix<S>* J) {
+  const int n = p.na, m = p.nb;
+  const Vector<S> A = p.monic(theta.head(n));
+  const Vector<S> B = theta.tail(m);
+  r.resize(2 * p.K);
+  if (jac) J->resize(2 * p.K, n + m + 1);
+  S cost = 0;
+  for (Eigen::Index k = 0; k < p.K; ++k) {
+    const Complex<S> s = p.s[k];
+    const Complex<S> Av = polyval(A, s);
+    const Complex<S> U = p.delayed_u(k, td);
+    const Complex<S> GU = polyval(B, s) / Av * U;
+    const Complex<S> e = p.y[k] - GU;
+    r(k) = e.real();
+    r(p.K + k) = e.imag();
+    cost += std::norm(e);
+    if (!jac) continue;
+    Complex<S> power = 1;
+    for (int i = 0; i < std::max(n, m); ++i) {
+      if (i < n) {
+        const Complex<S> g = -GU * power / Av;  // d(GU)/d a_(n-i)
+        (*J)(k, n - 1 - i) = g.real();
+        (*J)(p.K + k, n - 1 - i) = g.imag();
+      }
+      if (i < m) {
+        const Complex<S> g = power / Av * U;
+        (*J)(k, n + m - 1 - i) = g.real();
+        (*J)(p.K + k, n + m - 1 - i) = g.imag();
+      }
+      power *= s;
+    }
+    // td' = sigma td: d/dtd' of e^(-j w' td') GU.
+    const Complex<S> g = -s * GU;
+    (*J)(k, n + m) = g.real();
+    (*J)(p.K + k, n + m) = g.imag();
+  }
+  return cost;
+}
+
+template <typename S>
+bool stabilise(int n, Vector<S>& theta) {
+  HurwitzTest<S> hurwitz(n);
+  if (hurwitz.is_stable(theta.head(n))) return false;
+  theta.head(n) = reflect_unstable_roots<S>(Vector<S>(theta.head(n)));
+  return true;
+}
+
+// SRIVC at the fixed delay td. theta' in/out (empty: LS start).
+template <typename S>
+Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings, S td,
+                   Vector<S>& theta, int& iterations, bool& converged,
+                   S& cost) {
+  const int n = p.na, m = p.nb;
+  Status status;
+  if (theta.size() != n + m) {
+    // LS start with the prefilter 1/(s' + 1)^n.
+    Vector<S> Af = Vector<S>::Ones(1);
+    for (int i = 0; i < n; ++i) {
+      Vector<S> next = Vector<S>::Zero(Af.size() + 1);
+      next.head(Af.size()) += Af;
+      next.tail(Af.size()) += Af;
+      Af = next;
+    }
+    status = iv_step(p, Af, Vector<S>(), false, td, theta);
+    if (!status.ok()) return status;
+    stabilise(n, theta);
+  }
+  converged = false;
+  iterations = 0;
+  for (int it = 1; it <= settings.max_iterations; ++it) {
+    Vector<S> next;
+    status = iv_step(p, p.monic(theta.head(n)), Vector<S>(theta.tail(m)),
+                     true, td, next);
+    if (!status.ok()) return status;
+    stabilise(n, next);
+    const S change = (next - theta).norm() / std::max(next.norm(), S(1e-300));
+    theta = next;
+    iterations = it;
+    if (change < settings.tolerance) {
+      converged = true;
+      break;
+    }
+  }
+  Vector<S> r;
+  cost = residual<S>(p, theta, td, false, r, nullptr);
+  return Status::Ok();
+}
+
+}  // namespace freq_detail
+
+template <typename S>
+Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
+                  FreqResult<S>* result) {
+  using namespace freq_detail;
+  if (result == nullptr) return bad_input("result must not be null");
+  const int n = settings.na, m = settings.nb;
+  if (n < 1 || m < 1 || m > n + 1) {
+    return bad_input("orders must be np >= 1 and 0 <= nz <= np");
+  }
+  if (settings.max_iterations < 1 || !(settings.tolerance > 0) ||
+      settings.num_td < 2 || settings.num_td > 100000) {
+    return Status(ErrorCode::kBadOption,
+                  "MaxIter must be >= 1, Tol > 0 and 2 <= NumTd <= 1e5");
+  }
+  const Eigen::Index K = data.num_frequencies;
+  if (data.w == nullptr || data.y == nullptr || K < 1) {
+    return bad_input("the frequency data are empty");
+  }
+  const int np = n + m + (settings.estimate_delay ? 1 : 0);
+  if (2 * K < np + 1) {
+    return bad_input("too few frequencies for the model: " +
+                     std::to_string(K) + " complex values, " +
+                     std::to_string(np) + " parameters");
+  }
+  Scaled<S> p;
+  p.na = n;
+  p.nb = m;
+  p.K = K;
+  S lo = std::numeric_limits<S>::infinity(), hi = 0;
+  for (Eigen::Index k = 0; k < K; ++k) {
+    const S w = data.w[k];
+    if (!(w >= 0) || !std::isfinite(w)) {
+      return bad_input("frequencies must be finite and >= 0");
+    }
+    if (!std::isfinite(data.y[k].real()) || !std::isfinite(data.y[k].imag()) ||
+        (data.u != nullptr && (!std::isfinite(data.u[k].real()) ||
+                               !std::isfinite(data.u[k].imag())))) {
+      return bad_input("the frequency data must be finite");
+    }
+    if (w > 0) lo = std::min(lo, w);
+    hi = std::max(hi, w);
+  }
+  if (!(hi > 0)) return bad_input("at least one frequency must be > 0");
+  p.sigma = std::sqrt(lo * hi);
+  for (Eigen::Index k = 0; k < K; ++k) {
+    p.w.push_back(data.w[k]);
+    p.s.push_back(Complex<S>(0, data.w[k] / p.sigma));
+    p.y.push_back(data.y[k]);
+    p.u.push_back(data.u != nullptr ? data.u[k] : Complex<S>(1));
+  }
+  if (settings.estimate_delay &&
+      !(settings.td_min >= 0 && settings.td_max >= settings.td_min &&
+        std::isfinite(settings.td_max))) {
+    return Status(ErrorCode::kBadOption,
+                  "the delay range must satisfy 0 <= TdMin <= TdMax < Inf");
+  }
+  if (!(settings.delay >= 0) || !std::isfinite(settings.delay)) {
+    return Status(ErrorCode::kBadOption, "the delay must be finite and >= 0");
+  }
+  // Start in scaled units.
+  Vector<S> start;
+  if (settings.theta_init.size() == n + m) {
+    start = settings.theta_init;
+    for (int i = 0; i < n; ++i) start(i) /= std::pow(p.sigma, S(i + 1));
+    for (int k = 0; k < m; ++k) {
+      start(n + k) /= std::pow(p.sigma, S(n - (m - 1 - k)));
+    }
+    if (stabilise(n, start)) {
+      return bad_input("the initial model must be stable");
+    }
+  }
+  auto srivc_at = [&](S td, Vector<S>& theta, int& its, bool& conv,
+                      S& cost) -> Status {
+    theta = start;
+    return srivc_fixed(p, settings, td, theta, its, conv, cost);
+  };
+
+  Vector<S> theta;
+  int iterations = 0;
+  bool converged = false;
+  S cost = 0;
+  S td = settings.delay;
+  Status status;
+  if (settings.estimate_delay) {
+    // Grid, then golden section between the best point's neighbours.
+    S best_td = td, best_cost = std::numeric_limits<S>::infinity();
+    S step = 0;
+    if (settings.grid) {
+      const int count = settings.num_td;
+      step = (settings.td_max - settings.td_min) / (count - 1);
+      for (int i = 0; i < count; ++i) {
+        const S t = settings.td_min + step * i;
+        Vector<S> th;
+        int its;
+        bool conv;
+        S c;
+        if (!srivc_at(t, th, its, conv, c).ok()) continue;
+        if (c < best_cost) {
+          best_cost = c;
+          best_td = t;
+        }
+      }
+      if (!std::isfinite(best_cost)) {
+        return numerical_failure("SRIVC failed at every delay of the grid");
+      }
+    } else {
+      step = std::max((settings.td_max - settings.td_min) / 20,
+                      S(1e-3) / p.sigma);
+      best_td = std::min(std::max(td, settings.td_min), settings.td_max);
+    }
+    S a = std::max(settings.td_min, best_td - step);
+    S b = std::min(settings.td_max, best_td + step);
+    const S g = (std::sqrt(S(5)) - 1) / 2;
+    auto loss = [&](S t) {
+      Vector<S> th;
+      int its;
+      bool conv;
+      S c;
+      return srivc_at(t, th, its, conv, c).ok()
+                 ? c
+                 : std::numeric_limits<S>::infinity();
+    };
+    S x1 = b - g * (b - a), x2 = a + g * (b - a);
+    S f1 = loss(x1), f2 = loss(x2);
+    for (int it = 0; it < 60 && (b - a) > S(1e-10) * (S(1) + b) / p.sigma;
+         ++it) {
+      if (f1 < f2) {
+        b = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = b - g * (b - a);
+        f1 = loss(x1);
+      } else {
+        a = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = a + g * (b - a);
+        f2 = loss(x2);
+      }
+    }
+    td = (a + b) / 2;
+  }
+  status = srivc_at(td, theta, iterations, converged, cost);
+  if (!status.ok()) return status;
+  std::string reason = converged ? "SRIVC converged"
+                                 : "SRIVC: maximum number of iterations";
+
+  if (settings.output_error) {
+    // Levenberg-Marquardt on [a' b' (td')].
+    const int q = settings.estimate_delay ? n + m + 1 : n + m;
+    Vector<S> x(q);
+    x.head(n + m) = theta;
+    if (settings.estimate_delay) x(n + m) = td * p.sigma;
+    Vector<S> r;
+    Matrix<S> J;
+    S f = residual(p, theta, td, true, r, &J);
+    S mu = S(1e-3);
+    bool done = false;
+    int it = 0;
+    for (; it < settings.max_iterations && !done; ++it) {
+      const Matrix<S> Jq = J.leftCols(q);
+      const Matrix<S> H = Jq.transpose() * Jq;
+      const Vector<S> gvec = Jq.transpose() * r;
+      bool accepted = false;
+      for (int tries = 0; tries < 30 && !accepted; ++tries) {
+        Matrix<S> Hm = H;
+        Hm.diagonal() += mu * H.diagonal().cwiseMax(S(1e-12));
+        const Vector<S> dx = Hm.ldlt().solve(gvec);
+        Vector<S> xn = x + dx;
+        if (settings.estimate_delay) {
+          xn(n + m) = std::min(std::max(xn(n + m), settings.td_min * p.sigma),
+                               settings.td_max * p.sigma);
+        }
+        Vector<S> th = xn.head(n + m);
+        if (stabilise(n, th)) {
+          mu *= 10;
+          continue;
+        }
+        Vector<S> rn;
+        Matrix<S> Jn;
+        const S fn = residual(p, th, settings.estimate_delay
+                                         ? xn(n + m) / p.sigma
+                                         : td,
+                              true, rn, &Jn);
+        if (fn < f) {
+          const S rel = (xn - x).norm() / std::max(xn.norm(), S(1e-300));
+          const S drop = (f - fn) / std::max(f, S(1e-300));
+          x = xn;
+          r = rn;
+          J = Jn;
+          f = fn;
+          mu = std::max(mu / 10, S(1e-12));
+          accepted = true;
+          if (rel < settings.tolerance || drop < settings.tolerance * 1e-3) {
+            done = true;
+          }
+        } else {
+          mu *= 10;
+        }
+      }
+      if (!accepted) done = true;  // no decrease: a (local) minimum
+    }
+    theta = x.head(n + m);
+    if (settings.estimate_delay) td = x(n + m) / p.sigma;
+    iterations = it;
+    converged = done;
+    reason = done ? "output error minimised (Levenberg-Marquardt)"
+                  : "Levenberg-Marquardt: maximum number of iterations";
+    cost = f;
+  }
+
+  // Covariance in scaled units, mapped back.
+  Vector<S> r;
+  Matrix<S> J;
+  cost = residual(p, theta, td, true, r, &J);
+  const int q = settings.estimate_delay ? n + m + 1 : n + m;
+  const Matrix<S> Jq = J.leftCols(q);
+  const S dof = std::max(S(1), S(2 * K - q));
+  const S s2 = r.squaredNorm() / dof;
+  Vector<S> D(q);
+  for (int i = 0; i < n; ++i) D(i) = std::pow(p.sigma, S(i + 1));
+  for (int k = 0; k < m; ++k) D(n + k) = std::pow(p.sigma, S(n - (m - 1 - k)));
+  if (settings.estimate_delay) D(n + m) = 1 / p.sigma;
+  Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jq.transpose() * Jq);
+  Matrix<S> cov = Matrix<S>::Constant(q, q, std::numeric_limits<S>::quiet_NaN());
+  if (qr.rank() == q) cov = s2 * qr.inverse();
+  result->covariance = D.asDiagonal() * cov * D.asDiagonal();
+  result->a = D.head(n).cwiseProduct(theta.head(n));
+  result->b = D.segment(n, m).cwiseProduct(theta.tail(m));
+  result->delay = td;
+  result->noise_variance = 2 * s2;
+  result->loss = cost / static_cast<S>(K);
+  result->iterations = iterations;
+  result->converged = converged;
+  HurwitzTest<S> hurwitz(n);
+  result->stable = hurwitz.is_stable(theta.head(n));
+  result->reason = reason;
+  if (!converged) return Status(ErrorCode::kNotConverged, reason);
+  return Status::Ok();
+}
+
+}  // namespace ctid

@@ -1,0 +1,570 @@
+// Block-oriented nonlinear continuous-time models by refined IV, on the
+// offline engine of refined_iv.hpp (thesis eqs. 2.8-2.13):
+//
+// Hammerstein (HSRIVC, Laurain, Gilson, Garnier & Young, CDC 2008):
+//
+//   y(t) = B(p)/A(p) ubar(t) + v(t),  ubar = f(u) = sum_i alpha_i f_i(u),
+//
+// with the basis f_i given as the columns of w (u, u^2, u^3 ... for a
+// polynomial), alpha_1 = 1 (CONTSID's "monic" nonlinearity). The model is
+// linear in the products beta_i = alpha_i b: a MISO model whose inputs f_i
+// share the denominator A. Each iteration takes one refined-IV step of the
+// engine from the structured model (prefilter 1/A, auxiliary model B/A
+// f(u)) and separates the products: the best rank-one approximation of
+// the matrix [beta_1; ..; beta_l] = alpha b^T (its leading singular pair,
+// Bai 1998, normalised so that alpha_1 = 1) starts a minimum-distance fit
+// of the structure weighted by the products' inverse covariance.
+//
+// HRIVC adds a discrete-time ARMA noise v = C(q^-1)/D(q^-1) e: the data
+// (y and every f_i(u), ZOH) are prefiltered by D/C, which commutes with the
+// ZOH-sampled B/A at the samples, so the HSRIVC step on the prefiltered
+// data is the RIVC step (Young's hybrid Box-Jenkins form); C and D come
+// from the simulation residual by Hannan-Rissanen (long AR, then least
+// squares on the lagged residual and innovations), alternated with the
+// plant.
+//
+// Hammerstein-Wiener (HWSRIVC, Ni, Garnier & Gilson, IET CTA 2013):
+//
+//   y = x + e,  g(x) = B(p)/A(p) f(u),  g(x) = x + sum_(j>=2) beta_j x^j,
+//
+// i.e. y = B/A f(u) - sum_j beta_j x^j + e: the terms x^j enter as extra
+// channels with numerator -beta_j A(p) (nf + 1 coefficients, separated by
+// least squares against [1 f]). x^j is taken from the model (x_hat =
+// g^-1(B/A f(u)), the real root nearest the previous sample) so that the
+// regressors are noise-free; the first pass uses y. Iterated to a fixed
+// point of the separated parameters.
+//
+// Separation: the rank-one fit starts a minimum-distance fit of the
+// structured parameters to the engine's products, weighted by the inverse
+// of their covariance P (eq. 2.13); the covariance of the separated
+// parameters is (J^T P^-1 J)^-1, J the Jacobian of the structure.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "ctid/offline/offline_iv.hpp"
+#include "ctid/offline/refined_iv.hpp"
+
+namespace ctid {
+
+enum class BlockModel { kHammerstein, kHammersteinArma, kHammersteinWiener };
+
+struct BlockOrders {
+  int nb = 1;  // numerator parameters of B(p)
+  int nf = 1;  // order of A(p)
+  int nk = 0;  // input delay in samples
+  int nc = 0;  // ARMA noise numerator C(q^-1) order (HRIVC)
+  int nd = 0;  // ARMA noise denominator D(q^-1) order (HRIVC)
+  int nw = 1;  // terms of g (HWSRIVC): x, x^2, .., x^nw; 1 = no output NL
+};
+
+template <typename S>
+struct BlockSettings {
+  S tolerance = S(1e-6);  // relative change of the separated parameters
+  int max_iterations = 30;
+  InterSample u_rule = InterSample::kZoh;
+  InterSample y_rule = InterSample::kFoh;
+  std::vector<S> cutoffs;  // SVF start cut-offs (empty: the engine's grid)
+};
+
+template <typename S>
+struct BlockResult {
+  Vector<S> f;       // A(p) = p^nf + f1 p^(nf-1) + .. + f_nf
+  Vector<S> b;       // B(p), descending powers
+  Vector<S> alpha;   // input nonlinearity, alpha(0) = 1
+  Vector<S> beta;    // output polynomial g, beta(0) = 1 (HWSRIVC)
+  Vector<S> c, d;    // ARMA noise, monic, powers of q^-1 (HRIVC)
+  // Covariance of [f; b; alpha(1:); beta(1:)] (free separated parameters).
+  Matrix<S> covariance;
+  // The MISO form [f; alpha_1 b; ..; alpha_l b] and its covariance.
+  Vector<S> theta_miso;
+  Matrix<S> covariance_miso;
+  S noise_variance = 0;  // of y - y_hat
+  S condition = 0;
+  int iterations = 0;
+  bool converged = false;
+  std::string reason;
+  Vector<S> simulated;  // y_hat from u
+};
+
+namespace block_detail {
+
+// Best rank-one fit alpha b^T of the l-by-nb matrix M, alpha(0) = 1.
+template <typename S>
+Status rank_one(const Matrix<S>& M, Vector<S>& alpha, Vector<S>& b) {
+  if (M.rows() == 1) {
+    alpha = Vector<S>::Ones(1);
+    b = M.row(0).transpose();
+    return Status::Ok();
+  }
+  Eigen::JacobiSVD<Matrix<S>> svd(M, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Vector<S> u = svd.matrixU().col(0);
+  const S scale = svd.singularValues()(0);
+  if (!(std::abs(u(0)) > S(1e-12) * u.norm()) || !(scale > 0)) {
+    return numerical_failure(
+        "the coefficient of the first basis function is zero: the "
+        "nonlinearity cannot be normalised to alpha_1 = 1");
+  }
+  alpha = u / u(0);
+  b = scale * u(0) * svd.matrixV().col(0);
+  return Status::Ok();
+}
+
+// Real root of g(x) = xbar nearest to `near` (g = x + beta_2 x^2 + ..).
+template <typename S>
+S inverse_polynomial(const Vector<S>& beta, S xbar, S near) {
+  const int m = static_cast<int>(beta.size());
+  int deg = m;
+  while (deg > 1 && beta(deg - 1) == S(0)) --deg;
+  if (deg == 1) return xbar / beta(0);
+  // Companion matrix of beta_deg x^deg + .. + beta_1 x - xbar.
+  Matrix<S> C = Matrix<S>::Zero(deg, deg);
+  for (int i = 0; i < deg; ++i) {
+    const S coeff = i == 0 ? -xbar : beta(i - 1);
+    C(0, deg - 1 - i) = -coeff / beta(deg - 1);
+  }
+  for (int i = 1; i < deg; ++i) C(i, i - 1) = 1;
+  Eigen::EigenSolver<Matrix<S>> es(C, false);
+  S best = near;
+  S gap = std::numeric_limits<S>::infinity();
+  for (int i = 0; i < deg; ++i) {
+    const std::complex<S> r = es.eigenvalues()(i);
+    if (std::abs(r.imag()) > S(1e-7) * (S(1) + std::abs(r.real()))) continue;
+    const S distance = std::abs(r.real() - near);
+    if (distance < gap) {
+      gap = distance;
+      best = r.real();
+    }
+  }
+  // Newton polish of the chosen root.
+  for (int k = 0; k < 3; ++k) {
+    S g = 0, dg = 0, power = 1;
+    for (int j = 0; j < m; ++j) {
+      dg += (j + 1) * beta(j) * power;
+      power *= best;
+      g += beta(j) * power;
+    }
+    if (!(std::abs(dg) > 0)) break;
+    best -= (g - xbar) / dg;
+  }
+  return best;
+}
+
+// x_hat = B/A ubar with the ZOH/FOH input rule (constant model).
+template <typename S>
+Status simulate_linear(const Vector<S>& f, const Vector<S>& b, int nk,
+                       InterSample rule, const Vector<S>& ubar,
+                       const RivData<S>& data, Vector<S>& x) {
+  ModelOrders orders;
+  orders.na = static_cast<int>(f.size());
+  orders.nb = {static_cast<int>(b.size())};
+  orders.nk = {nk};
+  Vector<S> theta(f.size() + b.size());
+  theta << f, b;
+  RecordView<S> record;
+  record.y = data.y;
+  record.u = ubar.data();
+  record.num_samples = data.num_samples;
+  record.num_inputs = 1;
+  record.ts = data.ts;
+  record.instants = data.instants;
+  Vector<S> unused;
+  return offline_iv_detail::simulate_auxiliary(
+      orders, rule, theta, record, offline_iv_detail::Loop<S>(), x, unused);
+}
+
+// y = filter (num, den, x), monic den, powers of q^-1.
+template <typename S>
+Vector<S> filter(const Vector<S>& num, const Vector<S>& den, const S* x,
+                 Eigen::Index n) {
+  Vector<S> y(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    S acc = 0;
+    for (Eigen::Index i = 0; i < num.size() && i <= k; ++i) {
+      acc += num(i) * x[k - i];
+    }
+    for (Eigen::Index i = 1; i < den.size() && i <= k; ++i) {
+      acc -= den(i) * y(k - i);
+    }
+    y(k) = acc;
+  }
+  return y;
+}
+
+// Roots of a monic polynomial in q^-1 reflected into the unit disc (so
+// that 1/poly is a stable filter).
+template <typename S>
+Vector<S> reflect_into_disc(const Vector<S>& poly) {
+  const int n = static_cast<int>(poly.size()) - 1;
+  if (n <= 0) return poly;
+  Matrix<S> C = Matrix<S>::Zero(n, n);
+  for (int i = 0; i < n; ++i) C(0, i) = -poly(i + 1);
+  for (int i = 1; i < n; ++i) C(i, i - 1) = 1;
+  Eigen::EigenSolver<Matrix<S>> es(C, false);
+  std::vector<std::complex<S>> roots;
+  bool changed = false;
+  for (int i = 0; i < n; ++i) {
+    std::complex<S> r = es.eigenvalues()(i);
+    if (std::abs(r) >= S(0.999)) {
+      r = S(0.999) / std::conj(r) * (std::abs(r) > 0 ? S(1) : S(0));
+      changed = true;
+    }
+    roots.push_back(r);
+  }
+  if (!changed) return poly;
+  std::vector<std::complex<S>> c(1, std::complex<S>(1));
+  for (const auto& r : roots) {
+    std::vector<std::complex<S>> next(c.size() + 1, std::complex<S>(0));
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      next[i] += c[i];
+      next[i + 1] -= r * c[i];
+    }
+    c = next;
+  }
+  Vector<S> out(n + 1);
+  for (int i = 0; i <= n; ++i) out(i) = c[i].real();
+  return out;
+}
+
+// ARMA D(q^-1) v = C(q^-1) e by Hannan-Rissanen: a long AR gives the
+// innovations, then least squares on [-v(t-1..t-nd), e(t-1..t-nc)].
+template <typename S>
+Status hannan_rissanen(const Vector<S>& v, int nc, int nd, Vector<S>& c,
+                       Vector<S>& d) {
+  const Eigen::Index n = v.size();
+  c = Vector<S>::Ones(1);
+  d = Vector<S>::Ones(1);
+  if (nc == 0 && nd == 0) return Status::Ok();
+  const int L = nc == 0 ? nd : std::max(20, 3 * (nc + nd));
+  if (n < 4 * (L + nc + nd) + 10) {
+    return bad_input("too few samples for the ARMA noise model");
+  }
+  Vector<S> e = v;
+  if (nc > 0) {
+    Matrix<S> Phi(n - L, L);
+    for (Eigen::Index t = L; t < n; ++t) {
+      for (int i = 0; i < L; ++i) Phi(t - L, i) = -v(t - 1 - i);
+    }
+    const Vector<S> a = Phi.colPivHouseholderQr().solve(v.tail(n - L));
+    e.setZero();
+    e.tail(n - L) = v.tail(n - L) - Phi * a;
+  }
+  const int start = nc > 0 ? L + std::max(nc, nd) : nd;
+  Matrix<S> Phi(n - start, nd + nc);
+  for (Eigen::Index t = start; t < n; ++t) {
+    for (int i = 0; i < nd; ++i) Phi(t - start, i) = -v(t - 1 - i);
+    for (int i = 0; i < nc; ++i) Phi(t - start, nd + i) = e(t - 1 - i);
+  }
+  const Vector<S> p = Phi.colPivHouseholderQr().solve(v.tail(n - start));
+  if (!p.allFinite()) return numerical_failure("the ARMA fit failed");
+  d = Vector<S>(nd + 1);
+  d << 1, p.head(nd);
+  c = Vector<S>(nc + 1);
+  c << 1, p.tail(nc);
+  d = reflect_into_disc(d);
+  c = reflect_into_disc(c);
+  return Status::Ok();
+}
+
+// Separated parameters [f; b; alpha(1:); beta(1:)] from the engine's theta
+// [f; B_1 .. B_l; C_2 .. C_m] (C_j = -beta_j [1 f]).
+template <typename S>
+Status separate(const BlockOrders& o, int l, const Vector<S>& theta,
+                Vector<S>& sep) {
+  const int nf = o.nf, nb = o.nb, m = o.nw;
+  Matrix<S> M(l, nb);
+  for (int i = 0; i < l; ++i) {
+    M.row(i) = theta.segment(nf + i * nb, nb).transpose();
+  }
+  Vector<S> alpha, b;
+  Status status = rank_one(M, alpha, b);
+  if (!status.ok()) return status;
+  Vector<S> a(nf + 1);
+  a << 1, theta.head(nf);
+  sep.resize(nf + nb + (l - 1) + (m - 1));
+  sep << theta.head(nf), b, alpha.tail(l - 1), Vector<S>::Zero(m - 1);
+  for (int j = 0; j < m - 1; ++j) {
+    const Vector<S> cj = theta.segment(nf + l * nb + j * (nf + 1), nf + 1);
+    sep(nf + nb + l - 1 + j) = -cj.dot(a) / a.squaredNorm();
+  }
+  return Status::Ok();
+}
+
+template <typename S>
+Vector<S> reconstruct(const BlockOrders& o, int l, const Vector<S>& sep) {
+  const int nf = o.nf, nb = o.nb, m = o.nw;
+  Vector<S> theta(nf + l * nb + (m - 1) * (nf + 1));
+  theta.head(nf) = sep.head(nf);
+  const Vector<S> b = sep.segment(nf, nb);
+  for (int i = 0; i < l; ++i) {
+    const S alpha = i == 0 ? S(1) : sep(nf + nb + i - 1);
+    theta.segment(nf + i * nb, nb) = alpha * b;
+  }
+  Vector<S> a(nf + 1);
+  a << 1, sep.head(nf);
+  for (int j = 0; j < m - 1; ++j) {
+    theta.segment(nf + l * nb + j * (nf + 1), nf + 1) =
+        -sep(nf + nb + l - 1 + j) * a;
+  }
+  return theta;
+}
+
+// Minimum-distance separation: sep minimising (theta - R(sep))^T P^-1
+// (theta - R(sep)) by Gauss-Newton from the rank-one start, with P the
+// engine's covariance of the unstructured theta; its covariance is
+// (J^T P^-1 J)^-1, J = dR/dsep (the efficient use of the products: an
+// unweighted rank-one fit ignores how well each product is known).
+template <typename S>
+Status weighted_separate(const BlockOrders& o, int l, const Vector<S>& theta,
+                         const Matrix<S>& P, Vector<S>& sep, Matrix<S>& cov) {
+  Status status = separate(o, l, theta, sep);
+  if (!status.ok()) return status;
+  Eigen::CompleteOrthogonalDecomposition<Matrix<S>> cod(P);
+  if (cod.rank() < P.rows()) {
+    return numerical_failure("the covariance of the products is singular");
+  }
+  const Matrix<S> W = cod.pseudoInverse();
+  auto jacobian = [&](const Vector<S>& x) {
+    Matrix<S> J(theta.size(), x.size());
+    for (Eigen::Index k = 0; k < x.size(); ++k) {
+      const S h = S(1e-6) * std::max(std::abs(x(k)), x.norm() * S(1e-3));
+      Vector<S> xp = x, xm = x;
+      xp(k) += h;
+      xm(k) -= h;
+      J.col(k) = (reconstruct(o, l, xp) - reconstruct(o, l, xm)) / (2 * h);
+    }
+    return J;
+  };
+  auto loss = [&](const Vector<S>& x) {
+    const Vector<S> r = theta - reconstruct(o, l, x);
+    return S(r.dot(W * r));
+  };
+  S f = loss(sep);
+  for (int it = 0; it < 50; ++it) {
+    const Matrix<S> J = jacobian(sep);
+    const Vector<S> r = theta - reconstruct(o, l, sep);
+    const Matrix<S> H = J.transpose() * W * J;
+    const Vector<S> dx = H.ldlt().solve(Vector<S>(J.transpose() * W * r));
+    S step = 1;
+    bool moved = false;
+    for (int k = 0; k < 20; ++k, step /= 2) {
+      const Vector<S> x = sep + step * dx;
+      const S fx = loss(x);
+      if (fx < f) {
+        sep = x;
+        f = fx;
+        moved = true;
+        break;
+      }
+    }
+    if (!moved || step * dx.norm() <= S(1e-12) * (S(1) + sep.norm())) break;
+  }
+  const Matrix<S> J = jacobian(sep);
+  const Matrix<S> H = J.transpose() * W * J;
+  Eigen::CompleteOrthogonalDecomposition<Matrix<S>> hcod(H);
+  if (hcod.rank() < H.rows()) {
+    return numerical_failure("the separated parameters are not identifiable");
+  }
+  cov = hcod.pseudoInverse();
+  return Status::Ok();
+}
+
+}  // namespace block_detail
+
+// HSRIVC / HRIVC / HWSRIVC, see the header comment. w holds the l basis
+// functions f_i(u) (N x l, column-major), l >= 1; for HWSRIVC also the
+// output polynomial's order o.nw. Returns kNotConverged with the result
+// filled when the fixed point was not reached in max_iterations.
+template <typename S>
+Status block_srivc(BlockModel model, const BlockOrders& o,
+                   const BlockSettings<S>& settings, const RivData<S>& data,
+                   int l, BlockResult<S>* result) {
+  using namespace block_detail;
+  if (result == nullptr) return bad_input("result must not be null");
+  if (data.y == nullptr || data.w == nullptr || l < 1) {
+    return bad_input("the data need an output and at least one basis column");
+  }
+  if (o.nf < 1 || o.nb < 1 || o.nk < 0 || o.nc < 0 || o.nd < 0 || o.nw < 1) {
+    return bad_input("orders must be nf >= 1, nb >= 1, nk, nc, nd >= 0");
+  }
+  if (o.nw > 20 || l > 20) {
+    return bad_input("at most 20 terms in each nonlinearity");
+  }
+  if (o.nb > o.nf + 1) {
+    return bad_input("nb must not exceed nf + 1 (proper B/A)");
+  }
+  if (settings.max_iterations < 1 || !(settings.tolerance > 0)) {
+    return Status(ErrorCode::kBadOption,
+                  "maxiter must be >= 1 and tol > 0");
+  }
+  const bool wiener = model == BlockModel::kHammersteinWiener;
+  const bool arma = model == BlockModel::kHammersteinArma;
+  const BlockOrders ow = [&] {
+    BlockOrders t = o;
+    if (!wiener) t.nw = 1;
+    return t;
+  }();
+  const Eigen::Index n = data.num_samples;
+  const int m = ow.nw;
+  const int channels = l + (m - 1);
+
+  RivProblem<S> problem;
+  problem.nf = {o.nf};
+  for (int i = 0; i < l; ++i) {
+    RivChannel c;
+    c.nb = o.nb;
+    c.nk = o.nk;
+    c.rule = settings.u_rule;
+    problem.channels.push_back(c);
+  }
+  for (int j = 1; j < m; ++j) {
+    RivChannel c;
+    c.nb = o.nf + 1;
+    c.rule = InterSample::kFoh;
+    problem.channels.push_back(c);
+  }
+  problem.y_rule = settings.y_rule;
+  const int np = problem.num_parameters();
+  if (n < 2 * np + 10) return bad_input("too few samples for the model");
+
+  const Eigen::Map<const Vector<S>> y(data.y, n);
+  const Eigen::Map<const Matrix<S>> basis(data.w, n, l);
+  Matrix<S> w(n, channels);            // engine channels (maybe prefiltered)
+  Matrix<S> raw(n, channels);          // the same, unfiltered
+  Vector<S> yf = y;
+  raw.leftCols(l) = basis;
+  Vector<S> x = y;  // x_hat of the output polynomial (first pass: y)
+  Vector<S> c = Vector<S>::Ones(1), d = Vector<S>::Ones(1);
+
+  RivSettings<S> riv;
+  riv.tolerance = settings.tolerance;
+  riv.max_iterations = settings.max_iterations;
+  riv.cutoffs = settings.cutoffs;
+  RivResult<S> step;
+  Vector<S> sep, theta;
+  Matrix<S> sep_cov;
+  Status status;
+  bool converged = false;
+  int iterations = 0;
+  std::string reason = "maximum number of iterations reached";
+  auto fill = [&]() {
+    for (int j = 1; j < m; ++j) {
+      raw.col(l + j - 1) = x.array().pow(S(j + 1)).matrix();
+    }
+    for (int k = 0; k < channels; ++k) {
+      w.col(k) = (c.size() > 1 || d.size() > 1)
+                     ? filter<S>(d, c, raw.col(k).data(), n)
+                     : Vector<S>(raw.col(k));
+    }
+    yf = (c.size() > 1 || d.size() > 1) ? filter<S>(d, c, y.data(), n)
+                                          : Vector<S>(y);
+  };
+  Vector<S> ubar(n), xbar(n);
+  auto simulate = [&](const Vector<S>& s) -> Status {
+    const Vector<S> alpha_tail = s.segment(o.nf + o.nb, l - 1);
+    ubar = basis.col(0);
+    for (int i = 1; i < l; ++i) ubar += alpha_tail(i - 1) * basis.col(i);
+    Status st = simulate_linear<S>(s.head(o.nf), s.segment(o.nf, o.nb), o.nk,
+                                   settings.u_rule, ubar, data, xbar);
+    if (!st.ok()) return st;
+    if (!wiener) {
+      x = xbar;
+      return Status::Ok();
+    }
+    Vector<S> beta(m);
+    beta << 1, s.tail(m - 1);
+    S near = xbar(0);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      x(k) = inverse_polynomial<S>(beta, xbar(k), near);
+      near = x(k);
+    }
+    return x.allFinite() ? Status::Ok()
+                         : numerical_failure("the simulated output diverged");
+  };
+
+  for (int it = 1; it <= settings.max_iterations; ++it) {
+    fill();
+    RivData<S> view = data;
+    view.y = yf.data();
+    view.w = w.data();
+    riv.theta_init = sep.size() > 0 ? reconstruct(ow, l, sep) : Vector<S>();
+    // Hammerstein: one refined-IV step from the structured model; the
+    // Wiener pass changes the regressors, so the engine converges on them.
+    riv.max_iterations = (it == 1 || wiener) ? settings.max_iterations : 1;
+    status = refined_iv(problem, riv, view, &step);
+    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
+      if (sep.size() == 0) return status;
+      reason = status.message();
+      break;
+    }
+    Vector<S> next;
+    Matrix<S> next_cov;
+    status = weighted_separate(ow, l, step.theta, step.covariance, next,
+                               next_cov);
+    if (!status.ok()) return status;
+    sep_cov = next_cov;
+    theta = step.theta;
+    iterations = it;
+    const S change =
+        sep.size() > 0 ? (next - sep).norm() / std::max(next.norm(), S(1e-300))
+                       : std::numeric_limits<S>::infinity();
+    // The Wiener pass is a fixed-point iteration on x_hat that overshoots
+    // with noise: half steps (the fixed point is unchanged).
+    if (wiener && sep.size() > 0) next = sep + S(0.5) * (next - sep);
+    sep = next;
+    status = simulate(sep);
+    if (!status.ok()) return status;
+    if (arma) {
+      status = hannan_rissanen<S>(y - x, o.nc, o.nd, c, d);
+      if (!status.ok()) return status;
+    }
+    if (change < settings.tolerance) {
+      converged = true;
+      reason = "fixed point of the separated parameters";
+      break;
+    }
+  }
+
+  result->covariance = sep_cov;
+  // MISO form: the structured products and their covariance through the
+  // Jacobian of reconstruct at sep.
+  Vector<S> full = reconstruct(ow, l, sep);
+  const int nmiso = o.nf + l * o.nb;
+  result->theta_miso = full.head(nmiso);
+  Matrix<S> R(nmiso, sep.size());
+  for (Eigen::Index k = 0; k < sep.size(); ++k) {
+    const S h = S(1e-6) * std::max(std::abs(sep(k)), sep.norm() * S(1e-3));
+    Vector<S> sp = sep, sm = sep;
+    sp(k) += h;
+    sm(k) -= h;
+    R.col(k) = (reconstruct(ow, l, sp) - reconstruct(ow, l, sm)).head(nmiso) /
+               (2 * h);
+  }
+  result->covariance_miso = R * result->covariance * R.transpose();
+  result->f = sep.head(o.nf);
+  result->b = sep.segment(o.nf, o.nb);
+  result->alpha = Vector<S>(l);
+  result->alpha << 1, sep.segment(o.nf + o.nb, l - 1);
+  result->beta = Vector<S>(m);
+  result->beta << 1, sep.tail(m - 1);
+  result->c = c;
+  result->d = d;
+  result->simulated = x;
+  result->noise_variance =
+      (y - x).squaredNorm() / static_cast<S>(std::max<Eigen::Index>(
+                                  1, n - static_cast<Eigen::Index>(sep.size())));
+  result->condition = step.condition;
+  result->iterations = iterations;
+  result->converged = converged;
+  result->reason = reason;
+  if (!converged) return Status(ErrorCode::kNotConverged, reason);
+  return Status::Ok();
+}
+
+}  // namespace ctid

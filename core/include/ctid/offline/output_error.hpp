@@ -1,0 +1,685 @@
+// Prediction-error minimisation for the output-error structure (thesis
+// sec. 1.3.3, the criterion of eq. 1.16 with the noise model H = 1):
+//
+//   continuous time   y(t_k) = B(p)/F(p) u(t - td) |_(t = t_k) + e(t_k),
+//   discrete time     y(k)   = B(q)/F(q) u(k) + e(k),
+//
+// theta = [f_1 .. f_nf, b_0 .. b_(nb-1) (, td)] (descending powers of p; in
+// discrete time F = 1 + f_1 q^-1 + .., B = q^-nk (b_0 + b_1 q^-1 + ..)),
+// minimising V(theta) = 1/N sum_k (y_k - y_hat_k(theta))^2 from rest.
+//
+// The continuous-time model is simulated exactly under the data's
+// intersample rule (ZOH or FOH input, App. A.1; regular or irregular
+// sampling; a delay that need not be a whole number of samples), by the
+// exact filters of refined_iv.hpp. The residual Jacobian is exact too:
+// the sensitivities
+//   d y_hat / d b_k = p^(nb-1-k) u / F,
+//   d y_hat / d f_i = -p^(nf-i) B u / F^2
+// are filtered from u by the same exact rule (one filter 1/F and one
+// 1/F^2 per iteration), so they are the derivatives of the sampled
+// simulation, not approximations. With the delay td estimated,
+//   d y_hat / d td = -p y_hat = -p B u(t - td) / F
+// (strictly proper models: y_hat is then differentiable in t). In discrete time
+// the sensitivities are 1/F applied to u and to y_hat, shifted.
+//
+// Minimiser: Levenberg-Marquardt (Marquardt's scaled damping) on the
+// equilibrated Jacobian, each damped step solved by QR of [J; sqrt(mu) I],
+// with F kept stable: a trial point with an unstable F (Routh test in
+// continuous time, Jury/Schur test in discrete time) or a larger loss is
+// refused and the damping raised, so the step is bounded by the damping
+// and every iterate lies in the stable set. The continuous-time iteration
+// runs in the time t' = sigma t (sigma = |f_nf|^(1/nf) of the start), as
+// the refined-IV engine does, for conditioning.
+//
+// Start: SRIVC (refined_iv.hpp) in continuous time, least-squares ARX with
+// unstable roots reflected in discrete time, or a given stable theta.
+//
+// Covariance: s^2 (J^T J)^-1 with s^2 = sum e^2 / (N - np), the
+// asymptotic covariance of the prediction-error estimate (thesis eq. 1.18
+// with H = 1).
+#pragma once
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ctid/offline/refined_iv.hpp"
+#include "ctid/base/stability.hpp"
+#include "ctid/base/status.hpp"
+#include "ctid/base/types.hpp"
+
+namespace ctid {
+
+enum class OeTime { kContinuous, kDiscrete };
+
+// Single-input output-error structure.
+struct OeStructure {
+  OeTime time = OeTime::kContinuous;
+  int nf = 1;  // denominator order, >= 1 (continuous), >= 0 (discrete)
+  int nb = 1;  // numerator coefficients, >= 1
+  int nk = 0;  // input delay in samples, >= 0
+  // Continuous time: an extra delay in time units (>= 0) on top of nk.
+  double delay = 0;
+  InterSample rule = InterSample::kZoh;  // of u (continuous time)
+  // Continuous time: estimate the total delay td (time units) as the last
+  // parameter, started from nk Ts + delay and kept in [0, delay_max] (the
+  // bounds of the iteration); needs a strictly proper model (nb <= nf).
+  bool estimate_delay = false;
+  double delay_max = 0;
+  int num_parameters() const { return nf + nb + (estimate_delay ? 1 : 0); }
+};
+
+template <typename S>
+struct OeSettings {
+  int max_iterations = 100;
+  S tolerance = S(1e-8);            // relative step and relative loss decrease
+  S gradient_tolerance = S(1e-10);  // on the scaled gradient, relative
+  Vector<S> theta_init;             // empty: SRIVC / ARX start
+  S srivc_cutoff = 0;  // SVF cut-off of SRIVC's start (rad/s); 0: a grid
+  S initial_damping = S(1e-3);
+};
+
+template <typename S>
+struct OeResult {
+  Vector<S> theta;
+  Matrix<S> covariance;
+  Vector<S> theta_start;
+  std::string start;     // "srivc", "arx" or "given"
+  S loss = 0;            // 1/N sum e^2 (the SITB's LossFcn/MSE)
+  S noise_variance = 0;  // sum e^2 / (N - np)
+  S gradient_norm = 0;   // ||J^T e|| / (N s^2) in the equilibrated scale
+  S damping = 0;
+  int iterations = 0;
+  bool converged = false;
+  std::string reason;
+  Vector<S> simulated;
+};
+
+// The data: y and u (N samples), Ts or N instants (continuous time only).
+template <typename S>
+struct OeData {
+  const S* y = nullptr;
+  const S* u = nullptr;
+  Eigen::Index num_samples = 0;
+  S ts = 0;
+  const S* instants = nullptr;
+};
+
+namespace oe_detail {
+
+// Schur-Cohn (Jury) test: all roots of 1 + a1 z^-1 + .. + an z^-n inside
+// the unit circle.
+template <typename S>
+bool schur_stable(const Vector<S>& a) {
+  const Eigen::Index n = a.size();
+  if (n == 0) return true;
+  if (!a.allFinite()) return false;
+  Vector<S> c(n + 1);
+  c(0) = 1;
+  c.tail(n) = a;
+  for (Eigen::Index m = n; m >= 1; --m) {
+    const S k = c(m) / c(0);
+    if (!(std::abs(k) < 1)) return false;
+    Vector<S> next(m);
+    for (Eigen::Index i = 0; i < m; ++i) next(i) = c(i) - k * c(m - i);
+    c = next;
+  }
+  return true;
+}
+
+// Reflects the roots of 1 + a1 z^-1 + .. outside the unit circle to 1/z*.
+template <typename S>
+Vector<S> reflect_outside_roots(const Vector<S>& a) {
+  const Eigen::Index n = a.size();
+  if (n == 0) return a;
+  Matrix<S> companion = Matrix<S>::Zero(n, n);
+  for (Eigen::Index i = 0; i + 1 < n; ++i) companion(i + 1, i) = 1;
+  for (Eigen::Index i = 0; i < n; ++i) companion(0, i) = -a(i);
+  const Eigen::EigenSolver<Matrix<S>> eig(companion, false);
+  using C = std::complex<S>;
+  Eigen::Matrix<C, Eigen::Dynamic, 1> poly =
+      Eigen::Matrix<C, -1, 1>::Zero(n + 1);
+  poly(0) = 1;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    C root = eig.eigenvalues()(k);
+    const S r = std::abs(root);
+    if (r > 1) root /= r * r;  // 1 / conj(root): same spectrum magnitude
+    if (std::abs(root) >= S(0.999)) root *= S(0.99) / std::abs(root);
+    for (Eigen::Index i = k + 1; i > 0; --i) poly(i) -= root * poly(i - 1);
+  }
+  Vector<S> out(n);
+  for (Eigen::Index i = 0; i < n; ++i) out(i) = poly(i + 1).real();
+  return out;
+}
+
+// y = 1/F(q) x, F = 1 + f1 q^-1 + .., from rest.
+template <typename S>
+void all_pole(const Vector<S>& f, const S* x, Eigen::Index n, S* y) {
+  const Eigen::Index nf = f.size();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    S v = x[k];
+    for (Eigen::Index i = 1; i <= nf && i <= k; ++i) v -= f(i - 1) * y[k - i];
+    y[k] = v;
+  }
+}
+
+template <typename S>
+Vector<S> polynomial_square(const Vector<S>& f) {
+  // (p^n + f1 p^(n-1) + ..)^2 without the leading 1.
+  const Eigen::Index n = f.size();
+  Vector<S> full(n + 1);
+  full(0) = 1;
+  full.tail(n) = f;
+  Vector<S> sq = Vector<S>::Zero(2 * n + 1);
+  for (Eigen::Index i = 0; i <= n; ++i)
+    for (Eigen::Index j = 0; j <= n; ++j) sq(i + j) += full(i) * full(j);
+  return sq.tail(2 * n);
+}
+
+// The model: simulation and exact Jacobian of y_hat for a theta (scaled
+// time in continuous time).
+template <typename S>
+class OeModel {
+ public:
+  OeModel(const OeStructure& s, const OeData<S>& d) : s_(s), d_(d) {
+    clock_.ts = d.ts;
+    clock_.instants = d.instants;
+    clock_.n = d.num_samples;
+    hurwitz_.configure(s.nf);
+    delay_ = s.delay;
+    if (s.time == OeTime::kContinuous && s.nk > 0) {
+      delay_ +=
+          s.nk * (d.instants == nullptr ? d.ts : clock_.median_interval());
+    }
+  }
+  // The total delay nk Ts + delay (time units, continuous time).
+  double total_delay() const { return delay_; }
+  void set_scale(S sigma) { clock_.sigma = sigma; }
+  S sigma() const { return clock_.sigma; }
+  Eigen::Index samples() const { return d_.num_samples; }
+
+  // Scale factors: theta = theta_scaled .* factors (continuous time).
+  Vector<S> factors(S sigma) const {
+    Vector<S> d = Vector<S>::Ones(s_.num_parameters());
+    if (s_.time == OeTime::kDiscrete) return d;
+    for (int i = 0; i < s_.nf; ++i) d(i) = std::pow(sigma, S(i + 1));
+    for (int k = 0; k < s_.nb; ++k)
+      d(s_.nf + k) = std::pow(sigma, S(s_.nf - (s_.nb - 1 - k)));
+    return d;  // td stays in time units
+  }
+
+  bool stable(const Vector<S>& theta) {
+    const Vector<S> f = theta.head(s_.nf);
+    if (!f.allFinite()) return false;
+    if (s_.time == OeTime::kContinuous) return hurwitz_.is_stable(f);
+    return schur_stable<S>(f);
+  }
+
+  // y_hat and (with J non-null) d y_hat / d theta.
+  void evaluate(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
+    if (s_.time == OeTime::kContinuous) {
+      continuous(theta, yhat, J);
+    } else {
+      discrete(theta, yhat, J);
+    }
+  }
+
+ private:
+  void filter(const Vector<S>& d, Matrix<S>& out) {
+    if (delay_ > 0) {
+      riv_detail::filter_delayed_derivatives<S>(d, S(1), s_.rule, clock_, d_.u,
+                                                static_cast<S>(delay_), out);
+    } else {
+      riv_detail::filter_derivatives<S>(d, S(1), s_.rule, clock_, d_.u, out);
+    }
+  }
+
+  void continuous(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
+    const int nf = s_.nf, nb = s_.nb;
+    const Vector<S> f = theta.head(nf);
+    const Vector<S> b = theta.segment(nf, nb);
+    if (s_.estimate_delay) delay_ = static_cast<double>(theta(nf + nb));
+    filter(f, X_);  // columns p^i u / F, i = 0..nf
+    yhat = Vector<S>::Zero(d_.num_samples);
+    for (int k = 0; k < nb; ++k) yhat += b(k) * X_.col(nb - 1 - k);
+    if (J == nullptr) return;
+    J->resize(d_.num_samples, s_.num_parameters());
+    for (int k = 0; k < nb; ++k) J->col(nf + k) = X_.col(nb - 1 - k);
+    if (s_.estimate_delay) {
+      // -p y_hat in original time: p = sigma p'.
+      auto col = J->col(nf + nb);
+      col.setZero();
+      for (int k = 0; k < nb; ++k) col -= clock_.sigma * b(k) * X_.col(nb - k);
+    }
+    filter(polynomial_square<S>(f), X2_);  // p^j u / F^2, j = 0..2 nf
+    for (int i = 1; i <= nf; ++i) {
+      auto col = J->col(i - 1);
+      col.setZero();
+      for (int k = 0; k < nb; ++k) col -= b(k) * X2_.col(nf - i + nb - 1 - k);
+    }
+  }
+
+  void discrete(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
+    const int nf = s_.nf, nb = s_.nb, nk = s_.nk;
+    const Eigen::Index n = d_.num_samples;
+    const Vector<S> f = theta.head(nf);
+    const Vector<S> b = theta.tail(nb);
+    v_.resize(n);
+    all_pole<S>(f, d_.u, n, v_.data());  // u / F
+    yhat = Vector<S>::Zero(n);
+    for (int k = 0; k < nb; ++k) {
+      const Eigen::Index shift = nk + k;
+      if (shift < n) yhat.tail(n - shift) += b(k) * v_.head(n - shift);
+    }
+    if (J == nullptr) return;
+    J->setZero(n, nf + nb);
+    for (int k = 0; k < nb; ++k) {
+      const Eigen::Index shift = nk + k;
+      if (shift < n) J->col(nf + k).tail(n - shift) = v_.head(n - shift);
+    }
+    w_.resize(n);
+    all_pole<S>(f, yhat.data(), n, w_.data());  // y_hat / F
+    for (int i = 1; i <= nf; ++i) {
+      if (i < n) J->col(i - 1).tail(n - i) = -w_.head(n - i);
+    }
+  }
+
+  OeStructure s_;
+  OeData<S> d_;
+  riv_detail::Clock<S> clock_;
+  HurwitzTest<S> hurwitz_;
+  double delay_ = 0;
+  Matrix<S> X_, X2_;
+  Vector<S> v_, w_;
+};
+
+}  // namespace oe_detail
+
+// Least-squares ARX, A(q) y = sum_j B_j(q) u_j + e with A = 1 + a1 q^-1 ..
+// + a_na q^-na, B_j = q^-nk_j (b_j0 + .. b_j(nb_j-1) q^-(nb_j-1)) (thesis
+// eq. 1.7 in discrete time), the regression over the samples whose
+// regressor lies inside the record (k > max(na, nk_j + nb_j - 1)). theta
+// = [a; b_1; ..; b_m], covariance s^2 (Phi^T Phi)^-1 with s^2 = ||e||^2 /
+// (rows - np); u is N-by-m column-major.
+template <typename S>
+struct ArxResult {
+  Vector<S> theta;
+  Matrix<S> covariance;
+  S loss = 0;  // mean square equation error over the regression rows
+  S noise_variance = 0;
+  Eigen::Index rows = 0;
+};
+
+template <typename S>
+Status arx_least_squares(const S* y, const S* u, Eigen::Index n, int m, int na,
+                         const std::vector<int>& nb, const std::vector<int>& nk,
+                         ArxResult<S>* out) {
+  if (out == nullptr) return bad_input("arx: no result given");
+  if (na < 0 || static_cast<int>(nb.size()) != m ||
+      static_cast<int>(nk.size()) != m) {
+    return Status(ErrorCode::kDimensionMismatch,
+                  "nb and nk need one entry per input");
+  }
+  if (na > n) return bad_input("na must be smaller than the record");
+  int np = na, start = na;
+  for (int j = 0; j < m; ++j) {
+    if (nb[j] < 0 || nk[j] < 0) return bad_input("nb and nk must be >= 0");
+    // Each order against the record before the sums (int overflow).
+    if (nb[j] > n || nk[j] > n)
+      return bad_input("nb and nk must be smaller than the record");
+    np += nb[j];
+    if (nb[j] > 0) start = std::max(start, nk[j] + nb[j] - 1);
+  }
+  if (np < 1) return bad_input("the model has no parameter");
+  const Eigen::Index rows = n - start;
+  if (rows <= np) {
+    return bad_input("too few samples (" + std::to_string(n) + ") for " +
+                     std::to_string(np) + " parameters");
+  }
+  Matrix<S> Phi(rows, np);
+  Vector<S> Y(rows);
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    const Eigen::Index k = start + r;
+    Y(r) = y[k];
+    int c = 0;
+    for (int i = 1; i <= na; ++i) Phi(r, c++) = -y[k - i];
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i < nb[j]; ++i) Phi(r, c++) = u[j * n + k - nk[j] - i];
+    }
+  }
+  if (!Phi.allFinite() || !Y.allFinite()) return bad_input("non-finite data");
+  const Vector<S> scale = Phi.colwise().norm().transpose();
+  for (int c = 0; c < np; ++c) {
+    if (!(scale(c) > 0)) {
+      return numerical_failure("the regressor column " + std::to_string(c + 1) +
+                               " is zero (no excitation)");
+    }
+  }
+  const Matrix<S> Pn = Phi * scale.cwiseInverse().asDiagonal();
+  const Eigen::ColPivHouseholderQR<Matrix<S>> qr(Pn);
+  if (qr.rank() < np) {
+    return numerical_failure(
+        "the regressor is rank deficient (rank " + std::to_string(qr.rank()) +
+        " < " + std::to_string(np) + "): too little excitation for the orders");
+  }
+  const Vector<S> thn = qr.solve(Y);
+  out->theta = thn.cwiseQuotient(scale);
+  const Vector<S> e = Y - Phi * out->theta;
+  out->rows = rows;
+  out->loss = e.squaredNorm() / static_cast<S>(rows);
+  out->noise_variance = e.squaredNorm() / static_cast<S>(rows - np);
+  const Matrix<S> Rinv = qr.matrixR()
+                             .topLeftCorner(np, np)
+                             .template triangularView<Eigen::Upper>()
+                             .solve(Matrix<S>::Identity(np, np));
+  Matrix<S> Cn = qr.colsPermutation() * (Rinv * Rinv.transpose()) *
+                 qr.colsPermutation().transpose();
+  out->covariance = out->noise_variance * scale.cwiseInverse().asDiagonal() *
+                    Cn * scale.cwiseInverse().asDiagonal();
+  return Status::Ok();
+}
+
+namespace oe_detail {
+
+template <typename S>
+Status validate(const OeStructure& s, const OeSettings<S>& settings,
+                const OeData<S>& d, OeResult<S>* result) {
+  if (result == nullptr) return bad_input("no result given");
+  if (d.y == nullptr || d.u == nullptr) return bad_input("no data given");
+  if (s.nb < 1) return bad_input("nb must be >= 1");
+  if (s.nk < 0) return bad_input("nk must be >= 0");
+  // Each order against the record before any sum of them (which would
+  // overflow int for orders near INT_MAX).
+  if (s.nf > d.num_samples || s.nb > d.num_samples || s.nk > d.num_samples)
+    return bad_input("orders and delay must be smaller than the record");
+  if (s.time == OeTime::kContinuous) {
+    if (s.nf < 1) return bad_input("nf must be >= 1 in continuous time");
+    if (s.nb > s.nf + 1)
+      return bad_input("the model must be proper (nb <= nf + 1)");
+    if (s.estimate_delay && s.nb > s.nf)
+      return bad_input("estimating the delay needs a strictly proper model");
+    if (s.estimate_delay && !(s.delay_max >= 0 && std::isfinite(s.delay_max)))
+      return bad_input("the delay bound must be finite and >= 0");
+    if (!(s.delay >= 0) || !std::isfinite(s.delay))
+      return bad_input("the delay must be finite and >= 0");
+    if (d.instants == nullptr && !(d.ts > 0))
+      return bad_input("Ts must be > 0");
+  } else {
+    if (s.nf < 0) return bad_input("nf must be >= 0");
+    if (s.estimate_delay)
+      return bad_input("a discrete-time delay is nk, not estimated here");
+    if (d.instants != nullptr)
+      return bad_input("a discrete-time model needs regular sampling");
+  }
+  const int np = s.num_parameters();
+  if (d.num_samples < 2 * np + 2) {
+    return bad_input("too few samples (" + std::to_string(d.num_samples) +
+                     ") for " + std::to_string(np) + " parameters");
+  }
+  for (Eigen::Index k = 0; k < d.num_samples; ++k) {
+    if (!std::isfinite(d.y[k]) || !std::isfinite(d.u[k]))
+      return bad_input("y and u must be finite");
+  }
+  if (settings.max_iterations < 0)
+    return Status(ErrorCode::kBadOption, "MaxIter must be >= 0");
+  if (!(settings.tolerance > 0))
+    return Status(ErrorCode::kBadOption, "the tolerance must be > 0");
+  if (settings.theta_init.size() != 0 && settings.theta_init.size() != np) {
+    return Status(
+        ErrorCode::kDimensionMismatch,
+        "the initial parameters need " + std::to_string(np) + " entries");
+  }
+  return Status::Ok();
+}
+
+template <typename S>
+Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
+                      double start_delay, Vector<S>* theta, std::string* how) {
+  const int nf = s.nf, nb = s.nb;
+  if (s.time == OeTime::kContinuous) {
+    RivProblem<S> problem;
+    problem.nf = {nf};
+    RivChannel c;
+    c.nb = nb;
+    c.nk = s.nk;
+    c.rule = s.rule;
+    c.delay = s.delay;
+    if (s.estimate_delay) {
+      c.nk = 0;
+      c.delay = start_delay;
+    }
+    problem.channels.push_back(c);
+    RivSettings<S> settings;
+    if (cutoff > 0) settings.cutoffs = {cutoff};
+    RivData<S> data;
+    data.y = d.y;
+    data.w = d.u;
+    data.num_samples = d.num_samples;
+    data.ts = d.ts;
+    data.instants = d.instants;
+    RivResult<S> r;
+    const Status st = refined_iv(problem, settings, data, &r);
+    if (!st.ok() && st.code() != ErrorCode::kNotConverged) {
+      return Status(st.code(), "SRIVC start: " + st.message());
+    }
+    *theta = Vector<S>(s.num_parameters());
+    theta->head(nf + nb) = r.theta;
+    if (s.estimate_delay) (*theta)(nf + nb) = static_cast<S>(start_delay);
+    *how = "srivc";
+    return Status::Ok();
+  }
+  ArxResult<S> arx;
+  const Status st =
+      arx_least_squares<S>(d.y, d.u, d.num_samples, 1, nf, {nb}, {s.nk}, &arx);
+  if (!st.ok()) return Status(st.code(), "ARX start: " + st.message());
+  Vector<S> th(nf + nb);
+  th.head(nf) = reflect_outside_roots<S>(arx.theta.head(nf));
+  th.tail(nb) = arx.theta.tail(nb);
+  *theta = th;
+  *how = "arx";
+  return Status::Ok();
+}
+
+}  // namespace oe_detail
+
+// The output-error estimate by Levenberg-Marquardt from the SRIVC/ARX (or
+// given) start. Returns kNotConverged with the last (stable) iterate when
+// MaxIter is reached or no step lowers the loss before convergence.
+template <typename S>
+Status output_error(const OeStructure& s, const OeSettings<S>& settings,
+                    const OeData<S>& data, OeResult<S>* result) {
+  using namespace oe_detail;
+  Status status = validate(s, settings, data, result);
+  if (!status.ok()) return status;
+  const int np = s.num_parameters();
+  const Eigen::Index n = data.num_samples;
+  OeModel<S> model(s, data);
+
+  Vector<S> theta0;
+  if (settings.theta_init.size() == np) {
+    theta0 = settings.theta_init;
+    result->start = "given";
+  } else {
+    status = start_estimate(s, data, settings.srivc_cutoff, model.total_delay(),
+                            &theta0, &result->start);
+    if (!status.ok()) return status;
+  }
+  const int td_index = s.estimate_delay ? np - 1 : -1;
+  if (td_index >= 0) {
+    if (!(theta0(td_index) >= 0 && theta0(td_index) <= s.delay_max)) {
+      return bad_input("the start delay lies outside [0, delay_max]");
+    }
+  }
+  result->theta_start = theta0;
+  if (!model.stable(theta0)) {
+    if (result->start == "given")
+      return bad_input("the initial model must have a stable F");
+    if (s.time == OeTime::kContinuous) {
+      theta0.head(s.nf) = reflect_unstable_roots<S>(theta0.head(s.nf).eval());
+    } else {
+      theta0.head(s.nf) = reflect_outside_roots<S>(theta0.head(s.nf).eval());
+    }
+    if (!model.stable(theta0))
+      return numerical_failure("no stable start model");
+  }
+
+  // Time scale (continuous time): |f_nf|^(1/nf) of the start.
+  S sigma = 1;
+  if (s.time == OeTime::kContinuous) {
+    const S fn = std::abs(theta0(s.nf - 1));
+    sigma = fn > 0 ? std::pow(fn, S(1) / S(s.nf)) : S(1);
+    if (!std::isfinite(sigma) || !(sigma > 0)) sigma = 1;
+  }
+  model.set_scale(sigma);
+  const Vector<S> factors = model.factors(sigma);
+  Vector<S> theta = theta0.cwiseQuotient(factors);
+
+  const Eigen::Map<const Vector<S>> y(data.y, n);
+  Vector<S> yhat, trial_yhat;
+  Matrix<S> J;
+  model.evaluate(theta, yhat, &J);
+  Vector<S> e = y - yhat;
+  S cost = e.squaredNorm();
+  if (!std::isfinite(cost))
+    return numerical_failure("the start model's simulation is not finite");
+  // The residual of an exact model is rounding: ||e|| <= 1e-12 ||y||
+  // (the simulation's relative accuracy is ~1e-14 per sample) ends the
+  // iteration, as no step can lower it reliably.
+  const S exact_floor = S(1e-24) * y.squaredNorm();
+  S mu = settings.initial_damping;
+  int iter = 0;
+  bool converged = false;
+  std::string reason;
+  Vector<S> scale(np), gn(np);
+  for (;;) {
+    scale = J.colwise().norm().transpose();
+    for (int i = 0; i < np; ++i)
+      if (!(scale(i) > 0)) scale(i) = 1;
+    const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
+    gn = Jn.transpose() * e;
+    const S yscale = std::max(cost, std::numeric_limits<S>::min());
+    if (gn.norm() <= settings.gradient_tolerance * std::sqrt(yscale) +
+                         std::numeric_limits<S>::min()) {
+      converged = true;
+      reason = "the gradient vanished";
+      break;
+    }
+    if (cost <= exact_floor) {
+      converged = true;
+      reason = "exact fit (the residual is at rounding level)";
+      break;
+    }
+    if (iter >= settings.max_iterations) {
+      reason =
+          "MaxIter (" + std::to_string(settings.max_iterations) + ") reached";
+      break;
+    }
+    ++iter;
+    // R of the equilibrated Jacobian and Q^T e, then damped steps.
+    const Eigen::HouseholderQR<Matrix<S>> qr(Jn);
+    const Matrix<S> R =
+        qr.matrixQR().topRows(np).template triangularView<Eigen::Upper>();
+    // Q^T e = R^-T Jn^T e (cheaper than applying Q to e; equal while R is
+    // regular, else Q is applied).
+    Vector<S> qte =
+        R.transpose().template triangularView<Eigen::Lower>().solve(gn);
+    if (!qte.allFinite()) {
+      qte = (qr.householderQ().transpose() * e).head(np);
+    }
+    bool accepted = false;
+    S new_cost = cost;
+    Vector<S> step, trial;
+    for (int attempt = 0; attempt < 40; ++attempt) {
+      Matrix<S> A(2 * np, np);
+      A.topRows(np) = R;
+      A.bottomRows(np) = std::sqrt(mu) * Matrix<S>::Identity(np, np);
+      Vector<S> rhs = Vector<S>::Zero(2 * np);
+      rhs.head(np) = qte;
+      const Vector<S> dn = A.householderQr().solve(rhs);
+      step = dn.cwiseQuotient(scale);
+      trial = theta + step;
+      if (td_index >= 0) {
+        // Projection on the delay's bounds.
+        trial(td_index) =
+            std::clamp(trial(td_index), S(0), static_cast<S>(s.delay_max));
+        step(td_index) = trial(td_index) - theta(td_index);
+      }
+      if (model.stable(trial)) {
+        model.evaluate(trial, trial_yhat, nullptr);
+        new_cost = (y - trial_yhat).squaredNorm();
+        if (std::isfinite(new_cost) && new_cost < cost) {
+          accepted = true;
+          break;
+        }
+      }
+      mu *= 10;
+      if (mu > S(1e16)) break;
+    }
+    if (!accepted) {
+      // No damped step lowers the loss: a (local) minimum to the working
+      // precision when the predicted decrease is negligible.
+      const S predicted = qte.squaredNorm();
+      if (predicted <= settings.tolerance * cost || cost <= 4 * exact_floor) {
+        converged = true;
+        reason = "no further decrease (a local minimum)";
+      } else {
+        reason = "no step lowers the loss while keeping F stable";
+      }
+      break;
+    }
+    const S rel_step = step.cwiseProduct(scale).norm() /
+                       (theta.cwiseProduct(scale).norm() + S(1e-300));
+    const S rel_decrease = (cost - new_cost) / cost;
+    theta = trial;
+    cost = new_cost;
+    mu = std::max(mu / 10, S(1e-12));
+    model.evaluate(theta, yhat, &J);
+    e = y - yhat;
+    if (rel_step <= settings.tolerance && rel_decrease <= settings.tolerance) {
+      converged = true;
+      reason = "the relative step and loss decrease fell below the tolerance";
+      scale = J.colwise().norm().transpose();
+      for (int i = 0; i < np; ++i)
+        if (!(scale(i) > 0)) scale(i) = 1;
+      gn = (J * scale.cwiseInverse().asDiagonal()).transpose() * e;
+      break;
+    }
+  }
+
+  result->theta = theta.cwiseProduct(factors);
+  result->loss = cost / static_cast<S>(n);
+  result->noise_variance = n > np ? cost / static_cast<S>(n - np)
+                                  : std::numeric_limits<S>::quiet_NaN();
+  result->iterations = iter;
+  result->converged = converged;
+  result->reason = reason;
+  result->damping = mu;
+  result->gradient_norm = gn.norm() / std::sqrt(std::max(cost, S(1e-300)));
+  result->simulated = yhat;
+  // Covariance s^2 (J^T J)^-1 (equilibrated, then mapped to theta).
+  const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
+  const Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jn);
+  Matrix<S> cov =
+      Matrix<S>::Constant(np, np, std::numeric_limits<S>::quiet_NaN());
+  if (qr.rank() == np) {
+    const Matrix<S> Rinv = qr.matrixR()
+                               .topLeftCorner(np, np)
+                               .template triangularView<Eigen::Upper>()
+                               .solve(Matrix<S>::Identity(np, np));
+    const Matrix<S> Cn = qr.colsPermutation() * (Rinv * Rinv.transpose()) *
+                         qr.colsPermutation().transpose();
+    const Vector<S> d = factors.cwiseQuotient(scale);
+    cov = result->noise_variance * d.asDiagonal() * Cn * d.asDiagonal();
+  } else {
+    result->reason += "; the Jacobian is rank deficient (no covariance)";
+  }
+  result->covariance = cov;
+  if (!converged) return Status(ErrorCode::kNotConverged, result->reason);
+  return Status::Ok();
+}
+
+}  // namespace ctid

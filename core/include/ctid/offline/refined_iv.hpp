@@ -1,0 +1,1617 @@
+// The offline refined instrumental-variable engine: one implementation of
+// LSSVF (thesis eq. 1.32), IVSVF (eqs. 2.4-2.7), SRIVC (eqs. 2.8-2.13) and
+// CLSRIVC (eqs. 2.47-2.50) for the generalised output-error structure
+//
+//   y(t) = sum_g x_g(t) + y0(t) + c + e(t),
+//   F_g(p) x_g(t) = sum_(j in g) B_j(p) w_j(t - nk_j Ts),
+//
+// where each group g has its own monic denominator F_g (one group: the
+// common-denominator model; one group per input: CONTSID's 'Different'
+// denominators), the channels w_j are the inputs and any extra regressors
+// (effect terms, a constant for an input offset), y0 the free response
+// of the initial state (optional) and c an output offset (optional).
+//
+// theta = [f of group 0 (f1 .. f_nf), f of group 1, .., b of channel 0
+// (b_0 .. b_(nb-1), descending powers of p), b of channel 1, .., c].
+// Coefficients may be fixed (moved to the left side of the regression);
+// fixed trailing zeros of F_g are integrators (the Hurwitz test applies to
+// F_g without them, the prefilter replaces them by a slow stable pole).
+//
+// Refined IV step for group g (eqs. 2.9-2.13): with the current model the
+// prefilter 1/F_g (made stable) filters the target y_g = y - (everything
+// but x_g), each channel (by its own intersample rule) and the auxiliary
+// model output x_hat_g (instruments); Z^T Phi theta = Z^T Y is solved by
+// the QR route of offline_iv.hpp with equilibrated columns. Groups are
+// updated in turn (Gauss-Seidel backfitting), then y0 and c by linear
+// least squares on the free responses (with every coefficient fixed this
+// is the x0 estimate alone).
+//
+// Time scaling: the engine works in the time t' = sigma t, chosen so that
+// the model's characteristic frequency |F_g(0)|^(1/n) is 1 there: the
+// columns p'^i y_f then have comparable sizes even for a sixth-order model
+// sampled fast (CONTSID scales time likewise). Coefficients are mapped back
+// exactly: f_i = sigma^i f'_i, b_k = sigma^(n-k) b'_k (k = power of p).
+//
+// Start: IVSVF at a grid of cut-offs (each run in the time scaled by its
+// cut-off), ranked by the simulation error of the start model; SRIVC runs
+// from the best starts in turn and the best stable, converged result wins,
+// so no single lucky cut-off is needed. Every iterate is kept stable: an
+// unstable IV solution is pulled back toward the previous (stable) iterate
+// by step halving, and reflected as a last resort; the result's status
+// says whether this happened on the final iterate.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "ctid/offline/offline_iv.hpp"
+
+namespace ctid {
+
+enum class RivMethod { kLssvf, kIvsvf, kSrivc };
+
+// One column of the signal matrix w: the denominator group it enters, its
+// numerator length, delay in samples and intersample rule.
+struct RivChannel {
+  int group = 0;
+  int nb = 1;
+  int nk = 0;
+  InterSample rule = InterSample::kZoh;
+  // A continuous delay (time units, >= 0) on top of nk samples: not a
+  // multiple of Ts, or on irregularly sampled data (filtered exactly by
+  // filter_delayed_derivatives).
+  double delay = 0;
+};
+
+template <typename S>
+struct RivProblem {
+  std::vector<int> nf;               // denominator order of each group, >= 1
+  std::vector<RivChannel> channels;  // one per column of the signals
+  // Fixed coefficients: empty (none) or one entry per theta element; the
+  // fixed ones take their value from fixed_values (original time).
+  std::vector<bool> fixed;
+  Vector<S> fixed_values;
+  InterSample y_rule = InterSample::kFoh;  // y is filtered by the trapezoid
+  bool output_offset = false;              // estimate c
+  bool initial_state = false;              // estimate y0 (free responses)
+  // Closed loop u = C(p) (r - y), C = nc / dc a continuous-time controller
+  // (one group, one channel: the plant input). Empty nc: open loop.
+  Vector<S> controller_num, controller_den;  // descending powers of p
+  const S* reference = nullptr;              // r, N samples
+  // Closed loop u = r1 + C(q^-1) (r2 - y) with a discrete controller (the
+  // thesis' form, eqs. 2.44-2.50; ZOH input), simulated by LtvSimulator.
+  const DiscreteTransferFunction<S>* discrete_controller = nullptr;
+  const S* r1 = nullptr;
+  const S* r2 = nullptr;
+
+  int num_groups() const { return static_cast<int>(nf.size()); }
+  int num_parameters() const {
+    int n = output_offset ? 1 : 0;
+    for (int v : nf) n += v;
+    for (const RivChannel& c : channels) n += c.nb;
+    return n;
+  }
+  bool continuous_loop() const { return controller_num.size() > 0; }
+  bool closed_loop() const {
+    return continuous_loop() || discrete_controller != nullptr;
+  }
+};
+
+template <typename S>
+struct RivSettings {
+  RivMethod method = RivMethod::kSrivc;
+  S tolerance = S(1e-6);  // on ||theta_i - theta_(i-1)|| / ||theta_i||, t'
+  int max_iterations = 30;
+  Vector<S> theta_init;  // original time; empty: the automatic start
+  // SVF cut-offs (rad/s): the one of LSSVF/IVSVF, or the start grid;
+  // empty: 12 log-spaced between 5/T and 0.5 pi/Ts.
+  std::vector<S> cutoffs;
+  int max_starts = 3;     // SRIVC runs from at most this many starts
+  S time_scale = 0;       // sigma; 0 = automatic
+  S integrator_pole = 0;  // prefilter pole replacing p = 0; 0: 10/T
+};
+
+template <typename S>
+struct RivResult {
+  Vector<S> theta;       // original time, fixed entries included
+  Matrix<S> covariance;  // np x np, zero rows/columns for fixed entries
+  S noise_variance = 0;  // ||y - y_hat||^2 / (N - free parameters)
+  int iterations = 0;
+  bool converged = false;
+  bool stable = false;  // every F_g (without integrators) Hurwitz
+  // False when SRIVC converged on its simulation loss while parameters
+  // still moved by more than their standard errors: directions the data
+  // do not determine (an over-parameterised structure).
+  bool determined = true;
+  std::string reason;   // why it stopped, in words
+  S cutoff = 0;         // cut-off of the SVF start used (0: theta_init)
+  S time_scale = 1;     // sigma of the final iterations
+  int starts_tried = 0;
+  S condition = 0;          // condition number of Z^T Phi (equilibrated)
+  Vector<S> x0;             // per group: y0_g^(i)(t_0), i = 0..nf_g-1
+  S offset = 0;             // c
+  Vector<S> simulated;      // y_hat = sum x_g + y0 + c at the samples
+  Vector<S> free_response;  // y0 at the samples
+};
+
+// The engine's signals: y (N), w (N x channels, column-major), the time
+// base (ts or instants, as RecordView).
+template <typename S>
+struct RivData {
+  const S* y = nullptr;
+  const S* w = nullptr;
+  Eigen::Index num_samples = 0;
+  S ts = 0;
+  const S* instants = nullptr;
+};
+
+namespace riv_detail {
+
+// Sampling intervals in the scaled time t' = sigma t.
+template <typename S>
+struct Clock {
+  S ts = 0;
+  const S* instants = nullptr;
+  Eigen::Index n = 0;
+  S sigma = 1;
+  S interval(Eigen::Index k) const {
+    if (instants == nullptr) return sigma * ts;
+    if (k == 0) return sigma * (instants[1] - instants[0]);
+    return sigma * (instants[k] - instants[k - 1]);
+  }
+  S duration() const {
+    if (instants == nullptr) return ts * static_cast<S>(n - 1);
+    return instants[n - 1] - instants[0];
+  }
+  S median_interval() const {
+    if (instants == nullptr) return ts;
+    std::vector<S> d(static_cast<std::size_t>(n - 1));
+    for (Eigen::Index k = 1; k < n; ++k)
+      d[k - 1] = instants[k] - instants[k - 1];
+    std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+    return d[d.size() / 2];
+  }
+};
+
+// The discretised filter 1/D(p) in controllable canonical form, state
+// z = [w .. w^(n-1)] for D(p) w = s, with the exact rule of the signal
+// between samples (thesis App. A.1): ZOH, z_k = Phi z_(k-1) + G0 s_(k-1),
+// or FOH (s linear between samples), z_k = Phi z_(k-1) + G0 s_(k-1) +
+// G1 (s_k - s_(k-1)), from one matrix exponential of [A b 0; 0 0 1/h;
+// 0 0 0] h. (svf.hpp's "foh" filters use the trapezoidal rule, whose
+// frequency warping, tan(w h/2)/(w h/2), shifts a lightly damped mode
+// near Nyquist/3 by percents: too much for a refined estimate.)
+template <typename S>
+class ExactFilter {
+ public:
+  ExactFilter(const Vector<S>& d, InterSample rule) : d_(d), rule_(rule) {
+    n_ = static_cast<int>(d.size());
+    A_ = companion_matrix<S>(d);
+    z_ = Vector<S>::Zero(n_);
+    next_ = z_;
+  }
+  // Two discretisations are kept (the last two step lengths, equal within
+  // a relative 1e-12): a continuously delayed input alternates between two
+  // sub-step lengths (filter_delayed_derivatives).
+  void ensure(S h) {
+    if (same_length(h, h_)) return;
+    if (same_length(h, h2_)) {
+      std::swap(h_, h2_);
+      Phi_.swap(Phi2_);
+      g0_.swap(g02_);
+      g1_.swap(g12_);
+      return;
+    }
+    std::swap(h_, h2_);
+    Phi_.swap(Phi2_);
+    g0_.swap(g02_);
+    g1_.swap(g12_);
+    const int m = n_ + 2;
+    Matrix<S> big = Matrix<S>::Zero(m, m);
+    big.topLeftCorner(n_, n_) = A_ * h;
+    big(n_ - 1, n_) = h;
+    big(n_, n_ + 1) = 1;
+    const Matrix<S> e = big.exp();
+    Phi_ = e.topLeftCorner(n_, n_);
+    g0_ = e.block(0, n_, n_, 1);
+    g1_ = e.block(0, n_ + 1, n_, 1);
+    h_ = h;
+  }
+  // Advances from t_(k-1) (input s_prev) to t_k (input s).
+  void step(S s_prev, S s) {
+    next_.noalias() = Phi_ * z_;
+    next_ += g0_ * s_prev;
+    if (rule_ == InterSample::kFoh) next_ += g1_ * (s - s_prev);
+    z_.swap(next_);
+  }
+  // p^i s / D, i = 0..n, at the current sample (input s).
+  template <typename Row>
+  void outputs(S gain, S s, Row&& row) const {
+    S highest = s;
+    for (int i = 0; i < n_; ++i) {
+      row(i) = gain * z_(i);
+      highest -= d_(i) * z_(n_ - 1 - i);
+    }
+    row(n_) = gain * highest;
+  }
+
+ private:
+  static bool same_length(S a, S b) {
+    return a == b || std::abs(a - b) <= S(1e-12) * std::abs(a);
+  }
+
+  Vector<S> d_;
+  InterSample rule_;
+  int n_ = 0;
+  Matrix<S> A_, Phi_, Phi2_;
+  Vector<S> g0_, g1_, g02_, g12_, z_, next_;
+  S h_ = -1, h2_ = -1;
+};
+
+// p^i s / D(p), i = 0..n (columns), for D = p^n + d1 p^(n-1) + .. + dn,
+// the filter at rest at the first sample.
+template <typename S>
+void filter_derivatives(const Vector<S>& d, S gain, InterSample rule,
+                        const Clock<S>& clock, const S* s, Matrix<S>& out) {
+  const int n = static_cast<int>(d.size());
+  ExactFilter<S> filter(d, rule);
+  out.resize(clock.n, n + 1);
+  for (Eigen::Index k = 0; k < clock.n; ++k) {
+    if (k > 0) {
+      filter.ensure(clock.interval(k));
+      filter.step(s[k - 1], s[k]);
+    }
+    filter.outputs(gain, s[k], out.row(k));
+  }
+}
+
+// p^i s(t - delay) / D(p), i = 0..n: the signal delayed by a continuous
+// delay >= 0 (original time units), the filter at rest at the first
+// sample. Before its first sample the signal is 0 (ZOH) or a ramp from 0
+// over one sampling interval (FOH), as a delay of whole samples (nk) gives,
+// so a delay of nk Ts equals the nk shift. The delayed signal changes its
+// piece at t_j + delay, between the sampling instants: the filter is
+// stepped exactly (ZOH/FOH rule, App. A.1) from piece to piece.
+template <typename S>
+void filter_delayed_derivatives(const Vector<S>& d, S gain, InterSample rule,
+                                const Clock<S>& clock, const S* s, S delay,
+                                Matrix<S>& out) {
+  const int n = static_cast<int>(d.size());
+  const Eigen::Index count = clock.n;
+  ExactFilter<S> filter(d, rule);
+  out.resize(count, n + 1);
+  std::vector<S> t(static_cast<std::size_t>(count));
+  for (Eigen::Index k = 0; k < count; ++k) {
+    t[k] = clock.instants == nullptr
+               ? clock.ts * static_cast<S>(k)
+               : clock.instants[k] - clock.instants[0];
+  }
+  const S h0 = t[1] - t[0];
+  const S snap = S(1e-9) * clock.median_interval();
+  // The undelayed signal at time tau (relative to t_0); ZOH right-
+  // continuous, evaluated just after tau so that rounding of t_j + delay
+  // does not pick the previous sample.
+  auto value = [&](S tau) -> S {
+    if (rule == InterSample::kZoh) {
+      if (tau + snap < 0) return 0;
+      const auto it = std::upper_bound(t.begin(), t.end(), tau + snap);
+      return s[(it - t.begin()) - 1];
+    }
+    if (tau <= -h0) return 0;
+    if (tau < 0) return s[0] * (1 + tau / h0);
+    const auto it = std::upper_bound(t.begin(), t.end(), tau);
+    const Eigen::Index j = (it - t.begin()) - 1;
+    if (j >= count - 1) return s[count - 1];
+    return s[j] + (s[j + 1] - s[j]) * (tau - t[j]) / (t[j + 1] - t[j]);
+  };
+  // Breakpoints of the undelayed signal: its samples, and the start of the
+  // FOH ramp.
+  std::vector<S> breaks;
+  if (rule == InterSample::kFoh) breaks.push_back(-h0);
+  breaks.insert(breaks.end(), t.begin(), t.end());
+  for (Eigen::Index k = 0; k < count; ++k) {
+    if (k > 0) {
+      S a = t[k - 1] - delay;
+      const S b = t[k] - delay;
+      auto it = std::upper_bound(breaks.begin(), breaks.end(), a + snap);
+      for (;; ++it) {
+        const bool last = it == breaks.end() || *it >= b - snap;
+        const S c = last ? b : *it;
+        filter.ensure(clock.sigma * (c - a));
+        if (rule == InterSample::kZoh) {
+          filter.step(value(S(0.5) * (a + c)), 0);
+        } else {
+          filter.step(value(a), value(c));
+        }
+        a = c;
+        if (last) break;
+      }
+    }
+    filter.outputs(gain, value(t[k] - delay), out.row(k));
+  }
+}
+
+// Free responses of F(p) h = 0: column i has h^(l)(t_0) = delta_il.
+template <typename S>
+void free_responses(const Vector<S>& f, const Clock<S>& clock, Matrix<S>& H) {
+  const int n = static_cast<int>(f.size());
+  FilterDiscretization<S> disc;
+  disc.configure(n, InterSample::kZoh);
+  disc.set_denominator(f);
+  H.resize(clock.n, n);
+  Matrix<S> z = Matrix<S>::Identity(n, n);
+  for (Eigen::Index k = 0; k < clock.n; ++k) {
+    if (k > 0) {
+      disc.ensure(clock.interval(k));
+      z = disc.Phi() * z;
+    }
+    H.row(k) = z.row(0);
+  }
+}
+
+// Number of trailing fixed zeros of group g's denominator (integrators).
+template <typename S>
+int integrators(const RivProblem<S>& problem, int offset, int n) {
+  int r = 0;
+  if (problem.fixed.empty()) return 0;
+  while (r < n && problem.fixed[offset + n - 1 - r] &&
+         problem.fixed_values(offset + n - 1 - r) == 0) {
+    ++r;
+  }
+  return r;
+}
+
+// The parameter layout and the working state of one estimation.
+template <typename S>
+struct Layout {
+  std::vector<int> f_offset;  // per group
+  std::vector<int> b_offset;  // per channel
+  std::vector<int> rank;      // integrators per group
+  int offset_index = -1;
+  int np = 0;
+  std::vector<bool> fixed;
+};
+
+template <typename S>
+Layout<S> make_layout(const RivProblem<S>& problem) {
+  Layout<S> layout;
+  int at = 0;
+  for (int g = 0; g < problem.num_groups(); ++g) {
+    layout.f_offset.push_back(at);
+    at += problem.nf[g];
+  }
+  for (const RivChannel& c : problem.channels) {
+    layout.b_offset.push_back(at);
+    at += c.nb;
+  }
+  if (problem.output_offset) layout.offset_index = at++;
+  layout.np = at;
+  layout.fixed =
+      problem.fixed.empty() ? std::vector<bool>(at, false) : problem.fixed;
+  for (int g = 0; g < problem.num_groups(); ++g) {
+    layout.rank.push_back(
+        integrators(problem, layout.f_offset[g], problem.nf[g]));
+  }
+  return layout;
+}
+
+// d(i) with theta' = d .* theta for t' = sigma t.
+template <typename S>
+Vector<S> scale_factors(const RivProblem<S>& problem, const Layout<S>& layout,
+                        S sigma) {
+  Vector<S> d = Vector<S>::Ones(layout.np);
+  for (int g = 0; g < problem.num_groups(); ++g) {
+    for (int i = 1; i <= problem.nf[g]; ++i) {
+      d(layout.f_offset[g] + i - 1) = std::pow(sigma, -S(i));
+    }
+  }
+  for (std::size_t j = 0; j < problem.channels.size(); ++j) {
+    const RivChannel& c = problem.channels[j];
+    const int n = problem.nf[c.group];
+    for (int l = 0; l < c.nb; ++l) {
+      const int power = c.nb - 1 - l;
+      d(layout.b_offset[j] + l) = std::pow(sigma, S(power - n));
+    }
+  }
+  return d;
+}
+
+template <typename S>
+Status validate(const RivProblem<S>& problem, const RivSettings<S>& settings,
+                const RivData<S>& data, RivResult<S>* result) {
+  if (result == nullptr) return bad_input("the result output is null");
+  if (data.y == nullptr) return bad_input("the record needs y");
+  if (problem.nf.empty()) return bad_input("the model needs a denominator");
+  for (int n : problem.nf) {
+    if (n < 1) return bad_input("every denominator order must be >= 1");
+  }
+  if (problem.channels.empty()) return bad_input("the model needs an input");
+  if (data.w == nullptr) return bad_input("the record needs the inputs");
+  std::vector<int> used(problem.nf.size(), 0);
+  int total_nb = 0;
+  for (const RivChannel& c : problem.channels) {
+    if (c.group < 0 || c.group >= problem.num_groups()) {
+      return bad_input("a channel names a denominator that does not exist");
+    }
+    if (c.nb < 0 || c.nb > problem.nf[c.group] + 1) {
+      return bad_input("nb = " + std::to_string(c.nb) +
+                       " gives an improper model: nb must be <= nf + 1 = " +
+                       std::to_string(problem.nf[c.group] + 1));
+    }
+    if (c.nk < 0) return bad_input("nk must be >= 0");
+    if (!(c.delay >= 0) || !std::isfinite(c.delay)) {
+      return bad_input("a channel delay must be finite and >= 0");
+    }
+    if (c.delay > 0 && problem.closed_loop()) {
+      return Status(ErrorCode::kBadOption,
+                    "a continuous delay is not supported in closed loop");
+    }
+    if (c.nk > 0 && data.instants != nullptr) {
+      return bad_input("nk must be 0 for irregularly sampled data");
+    }
+    used[c.group] += c.nb;
+    total_nb += c.nb;
+  }
+  if (total_nb == 0) {
+    return bad_input("the model needs at least one numerator parameter");
+  }
+  for (int g = 0; g < problem.num_groups(); ++g) {
+    if (used[g] == 0) {
+      return bad_input("denominator " + std::to_string(g + 1) +
+                       " has no numerator parameter");
+    }
+  }
+  const int np = problem.num_parameters();
+  if (!problem.fixed.empty()) {
+    if (static_cast<int>(problem.fixed.size()) != np ||
+        problem.fixed_values.size() != np) {
+      return dimension_mismatch("fixed and its values need " +
+                                std::to_string(np) + " entries");
+    }
+    for (int i = 0; i < np; ++i) {
+      if (problem.fixed[i] && !std::isfinite(problem.fixed_values(i))) {
+        return bad_input("fixed values must be finite");
+      }
+    }
+  }
+  const Eigen::Index n = data.num_samples;
+  if (n < 2 * np + 2) {
+    return bad_input("the record has " + std::to_string(n) +
+                     " samples, too few for " + std::to_string(np) +
+                     " parameters");
+  }
+  const Eigen::Index m = static_cast<Eigen::Index>(problem.channels.size());
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (!std::isfinite(data.y[k])) {
+      return bad_input("y must be finite (sample " + std::to_string(k + 1) +
+                       " is not)");
+    }
+  }
+  for (Eigen::Index k = 0; k < n * m; ++k) {
+    if (!std::isfinite(data.w[k])) {
+      return bad_input("the inputs must be finite (sample " +
+                       std::to_string(k % n + 1) + " is not)");
+    }
+  }
+  if (data.instants == nullptr) {
+    if (!(data.ts > 0) || !std::isfinite(data.ts)) {
+      return bad_input("the sampling interval Ts must be finite and > 0");
+    }
+  } else {
+    for (Eigen::Index k = 1; k < n; ++k) {
+      if (!(data.instants[k] > data.instants[k - 1])) {
+        return bad_input("the sampling instants must be strictly increasing");
+      }
+    }
+  }
+  if (!(settings.tolerance > 0)) return bad_input("the tolerance must be > 0");
+  if (settings.max_iterations < 0) {
+    return bad_input("the maximum number of iterations must be >= 0");
+  }
+  for (S c : settings.cutoffs) {
+    if (!(c > 0) || !std::isfinite(c)) {
+      return bad_input("the cut-off frequencies must be finite and > 0");
+    }
+  }
+  if (settings.theta_init.size() != 0 && settings.theta_init.size() != np) {
+    return dimension_mismatch("the initial estimate must have " +
+                              std::to_string(np) + " parameters");
+  }
+  if (settings.theta_init.size() != 0 && !settings.theta_init.allFinite()) {
+    return bad_input("the initial estimate must be finite");
+  }
+  if (problem.continuous_loop() && problem.discrete_controller != nullptr) {
+    return bad_input("give a continuous or a discrete controller, not both");
+  }
+  if (problem.closed_loop() && (problem.num_groups() != 1 || m != 1)) {
+    return bad_input("closed-loop estimation needs a single input");
+  }
+  if (problem.discrete_controller != nullptr) {
+    if (problem.channels[0].rule != InterSample::kZoh) {
+      return bad_input(
+          "closed-loop estimation needs ZOH data (the controller output is "
+          "held between samples)");
+    }
+    const Status c = validate_controller(*problem.discrete_controller);
+    if (!c.ok()) return bad_input("controller: " + c.message());
+    if (problem.r1 == nullptr || problem.r2 == nullptr) {
+      return bad_input("closed-loop estimation needs r1 and r2");
+    }
+    for (Eigen::Index k = 0; k < n; ++k) {
+      if (!std::isfinite(problem.r1[k]) || !std::isfinite(problem.r2[k])) {
+        return bad_input("r1 and r2 must be finite (sample " +
+                         std::to_string(k + 1) + " is not)");
+      }
+    }
+  }
+  if (problem.continuous_loop()) {
+    if (problem.reference == nullptr) {
+      return bad_input("closed-loop estimation needs the reference r");
+    }
+    if (problem.controller_den.size() < problem.controller_num.size() ||
+        problem.controller_den.size() == 0 || problem.controller_den(0) == 0) {
+      return bad_input(
+          "the controller must be proper with a nonzero leading "
+          "denominator coefficient");
+    }
+    if (problem.channels[0].nk != 0) {
+      return Status(ErrorCode::kBadOption,
+                    "a delay nk > 0 is not supported with a continuous-time "
+                    "controller");
+    }
+    for (Eigen::Index k = 0; k < n; ++k) {
+      if (!std::isfinite(problem.reference[k])) {
+        return bad_input("the reference must be finite");
+      }
+    }
+  }
+  return Status::Ok();
+}
+
+// The problem being solved, in the scaled time, with its signals.
+template <typename S>
+class Engine {
+ public:
+  Engine(const RivProblem<S>& problem, const RivData<S>& data)
+      : p_(problem), layout_(make_layout(problem)) {
+    n_ = data.num_samples;
+    y_ = Eigen::Map<const Vector<S>>(data.y, n_);
+    const int m = static_cast<int>(problem.channels.size());
+    w_.resize(n_, m);
+    for (int j = 0; j < m; ++j) {
+      const int nk = problem.channels[j].nk;
+      for (Eigen::Index k = 0; k < n_; ++k) {
+        w_(k, j) = k >= nk ? data.w[j * n_ + k - nk] : S(0);
+      }
+    }
+    data_ = data;
+    clock_.ts = data.ts;
+    clock_.instants = data.instants;
+    clock_.n = n_;
+    if (problem.continuous_loop()) {
+      r_ = Eigen::Map<const Vector<S>>(problem.reference, n_);
+    }
+  }
+
+  const Layout<S>& layout() const { return layout_; }
+  const Clock<S>& clock() const { return clock_; }
+  Eigen::Index samples() const { return n_; }
+  int free_parameters() const {
+    int k = 0;
+    for (bool f : layout_.fixed) k += f ? 0 : 1;
+    return k;
+  }
+
+  // theta (original time) -> theta' at sigma, fixed values imposed.
+  Vector<S> to_scaled(const Vector<S>& theta, S sigma) const {
+    Vector<S> t = theta;
+    for (int i = 0; i < layout_.np; ++i) {
+      if (layout_.fixed[i]) t(i) = p_.fixed_values(i);
+    }
+    return scale_factors(p_, layout_, sigma).cwiseProduct(t);
+  }
+  Vector<S> from_scaled(const Vector<S>& theta, S sigma) const {
+    return theta.cwiseQuotient(scale_factors(p_, layout_, sigma));
+  }
+
+  void set_scale(S sigma) { clock_.sigma = sigma; }
+  S scale() const { return clock_.sigma; }
+
+  Vector<S> denominator(const Vector<S>& theta, int g) const {
+    return theta.segment(layout_.f_offset[g], p_.nf[g]);
+  }
+  // F_g without its integrators.
+  Vector<S> stable_part(const Vector<S>& theta, int g) const {
+    return theta.segment(layout_.f_offset[g], p_.nf[g] - layout_.rank[g]);
+  }
+  bool group_stable(const Vector<S>& theta, int g) const {
+    const Vector<S> f1 = stable_part(theta, g);
+    HurwitzTest<S> test(static_cast<int>(f1.size()));
+    return test.is_stable(f1);
+  }
+  bool stable(const Vector<S>& theta) const {
+    for (int g = 0; g < p_.num_groups(); ++g) {
+      if (!group_stable(theta, g)) return false;
+    }
+    return true;
+  }
+
+  // The prefilter denominator of group g: F_g with its integrators
+  // replaced by (p + integrator pole), in scaled time.
+  Vector<S> prefilter(const Vector<S>& theta, int g, S pole) const {
+    const Vector<S> f1 = stable_part(theta, g);
+    Vector<S> poly(f1.size() + 1);
+    poly(0) = 1;
+    poly.tail(f1.size()) = f1;
+    for (int i = 0; i < layout_.rank[g]; ++i) {
+      Vector<S> next = Vector<S>::Zero(poly.size() + 1);
+      next.head(poly.size()) = poly;
+      next.tail(poly.size()) += pole * poly;
+      poly = next;
+    }
+    return poly.tail(poly.size() - 1);
+  }
+
+  // p^i w_j / D, i = 0..n, with channel j's hold and delay.
+  void channel_derivatives(std::size_t j, const Vector<S>& d, S gain,
+                           Matrix<S>& out) const {
+    const RivChannel& c = p_.channels[j];
+    if (c.delay > 0) {
+      filter_delayed_derivatives<S>(d, gain, c.rule, clock_, w_.col(j).data(),
+                                    static_cast<S>(c.delay), out);
+    } else {
+      filter_derivatives<S>(d, gain, c.rule, clock_, w_.col(j).data(), out);
+    }
+  }
+
+  // x_g = sum_(j in g) B_j / F_g w_j (scaled time): `source` = w or, in
+  // closed loop, the reference (then the closed-loop x_hat and u_hat).
+  void simulate_group(const Vector<S>& theta, int g, Vector<S>& x) const {
+    x = Vector<S>::Zero(n_);
+    const Vector<S> f = denominator(theta, g);
+    Matrix<S> D;
+    for (std::size_t j = 0; j < p_.channels.size(); ++j) {
+      const RivChannel& c = p_.channels[j];
+      if (c.group != g || c.nb == 0) continue;
+      channel_derivatives(j, f, S(1), D);
+      for (int l = 0; l < c.nb; ++l) {
+        x += theta(layout_.b_offset[j] + l) * D.col(c.nb - 1 - l);
+      }
+    }
+  }
+
+  // Closed loop, u = C(p)(r - y), plant B/F: x_hat = B Nc / Acl r and
+  // u_hat = F Nc / Acl r with Acl = F Dc + B Nc (eqs. 2.48-2.49 with a
+  // continuous-time controller). Scaled time: C(p) = C(sigma p').
+  Status simulate_closed_loop(const Vector<S>& theta, Vector<S>& x,
+                              Vector<S>& u) const {
+    if (p_.discrete_controller != nullptr) {
+      return simulate_discrete_loop(theta, x, u);
+    }
+    const int n = p_.nf[0];
+    const RivChannel& c = p_.channels[0];
+    Vector<S> F(n + 1), B = Vector<S>::Zero(n + 1);
+    F(0) = 1;
+    F.tail(n) = theta.head(n);
+    for (int l = 0; l < c.nb; ++l) {
+      B(n + 1 - c.nb + l) = theta(layout_.b_offset[0] + l);
+    }
+    const Vector<S> nc = scaled_poly(p_.controller_num);
+    const Vector<S> dc = scaled_poly(p_.controller_den);
+    const Vector<S> acl = add(conv(F, dc), conv(B, pad(nc, dc.size())));
+    const Vector<S> bx = conv(B, nc), fu = conv(F, nc);
+    const S lead = acl(0);
+    if (!(std::abs(lead) > 0)) {
+      return numerical_failure("the closed loop is improper");
+    }
+    const int ncl = static_cast<int>(acl.size()) - 1;
+    const Vector<S> d = acl.tail(ncl) / lead;
+    HurwitzTest<S> test(ncl);
+    if (!test.is_stable(d)) {
+      return numerical_failure(
+          "the model in the loop with the controller is unstable");
+    }
+    Matrix<S> D;
+    filter_derivatives<S>(d, S(1) / lead, p_.channels[0].rule, clock_,
+                          r_.data(), D);
+    x = combine(D, bx);
+    u = combine(D, fu);
+    return Status::Ok();
+  }
+
+  // The regression of group g at the prefilter 1/D (gain `gain`): target
+  // (fixed terms moved to it), regressors and instruments of the free
+  // parameters of g. `instrument` empty: Z = Phi (least squares).
+  void regression(const Vector<S>& theta, int g, const Vector<S>& d, S gain,
+                  const Vector<S>& target_signal, const Vector<S>* instrument,
+                  const Vector<S>* instrument_u, Matrix<S>& Phi, Matrix<S>& Z,
+                  Vector<S>& target, std::vector<int>& index) const {
+    const int n = p_.nf[g];
+    Matrix<S> Y, X, W;
+    if (instrument != nullptr && !p_.closed_loop()) {
+      // Model-based interpolation of y between samples: the auxiliary
+      // model x_hat = sum B_j/F_g w_j is filtered exactly (each channel by
+      // its own hold, through B_j / (F_g D)), and only the residual
+      // y - x_hat is interpolated (by y's rule). Filtering y itself would
+      // interpolate the whole output linearly, an error of order
+      // (w h)^2 that biases lightly damped modes and models of relative
+      // degree 1 with ZOH inputs; here it vanishes where the model fits.
+      exact_model_derivatives(theta, g, d, gain, X);
+      const Vector<S> residual = target_signal - *instrument;
+      filter_derivatives<S>(d, gain, p_.y_rule, clock_, residual.data(), Y);
+      Y += X;
+    } else {
+      filter_derivatives<S>(d, gain, p_.y_rule, clock_, target_signal.data(),
+                            Y);
+      if (instrument != nullptr) {
+        filter_derivatives<S>(d, gain, p_.y_rule, clock_, instrument->data(),
+                              X);
+      }
+    }
+    index.clear();
+    std::vector<Vector<S>> phi_cols, z_cols;
+    target = Y.col(n);
+    for (int i = 1; i <= n; ++i) {
+      const int at = layout_.f_offset[g] + i - 1;
+      if (layout_.fixed[at]) {
+        target += theta(at) * Y.col(n - i);
+        continue;
+      }
+      index.push_back(at);
+      phi_cols.push_back(-Y.col(n - i));
+      z_cols.push_back(instrument != nullptr ? Vector<S>(-X.col(n - i))
+                                             : Vector<S>(-Y.col(n - i)));
+    }
+    for (std::size_t j = 0; j < p_.channels.size(); ++j) {
+      const RivChannel& c = p_.channels[j];
+      if (c.group != g || c.nb == 0) continue;
+      channel_derivatives(j, d, gain, W);
+      Matrix<S> U;
+      if (instrument_u != nullptr) {
+        filter_derivatives<S>(d, gain, c.rule, clock_, instrument_u->data(), U);
+      }
+      for (int l = 0; l < c.nb; ++l) {
+        const int at = layout_.b_offset[j] + l;
+        const int power = c.nb - 1 - l;
+        if (layout_.fixed[at]) {
+          target -= theta(at) * W.col(power);
+          continue;
+        }
+        index.push_back(at);
+        phi_cols.push_back(W.col(power));
+        z_cols.push_back(instrument_u != nullptr ? Vector<S>(U.col(power))
+                                                 : Vector<S>(W.col(power)));
+      }
+    }
+    Phi.resize(n_, static_cast<Eigen::Index>(index.size()));
+    Z.resize(n_, static_cast<Eigen::Index>(index.size()));
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      Phi.col(i) = phi_cols[i];
+      Z.col(i) = z_cols[i];
+    }
+  }
+
+  // p^i x_g / D, i = 0..n, computed exactly: each channel through
+  // gain B_j(p) / (F_g(p) D(p)) with its own hold.
+  void exact_model_derivatives(const Vector<S>& theta, int g,
+                               const Vector<S>& d, S gain, Matrix<S>& X) const {
+    const int n = p_.nf[g];
+    const Vector<S> f = denominator(theta, g);
+    // F_g D, monic, order 2n (ascending index = descending powers).
+    Vector<S> fd = Vector<S>::Zero(2 * n);
+    Vector<S> fa(n + 1), da(n + 1);
+    fa(0) = 1;
+    fa.tail(n) = f;
+    da(0) = 1;
+    da.tail(n) = d;
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; j <= n; ++j) {
+        if (i + j > 0) fd(i + j - 1) += fa(i) * da(j);
+      }
+    }
+    X = Matrix<S>::Zero(n_, n + 1);
+    Matrix<S> D;
+    for (std::size_t j = 0; j < p_.channels.size(); ++j) {
+      const RivChannel& c = p_.channels[j];
+      if (c.group != g || c.nb == 0) continue;
+      channel_derivatives(j, fd, gain, D);
+      for (int l = 0; l < c.nb; ++l) {
+        const S b = theta(layout_.b_offset[j] + l);
+        const int power = c.nb - 1 - l;
+        for (int i = 0; i <= n; ++i) X.col(i) += b * D.col(power + i);
+      }
+    }
+  }
+
+  // Least-squares y0 and c on r = y - sum x_g (scaled time), if asked.
+  void fit_free_terms(const Vector<S>& theta, const Vector<S>& residual,
+                      Vector<S>& x0, S& c, Vector<S>& y0) const {
+    int cols = p_.output_offset ? 1 : 0;
+    std::vector<Matrix<S>> bases;
+    if (p_.initial_state) {
+      for (int g = 0; g < p_.num_groups(); ++g) {
+        Matrix<S> H;
+        free_responses<S>(denominator(theta, g), clock_, H);
+        cols += static_cast<int>(H.cols());
+        bases.push_back(H);
+      }
+    }
+    y0 = Vector<S>::Zero(n_);
+    c = 0;
+    x0.resize(0);
+    if (cols == 0) return;
+    Matrix<S> A(n_, cols);
+    int at = 0;
+    for (const Matrix<S>& H : bases) {
+      A.middleCols(at, H.cols()) = H;
+      at += static_cast<int>(H.cols());
+    }
+    if (p_.output_offset) A.col(at) = Vector<S>::Ones(n_);
+    Vector<S> norms = A.colwise().norm().transpose();
+    for (int i = 0; i < cols; ++i) norms(i) = norms(i) > 0 ? norms(i) : S(1);
+    const Matrix<S> As = A * norms.cwiseInverse().asDiagonal();
+    const Eigen::CompleteOrthogonalDecomposition<Matrix<S>> cod(As);
+    const Vector<S> coef = cod.solve(residual).cwiseQuotient(norms);
+    y0 = A * coef;
+    x0 = coef.head(p_.initial_state ? at : 0);
+    if (p_.output_offset) {
+      c = coef(at);
+      y0 -= Vector<S>::Constant(n_, c);
+    }
+  }
+
+  const Vector<S>& y() const { return y_; }
+
+ private:
+  // x_hat and u_hat of eqs. (2.45), (2.49) with the discrete controller:
+  // offline_iv.hpp's closed-loop auxiliary model, in the original time.
+  Status simulate_discrete_loop(const Vector<S>& theta, Vector<S>& x,
+                                Vector<S>& u) const {
+    ModelOrders orders =
+        siso_orders(p_.nf[0], p_.channels[0].nb, p_.channels[0].nk);
+    const Vector<S> original =
+        theta.cwiseQuotient(scale_factors(p_, layout_, clock_.sigma));
+    RecordView<S> record;
+    record.y = data_.y;
+    record.u = data_.w;
+    record.num_samples = n_;
+    record.num_inputs = 1;
+    record.ts = data_.ts;
+    record.instants = data_.instants;
+    offline_iv_detail::Loop<S> loop;
+    loop.r1 = p_.r1;
+    loop.r2 = p_.r2;
+    loop.controller = p_.discrete_controller;
+    Vector<S> uhat;
+    const Status status = offline_iv_detail::simulate_auxiliary(
+        orders, InterSample::kZoh, original, record, loop, x, uhat);
+    if (!status.ok()) return status;
+    // The regression's channels are delayed by nk; so is u_hat.
+    const int nk = p_.channels[0].nk;
+    u = Vector<S>::Zero(n_);
+    for (Eigen::Index k = nk; k < n_; ++k) u(k) = uhat(k - nk);
+    return Status::Ok();
+  }
+
+  Vector<S> scaled_poly(const Vector<S>& q) const {
+    // q(sigma p'): coefficient of p'^k scaled by sigma^k, descending.
+    Vector<S> out = q;
+    const int deg = static_cast<int>(q.size()) - 1;
+    for (int i = 0; i <= deg; ++i) {
+      out(i) = q(i) * std::pow(clock_.sigma, S(deg - i));
+    }
+    return out;
+  }
+  static Vector<S> conv(const Vector<S>& a, const Vector<S>& b) {
+    Vector<S> c = Vector<S>::Zero(a.size() + b.size() - 1);
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+      for (Eigen::Index j = 0; j < b.size(); ++j) c(i + j) += a(i) * b(j);
+    }
+    return c;
+  }
+  static Vector<S> pad(const Vector<S>& a, Eigen::Index size) {
+    Vector<S> out = Vector<S>::Zero(std::max(size, a.size()));
+    out.tail(a.size()) = a;
+    return out;
+  }
+  static Vector<S> add(const Vector<S>& a, const Vector<S>& b) {
+    const Eigen::Index size = std::max(a.size(), b.size());
+    return pad(a, size) + pad(b, size);
+  }
+  // sum_k num_k p^k r / Acl for num in descending powers (deg <= ncl).
+  static Vector<S> combine(const Matrix<S>& D, const Vector<S>& num) {
+    Vector<S> out = Vector<S>::Zero(D.rows());
+    const int deg = static_cast<int>(num.size()) - 1;
+    for (int i = 0; i <= deg; ++i) {
+      const int power = deg - i;
+      if (power < D.cols() && num(i) != 0) out += num(i) * D.col(power);
+    }
+    return out;
+  }
+
+  const RivProblem<S>& p_;
+  Layout<S> layout_;
+  RivData<S> data_;
+  Eigen::Index n_ = 0;
+  Vector<S> y_, r_;
+  Matrix<S> w_;
+  Clock<S> clock_;
+};
+
+// Z^T Phi theta = Z^T Y with the columns of Phi and Z equilibrated by the
+// norms of Phi's: solve_iv of offline_iv.hpp on the scaled problem, mapped
+// back. Also the condition number of Q^T Phi.
+template <typename S>
+Status solve_equilibrated(const Matrix<S>& Z, const Matrix<S>& Phi,
+                          const Vector<S>& target, const char* instruments,
+                          offline_iv_detail::IvSolution<S>& solution,
+                          S& condition) {
+  if (!Phi.allFinite() || !Z.allFinite() || !target.allFinite()) {
+    return numerical_failure(
+        "the filtered signals are not finite (the model's time scale is far "
+        "from the data's)");
+  }
+  Vector<S> norms = Phi.colwise().norm().transpose();
+  for (Eigen::Index i = 0; i < norms.size(); ++i) {
+    if (!(norms(i) > 0)) {
+      return numerical_failure(
+          "a regressor is identically zero: the input is not persistently "
+          "exciting for this model structure");
+    }
+  }
+  const Vector<S> inv = norms.cwiseInverse();
+  Vector<S> z_norms = Z.colwise().norm().transpose();
+  for (Eigen::Index i = 0; i < z_norms.size(); ++i) {
+    if (!(z_norms(i) > 0)) z_norms(i) = 1;
+  }
+  const Matrix<S> phi_s = Phi * inv.asDiagonal();
+  const Matrix<S> z_s = Z * z_norms.cwiseInverse().asDiagonal();
+  const Status status =
+      offline_iv_detail::solve_iv(z_s, phi_s, target, instruments, solution);
+  if (!status.ok()) return status;
+  solution.theta = solution.theta.cwiseProduct(inv);
+  const Vector<S> zi = z_norms.cwiseInverse();
+  solution.inverse_gram =
+      zi.asDiagonal() * solution.inverse_gram * zi.asDiagonal();
+  solution.sandwich = inv.asDiagonal() * solution.sandwich * inv.asDiagonal();
+  const Matrix<S> m = z_s.transpose() * phi_s;
+  const Eigen::JacobiSVD<Matrix<S>> svd(m);
+  const auto& sv = svd.singularValues();
+  condition = sv(sv.size() - 1) > 0 ? sv(0) / sv(sv.size() - 1)
+                                    : std::numeric_limits<S>::infinity();
+  return Status::Ok();
+}
+
+// One estimation run in a fixed time scale; theta in scaled time.
+template <typename S>
+struct Run {
+  Vector<S> theta;
+  Matrix<S> covariance;  // scaled time
+  Vector<S> x0;
+  S offset = 0;
+  Vector<S> simulated, free_response;
+  S cost = std::numeric_limits<S>::infinity();  // simulation error variance
+  int iterations = 0;
+  bool converged = false;
+  bool stable = false;
+  bool clipped = false;  // the last iterate had to be stabilised
+  bool determined = true;
+  S condition = 0;
+  std::string reason;
+};
+
+template <typename S>
+class Estimator {
+ public:
+  Estimator(Engine<S>& engine, const RivProblem<S>& problem,
+            const RivSettings<S>& settings)
+      : e_(engine), p_(problem), s_(settings) {
+    pole_ = settings.integrator_pole;
+  }
+
+  // sum_g x_g and the free terms at theta (scaled), and the cost.
+  void evaluate(Run<S>& run) const {
+    const int groups = p_.num_groups();
+    xs_.assign(groups, Vector<S>());
+    for (int g = 0; g < groups; ++g) e_.simulate_group(run.theta, g, xs_[g]);
+    finish(run);
+  }
+
+  // y0, c, the simulated output and the loss at the current x_g.
+  void finish(Run<S>& run) const {
+    Vector<S> sum = Vector<S>::Zero(e_.samples());
+    for (const Vector<S>& x : xs_) sum += x;
+    e_.fit_free_terms(run.theta, e_.y() - sum, run.x0, run.offset,
+                      run.free_response);
+    run.simulated =
+        sum + run.free_response + Vector<S>::Constant(e_.samples(), run.offset);
+    const Vector<S> r = e_.y() - run.simulated;
+    const S dof = static_cast<S>(
+        std::max<Eigen::Index>(e_.samples() - e_.free_parameters(), 1));
+    run.cost = r.allFinite() ? r.squaredNorm() / dof
+                             : std::numeric_limits<S>::infinity();
+    if (!e_.stable(run.theta)) run.cost = std::numeric_limits<S>::infinity();
+  }
+
+  // The prefilter pole replacing integrators, scaled time.
+  S integrator_pole() const {
+    const S pole = pole_ > 0 ? pole_ : S(10) / e_.clock().duration();
+    return pole * e_.scale();
+  }
+
+  // One group update with prefilter 1/d (gain) and instruments from x_g
+  // (or least squares). Returns the raw solution in `theta` (group g's
+  // free entries replaced) and the group's covariance block.
+  Status update_group(Run<S>& run, int g, const Vector<S>& d, S gain, bool iv,
+                      bool refined, Matrix<S>& cov_block,
+                      std::vector<int>& index, S& condition) const {
+    Vector<S> others = Vector<S>::Zero(e_.samples());
+    for (int h = 0; h < p_.num_groups(); ++h) {
+      if (h != g) others += xs_[h];
+    }
+    const Vector<S> target_signal =
+        e_.y() - others - run.free_response -
+        Vector<S>::Constant(e_.samples(), run.offset);
+    Matrix<S> Phi, Z;
+    Vector<S> target, xcl, ucl;
+    const Vector<S>* instrument = nullptr;
+    const Vector<S>* instrument_u = nullptr;
+    if (iv) {
+      if (p_.closed_loop()) {
+        Status status = e_.simulate_closed_loop(run.theta, xcl, ucl);
+        if (!status.ok()) return status;
+        instrument = &xcl;
+        instrument_u = &ucl;
+      } else {
+        instrument = &xs_[g];
+      }
+    }
+    e_.regression(run.theta, g, d, gain, target_signal, instrument,
+                  instrument_u, Phi, Z, target, index);
+    if (index.empty()) return Status::Ok();
+    offline_iv_detail::IvSolution<S> solution;
+    Status status = solve_equilibrated(
+        Z, Phi, target, iv ? "instrument" : "regressor", solution, condition);
+    if (!status.ok()) return status;
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      run.theta(index[i]) = solution.theta(static_cast<Eigen::Index>(i));
+    }
+    // Refined IV: (sum zeta_f zeta_f^T)^-1, scaled by sigma^2 later
+    // (eq. 2.13); one-step methods: the IV/LS formula for white equation
+    // error (nominal, the SVF-filtered equation error is coloured).
+    if (refined) {
+      cov_block = gain * gain * solution.inverse_gram;
+    } else {
+      cov_block = solution.equation_error_variance * solution.sandwich;
+    }
+    return Status::Ok();
+  }
+
+  // Keeps group g stable: step halving from `previous` toward the new
+  // value, reflection as a last resort. Returns true if it had to act.
+  bool stabilise(Run<S>& run, const Vector<S>& previous, int g) const {
+    if (e_.group_stable(run.theta, g)) return false;
+    const int at = e_.layout().f_offset[g];
+    const int n = p_.nf[g];
+    const Vector<S> target = run.theta;
+    if (e_.group_stable(previous, g)) {
+      S alpha = 0.5;
+      for (int k = 0; k < 12; ++k, alpha /= 2) {
+        run.theta = previous + alpha * (target - previous);
+        if (e_.group_stable(run.theta, g)) return true;
+      }
+    }
+    run.theta = target;
+    const int m = n - e_.layout().rank[g];
+    run.theta.segment(at, m) =
+        reflect_unstable_roots<S>(Vector<S>(target.segment(at, m)));
+    return true;
+  }
+
+  // The SVF start at cut-off 1 (scaled time): LSSVF (eq. 1.32), then with
+  // `iv` the IVSVF step (eqs. 2.4-2.7), group by group (two sweeps when
+  // there are several groups).
+  Status svf_start(Run<S>& run, bool iv) const {
+    const int groups = p_.num_groups();
+    // Several groups, or free terms (offset, initial state) that the
+    // first sweep cannot see: more sweeps, the free terms refitted between.
+    const bool free_terms = p_.output_offset || p_.initial_state;
+    const int sweeps = groups > 1 || free_terms ? (free_terms ? 3 : 2) : 1;
+    evaluate_partial(run);
+    Matrix<S> cov;
+    std::vector<int> index;
+    run.covariance = Matrix<S>::Zero(run.theta.size(), run.theta.size());
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      if (sweep > 0 && free_terms) {
+        Run<S> fitted = run;
+        for (int g = 0; g < groups; ++g) {
+          stabilise(fitted, fitted.theta, g);
+        }
+        evaluate(fitted);
+        run.offset = fitted.offset;
+        run.free_response = fitted.free_response;
+        for (int g = 0; g < groups; ++g) {
+          e_.simulate_group(run.theta, g, xs_[g]);
+        }
+      }
+      for (int g = 0; g < groups; ++g) {
+        const int n = p_.nf[g];
+        const Vector<S> d = svf_denominator<S>(n, S(1));
+        Status status = update_group(run, g, d, S(1), false, false, cov, index,
+                                     run.condition);
+        if (!status.ok()) return status;
+        store(run, cov, index);
+        if (iv) {
+          Vector<S> previous = run.theta;
+          Run<S> driven = run;
+          stabilise(driven, previous, g);
+          if (!e_.group_stable(driven.theta, g)) {
+            return numerical_failure(
+                "the LSSVF estimate cannot be "
+                "stabilised");
+          }
+          run.theta = driven.theta;
+          e_.simulate_group(run.theta, g, xs_[g]);
+          status = update_group(run, g, d, S(1), true, false, cov, index,
+                                run.condition);
+          if (!status.ok()) return status;
+          store(run, cov, index);
+        }
+        e_.simulate_group(run.theta, g, xs_[g]);
+      }
+    }
+    evaluate(run);
+    run.iterations = 1;
+    run.converged = true;
+    run.stable = e_.stable(run.theta);
+    return Status::Ok();
+  }
+
+  // SRIVC / CLSRIVC iterations from run.theta (stable, scaled time).
+  // The SRIVC iteration as a damped fixed-point method: the refined IV
+  // step theta_IV (eqs. 2.9-2.13) is taken in full when it does not
+  // increase the simulation loss, else halved (up to 5 times) until it
+  // does (if none does, the full step is taken). Stops on a fixed point
+  // (relative change of the full step below the tolerance) or on a
+  // stationary loss (relative decrease of a damped step below the
+  // tolerance); on measured records, where the model is an approximation,
+  // the undamped iteration often cycles.
+  Status refine(Run<S>& run) const {
+    const int groups = p_.num_groups();
+    evaluate(run);
+    Matrix<S> cov;
+    std::vector<int> index;
+    run.covariance = Matrix<S>::Zero(run.theta.size(), run.theta.size());
+    run.converged = false;
+    run.clipped = false;
+    run.determined = true;
+    std::string how;
+    // The simulation losses of the last iterations (a loss that stays put
+    // while the parameters move: flat directions).
+    std::vector<S> losses;
+    constexpr int kLossWindow = 5;
+    for (int it = 1; it <= s_.max_iterations; ++it) {
+      const Run<S> previous = run;
+      bool clipped = false;
+      for (int g = 0; g < groups; ++g) {
+        const Vector<S> d = e_.prefilter(run.theta, g, integrator_pole());
+        Status status = update_group(run, g, d, S(1), true, true, cov, index,
+                                     run.condition);
+        if (!status.ok()) return status;
+        clipped = stabilise(run, previous.theta, g) || clipped;
+        store(run, cov, index);
+        e_.simulate_group(run.theta, g, xs_[g]);
+      }
+      finish(run);
+      run.iterations = it;
+      run.clipped = clipped;
+      const Vector<S> step = run.theta - previous.theta;
+      const S change = step.norm() / std::max(run.theta.norm(), S(1e-300));
+      bool stalled = false;
+      bool damped = false;
+      if (!(run.cost <= previous.cost)) {
+        damped = true;
+        const Vector<S> full = run.theta;
+        bool accepted = false;
+        S alpha = 0.5;
+        for (int k = 0; k < 5 && !accepted; ++k, alpha /= 2) {
+          run.theta = previous.theta + alpha * step;
+          if (!e_.stable(run.theta)) continue;
+          evaluate(run);
+          accepted = run.cost < previous.cost;
+        }
+        if (!accepted) {
+          // No decrease along the step: the plain SRIVC step is taken (the
+          // IV fixed point need not minimise the loss, e.g. with coloured
+          // noise).
+          run.theta = full;
+          evaluate(run);
+          stalled = true;
+        }
+      }
+      if (change < s_.tolerance && !clipped) {
+        run.converged = true;
+        how = "fixed point";
+        break;
+      }
+      // Statistically converged: no parameter moves by more than
+      // min(1 %, 1e4 Tol) of its standard error sigma_i = (cost (sum
+      // zeta_f zeta_f^T)^-1)_ii^1/2 (flat directions of over-parameterised
+      // structures drift slowly below the relative tolerance otherwise).
+      S worst = std::numeric_limits<S>::infinity();
+      if (!clipped && std::isfinite(run.cost)) {
+        worst = 0;
+        for (Eigen::Index i = 0; i < step.size(); ++i) {
+          const S variance = run.cost * run.covariance(i, i);
+          if (variance > 0) {
+            worst = std::max(worst, std::abs(step(i)) / std::sqrt(variance));
+          }
+        }
+      }
+      if (!clipped && !stalled && std::isfinite(run.cost)) {
+        if (worst < std::min(S(0.01), S(1e4) * s_.tolerance)) {
+          run.converged = true;
+          how = "changes below 1 % of the standard errors";
+          break;
+        }
+      }
+      // Converged on the simulation error: over the last kLossWindow
+      // iterations the loss changed by less than max(10 Tol, 1e-5) of
+      // itself (relative spread). The parameters may still move in
+      // directions that do not change the simulated output; the result
+      // says so (determined = false) when they move by more than their
+      // standard errors.
+      if (!clipped && std::isfinite(run.cost)) {
+        losses.push_back(run.cost);
+        if (static_cast<int>(losses.size()) >= kLossWindow) {
+          const auto first = losses.end() - kLossWindow;
+          const S hi = *std::max_element(first, losses.end());
+          const S lo = *std::min_element(first, losses.end());
+          if (hi - lo <= std::max(S(10) * s_.tolerance, S(1e-5)) * lo) {
+            run.converged = true;
+            run.determined = !(worst > S(1));
+            how = "simulation loss stationary over " +
+                  std::to_string(kLossWindow) + " iterations";
+            if (!run.determined) {
+              how += "; parameters still move by up to " +
+                     std::to_string(static_cast<int>(std::ceil(worst))) +
+                     " standard error(s) per iteration in directions the "
+                     "data do not determine (over-parameterised structure?)";
+            }
+            break;
+          }
+        }
+      } else {
+        losses.clear();
+      }
+      // A plateau of the loss reached by damped steps: the IV fixed point
+      // is not approached monotonically (the model is an approximation).
+      if (damped && !stalled && !clipped &&
+          previous.cost - run.cost <= s_.tolerance * previous.cost) {
+        run.converged = true;
+        how = "stationary simulation loss";
+        break;
+      }
+    }
+    evaluate(run);
+    run.stable = e_.stable(run.theta);
+    if (run.converged) {
+      run.reason = "converged in " + std::to_string(run.iterations) +
+                   " iteration(s) (" + how + ")";
+    } else if (run.clipped) {
+      run.reason =
+          "the unconstrained estimate is unstable: the returned model is the "
+          "last iterate pulled back into the stable region";
+    } else {
+      run.reason = "no convergence within " +
+                   std::to_string(s_.max_iterations) + " iteration(s)";
+    }
+    // sigma^2 (sum zeta_f zeta_f^T)^-1, eq. (2.13) covariance.
+    run.covariance *= run.cost;
+    return Status::Ok();
+  }
+
+ private:
+  void store(Run<S>& run, const Matrix<S>& cov,
+             const std::vector<int>& index) const {
+    for (std::size_t a = 0; a < index.size(); ++a) {
+      for (std::size_t b = 0; b < index.size(); ++b) {
+        run.covariance(index[a], index[b]) = cov(a, b);
+      }
+    }
+  }
+  // x_g at theta without the free terms (they start at zero).
+  void evaluate_partial(Run<S>& run) const {
+    xs_.assign(p_.num_groups(), Vector<S>::Zero(e_.samples()));
+    run.free_response = Vector<S>::Zero(e_.samples());
+    run.offset = 0;
+  }
+
+  Engine<S>& e_;
+  const RivProblem<S>& p_;
+  const RivSettings<S>& s_;
+  S pole_ = 0;
+  mutable std::vector<Vector<S>> xs_;
+};
+
+// |F(0)|^(1/n) of the part without integrators: the scale of the model.
+template <typename S>
+S characteristic_frequency(const Engine<S>& engine,
+                           const RivProblem<S>& problem,
+                           const Vector<S>& theta_scaled) {
+  S log_sum = 0;
+  int count = 0;
+  for (int g = 0; g < problem.num_groups(); ++g) {
+    const Vector<S> f1 = engine.stable_part(theta_scaled, g);
+    const int m = static_cast<int>(f1.size());
+    if (m == 0 || !(std::abs(f1(m - 1)) > 0)) continue;
+    log_sum += std::log(std::abs(f1(m - 1)));
+    count += m;
+  }
+  if (count == 0) return engine.scale();
+  return engine.scale() * std::exp(log_sum / static_cast<S>(count));
+}
+
+}  // namespace riv_detail
+
+// The engine: see the header comment. Returns kNotConverged (result filled,
+// converged = false) when SRIVC did not converge, numerical_failure when no
+// start gave an estimate.
+template <typename S>
+Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
+                  const RivData<S>& data, RivResult<S>* result) {
+  using namespace riv_detail;
+  Status status = validate(problem, settings, data, result);
+  if (!status.ok()) return status;
+  Engine<S> engine(problem, data);
+  Estimator<S> estimator(engine, problem, settings);
+  const Layout<S>& layout = engine.layout();
+  const int np = layout.np;
+  const S T = engine.clock().duration();
+  const S ts = engine.clock().median_interval();
+
+  std::vector<S> cutoffs = settings.cutoffs;
+  if (cutoffs.empty()) {
+    const S lo = std::log(S(5) / T), hi = std::log(S(0.5) * S(M_PI) / ts);
+    const int count = 12;
+    for (int i = 0; i < count; ++i) {
+      cutoffs.push_back(std::exp(lo + (hi - lo) * i / (count - 1)));
+    }
+  }
+
+  struct Candidate {
+    Run<S> run;
+    S sigma;
+    S cutoff;
+  };
+  std::vector<Candidate> starts;
+  std::string last_failure;
+  if (settings.theta_init.size() == np) {
+    Candidate c;
+    const S sigma0 = settings.time_scale > 0 ? settings.time_scale : S(1);
+    engine.set_scale(sigma0);
+    c.run.theta = engine.to_scaled(settings.theta_init, sigma0);
+    if (!engine.stable(c.run.theta)) {
+      return bad_input("the initial estimate must have stable denominators");
+    }
+    c.sigma = sigma0;
+    c.cutoff = 0;
+    if (settings.time_scale <= 0) {
+      c.sigma = characteristic_frequency(engine, problem, c.run.theta);
+      c.run.theta = engine.to_scaled(settings.theta_init, c.sigma);
+    }
+    starts.push_back(c);
+  } else {
+    for (S lambda : cutoffs) {
+      Candidate c;
+      engine.set_scale(lambda);
+      c.run.theta = engine.to_scaled(Vector<S>::Zero(np), lambda);
+      c.sigma = lambda;
+      c.cutoff = lambda;
+      status = estimator.svf_start(c.run, settings.method != RivMethod::kLssvf);
+      if (!status.ok()) {
+        last_failure = status.message();
+        continue;
+      }
+      starts.push_back(c);
+    }
+    if (starts.empty()) {
+      return numerical_failure(
+          "no SVF cut-off gave an estimate (last: " + last_failure + ")");
+    }
+    std::stable_sort(starts.begin(), starts.end(),
+                     [](const Candidate& a, const Candidate& b) {
+                       return a.run.cost < b.run.cost;
+                     });
+  }
+
+  Run<S> best;
+  S best_sigma = 1;
+  S best_cutoff = 0;
+  int tried = 0;
+  bool have = false;
+  if (settings.method != RivMethod::kSrivc) {
+    best = starts.front().run;
+    best_sigma = starts.front().sigma;
+    best_cutoff = starts.front().cutoff;
+    best.reason = "one-step estimate";
+    have = true;
+  } else {
+    const int limit = std::max(1, settings.max_starts);
+    int attempts = 0;
+    for (std::size_t i = 0;
+         i < starts.size() && tried < limit && attempts < 2 * limit + 2; ++i) {
+      Candidate& c = starts[i];
+      // A start must drive a stable prefilter.
+      engine.set_scale(c.sigma);
+      Run<S> run = c.run;
+      if (!engine.stable(run.theta)) {
+        // An unstable start drives no prefilter: its roots are reflected.
+        for (int g = 0; g < problem.num_groups(); ++g) {
+          estimator.stabilise(run, run.theta, g);
+        }
+        if (!engine.stable(run.theta)) continue;
+      }
+      const Vector<S> original = engine.from_scaled(run.theta, c.sigma);
+      S sigma = settings.time_scale > 0
+                    ? settings.time_scale
+                    : characteristic_frequency(engine, problem, run.theta);
+      if (!(sigma > 0) || !std::isfinite(sigma)) sigma = c.sigma;
+      engine.set_scale(sigma);
+      run.theta = engine.to_scaled(original, sigma);
+      ++attempts;
+      status = estimator.refine(run);
+      if (!status.ok()) {
+        last_failure = status.message();
+        continue;
+      }
+      ++tried;
+      const bool good = run.converged && run.stable;
+      const bool best_good = have && best.converged && best.stable;
+      if (!have || (good && !best_good) ||
+          (good == best_good && run.cost < best.cost)) {
+        best = run;
+        best_sigma = sigma;
+        best_cutoff = c.cutoff;
+        have = true;
+      }
+      // The first stable, converged run from the best-ranked starts ends
+      // the search; the next starts are tried only after a failure.
+      if (good) break;
+    }
+    if (!have) {
+      return numerical_failure(
+          "SRIVC failed from every start (last: " + last_failure + ")");
+    }
+  }
+
+  // Map back to the original time.
+  engine.set_scale(best_sigma);
+  const Vector<S> d = scale_factors(problem, layout, best_sigma);
+  result->theta = best.theta.cwiseQuotient(d);
+  const Vector<S> dinv = d.cwiseInverse();
+  result->covariance = dinv.asDiagonal() * best.covariance * dinv.asDiagonal();
+  if (layout.offset_index >= 0) {
+    // c from the free-term least squares; its variance sigma^2 / N is
+    // that of a mean (nominal: it ignores the correlation with theta).
+    result->theta(layout.offset_index) = best.offset;
+    result->covariance(layout.offset_index, layout.offset_index) =
+        best.cost / static_cast<S>(engine.samples());
+  }
+  result->noise_variance = best.cost;
+  result->iterations = best.iterations;
+  result->converged = best.converged;
+  result->determined = best.determined;
+  result->stable = best.stable;
+  result->reason = best.reason;
+  result->cutoff = best_cutoff;
+  result->time_scale = best_sigma;
+  result->starts_tried = tried;
+  result->condition = best.condition;
+  result->offset = best.offset;
+  result->simulated = best.simulated;
+  result->free_response = best.free_response;
+  result->x0 = best.x0;
+  int at = 0;
+  for (int g = 0; g < problem.num_groups() && result->x0.size() > 0; ++g) {
+    for (int i = 0; i < problem.nf[g]; ++i) {
+      result->x0(at + i) *= std::pow(best_sigma, S(i));
+    }
+    at += problem.nf[g];
+  }
+  if (!result->stable) {
+    result->reason += "; the model is unstable";
+  }
+  if (settings.method == RivMethod::kSrivc && !result->converged) {
+    return Status(ErrorCode::kNotConverged, result->reason);
+  }
+  return Status::Ok();
+}
+
+namespace riv_detail {
+
+// The SISO/MISO common-denominator problem of offline_iv.hpp's interface
+// (ModelOrders, one SVF cut-off for the start) run by the engine.
+template <typename S>
+Status run_orders(const ModelOrders& orders, const SvfSettings<S>& init_svf,
+                  const SrivcSettings<S>& settings, const RecordView<S>& record,
+                  const offline_iv_detail::Loop<S>& loop,
+                  OfflineEstimate<S>* estimate) {
+  Status status = offline_iv_detail::validate_problem(orders, init_svf, record,
+                                                      loop, estimate);
+  if (!status.ok()) return status;
+  status = offline_iv_detail::validate_srivc_settings(orders, settings);
+  if (!status.ok()) return status;
+  RivProblem<S> problem;
+  problem.nf = {orders.na};
+  for (int j = 0; j < orders.num_inputs(); ++j) {
+    RivChannel c;
+    c.nb = orders.nb[j];
+    c.nk = orders.nk[j];
+    c.rule = init_svf.u_intersample;
+    problem.channels.push_back(c);
+  }
+  problem.y_rule = init_svf.y_intersample;
+  problem.discrete_controller = loop.controller;
+  problem.r1 = loop.r1;
+  problem.r2 = loop.r2;
+  RivSettings<S> riv;
+  riv.tolerance = settings.tolerance;
+  riv.max_iterations = settings.max_iterations;
+  riv.theta_init = settings.theta_init;
+  riv.cutoffs = {init_svf.lambda_svf};
+  riv.max_starts = 1;
+  RivData<S> data;
+  data.y = record.y;
+  data.w = record.u;
+  data.num_samples = record.num_samples;
+  data.ts = record.ts;
+  data.instants = record.instants;
+  RivResult<S> result;
+  status = refined_iv(problem, riv, data, &result);
+  if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
+    return status;
+  }
+  estimate->theta = result.theta;
+  estimate->covariance = result.covariance;
+  estimate->noise_variance = result.noise_variance;
+  estimate->iterations = result.iterations;
+  estimate->converged = result.converged;
+  return status;
+}
+
+}  // namespace riv_detail
+
+// SRIVC, eqs. (2.8)-(2.13), for the common-denominator model of
+// ModelOrders: the engine started from settings.theta_init or IVSVF with
+// init_svf. Returns kNotConverged (estimate filled with the last iterate,
+// converged = false) after max_iterations.
+template <typename S>
+Status srivc(const ModelOrders& orders, const SvfSettings<S>& init_svf,
+             const SrivcSettings<S>& settings, const RecordView<S>& record,
+             OfflineEstimate<S>* estimate) {
+  return riv_detail::run_orders(orders, init_svf, settings, record,
+                                offline_iv_detail::Loop<S>(), estimate);
+}
+
+// CLSRIVC, eqs. (2.47)-(2.50), for u = r1 + C(q^-1)(r2 - y) (single ZOH
+// input), started from settings.theta_init or CLIVSVF (eq. 2.44).
+template <typename S>
+Status clsrivc(const ModelOrders& orders, const SvfSettings<S>& init_svf,
+               const SrivcSettings<S>& settings, const RecordView<S>& record,
+               const S* r1, const S* r2,
+               const DiscreteTransferFunction<S>& controller,
+               OfflineEstimate<S>* estimate) {
+  offline_iv_detail::Loop<S> loop;
+  loop.r1 = r1;
+  loop.r2 = r2;
+  loop.controller = &controller;
+  return riv_detail::run_orders(orders, init_svf, settings, record, loop,
+                                estimate);
+}
+
+}  // namespace ctid

@@ -1,0 +1,834 @@
+// Refined IV for the hybrid Box-Jenkins model (RIVC of Young and Garnier)
+//
+//   y(t_k) = B(p) / F(p) u(t_k - tau) + xi(t_k),
+//   xi(t_k) = C(q^-1) / D(q^-1) e(t_k),   e white,
+//
+// a continuous-time plant (thesis sec. 2.1.2, eqs. 2.8-2.13 for its
+// output-error special case) with a discrete-time ARMA noise model at the
+// sampling interval Ts (CONTSID's naming: C the noise numerator, D its
+// denominator; rivc's nn = [nb nc nd nf nk]).
+//
+// RIVC iteration (the hybrid refined IV; thesis eq. 2.9 with the optimal
+// prefilter of the Box-Jenkins case): from the current plant estimate,
+//   1. the auxiliary model x_hat = B/F u and the noise estimate
+//      xi_hat = y - x_hat;
+//   2. an ARMA model D xi_hat = C e of the noise estimate (arma_estimate:
+//      Hannan-Rissanen, then Gauss-Newton prediction-error steps);
+//   3. the prefilter: 1/F(p) in continuous time (exact ZOH/FOH filters of
+//      refined_iv.hpp, App. A.1), then D(q^-1)/C(q^-1) on the sampled
+//      filtered signals;
+//   4. the IV solve Z^T Phi theta = Z^T p^n y_f (eqs. 2.10-2.12) with the
+//      instruments from x_hat filtered the same way.
+// With C = D = 1 this is SRIVC. The covariance is sigma_e^2 (sum zeta_f
+// zeta_f^T)^-1 (eq. 2.13 with the innovation variance of the ARMA model),
+// which is the asymptotic covariance when the noise model is right.
+//
+// Closed loop with a known continuous-time controller u = Nc/Dc (r - y)
+// (CLRIVC): the instruments come from the closed loop driven by r,
+// x_hat = B Nc / Acl r and u_hat = F Nc / Acl r with Acl = F Dc + B Nc
+// (eqs. 2.48-2.49), the noise estimate is still y - B/F u.
+//
+// Two-stage closed loop (CL2SRIVC): SRIVC of the input's response to the
+// reference, u = S(p) r, gives the noise-free input u_hat = S r; SRIVC of
+// y on u_hat then gives the plant (the input noise, correlated with the
+// output noise through the loop, is removed by the first stage).
+//
+// Time scaling as refined_iv.hpp: the iterations run in t' = sigma t with
+// sigma the plant's characteristic frequency |F(0)|^(1/n).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "ctid/offline/refined_iv.hpp"
+
+namespace ctid {
+
+template <typename S>
+struct ArmaSettings {
+  int max_iterations = 50;  // Gauss-Newton steps after Hannan-Rissanen
+  S tolerance = S(1e-8);    // relative decrease of the loss
+  int long_ar_order = 0;    // Hannan-Rissanen's long AR; 0: automatic
+  // A warm start [d1 .. d_nd, c1 .. c_nc] (e.g. the previous RIVC
+  // iteration's model) in place of Hannan-Rissanen; empty: none.
+  Vector<S> start;
+};
+
+template <typename S>
+struct ArmaResult {
+  Vector<S> c;                // [1 c1 .. c_nc], q^-1
+  Vector<S> d;                // [1 d1 .. d_nd], q^-1
+  Matrix<S> covariance;       // of [d1 .. d_nd, c1 .. c_nc]
+  S innovation_variance = 0;  // mean of e^2
+  int iterations = 0;
+  bool converged = false;
+};
+
+namespace bj_detail {
+
+// y = b(q^-1) / a(q^-1) x, a(0) = 1, at rest (direct form II transposed).
+template <typename S>
+void filter_dt(const Vector<S>& b, const Vector<S>& a, const S* x,
+               Eigen::Index n, S* y) {
+  const Eigen::Index m = std::max(b.size(), a.size());
+  std::vector<S> z(static_cast<std::size_t>(m), S(0));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const S out = (b.size() > 0 ? b(0) : S(0)) * x[k] + z[0];
+    for (Eigen::Index i = 1; i < m; ++i) {
+      const S bi = i < b.size() ? b(i) : S(0);
+      const S ai = i < a.size() ? a(i) : S(0);
+      z[i - 1] = bi * x[k] - ai * out + (i < m - 1 ? z[i] : S(0));
+    }
+    y[k] = out;
+  }
+}
+
+template <typename S>
+Vector<S> filter_dt(const Vector<S>& b, const Vector<S>& a,
+                    const Vector<S>& x) {
+  Vector<S> y(x.size());
+  filter_dt(b, a, x.data(), x.size(), y.data());
+  return y;
+}
+
+// Monic polynomial [1 p1 .. pn] from its roots (conjugate pairs).
+template <typename S>
+Vector<S> from_roots(const std::vector<std::complex<S>>& roots) {
+  std::vector<std::complex<S>> p(1, std::complex<S>(1));
+  for (const auto& r : roots) {
+    p.push_back(0);
+    for (std::size_t i = p.size() - 1; i > 0; --i) p[i] -= r * p[i - 1];
+  }
+  Vector<S> out(static_cast<Eigen::Index>(p.size()));
+  for (std::size_t i = 0; i < p.size(); ++i) out(i) = p[i].real();
+  return out;
+}
+
+template <typename S>
+std::vector<std::complex<S>> roots_of(const Vector<S>& p) {
+  const Eigen::Index n = p.size() - 1;
+  std::vector<std::complex<S>> out;
+  if (n < 1) return out;
+  Matrix<S> comp = Matrix<S>::Zero(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) comp(0, j) = -p(j + 1);
+  for (Eigen::Index i = 1; i < n; ++i) comp(i, i - 1) = 1;
+  Eigen::EigenSolver<Matrix<S>> es(comp, false);
+  for (Eigen::Index i = 0; i < n; ++i) out.push_back(es.eigenvalues()(i));
+  return out;
+}
+
+// Roots of the q^-1 polynomial [1 p1 .. pn] (as z-polynomial) inside the
+// circle of radius `radius`: roots outside are reflected, 1/conj(z).
+template <typename S>
+Vector<S> reflect_into_circle(const Vector<S>& p, S radius,
+                              bool* changed = nullptr) {
+  if (changed) *changed = false;
+  if (p.size() < 2) return p;
+  std::vector<std::complex<S>> r = roots_of(p);
+  bool any = false;
+  for (auto& z : r) {
+    const S m = std::abs(z);
+    if (m >= radius) {
+      z = (m > S(1) ? S(1) / std::conj(z) : z * (radius / m));
+      if (std::abs(z) >= radius) z *= radius / std::abs(z) * S(0.999);
+      any = true;
+    }
+  }
+  if (changed) *changed = any;
+  if (!any) return p;
+  return from_roots(r);
+}
+
+template <typename S>
+bool inside_circle(const Vector<S>& p, S radius) {
+  for (const auto& z : roots_of(p)) {
+    if (!(std::abs(z) < radius)) return false;
+  }
+  return true;
+}
+
+// Least squares x = argmin ||A x - b|| (column-pivoting QR); false if rank
+// deficient.
+template <typename S>
+bool least_squares(const Matrix<S>& A, const Vector<S>& b, Vector<S>& x,
+                   Matrix<S>* inverse_gram = nullptr) {
+  const Eigen::ColPivHouseholderQR<Matrix<S>> qr(A);
+  if (qr.rank() < A.cols()) return false;
+  x = qr.solve(b);
+  if (inverse_gram) {
+    *inverse_gram = (A.transpose() * A)
+                        .ldlt()
+                        .solve(Matrix<S>::Identity(A.cols(), A.cols()));
+  }
+  return x.allFinite();
+}
+
+}  // namespace bj_detail
+
+// ARMA model D(q^-1) xi = C(q^-1) e of a sampled record xi (N samples),
+// by prediction error: Hannan-Rissanen's start (a long AR model gives the
+// innovations, then xi is regressed on its past and their past), then
+// Gauss-Newton steps on sum e^2, e = D/C xi (filters at rest), with step
+// halving and the roots of C and D kept inside the unit circle. The
+// covariance is sigma_e^2 (J^T J)^-1 of the final Jacobian.
+template <typename S>
+Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
+                     const ArmaSettings<S>& settings, ArmaResult<S>* result) {
+  using namespace bj_detail;
+  if (result == nullptr) return bad_input("arma_estimate: no result");
+  if (xi == nullptr || n < 1) return bad_input("the noise record is empty");
+  if (nd < 0 || nc < 0 || nd > 50 || nc > 50) {
+    return bad_input("the ARMA orders nd, nc must be in 0..50");
+  }
+  const int np = nd + nc;
+  const Eigen::Index need = 10 * (np + 1) + 4 * (np + 10);
+  if (n < need) {
+    return bad_input("the noise record has " + std::to_string(n) +
+                     " samples; ARMA(" + std::to_string(nd) + "," +
+                     std::to_string(nc) + ") needs at least " +
+                     std::to_string(need));
+  }
+  const Eigen::Map<const Vector<S>> x(xi, n);
+  if (!x.allFinite()) return bad_input("the noise record is not finite");
+  result->c = Vector<S>::Ones(1);
+  result->d = Vector<S>::Ones(1);
+  result->iterations = 0;
+  result->converged = true;
+  const S power = x.squaredNorm() / static_cast<S>(n);
+  if (np == 0) {
+    result->innovation_variance = power;
+    result->covariance.resize(0, 0);
+    return Status::Ok();
+  }
+  if (!(power > 0)) {
+    // No noise at all (noise-free data at the true plant): white, C = D
+    // = 1 with zero variance; the coefficients are not identifiable.
+    result->c = Vector<S>::Zero(nc + 1);
+    result->d = Vector<S>::Zero(nd + 1);
+    result->c(0) = result->d(0) = 1;
+    result->innovation_variance = 0;
+    result->covariance = Matrix<S>::Zero(np, np);
+    return Status::Ok();
+  }
+
+  // Regression of xi(t) on -xi(t-1..t-nd) and e(t-1..t-nc).
+  auto regress = [&](const Vector<S>& e, Vector<S>& eta) -> bool {
+    const Eigen::Index start = std::max(nd, nc);
+    const Eigen::Index rows = n - start;
+    Matrix<S> A(rows, np);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+      const Eigen::Index t = k + start;
+      for (int i = 1; i <= nd; ++i) A(k, i - 1) = -x(t - i);
+      for (int i = 1; i <= nc; ++i) A(k, nd + i - 1) = e(t - i);
+    }
+    return least_squares<S>(A, x.tail(rows), eta);
+  };
+
+  Vector<S> eta(np);
+  if (nc > 0 && settings.start.size() == np && settings.start.allFinite()) {
+    eta = settings.start;
+  } else if (nc == 0) {
+    if (!regress(Vector<S>::Zero(n), eta)) {
+      return numerical_failure("the AR regression is rank deficient");
+    }
+  } else {
+    int L = settings.long_ar_order;
+    if (L <= 0) {
+      L = std::max(20, 3 * np + 10);
+      L = static_cast<int>(std::min<Eigen::Index>(L, n / 10));
+    }
+    const Eigen::Index rows = n - L;
+    Matrix<S> A(rows, L);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+      for (int i = 1; i <= L; ++i) A(k, i - 1) = -x(k + L - i);
+    }
+    Vector<S> a;
+    if (!least_squares<S>(A, x.tail(rows), a)) {
+      return numerical_failure("the long AR regression is rank deficient");
+    }
+    Vector<S> ar(L + 1);
+    ar(0) = 1;
+    ar.tail(L) = a;
+    const Vector<S> e = filter_dt<S>(ar, Vector<S>::Ones(1), Vector<S>(x));
+    if (!regress(e, eta)) {
+      return numerical_failure(
+          "the Hannan-Rissanen regression is rank "
+          "deficient");
+    }
+  }
+
+  auto polys = [&](const Vector<S>& p, Vector<S>& dpoly, Vector<S>& cpoly) {
+    dpoly.resize(nd + 1);
+    cpoly.resize(nc + 1);
+    dpoly(0) = cpoly(0) = 1;
+    dpoly.tail(nd) = p.head(nd);
+    cpoly.tail(nc) = p.tail(nc);
+  };
+  auto project = [&](Vector<S>& p) {
+    Vector<S> dpoly, cpoly;
+    polys(p, dpoly, cpoly);
+    dpoly = reflect_into_circle<S>(dpoly, S(0.999));
+    cpoly = reflect_into_circle<S>(cpoly, S(0.999));
+    p.head(nd) = dpoly.tail(nd);
+    p.tail(nc) = cpoly.tail(nc);
+  };
+  auto loss = [&](const Vector<S>& p, Vector<S>& e) -> S {
+    Vector<S> dpoly, cpoly;
+    polys(p, dpoly, cpoly);
+    e = filter_dt<S>(dpoly, cpoly, Vector<S>(x));
+    const S v = e.squaredNorm() / static_cast<S>(n);
+    return std::isfinite(v) ? v : std::numeric_limits<S>::infinity();
+  };
+  project(eta);
+  Vector<S> e;
+  S v = loss(eta, e);
+  Matrix<S> J(n, np);
+  Matrix<S> inverse_gram;
+  auto jacobian = [&](const Vector<S>& p, const Vector<S>& err) {
+    Vector<S> dpoly, cpoly;
+    polys(p, dpoly, cpoly);
+    const Vector<S> one = Vector<S>::Ones(1);
+    const Vector<S> xc = filter_dt<S>(one, cpoly, Vector<S>(x));
+    const Vector<S> ec = filter_dt<S>(one, cpoly, err);
+    for (int i = 1; i <= nd; ++i) {
+      J.col(i - 1).head(i).setZero();
+      J.col(i - 1).tail(n - i) = xc.head(n - i);
+    }
+    for (int i = 1; i <= nc; ++i) {
+      J.col(nd + i - 1).head(i).setZero();
+      J.col(nd + i - 1).tail(n - i) = -ec.head(n - i);
+    }
+  };
+  result->converged = nc == 0;  // AR: the LS solution is the minimum
+  for (int it = 0; nc > 0 && it < settings.max_iterations; ++it) {
+    jacobian(eta, e);
+    Vector<S> step;
+    if (!least_squares<S>(J, e, step)) {
+      return numerical_failure(
+          "the ARMA Gauss-Newton step is rank deficient "
+          "(ARMA orders too high for the noise?)");
+    }
+    S alpha = 1;
+    bool improved = false;
+    Vector<S> trial, e_trial;
+    for (int h = 0; h < 20; ++h, alpha /= 2) {
+      trial = eta - alpha * step;
+      project(trial);
+      const S vt = loss(trial, e_trial);
+      if (vt < v) {
+        improved = true;
+        break;
+      }
+    }
+    result->iterations = it + 1;
+    if (!improved) {
+      result->converged = true;  // no descent: a (local) minimum
+      break;
+    }
+    const S decrease = (v - loss(trial, e_trial)) / v;
+    eta = trial;
+    v = loss(eta, e);
+    if (decrease < settings.tolerance) {
+      result->converged = true;
+      break;
+    }
+  }
+  jacobian(eta, e);
+  const Matrix<S> gram = J.transpose() * J;
+  const Eigen::LDLT<Matrix<S>> ldlt(gram);
+  result->covariance = v * ldlt.solve(Matrix<S>::Identity(np, np));
+  polys(eta, result->d, result->c);
+  result->innovation_variance = v;
+  if (!result->covariance.allFinite()) {
+    return numerical_failure("the ARMA covariance is not finite");
+  }
+  return Status::Ok();
+}
+
+template <typename S>
+struct RivcProblem {
+  int nb = 1;   // B(p) = b_0 p^(nb-1) + .. + b_(nb-1)
+  int nc = 0;   // C(q^-1) = 1 + c1 q^-1 + .. (noise numerator)
+  int nd = 0;   // D(q^-1) = 1 + d1 q^-1 + .. (noise denominator)
+  int nf = 1;   // F(p) = p^nf + f1 p^(nf-1) + .. + f_nf
+  int nk = 0;   // input delay in samples
+  S delay = 0;  // continuous delay on top of nk (time units, >= 0)
+  InterSample u_rule = InterSample::kZoh;
+  // Closed loop u = Nc(p) / Dc(p) (r - y) (descending powers of p); empty
+  // Nc: open loop. The reference r (N samples, ZOH).
+  Vector<S> controller_num, controller_den;
+  const S* reference = nullptr;
+  bool closed_loop() const { return controller_num.size() > 0; }
+  int num_parameters() const { return nf + nb; }
+};
+
+template <typename S>
+struct RivcSettings {
+  S tolerance = S(1e-6);  // on ||theta_i - theta_(i-1)|| / ||theta_i||, t'
+  int max_iterations = 30;
+  Vector<S> theta_init;  // [f b], original time; empty: the SRIVC start
+  RivSettings<S> start;  // the SRIVC (or CLSRIVC) start's settings
+  ArmaSettings<S> arma;
+};
+
+template <typename S>
+struct RivcResult {
+  Vector<S> theta;            // [f1 .. f_nf, b_0 .. b_(nb-1)], original time
+  Matrix<S> covariance;       // sigma_e^2 (sum zeta_f zeta_f^T)^-1, eq. 2.13
+  ArmaResult<S> noise;        // C, D, innovation variance, their covariance
+  Vector<S> start_theta;      // the SRIVC start
+  S simulation_variance = 0;  // ||y - x_hat||^2 / (N - np)
+  S condition = 0;
+  int iterations = 0;
+  bool converged = false;
+  bool stable = false;
+  std::string reason;
+  Vector<S> simulated;  // x_hat = B/F u at the samples
+};
+
+template <typename S>
+struct RivcData {
+  const S* y = nullptr;
+  const S* u = nullptr;
+  Eigen::Index num_samples = 0;
+  S ts = 0;  // regular sampling only (the noise model is discrete)
+};
+
+namespace bj_detail {
+
+// Descending-power polynomial product.
+template <typename S>
+Vector<S> conv(const Vector<S>& a, const Vector<S>& b) {
+  Vector<S> c = Vector<S>::Zero(a.size() + b.size() - 1);
+  for (Eigen::Index i = 0; i < a.size(); ++i)
+    for (Eigen::Index j = 0; j < b.size(); ++j) c(i + j) += a(i) * b(j);
+  return c;
+}
+
+// theta' = scale .* theta for t' = sigma t: f_i' = f_i / sigma^i,
+// b_j' = b_j sigma^(pow_j - n) (pow_j the power of p of b_j).
+template <typename S>
+Vector<S> scale_factors(int nf, int nb, S sigma) {
+  Vector<S> d(nf + nb);
+  for (int i = 1; i <= nf; ++i) d(i - 1) = std::pow(sigma, S(-i));
+  for (int j = 0; j < nb; ++j) {
+    const int pow = nb - 1 - j;
+    d(nf + j) = std::pow(sigma, S(pow - nf));
+  }
+  return d;
+}
+
+template <typename S>
+Status validate(const RivcProblem<S>& problem, const RivcData<S>& data) {
+  if (data.y == nullptr || data.u == nullptr) {
+    return bad_input("y and u are required");
+  }
+  if (problem.nf < 1 || problem.nf > 20) {
+    return bad_input("nf must be in 1..20, got " + std::to_string(problem.nf));
+  }
+  if (problem.nb < 1 || problem.nb > problem.nf + 1) {
+    return bad_input("nb must be in 1..nf+1 (a proper plant), got " +
+                     std::to_string(problem.nb));
+  }
+  if (problem.nc < 0 || problem.nd < 0 || problem.nc > 20 || problem.nd > 20) {
+    return bad_input("nc and nd must be in 0..20");
+  }
+  if (!(data.ts > 0) || !std::isfinite(data.ts)) {
+    return bad_input(
+        "the sampling interval must be finite and > 0 (RIVC "
+        "needs regularly sampled data)");
+  }
+  const Eigen::Index n = data.num_samples;
+  const int np = problem.num_parameters() + problem.nc + problem.nd;
+  if (problem.nk < 0 || problem.nk >= n / 2) {
+    return bad_input("nk must be in 0..N/2 (" + std::to_string(n / 2) +
+                     "), got " + std::to_string(problem.nk));
+  }
+  if (!(problem.delay >= 0) || !std::isfinite(problem.delay) ||
+      problem.delay + problem.nk * data.ts >= S(0.5) * n * data.ts) {
+    return bad_input("the delay must be >= 0 and below half the record");
+  }
+  if (n < 10 * (np + 1) + 4 * (problem.nc + problem.nd + 10)) {
+    return bad_input("too few samples (" + std::to_string(n) + ") for " +
+                     std::to_string(np) + " parameters");
+  }
+  const Eigen::Map<const Vector<S>> y(data.y, n), u(data.u, n);
+  if (!y.allFinite() || !u.allFinite()) {
+    return bad_input("y and u must be finite");
+  }
+  if (problem.closed_loop()) {
+    if (problem.reference == nullptr) {
+      return bad_input("a closed loop needs the reference r");
+    }
+    if (problem.controller_den.size() < 1 ||
+        problem.controller_num.size() > problem.controller_den.size() ||
+        problem.controller_den(0) == S(0) ||
+        !problem.controller_num.allFinite() ||
+        !problem.controller_den.allFinite()) {
+      return bad_input(
+          "the controller must be proper with finite "
+          "coefficients and a non-zero leading denominator");
+    }
+    if (problem.nk != 0 || problem.delay != 0) {
+      return bad_input("the closed loop takes no input delay (nk = 0)");
+    }
+    if (!Eigen::Map<const Vector<S>>(problem.reference, n).allFinite()) {
+      return bad_input("the reference r must be finite");
+    }
+  }
+  return Status::Ok();
+}
+
+// The RIVC iteration in the scaled time t' = sigma t.
+template <typename S>
+class BjIteration {
+ public:
+  BjIteration(const RivcProblem<S>& problem, const RivcData<S>& data, S sigma)
+      : problem_(problem), n_(data.num_samples), sigma_(sigma) {
+    clock_.ts = data.ts;
+    clock_.n = n_;
+    clock_.sigma = sigma;
+    y_ = Eigen::Map<const Vector<S>>(data.y, n_);
+    u_ = Vector<S>::Zero(n_);
+    for (Eigen::Index k = problem.nk; k < n_; ++k) {
+      u_(k) = data.u[k - problem.nk];
+    }
+    if (problem.closed_loop()) {
+      r_ = Eigen::Map<const Vector<S>>(problem.reference, n_);
+    }
+  }
+
+  // p'^i s / D', i = 0..order, s the (delayed) input.
+  void filter_input(const Vector<S>& d, Matrix<S>& out) const {
+    if (problem_.delay > 0) {
+      riv_detail::filter_delayed_derivatives<S>(
+          d, S(1), problem_.u_rule, clock_, u_.data(), problem_.delay, out);
+    } else {
+      riv_detail::filter_derivatives<S>(d, S(1), problem_.u_rule, clock_,
+                                        u_.data(), out);
+    }
+  }
+
+  // x_hat = B/F u at the samples (theta scaled).
+  Vector<S> simulate(const Vector<S>& theta) const {
+    const int nf = problem_.nf, nb = problem_.nb;
+    Matrix<S> U;
+    filter_input(theta.head(nf), U);
+    Vector<S> x = Vector<S>::Zero(n_);
+    for (int j = 0; j < nb; ++j) x += theta(nf + j) * U.col(nb - 1 - j);
+    return x;
+  }
+
+  // One RIVC step from theta (scaled): the new IV solution, the noise
+  // model of y - x_hat, (Z^T Z)^-1 in `inverse_gram`.
+  Status step(const Vector<S>& theta, const ArmaSettings<S>& arma_settings,
+              bool refined, Vector<S>& next, Matrix<S>& inverse_gram,
+              ArmaResult<S>& arma, Vector<S>& x_hat, S& condition) const {
+    const int nf = problem_.nf, nb = problem_.nb;
+    const Vector<S> f = theta.head(nf);
+    const Vector<S> b = theta.tail(nb);
+    Vector<S> fpoly(nf + 1);
+    fpoly(0) = 1;
+    fpoly.tail(nf) = f;
+    // p'^m u / F^2, m = 0..2 nf: x_hat and its prefiltered derivatives.
+    const Vector<S> f2 = conv<S>(fpoly, fpoly);
+    Matrix<S> U2, U1;
+    filter_input(f2.tail(2 * nf), U2);
+    filter_input(f, U1);
+    x_hat = Vector<S>::Zero(n_);
+    for (int j = 0; j < nb; ++j) x_hat += b(j) * U1.col(nb - 1 - j);
+    Matrix<S> Xf = Matrix<S>::Zero(n_, nf + 1);  // p'^i x_hat / F
+    for (int i = 0; i <= nf; ++i) {
+      for (int j = 0; j < nb; ++j) {
+        Xf.col(i) += b(j) * U2.col(nb - 1 - j + i);
+      }
+    }
+    const Vector<S> xi = y_ - x_hat;
+    // p'^i y / F = p'^i x_hat / F + p'^i xi / F (xi linear between
+    // samples): exact where the model fits, as refined_iv.hpp does.
+    Matrix<S> E;
+    riv_detail::filter_derivatives<S>(f, S(1), InterSample::kFoh, clock_,
+                                      xi.data(), E);
+    const Matrix<S> Yf = Xf + E;
+
+    // Instruments: closed loop, from the loop driven by r.
+    Matrix<S> Zx = Xf, Zu = U1;
+    if (problem_.closed_loop()) {
+      Status s = closed_loop_instruments(fpoly, b, Zx, Zu);
+      if (!s.ok()) return s;
+    }
+
+    const int np = nf + nb;
+    Matrix<S> Phi(n_, np), Z(n_, np);
+    for (int i = 0; i < nf; ++i) {
+      Phi.col(i) = -Yf.col(nf - 1 - i);
+      Z.col(i) = -Zx.col(nf - 1 - i);
+    }
+    for (int j = 0; j < nb; ++j) {
+      Phi.col(nf + j) = U1.col(nb - 1 - j);
+      Z.col(nf + j) = Zu.col(nb - 1 - j);
+    }
+    Vector<S> target = Yf.col(nf);
+
+    if (refined) {
+      Status s = arma_estimate<S>(xi.data(), n_, problem_.nd, problem_.nc,
+                                  arma_settings, &arma);
+      if (!s.ok()) {
+        return Status(s.code(), "the noise model: " + s.message());
+      }
+      if (arma.c.size() > 1 || arma.d.size() > 1) {
+        // The discrete part of the prefilter, D / C (eq. 2.9's 1/H).
+        for (int i = 0; i < np; ++i) {
+          Phi.col(i) = filter_dt<S>(arma.d, arma.c, Vector<S>(Phi.col(i)));
+          Z.col(i) = filter_dt<S>(arma.d, arma.c, Vector<S>(Z.col(i)));
+        }
+        target = filter_dt<S>(arma.d, arma.c, target);
+      }
+    }
+    offline_iv_detail::IvSolution<S> solution;
+    Status s = riv_detail::solve_equilibrated<S>(
+        Z, Phi, target, "RIVC instrument", solution, condition);
+    if (!s.ok()) return s;
+    next = solution.theta;
+    inverse_gram = solution.inverse_gram;
+    return Status::Ok();
+  }
+
+ private:
+  // p'^i x_hat / F and p'^i u_hat / F from x_hat = B Nc / Acl r,
+  // u_hat = F Nc / Acl r, Acl = F Dc + B Nc (scaled time; eqs. 2.48-2.49).
+  Status closed_loop_instruments(const Vector<S>& fpoly, const Vector<S>& b,
+                                 Matrix<S>& Zx, Matrix<S>& Zu) const {
+    const int nf = problem_.nf, nb = problem_.nb;
+    Vector<S> nc = problem_.controller_num, dc = problem_.controller_den;
+    for (Eigen::Index k = 0; k < nc.size(); ++k) {
+      nc(k) *= std::pow(sigma_, S(nc.size() - 1 - k));
+    }
+    for (Eigen::Index k = 0; k < dc.size(); ++k) {
+      dc(k) *= std::pow(sigma_, S(dc.size() - 1 - k));
+    }
+    const Vector<S> bnc = conv<S>(b, nc);
+    Vector<S> acl = conv<S>(fpoly, dc);
+    acl.tail(bnc.size()) += bnc;
+    const S lead = acl(0);
+    if (!(std::abs(lead) > 0)) {
+      return numerical_failure("the closed loop F Dc + B Nc is improper");
+    }
+    acl /= lead;
+    HurwitzTest<S> hurwitz(static_cast<int>(acl.size() - 1));
+    if (!hurwitz.is_stable(acl.tail(acl.size() - 1))) {
+      return numerical_failure(
+          "the closed loop F Dc + B Nc of the current estimate is unstable");
+    }
+    const Vector<S> den = conv<S>(acl, fpoly);  // monic, order nf + ncl
+    Matrix<S> R;
+    riv_detail::filter_derivatives<S>(den.tail(den.size() - 1), S(1) / lead,
+                                      InterSample::kZoh, clock_, r_.data(), R);
+    const Vector<S> fnc = conv<S>(fpoly, nc);
+    // sum_k num_k p'^(k + i) r / (Acl F), num in descending powers.
+    auto apply = [&](const Vector<S>& num, int count, Matrix<S>& out) {
+      out = Matrix<S>::Zero(n_, count);
+      const int deg = static_cast<int>(num.size()) - 1;
+      for (int i = 0; i < count; ++i) {
+        for (int k = 0; k <= deg; ++k) {
+          const int col = deg - k + i;
+          if (col < R.cols()) out.col(i) += num(k) * R.col(col);
+        }
+      }
+    };
+    apply(bnc, nf + 1, Zx);
+    apply(fnc, nb, Zu);
+    return Status::Ok();
+  }
+
+  const RivcProblem<S>& problem_;
+  Eigen::Index n_;
+  S sigma_;
+  riv_detail::Clock<S> clock_;
+  Vector<S> y_, u_, r_;
+};
+
+}  // namespace bj_detail
+
+// RIVC / CLRIVC: see the header comment. Returns kNotConverged (result
+// filled with the last iterate, converged = false) after max_iterations.
+template <typename S>
+Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
+            const RivcData<S>& data, RivcResult<S>* result) {
+  using namespace bj_detail;
+  if (result == nullptr) return bad_input("rivc: no result");
+  Status status = validate(problem, data);
+  if (!status.ok()) return status;
+  if (!(settings.tolerance > 0) || settings.max_iterations < 1) {
+    return Status(ErrorCode::kBadOption, "tol must be > 0 and maxiter >= 1");
+  }
+  const int nf = problem.nf, nb = problem.nb, np = nf + nb;
+  const Eigen::Index n = data.num_samples;
+
+  // The start: SRIVC (CLSRIVC with the controller) of the plant.
+  Vector<S> theta0 = settings.theta_init;
+  if (theta0.size() == 0) {
+    RivProblem<S> start;
+    start.nf = {nf};
+    RivChannel c;
+    c.nb = nb;
+    c.nk = problem.nk;
+    c.rule = problem.u_rule;
+    c.delay = static_cast<double>(problem.delay);
+    start.channels.push_back(c);
+    if (problem.closed_loop()) {
+      start.controller_num = problem.controller_num;
+      start.controller_den = problem.controller_den;
+      start.reference = problem.reference;
+    }
+    RivData<S> d;
+    d.y = data.y;
+    d.w = data.u;
+    d.num_samples = n;
+    d.ts = data.ts;
+    RivResult<S> r;
+    status = refined_iv<S>(start, settings.start, d, &r);
+    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
+      return Status(status.code(), "the SRIVC start: " + status.message());
+    }
+    theta0 = r.theta;
+  } else if (theta0.size() != np || !theta0.allFinite()) {
+    return bad_input("theta_init needs " + std::to_string(np) +
+                     " finite entries [f b]");
+  }
+  result->start_theta = theta0;
+  HurwitzTest<S> hurwitz(nf);
+  if (!hurwitz.is_stable(theta0.head(nf))) {
+    return numerical_failure(
+        "the start model is unstable: no stable prefilter 1/F");
+  }
+  // sigma: |F(0)|^(1/n).
+  S sigma = std::pow(std::abs(theta0(nf - 1)), S(1) / nf);
+  if (!(sigma > 0) || !std::isfinite(sigma)) sigma = S(1) / data.ts;
+  const Vector<S> scale = scale_factors<S>(nf, nb, sigma);
+  BjIteration<S> iteration(problem, data, sigma);
+
+  Vector<S> theta = theta0.cwiseProduct(scale);
+  Vector<S> next;
+  Matrix<S> inverse_gram;
+  ArmaResult<S> arma;
+  Vector<S> x_hat;
+  S condition = 0;
+  result->converged = false;
+  result->reason = "maximum number of iterations reached";
+  int it = 0;
+  // The noise model of each iteration starts Gauss-Newton from the
+  // previous one (the noise estimate changes little between iterations).
+  ArmaSettings<S> arma_settings = settings.arma;
+  for (; it < settings.max_iterations; ++it) {
+    status = iteration.step(theta, arma_settings, true, next, inverse_gram,
+                            arma, x_hat, condition);
+    if (status.ok() && problem.nc > 0) {
+      arma_settings.start.resize(problem.nd + problem.nc);
+      arma_settings.start << arma.d.tail(problem.nd), arma.c.tail(problem.nc);
+    }
+    if (!status.ok()) return status;
+    // Keep F stable: step halving toward the previous (stable) iterate.
+    int halvings = 0;
+    while (!hurwitz.is_stable(next.head(nf)) && halvings < 30) {
+      next = theta + S(0.5) * (next - theta);
+      ++halvings;
+    }
+    if (!hurwitz.is_stable(next.head(nf))) {
+      return numerical_failure("the RIVC iterate is unstable");
+    }
+    const S change = (next - theta).norm() / next.norm();
+    theta = next;
+    if (change < settings.tolerance) {
+      result->converged = true;
+      result->reason = "relative change below tol";
+      ++it;
+      break;
+    }
+  }
+  result->iterations = it;
+  // The noise model, covariance and fit at the final estimate.
+  status = iteration.step(theta, arma_settings, true, next, inverse_gram, arma,
+                          x_hat, condition);
+  if (!status.ok()) return status;
+  result->noise = arma;
+  result->condition = condition;
+  const Vector<S> inv = scale.cwiseInverse();
+  result->theta = theta.cwiseProduct(inv);
+  result->covariance = arma.innovation_variance *
+                       (inv.asDiagonal() * inverse_gram * inv.asDiagonal());
+  result->simulated = iteration.simulate(theta);
+  const Eigen::Map<const Vector<S>> y(data.y, n);
+  result->simulation_variance =
+      (y - result->simulated).squaredNorm() / static_cast<S>(n - np);
+  result->stable = true;
+  if (!result->converged) {
+    return Status(ErrorCode::kNotConverged,
+                  "RIVC did not converge in " +
+                      std::to_string(settings.max_iterations) + " iterations");
+  }
+  return Status::Ok();
+}
+
+template <typename S>
+struct Cl2srivcResult {
+  RivResult<S> plant;        // stage 2: y on u_hat
+  RivResult<S> sensitivity;  // stage 1: u on r
+};
+
+// CL2SRIVC (two-stage SRIVC): stage 1 SRIVC of u on r (orders `loop`),
+// stage 2 SRIVC of y on u_hat = the stage-1 simulation (orders `plant`,
+// u_hat with the intersample rule of plant.channels[0]).
+template <typename S>
+Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
+                const RivSettings<S>& settings, const S* y, const S* u,
+                const S* r, Eigen::Index n, S ts, Cl2srivcResult<S>* result) {
+  if (result == nullptr) return bad_input("cl2srivc: no result");
+  if (plant.num_groups() != 1 || plant.channels.size() != 1 ||
+      loop.num_groups() != 1 || loop.channels.size() != 1) {
+    return bad_input("cl2srivc: one input and one denominator per stage");
+  }
+  for (const RivProblem<S>* stage : {&plant, &loop}) {
+    if (stage->channels[0].nb > stage->nf[0] + 1) {
+      return bad_input(
+          "cl2srivc: nb must be at most nf + 1 (a proper "
+          "model) in each stage");
+    }
+  }
+  RivData<S> d1;
+  d1.y = u;
+  d1.w = r;
+  d1.num_samples = n;
+  d1.ts = ts;
+  // A stage that does not converge returns its last iterate (reported as
+  // kNotConverged at the end, as refined_iv does).
+  Status status = refined_iv<S>(loop, settings, d1, &result->sensitivity);
+  std::string not_converged;
+  if (status.code() == ErrorCode::kNotConverged) {
+    not_converged = "stage 1 (u on r): " + status.message();
+  } else if (!status.ok()) {
+    return Status(status.code(), "stage 1 (u on r): " + status.message());
+  }
+  const Vector<S> u_hat = result->sensitivity.simulated;
+  RivData<S> d2;
+  d2.y = y;
+  d2.w = u_hat.data();
+  d2.num_samples = n;
+  d2.ts = ts;
+  status = refined_iv<S>(plant, settings, d2, &result->plant);
+  if (status.code() == ErrorCode::kNotConverged) {
+    if (!not_converged.empty()) not_converged += "; ";
+    not_converged += "stage 2 (y on u_hat): " + status.message();
+  } else if (!status.ok()) {
+    return Status(status.code(), "stage 2 (y on u_hat): " + status.message());
+  }
+  if (!not_converged.empty()) {
+    return Status(ErrorCode::kNotConverged, not_converged);
+  }
+  return Status::Ok();
+}
+
+}  // namespace ctid
