@@ -335,7 +335,11 @@ function [X, c, d] = states (fname, ltim, ubar, tsim, intersample)
     return;
   endif
   delay = m.delay(1);
-  if (isnan (delay))
+  if (isnan (delay))                     # a delay in samples (struct nk)
+    if (! isscalar (tsim))
+      error ("simc_hw:notSupported",
+             "simc_hw: a delay in samples needs regularly sampled instants");
+    endif
     delay = m.nk(1) * tsim;
   endif
   S = idss (a, b, eye (n), zeros (n, 1), "InputDelay", delay);
