@@ -6,7 +6,7 @@
 ## @example
 ## ubar = f(u) = u - 2 u^2 + 0.8 u^3,
 ## @end example
-## applied element by element to the real array @var{u} (any size; the
+## applied element by element to the real finite array @var{u} (any size; the
 ## result has its size).  Without argument, the coefficients
 ## @var{NL_H} = [1 -2 0.8] of u, u^2, u^3 (the form of @code{hwsrivc}'s
 ## @code{Infos.NL_H}, as a row).  The demo stores the handle
@@ -27,6 +27,9 @@ function [ubar, varargout] = Ham (varargin)
     error ("Ham:badInput", "Ham: 'u' must be a real numeric array");
   endif
   u = double (u);
+  if (any (! isfinite (u(:))))
+    error ("Ham:badInput", "Ham: 'u' must be finite");
+  endif
   ubar = u .* (NL_H(1) + u .* (NL_H(2) + u * NL_H(3)));
 endfunction
 
@@ -41,6 +44,8 @@ endfunction
 
 %!error id=Ham:badInput Ham ("a")
 %!error id=Ham:badInput Ham (1i)
+%!error id=Ham:badInput Ham ([0 NaN])
+%!error id=Ham:badInput Ham (-Inf)
 %!error id=Ham:badInput Ham ({1})
 %!error id=Ham:badInput Ham (1, 2)
 %!error id=Ham:badInput [a, b] = Ham (1)

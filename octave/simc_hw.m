@@ -409,6 +409,21 @@ endfunction
 %! [y3, ~, ~, ~, ~, ynf] = simc_hw (struct ("ltim", hw.ltim), iddata ([], u, Ts));
 %! assert (y3, simc (hw.ltim, iddata ([], u, Ts)), 1e-15);
 
+%!test  # a non-monotonic g (quadratic): the branch through the origin
+%! h.ltim = idpoly (1, 1, 1, 1, [1 2], 0, 0); h.NL_W = [1 0.5];
+%! uu = 0.4 * sin ((0:199)' * 0.05);
+%! y = simc_hw (h, iddata ([], uu, 0.05));
+%! xbar = simc (h.ltim, uu, 0.05);
+%! assert (y, -1 + sqrt (1 + 2 * xbar), 1e-12);
+%! h.NL_W = [1 0 1];                   # x + x^3, monotonic
+%! assert (simc_hw (h, iddata ([], uu, 0.05)) + ...
+%!         simc_hw (h, iddata ([], uu, 0.05)) .^ 3, xbar, 1e-12);
+%! h.NL_W = [-1 0 0 0];                # trailing zeros: g(x) = -x
+%! assert (simc_hw (h, iddata ([], uu, 0.05)), -xbar, 1e-14);
+%! h.NL_W = [0 1];                     # x^2 = xbar < 0 has no real root
+%! fail ("simc_hw (h, iddata ([], -abs (uu) - 0.1, 0.05))",
+%!       "no value");
+
 %!test  # a delay between samples: the states carry it too
 %! pkg load control
 %! G = idtf ([1 3], [1 2 5], "IODelay", 0.013);

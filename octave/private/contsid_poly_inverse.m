@@ -7,7 +7,7 @@
 ## When g is strictly monotonic (its derivative has no real root of odd
 ## multiplicity) the solution is unique and is found for all samples at
 ## once by Newton steps kept inside a bracket (bisection when a step
-## leaves it), started from the Cauchy bound of the roots; accurate to a
+## leaves it), inside Fujiwara's bound of the roots; accurate to a
 ## few eps.  Otherwise each sample takes the real root of
 ## g(x) - v(k) nearest to the previous sample's solution (the first: the
 ## root nearest to v(1)), found by @code{roots}; no real root is
@@ -55,8 +55,12 @@ function x = bracketed_newton (p, dp, v)
   sz = size (v);
   v = v(:);
   lead = p(1);
-  bound = 1 + max ([abs(p(2:end-1) / lead), 0]);
-  R = bound + abs (v / lead);            # Cauchy bound of g(x) - v
+  n = numel (p) - 1;
+  ## Fujiwara's bound on the roots of g(x) - v:
+  ## 2 max (|c_(n-k) / c_n|^(1/k), |v / (2 c_n)|^(1/n))
+  k = 1:n-1;
+  fixed = max ([abs(p(2:end-1) / lead) .^ (1 ./ k), 0]);
+  R = 2 * max (fixed, abs (v / (2 * lead)) .^ (1 / n));
   lo = -R; hi = R;
   rising = lead > 0;                     # a monotonic g has odd degree
   x = v / p(end-1);                      # linear guess, x = v / beta(1)
