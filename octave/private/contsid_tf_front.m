@@ -76,7 +76,7 @@ function M = contsid_tf_front (fname, args)
   if (! d.uniform)
     h = median (diff (d.t));
   endif
-  o = struct ("fixtd", "off", "tdmin", 0, "tdmax", default_tdmax (d, T, h),
+  o = struct ("fixtd", "off", "tdmin", 0, "tdmax", contsid_default_tdmax (d.t, d.y, d.u),
               "numtd", 30,
               "lambda", [], "maxiter", 30, "tolpar", 1e-5, "tolfun", 1e-8,
               "stepmax", [], "stepreduction", 0.5, "focus", "simulation");
@@ -208,24 +208,3 @@ function M = contsid_tf_front (fname, args)
              fname, reason);
   endif
 endfunction
-
-## Default TdMax (CONTSID: "calculated by maximizing the cross correlation
-## function of the input-output data"): the lag of the largest |r_yu| over
-## 0..T/2 plus 10 samples (the input's own correlation can move the peak
-## a few samples early), at least min (T/10, 50 h); irregular data keep
-## the latter.
-function tdmax = default_tdmax (d, T, h)
-  tdmax = min (T / 10, 50 * h);
-  n = rows (d.y);
-  if (! d.uniform || n < 4)
-    return;
-  endif
-  y = d.y(:, 1) - mean (d.y(:, 1));
-  u = d.u(:, 1) - mean (d.u(:, 1));
-  L = 2 ^ nextpow2 (2 * n);
-  r = real (ifft (fft (y, L) .* conj (fft (u, L))));
-  K = floor ((n - 1) / 2);
-  [~, k] = max (abs (r(1:K+1)));
-  tdmax = max (tdmax, min ((k - 1 + 10) * h, T / 2));
-endfunction
-
