@@ -9,7 +9,8 @@
 ## few samples before the impulse response's), at least the smaller of a
 ## tenth of the record and 50 sampling intervals, at most half the
 ## record.  Irregular instants @var{t}: the signals are first put on a
-## regular grid of their median interval (u held, y linear).  @var{y} and
+## regular grid of their median interval (u held, y linear), unless that
+## grid would have more than 10 times their number of samples.  @var{y} and
 ## @var{u} are the first output and input columns.
 ## @end deftypefn
 
@@ -25,6 +26,9 @@ function tdmax = contsid_default_tdmax (t, y, u)
   y = y(:, 1);
   u = u(:, 1);
   if (max (abs (diff (t) - h)) > 1e-9 * h)
+    if (T / h > 10 * n)                   # too sparse for a regular grid
+      return;
+    endif
     tg = (t(1):h:t(end)).';
     u = u(lookup (t, tg));
     y = interp1 (t, y, tg, "linear");

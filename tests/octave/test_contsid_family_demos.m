@@ -145,7 +145,7 @@ function tfrivc_demo ()
   iodelay = 0.4; num = [1 3]; den = [1 2 3];
   MP0 = idtf (num, den, "IODelay", iodelay);
   Ts = 0.05;
-  u = prbs (10, 4);
+  u = prbs (9, 4);
   N = numel (u);
   datau = iddata ([], u, Ts, "InterSample", "zoh");
   ydet = simc (MP0, datau);
