@@ -16,8 +16,8 @@
 ## irregular. @var{init_sys}: an @code{idproc} such as
 ## @code{idproc ("P2DU")}; its @code{Structure.Td} gives the delay: a
 ## finite @code{Value} starts the refinement there, @code{Minimum} and
-## @code{Maximum} bound it (Maximum Inf: a tenth of the record or 50
-## sampling intervals, the smaller), and
+## @code{Maximum} bound it (Maximum Inf: from the input-output
+## cross-correlation, as @code{tfsrivc}'s default TdMax), and
 ## @code{Free} false keeps it. The other parameters' values are not used
 ## as a start (SRIVC starts itself); bounds other than Td are not
 ## enforced. @var{type}: the type string instead of a model. Options as
@@ -100,7 +100,7 @@ function [M, varargout] = procsrivc (varargin)
     lo = Td.Minimum;
     hi = Td.Maximum;
     if (! isfinite (hi))
-      hi = min (T / 10, 50 * median (diff (d.t)));
+      hi = contsid_default_tdmax (d.t, d.y, d.u);
     endif
     if (! isfinite (lo) || lo < 0)
       lo = 0;

@@ -26,9 +26,11 @@
 ## @item FixTd
 ## 'on': keep the delay (default 'off').
 ## @item TdMin, TdMax, NumTd
-## range and grid of the delay search without a start delay (default 0,
-## the smaller of a tenth of the record and 50 sampling intervals, 30
-## points).
+## range and grid of the delay search without a start delay (default 0;
+## TdMax from the input-output cross-correlation as CONTSID: the lag of
+## the largest |r_yu| up to half the record plus 10 samples, at least the
+## smaller of a tenth of the record and 50 sampling intervals (irregular
+## data: the latter); 30 points).
 ## @item Lambda
 ## the SVF cut-off (rad/s) of the start (default: the engine's grid).
 ## @item MaxIter

@@ -7,8 +7,8 @@
 ##
 ## @var{data}: an @code{iddata} (one output, one input, regular or
 ## irregular). @var{np}, @var{nz}: orders (0 <= nz <= np). Options:
-## @code{TdMin}, @code{TdMax} (the delay range, default 0 and a tenth of
-## the record's duration), @code{NumTd} (grid size, default 30),
+## @code{TdMin}, @code{TdMax} (the delay range, default 0 and, as in
+## @code{tfsrivc}, from the input-output cross-correlation), @code{NumTd} (grid size, default 30),
 ## @code{Lambda} (SVF cut-off of the start).
 ##
 ## @var{M}: an @code{idtf} with IODelay the best grid delay, its SRIVC

@@ -76,7 +76,7 @@ function M = contsid_tf_front (fname, args)
   if (! d.uniform)
     h = median (diff (d.t));
   endif
-  o = struct ("fixtd", "off", "tdmin", 0, "tdmax", min (T / 10, 50 * h),
+  o = struct ("fixtd", "off", "tdmin", 0, "tdmax", contsid_default_tdmax (d.t, d.y, d.u),
               "numtd", 30,
               "lambda", [], "maxiter", 30, "tolpar", 1e-5, "tolfun", 1e-8,
               "stepmax", [], "stepreduction", 0.5, "focus", "simulation");
