@@ -1198,11 +1198,10 @@ class Estimator {
   // (relative change of the full step below the tolerance) or on a
   // stationary loss (relative decrease of a damped step below the
   // tolerance); on measured records, where the model is an approximation,
-  // the undamped iteration often cycles. Further stops for approximate
-  // models: a loss within one log-likelihood unit (N ln V) of its
-  // geometric extrapolation, or, after the last iteration, a score
-  // statistic below 1 at the lowest-loss iterate (a Gauss-Newton step
-  // could not gain a log-likelihood unit; that iterate is returned). A
+  // the undamped iteration often cycles. A further stop for approximate
+  // models, after the last iteration: a score statistic below 1 at the
+  // lowest-loss iterate (a Gauss-Newton step could not gain a
+  // log-likelihood unit, N ln V; that iterate is returned). A
   // run that still does not converge while its slowest pole creeps to
   // p = 0 flags integrator_suspected (the caller may refit with the pole
   // declared).
@@ -1348,37 +1347,6 @@ class Estimator {
                      "data do not determine (over-parameterised structure?)";
             }
             break;
-          }
-        }
-        // Converged to the resolution of the data: the loss fell over the
-        // last three iterations at a geometric rate r = d_k / d_(k-1) < 1,
-        // and the decrease still to come, d_k r / (1 - r), changes
-        // N ln(loss) by less than 1: a log-likelihood unit, below what
-        // any test can tell apart (chi^2(1) at 5 % needs 3.84). Parameters
-        // may still move along directions the data do not determine
-        // (determined = false then, as above).
-        const std::size_t k = losses.size();
-        if (!stalled && k >= 3) {
-          const S d1 = losses[k - 3] - losses[k - 2];
-          const S d2 = losses[k - 2] - losses[k - 1];
-          if (d1 > 0 && d2 >= 0 && d2 < d1) {
-            const S r = d2 / d1;
-            const S remaining = d2 * r / (1 - r);
-            const S samples = static_cast<S>(e_.samples());
-            if (samples * remaining < losses[k - 1]) {
-              run.converged = true;
-              run.determined = !(worst > S(1));
-              how = "the loss still to gain, extrapolated, is below one "
-                    "log-likelihood unit";
-              if (!run.determined) {
-                how += "; parameters still move by up to " +
-                       std::to_string(static_cast<int>(std::ceil(worst))) +
-                       " standard error(s) per iteration in directions the "
-                       "data do not determine (over-parameterised "
-                       "structure?)";
-              }
-              break;
-            }
           }
         }
       } else {
