@@ -217,7 +217,11 @@ endfunction
 %! randn ("state", 3);
 %! u = sign (randn (2000, 1));
 %! srivc (iddata (randn (2000, 1), u, 0.01), [1 1 0]);
-%!warning <no convergence> srivc (iddata (x + 0.3 * sin ((1:N)'), u, Ts), [1 2 0], "lambda", 3, "MaxIter", 1);
+%!warning id=srivc:notConverged
+%! pkg load control
+%! xu = lsim (c2d (tf (1, [1 -0.5]), Ts), u(1:200));
+%! srivc (iddata (xu, u(1:200), Ts), [1 1 0], "lambda", 3, "MaxIter", 3,
+%!        "InputOffset", false);
 
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "Tol", 0)
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "MaxIter", 0)

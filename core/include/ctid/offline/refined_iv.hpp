@@ -1249,6 +1249,7 @@ class Estimator {
       const S change = step.norm() / std::max(run.theta.norm(), S(1e-300));
       bool stalled = false;
       bool damped = false;
+      bool newton = false;  // a Gauss-Newton step was taken instead
       if (!(run.cost <= previous.cost)) {
         damped = true;
         const Vector<S> full = run.theta;
@@ -1275,7 +1276,10 @@ class Estimator {
               evaluate(run);
               accepted = run.cost < previous.cost;
             }
-            if (accepted) clipped = false;  // not the pulled-back IV step
+            if (accepted) {
+              clipped = false;  // not the pulled-back IV step
+              newton = true;
+            }
           }
         }
         if (!accepted) {
@@ -1354,7 +1358,7 @@ class Estimator {
       }
       // A plateau of the loss reached by damped steps: the IV fixed point
       // is not approached monotonically (the model is an approximation).
-      if (damped && !stalled && !clipped &&
+      if (damped && !stalled && !clipped && !newton &&
           previous.cost - run.cost <= s_.tolerance * previous.cost) {
         run.converged = true;
         how = "stationary simulation loss";
