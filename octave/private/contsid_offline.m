@@ -11,7 +11,10 @@
 ## A model that did not converge or is unstable comes with a warning
 ## (@var{fname}:notConverged, @var{fname}:unstable); one whose simulation
 ## loss converged while parameters kept moving in directions the data do
-## not determine with @var{fname}:overParameterised.
+## not determine with @var{fname}:overParameterised. A fit whose slowest
+## pole crept to p = 0 without converging is repeated with that pole
+## declared (@code{integrator_refit}) and, when that converges to a lower
+## loss, returned with @var{fname}:integratorDetected.
 ## @end deftypefn
 
 function [M, RT2, YIC, info] = contsid_offline (fname, args)
