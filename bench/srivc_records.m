@@ -1,6 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} srivc_records ()
 ## @deftypefnx {} {@var{R} =} srivc_records (@var{root})
+## @deftypefnx {} {@var{R} =} srivc_records (@var{root}, @var{only})
 ## SRIVC with its automatic start over a grid of structures on the measured
 ## records of ../shared/data, raw and mean-removed (issue 9: a stable,
 ## converged model on >= 95 % of such fits). Not a test (it takes minutes):
@@ -13,11 +14,16 @@
 ## Gaussian-noise part (samples 1..40000) and its multisine part
 ## (40001..131072). Structures [nb nf nk] per record below. Prints one
 ## line per fit and the share stable and converged per record; returns
-## the table as a struct array.
+## the table as a struct array. @var{only} (indices into the six records
+## in the order above, default all) runs a subset while iterating; the
+## bar is judged on the whole grid. Columns: @code{clip} the returned
+## iterate was pulled back into the stable region, @code{int} a pole at
+## p = 0 was detected and declared (srivc:integratorDetected), @code{det}
+## the data determine the parameters (false: srivc:overParameterised).
 ## @end deftypefn
 
-function R = srivc_records (root)
-  if (nargin < 1)
+function R = srivc_records (root, only)
+  if (nargin < 1 || isempty (root))
     root = pwd ();
   endif
   data = fullfile (root, "..", "shared", "data");
@@ -42,12 +48,18 @@ function R = srivc_records (root)
                       [1 2 0; 2 2 0; 3 2 0; 2 3 0; 3 3 0; 3 4 0]};
   endfor
 
+  if (nargin >= 2)
+    recs = recs(only, :);
+  endif
   R = struct ("record", {}, "nn", {}, "mean_removed", {}, "stable", {},
-              "converged", {}, "RT2", {}, "iterations", {}, "seconds", {});
+              "converged", {}, "RT2", {}, "iterations", {}, "seconds", {},
+              "clipped", {}, "integrators", {}, "determined", {},
+              "reason", {});
   state = warning ("off", "all");
   cleanup = onCleanup (@() warning (state));
-  printf ("%-44s %-10s %-4s %6s %5s %5s %8s %6s\n", "record", "nn", "mean",
-          "stable", "conv", "iter", "RT2", "s");
+  printf ("%-44s %-10s %-4s %6s %5s %5s %8s %6s %4s %3s %3s\n", "record",
+          "nn", "mean", "stable", "conv", "iter", "RT2", "s", "clip", "int",
+          "det");
   for r = 1:rows (recs)
     [name, y, u, Ts, NN] = recs{r, :};
     for centre = [false true]
@@ -62,17 +74,23 @@ function R = srivc_records (root)
           [M, RT2, ~, info] = srivc (d, NN(k, :));
           ok = [info.stable, info.converged];
           it = info.iterations;
+          extra = [info.clipped, sum(info.integrators), info.determined];
+          why = info.reason;
         catch err
-          RT2 = NaN; ok = [false false]; it = 0;
+          RT2 = NaN; ok = [false false]; it = 0; extra = [0 0 0];
+          why = err.message;
           printf ("  (%s)\n", err.message);
         end_try_catch
         sec = toc;
         R(end+1) = struct ("record", name, "nn", NN(k, :),
                            "mean_removed", centre, "stable", ok(1),
                            "converged", ok(2), "RT2", RT2, "iterations", it,
-                           "seconds", sec);
-        printf ("%-44s %-10s %-4d %6d %5d %5d %8.4f %6.2f\n", name,
-                mat2str (NN(k, :)), centre, ok(1), ok(2), it, RT2, sec);
+                           "seconds", sec, "clipped", extra(1),
+                           "integrators", extra(2), "determined", extra(3),
+                           "reason", why);
+        printf ("%-44s %-10s %-4d %6d %5d %5d %8.4f %6.2f %4d %3d %3d\n",
+                name, mat2str (NN(k, :)), centre, ok(1), ok(2), it, RT2, sec,
+                extra);
         fflush (stdout);
       endfor
     endfor
@@ -87,4 +105,8 @@ function R = srivc_records (root)
   good = [R.stable] & [R.converged];
   printf ("  %-44s %3d / %3d = %.1f %%\n", "all", sum (good), numel (R),
           100 * mean (good));
+  integ = good & [R.integrators] > 0;
+  printf (["  of which %d with a detected pole at p = 0 (without them: ", ...
+           "%d / %d = %.1f %%)\n"], sum (integ), sum (good & ! integ),
+          numel (R), 100 * mean (good & ! integ));
 endfunction

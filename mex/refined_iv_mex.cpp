@@ -160,8 +160,9 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
         "converged",      "stable",    "iterations", "reason",
         "noise_variance", "cutoff",    "time_scale", "starts",
         "condition",      "x0",        "offset",     "simulated",
-        "free_response",  "determined"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
+        "free_response",  "determined", "clipped",   "clipped_iterations",
+        "integrator_suspected", "loss_history"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 18, fields);
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
     mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
@@ -177,6 +178,20 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     mxSetField(info, 0, "simulated", to_output(result.simulated));
     mxSetField(info, 0, "free_response", to_output(result.free_response));
     mxSetField(info, 0, "determined", mxCreateLogicalScalar(result.determined));
+    mxSetField(info, 0, "clipped", mxCreateLogicalScalar(result.clipped));
+    mxSetField(info, 0, "clipped_iterations",
+               mxCreateDoubleScalar(result.clipped_iterations));
+    const std::size_t groups = result.integrator_suspected.size();
+    mxArray* suspected = mxCreateLogicalMatrix(1, groups);
+    for (std::size_t g = 0; g < groups; ++g) {
+      mxGetLogicals(suspected)[g] = result.integrator_suspected[g] != 0;
+    }
+    mxSetField(info, 0, "integrator_suspected", suspected);
+    mxArray* losses = ctid::mex::make_output_matrix(
+        result.loss_history.size(), 1);
+    std::copy(result.loss_history.begin(), result.loss_history.end(),
+              mxGetPr(losses));
+    mxSetField(info, 0, "loss_history", losses);
     plhs[2] = info;
   }
 }

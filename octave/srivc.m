@@ -57,7 +57,20 @@
 ## @end table
 ##
 ## Every iterate is kept stable (an unstable IV solution is pulled back
-## toward the previous iterate by step halving, reflected as a last resort).
+## toward the previous iterate by step halving, reflected as a last resort;
+## @var{info}.clipped says whether the returned iterate was, and
+## @var{info}.clipped_iterations how many were).
+## A pole at p = 0 that the structure does not declare: when the iteration
+## does not converge because the slowest pole stays real and moves toward
+## p = 0 at every iteration while the loss falls (an integrating plant,
+## e.g. force -> position of an axis; the loss minimum of the structure is
+## then on the stability boundary), the fit is repeated with that pole
+## declared at p = 0 (an integrator, F(0) = 0), started from the last
+## iterate, and that model is returned when it converges with the other
+## poles stable and a simulation error that is not larger: the warning
+## @code{srivc:integratorDetected} says so and @var{info}.integrators
+## counts the declared poles per denominator. Otherwise the last iterate
+## stays with @code{srivc:notConverged}.
 ## Convergence: a fixed point of the iteration, parameter changes below 1 %
 ## of their standard errors, or a simulation loss that stays within
 ## max(10 Tol, 1e-5) of itself over 5 iterations. When the loss is
@@ -75,7 +88,9 @@
 ## log(var(e)/var(y)) + log(mean(P_ii / theta_i^2)), and @var{info}
 ## (converged, stable, iterations, reason, noise_variance, lambda,
 ## time_scale, starts, condition, x0, offset, input_offset, simulated,
-## determined).
+## determined, clipped, clipped_iterations, integrators,
+## integrator_suspected, loss_history: the simulation loss after each
+## iteration).
 ##
 ## @strong{Example}
 ## @example
@@ -162,11 +177,51 @@ endfunction
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.input_offset, 0.5, 1e-6);
 
+%!test  # info.clipped: a stable fit is not pulled back; an unstable plant is
+%! [~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0], "lambda", 3);
+%! assert (! info.clipped && info.clipped_iterations == 0);
+%! assert (numel (info.loss_history), info.iterations);
+%! pkg load control
+%! xu = lsim (c2d (tf (1, [1 -0.5]), Ts), u(1:200));
+%! warning ("off", "srivc:notConverged", "local");
+%! [M, ~, ~, info] = srivc (iddata (xu, u(1:200), Ts), [1 1 0], "lambda", 3,
+%!                          "MaxIter", 3, "InputOffset", false);
+%! assert (info.clipped && ! info.converged && info.stable);
+%! assert (info.clipped_iterations >= 1);
+%! assert (all (real (roots (M.F)) < 0));
+
+%!test  # an integrating plant fitted without its integrator
+%! pkg load control
+%! randn ("state", 1);
+%! Ts = 0.01; N = 4000;
+%! u = kron (sign (randn (N / 25, 1)), ones (25, 1));
+%! x = lsim (c2d (tf (2, [1 3 0]), Ts), u);
+%! y = x + 0.02 * std (x) * randn (N, 1);
+%! data = iddata (y, u, Ts, "InterSample", "zoh");
+%! ## the declared structure without the pole at 0 converges as it is
+%! [M, ~, ~, info] = srivc (data, [1 2 0]);
+%! assert (info.converged && info.stable && ! any (info.integrators));
+%! ## b / (p + a): the loss falls as a -> 0 (the iterates are pulled back
+%! ## from a < 0); refitted with a = 0 declared, with the warning
+%! [w, id] = lastwarn ("");
+%! [M, RT2, ~, info] = srivc (data, [1 1 0]);
+%! [w, id] = lastwarn ();
+%! assert (id, "srivc:integratorDetected");
+%! assert (info.integrators, 1);
+%! assert (info.converged && info.stable);
+%! assert (M.F, [1 0]);
+%! assert (RT2 > 0.95);
+%! assert (! isempty (strfind (info.reason, "pole(s) at p = 0 detected")));
+
 %!warning id=srivc:noFit
 %! randn ("state", 3);
 %! u = sign (randn (2000, 1));
 %! srivc (iddata (randn (2000, 1), u, 0.01), [1 1 0]);
-%!warning <no convergence> srivc (iddata (x + 0.3 * sin ((1:N)'), u, Ts), [1 2 0], "lambda", 3, "MaxIter", 1);
+%!warning id=srivc:notConverged
+%! pkg load control
+%! xu = lsim (c2d (tf (1, [1 -0.5]), Ts), u(1:200));
+%! srivc (iddata (xu, u(1:200), Ts), [1 1 0], "lambda", 3, "MaxIter", 3,
+%!        "InputOffset", false);
 
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "Tol", 0)
 %!error id=srivc:badInput srivc (iddata (x, u, Ts), [1 2 0], "MaxIter", 0)

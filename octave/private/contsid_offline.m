@@ -11,7 +11,10 @@
 ## A model that did not converge or is unstable comes with a warning
 ## (@var{fname}:notConverged, @var{fname}:unstable); one whose simulation
 ## loss converged while parameters kept moving in directions the data do
-## not determine with @var{fname}:overParameterised.
+## not determine with @var{fname}:overParameterised. A fit whose slowest
+## pole crept to p = 0 without converging is repeated with that pole
+## declared (@code{integrator_refit}) and, when that converges to a lower
+## loss, returned with @var{fname}:integratorDetected.
 ## @end deftypefn
 
 function [M, RT2, YIC, info] = contsid_offline (fname, args)
@@ -94,12 +97,10 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     read_refined_options ();
   endif
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
-  ## the engine's words for an iterate it had to pull back into the
-  ## stable region (core/include/ctid/offline/refined_iv.hpp, Estimator::refine)
-  pulled_back = ! isempty (strfind (info.reason,
-                                    "unconstrained estimate is unstable"));
+  ## info.clipped: the returned iterate had to be pulled back into the
+  ## stable region (its unconstrained IV solution is unstable)
   if (auto_input_offset && (! info.stable || (! info.converged
-                                              && pulled_back)))
+                                              && info.clipped)))
     ## An offset of the input (raw units, a force that does not average to
     ## zero on an integrating axis) drives the estimate toward an unstable
     ## model: the fit is repeated with input offsets and kept when it
@@ -118,6 +119,25 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     catch
       ## the fit without input offsets stands, with its warning
     end_try_catch
+  endif
+  info.integrators = zeros (1, numel (e.nf));
+  if (refined && ! closed && ! (info.converged && info.stable)
+      && any (info.integrator_suspected))
+    [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e, theta,
+                                                      info);
+    if (! ok && auto_input_offset && ! any (e.input_offset))
+      ## raw units: the integrator integrates the input's offset too
+      e3 = e;
+      e3.input_offset = true (1, nu);
+      [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e3,
+                                                        theta, info);
+    endif
+    if (ok)
+      e = e2; theta = theta2; cov = cov2; info = info2;
+    else
+      info.reason = [info.reason, "; a refit with a pole at p = 0 did ", ...
+                     "not converge to a better model"];
+    endif
   endif
 
   info.lambda = info.cutoff;
@@ -142,6 +162,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
            "%s: the noise variance of the estimate is %g (unstable model?)",
            fname, info.noise_variance);
   endif
+  if (any (info.integrators))
+    warning ([fname ":integratorDetected"],
+             ["%s: the slowest pole of the declared structure moved toward ", ...
+              "p = 0 without converging; the model returned has %s ", ...
+              "(refitted with it declared: %s)"], fname,
+             merge (sum (info.integrators) == 1, "a pole at p = 0",
+                    "poles at p = 0"), info.reason);
+  endif
   if (refined && info.converged && isfield (info, "determined")
       && ! info.determined)
     warning ([fname ":overParameterised"], "%s: %s", fname, info.reason);
@@ -161,7 +189,8 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     vy = var (d.y, 1);
     RT2 = 1 - s2 * (n - np) / n / vy;
     th = theta(1:np);
-    YIC = log (s2 / vy) + log (mean (diag (cov(1:np, 1:np)) ./ th .^ 2));
+    free = th != 0 | diag (cov(1:np, 1:np)) > 0;   # the declared p = 0 poles
+    YIC = log (s2 / vy) + log (mean (diag (cov(free, free)) ./ th(free) .^ 2));
   endif
 
   ## The refined-method options into the engine's struct e.
@@ -249,6 +278,71 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     e.controller = struct ("num", c_num, "den", c_den, "discrete", true);
     e.reference = [r1, r2];
   endfunction
+endfunction
+
+## A fit whose slowest pole crept toward p = 0 without converging (the
+## engine's info.integrator_suspected, per denominator): the loss minimum
+## of the structure lies on the stability boundary, an integrator the
+## structure does not declare (an integrating plant, e.g. force -> position
+## of an axis). The fit is repeated with that pole declared at p = 0,
+## started from the last iterate with its slowest pole moved there, and
+## kept when it converges to a model whose other poles are stable and whose
+## simulation error is not larger.
+function [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
+                                                          theta, info)
+  ok = false;
+  [theta2, cov2, info2] = deal ([]);
+  nf = e.nf;
+  have = zeros (1, numel (nf));
+  if (isfield (e, "integrators"))
+    have = e.integrators;
+  endif
+  have0 = have;
+  e2 = e;
+  mse = mean ((d.y - info.simulated(:)) .^ 2);
+  ## a pole at a time, while the slowest pole still creeps to p = 0
+  for pass = 1:max (nf)
+    add = double (logical (info.integrator_suspected(:).') & have < nf);
+    if (! any (add))
+      return;
+    endif
+    e2.integrators = have + add;
+    th0 = theta;
+    off = 0;
+    for g = 1:numel (nf)
+      m = nf(g) - have(g);
+      if (add(g))
+        r = roots ([1; theta(off + (1:m))]);
+        [~, k] = min (abs (r));
+        r(k) = [];
+        f1 = real (poly (r));
+        th0(off + (1:nf(g))) = [f1(2:end), zeros(1, have(g) + 1)];
+      endif
+      off += nf(g);
+    endfor
+    e2.theta_init = th0;
+    try
+      [theta2, cov2, info2] = contsid_refined_iv (fname, d.y, d.u, t, e2);
+    catch
+      return;
+    end_try_catch
+    mse2 = mean ((d.y - info2.simulated(:)) .^ 2);
+    if (info2.converged && info2.stable && mse2 <= mse)
+      ok = true;
+      info2.integrators = e2.integrators - have0;
+      info2.reason = sprintf (["%s, with %d pole(s) at p = 0 detected ", ...
+                               "(the fit without: %s)"], info2.reason,
+                              sum (info2.integrators), info.reason);
+      return;
+    endif
+    if (! (info2.stable && any (info2.integrator_suspected)))
+      return;
+    endif
+    have = e2.integrators;
+    theta = theta2;
+    info2.reason = info.reason;
+    info = info2;
+  endfor
 endfunction
 
 function [args, nf_each] = different_denominators (fname, refined, args)

@@ -213,5 +213,58 @@ TEST(RefinedIvDelay, BadDelaysAreRejected) {
   EXPECT_EQ(s.code(), ErrorCode::kBadOption) << s.message();
 }
 
+// Status fields of a clean fit: nothing pulled back, no pole flagged, one
+// loss per iteration.
+TEST(RefinedIvStatus, CleanFitIsNotClipped) {
+  const double ts = 0.05;
+  const std::vector<double> u = binary_input(1500, 8, 3u);
+  const Record r = make_record(kF, kB, u, 1, ts, 0, false);
+  RivSettings<double> settings;
+  RivResult<double> result;
+  ASSERT_TRUE(refined_iv(second_order(0, 0, InterSample::kZoh), settings,
+                         view(r, ts), &result)
+                  .ok());
+  EXPECT_TRUE(result.converged && result.stable);
+  EXPECT_FALSE(result.clipped);
+  EXPECT_EQ(result.clipped_iterations, 0);
+  ASSERT_EQ(result.integrator_suspected.size(), 1u);
+  EXPECT_EQ(result.integrator_suspected[0], 0);
+  EXPECT_EQ(static_cast<int>(result.loss_history.size()), result.iterations);
+}
+
+// An integrating plant 2 / (p (p + 3)) fitted by b / (p + a): the loss
+// falls as a -> 0 and the unconstrained steps cross to a < 0, so the
+// iterates are pulled back (clipped) and the pole creeps to p = 0; with
+// the pole declared (a fixed at 0) the fit converges to a stable model.
+TEST(RefinedIvStatus, IntegratingPlantWithoutItsIntegratorIsFlagged) {
+  const double ts = 0.01;
+  const std::vector<double> u = binary_input(4000, 25, 7u);
+  const Eigen::VectorXd f = (Eigen::VectorXd(3) << 1, 3, 0).finished();
+  const Eigen::VectorXd b = (Eigen::VectorXd(1) << 2).finished();
+  const Record r = make_record(f, b, u, 1, ts, 0, false);
+  RivProblem<double> problem;
+  problem.nf = {1};
+  RivChannel c;
+  c.nb = 1;
+  problem.channels.push_back(c);
+  RivSettings<double> settings;
+  RivResult<double> result;
+  const Status status = refined_iv(problem, settings, view(r, ts), &result);
+  EXPECT_EQ(status.code(), ErrorCode::kNotConverged) << result.reason;
+  EXPECT_FALSE(result.converged);
+  EXPECT_TRUE(result.stable);
+  EXPECT_GT(result.clipped_iterations, 0);
+  ASSERT_EQ(result.integrator_suspected.size(), 1u);
+  EXPECT_EQ(result.integrator_suspected[0], 1) << result.reason;
+  problem.fixed = {true, false};
+  problem.fixed_values = Eigen::VectorXd::Zero(2);
+  RivResult<double> declared;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &declared).ok())
+      << declared.reason;
+  EXPECT_TRUE(declared.converged && declared.stable);
+  EXPECT_EQ(declared.theta(0), 0);
+  EXPECT_EQ(declared.integrator_suspected[0], 0);
+}
+
 }  // namespace
 }  // namespace ctid

@@ -4,8 +4,11 @@
 ## integrating axis (issue 9): EMPS (../shared/data/emps/DATA_EMPS.mat),
 ## motor force gtau*vir -> position qm, structure [1 2 0], raw units.
 ## Without input offsets the unconstrained estimate is unstable (the
-## force's offset drives the near-integrator) and srivc warns
-## srivc:notConverged with a simulation R_T^2 below 0; with the default
+## force's offset drives the near-integrator) and the fit is useless
+## (simulation R_T^2 below 0.5), with a warning: srivc:notConverged, or,
+## where the refit with the creeping pole declared at p = 0 converges to a
+## lower loss, srivc:integratorDetected (a model with a pole at 0 that
+## integrates the offset: still useless); with the default
 ## InputOffset 'auto' the fit is repeated with an input offset, converges
 ## to a stable model and explains the record (R_T^2 > 0.95, the bar of
 ## CONTSID's case studies), and info.reason says what was done.
@@ -33,8 +36,13 @@ function test_srivc_input_offset ()
   [~, id] = lastwarn ();
   printf ("InputOffset false: converged %d, stable %d, R_T^2 %.4f (%s)\n",
           ia.converged, ia.stable, RT2a, ia.reason);
-  assert (strcmp (id, "srivc:notConverged"));
-  assert (! ia.converged && RT2a < 0.5);
+  if (ia.converged)
+    assert (strcmp (id, "srivc:integratorDetected"));
+    assert (ia.stable && any (ia.integrators));
+  else
+    assert (strcmp (id, "srivc:notConverged"));
+  endif
+  assert (RT2a < 0.5);
   [~, RT2, ~, info] = srivc (d, [1 2 0]);
   printf ("InputOffset auto: converged %d, stable %d, R_T^2 %.4f (%s)\n",
           info.converged, info.stable, RT2, info.reason);

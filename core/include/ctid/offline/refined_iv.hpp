@@ -38,11 +38,14 @@
 // so no single lucky cut-off is needed. Every iterate is kept stable: an
 // unstable IV solution is pulled back toward the previous (stable) iterate
 // by step halving, and reflected as a last resort; the result's status
-// says whether this happened on the final iterate.
+// says whether this happened on the final iterate (clipped) and how
+// often, and flags a slowest pole that crept to p = 0 without converging
+// (integrator_suspected: an integrator the structure does not declare).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -127,7 +130,18 @@ struct RivResult {
   // still moved by more than their standard errors: directions the data
   // do not determine (an over-parameterised structure).
   bool determined = true;
-  std::string reason;   // why it stopped, in words
+  // The returned iterate was pulled back into the stable region (its
+  // unconstrained refined-IV solution was unstable), and how many of the
+  // iterations had to be.
+  bool clipped = false;
+  int clipped_iterations = 0;
+  // Per group: the slowest pole was real and moved monotonically toward
+  // p = 0 over the last iterations, with a falling loss, and SRIVC did not
+  // converge: the data ask for an integrator the structure does not
+  // declare (the caller may refit with it declared).
+  std::vector<int> integrator_suspected;
+  std::vector<S> loss_history;  // simulation loss after each iteration
+  std::string reason;           // why it stopped, in words
   S cutoff = 0;         // cut-off of the SVF start used (0: theta_init)
   S time_scale = 1;     // sigma of the final iterations
   int starts_tried = 0;
@@ -999,7 +1013,10 @@ struct Run {
   bool converged = false;
   bool stable = false;
   bool clipped = false;  // the last iterate had to be stabilised
+  int clipped_iterations = 0;
   bool determined = true;
+  std::vector<int> integrator_suspected;  // per group, see RivResult
+  std::vector<S> losses;                  // loss after each iteration
   S condition = 0;
   std::string reason;
 };
@@ -1175,11 +1192,19 @@ class Estimator {
   // The SRIVC iteration as a damped fixed-point method: the refined IV
   // step theta_IV (eqs. 2.9-2.13) is taken in full when it does not
   // increase the simulation loss, else halved (up to 5 times) until it
-  // does (if none does, the full step is taken). Stops on a fixed point
+  // does (if none does, a Gauss-Newton step on the simulation loss,
+  // halved until it lowers the loss; if none does either, the full IV
+  // step is taken). Stops on a fixed point
   // (relative change of the full step below the tolerance) or on a
   // stationary loss (relative decrease of a damped step below the
   // tolerance); on measured records, where the model is an approximation,
-  // the undamped iteration often cycles.
+  // the undamped iteration often cycles. A further stop for approximate
+  // models, after the last iteration: a score statistic below 1 at the
+  // lowest-loss iterate (a Gauss-Newton step could not gain a
+  // log-likelihood unit, N ln V; that iterate is returned). A
+  // run that still does not converge while its slowest pole creeps to
+  // p = 0 flags integrator_suspected (the caller may refit with the pole
+  // declared).
   Status refine(Run<S>& run) const {
     const int groups = p_.num_groups();
     evaluate(run);
@@ -1188,7 +1213,18 @@ class Estimator {
     run.covariance = Matrix<S>::Zero(run.theta.size(), run.theta.size());
     run.converged = false;
     run.clipped = false;
+    run.clipped_iterations = 0;
     run.determined = true;
+    run.integrator_suspected.assign(groups, 0);
+    run.losses.clear();
+    // Per group, the rate of the slowest pole after each iteration (NaN
+    // when it is not real).
+    std::vector<std::vector<S>> slowest(groups);
+    // The lowest-loss unclipped iterate (where stationarity is tested when
+    // the iteration does not converge by itself).
+    Run<S> lowest;
+    lowest.cost = std::numeric_limits<S>::infinity();
+    S lowest_worst = std::numeric_limits<S>::infinity();
     std::string how;
     // The simulation losses of the last iterations (a loss that stays put
     // while the parameters move: flat directions).
@@ -1213,6 +1249,7 @@ class Estimator {
       const S change = step.norm() / std::max(run.theta.norm(), S(1e-300));
       bool stalled = false;
       bool damped = false;
+      bool newton = false;  // a Gauss-Newton step was taken instead
       if (!(run.cost <= previous.cost)) {
         damped = true;
         const Vector<S> full = run.theta;
@@ -1224,6 +1261,27 @@ class Estimator {
           evaluate(run);
           accepted = run.cost < previous.cost;
         }
+        if (!accepted && !p_.closed_loop()) {
+          // No decrease along the IV step (an approximate model: the IV
+          // fixed point is not the loss minimum): a Gauss-Newton step on
+          // the simulation loss from the previous iterate, halved until
+          // it lowers the loss with a stable model.
+          Run<S> from = previous;
+          Vector<S> eps, fitted, delta;
+          if (gauss_newton(from, eps, fitted, delta)) {
+            S beta = 1;
+            for (int k = 0; k < 6 && !accepted; ++k, beta /= 2) {
+              run.theta = previous.theta + beta * delta;
+              if (!e_.stable(run.theta)) continue;
+              evaluate(run);
+              accepted = run.cost < previous.cost;
+            }
+            if (accepted) {
+              clipped = false;  // not the pulled-back IV step
+              newton = true;
+            }
+          }
+        }
         if (!accepted) {
           // No decrease along the step: the plain SRIVC step is taken (the
           // IV fixed point need not minimise the loss, e.g. with coloured
@@ -1232,6 +1290,12 @@ class Estimator {
           evaluate(run);
           stalled = true;
         }
+      }
+      run.clipped = clipped;
+      run.losses.push_back(run.cost);
+      if (clipped) ++run.clipped_iterations;
+      for (int g = 0; g < groups; ++g) {
+        slowest[g].push_back(slowest_real_pole(run.theta, g));
       }
       if (change < s_.tolerance && !clipped) {
         run.converged = true;
@@ -1251,6 +1315,10 @@ class Estimator {
             worst = std::max(worst, std::abs(step(i)) / std::sqrt(variance));
           }
         }
+      }
+      if (!clipped && std::isfinite(run.cost) && run.cost < lowest.cost) {
+        lowest = run;
+        lowest_worst = worst;
       }
       if (!clipped && !stalled && std::isfinite(run.cost)) {
         if (worst < std::min(S(0.01), S(1e4) * s_.tolerance)) {
@@ -1290,11 +1358,40 @@ class Estimator {
       }
       // A plateau of the loss reached by damped steps: the IV fixed point
       // is not approached monotonically (the model is an approximation).
-      if (damped && !stalled && !clipped &&
+      if (damped && !stalled && !clipped && !newton &&
           previous.cost - run.cost <= s_.tolerance * previous.cost) {
         run.converged = true;
         how = "stationary simulation loss";
         break;
+      }
+    }
+    // No convergence by the rules above (a limit cycle of the IV step, a
+    // slow drift): the simulation loss is stationary if a Gauss-Newton
+    // step from the lowest-loss iterate could not lower N ln(loss) by 1
+    // (the score statistic, below one log-likelihood unit).
+    if (!run.converged && std::isfinite(lowest.cost) &&
+        !p_.closed_loop()) {
+      const S score = score_statistic(lowest);
+      if (score < 1) {
+        const int its = run.iterations;
+        const std::vector<S> history = run.losses;
+        const int clips = run.clipped_iterations;
+        run = lowest;
+        run.iterations = its;
+        run.losses = history;
+        run.clipped_iterations = clips;
+        run.clipped = false;
+        run.converged = true;
+        run.determined = !(lowest_worst > S(1));
+        how = "stationary simulation loss: a Gauss-Newton step from the "
+              "lowest-loss iterate would gain less than one log-likelihood "
+              "unit (score statistic " + std::to_string(score) + ")";
+      }
+    }
+    if (!run.converged) {
+      for (int g = 0; g < groups; ++g) {
+        run.integrator_suspected[g] =
+            creeps_to_origin(slowest[g], run.losses) ? 1 : 0;
       }
     }
     evaluate(run);
@@ -1316,6 +1413,111 @@ class Estimator {
   }
 
  private:
+  // The simulation error eps at run.theta and the least-squares fit
+  // Psi delta of it by the sensitivities Psi of the simulated output to
+  // the free parameters: for the output-error model the refined
+  // instruments p^i x_g / F_g and p^k w_j / F_g of eq. (2.12), and a
+  // constant for c. delta (np, zero for fixed entries and c) is the
+  // Gauss-Newton step on the simulation loss. False if not finite.
+  bool gauss_newton(Run<S>& run, Vector<S>& eps, Vector<S>& fitted,
+                    Vector<S>& delta) const {
+    evaluate(run);
+    eps = e_.y() - run.simulated;
+    std::vector<Vector<S>> cols;
+    std::vector<int> at;
+    Matrix<S> Phi, Z;
+    Vector<S> target;
+    std::vector<int> index;
+    for (int g = 0; g < p_.num_groups(); ++g) {
+      const Vector<S> d = e_.prefilter(run.theta, g, integrator_pole());
+      e_.regression(run.theta, g, d, S(1), e_.y(), &xs_[g], nullptr, Phi, Z,
+                    target, index);
+      for (Eigen::Index i = 0; i < Z.cols(); ++i) {
+        cols.push_back(Z.col(i));
+        at.push_back(index[static_cast<std::size_t>(i)]);
+      }
+    }
+    if (p_.output_offset) {
+      cols.push_back(Vector<S>::Ones(e_.samples()));
+      at.push_back(-1);
+    }
+    delta = Vector<S>::Zero(run.theta.size());
+    fitted = Vector<S>::Zero(e_.samples());
+    if (cols.empty()) return true;
+    Matrix<S> psi(e_.samples(), static_cast<Eigen::Index>(cols.size()));
+    Vector<S> norms(static_cast<Eigen::Index>(cols.size()));
+    for (std::size_t i = 0; i < cols.size(); ++i) {
+      const S norm = cols[i].norm();
+      norms(i) = norm > 0 ? norm : S(1);
+      psi.col(i) = cols[i] / norms(i);
+    }
+    if (!psi.allFinite() || !eps.allFinite()) return false;
+    const Eigen::CompleteOrthogonalDecomposition<Matrix<S>> cod(psi);
+    const Vector<S> coef = cod.solve(eps);
+    fitted = psi * coef;
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      if (at[i] >= 0) delta(at[i]) = coef(i) / norms(i);
+    }
+    return fitted.allFinite() && delta.allFinite();
+  }
+
+  // The score statistic at run.theta: eps^T Psi (Psi^T Psi)^+ Psi^T eps /
+  // (eps^T eps / N), N times the relative loss decrease of a full
+  // Gauss-Newton step.
+  S score_statistic(Run<S>& run) const {
+    Vector<S> eps, fitted, delta;
+    if (!gauss_newton(run, eps, fitted, delta)) {
+      return std::numeric_limits<S>::infinity();
+    }
+    const S mean_square = eps.squaredNorm() / static_cast<S>(e_.samples());
+    if (!(mean_square > 0)) return 0;
+    return fitted.squaredNorm() / mean_square;
+  }
+
+  // -p of the root of F_g's stable part nearest to p = 0 if that root is
+  // real, else NaN.
+  S slowest_real_pole(const Vector<S>& theta, int g) const {
+    const Vector<S> f1 = e_.stable_part(theta, g);
+    const Eigen::Index n = f1.size();
+    if (n == 0) return std::numeric_limits<S>::quiet_NaN();
+    Matrix<S> companion = Matrix<S>::Zero(n, n);
+    for (Eigen::Index i = 0; i + 1 < n; ++i) companion(i + 1, i) = 1;
+    for (Eigen::Index i = 0; i < n; ++i) companion(0, i) = -f1(i);
+    const Eigen::EigenSolver<Matrix<S>> eig(companion, false);
+    Eigen::Index k = 0;
+    for (Eigen::Index i = 1; i < n; ++i) {
+      if (std::abs(eig.eigenvalues()(i)) < std::abs(eig.eigenvalues()(k))) {
+        k = i;
+      }
+    }
+    const std::complex<S> root = eig.eigenvalues()(k);
+    if (std::abs(root.imag()) > S(1e-9) * std::abs(root)) {
+      return std::numeric_limits<S>::quiet_NaN();
+    }
+    return -root.real();
+  }
+
+  // A pole creeping to the origin: over the last kCreepWindow iterations
+  // the slowest pole stayed real, its rate fell at every iteration and by
+  // at least 10 % in all, while the loss did not rise. The loss minimum
+  // of the structure then lies at (or beyond) p = 0: on the stability
+  // boundary, where the iteration cannot arrive in finitely many steps.
+  static bool creeps_to_origin(const std::vector<S>& rate,
+                               const std::vector<S>& losses) {
+    constexpr int kCreepWindow = 5;
+    const int n = static_cast<int>(rate.size());
+    if (n < kCreepWindow || static_cast<int>(losses.size()) != n) return false;
+    for (int i = n - kCreepWindow; i < n; ++i) {
+      if (!std::isfinite(rate[i]) || !(rate[i] > 0)) return false;
+      if (!std::isfinite(losses[i])) return false;
+      if (i > n - kCreepWindow) {
+        if (!(rate[i] < rate[i - 1])) return false;
+        if (losses[i] > losses[i - 1]) return false;
+      }
+    }
+    return rate[n - 1] <= S(0.9) * rate[n - kCreepWindow];
+  }
+
   void store(Run<S>& run, const Matrix<S>& cov,
              const std::vector<int>& index) const {
     for (std::size_t a = 0; a < index.size(); ++a) {
@@ -1506,6 +1708,10 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
   result->iterations = best.iterations;
   result->converged = best.converged;
   result->determined = best.determined;
+  result->clipped = best.clipped;
+  result->clipped_iterations = best.clipped_iterations;
+  result->integrator_suspected = best.integrator_suspected;
+  result->loss_history = best.losses;
   result->stable = best.stable;
   result->reason = best.reason;
   result->cutoff = best_cutoff;
