@@ -69,19 +69,31 @@ struct ArmaResult {
 
 namespace bj_detail {
 
-// y = b(q^-1) / a(q^-1) x, a(0) = 1, at rest (direct form II transposed).
+// y = b(q^-1) / a(q^-1) x, a(0) = 1, at rest (direct form II transposed;
+// the coefficients padded to one length so that the inner loop has no
+// branches: this filter runs a few dozen times per RIVC iteration).
 template <typename S>
 void filter_dt(const Vector<S>& b, const Vector<S>& a, const S* x,
                Eigen::Index n, S* y) {
   const Eigen::Index m = std::max(b.size(), a.size());
+  if (m <= 1) {
+    const S g = b.size() > 0 ? b(0) : S(0);
+    for (Eigen::Index k = 0; k < n; ++k) y[k] = g * x[k];
+    return;
+  }
+  std::vector<S> bp(static_cast<std::size_t>(m), S(0));
+  std::vector<S> ap(static_cast<std::size_t>(m), S(0));
   std::vector<S> z(static_cast<std::size_t>(m), S(0));
+  for (Eigen::Index i = 0; i < b.size(); ++i) bp[i] = b(i);
+  for (Eigen::Index i = 1; i < a.size(); ++i) ap[i] = a(i);
+  const S b0 = bp[0];
   for (Eigen::Index k = 0; k < n; ++k) {
-    const S out = (b.size() > 0 ? b(0) : S(0)) * x[k] + z[0];
-    for (Eigen::Index i = 1; i < m; ++i) {
-      const S bi = i < b.size() ? b(i) : S(0);
-      const S ai = i < a.size() ? a(i) : S(0);
-      z[i - 1] = bi * x[k] - ai * out + (i < m - 1 ? z[i] : S(0));
+    const S xk = x[k];
+    const S out = b0 * xk + z[0];
+    for (Eigen::Index i = 1; i < m - 1; ++i) {
+      z[i - 1] = bp[i] * xk - ap[i] * out + z[i];
     }
+    z[m - 2] = bp[m - 1] * xk - ap[m - 1] * out;
     y[k] = out;
   }
 }
@@ -278,7 +290,8 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   auto loss = [&](const Vector<S>& p, Vector<S>& e) -> S {
     Vector<S> dpoly, cpoly;
     polys(p, dpoly, cpoly);
-    e = filter_dt<S>(dpoly, cpoly, Vector<S>(x));
+    e.resize(n);
+    filter_dt<S>(dpoly, cpoly, xi, n, e.data());
     const S v = e.squaredNorm() / static_cast<S>(n);
     return std::isfinite(v) ? v : std::numeric_limits<S>::infinity();
   };
@@ -286,13 +299,13 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   Vector<S> e;
   S v = loss(eta, e);
   Matrix<S> J(n, np);
-  Matrix<S> inverse_gram;
+  Vector<S> xc(n), ec(n);
   auto jacobian = [&](const Vector<S>& p, const Vector<S>& err) {
     Vector<S> dpoly, cpoly;
     polys(p, dpoly, cpoly);
     const Vector<S> one = Vector<S>::Ones(1);
-    const Vector<S> xc = filter_dt<S>(one, cpoly, Vector<S>(x));
-    const Vector<S> ec = filter_dt<S>(one, cpoly, err);
+    filter_dt<S>(one, cpoly, xi, n, xc.data());
+    filter_dt<S>(one, cpoly, err.data(), n, ec.data());
     for (int i = 1; i <= nd; ++i) {
       J.col(i - 1).head(i).setZero();
       J.col(i - 1).tail(n - i) = xc.head(n - i);
@@ -305,20 +318,29 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   result->converged = nc == 0;  // AR: the LS solution is the minimum
   for (int it = 0; nc > 0 && it < settings.max_iterations; ++it) {
     jacobian(eta, e);
-    Vector<S> step;
-    if (!least_squares<S>(J, e, step)) {
+    // Gauss-Newton direction from the normal equations (np is small; the
+    // step is checked by the loss below, so their conditioning only
+    // matters for a rank-deficient J, refused here).
+    const Matrix<S> gram = J.transpose() * J;
+    const Eigen::LDLT<Matrix<S>> ldlt(gram);
+    const auto pivots = ldlt.vectorD();
+    if (ldlt.info() != Eigen::Success ||
+        !(pivots.minCoeff() > std::numeric_limits<S>::epsilon() * S(np) *
+                                  pivots.cwiseAbs().maxCoeff())) {
       return numerical_failure(
           "the ARMA Gauss-Newton step is rank deficient "
           "(ARMA orders too high for the noise?)");
     }
+    const Vector<S> step = ldlt.solve(J.transpose() * e);
     S alpha = 1;
     bool improved = false;
     Vector<S> trial, e_trial;
+    S v_trial = v;
     for (int h = 0; h < 20; ++h, alpha /= 2) {
       trial = eta - alpha * step;
       project(trial);
-      const S vt = loss(trial, e_trial);
-      if (vt < v) {
+      v_trial = loss(trial, e_trial);
+      if (v_trial < v) {
         improved = true;
         break;
       }
@@ -328,9 +350,10 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
       result->converged = true;  // no descent: a (local) minimum
       break;
     }
-    const S decrease = (v - loss(trial, e_trial)) / v;
+    const S decrease = (v - v_trial) / v;
     eta = trial;
-    v = loss(eta, e);
+    v = v_trial;
+    e.swap(e_trial);
     if (decrease < settings.tolerance) {
       result->converged = true;
       break;
@@ -535,12 +558,16 @@ class BjIteration {
     fpoly.tail(nf) = f;
     // p'^m u / F^2, m = 0..2 nf: x_hat and its prefiltered derivatives.
     const Vector<S> f2 = conv<S>(fpoly, fpoly);
-    Matrix<S> U2, U1;
+    // The large signal matrices are members, reused from one iteration to
+    // the next (no fresh pages per iteration).
+    Matrix<S>& U2 = u2_;
+    Matrix<S>& U1 = u1_;
     filter_input(f2.tail(2 * nf), U2);
     filter_input(f, U1);
     x_hat = Vector<S>::Zero(n_);
     for (int j = 0; j < nb; ++j) x_hat += b(j) * U1.col(nb - 1 - j);
-    Matrix<S> Xf = Matrix<S>::Zero(n_, nf + 1);  // p'^i x_hat / F
+    Matrix<S>& Xf = xf_;  // p'^i x_hat / F
+    Xf.setZero(n_, nf + 1);
     for (int i = 0; i <= nf; ++i) {
       for (int j = 0; j < nb; ++j) {
         Xf.col(i) += b(j) * U2.col(nb - 1 - j + i);
@@ -549,27 +576,34 @@ class BjIteration {
     const Vector<S> xi = y_ - x_hat;
     // p'^i y / F = p'^i x_hat / F + p'^i xi / F (xi linear between
     // samples): exact where the model fits, as refined_iv.hpp does.
-    Matrix<S> E;
+    Matrix<S>& Yf = yf_;
     riv_detail::filter_derivatives<S>(f, S(1), InterSample::kFoh, clock_,
-                                      xi.data(), E);
-    const Matrix<S> Yf = Xf + E;
+                                      xi.data(), Yf);
+    Yf += Xf;
 
     // Instruments: closed loop, from the loop driven by r.
-    Matrix<S> Zx = Xf, Zu = U1;
+    const Matrix<S>* Zx = &Xf;
+    const Matrix<S>* Zu = &U1;
+    Matrix<S> loop_x, loop_u;
     if (problem_.closed_loop()) {
-      Status s = closed_loop_instruments(fpoly, b, Zx, Zu);
+      Status s = closed_loop_instruments(fpoly, b, loop_x, loop_u);
       if (!s.ok()) return s;
+      Zx = &loop_x;
+      Zu = &loop_u;
     }
 
     const int np = nf + nb;
-    Matrix<S> Phi(n_, np), Z(n_, np);
+    Matrix<S>& Phi = phi_;
+    Matrix<S>& Z = z_;
+    Phi.resize(n_, np);
+    Z.resize(n_, np);
     for (int i = 0; i < nf; ++i) {
       Phi.col(i) = -Yf.col(nf - 1 - i);
-      Z.col(i) = -Zx.col(nf - 1 - i);
+      Z.col(i) = -Zx->col(nf - 1 - i);
     }
     for (int j = 0; j < nb; ++j) {
       Phi.col(nf + j) = U1.col(nb - 1 - j);
-      Z.col(nf + j) = Zu.col(nb - 1 - j);
+      Z.col(nf + j) = Zu->col(nb - 1 - j);
     }
     Vector<S> target = Yf.col(nf);
 
@@ -581,11 +615,13 @@ class BjIteration {
       }
       if (arma.c.size() > 1 || arma.d.size() > 1) {
         // The discrete part of the prefilter, D / C (eq. 2.9's 1/H).
+        // (In place: the direct form reads x_k before it writes y_k.)
         for (int i = 0; i < np; ++i) {
-          Phi.col(i) = filter_dt<S>(arma.d, arma.c, Vector<S>(Phi.col(i)));
-          Z.col(i) = filter_dt<S>(arma.d, arma.c, Vector<S>(Z.col(i)));
+          filter_dt<S>(arma.d, arma.c, Phi.col(i).data(), n_,
+                       Phi.col(i).data());
+          filter_dt<S>(arma.d, arma.c, Z.col(i).data(), n_, Z.col(i).data());
         }
-        target = filter_dt<S>(arma.d, arma.c, target);
+        filter_dt<S>(arma.d, arma.c, target.data(), n_, target.data());
       }
     }
     offline_iv_detail::IvSolution<S> solution;
@@ -649,6 +685,7 @@ class BjIteration {
   S sigma_;
   riv_detail::Clock<S> clock_;
   Vector<S> y_, u_, r_;
+  mutable Matrix<S> u1_, u2_, xf_, yf_, phi_, z_;
 };
 
 }  // namespace bj_detail
