@@ -22,11 +22,20 @@
 ## record), @var{init_method} 'srivc'; @var{tol} (1e-6), @var{maxiter}
 ## (30).
 ##
-## @var{M_G}: the plant, a continuous-time @code{idpoly} with its SRIVC
-## covariance (stage 2; it assumes white output noise and does not include
-## the stage-1 estimation error of u_hat: with coloured noise it is too
-## small, by 5-6 times in @file{bench/rivc_mc.m}'s closed loop);
-## @var{M_T}: the stage-1 model u/r (@code{idpoly}); @var{uhat}.
+## @var{M_G}: the plant, a continuous-time @code{idpoly} with the
+## covariance of the two-stage estimator (derived from the closed-loop IV
+## estimate, eqs. 2.47-2.50, at both stages; refined_iv_bj.hpp,
+## @code{two_stage_covariance}): linearising both stages, theta2 - theta2o
+## = sum_t w(t), w(t) = M2 zeta2(t) eps2(t) - K zeta1(t) eps1(t), with M_k
+## = (Z_k' Phi_k)^-1, eps_k the stages' residuals (coloured, correlated
+## through the loop), K = M2 Z2' G dU M1 the effect of the stage-1 error
+## of u_hat (dU = d u_hat / d theta1), and its covariance the long-run
+## variance of w (Bartlett lag window, 8 times the residuals' decorrelation
+## lag). Stage 2's own SRIVC covariance (white noise, u_hat taken as exact:
+## 5-6 times too small in @file{bench/rivc_mc.m}'s closed loop) is in
+## @code{M_G.Report.Parameters.Stage2Covariance}, the window length in
+## @code{.CovarianceLags}. @var{M_T}: the stage-1 model u/r
+## (@code{idpoly}); @var{uhat}.
 ##
 ## @strong{Example}
 ## @example

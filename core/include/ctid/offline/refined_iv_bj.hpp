@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -605,7 +606,8 @@ class BjIteration {
       Phi.col(nf + j) = U1.col(nb - 1 - j);
       Z.col(nf + j) = Zu->col(nb - 1 - j);
     }
-    Vector<S> target = Yf.col(nf);
+    Vector<S>& target = target_;
+    target = Yf.col(nf);
 
     if (refined) {
       Status s = arma_estimate<S>(xi.data(), n_, problem_.nd, problem_.nc,
@@ -686,6 +688,25 @@ class BjIteration {
   riv_detail::Clock<S> clock_;
   Vector<S> y_, u_, r_;
   mutable Matrix<S> u1_, u2_, xf_, yf_, phi_, z_;
+  mutable Vector<S> target_;
+
+ public:
+  // The last step's prefiltered instruments Z, regressors Phi and target
+  // (scaled time; the two-stage covariance of cl2srivc reads them).
+  const Matrix<S>& instruments() const { return z_; }
+  const Matrix<S>& regressors() const { return phi_; }
+  const Vector<S>& target() const { return target_; }
+  // B/F s at the samples for a sampled signal s linear between samples
+  // (theta scaled).
+  Vector<S> simulate_signal(const Vector<S>& theta, const S* s) const {
+    const int nf = problem_.nf, nb = problem_.nb;
+    Matrix<S> X;
+    riv_detail::filter_derivatives<S>(theta.head(nf), S(1), InterSample::kFoh,
+                                      clock_, s, X);
+    Vector<S> x = Vector<S>::Zero(n_);
+    for (int j = 0; j < nb; ++j) x += theta(nf + j) * X.col(nb - 1 - j);
+    return x;
+  }
 };
 
 }  // namespace bj_detail
@@ -812,17 +833,158 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
 
 template <typename S>
 struct Cl2srivcResult {
-  RivResult<S> plant;        // stage 2: y on u_hat
+  RivResult<S> plant;        // stage 2: y on u_hat (its covariance: SRIVC's)
   RivResult<S> sensitivity;  // stage 1: u on r
+  // The two-stage estimator's covariance of [f b] (see two_stage_covariance;
+  // empty when the structure has fixed parameters, offsets or initial
+  // states, which it does not model).
+  Matrix<S> covariance;
+  int covariance_lags = 0;  // the lag window's length L
 };
+
+namespace bj_detail {
+
+// The IV pieces of one SRIVC stage at its estimate, in the stage's scaled
+// time (sigma = |F(0)|^(1/nf)): instruments Z, M = (Z^T Phi)^-1, the IV
+// residual eps = target - Phi theta', theta' and the scale factors.
+template <typename S>
+struct StagePieces {
+  Matrix<S> Z, M;
+  Vector<S> eps, theta, scale;
+  S sigma = 1;
+};
+
+template <typename S>
+Status stage_pieces(const RivcProblem<S>& problem, const RivcData<S>& data,
+                    const Vector<S>& theta, StagePieces<S>& out,
+                    std::unique_ptr<BjIteration<S>>& iteration) {
+  const int nf = problem.nf, nb = problem.nb;
+  out.sigma = std::pow(std::abs(theta(nf - 1)), S(1) / nf);
+  if (!(out.sigma > 0) || !std::isfinite(out.sigma)) out.sigma = S(1) / data.ts;
+  out.scale = scale_factors<S>(nf, nb, out.sigma);
+  out.theta = theta.cwiseProduct(out.scale);
+  iteration = std::make_unique<BjIteration<S>>(problem, data, out.sigma);
+  Vector<S> next, x_hat;
+  Matrix<S> inverse_gram;
+  ArmaResult<S> arma;
+  S condition = 0;
+  Status s = iteration->step(out.theta, ArmaSettings<S>(), false, next,
+                             inverse_gram, arma, x_hat, condition);
+  if (!s.ok()) return s;
+  out.Z = iteration->instruments();
+  const Matrix<S> zphi = out.Z.transpose() * iteration->regressors();
+  const Eigen::FullPivLU<Matrix<S>> lu(zphi);
+  if (!lu.isInvertible()) {
+    return numerical_failure("the instrumental product matrix is singular");
+  }
+  out.M = lu.inverse();
+  out.eps = iteration->target() - iteration->regressors() * out.theta;
+  return Status::Ok();
+}
+
+// First lag at which the sample autocorrelation of x falls below `level`
+// in magnitude (at most max_lag).
+template <typename S>
+Eigen::Index decorrelation_lag(const Vector<S>& x, S level,
+                               Eigen::Index max_lag) {
+  const Eigen::Index n = x.size();
+  const S r0 = x.squaredNorm();
+  if (!(r0 > 0)) return 1;
+  for (Eigen::Index tau = 1; tau < max_lag; ++tau) {
+    const S r = x.head(n - tau).dot(x.tail(n - tau));
+    if (std::abs(r / r0) < level) return tau;
+  }
+  return max_lag;
+}
+
+}  // namespace bj_detail
+
+// The covariance of the two-stage estimate (CL2SRIVC), derived here: the
+// thesis' closed-loop IV estimate (eq. 2.47, instruments eq. 2.48-2.50)
+// at the two stages, with the first stage's u_hat = B1/F1 r in place of
+// the loop's noise-free input. Linearising both IV equations Z_k^T
+// (target_k - Phi_k theta_k) = 0 about the true parameters,
+//   theta1 - theta1o = M1 sum zeta1(t) eps1(t),
+//   theta2 - theta2o = M2 sum zeta2(t) eps2(t) - M2 Z2^T D (theta1 - theta1o),
+// M_k = (Z_k^T Phi_k)^-1, eps_k the IV residuals (eps1 ~ u - u_hat,
+// eps2 ~ y - G u_hat: coloured, both driven by the loop's noise), and D =
+// G dU, dU = d u_hat / d theta1, whose columns are the first stage's own
+// noise-free instruments (d u_hat / d b_j = p^j r / F1, d u_hat / d f_i =
+// -p^i u_hat / F1, eq. 2.48 with x_hat = u_hat). So theta2 - theta2o =
+// sum_t w(t), w(t) = M2 zeta2(t) eps2(t) - K zeta1(t) eps1(t), K = M2 Z2^T
+// D M1, and its covariance is the long-run variance of w: sum over lags
+// |tau| <= L of (1 - |tau|/(L+1)) sum_t w(t) w(t+tau)^T (Bartlett weights,
+// positive semi-definite), L = 8 times the lag at which the residuals'
+// autocorrelation falls below 0.05 (at most N/4). With white eps2 and no
+// first-stage error this is SRIVC's sigma^2 (Z^T Z)^-1 (eq. 2.13).
+template <typename S>
+Status two_stage_covariance(const RivProblem<S>& plant,
+                            const RivProblem<S>& loop, const S* y,
+                            const S* u, const S* r, Eigen::Index n, S ts,
+                            Cl2srivcResult<S>* result) {
+  using namespace bj_detail;
+  RivcProblem<S> p1, p2;
+  p1.nb = loop.channels[0].nb;
+  p1.nf = loop.nf[0];
+  p1.nk = loop.channels[0].nk;
+  p1.u_rule = loop.channels[0].rule;
+  p2.nb = plant.channels[0].nb;
+  p2.nf = plant.nf[0];
+  p2.nk = plant.channels[0].nk;
+  p2.u_rule = plant.channels[0].rule;
+  const Vector<S>& u_hat = result->sensitivity.simulated;
+  const RivcData<S> d1{u, r, n, ts};
+  const RivcData<S> d2{y, u_hat.data(), n, ts};
+  StagePieces<S> s1, s2;
+  std::unique_ptr<BjIteration<S>> it1, it2;
+  Status status = stage_pieces(p1, d1, result->sensitivity.theta, s1, it1);
+  if (!status.ok()) return status;
+  status = stage_pieces(p2, d2, result->plant.theta, s2, it2);
+  if (!status.ok()) return status;
+  // D = G dU: the stage-1 instruments (scaled stage-1 time) through the
+  // stage-2 model (its own scaled time; same sampled signals).
+  const int np1 = static_cast<int>(s1.theta.size());
+  const int np2 = static_cast<int>(s2.theta.size());
+  Matrix<S> D(n, np1);
+  for (int j = 0; j < np1; ++j) {
+    const Vector<S> col = s1.Z.col(j);
+    D.col(j) = it2->simulate_signal(s2.theta, col.data());
+  }
+  const Matrix<S> K = s2.M * (s2.Z.transpose() * D) * s1.M;
+  const Matrix<S> W = s2.Z * s2.M.transpose();  // rows: (M2 zeta2(t))^T
+  Matrix<S> w = (W.array().colwise() * s2.eps.array()).matrix();
+  w.array() -= (s1.Z * K.transpose()).array().colwise() * s1.eps.array();
+  const Eigen::Index max_lag = std::max<Eigen::Index>(1, n / 4);
+  const Eigen::Index tau0 =
+      std::max(decorrelation_lag<S>(s1.eps, S(0.05), max_lag),
+               decorrelation_lag<S>(s2.eps, S(0.05), max_lag));
+  const Eigen::Index L = std::min<Eigen::Index>(max_lag, 8 * tau0);
+  Matrix<S> cov = w.transpose() * w;
+  for (Eigen::Index tau = 1; tau <= L; ++tau) {
+    const Matrix<S> g =
+        w.topRows(n - tau).transpose() * w.bottomRows(n - tau);
+    const S weight = S(1) - static_cast<S>(tau) / static_cast<S>(L + 1);
+    cov += weight * (g + g.transpose());
+  }
+  const Vector<S> inv = s2.scale.cwiseInverse();
+  result->covariance = inv.asDiagonal() * cov * inv.asDiagonal();
+  result->covariance_lags = static_cast<int>(L);
+  if (!result->covariance.allFinite() || np2 < 1) {
+    return numerical_failure("the two-stage covariance is not finite");
+  }
+  return Status::Ok();
+}
 
 // CL2SRIVC (two-stage SRIVC): stage 1 SRIVC of u on r (orders `loop`),
 // stage 2 SRIVC of y on u_hat = the stage-1 simulation (orders `plant`,
-// u_hat with the intersample rule of plant.channels[0]).
+// u_hat with the intersample rule of plant.channels[0]). settings.
+// theta_init starts stage 2, loop_theta_init stage 1 (empty: the
+// automatic start). The covariance: two_stage_covariance.
 template <typename S>
 Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
                 const RivSettings<S>& settings, const S* y, const S* u,
-                const S* r, Eigen::Index n, S ts, Cl2srivcResult<S>* result) {
+                const S* r, Eigen::Index n, S ts, Cl2srivcResult<S>* result,
+                const Vector<S>& loop_theta_init = Vector<S>()) {
   if (result == nullptr) return bad_input("cl2srivc: no result");
   if (plant.num_groups() != 1 || plant.channels.size() != 1 ||
       loop.num_groups() != 1 || loop.channels.size() != 1) {
@@ -840,9 +1002,11 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
   d1.w = r;
   d1.num_samples = n;
   d1.ts = ts;
+  RivSettings<S> settings1 = settings;
+  settings1.theta_init = loop_theta_init;
   // A stage that does not converge returns its last iterate (reported as
   // kNotConverged at the end, as refined_iv does).
-  Status status = refined_iv<S>(loop, settings, d1, &result->sensitivity);
+  Status status = refined_iv<S>(loop, settings1, d1, &result->sensitivity);
   std::string not_converged;
   if (status.code() == ErrorCode::kNotConverged) {
     not_converged = "stage 1 (u on r): " + status.message();
@@ -861,6 +1025,20 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
     not_converged += "stage 2 (y on u_hat): " + status.message();
   } else if (!status.ok()) {
     return Status(status.code(), "stage 2 (y on u_hat): " + status.message());
+  }
+  result->covariance.resize(0, 0);
+  result->covariance_lags = 0;
+  bool plain = true;
+  for (const RivProblem<S>* stage : {&plant, &loop}) {
+    plain = plain && stage->fixed.empty() && !stage->output_offset &&
+            !stage->initial_state && stage->channels[0].delay == 0;
+  }
+  if (plain) {
+    status = two_stage_covariance<S>(plant, loop, y, u, r, n, ts, result);
+    if (!status.ok()) {
+      return Status(status.code(),
+                    "the two-stage covariance: " + status.message());
+    }
   }
   if (!not_converged.empty()) {
     return Status(ErrorCode::kNotConverged, not_converged);
