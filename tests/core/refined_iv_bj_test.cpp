@@ -322,18 +322,31 @@ TEST(Clrivc, NoiseFreeExact) {
       << res.theta.transpose();
 }
 
-TEST(Cl2srivc, NoiseFreeExact) {
-  const ClosedLoopRecord rec(32);
-  RivProblem<double> plant, loop;
+// CL2SRIVC's stages on ClosedLoopRecord: the plant [1 2 0] on u_hat (FOH),
+// the loop u/r [4 4 0] (exact: F Nc / Acl).
+RivProblem<double> cl2srivc_plant() {
+  RivProblem<double> plant;
   plant.nf = {2};
   RivChannel c;
   c.nb = 1;
   c.rule = InterSample::kFoh;
   plant.channels.push_back(c);
+  return plant;
+}
+
+RivProblem<double> cl2srivc_loop() {
+  RivProblem<double> loop;
   loop.nf = {4};
   RivChannel cl;
   cl.nb = 4;
   loop.channels.push_back(cl);
+  return loop;
+}
+
+TEST(Cl2srivc, NoiseFreeExact) {
+  const ClosedLoopRecord rec(32);
+  const RivProblem<double> plant = cl2srivc_plant();
+  const RivProblem<double> loop = cl2srivc_loop();
   RivSettings<double> settings;
   settings.tolerance = 1e-12;
   settings.max_iterations = 100;
@@ -365,16 +378,8 @@ TEST(Cl2srivc, NoiseFreeExact) {
 // point: the starts only decide where the iterations begin.
 TEST(Cl2srivc, GivenStartsReachTheSameEstimate) {
   const ClosedLoopRecord rec(33);
-  RivProblem<double> plant, loop;
-  plant.nf = {2};
-  RivChannel c;
-  c.nb = 1;
-  c.rule = InterSample::kFoh;
-  plant.channels.push_back(c);
-  loop.nf = {4};
-  RivChannel cl;
-  cl.nb = 4;
-  loop.channels.push_back(cl);
+  const RivProblem<double> plant = cl2srivc_plant();
+  const RivProblem<double> loop = cl2srivc_loop();
   RivSettings<double> settings;
   settings.tolerance = 1e-12;
   settings.max_iterations = 100;
