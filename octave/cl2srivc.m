@@ -91,6 +91,26 @@ endfunction
 %!               1e-6, 50);
 %! assert (abs (M.theta - [2 3 3]) < 0.1 * [2 3 3]);
 
+%!test  # coloured noise through the loop: the two-stage covariance
+%! # (bench/rivc_mc.m: its sd matches the Monte Carlo spread, stage 2's
+%! # SRIVC sd is 5-6 times too small)
+%! randn ("state", 5);
+%! r5 = kron (sign (randn (N / 100, 1)), ones (100, 1));
+%! v = filter ([1 0.3], [1 -0.95], 0.005 * randn (N, 1));
+%! yn = lsim (c2d (feedback (G * Mc, 1), Ts), r5) ...
+%!      + lsim (c2d (feedback (1, G * Mc), Ts), v);
+%! un = lsim (c2d (feedback (Mc, G), Ts), r5) ...
+%!      - lsim (c2d (feedback (Mc, G), Ts), v);
+%! M = cl2srivc (iddata (yn, un, Ts), r5, [1 2 0], [4 4 0]);
+%! P = M.covariance;
+%! assert (P, P.', 1e-12 * norm (P));
+%! assert (min (eig (P)) > 0);
+%! sd = sqrt (diag (P)).';
+%! sd2 = sqrt (diag (M.Report.Parameters.Stage2Covariance)).';
+%! assert (all (sd > 2 * sd2), sprintf ("%g ", sd ./ sd2));
+%! assert (all (abs (M.theta - [2 3 3]) < 4 * sd));
+%! assert (M.Report.Parameters.CovarianceLags >= 1);
+
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0])
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2], [4 4 0])
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0.5])

@@ -959,10 +959,13 @@ Status two_stage_covariance(const RivProblem<S>& plant,
       std::max(decorrelation_lag<S>(s1.eps, S(0.05), max_lag),
                decorrelation_lag<S>(s2.eps, S(0.05), max_lag));
   const Eigen::Index L = std::min<Eigen::Index>(max_lag, 8 * tau0);
-  Matrix<S> cov = w.transpose() * w;
+  // Coefficient-wise products (np2 x np2 from N rows): no blocked,
+  // possibly multi-threaded GEMM for these thin matrices.
+  Matrix<S> cov = w.transpose().lazyProduct(w);
+  Matrix<S> g(np2, np2);
   for (Eigen::Index tau = 1; tau <= L; ++tau) {
-    const Matrix<S> g =
-        w.topRows(n - tau).transpose() * w.bottomRows(n - tau);
+    g.noalias() =
+        w.topRows(n - tau).transpose().lazyProduct(w.bottomRows(n - tau));
     const S weight = S(1) - static_cast<S>(tau) / static_cast<S>(L + 1);
     cov += weight * (g + g.transpose());
   }
