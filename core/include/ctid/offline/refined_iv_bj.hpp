@@ -911,10 +911,11 @@ Eigen::Index decorrelation_lag(const Vector<S>& x, S level,
 // G dU, dU = d u_hat / d theta1, whose columns are the first stage's own
 // noise-free instruments (d u_hat / d b_j = p^j r / F1, d u_hat / d f_i =
 // -p^i u_hat / F1, eq. 2.48 with x_hat = u_hat). So theta2 - theta2o =
-// sum_t w(t), w(t) = M2 zeta2(t) eps2(t) - K zeta1(t) eps1(t), K = M2 Z2^T
-// D M1, and its covariance is the long-run variance of w: sum over lags
-// |tau| <= L of (1 - |tau|/(L+1)) sum_t w(t) w(t+tau)^T (Bartlett weights,
-// positive semi-definite), L = 8 times the lag at which the residuals'
+// sum_t w(t), w(t) = a(t) eps2(t) + b(t) eps1(t), a = M2 zeta2, b = -K
+// zeta1, K = M2 Z2^T D M1, and its covariance sums a(t) a(s)^T E eps2(t)
+// eps2(s) and the three like terms over all pairs (t, s): the residuals'
+// auto- and cross-covariances at lags |tau| <= L, weighted by (1 -
+// |tau|/(L+1)) (Bartlett), L = 8 times the lag at which the residuals'
 // autocorrelation falls below 0.05 (at most N/4). With white eps2 and no
 // first-stage error this is SRIVC's sigma^2 (Z^T Z)^-1 (eq. 2.13).
 template <typename S>
@@ -951,23 +952,39 @@ Status two_stage_covariance(const RivProblem<S>& plant,
     D.col(j) = it2->simulate_signal(s2.theta, col.data());
   }
   const Matrix<S> K = s2.M * (s2.Z.transpose() * D) * s1.M;
-  const Matrix<S> W = s2.Z * s2.M.transpose();  // rows: (M2 zeta2(t))^T
-  Matrix<S> w = (W.array().colwise() * s2.eps.array()).matrix();
-  w.array() -= (s1.Z * K.transpose()).array().colwise() * s1.eps.array();
+  // a(t) = M2 zeta2(t), b(t) = -K zeta1(t) (rows), deterministic given r.
+  const Matrix<S> a = s2.Z * s2.M.transpose();
+  const Matrix<S> b = -(s1.Z * K.transpose());
   const Eigen::Index max_lag = std::max<Eigen::Index>(1, n / 4);
   const Eigen::Index tau0 =
       std::max(decorrelation_lag<S>(s1.eps, S(0.05), max_lag),
                decorrelation_lag<S>(s2.eps, S(0.05), max_lag));
   const Eigen::Index L = std::min<Eigen::Index>(max_lag, 8 * tau0);
-  // Coefficient-wise products (np2 x np2 from N rows): no blocked,
-  // possibly multi-threaded GEMM for these thin matrices.
-  Matrix<S> cov = w.transpose().lazyProduct(w);
-  Matrix<S> g(np2, np2);
+  // Var sum_t (a(t) eps2(t) + b(t) eps1(t)) = sum_(t,s) [a(t) a(s)^T
+  // R22(s-t) + a(t) b(s)^T R21(s-t) + b(t) a(s)^T R12(s-t) + b(t) b(s)^T
+  // R11(s-t)], R_ij(tau) = E eps_i(t) eps_j(t+tau): the products of a, b
+  // summed exactly, the residuals' (cross-)covariances estimated and
+  // weighted by Bartlett's window. (A lag window on w(t) = a eps2 + b eps1
+  // itself would be biased low: sum_t a(t) eps2_hat(t) = 0 exactly.)
+  auto lagged = [&](const Matrix<S>& x, const Matrix<S>& y, Eigen::Index t) {
+    return Matrix<S>(
+        x.topRows(n - t).transpose().lazyProduct(y.bottomRows(n - t)));
+  };
+  auto rcov = [&](const Vector<S>& x, const Vector<S>& y, Eigen::Index t) {
+    return x.head(n - t).dot(y.tail(n - t)) / static_cast<S>(n);
+  };
+  Matrix<S> cov = lagged(a, a, 0) * rcov(s2.eps, s2.eps, 0) +
+                  lagged(b, b, 0) * rcov(s1.eps, s1.eps, 0);
+  const Matrix<S> ab0 = lagged(a, b, 0) * rcov(s2.eps, s1.eps, 0);
+  cov += ab0 + ab0.transpose();
   for (Eigen::Index tau = 1; tau <= L; ++tau) {
-    g.noalias() =
-        w.topRows(n - tau).transpose().lazyProduct(w.bottomRows(n - tau));
     const S weight = S(1) - static_cast<S>(tau) / static_cast<S>(L + 1);
-    cov += weight * (g + g.transpose());
+    const Matrix<S> aa = lagged(a, a, tau), bb = lagged(b, b, tau);
+    Matrix<S> ab = lagged(a, b, tau) * rcov(s2.eps, s1.eps, tau) +
+                   lagged(b, a, tau).transpose() * rcov(s1.eps, s2.eps, tau);
+    cov += weight * ((aa + aa.transpose()) * rcov(s2.eps, s2.eps, tau) +
+                     (bb + bb.transpose()) * rcov(s1.eps, s1.eps, tau) + ab +
+                     ab.transpose());
   }
   const Vector<S> inv = s2.scale.cwiseInverse();
   result->covariance = inv.asDiagonal() * cov * inv.asDiagonal();
