@@ -4,8 +4,10 @@
 ## written in plain Octave, the baseline of @file{rivc_octave_bench.m}:
 ## @var{iters} iterations from @var{theta} = [f b] (original time; no time
 ## scaling), nn = [nb nc nd nf]. Each iteration: the exact ZOH filters
-## p^i s / F(p) by the state recursion z(k+1) = Phi z(k) + g s(k) (a loop
-## over the samples, as the control package's lsim), the auxiliary model
+## p^i s / F(p) (the sampled state recursion z(k+1) = Phi z(k) + g s(k),
+## each state run as a discrete transfer function by the built-in
+## @code{filter}: vectorised, about 11 times faster than the loop over
+## the samples of the control package's lsim), the auxiliary model
 ## x_hat = B/F u through 1/F^2, the ARMA model of y - x_hat
 ## (Hannan-Rissanen, or the previous iteration's model, then Gauss-Newton
 ## with @code{filter}), the D/C
@@ -64,7 +66,11 @@ function [theta, P, C, D] = rivc_plain_octave (y, u, Ts, nn, theta, iters,
   P = s2 * inv (Z' * Z);
 endfunction
 
-## p^i s / F(p), i = 0..n (columns), exact for s held between samples.
+## p^i s / F(p), i = 0..n (columns), exact for s held between samples:
+## the ZOH-sampled state z(k+1) = Phi z(k) + g s(k) of 1/F, each state
+## as a discrete transfer function run by the built-in filter (vectorised;
+## numerators by the matrix determinant lemma, c (zI - Phi)^-1 g =
+## (det (zI - Phi + g c) - det (zI - Phi)) / det (zI - Phi)).
 function out = derivs (F, s, Ts)
   n = numel (F) - 1;
   d = F(2:end) / F(1);
@@ -72,14 +78,13 @@ function out = derivs (F, s, Ts)
   E = expm ([A, [zeros(n - 1, 1); 1]; zeros(1, n + 1)] * Ts);
   Phi = E(1:n, 1:n);
   g = E(1:n, n+1);
-  N = numel (s);
-  Zs = zeros (n, N);
-  z = zeros (n, 1);
-  for k = 1:N
-    Zs(:, k) = z;
-    z = Phi * z + g * s(k);
+  den = poly (Phi);
+  out = zeros (numel (s), n + 1);
+  for i = 1:n
+    num = poly (Phi - g * ((1:n) == i)) - den;
+    out(:, i) = filter ([0, num(2:end)], den, s);
   endfor
-  out = [Zs.', s - Zs.' * fliplr(d).'];
+  out(:, n+1) = s - out(:, 1:n) * fliplr(d).';
 endfunction
 
 function out = apply_num (num, count, R)

@@ -11,12 +11,20 @@
 //   nb, nc, nd, nf, nk, delay (continuous, time units), intersample
 //   (0 zoh, 1 foh), tol, maxiter, theta_init ([f b]), cutoffs,
 //   max_starts (the SRIVC start), arma_maxiter, controller_num,
-//   controller_den (descending powers of p); cl2srivc: cl_nb, cl_nf, cl_nk.
+//   controller_den (descending powers of p); cl2srivc: cl_nb, cl_nf, cl_nk,
+//   cl_theta_init (stage 1's start; theta_init starts stage 2).
 // info: converged, iterations, reason, C, D (q^-1), noise_variance (of e),
 // noise_covariance ([d c]), simulation_variance, simulated, condition,
-// start_theta; cl2srivc: cl_theta, cl_covariance, u_hat.
+// start_theta; cl2srivc: cl_theta, cl_covariance, u_hat, stage2_covariance
+// (stage 2's SRIVC covariance; cov is the two-stage estimator's),
+// covariance_lags.
 #include <algorithm>
 
+// mkoctfile compiles with -fopenmp: Eigen would run its products on
+// OpenMP threads, whose start-up and spinning cost more than the thin
+// (N x a few) products of these estimators gain, most of all on a loaded
+// machine (perf: half of cl2srivc's time in threaded GEMM).
+#define EIGEN_DONT_PARALLELIZE
 #include "ctid/offline/refined_iv_bj.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
@@ -79,6 +87,7 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const int cl_nb = opt.integer("cl_nb", 1);
   const int cl_nf = opt.integer("cl_nf", 1);
   const int cl_nk = opt.integer("cl_nk", 0);
+  const Eigen::MatrixXd cl_theta_init = opt.matrix("cl_theta_init");
   opt.finish();
   if (method == Method::kCl2srivc) {
     settings.start.max_iterations = settings.max_iterations;
@@ -105,8 +114,10 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                           "start_theta",
                           "cl_theta",
                           "cl_covariance",
-                          "u_hat"};
-  mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
+                          "u_hat",
+                          "stage2_covariance",
+                          "covariance_lags"};
+  mxArray* info = mxCreateStructMatrix(1, 1, 16, fields);
   ctid::Vector<double> theta;
   ctid::Matrix<double> cov;
 
@@ -139,11 +150,19 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     cl.nk = cl_nk;
     loop.channels.push_back(cl);
     ctid::Cl2srivcResult<double> res;
+    ctid::RivSettings<double> stage_settings = settings.start;
+    stage_settings.theta_init = settings.theta_init;
+    ctid::Vector<double> loop_start;
+    if (cl_theta_init.size() > 0) loop_start = cl_theta_init.reshaped();
     const ctid::Status status = ctid::cl2srivc<double>(
-        plant, loop, settings.start, record.y, record.u, r, n, record.ts, &res);
+        plant, loop, stage_settings, record.y, record.u, r, n, record.ts, &res,
+        loop_start);
     if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
     theta = res.plant.theta;
-    cov = res.plant.covariance;
+    cov = res.covariance.size() > 0 ? res.covariance : res.plant.covariance;
+    set_info(info, "stage2_covariance", to_output(res.plant.covariance));
+    set_info(info, "covariance_lags",
+             mxCreateDoubleScalar(res.covariance_lags));
     set_info(info, "converged",
              mxCreateLogicalScalar(res.plant.converged &&
                                    res.sensitivity.converged));

@@ -31,11 +31,18 @@
 ## @code{ArmaMethod} ('pem'; CONTSID's 'ivarma' is not implemented),
 ## @code{ArmaMaxIter} (50).
 ##
-## @var{M}: a continuous-time @code{idpoly} B/F with the covariance of
-## [f b], sigma_e^2 (sum zeta_f zeta_f')^-1 (eq. 2.13 with the innovation
-## variance sigma_e^2 of the noise model), @code{Report.NoiseModel}
-## (C, D, NoiseVariance, Ts) and @code{Report.Fit}. @var{C}, @var{D}:
-## the noise polynomials in q^-1 (rows [1 c1 ..], [1 d1 ..]). @var{RT2}:
+## @var{M}: the hybrid Box-Jenkins model as a continuous-time
+## @code{idpoly}: B(s)/F(s) with the covariance of [f b] (@code{M.theta},
+## @code{M.covariance}: sigma_e^2 (sum zeta_f zeta_f')^-1, eq. 2.13 with
+## the innovation variance sigma_e^2 of the noise model), and the noise
+## model in @code{M.C}, @code{M.D} (q^-1 at the data's Ts, as the
+## outputs @var{C}, @var{D}) and @code{M.NoiseVariance} = sigma_e^2;
+## @code{present (M)} shows it as "hybrid BJ" with C(z), D(z),
+## @code{getpvec}/@code{getcov} hold [b c d f] with the ARMA covariance
+## of [c d] (the plant/noise cross-covariance is not estimated: zero);
+## @code{Report.Parameters.NoiseModel} (C, D, NoiseVariance, Ts, the mark
+## of the hybrid model) and @code{Report.Fit}. @var{C}, @var{D}: the
+## noise polynomials in q^-1 (rows [1 c1 ..], [1 d1 ..]). @var{RT2}:
 ## 1 - var(y - x_hat)/var(y); @var{YIC}; @var{Cond_IPM}: the condition
 ## number of the instrumental product matrix; @var{AIC}:
 ## log(sigma_e^2) + 2 (nb + nf + nc + nd)/N. A run that does not
@@ -95,6 +102,28 @@ endfunction
 %! Mi = idpoly (1, [1.5 4], [1 0], [1 0], [1 1.2 4], 1, 0);
 %! M2 = rivc (iddata (x + v, u, Ts), Mi);
 %! assert (M2.theta, M.theta, 1e-4 * norm (M.theta));
+
+%!test  # the hybrid model: B/F in s, the noise model C/D (q^-1) in M
+%! randn ("state", 6);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0]);
+%! assert ({M.C, M.D}, {C, D});
+%! assert (M.NoiseVariance, M.Report.Parameters.NoiseModel.NoiseVariance);
+%! p = getpvec (M);  # [b0 b1 c1 d1 f1 f2]
+%! P = getcov (M);
+%! assert (p.', [M.B, C(2), D(2), M.F(2:3)]);
+%! assert (M.theta, [M.F(2:3), M.B]);
+%! assert (P([5 6 1 2], [5 6 1 2]), M.covariance, 1e-15);
+%! assert (P([1 2 5 6], [3 4]), zeros (4, 2));
+%! assert (sqrt (P(4, 4)) > 0 && sqrt (P(4, 4)) < 0.05);
+%! txt = evalc ("present (M)");
+%! assert (! isempty (strfind (txt, "hybrid BJ")), txt);
+%! assert (! isempty (strfind (txt, "C(z) = 1")), txt);
+%! assert (! isempty (strfind (txt, "D(z) = 1")), txt);
+%! ## The returned model restarts rivc (model-in form: orders and start).
+%! M2 = rivc (iddata (x + v, u, Ts), M);
+%! assert (M2.theta, M.theta, 1e-5 * norm (M.theta));
+%! assert (M2.D, M.D, 1e-4);
 
 %!test  # delay in samples
 %! xd = lsim (G, [zeros(3, 1); u(1:end-3)]);

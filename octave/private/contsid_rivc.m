@@ -141,6 +141,10 @@ function [M, info, d] = run_cl2srivc (args)
   [theta, cov, info] = call_mex (fname, d, r, e);
   info = derived (info, d, theta, cov);
   M = plant_model (fname, theta, cov, info, d, e);
+  ## cov is the two-stage estimator's; stage 2's own SRIVC covariance
+  ## (white noise, u_hat exact) for comparison.
+  M.Report.Parameters.Stage2Covariance = info.stage2_covariance;
+  M.Report.Parameters.CovarianceLags = info.covariance_lags;
 endfunction
 
 ## tfrivc (data, np, nz[, IODelay][, Name, Value]), 'NN', [nd nc]
@@ -492,8 +496,13 @@ function F = fit_struct (info, d, np)
               "FPE", info.noise_variance * (1 + np / n) / (1 - np / n));
 endfunction
 
-## The continuous plant as an idpoly (idctm) with the covariance of [f b],
-## the noise model in Report.NoiseModel (C, D in q^-1 at Ts).
+## The continuous plant as an idpoly (idctm) with the covariance of [f b]
+## (M.theta, M.covariance: CONTSID's [f b] as before); the noise model
+## (rivc, clrivc) in M.C, M.D (q^-1 at Ts: a hybrid model, marked by
+## Report.Parameters.NoiseModel.Ts, which present and display read) and
+## M.NoiseVariance, with the ARMA covariance in getcov's order (b c d f).
+## The plant/noise cross-covariance is not estimated (zero; in open loop
+## the two are asymptotically uncorrelated for a Box-Jenkins model).
 function M = plant_model (fname, theta, cov, info, d, e)
   nf = e.nf;
   F = [1, theta(1:nf).'];
@@ -512,4 +521,16 @@ function M = plant_model (fname, theta, cov, info, d, e)
                      "noise_variance", info.noise_variance, "method", fname,
                      "iterations", info.iterations,
                      "converged", info.converged, "Report", report));
+  if (numel (info.C) > 1 || numel (info.D) > 1)
+    nb = numel (B);
+    nc = numel (info.C) - 1;
+    nd = numel (info.D) - 1;
+    M = set (M, "C", info.C, "D", info.D);
+    full = zeros (nb + nc + nd + nf);
+    plant = [nb + nc + nd + (1:nf), 1:nb];   # [f b] in getpvec's order
+    noise = [nb + nc + (1:nd), nb + (1:nc)];  # [d c]
+    full(plant, plant) = cov;
+    full(noise, noise) = info.noise_covariance;
+    M = setcov (M, (full + full.') / 2);
+  endif
 endfunction

@@ -265,89 +265,139 @@ TEST(Rivc, BadInput) {
 }
 
 // Closed loop u = C(p) (r - y), C = (0.5 p + 1) / (0.1 p^2 + p), plant
-// 3 / (p^2 + 2p + 3): y = G C / (1 + G C) r, u = C / (1 + G C) r. The
-// controller is strictly proper so that u is continuous: the regressors
-// use the measured u, filtered as linear between samples (FOH), exact to
-// O((w Ts)^2) for a continuous u (a jump of u between samples, from a
-// biproper controller and a step in r, would be an O(Ts) error).
+// 3 / (p^2 + 2p + 3): y = G C / (1 + G C) r, u = C / (1 + G C) r, Ts =
+// 0.01 s, 6000 samples of a binary r held over 100 samples (the record of
+// both closed-loop tests). The controller is strictly proper so that u is
+// continuous: the regressors use the measured u, filtered as linear
+// between samples (FOH), exact to O((w Ts)^2) for a continuous u (a jump
+// of u between samples, from a biproper controller and a step in r, would
+// be an O(Ts) error).
+struct ClosedLoopRecord {
+  static constexpr double ts = 0.01;
+  static constexpr int n = 6000;
+  Eigen::VectorXd nc, dc, b, f, acl, fnc;
+  std::vector<double> r, y, u;
+
+  explicit ClosedLoopRecord(unsigned seed) : nc(2), dc(3), b(1), f(3) {
+    r = binary_input(n, 100, seed);
+    nc << 0.5, 1;
+    dc << 0.1, 1, 0;
+    b << 3;
+    f << 1, 2, 3;
+    const Eigen::VectorXd bnc = bj_detail::conv<double>(b, nc);
+    acl = bj_detail::conv<double>(f, dc);
+    acl.tail(bnc.size()) += bnc;
+    fnc = bj_detail::conv<double>(f, nc);
+    y = simulate_zoh(bnc, acl, r, ts);
+    u = simulate_zoh(fnc, acl, r, ts);
+  }
+  Eigen::VectorXd plant_theta() const {
+    Eigen::VectorXd t(3);
+    t << f(1), f(2), b(0);
+    return t;
+  }
+};
+
 TEST(Clrivc, NoiseFreeExact) {
-  const double ts = 0.01;
-  const int n = 6000;
-  const std::vector<double> r = binary_input(n, 100, 31);
-  Eigen::VectorXd nc(2), dc(3), b(1), f(3);
-  nc << 0.5, 1;
-  dc << 0.1, 1, 0;
-  b << 3;
-  f << 1, 2, 3;
-  const Eigen::VectorXd bnc = bj_detail::conv<double>(b, nc);
-  Eigen::VectorXd acl = bj_detail::conv<double>(f, dc);
-  acl.tail(bnc.size()) += bnc;
-  const std::vector<double> y = simulate_zoh(bnc, acl, r, ts);
-  const std::vector<double> u =
-      simulate_zoh(bj_detail::conv<double>(f, nc), acl, r, ts);
+  const ClosedLoopRecord rec(31);
   RivcProblem<double> problem;
   problem.nb = 1;
   problem.nf = 2;
   problem.nc = 1;
   problem.nd = 1;
   problem.u_rule = InterSample::kFoh;
-  problem.controller_num = nc;
-  problem.controller_den = dc;
-  problem.reference = r.data();
+  problem.controller_num = rec.nc;
+  problem.controller_den = rec.dc;
+  problem.reference = rec.r.data();
   RivcSettings<double> settings;
   settings.tolerance = 1e-10;
-  RivcData<double> data{y.data(), u.data(), n, ts};
+  RivcData<double> data{rec.y.data(), rec.u.data(), rec.n, rec.ts};
   RivcResult<double> res;
   const Status s = rivc<double>(problem, settings, data, &res);
   ASSERT_TRUE(s.ok()) << s.message();
-  Eigen::VectorXd t(3);
-  t << 2, 3, 3;
   // u is continuous, not piecewise linear: FOH filtering of u is exact
   // only to O((w Ts)^2) (Ts = 0.01 s, loop bandwidth ~10 rad/s: 1e-2 at
   // the fastest, ~1e-4 over the record).
-  EXPECT_LT(relative_error(res.theta, t), 1e-3) << res.theta.transpose();
+  EXPECT_LT(relative_error(res.theta, rec.plant_theta()), 1e-3)
+      << res.theta.transpose();
 }
 
-TEST(Cl2srivc, NoiseFreeExact) {
-  const double ts = 0.01;
-  const int n = 6000;
-  const std::vector<double> r = binary_input(n, 100, 32);
-  Eigen::VectorXd nc(2), dc(3), b(1), f(3);
-  nc << 0.5, 1;
-  dc << 0.1, 1, 0;
-  b << 3;
-  f << 1, 2, 3;
-  const Eigen::VectorXd bnc = bj_detail::conv<double>(b, nc);
-  Eigen::VectorXd acl = bj_detail::conv<double>(f, dc);
-  acl.tail(bnc.size()) += bnc;
-  const Eigen::VectorXd fnc = bj_detail::conv<double>(f, nc);
-  const std::vector<double> y = simulate_zoh(bnc, acl, r, ts);
-  const std::vector<double> u = simulate_zoh(fnc, acl, r, ts);
-  RivProblem<double> plant, loop;
+// CL2SRIVC's stages on ClosedLoopRecord: the plant [1 2 0] on u_hat (FOH),
+// the loop u/r [4 4 0] (exact: F Nc / Acl).
+RivProblem<double> cl2srivc_plant() {
+  RivProblem<double> plant;
   plant.nf = {2};
   RivChannel c;
   c.nb = 1;
   c.rule = InterSample::kFoh;
   plant.channels.push_back(c);
+  return plant;
+}
+
+RivProblem<double> cl2srivc_loop() {
+  RivProblem<double> loop;
   loop.nf = {4};
   RivChannel cl;
   cl.nb = 4;
   loop.channels.push_back(cl);
+  return loop;
+}
+
+TEST(Cl2srivc, NoiseFreeExact) {
+  const ClosedLoopRecord rec(32);
+  const RivProblem<double> plant = cl2srivc_plant();
+  const RivProblem<double> loop = cl2srivc_loop();
   RivSettings<double> settings;
   settings.tolerance = 1e-12;
   settings.max_iterations = 100;
   Cl2srivcResult<double> res;
-  const Status s = cl2srivc<double>(plant, loop, settings, y.data(), u.data(),
-                                    r.data(), n, ts, &res);
+  const Status s =
+      cl2srivc<double>(plant, loop, settings, rec.y.data(), rec.u.data(),
+                       rec.r.data(), rec.n, rec.ts, &res);
   ASSERT_TRUE(s.ok()) << s.message();
   // Stage 1 recovers u/r = F Nc / Acl exactly (ZOH r).
   Eigen::VectorXd t1(8);
-  t1 << acl.tail(4) / acl(0), fnc / acl(0);
+  t1 << rec.acl.tail(4) / rec.acl(0), rec.fnc / rec.acl(0);
   EXPECT_LT(relative_error(res.sensitivity.theta, t1), 1e-7);
-  Eigen::VectorXd t(3);
-  t << 2, 3, 3;
-  EXPECT_LT(relative_error(res.plant.theta, t), 1e-3)
+  EXPECT_LT(relative_error(res.plant.theta, rec.plant_theta()), 1e-3)
       << res.plant.theta.transpose();
+  // The two-stage covariance exists, is symmetric and positive
+  // semi-definite (Bartlett weights); on noise-free data it is at the
+  // level of the O((w Ts)^2) model error, far below the plant's scale.
+  ASSERT_EQ(res.covariance.rows(), 3);
+  EXPECT_LT((res.covariance - res.covariance.transpose()).norm(),
+            1e-12 * res.covariance.norm() + 1e-300);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(res.covariance);
+  EXPECT_GE(es.eigenvalues().minCoeff(),
+            -1e-10 * es.eigenvalues().cwiseAbs().maxCoeff());
+  EXPECT_LT(std::sqrt(res.covariance.diagonal().maxCoeff()), 1e-2);
+}
+
+// The same start given to cl2srivc's two stages (theta_init for stage 2,
+// loop_theta_init for stage 1) reproduces the automatic start's fixed
+// point: the starts only decide where the iterations begin.
+TEST(Cl2srivc, GivenStartsReachTheSameEstimate) {
+  const ClosedLoopRecord rec(33);
+  const RivProblem<double> plant = cl2srivc_plant();
+  const RivProblem<double> loop = cl2srivc_loop();
+  RivSettings<double> settings;
+  settings.tolerance = 1e-12;
+  settings.max_iterations = 100;
+  Cl2srivcResult<double> automatic, given;
+  ASSERT_TRUE(cl2srivc<double>(plant, loop, settings, rec.y.data(),
+                               rec.u.data(), rec.r.data(), rec.n, rec.ts,
+                               &automatic)
+                  .ok());
+  settings.theta_init = 1.05 * automatic.plant.theta;
+  ASSERT_TRUE(cl2srivc<double>(plant, loop, settings, rec.y.data(),
+                               rec.u.data(), rec.r.data(), rec.n, rec.ts,
+                               &given, Eigen::VectorXd(
+                                           1.05 * automatic.sensitivity.theta))
+                  .ok());
+  EXPECT_LT(relative_error(given.sensitivity.theta,
+                           automatic.sensitivity.theta),
+            1e-9);
+  EXPECT_LT(relative_error(given.plant.theta, automatic.plant.theta), 1e-9);
 }
 
 }  // namespace

@@ -28,8 +28,10 @@ function T = legacy_order (P)
       T(rows_, na + (1:nfj(1))) = eye (nfj(1));
     endfor
   else
+    ## A noise model C/D (rivc's hybrid model) is not part of CONTSID's
+    ## theta: its rows of T are zero.
     k = [1:na, na+nb+nc+nd+(1:sum (nfj)), na+(1:nb)];
-    T = zeros (np, np);
-    T(sub2ind ([np np], k, 1:np)) = 1;
+    T = zeros (np, numel (k));
+    T(sub2ind ([np numel(k)], k, 1:numel (k))) = 1;
   endif
 endfunction

@@ -170,6 +170,15 @@ function L = poly_lines (P, sd, ct)
   else
     kind = "polynomial";
   endif
+  ## A hybrid model (rivc): continuous B/F, C/D in q^-1 at the noise
+  ## model's sampling interval (Report.Parameters.NoiseModel.Ts).
+  noise_ts = 0;
+  if (ct && (hasC || hasD))
+    noise_ts = hybrid_noise_ts (P);
+  endif
+  if (noise_ts > 0)
+    kind = "hybrid BJ";
+  endif
   terms = {};
   for j = 1:P.nu
     bj = ifelse (P.nu > 1, sprintf ("B%d", j), "B");
@@ -182,7 +191,9 @@ function L = poly_lines (P, sd, ct)
     endif
   endfor
   noise = "e(t)";
-  if (hasC || hasD)
+  if (noise_ts > 0)
+    noise = "[C(z)/D(z)]e(t)";
+  elseif (hasC || hasD)
     noise = sprintf ("[C(%s)/D(%s)]e(t)", v, v);
   endif
   terms{end+1} = noise;
@@ -191,11 +202,15 @@ function L = poly_lines (P, sd, ct)
                strjoin (terms, " + "))};
   k = 0;
   [p, names] = pvec_of (P);
-  function add (label, c, fixed_first)
+  function add (label, c, fixed_first, discrete)
     m = numel (c) - fixed_first;
     e = [NaN(1, fixed_first), sd(k+1:k+m).'];
     k += m;
-    L{end+1} = sprintf ("  %s(%s) = %s", label, v, poly_str (c, e, ct, v));
+    if (nargin > 3 && discrete)
+      L{end+1} = sprintf ("  %s(z) = %s", label, poly_str (c, e, false, "z"));
+    else
+      L{end+1} = sprintf ("  %s(%s) = %s", label, v, poly_str (c, e, ct, v));
+    endif
   endfunction
   if (hasA)
     add ("A", s.A, 1);
@@ -206,14 +221,18 @@ function L = poly_lines (P, sd, ct)
     add (ifelse (P.nu > 1, sprintf ("B%d", j), "B"), s.B{j}, 0);
   endfor
   if (hasC)
-    add ("C", s.C, 1);
+    add ("C", s.C, 1, noise_ts > 0);
   else
     k += numel (s.C) - 1;
   endif
   if (hasD)
-    add ("D", s.D, 1);
+    add ("D", s.D, 1, noise_ts > 0);
   else
     k += numel (s.D) - 1;
+  endif
+  if (noise_ts > 0)
+    L{end+1} = sprintf (["  (C, D: discrete-time noise model in z^-1 = " ...
+                         "q^-1, Ts = %g)"], noise_ts);
   endif
   for j = 1:P.nu
     if (numel (s.F{j}) > 1)
@@ -222,6 +241,21 @@ function L = poly_lines (P, sd, ct)
   endfor
   if (any (s.IODelay != 0))
     L{end+1} = sprintf ("  I/O delays: %s", num2str (s.IODelay, "%.4g "));
+  endif
+endfunction
+
+## The noise model's sampling interval of a hybrid model, else 0.
+function ts = hybrid_noise_ts (P)
+  ts = 0;
+  if (isfield (P, "Report") && isstruct (P.Report)
+      && isfield (P.Report, "Parameters") && isstruct (P.Report.Parameters)
+      && isfield (P.Report.Parameters, "NoiseModel")
+      && isstruct (P.Report.Parameters.NoiseModel)
+      && isfield (P.Report.Parameters.NoiseModel, "Ts"))
+    v = P.Report.Parameters.NoiseModel.Ts;
+    if (isnumeric (v) && isscalar (v) && v > 0)
+      ts = v;
+    endif
   endif
 endfunction
 

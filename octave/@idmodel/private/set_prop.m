@@ -230,7 +230,12 @@ function M = set_theta (M, v, fname)
   endif
   T = legacy_order (M);
   if (numel (v) == columns (T))
-    M = pvec_set (M, T * double (v(:)));
+    ## Parameters outside theta (a noise model) keep their values.
+    p = pvec_of (M);
+    keep = ! any (T, 2);
+    pn = T * double (v(:));
+    pn(keep) = p(keep);
+    M = pvec_set (M, pn);
     M.legacy.theta = [];
   else
     M.legacy.theta = double (v(:).');

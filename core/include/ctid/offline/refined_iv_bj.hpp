@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,19 +70,31 @@ struct ArmaResult {
 
 namespace bj_detail {
 
-// y = b(q^-1) / a(q^-1) x, a(0) = 1, at rest (direct form II transposed).
+// y = b(q^-1) / a(q^-1) x, a(0) = 1, at rest (direct form II transposed;
+// the coefficients padded to one length so that the inner loop has no
+// branches: this filter runs a few dozen times per RIVC iteration).
 template <typename S>
 void filter_dt(const Vector<S>& b, const Vector<S>& a, const S* x,
                Eigen::Index n, S* y) {
   const Eigen::Index m = std::max(b.size(), a.size());
+  if (m <= 1) {
+    const S g = b.size() > 0 ? b(0) : S(0);
+    for (Eigen::Index k = 0; k < n; ++k) y[k] = g * x[k];
+    return;
+  }
+  std::vector<S> bp(static_cast<std::size_t>(m), S(0));
+  std::vector<S> ap(static_cast<std::size_t>(m), S(0));
   std::vector<S> z(static_cast<std::size_t>(m), S(0));
+  for (Eigen::Index i = 0; i < b.size(); ++i) bp[i] = b(i);
+  for (Eigen::Index i = 1; i < a.size(); ++i) ap[i] = a(i);
+  const S b0 = bp[0];
   for (Eigen::Index k = 0; k < n; ++k) {
-    const S out = (b.size() > 0 ? b(0) : S(0)) * x[k] + z[0];
-    for (Eigen::Index i = 1; i < m; ++i) {
-      const S bi = i < b.size() ? b(i) : S(0);
-      const S ai = i < a.size() ? a(i) : S(0);
-      z[i - 1] = bi * x[k] - ai * out + (i < m - 1 ? z[i] : S(0));
+    const S xk = x[k];
+    const S out = b0 * xk + z[0];
+    for (Eigen::Index i = 1; i < m - 1; ++i) {
+      z[i - 1] = bp[i] * xk - ap[i] * out + z[i];
     }
+    z[m - 2] = bp[m - 1] * xk - ap[m - 1] * out;
     y[k] = out;
   }
 }
@@ -278,7 +291,8 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   auto loss = [&](const Vector<S>& p, Vector<S>& e) -> S {
     Vector<S> dpoly, cpoly;
     polys(p, dpoly, cpoly);
-    e = filter_dt<S>(dpoly, cpoly, Vector<S>(x));
+    e.resize(n);
+    filter_dt<S>(dpoly, cpoly, xi, n, e.data());
     const S v = e.squaredNorm() / static_cast<S>(n);
     return std::isfinite(v) ? v : std::numeric_limits<S>::infinity();
   };
@@ -286,13 +300,13 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   Vector<S> e;
   S v = loss(eta, e);
   Matrix<S> J(n, np);
-  Matrix<S> inverse_gram;
+  Vector<S> xc(n), ec(n);
   auto jacobian = [&](const Vector<S>& p, const Vector<S>& err) {
     Vector<S> dpoly, cpoly;
     polys(p, dpoly, cpoly);
     const Vector<S> one = Vector<S>::Ones(1);
-    const Vector<S> xc = filter_dt<S>(one, cpoly, Vector<S>(x));
-    const Vector<S> ec = filter_dt<S>(one, cpoly, err);
+    filter_dt<S>(one, cpoly, xi, n, xc.data());
+    filter_dt<S>(one, cpoly, err.data(), n, ec.data());
     for (int i = 1; i <= nd; ++i) {
       J.col(i - 1).head(i).setZero();
       J.col(i - 1).tail(n - i) = xc.head(n - i);
@@ -305,20 +319,29 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   result->converged = nc == 0;  // AR: the LS solution is the minimum
   for (int it = 0; nc > 0 && it < settings.max_iterations; ++it) {
     jacobian(eta, e);
-    Vector<S> step;
-    if (!least_squares<S>(J, e, step)) {
+    // Gauss-Newton direction from the normal equations (np is small; the
+    // step is checked by the loss below, so their conditioning only
+    // matters for a rank-deficient J, refused here).
+    const Matrix<S> gram = J.transpose() * J;
+    const Eigen::LDLT<Matrix<S>> ldlt(gram);
+    const auto pivots = ldlt.vectorD();
+    if (ldlt.info() != Eigen::Success ||
+        !(pivots.minCoeff() > std::numeric_limits<S>::epsilon() * S(np) *
+                                  pivots.cwiseAbs().maxCoeff())) {
       return numerical_failure(
           "the ARMA Gauss-Newton step is rank deficient "
           "(ARMA orders too high for the noise?)");
     }
+    const Vector<S> step = ldlt.solve(J.transpose() * e);
     S alpha = 1;
     bool improved = false;
     Vector<S> trial, e_trial;
+    S v_trial = v;
     for (int h = 0; h < 20; ++h, alpha /= 2) {
       trial = eta - alpha * step;
       project(trial);
-      const S vt = loss(trial, e_trial);
-      if (vt < v) {
+      v_trial = loss(trial, e_trial);
+      if (v_trial < v) {
         improved = true;
         break;
       }
@@ -328,9 +351,10 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
       result->converged = true;  // no descent: a (local) minimum
       break;
     }
-    const S decrease = (v - loss(trial, e_trial)) / v;
+    const S decrease = (v - v_trial) / v;
     eta = trial;
-    v = loss(eta, e);
+    v = v_trial;
+    e.swap(e_trial);
     if (decrease < settings.tolerance) {
       result->converged = true;
       break;
@@ -535,12 +559,16 @@ class BjIteration {
     fpoly.tail(nf) = f;
     // p'^m u / F^2, m = 0..2 nf: x_hat and its prefiltered derivatives.
     const Vector<S> f2 = conv<S>(fpoly, fpoly);
-    Matrix<S> U2, U1;
+    // The large signal matrices are members, reused from one iteration to
+    // the next (no fresh pages per iteration).
+    Matrix<S>& U2 = u2_;
+    Matrix<S>& U1 = u1_;
     filter_input(f2.tail(2 * nf), U2);
     filter_input(f, U1);
     x_hat = Vector<S>::Zero(n_);
     for (int j = 0; j < nb; ++j) x_hat += b(j) * U1.col(nb - 1 - j);
-    Matrix<S> Xf = Matrix<S>::Zero(n_, nf + 1);  // p'^i x_hat / F
+    Matrix<S>& Xf = xf_;  // p'^i x_hat / F
+    Xf.setZero(n_, nf + 1);
     for (int i = 0; i <= nf; ++i) {
       for (int j = 0; j < nb; ++j) {
         Xf.col(i) += b(j) * U2.col(nb - 1 - j + i);
@@ -549,29 +577,37 @@ class BjIteration {
     const Vector<S> xi = y_ - x_hat;
     // p'^i y / F = p'^i x_hat / F + p'^i xi / F (xi linear between
     // samples): exact where the model fits, as refined_iv.hpp does.
-    Matrix<S> E;
+    Matrix<S>& Yf = yf_;
     riv_detail::filter_derivatives<S>(f, S(1), InterSample::kFoh, clock_,
-                                      xi.data(), E);
-    const Matrix<S> Yf = Xf + E;
+                                      xi.data(), Yf);
+    Yf += Xf;
 
     // Instruments: closed loop, from the loop driven by r.
-    Matrix<S> Zx = Xf, Zu = U1;
+    const Matrix<S>* Zx = &Xf;
+    const Matrix<S>* Zu = &U1;
+    Matrix<S> loop_x, loop_u;
     if (problem_.closed_loop()) {
-      Status s = closed_loop_instruments(fpoly, b, Zx, Zu);
+      Status s = closed_loop_instruments(fpoly, b, loop_x, loop_u);
       if (!s.ok()) return s;
+      Zx = &loop_x;
+      Zu = &loop_u;
     }
 
     const int np = nf + nb;
-    Matrix<S> Phi(n_, np), Z(n_, np);
+    Matrix<S>& Phi = phi_;
+    Matrix<S>& Z = z_;
+    Phi.resize(n_, np);
+    Z.resize(n_, np);
     for (int i = 0; i < nf; ++i) {
       Phi.col(i) = -Yf.col(nf - 1 - i);
-      Z.col(i) = -Zx.col(nf - 1 - i);
+      Z.col(i) = -Zx->col(nf - 1 - i);
     }
     for (int j = 0; j < nb; ++j) {
       Phi.col(nf + j) = U1.col(nb - 1 - j);
-      Z.col(nf + j) = Zu.col(nb - 1 - j);
+      Z.col(nf + j) = Zu->col(nb - 1 - j);
     }
-    Vector<S> target = Yf.col(nf);
+    Vector<S>& target = target_;
+    target = Yf.col(nf);
 
     if (refined) {
       Status s = arma_estimate<S>(xi.data(), n_, problem_.nd, problem_.nc,
@@ -581,11 +617,13 @@ class BjIteration {
       }
       if (arma.c.size() > 1 || arma.d.size() > 1) {
         // The discrete part of the prefilter, D / C (eq. 2.9's 1/H).
+        // (In place: the direct form reads x_k before it writes y_k.)
         for (int i = 0; i < np; ++i) {
-          Phi.col(i) = filter_dt<S>(arma.d, arma.c, Vector<S>(Phi.col(i)));
-          Z.col(i) = filter_dt<S>(arma.d, arma.c, Vector<S>(Z.col(i)));
+          filter_dt<S>(arma.d, arma.c, Phi.col(i).data(), n_,
+                       Phi.col(i).data());
+          filter_dt<S>(arma.d, arma.c, Z.col(i).data(), n_, Z.col(i).data());
         }
-        target = filter_dt<S>(arma.d, arma.c, target);
+        filter_dt<S>(arma.d, arma.c, target.data(), n_, target.data());
       }
     }
     offline_iv_detail::IvSolution<S> solution;
@@ -649,6 +687,26 @@ class BjIteration {
   S sigma_;
   riv_detail::Clock<S> clock_;
   Vector<S> y_, u_, r_;
+  mutable Matrix<S> u1_, u2_, xf_, yf_, phi_, z_;
+  mutable Vector<S> target_;
+
+ public:
+  // The last step's prefiltered instruments Z, regressors Phi and target
+  // (scaled time; the two-stage covariance of cl2srivc reads them).
+  const Matrix<S>& instruments() const { return z_; }
+  const Matrix<S>& regressors() const { return phi_; }
+  const Vector<S>& target() const { return target_; }
+  // B/F s at the samples for a sampled signal s linear between samples
+  // (theta scaled).
+  Vector<S> simulate_signal(const Vector<S>& theta, const S* s) const {
+    const int nf = problem_.nf, nb = problem_.nb;
+    Matrix<S> X;
+    riv_detail::filter_derivatives<S>(theta.head(nf), S(1), InterSample::kFoh,
+                                      clock_, s, X);
+    Vector<S> x = Vector<S>::Zero(n_);
+    for (int j = 0; j < nb; ++j) x += theta(nf + j) * X.col(nb - 1 - j);
+    return x;
+  }
 };
 
 }  // namespace bj_detail
@@ -775,17 +833,178 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
 
 template <typename S>
 struct Cl2srivcResult {
-  RivResult<S> plant;        // stage 2: y on u_hat
+  RivResult<S> plant;        // stage 2: y on u_hat (its covariance: SRIVC's)
   RivResult<S> sensitivity;  // stage 1: u on r
+  // The two-stage estimator's covariance of [f b] (see two_stage_covariance;
+  // empty when the structure has fixed parameters, offsets or initial
+  // states, which it does not model).
+  Matrix<S> covariance;
+  int covariance_lags = 0;  // the lag window's length L
 };
+
+namespace bj_detail {
+
+// The IV pieces of one SRIVC stage at its estimate, in the stage's scaled
+// time (sigma = |F(0)|^(1/nf)): instruments Z, M = (Z^T Phi)^-1, the IV
+// residual eps = target - Phi theta', theta' and the scale factors.
+template <typename S>
+struct StagePieces {
+  Matrix<S> Z, M;
+  Vector<S> eps, theta, scale;
+  S sigma = 1;
+};
+
+template <typename S>
+Status stage_pieces(const RivcProblem<S>& problem, const RivcData<S>& data,
+                    const Vector<S>& theta, StagePieces<S>& out,
+                    std::unique_ptr<BjIteration<S>>& iteration) {
+  const int nf = problem.nf, nb = problem.nb;
+  out.sigma = std::pow(std::abs(theta(nf - 1)), S(1) / nf);
+  if (!(out.sigma > 0) || !std::isfinite(out.sigma)) out.sigma = S(1) / data.ts;
+  out.scale = scale_factors<S>(nf, nb, out.sigma);
+  out.theta = theta.cwiseProduct(out.scale);
+  iteration = std::make_unique<BjIteration<S>>(problem, data, out.sigma);
+  Vector<S> next, x_hat;
+  Matrix<S> inverse_gram;
+  ArmaResult<S> arma;
+  S condition = 0;
+  Status s = iteration->step(out.theta, ArmaSettings<S>(), false, next,
+                             inverse_gram, arma, x_hat, condition);
+  if (!s.ok()) return s;
+  out.Z = iteration->instruments();
+  const Matrix<S> zphi = out.Z.transpose() * iteration->regressors();
+  const Eigen::FullPivLU<Matrix<S>> lu(zphi);
+  if (!lu.isInvertible()) {
+    return numerical_failure("the instrumental product matrix is singular");
+  }
+  out.M = lu.inverse();
+  out.eps = iteration->target() - iteration->regressors() * out.theta;
+  return Status::Ok();
+}
+
+// First lag at which the sample autocorrelation of x falls below `level`
+// in magnitude (at most max_lag).
+template <typename S>
+Eigen::Index decorrelation_lag(const Vector<S>& x, S level,
+                               Eigen::Index max_lag) {
+  const Eigen::Index n = x.size();
+  const S r0 = x.squaredNorm();
+  if (!(r0 > 0)) return 1;
+  for (Eigen::Index tau = 1; tau < max_lag; ++tau) {
+    const S r = x.head(n - tau).dot(x.tail(n - tau));
+    if (std::abs(r / r0) < level) return tau;
+  }
+  return max_lag;
+}
+
+}  // namespace bj_detail
+
+// The covariance of the two-stage estimate (CL2SRIVC), derived here: the
+// thesis' closed-loop IV estimate (eq. 2.47, instruments eq. 2.48-2.50)
+// at the two stages, with the first stage's u_hat = B1/F1 r in place of
+// the loop's noise-free input. Linearising both IV equations Z_k^T
+// (target_k - Phi_k theta_k) = 0 about the true parameters,
+//   theta1 - theta1o = M1 sum zeta1(t) eps1(t),
+//   theta2 - theta2o = M2 sum zeta2(t) eps2(t) - M2 Z2^T D (theta1 - theta1o),
+// M_k = (Z_k^T Phi_k)^-1, eps_k the IV residuals (eps1 ~ u - u_hat,
+// eps2 ~ y - G u_hat: coloured, both driven by the loop's noise), and D =
+// G dU, dU = d u_hat / d theta1, whose columns are the first stage's own
+// noise-free instruments (d u_hat / d b_j = p^j r / F1, d u_hat / d f_i =
+// -p^i u_hat / F1, eq. 2.48 with x_hat = u_hat). So theta2 - theta2o =
+// sum_t w(t), w(t) = a(t) eps2(t) + b(t) eps1(t), a = M2 zeta2, b = -K
+// zeta1, K = M2 Z2^T D M1, and its covariance sums a(t) a(s)^T E eps2(t)
+// eps2(s) and the three like terms over all pairs (t, s): the residuals'
+// auto- and cross-covariances at lags |tau| <= L, weighted by (1 -
+// |tau|/(L+1)) (Bartlett), L = 8 times the lag at which the residuals'
+// autocorrelation falls below 0.05 (at most N/4). With white eps2 and no
+// first-stage error this is SRIVC's sigma^2 (Z^T Z)^-1 (eq. 2.13).
+template <typename S>
+Status two_stage_covariance(const RivProblem<S>& plant,
+                            const RivProblem<S>& loop, const S* y,
+                            const S* u, const S* r, Eigen::Index n, S ts,
+                            Cl2srivcResult<S>* result) {
+  using namespace bj_detail;
+  RivcProblem<S> p1, p2;
+  p1.nb = loop.channels[0].nb;
+  p1.nf = loop.nf[0];
+  p1.nk = loop.channels[0].nk;
+  p1.u_rule = loop.channels[0].rule;
+  p2.nb = plant.channels[0].nb;
+  p2.nf = plant.nf[0];
+  p2.nk = plant.channels[0].nk;
+  p2.u_rule = plant.channels[0].rule;
+  const Vector<S>& u_hat = result->sensitivity.simulated;
+  const RivcData<S> d1{u, r, n, ts};
+  const RivcData<S> d2{y, u_hat.data(), n, ts};
+  StagePieces<S> s1, s2;
+  std::unique_ptr<BjIteration<S>> it1, it2;
+  Status status = stage_pieces(p1, d1, result->sensitivity.theta, s1, it1);
+  if (!status.ok()) return status;
+  status = stage_pieces(p2, d2, result->plant.theta, s2, it2);
+  if (!status.ok()) return status;
+  // D = G dU: the stage-1 instruments (scaled stage-1 time) through the
+  // stage-2 model (its own scaled time; same sampled signals).
+  const int np1 = static_cast<int>(s1.theta.size());
+  const int np2 = static_cast<int>(s2.theta.size());
+  Matrix<S> D(n, np1);
+  for (int j = 0; j < np1; ++j) {
+    const Vector<S> col = s1.Z.col(j);
+    D.col(j) = it2->simulate_signal(s2.theta, col.data());
+  }
+  const Matrix<S> K = s2.M * (s2.Z.transpose() * D) * s1.M;
+  // a(t) = M2 zeta2(t), b(t) = -K zeta1(t) (rows), deterministic given r.
+  const Matrix<S> a = s2.Z * s2.M.transpose();
+  const Matrix<S> b = -(s1.Z * K.transpose());
+  const Eigen::Index max_lag = std::max<Eigen::Index>(1, n / 4);
+  const Eigen::Index tau0 =
+      std::max(decorrelation_lag<S>(s1.eps, S(0.05), max_lag),
+               decorrelation_lag<S>(s2.eps, S(0.05), max_lag));
+  const Eigen::Index L = std::min<Eigen::Index>(max_lag, 8 * tau0);
+  // Var sum_t (a(t) eps2(t) + b(t) eps1(t)) = sum_(t,s) [a(t) a(s)^T
+  // R22(s-t) + a(t) b(s)^T R21(s-t) + b(t) a(s)^T R12(s-t) + b(t) b(s)^T
+  // R11(s-t)], R_ij(tau) = E eps_i(t) eps_j(t+tau): the products of a, b
+  // summed exactly, the residuals' (cross-)covariances estimated and
+  // weighted by Bartlett's window. (A lag window on w(t) = a eps2 + b eps1
+  // itself would be biased low: sum_t a(t) eps2_hat(t) = 0 exactly.)
+  auto lagged = [&](const Matrix<S>& x, const Matrix<S>& y, Eigen::Index t) {
+    return Matrix<S>(
+        x.topRows(n - t).transpose().lazyProduct(y.bottomRows(n - t)));
+  };
+  auto rcov = [&](const Vector<S>& x, const Vector<S>& y, Eigen::Index t) {
+    return x.head(n - t).dot(y.tail(n - t)) / static_cast<S>(n);
+  };
+  Matrix<S> cov = lagged(a, a, 0) * rcov(s2.eps, s2.eps, 0) +
+                  lagged(b, b, 0) * rcov(s1.eps, s1.eps, 0);
+  const Matrix<S> ab0 = lagged(a, b, 0) * rcov(s2.eps, s1.eps, 0);
+  cov += ab0 + ab0.transpose();
+  for (Eigen::Index tau = 1; tau <= L; ++tau) {
+    const S weight = S(1) - static_cast<S>(tau) / static_cast<S>(L + 1);
+    const Matrix<S> aa = lagged(a, a, tau), bb = lagged(b, b, tau);
+    Matrix<S> ab = lagged(a, b, tau) * rcov(s2.eps, s1.eps, tau) +
+                   lagged(b, a, tau).transpose() * rcov(s1.eps, s2.eps, tau);
+    cov += weight * ((aa + aa.transpose()) * rcov(s2.eps, s2.eps, tau) +
+                     (bb + bb.transpose()) * rcov(s1.eps, s1.eps, tau) + ab +
+                     ab.transpose());
+  }
+  const Vector<S> inv = s2.scale.cwiseInverse();
+  result->covariance = inv.asDiagonal() * cov * inv.asDiagonal();
+  result->covariance_lags = static_cast<int>(L);
+  if (!result->covariance.allFinite() || np2 < 1) {
+    return numerical_failure("the two-stage covariance is not finite");
+  }
+  return Status::Ok();
+}
 
 // CL2SRIVC (two-stage SRIVC): stage 1 SRIVC of u on r (orders `loop`),
 // stage 2 SRIVC of y on u_hat = the stage-1 simulation (orders `plant`,
-// u_hat with the intersample rule of plant.channels[0]).
+// u_hat with the intersample rule of plant.channels[0]). settings.
+// theta_init starts stage 2, loop_theta_init stage 1 (empty: the
+// automatic start). The covariance: two_stage_covariance.
 template <typename S>
 Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
                 const RivSettings<S>& settings, const S* y, const S* u,
-                const S* r, Eigen::Index n, S ts, Cl2srivcResult<S>* result) {
+                const S* r, Eigen::Index n, S ts, Cl2srivcResult<S>* result,
+                const Vector<S>& loop_theta_init = Vector<S>()) {
   if (result == nullptr) return bad_input("cl2srivc: no result");
   if (plant.num_groups() != 1 || plant.channels.size() != 1 ||
       loop.num_groups() != 1 || loop.channels.size() != 1) {
@@ -803,9 +1022,11 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
   d1.w = r;
   d1.num_samples = n;
   d1.ts = ts;
+  RivSettings<S> settings1 = settings;
+  settings1.theta_init = loop_theta_init;
   // A stage that does not converge returns its last iterate (reported as
   // kNotConverged at the end, as refined_iv does).
-  Status status = refined_iv<S>(loop, settings, d1, &result->sensitivity);
+  Status status = refined_iv<S>(loop, settings1, d1, &result->sensitivity);
   std::string not_converged;
   if (status.code() == ErrorCode::kNotConverged) {
     not_converged = "stage 1 (u on r): " + status.message();
@@ -824,6 +1045,20 @@ Status cl2srivc(const RivProblem<S>& plant, const RivProblem<S>& loop,
     not_converged += "stage 2 (y on u_hat): " + status.message();
   } else if (!status.ok()) {
     return Status(status.code(), "stage 2 (y on u_hat): " + status.message());
+  }
+  result->covariance.resize(0, 0);
+  result->covariance_lags = 0;
+  bool plain = true;
+  for (const RivProblem<S>* stage : {&plant, &loop}) {
+    plain = plain && stage->fixed.empty() && !stage->output_offset &&
+            !stage->initial_state && stage->channels[0].delay == 0;
+  }
+  if (plain) {
+    status = two_stage_covariance<S>(plant, loop, y, u, r, n, ts, result);
+    if (!status.ok()) {
+      return Status(status.code(),
+                    "the two-stage covariance: " + status.message());
+    }
   }
   if (!not_converged.empty()) {
     return Status(ErrorCode::kNotConverged, not_converged);
