@@ -266,5 +266,106 @@ TEST(RefinedIvStatus, IntegratingPlantWithoutItsIntegratorIsFlagged) {
   EXPECT_EQ(declared.integrator_suspected[0], 0);
 }
 
+// The per-sample kernel of filter_derivatives (fixed-size for orders 1-6
+// and 8, any order otherwise; regular grid) against an independent
+// simulation: the controllable canonical form in the other state order,
+// its own matrix exponential (simulate_fine), column i = p^i s / D
+// simulated as the transfer function p^i / D; the last column satisfies
+// D(p) w = s. ZOH and FOH inputs. The irregular path (the same instants
+// given explicitly) must agree as well.
+TEST(RefinedIvKernel, FilterDerivativesMatchMatrixExponentialStepping) {
+  const double ts = 0.05;
+  const std::vector<double> s = binary_input(3000, 7, 13u);
+  std::vector<double> instants(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) instants[k] = ts * k;
+  for (int n = 1; n <= 9; ++n) {
+    // D = (p + a_1)..(p + a_n), a_r = 0.5 + 0.25 r: poles near 1 rad/s,
+    // as the engine sees them in its scaled time (t' = sigma t).
+    Eigen::VectorXd poly = Eigen::VectorXd::Ones(1);
+    for (int r = 1; r <= n; ++r) {
+      Eigen::VectorXd next = Eigen::VectorXd::Zero(poly.size() + 1);
+      next.head(poly.size()) += poly;
+      next.tail(poly.size()) += (0.5 + 0.25 * r) * poly;
+      poly = next;
+    }
+    const Eigen::VectorXd d = poly.tail(n);
+    for (bool foh : {false, true}) {
+      const InterSample rule = foh ? InterSample::kFoh : InterSample::kZoh;
+      riv_detail::Clock<double> clock;
+      clock.ts = ts;
+      clock.n = static_cast<Eigen::Index>(s.size());
+      Eigen::MatrixXd out, irregular;
+      riv_detail::filter_derivatives<double>(d, 1.5, rule, clock, s.data(),
+                                             out);
+      ASSERT_EQ(out.cols(), n + 1);
+      for (int i = 0; i < n; ++i) {
+        Eigen::VectorXd b = Eigen::VectorXd::Zero(i + 1);
+        b(0) = 1.5;  // gain p^i
+        const std::vector<double> ref = simulate_fine(poly, b, s, ts, foh);
+        const Eigen::VectorXd expected =
+            Eigen::Map<const Eigen::VectorXd>(ref.data(), ref.size());
+        EXPECT_LT((out.col(i) - expected).norm(),
+                  1e-11 * std::max(expected.norm(), 1e-300))
+            << "order " << n << " column " << i << (foh ? " foh" : " zoh");
+      }
+      Eigen::VectorXd highest = 1.5 * Eigen::Map<const Eigen::VectorXd>(
+                                          s.data(), s.size());
+      for (int i = 0; i < n; ++i) highest -= d(i) * out.col(n - 1 - i);
+      EXPECT_LT((out.col(n) - highest).norm(), 1e-11 * highest.norm())
+          << "order " << n;
+      clock.instants = instants.data();
+      riv_detail::filter_derivatives<double>(d, 1.5, rule, clock, s.data(),
+                                             irregular);
+      EXPECT_LT((irregular - out).norm(), 1e-10 * out.norm())
+          << "order " << n << (foh ? " foh" : " zoh");
+    }
+  }
+}
+
+// The start on a long record (the cut-off grid ranked on a leading
+// segment, only the starts SRIVC runs from computed on the whole record)
+// against the exhaustive one: SRIVC from each cut-off of the grid alone
+// (whole record). On a noise-free record all must reach the same fixed
+// point, the true system, to 1e-10.
+TEST(RefinedIvStart, SegmentRankedStartMatchesEveryGridStart) {
+  const double ts = 0.01;
+  const int n = 2 * static_cast<int>(kRankSamples) + 5000;
+  ASSERT_GT(n, 2 * kRankSamples);  // the segment ranking is used
+  const std::vector<double> u = binary_input(n, 10, 21u);
+  const Eigen::VectorXd f = (Eigen::VectorXd(4) << 1, 3, 5, 3).finished();
+  const Eigen::VectorXd b = (Eigen::VectorXd(2) << 1, 3).finished();
+  const Eigen::VectorXd truth =
+      (Eigen::VectorXd(5) << 3, 5, 3, 1, 3).finished();
+  const Record r = make_record(f, b, u, 1, ts, 0, false);
+  RivProblem<double> problem;
+  problem.nf = {3};
+  RivChannel c;
+  c.nb = 2;
+  problem.channels.push_back(c);
+  RivSettings<double> settings;
+  settings.tolerance = 1e-12;
+  settings.max_iterations = 50;
+  RivResult<double> automatic;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &automatic).ok());
+  EXPECT_TRUE(automatic.converged && automatic.stable);
+  EXPECT_LT(relative_error(automatic.theta, truth), 1e-10)
+      << automatic.theta.transpose();
+  // The default grid: 12 log-spaced cut-offs between 5/T and 0.5 pi/Ts.
+  const double T = ts * (n - 1);
+  const double lo = std::log(5 / T), hi = std::log(0.5 * M_PI / ts);
+  int agreeing = 0;
+  for (int i = 0; i < 12; ++i) {
+    RivSettings<double> single = settings;
+    single.cutoffs = {std::exp(lo + (hi - lo) * i / 11)};
+    RivResult<double> one;
+    const Status status = refined_iv(problem, single, view(r, ts), &one);
+    if (!status.ok() || !one.converged || !one.stable) continue;
+    ++agreeing;
+    EXPECT_LT(relative_error(one.theta, automatic.theta), 1e-10)
+        << "cut-off " << single.cutoffs[0];
+  }
+  EXPECT_GE(agreeing, 6);
+}
+
 }  // namespace
 }  // namespace ctid

@@ -35,7 +35,9 @@
 // Start: IVSVF at a grid of cut-offs (each run in the time scaled by its
 // cut-off), ranked by the simulation error of the start model; SRIVC runs
 // from the best starts in turn and the best stable, converged result wins,
-// so no single lucky cut-off is needed. Every iterate is kept stable: an
+// so no single lucky cut-off is needed. On long records the grid is ranked
+// on a leading segment and only the starts SRIVC runs from are computed on
+// the whole record (kRankSamples). Every iterate is kept stable: an
 // unstable IV solution is pulled back toward the previous (stable) iterate
 // by step halving, and reflected as a last resort; the result's status
 // says whether this happened on the final iterate (clipped) and how
@@ -44,6 +46,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -235,13 +238,28 @@ class ExactFilter {
     g1_ = e.block(0, n_ + 1, n_, 1);
     h_ = h;
   }
-  // Advances from t_(k-1) (input s_prev) to t_k (input s).
+  // Advances from t_(k-1) (input s_prev) to t_k (input s). Hand-written
+  // loops: for the small orders here a library matrix-vector product costs
+  // more in call overhead than in arithmetic.
   void step(S s_prev, S s) {
-    next_.noalias() = Phi_ * z_;
-    next_ += g0_ * s_prev;
-    if (rule_ == InterSample::kFoh) next_ += g1_ * (s - s_prev);
+    const S du = rule_ == InterSample::kFoh ? s - s_prev : S(0);
+    const S* phi = Phi_.data();
+    const S* g0 = g0_.data();
+    const S* g1 = g1_.data();
+    const S* z = z_.data();
+    S* next = next_.data();
+    for (int i = 0; i < n_; ++i) next[i] = g0[i] * s_prev + g1[i] * du;
+    for (int j = 0; j < n_; ++j) {
+      const S zj = z[j];
+      const S* column = phi + static_cast<Eigen::Index>(j) * n_;
+      for (int i = 0; i < n_; ++i) next[i] += column[i] * zj;
+    }
     z_.swap(next_);
   }
+  // The discretisation of the current step length (ensure() first).
+  const Matrix<S>& Phi() const { return Phi_; }
+  const Vector<S>& g0() const { return g0_; }
+  const Vector<S>& g1() const { return g1_; }
   // p^i s / D, i = 0..n, at the current sample (input s).
   template <typename Row>
   void outputs(S gain, S s, Row&& row) const {
@@ -268,12 +286,104 @@ class ExactFilter {
 
 // p^i s / D(p), i = 0..n (columns), for D = p^n + d1 p^(n-1) + .. + dn,
 // the filter at rest at the first sample.
+// The per-sample kernel of filter_derivatives on a regular grid (one
+// discretisation for every step, App. A.1): z_k = Phi z_(k-1) + g0 s_(k-1)
+// (+ g1 (s_k - s_(k-1)) for FOH), outputs gain z_k(i) and gain (s_k - d^T
+// z_k reversed) written straight into the columns of `out`. N > 0 fixes
+// the order at compile time (registers, unrolled loops); N = 0 takes it
+// from d (any order). No allocation per sample.
+template <typename S, int N>
+void filter_regular_kernel(const Vector<S>& d, S gain, bool foh,
+                           const Matrix<S>& Phi, const Vector<S>& g0v,
+                           const Vector<S>& g1v, const S* s, Eigen::Index count,
+                           Matrix<S>& out) {
+  const int n = N > 0 ? N : static_cast<int>(d.size());
+  constexpr int kCap = N > 0 ? N : 1;
+  S phi_fixed[kCap * kCap], g0_fixed[kCap], g1_fixed[kCap], d_fixed[kCap];
+  S z_fixed[kCap], next_fixed[kCap];
+  std::vector<S> dynamic;
+  S *phi = phi_fixed, *g0 = g0_fixed, *g1 = g1_fixed, *dd = d_fixed;
+  S *z = z_fixed, *next = next_fixed;
+  if (N == 0) {
+    dynamic.assign(static_cast<std::size_t>(n * n + 5 * n), S(0));
+    phi = dynamic.data();
+    g0 = phi + n * n;
+    g1 = g0 + n;
+    dd = g1 + n;
+    z = dd + n;
+    next = z + n;
+  }
+  for (int i = 0; i < n * n; ++i) phi[i] = Phi.data()[i];
+  for (int i = 0; i < n; ++i) {
+    g0[i] = g0v(i);
+    g1[i] = foh ? g1v(i) : S(0);
+    dd[i] = d(i);
+    z[i] = 0;
+  }
+  std::vector<S*> columns(static_cast<std::size_t>(n + 1));
+  for (int i = 0; i <= n; ++i) columns[i] = out.col(i).data();
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const S sk = s[k];
+    if (k > 0) {
+      const S s0 = s[k - 1];
+      const S du = sk - s0;
+      for (int i = 0; i < n; ++i) next[i] = g0[i] * s0 + g1[i] * du;
+      for (int j = 0; j < n; ++j) {
+        const S zj = z[j];
+        const S* column = phi + j * n;
+        for (int i = 0; i < n; ++i) next[i] += column[i] * zj;
+      }
+      for (int i = 0; i < n; ++i) z[i] = next[i];
+    }
+    S highest = sk;
+    for (int i = 0; i < n; ++i) {
+      columns[i][k] = gain * z[i];
+      highest -= dd[i] * z[n - 1 - i];
+    }
+    columns[n][k] = gain * highest;
+  }
+}
+
 template <typename S>
 void filter_derivatives(const Vector<S>& d, S gain, InterSample rule,
                         const Clock<S>& clock, const S* s, Matrix<S>& out) {
   const int n = static_cast<int>(d.size());
   ExactFilter<S> filter(d, rule);
   out.resize(clock.n, n + 1);
+  if (clock.instants == nullptr && clock.n > 1) {
+    // Regular sampling: one discretisation, the fast kernel.
+    filter.ensure(clock.interval(1));
+    const bool foh = rule == InterSample::kFoh;
+    const Matrix<S>& P = filter.Phi();
+    const Vector<S>& a = filter.g0();
+    const Vector<S>& b = filter.g1();
+    switch (n) {
+      case 1:
+        return filter_regular_kernel<S, 1>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      case 2:
+        return filter_regular_kernel<S, 2>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      case 3:
+        return filter_regular_kernel<S, 3>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      case 4:
+        return filter_regular_kernel<S, 4>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      case 5:
+        return filter_regular_kernel<S, 5>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      case 6:
+        return filter_regular_kernel<S, 6>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      case 8:
+        return filter_regular_kernel<S, 8>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+      default:
+        return filter_regular_kernel<S, 0>(d, gain, foh, P, a, b, s, clock.n,
+                                           out);
+    }
+  }
   for (Eigen::Index k = 0; k < clock.n; ++k) {
     if (k > 0) {
       filter.ensure(clock.interval(k));
@@ -300,9 +410,8 @@ void filter_delayed_derivatives(const Vector<S>& d, S gain, InterSample rule,
   out.resize(count, n + 1);
   std::vector<S> t(static_cast<std::size_t>(count));
   for (Eigen::Index k = 0; k < count; ++k) {
-    t[k] = clock.instants == nullptr
-               ? clock.ts * static_cast<S>(k)
-               : clock.instants[k] - clock.instants[0];
+    t[k] = clock.instants == nullptr ? clock.ts * static_cast<S>(k)
+                                     : clock.instants[k] - clock.instants[0];
   }
   const S h0 = t[1] - t[0];
   const S snap = S(1e-9) * clock.median_interval();
@@ -682,16 +791,52 @@ class Engine {
     }
   }
 
+  // The same, remembered: the filterings of the inputs repeat (the
+  // simulation of x_g at theta filters w_j by 1/F_g, and the next refined
+  // step's prefilter is that same 1/F_g; the LSSVF and IVSVF steps of a
+  // start share 1/D), so the last few are kept, keyed by channel, time
+  // scale, gain and the exact coefficients of D. The reference stays valid
+  // until the next call.
+  const Matrix<S>& channel_derivatives(std::size_t j, const Vector<S>& d,
+                                       S gain) const {
+    ++tick_;
+    for (CacheEntry& e : cache_) {
+      if (e.used > 0 && e.channel == j && e.sigma == clock_.sigma &&
+          e.gain == gain && e.d.size() == d.size() && e.d == d) {
+        e.used = tick_;
+        return e.out;
+      }
+    }
+    // Large records with high orders: no copies kept beyond a budget.
+    const double size =
+        static_cast<double>(n_) * static_cast<double>(d.size() + 1);
+    if (size * static_cast<double>(cache_.size()) > kCacheBudget) {
+      channel_derivatives(j, d, gain, uncached_);
+      return uncached_;
+    }
+    CacheEntry* slot = &cache_[0];
+    for (CacheEntry& e : cache_) {
+      if (e.used < slot->used) slot = &e;
+    }
+    slot->used = 0;  // invalid while it is being filled
+    channel_derivatives(j, d, gain, slot->out);
+    slot->channel = j;
+    slot->sigma = clock_.sigma;
+    slot->gain = gain;
+    slot->d = d;
+    slot->used = tick_;
+    return slot->out;
+  }
+
   // x_g = sum_(j in g) B_j / F_g w_j (scaled time): `source` = w or, in
   // closed loop, the reference (then the closed-loop x_hat and u_hat).
   void simulate_group(const Vector<S>& theta, int g, Vector<S>& x) const {
     x = Vector<S>::Zero(n_);
     const Vector<S> f = denominator(theta, g);
-    Matrix<S> D;
     for (std::size_t j = 0; j < p_.channels.size(); ++j) {
       const RivChannel& c = p_.channels[j];
       if (c.group != g || c.nb == 0) continue;
-      channel_derivatives(j, f, S(1), D);
+      const Matrix<S>& D = channel_derivatives(j, f, S(1));
       for (int l = 0; l < c.nb; ++l) {
         x += theta(layout_.b_offset[j] + l) * D.col(c.nb - 1 - l);
       }
@@ -745,7 +890,8 @@ class Engine {
                   const Vector<S>* instrument_u, Matrix<S>& Phi, Matrix<S>& Z,
                   Vector<S>& target, std::vector<int>& index) const {
     const int n = p_.nf[g];
-    Matrix<S> Y, X, W;
+    Matrix<S>& Y = scratch_y_;
+    Matrix<S>& X = scratch_x_;
     if (instrument != nullptr && !p_.closed_loop()) {
       // Model-based interpolation of y between samples: the auxiliary
       // model x_hat = sum B_j/F_g w_j is filtered exactly (each channel by
@@ -755,8 +901,9 @@ class Engine {
       // (w h)^2 that biases lightly damped modes and models of relative
       // degree 1 with ZOH inputs; here it vanishes where the model fits.
       exact_model_derivatives(theta, g, d, gain, X);
-      const Vector<S> residual = target_signal - *instrument;
-      filter_derivatives<S>(d, gain, p_.y_rule, clock_, residual.data(), Y);
+      scratch_residual_ = target_signal - *instrument;
+      filter_derivatives<S>(d, gain, p_.y_rule, clock_,
+                            scratch_residual_.data(), Y);
       Y += X;
     } else {
       filter_derivatives<S>(d, gain, p_.y_rule, clock_, target_signal.data(),
@@ -766,8 +913,24 @@ class Engine {
                               X);
       }
     }
+    // The free parameters of g, in theta's order: Phi and Z are sized once
+    // and filled column by column (no copies of N-long columns).
     index.clear();
-    std::vector<Vector<S>> phi_cols, z_cols;
+    for (int i = 1; i <= n; ++i) {
+      const int at = layout_.f_offset[g] + i - 1;
+      if (!layout_.fixed[at]) index.push_back(at);
+    }
+    for (std::size_t j = 0; j < p_.channels.size(); ++j) {
+      const RivChannel& c = p_.channels[j];
+      if (c.group != g || c.nb == 0) continue;
+      for (int l = 0; l < c.nb; ++l) {
+        const int at = layout_.b_offset[j] + l;
+        if (!layout_.fixed[at]) index.push_back(at);
+      }
+    }
+    Phi.resize(n_, static_cast<Eigen::Index>(index.size()));
+    Z.resize(n_, static_cast<Eigen::Index>(index.size()));
+    Eigen::Index col = 0;
     target = Y.col(n);
     for (int i = 1; i <= n; ++i) {
       const int at = layout_.f_offset[g] + i - 1;
@@ -775,16 +938,19 @@ class Engine {
         target += theta(at) * Y.col(n - i);
         continue;
       }
-      index.push_back(at);
-      phi_cols.push_back(-Y.col(n - i));
-      z_cols.push_back(instrument != nullptr ? Vector<S>(-X.col(n - i))
-                                             : Vector<S>(-Y.col(n - i)));
+      Phi.col(col) = -Y.col(n - i);
+      if (instrument != nullptr) {
+        Z.col(col) = -X.col(n - i);
+      } else {
+        Z.col(col) = -Y.col(n - i);
+      }
+      ++col;
     }
     for (std::size_t j = 0; j < p_.channels.size(); ++j) {
       const RivChannel& c = p_.channels[j];
       if (c.group != g || c.nb == 0) continue;
-      channel_derivatives(j, d, gain, W);
-      Matrix<S> U;
+      const Matrix<S>& W = channel_derivatives(j, d, gain);
+      Matrix<S>& U = scratch_u_;
       if (instrument_u != nullptr) {
         filter_derivatives<S>(d, gain, c.rule, clock_, instrument_u->data(), U);
       }
@@ -795,17 +961,14 @@ class Engine {
           target -= theta(at) * W.col(power);
           continue;
         }
-        index.push_back(at);
-        phi_cols.push_back(W.col(power));
-        z_cols.push_back(instrument_u != nullptr ? Vector<S>(U.col(power))
-                                                 : Vector<S>(W.col(power)));
+        Phi.col(col) = W.col(power);
+        if (instrument_u != nullptr) {
+          Z.col(col) = U.col(power);
+        } else {
+          Z.col(col) = W.col(power);
+        }
+        ++col;
       }
-    }
-    Phi.resize(n_, static_cast<Eigen::Index>(index.size()));
-    Z.resize(n_, static_cast<Eigen::Index>(index.size()));
-    for (std::size_t i = 0; i < index.size(); ++i) {
-      Phi.col(i) = phi_cols[i];
-      Z.col(i) = z_cols[i];
     }
   }
 
@@ -827,8 +990,8 @@ class Engine {
         if (i + j > 0) fd(i + j - 1) += fa(i) * da(j);
       }
     }
-    X = Matrix<S>::Zero(n_, n + 1);
-    Matrix<S> D;
+    X.setZero(n_, n + 1);
+    Matrix<S>& D = scratch_model_;
     for (std::size_t j = 0; j < p_.channels.size(); ++j) {
       const RivChannel& c = p_.channels[j];
       if (c.group != g || c.nb == 0) continue;
@@ -954,6 +1117,21 @@ class Engine {
   Vector<S> y_, r_;
   Matrix<S> w_;
   Clock<S> clock_;
+  // Work arrays reused from call to call (N rows: allocating them anew at
+  // every step costs page faults comparable to the filtering itself).
+  mutable Matrix<S> scratch_y_, scratch_x_, scratch_u_, scratch_model_;
+  mutable Matrix<S> uncached_;
+  mutable Vector<S> scratch_residual_;
+  struct CacheEntry {
+    std::size_t channel = 0;
+    S sigma = 0, gain = 0;
+    Vector<S> d;
+    Matrix<S> out;
+    unsigned long used = 0;  // 0: empty
+  };
+  static constexpr double kCacheBudget = 3.2e7;  // doubles, all entries
+  mutable std::array<CacheEntry, 3> cache_;
+  mutable unsigned long tick_ = 0;
 };
 
 // Z^T Phi theta = Z^T Y with the columns of Phi and Z equilibrated by the
@@ -1560,6 +1738,10 @@ S characteristic_frequency(const Engine<S>& engine,
 
 }  // namespace riv_detail
 
+// Records longer than twice this rank the start grid on a leading segment
+// of max(kRankSamples, N / 5) samples (refined_iv()).
+constexpr Eigen::Index kRankSamples = 20000;
+
 // The engine: see the header comment. Returns kNotConverged (result filled,
 // converged = false) when SRIVC did not converge, numerical_failure when no
 // start gave an estimate.
@@ -1589,6 +1771,7 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     Run<S> run;
     S sigma;
     S cutoff;
+    bool pending = false;  // ranked on the segment; not yet on the record
   };
   std::vector<Candidate> starts;
   std::string last_failure;
@@ -1608,18 +1791,56 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     }
     starts.push_back(c);
   } else {
-    for (S lambda : cutoffs) {
-      Candidate c;
-      engine.set_scale(lambda);
-      c.run.theta = engine.to_scaled(Vector<S>::Zero(np), lambda);
-      c.sigma = lambda;
-      c.cutoff = lambda;
-      status = estimator.svf_start(c.run, settings.method != RivMethod::kLssvf);
-      if (!status.ok()) {
-        last_failure = status.message();
-        continue;
+    // Long records, SRIVC: the grid is ranked on a leading segment of the
+    // record (kRankSamples, or a fifth of the record if longer), and only
+    // the starts SRIVC actually runs from are recomputed on the whole
+    // record (below). The segment ranks the cut-offs by the same
+    // criterion; the grid, the order of trial and the fall-back to the
+    // next start are unchanged, so the start still does not rest on one
+    // lucky cut-off, at about a fifth of the cost.
+    const Eigen::Index N = engine.samples();
+    if (settings.method == RivMethod::kSrivc && cutoffs.size() > 1 &&
+        N > 2 * kRankSamples) {
+      const Eigen::Index M = std::max<Eigen::Index>(kRankSamples, N / 5);
+      const Eigen::Index m = static_cast<Eigen::Index>(problem.channels.size());
+      std::vector<S> w_segment(static_cast<std::size_t>(M * m));
+      for (Eigen::Index j = 0; j < m; ++j) {
+        std::copy(data.w + j * N, data.w + j * N + M,
+                  w_segment.begin() + j * M);
       }
-      starts.push_back(c);
+      RivData<S> segment = data;
+      segment.w = w_segment.data();
+      segment.num_samples = M;
+      Engine<S> ranking_engine(problem, segment);
+      Estimator<S> ranking(ranking_engine, problem, settings);
+      for (S lambda : cutoffs) {
+        Candidate c;
+        ranking_engine.set_scale(lambda);
+        c.run.theta = ranking_engine.to_scaled(Vector<S>::Zero(np), lambda);
+        c.sigma = lambda;
+        c.cutoff = lambda;
+        c.pending = true;
+        if (!ranking.svf_start(c.run, true).ok()) continue;
+        starts.push_back(c);
+      }
+    }
+    if (starts.empty()) {
+      // The whole record at every cut-off (one-step methods return the
+      // best of these; also the fall-back when no segment start worked).
+      for (S lambda : cutoffs) {
+        Candidate c;
+        engine.set_scale(lambda);
+        c.run.theta = engine.to_scaled(Vector<S>::Zero(np), lambda);
+        c.sigma = lambda;
+        c.cutoff = lambda;
+        status =
+            estimator.svf_start(c.run, settings.method != RivMethod::kLssvf);
+        if (!status.ok()) {
+          last_failure = status.message();
+          continue;
+        }
+        starts.push_back(c);
+      }
     }
     if (starts.empty()) {
       return numerical_failure(
@@ -1648,6 +1869,18 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     for (std::size_t i = 0;
          i < starts.size() && tried < limit && attempts < 2 * limit + 2; ++i) {
       Candidate& c = starts[i];
+      if (c.pending) {
+        // The start itself, on the whole record.
+        engine.set_scale(c.sigma);
+        c.run = Run<S>();
+        c.run.theta = engine.to_scaled(Vector<S>::Zero(np), c.sigma);
+        c.pending = false;
+        status = estimator.svf_start(c.run, true);
+        if (!status.ok()) {
+          last_failure = status.message();
+          continue;
+        }
+      }
       // A start must drive a stable prefilter.
       engine.set_scale(c.sigma);
       Run<S> run = c.run;
