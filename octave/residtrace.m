@@ -102,6 +102,14 @@
 ## that re-estimate, so that a better estimator is never credited to an
 ## effect.
 ##
+## @strong{Speed.} Every candidate is first fitted with at most three
+## SRIVC iterations per fit, started from the current model, and scored;
+## only a candidate whose correction then has p < 0.2 (or whose screening
+## fit failed) is fitted again to convergence and scored on that fit, so
+## every decision rests on converged fits. Within a candidate, variants
+## are screened the same way and the two best by BIC iterated to
+## convergence.
+##
 ## @strong{Levels.} A record in raw units (option @code{levels}:
 ## @qcode{"auto"}, the default, decides it when the model has no
 ## integrator and the mean of the input or of the output lies more than
@@ -168,7 +176,9 @@
 ## @code{group}): effect, score, p, stat (the correlation test's p-value
 ## and z), p_dm, significant, variant, nadd (added parameters), rmse
 ## (validation simulation; NaN for the second group), rmse_tracked or
-## rmse_prediction (second group), kind, applicable, reason, evidence.
+## rmse_prediction (second group), kind, applicable, reason, evidence,
+## screened (true: its fits stopped after three SRIVC iterations, because
+## that fit's correction was far from significant, p >= 0.2; see Speed).
 ## @item rmse_given, rmse_before, rmse_after
 ## validation RMSE of the output simulated from the input: of M as given,
 ## of M re-estimated in its own structure (the baseline every effect is
@@ -433,6 +443,23 @@ function [R, varargout] = residtrace (varargin)
       cur = x0win.model;
       cur.effects = [cur.effects, {"initial_state"}];
       e0 = x0win.e1;
+      ## from now on every fit on the estimation record estimates its
+      ## initial state with the model (the engine's free responses), and
+      ## the current model is re-estimated so: a transient fitted after
+      ## the estimation would have biased it, and every candidate would
+      ## be scored against that biased baseline
+      ctx.D.initial_state = true;
+      refit = residtrace_fit (cur, ctx.D, ctx, {cur.F});
+      if (refit.ok)
+        e_re = residtrace_valerror (refit, V, ctx);
+        if (all (isfinite (e_re)))
+          refit.effects = cur.effects;
+          cur = refit;
+          e0 = e_re;
+          x0row.model = cur;
+          x0row.e1 = e0;
+        endif
+      endif
       e_sim = e0;
       R.steps(end+1) = step_row (sprintf ("+ initial_state (%s)",
                                           x0win.variant),
@@ -560,8 +587,7 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
     simset = setdiff (simset, {"initial_state"}, "stable");
   endif
   for k = 1:numel (simset)
-    c = feval (["residtrace_cand_" cand_file(simset{k})], cur, ctx);
-    row = score (c, cur, ctx, e0);
+    row = screened_row (simset{k}, cur, ctx, e0);
     rows_ = [rows_; row];
   endfor
   rows_ = significance (rows_, opts);
@@ -607,6 +633,39 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   endif
 endfunction
 
+## A candidate fitted and scored in two stages (issue 9, speed): first
+## with at most three SRIVC iterations per fit, each started from the
+## current model (the one-step estimate from a consistent start is
+## asymptotically as good as the iterated one); a candidate whose screened
+## correction is far from significance (p >= 0.2, two hundred times the
+## largest level a decision uses) is reported so. Every other candidate,
+## and one whose screening fit failed, is fitted again with the full
+## iterations and scored on that fit: every decision is taken on
+## converged fits. The row's field @code{screened} says which it was.
+function row = screened_row (effect, cur, ctx, e0)
+  fn = ["residtrace_cand_" cand_file(effect)];
+  q = ctx;
+  q.maxiter = min (3, ctx.maxiter);
+  if (q.maxiter < ctx.maxiter)
+    c = feval (fn, cur, q);
+    row = score (c, cur, ctx, e0);
+    row.screened = true;
+    if (row.applicable && row.p >= 0.2)
+      return;
+    endif
+    if (! row.applicable
+        && isempty (regexp (row.reason, ["estimation failed|not ", ...
+                                          "significant on the estimation|", ...
+                                          "validation failed|diverges"],
+                            "once")))
+      return;                  # not applicable for a structural reason
+    endif
+  endif
+  c = feval (fn, cur, ctx);
+  row = score (c, cur, ctx, e0);
+  row.screened = false;
+endfunction
+
 ## A correction fitted on the validation record itself (nadd parameters by
 ## least squares): the likelihood-ratio test N log(s0/s1) against
 ## chi^2(nadd), the model choice a BIC would make at the same level.
@@ -639,6 +698,7 @@ function row = score (c, cur, ctx, e0)
                 "rmse", NaN, "kind", c.kind, "applicable", c.applicable,
                 "reason", c.reason, "evidence", c.evidence, "model", [],
                 "e1", [], "rmse_tracked", NaN, "rmse_prediction", NaN,
+                "screened", false,
                 "group", ifelse_ (strcmp (c.kind, "simulation"),
                                   "simulated from the input",
                                   "uses the validation output"));

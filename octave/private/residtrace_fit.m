@@ -32,6 +32,9 @@
 
 function model = residtrace_fit (tmpl, D, ctx, starts)
   model = tmpl;
+  if (isfield (model, "nlin"))
+    model = rmfield (model, "nlin");   # a Hammerstein fit's, now stale
+  endif
   y = D.y;
   N = numel (y);
   ch = residtrace_chdata (tmpl, D);
