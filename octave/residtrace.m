@@ -103,9 +103,12 @@
 ## effect.
 ##
 ## @strong{Speed.} Every candidate is first fitted with at most three
-## SRIVC iterations per fit, started from the current model, and scored;
-## only a candidate whose correction then has p < 0.2 (or whose screening
-## fit failed) is fitted again to convergence and scored on that fit, so
+## SRIVC iterations per fit, started from the current model, on at most
+## 20 000 samples of the estimation record, and scored on the whole
+## validation record; only a candidate whose correction then has p < 0.2
+## (or a score below -5 minscore, or whose screening fit failed) is
+## fitted again on the whole record to convergence and scored on that
+## fit, so
 ## every decision rests on converged fits. Within a candidate, variants
 ## are screened the same way and the two best by BIC iterated to
 ## convergence.
@@ -178,7 +181,8 @@
 ## (validation simulation; NaN for the second group), rmse_tracked or
 ## rmse_prediction (second group), kind, applicable, reason, evidence,
 ## screened (true: its fits stopped after three SRIVC iterations, because
-## that fit's correction was far from significant, p >= 0.2; see Speed).
+## that fit's correction was far from significant, p >= 0.2; see Speed),
+## seconds (time spent on the candidate).
 ## @item rmse_given, rmse_before, rmse_after
 ## validation RMSE of the output simulated from the input: of M as given,
 ## of M re-estimated in its own structure (the baseline every effect is
@@ -364,7 +368,11 @@ function [R, varargout] = residtrace (varargin)
                               "omega", 0);
     tmpl.levels = true;
   endif
+  t0 = tic ();
   cur = residtrace_fit (tmpl, D, ctx, starts);
+  if (opts.verbose)
+    printf ("residtrace: M re-estimated in %.1f s\n", toc (t0));
+  endif
   R.levels = level_report (lev, cur);
   if (! cur.ok)
     error ("residtrace:numericalFailure",
@@ -431,9 +439,11 @@ function [R, varargout] = residtrace (varargin)
         && tests.indep_p > opts.alpha)
       break;                          # the residual tests pass
     endif
+    t0 = tic ();
     [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts);
     if (opts.verbose)
       print_ranking (pass, ranking);
+      printf ("  (pass: %.1f s)\n", toc (t0));
     endif
     if (! isempty (x0win))
       ## the record's initial state: a property of the record, estimated
@@ -596,8 +606,10 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   endif
   vrows = [];
   if (any (strcmp (opts.effects, "drift")))
+    t0 = tic ();
     c = residtrace_cand_drift (cur, ctx);
     row = score (c, cur, ctx, e0);
+    row.seconds = toc (t0);
     vrows = [vrows; row];
   endif
   ## coloured noise: only when nothing deterministic is significant and
@@ -636,22 +648,40 @@ endfunction
 ## A candidate fitted and scored in two stages (issue 9, speed): first
 ## with at most three SRIVC iterations per fit, each started from the
 ## current model (the one-step estimate from a consistent start is
-## asymptotically as good as the iterated one); a candidate whose screened
-## correction is far from significance (p >= 0.2, two hundred times the
-## largest level a decision uses) is reported so. Every other candidate,
-## and one whose screening fit failed, is fitted again with the full
-## iterations and scored on that fit: every decision is taken on
-## converged fits. The row's field @code{screened} says which it was.
+## asymptotically as good as the iterated one), on at most the first
+## 20 000 samples of the estimation record (the test is on the whole
+## validation record, so its power is kept: the correction's estimate is
+## only a little noisier); a candidate whose screened correction is far
+## from significance (p >= 0.2, two hundred times the largest level a
+## decision uses) without being clearly worse than the current model
+## (score >= -5 minscore: a candidate that extends the model and scores
+## far below it is a screening fit that has not converged), or whose
+## terms lie within 1.5 standard deviations of
+## zero on the estimation data (the candidates ask for 3), is reported
+## so. Every other candidate, and one whose screening fit failed, is
+## fitted again on the whole estimation record with the full iterations
+## and scored on that fit: every decision is taken on converged fits.
+## The row's field @code{screened} says which it was.
 function row = screened_row (effect, cur, ctx, e0)
+  t0 = tic ();
+  row = screened_row_ (effect, cur, ctx, e0);
+  row.seconds = toc (t0);
+endfunction
+
+function row = screened_row_ (effect, cur, ctx, e0)
   fn = ["residtrace_cand_" cand_file(effect)];
-  q = ctx;
-  q.maxiter = min (3, ctx.maxiter);
-  if (q.maxiter < ctx.maxiter)
-    c = feval (fn, cur, q);
+  if (ctx.maxiter > 3)
+    [q, qcur] = screening_context (ctx, cur);
+    c = feval (fn, qcur, q);
     row = score (c, cur, ctx, e0);
     row.screened = true;
-    if (row.applicable && row.p >= 0.2)
+    if (row.applicable && row.p >= 0.2
+        && row.score >= -5 * ctx.opts.minscore)
       return;
+    endif
+    if (! row.applicable && isfield (c.evidence, "tmax")
+        && c.evidence.tmax < 1.5)
+      return;                  # its terms are nowhere near significant
     endif
     if (! row.applicable
         && isempty (regexp (row.reason, ["estimation failed|not ", ...
@@ -664,6 +694,27 @@ function row = screened_row (effect, cur, ctx, e0)
   c = feval (fn, cur, ctx);
   row = score (c, cur, ctx, e0);
   row.screened = false;
+endfunction
+
+## The screening's context: three iterations per fit, the estimation
+## record cut to its first 20 000 samples (and the current model's
+## estimation residual with it).
+function [q, qcur] = screening_context (ctx, cur)
+  q = ctx;
+  q.maxiter = 3;
+  qcur = cur;
+  Nq = 20000;
+  D = ctx.D;
+  if (numel (D.y) <= Nq)
+    return;
+  endif
+  k = 1:Nq;
+  D.y = D.y(k); D.u = D.u(k, :); D.vhat = D.vhat(k, :); D.ysm = D.ysm(k);
+  if (! isempty (D.loop))
+    D.loop.r1 = D.loop.r1(k); D.loop.r2 = D.loop.r2(k);
+  endif
+  q.D = D;
+  qcur.e_est = cur.e_est(k);
 endfunction
 
 ## A correction fitted on the validation record itself (nadd parameters by
@@ -698,7 +749,7 @@ function row = score (c, cur, ctx, e0)
                 "rmse", NaN, "kind", c.kind, "applicable", c.applicable,
                 "reason", c.reason, "evidence", c.evidence, "model", [],
                 "e1", [], "rmse_tracked", NaN, "rmse_prediction", NaN,
-                "screened", false,
+                "screened", false, "seconds", NaN,
                 "group", ifelse_ (strcmp (c.kind, "simulation"),
                                   "simulated from the input",
                                   "uses the validation output"));
@@ -1040,11 +1091,13 @@ function print_ranking (pass, r)
   printf ("residtrace pass %d:\n", pass);
   for k = 1:numel (r)
     if (r(k).applicable)
-      printf ("  %-20s score %9.4g  p %8.2g  %s  %s\n", r(k).effect,
-              r(k).score, r(k).p, ifelse_ (r(k).significant, "*", " "),
-              r(k).variant);
+      printf ("  %-20s score %9.4g  p %8.2g  %s  %s (%.1f s%s)\n",
+              r(k).effect, r(k).score, r(k).p,
+              ifelse_ (r(k).significant, "*", " "), r(k).variant,
+              r(k).seconds, ifelse_ (r(k).screened, ", screened", ""));
     else
-      printf ("  %-20s (not tested: %s)\n", r(k).effect, r(k).reason);
+      printf ("  %-20s (not tested: %s) (%.1f s)\n", r(k).effect,
+              r(k).reason, r(k).seconds);
     endif
   endfor
 endfunction

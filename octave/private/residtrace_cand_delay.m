@@ -18,7 +18,7 @@ function c = residtrace_cand_delay (cur, ctx)
     return;
   endif
   quick = ctx;
-  quick.maxiter = min (3, ctx.maxiter);
+  quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
   trials = [];
   fits = {};
   for j = cols

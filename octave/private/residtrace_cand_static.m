@@ -209,7 +209,7 @@ function best = refine_clip (best, cur, ctx)
   lo = lev(max (i - 1, 1)); hi = lev(min (i + 1, numel (lev)));
   g = (sqrt (5) - 1) / 2;
   quick = ctx;
-  quick.maxiter = min (3, ctx.maxiter);
+  quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
   fit = @(L) fit_level (L, best, cur, quick);
   x1 = hi - g * (hi - lo); x2 = lo + g * (hi - lo);
   m1 = fit (x1); m2 = fit (x2);

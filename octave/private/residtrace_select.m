@@ -9,7 +9,9 @@
 ## Hammerstein variant by @code{hsrivc}) and is only compared.
 ##
 ## With more than two variants they are screened first: each is fitted
-## with three SRIVC iterations from its starts (every start is the
+## with three SRIVC iterations (one when the caller allows only three,
+## i.e. while residtrace screens candidates) from its starts (every start
+## is the
 ## current model, extended, so the first iterations carry most of the
 ## loss reduction), and only the two with the smallest screening BIC are
 ## iterated to convergence, each from its screening estimate (the
@@ -28,7 +30,7 @@ function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
   screen = n > keep;
   quick = ctx;
   if (screen)
-    quick.maxiter = min (3, ctx.maxiter);
+    quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
   endif
   fits = cell (1, n);
   for i = 1:n

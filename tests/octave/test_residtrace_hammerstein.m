@@ -50,7 +50,8 @@ function test_residtrace_hammerstein ()
   Mm = srivc (iddata (y, [u u.^2 u.^3], Ts), [2 2 2 2 0 0 0]);
   e_m = rms (yv0 - simc (Mm, iddata ([], [uv uv.^2 uv.^3], Ts)));
   e_l = rms (yv0 - R.sim.before);
-  printf ("RMSE to the noise-free output: hsrivc %.4g, MISO %.4g, linear %.4g\n",
+  printf (["RMSE to the noise-free output: hsrivc %.4g, MISO %.4g, ", ...
+           "linear %.4g\n"],
           e_h, e_m, e_l);
   assert (e_h < e_m);
   assert (e_h < 0.5 * e_l);
