@@ -144,6 +144,80 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   model.bic = N * log (model.s2) + model.np * log (N);
   model.e_est = e;
   model.ok = true;
+  if (any (strcmp ({tmpl.channels.type}, "ypower"))
+      && ! (isfield (ctx, "ysim_") && ctx.ysim_))
+    model = refit_simulated (model, tmpl, D, ctx);
+  endif
+endfunction
+
+## A function of the output inside the dynamics (a "ypower" channel) is
+## first fitted with the measured output as its signal. The engine then
+## integrates that signal open loop: its noise, and the error of a start
+## from rest, are integrated too, which a model with little damping of its
+## own (a tank whose outflow is its only damping, F(0) = 0 with a
+## sqrt(y) term) cannot forget, so the fit keeps a spurious damping and
+## its loss is not the loss of the model as residtrace simulates and
+## scores it (its own output fed back). Here the signal is the model's
+## simulated output (plus its free response when the initial state is
+## estimated, as residtrace_valerror does), the model is fitted again,
+## and so on while the simulation error on the estimation record falls
+## (at most three rounds); the residual variance and BIC are then those of
+## that simulation, for every variant of the candidate alike.
+function model = refit_simulated (model, tmpl, D, ctx)
+  ctx.ysim_ = true;
+  x0 = isfield (D, "initial_state") && D.initial_state;
+  [e, yh] = sim_error (model, D, ctx, x0);
+  s = sum (e .^ 2);
+  for round = 1:3
+    if (! isfinite (s))
+      break;
+    endif
+    Dk = D;
+    Dk.ysm = yh;
+    t = tmpl;
+    for j = 1:numel (t.channels)
+      t.channels(j).B = model.channels(j).B;
+    endfor
+    m = residtrace_fit (t, Dk, ctx, {model.F});
+    if (! m.ok)
+      break;
+    endif
+    [e2, yh2] = sim_error (m, D, ctx, x0);
+    s2 = sum (e2 .^ 2);
+    if (! (s2 < s))
+      break;
+    endif
+    model = m;
+    e = e2; yh = yh2; s = s2;
+  endfor
+  if (! isfinite (s))
+    model.ok = false;
+    return;
+  endif
+  N = numel (D.y);
+  model.s2 = s / max (N - model.np, 1);
+  model.bic = N * log (model.s2) + model.np * log (N);
+  model.e_est = e;
+endfunction
+
+## The model simulated on the estimation record (its own output fed back),
+## with its free response fitted when the initial state is estimated.
+function [e, yh] = sim_error (model, D, ctx, x0)
+  try
+    yh = residtrace_simulate (model, D.u, D.Ts, D.loop, ctx.opts.substeps);
+  catch
+    yh = Inf (size (D.y));
+  end_try_catch
+  e = D.y - yh;
+  if (x0 && all (isfinite (e)))
+    X = residtrace_free (model.F, numel (e), D.Ts);
+    f = X * (X \ e);
+    yh += f;
+    e -= f;
+  endif
+  if (! all (isfinite (e)))
+    e = Inf (size (D.y));
+  endif
 endfunction
 
 ## F stable apart from its structural zeros at the origin (integrators);
