@@ -1214,6 +1214,37 @@ endfunction
 %! assert (R.evidence.value(2), 0.4, 0.02);
 %! assert (R.rmse_after < 0.5 * R.rmse_before);
 
+%!function y = residtrace_test_act (u, Tn)
+%! ## an actuator z' = (u - z)/1.5 limited to [0, 100], then
+%! ## T' = (0.4 z - T)/20, y = 10 + T, at rest at u(1)
+%! h = Tn / 10; z = min (max (u(1), 0), 100); T = 0.4 * z;
+%! y = zeros (numel (u), 1);
+%! for k = 1:numel (u)
+%!   y(k) = 10 + T;
+%!   for s = 1:10
+%!     z = min (max (z + h * (u(k) - z) / 1.5, 0), 100);
+%!     T += h * (0.4 * z - T) / 20;
+%!   endfor
+%! endfor
+%!endfunction
+
+%!test  # an actuator at its end stops: an inner node's saturation
+%! ## (a node variant's numerator started at zero failed in the engine,
+%! ## and the input polynomial won: issue 9's held-out valve)
+%! randn ("state", 19); rand ("state", 19);
+%! Tn = 0.5;
+%! lev = @() kron (rand (75, 1) * 160 - 30, ones (40, 1));
+%! ua = lev (); uva = lev ();   # not the shared u, uv
+%! ya = residtrace_test_act (ua, Tn) + 0.1 * randn (3000, 1);
+%! yva = residtrace_test_act (uva, Tn) + 0.1 * randn (3000, 1);
+%! M = srivc (iddata (ya - mean (ya), ua - mean (ua), Tn), [1 2 0]);
+%! R = residtrace (iddata (ya, ua, Tn), M, "validation", iddata (yva, uva, Tn),
+%!                 "iterate", 1, "levels", "estimate",
+%!                 "effects", {"saturation", "static_nonlinearity"});
+%! assert (R.effect, "saturation");
+%! assert (! isempty (strfind (R.ranking(1).variant, "inner node")));
+%! assert (R.rmse_after < 0.8 * R.rmse_before);
+
 %!test  # a square-root outflow (a tank): a state nonlinearity
 %! randn ("state", 17); rand ("state", 17);
 %! Tt = 1; q = 1 + 3 * (prbs (9, 20) > 0) .* rand (numel (prbs (9, 20)), 1);
