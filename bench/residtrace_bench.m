@@ -10,6 +10,10 @@
 ## changed after e5c0877), or given as the octave/ folder of a tree with
 ## its own compiled gateways:
 ##   octave-cli -q bench/residtrace_bench.m /tmp/main/octave
+## For e5c0877 (session 3): git archive e5c0877 octave into /tmp/ref, copy
+## this tree's gateways there, then compile e5c0877's own simc_mex and
+## offline_mex (mex/ and core/ of e5c0877, mkoctfile --mex -o
+## /tmp/ref/octave/private/NAME.mex) over them, and pass /tmp/ref/octave.
 args = argv ();
 ref = "e5c0877";
 if (! isempty (args))

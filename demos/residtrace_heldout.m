@@ -1,5 +1,6 @@
 ## -*- texinfo -*-
-## @deftypefn {} {@var{T} =} residtrace_heldout (@var{outdir})
+## @deftypefn  {} {@var{T} =} residtrace_heldout (@var{outdir})
+## @deftypefnx {} {@var{T} =} residtrace_heldout (@var{outdir}, @var{which})
 ## A held-out check of @code{residtrace} on records it was not developed
 ## on: five nonlinear and three linear simulated rigs of realistic
 ## physics, in raw units (offsets, engineering units) with measurement
@@ -36,18 +37,23 @@
 ##
 ## Writes @var{outdir}/residtrace_heldout.md (default "results") and
 ## returns the table as a struct array (record, documented, found,
-## rmse_before, rmse_after, elapsed).
+## rmse_before, rmse_after, elapsed, and the ranking of each pass).
+## @var{which}: a cell of record names to run (default all eight; each
+## record keeps its own seed).
 ## @end deftypefn
 
-function T = residtrace_heldout (outdir = "results")
+function T = residtrace_heldout (outdir = "results", which = {})
   demo_prepare (outdir);
   recs = {"tanks", "axis", "motor", "tank", "valve", "lin2", "lin3", "linv"};
   doc = {{"saturation", "state_nonlinearity"}, {"saturation"}, {"coulomb"}, ...
          {"state_nonlinearity"}, {"saturation"}, {}, {}, {}};
   T = struct ("record", {}, "documented", {}, "found", {}, "all", {},
               "rmse_before", {}, "rmse_after", {}, "elapsed", {},
-              "levels", {});
+              "levels", {}, "passes", {});
   for k = 1:numel (recs)
+    if (! isempty (which) && ! any (strcmp (which, recs{k})))
+      continue;
+    endif
     randn ("state", 2026112301 + k); rand ("state", 2026112301 + k);
     [u, y, uv, yv, Ts, nn] = feval (["rec_" recs{k}]);
     d = iddata (y, u, Ts, "InterSample", "zoh");
@@ -55,13 +61,14 @@ function T = residtrace_heldout (outdir = "results")
     M = srivc (iddata (y - mean (y), u - mean (u), Ts, "InterSample",
                        "zoh"), nn);
     tic;
-    R = residtrace (d, M, "validation", dv, "iterate", 2);
+    R = residtrace (d, M, "validation", dv, "iterate", 2, "verbose", true);
     el = toc;
     T(end+1) = struct ("record", recs{k}, "documented", strjoin (doc{k}, "/"),
                        "found", R.effect, "all", strjoin (R.effects, ", "),
                        "rmse_before", R.rmse_before,
                        "rmse_after", R.rmse_final, "elapsed", el,
-                       "levels", R.levels.estimated);
+                       "levels", R.levels.estimated,
+                       "passes", {passes(R)});
     printf ("%-6s documented %-30s found %-20s (%s) RMSE %.4g -> %.4g, %.0f s\n",
             recs{k}, T(end).documented, R.effect, T(end).all,
             R.rmse_before, R.rmse_final, el);
@@ -81,6 +88,17 @@ function T = residtrace_heldout (outdir = "results")
              t.elapsed);
   endfor
   fclose (fid);
+endfunction
+
+## Each pass's ranking: effect, score, p, significant, variant.
+function P = passes (R)
+  P = {};
+  for h = 1:numel (R.history)
+    r = R.history(h).ranking;
+    P{end+1} = struct ("effect", {r.effect}, "score", {r.score},
+                       "p", {r.p}, "significant", {r.significant},
+                       "variant", {r.variant});
+  endfor
 endfunction
 
 function s = ifelse (c, a, b)

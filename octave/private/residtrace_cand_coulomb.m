@@ -82,6 +82,7 @@ function c = residtrace_cand_coulomb (cur, ctx)
     return;
   endif
   if (abs (val) < 3 * sd)
+    c.evidence.tmax = abs (val) / sd;
     c.reason = sprintf (["the friction term is not significant on the ", ...
                          "estimation data (b_s = %.3g +- %.2g)"], val, sd);
     return;

@@ -2,9 +2,9 @@
 ## @deftypefn {} {@var{c} =} residtrace_cand_delay (@var{cur}, @var{ctx})
 ## Input-delay candidate of @code{residtrace}: the delay nk of an input
 ## channel raised by 1 .. @code{ctx.opts.maxdelay} samples. Every delay is
-## screened with three SRIVC iterations from the current model, the three
-## best are iterated to convergence and the one with the smallest BIC on
-## the estimation data is kept. Evidence: the chosen delay (samples and
+## screened with three SRIVC iterations from the current model, the two
+## best are iterated to convergence from their screening estimates and
+## the one with the smallest BIC on the estimation data is kept. Evidence: the chosen delay (samples and
 ## seconds) and the lag at which the prewhitened cross-correlation of the
 ## current residual with the input peaks.
 ## @end deftypefn
@@ -18,8 +18,9 @@ function c = residtrace_cand_delay (cur, ctx)
     return;
   endif
   quick = ctx;
-  quick.maxiter = 3;
+  quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
   trials = [];
+  fits = {};
   for j = cols
     for dd = 1:D
       t = cur;
@@ -27,6 +28,7 @@ function c = residtrace_cand_delay (cur, ctx)
       m = residtrace_fit (t, ctx.D, quick, {cur.F});
       if (m.ok)
         trials = [trials; j, dd, m.bic];
+        fits{end+1} = m;
       endif
     endfor
   endfor
@@ -36,11 +38,9 @@ function c = residtrace_cand_delay (cur, ctx)
   endif
   [~, order] = sort (trials(:, 3));
   best = [];
-  for i = order(1:min (3, end))'
-    t = cur;
+  for i = order(1:min (2, end))'
     j = trials(i, 1);
-    t.channels(j).nk += trials(i, 2);
-    m = residtrace_fit (t, ctx.D, ctx, {cur.F});
+    m = residtrace_fit (fits{i}, ctx.D, ctx, {fits{i}.F});
     if (m.ok && (isempty (best) || m.bic < best.bic))
       best = m;
       bj = j; bd = trials(i, 2);

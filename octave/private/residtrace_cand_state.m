@@ -56,6 +56,7 @@ function c = residtrace_cand_state (cur, ctx)
   val = m.theta(end-nadd+1:end);
   sd = sqrt (diag (m.cov))(end-nadd+1:end);
   if (all (abs (val) < 3 * sd))
+    c.evidence.tmax = max (abs (val) ./ sd);
     c.reason = sprintf (["the output terms are not significant on the ", ...
                          "estimation data (%s +- %s)"],
                         mat2str (val(:).', 3), mat2str (sd(:).', 2));

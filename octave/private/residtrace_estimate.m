@@ -14,10 +14,13 @@
 ## @code{nb}, @code{nk}, @code{rule} (@qcode{"zoh"} or @qcode{"foh"}).
 ## @var{spec}: @code{n} (order of F), @code{fixed} (1-by-n logical over
 ## f1..fn), @code{fval} (their values) and optionally
-## @code{initial_state} (true: its free response estimated with the model). @var{opts}: @code{F0} (a start
+## @code{initial_state} (true: its free response estimated with the
+## model) and @code{output_offset} (true: a constant added to the output
+## estimated with the model, returned as @code{offset}; @code{x} then
+## includes it). @var{opts}: @code{F0} (a start
 ## for F, with @code{B0} the channels' numerators (a cell, zeros where
 ## unknown); [] for the engine's automatic start), @code{maxiter},
-## @code{tol}.
+## @code{tol}, optionally @code{c0} (a start for the output offset).
 ##
 ## @var{est}: @code{F}, @code{B} (cell, one row per channel),
 ## @code{theta} (the free parameters: free f's, then each channel's b's),
@@ -51,9 +54,14 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
   if (isfield (spec, "initial_state") && spec.initial_state)
     e.initial_state = true;   # a record that does not start at rest
   endif
+  joint_offset = isfield (spec, "output_offset") && spec.output_offset;
+  if (joint_offset)
+    e.output_offset = true;   # the record's output level, jointly
+  endif
+  nc = double (joint_offset);         # theta ends with c when estimated
   if (any (fixed))
-    e.fixed = fixed;
-    e.fixed_values = values;
+    e.fixed = [fixed; false(nc, 1)];
+    e.fixed_values = [values; zeros(nc, 1)];
   endif
   if (! isempty (opts.F0) && ! strictly_stable (opts.F0, r))
     opts.F0 = [];       # the engine starts from stable denominators only
@@ -63,18 +71,31 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
     th = [F0(2:end), cell2mat(cellfun (@(b) b(:).', opts.B0(:).',
                                        "UniformOutput", false))];
     th(fixed) = values(fixed);
+    if (joint_offset)
+      if (isfield (opts, "c0") && isfinite (opts.c0) && opts.c0 != 0)
+        th(end+1) = opts.c0;
+      else
+        th(end+1) = mean (y(1:min (5, N)));  # at rest at its first samples
+      endif
+    endif
     e.theta_init = th(:);
     e.max_starts = 1;
   endif
   est = struct ("ok", false, "converged", false, "stable", false,
                 "iterations", 0);
   [theta, P, info] = contsid_refined_iv ("residtrace", y, W, Ts, e);
-  if (numel (theta) != np_all || any (! isfinite (theta)))
+  if (numel (theta) != np_all + nc || any (! isfinite (theta)))
     return;
   endif
   est.converged = info.converged;
   est.stable = info.stable;
   est.iterations = info.iterations;
+  est.offset = 0;
+  est.offset_std = 0;
+  if (joint_offset)
+    est.offset = theta(end);
+    est.offset_std = sqrt (max (P(end, end), 0));
+  endif
   est.F = info.F{1};
   est.F(1 + find (fixed_f)) = spec.fval(fixed_f);   # exactly, not to 1e-8
   est.B = info.B;

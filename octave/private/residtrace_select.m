@@ -4,22 +4,79 @@
 ## record (@code{residtrace_fit}) and keeps the one with the smallest BIC
 ## = N log s2 + np log N (Schwarz): the variant of an effect is chosen on
 ## the estimation data only. @var{starts}: a cell (one cell of initial
-## denominators per template). @var{table}: the variants' names with
-## their BIC and residual variance.
+## denominators per template). A template with the field @code{fitted}
+## set is a model fitted already (by an estimator of its own, e.g. the
+## Hammerstein variant by @code{hsrivc}) and is only compared.
+##
+## With more than two variants they are screened first: each is fitted
+## with three SRIVC iterations (one when the caller allows only three,
+## i.e. while residtrace screens candidates) from its starts (every start
+## is the
+## current model, extended, so the first iterations carry most of the
+## loss reduction), and only the two with the smallest screening BIC are
+## iterated to convergence, each from its screening estimate (the
+## variants' loss differences are decided long before their iterations
+## end; issue 9, speed). @var{table}: the variants' names with their
+## BIC and residual variance (after screening, or converged), and
+## @code{converged} (iterated to the end).
 ## @end deftypefn
 
 function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
   best = [];
-  table = struct ("variant", names, "bic", NaN, "s2", NaN);
-  for i = 1:numel (tmpls)
-    m = residtrace_fit (tmpls{i}, D, ctx, starts{i});
-    if (! m.ok)
+  n = numel (tmpls);
+  table = struct ("variant", names, "bic", NaN, "s2", NaN,
+                  "converged", false);
+  keep = 2;
+  screen = n > keep;
+  quick = ctx;
+  if (screen)
+    quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
+  endif
+  fits = cell (1, n);
+  for i = 1:n
+    if (isfield (tmpls{i}, "fitted"))
+      m = rmfield (tmpls{i}, "fitted");
+      table(i).converged = true;
+    else
+      m = residtrace_fit (tmpls{i}, D, quick, starts{i});
+      table(i).converged = ! screen;
+    endif
+    fits{i} = m;
+    if (m.ok)
+      table(i).bic = m.bic;
+      table(i).s2 = m.s2;
+    endif
+  endfor
+  if (screen)
+    b = [table.bic];
+    b(isnan (b)) = Inf;
+    [~, order] = sort (b);
+    for i = order(1:keep)
+      if (! isfinite (b(i)) || table(i).converged)
+        continue;
+      endif
+      ## iterated to convergence from the screening estimate (its F and
+      ## numerators), then from the variant's own starts if that fails
+      m = residtrace_fit (fits{i}, D, ctx, {fits{i}.F});
+      if (! m.ok)
+        m = residtrace_fit (tmpls{i}, D, ctx, starts{i});
+      endif
+      table(i).converged = true;
+      if (m.ok)
+        fits{i} = m;
+        table(i).bic = m.bic;
+        table(i).s2 = m.s2;
+      else
+        table(i).bic = NaN;
+      endif
+    endfor
+  endif
+  for i = 1:n
+    if (! table(i).converged || ! fits{i}.ok)
       continue;
     endif
-    table(i).bic = m.bic;
-    table(i).s2 = m.s2;
-    if (isempty (best) || m.bic < best.bic)
-      best = m;
+    if (isempty (best) || fits{i}.bic < best.bic)
+      best = fits{i};
       best.variant_ = names{i};
     endif
   endfor
