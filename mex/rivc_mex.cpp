@@ -20,11 +20,6 @@
 // covariance_lags.
 #include <algorithm>
 
-// mkoctfile compiles with -fopenmp: Eigen would run its products on
-// OpenMP threads, whose start-up and spinning cost more than the thin
-// (N x a few) products of these estimators gain, most of all on a loaded
-// machine (perf: half of cl2srivc's time in threaded GEMM).
-#define EIGEN_DONT_PARALLELIZE
 #include "ctid/offline/refined_iv_bj.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
