@@ -57,3 +57,41 @@ printf ("  core from th0: %.4f s (%d iterations)\n", bestd, idc.iterations);
 printf ("  plain Octave (filter builtin): %.4f s (%d iterations)\n", tdp, itdp);
 printf ("  ratio %.1fx; max rel. difference %.1e\n", tdp / bestd,
         max (abs (thdc - thdp) ./ abs (thdp)));
+## CPU time (the process's; on a loaded shared machine the wall time
+## mostly measures the wait for a core) and the floor of the plain
+## implementation: per LM iteration it runs 5 filter calls (u/F, B u, y_hat/F
+## for the Jacobian; u/F, B u for the trial point) and one economy QR of the
+## N-by-4 Jacobian, all compiled code. Its time per iteration over the
+## time of these primitives shows how little interpretation there is to
+## remove, i.e. the bound on any compiled implementation's speed-up.
+R = 20;
+old = cd (priv);
+c0 = cputime ();
+for r = 1:R
+  [thdc, ~, idc] = pem_mex ("oe", yd, u, 1, optd);
+endfor
+cc = (cputime () - c0) / R;
+cd (old);
+c0 = cputime ();
+for r = 1:R
+  [thdp, itdp] = pem_plain_octave (yd, u, 1, 2, 2, thd0, "dt", 100);
+endfor
+cp = (cputime () - c0) / R;
+F = [1 -1.5 0.7];
+c0 = cputime ();
+for r = 1:200
+  v = filter (1, F, u);
+endfor
+cf = (cputime () - c0) / 200;
+J = randn (N, 4);
+c0 = cputime ();
+for r = 1:200
+  [Q, Rq] = qr (J, 0);
+endfor
+cq = (cputime () - c0) / 200;
+printf ("DT OE, CPU time: core %.2f ms, plain %.2f ms (%d iterations each)",
+        1e3 * cc, 1e3 * cp, idc.iterations);
+printf (", ratio %.1fx\n", cp / cc);
+printf (["  per iteration: core %.3f ms, plain %.3f ms, of which the ", ...
+         "compiled primitives (5 filter + 1 QR) %.3f ms\n"],
+        1e3 * cc / idc.iterations, 1e3 * cp / itdp, 1e3 * (5 * cf + cq));

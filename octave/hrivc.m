@@ -14,13 +14,14 @@
 ##
 ## Algorithm: HSRIVC (see @code{hsrivc}) alternated with the noise model:
 ## C and D are fitted to the simulation residual y - B/F ubar by
-## Hannan-Rissanen (a long AR for the innovations, then least squares;
-## roots reflected into the unit disc), and the next refined-IV steps run
-## on the data prefiltered by D/C (exact at the samples for ZOH inputs:
-## the discrete filter commutes with the sampled B/F), until the separated
-## plant parameters stop changing. Options as @code{hsrivc};
-## @var{arma_method} is accepted and ignored (Hannan-Rissanen is used). The
-## covariance is that of the last refined-IV step on prefiltered data.
+## Hannan-Rissanen (a long AR for the innovations, then least squares)
+## polished by Gauss-Newton prediction-error steps, roots kept in the
+## unit disc (the ARMA estimator of @code{rivc}), and the next refined-IV
+## steps run on the data prefiltered by D/C (exact at the samples for ZOH
+## inputs: the discrete filter commutes with the sampled B/F), until the
+## separated plant parameters stop changing. Options as @code{hsrivc};
+## @var{arma_method} is accepted and ignored. The covariance is that of
+## the last refined-IV step on prefiltered data.
 ##
 ## Outputs as @code{hsrivc}; @code{Infos.Noisemodel} is the discrete-time
 ## @code{idpoly} C/D with the innovation variance.

@@ -33,9 +33,12 @@
 ## 1), @code{NL_H_sd}, @code{NL_W_sd}, @code{theta} = [f b alpha(2:end)
 ## beta(2:end)]', @code{covariance}, @code{sd}, @code{InfoCriterion},
 ## @code{Cond_IPM}, @code{iternum}, @code{converged}, @code{reason};
-## @var{yhat} the simulated output x_hat. Caution: in a Monte Carlo
-## (@file{bench/hammerstein_mc.m}) the spread of the estimates was 0.5-0.75
-## of the reported sd: the covariance is conservative.
+## @var{yhat} the simulated output x_hat. The covariance is the IV
+## sandwich sigma^2 (Z' Psi)^-1 Z' Z (Psi' Z)^-1 of the fixed point: Psi
+## the sensitivity of x_hat to the separated parameters (through
+## g^-1), Z = g'(x_hat) Psi the instruments the MISO step actually uses
+## (thesis eq. 2.13); in a Monte Carlo the spread of the
+## estimates was 0.96-1.10 of the reported sd (80 runs).
 ## @seealso{hsrivc, hrivc}
 ## @end deftypefn
 

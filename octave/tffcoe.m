@@ -11,33 +11,12 @@
 ## (whose delay search it shares). The data, options and outputs are those
 ## of @code{tffsrivc}.
 ##
-## @var{data}: regular time-domain @code{iddata} of a relay-feedback test
-## (see @code{relay}; its whole limit cycles are transformed: the DFT at
-## the harmonics of the cycle with at least 1 % of the largest input
-## harmonic, below a quarter of the sampling frequency, the input corrected
-## for its zero-order hold and, with @code{IntSamp} @qcode{"on"} (default),
-## the output for integrated sampling; the aliases of higher harmonics are
-## neglected), an @code{idfrd} (Ts = 0) or frequency-domain @code{iddata}
-## [Y U] (Ts = 0).
-##
-## The delay: without @var{IODelay}, the SRIVC loss is minimised over
-## td: a grid of @code{NumTd} (50) values in [@code{TdMin}, @code{TdMax}]
-## (0 and half the limit-cycle period, or pi over the median frequency)
-## refined by golden section (separable estimation, Chen et al., Automatica
-## 2018); with @var{IODelay}, from there; with @code{FixTd} @qcode{"on"},
-## td = @var{IODelay} is kept. @var{Mi}: an @code{idtf} whose orders,
-## coefficients (start) and IODelay are used. Other options: @code{MaxIter}
-## (50), @code{Tol} or @code{TolPar} (1e-8); @code{TolFun},
-## @code{StepMax}, @code{StepReduction} and @code{Lambda} are accepted
-## and not used (golden section replaces CONTSID's step rule; the start
-## is least squares with the prefilter 1/(s + sigma)^np, sigma the centre
-## of the band).
-##
-## @var{sys}: an @code{idtf} with IODelay, covariance of [b; a]
-## (s^2 (J'J)^-1, J the Jacobian of the model's frequency response),
-## @code{Report.Fit} (on the frequency data), @code{Report.Parameters.IODelaySD},
-## @code{Report.DataUsed.Harmonics}.
-## @seealso{tffcoe, relay, tfsrivc, srivc}
+## See @code{tffsrivc} for @var{data} (relay-feedback iddata, idfrd or
+## frequency-domain iddata), the delay search, the options (@code{TdMin},
+## @code{TdMax}, @code{NumTd}, @code{FixTd}, @code{MaxIter}, @code{Tol},
+## @code{IntSamp}, ...) and @var{sys} (an @code{idtf} with IODelay and the
+## covariance s^2 (J'J)^-1 of the output-error fit): both are one back-end.
+## @seealso{tffsrivc, relay, tfsrivc, srivc}
 ## @end deftypefn
 
 function [sys, varargout] = tffcoe (varargin)

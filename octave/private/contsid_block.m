@@ -211,7 +211,7 @@ function [M, Infos, yhat] = contsid_block (fname, args)
                  name);
         endif
         ## The start is always the engine's (IVSVF over a grid of cut-offs)
-        ## and the ARMA fit Hannan-Rissanen's; the names are accepted.
+        ## and the ARMA fit arma_estimate's; the names are accepted.
       otherwise
         error ([fname ":badOption"], "%s: unknown option '%s'", fname, name);
     endswitch
