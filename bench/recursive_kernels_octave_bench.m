@@ -111,7 +111,8 @@ bin_ls = fullfile (root, "build", "bench", "bench_rlssvf");
 printf ("uptime: %s", load_avg);
 core_iv = run_core (bin_iv,
                     "^BM_(RsrivcUpdate_KF|RunRecursiveIv_Rsrivc_Thm)/");
-core_ls = run_core (bin_ls, "^BM_(RlsSvfUpdate_KF|RunRlsSvf_Thm|RunRlsSvf_ThmYh)/");
+core_ls = run_core (bin_ls,
+                    "^BM_(RlsSvfUpdate_KF|RunRlsSvf_Thm|RunRlsSvf_ThmYh)/");
 private_dir = fullfile (root, "octave", "private");
 
 printf ("\nRSRIVC-KF, 1e5 samples, per-sample refresh (M samples/s)\n");
@@ -143,8 +144,8 @@ for na = 1:4
   t0 = tic ();
   rsrivc_plain_octave (y(1:Nplain), u(1:Nplain), Ts, lambda_svf, Qn, tsiv);
   r_plain = Nplain / toc (t0);
-  printf ("%3d %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f   max|fix-dyn| %.1e\n",
-          na,
+  printf (["%3d %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f", ...
+           "   max|fix-dyn| %.1e\n"], na,
           core_rate (core_iv, "BM_RsrivcUpdate_KF", na, 0) / 1e6,
           core_rate (core_iv, "BM_RsrivcUpdate_KF", na, 1) / 1e6,
           core_rate (core_iv, "BM_RunRecursiveIv_Rsrivc_Thm", na, 0) / 1e6,
@@ -153,7 +154,7 @@ for na = 1:4
           d);
 endfor
 
-printf ("\nRLSSVF-KF, 1e6 samples (M samples/s); yh: [thm, yh] = rlssvf (...)\n");
+printf ("\nRLSSVF-KF, 1e6 samples (M samples/s); +yh: [thm, yh] = rlssvf\n");
 printf ("%3s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "na", "core fix",
         "core dyn", "thm fix", "thm dyn", "+yh fix", "+yh dyn", "front",
         "front+yh", "gw+yh fx", "gw+yh dy");
@@ -162,7 +163,8 @@ for na = 1:4
   N = 1e6;
   [y, u] = make_record (a, N, Ts);
   data = iddata (y, u, Ts, "InterSample", "zoh");
-  options = {"lambda_svf", lambda_svf, "adm", "kf", "adg", 1e-4 * eye (na + 1)};
+  options = {"lambda_svf", lambda_svf, "adm", "kf", "adg", ...
+             1e-4 * eye(na + 1)};
   rlssvf (iddata (y(1:2000), u(1:2000), Ts, "InterSample", "zoh"), [na 1 0],
           options{:});
   t_front = best_time (@() rlssvf (data, [na 1 0], options{:}), runs);
@@ -173,7 +175,8 @@ for na = 1:4
   unwind_protect
     p = contsid_rlssvf_args ("rlssvf", data, [na 1 0], options{:});
     p.fname = "rlssvf";
-    t_yh_fix = best_time (@() call_gateway ("rlssvf_mex", p, "fixed", 2), runs);
+    t_yh_fix = best_time (@() call_gateway ("rlssvf_mex", p, "fixed", 2),
+                          runs);
     t_yh_dyn = best_time (@() call_gateway ("rlssvf_mex", p, "dynamic", 2),
                           runs);
   unwind_protect_cleanup
