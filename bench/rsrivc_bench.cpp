@@ -57,10 +57,10 @@ constexpr double kTsIv = 100;  // s: RLSSVF for the first 1000 samples
 // (b0 = a_na); na = 2 is 4 / (p^2 + 2.4 p + 4).
 const std::vector<double>& true_denominator(int na) {
   static const std::vector<std::vector<double>> a = {
-      {2.0},                        // p + 2
-      {2.4, 4.0},                   // p^2 + 2.4 p + 4
-      {3.0, 7.0, 5.0},              // (p + 1)(p^2 + 2 p + 5)
-      {3.2, 8.4, 10.4, 8.0}};       // (p^2 + 1.2 p + 4)(p^2 + 2 p + 2)
+      {2.0},                   // p + 2
+      {2.4, 4.0},              // p^2 + 2.4 p + 4
+      {3.0, 7.0, 5.0},         // (p + 1)(p^2 + 2 p + 5)
+      {3.2, 8.4, 10.4, 8.0}};  // (p^2 + 1.2 p + 4)(p^2 + 2 p + 2)
   return a[na - 1];
 }
 

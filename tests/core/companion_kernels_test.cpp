@@ -4,7 +4,7 @@
 // then the estimators on the fixed-size path against the same estimators on
 // the dynamic-size reference path, same record, and the per-sample paths
 // without heap allocation.
-#include "allocation_counter.hpp"  // replaces operator new: one TU only
+#include "ctid/filters/companion_kernels.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "ctid/filters/companion_kernels.hpp"
+#include "allocation_counter.hpp"  // replaces operator new: one TU only
 #include "ctid/filters/discretization.hpp"
 #include "ctid/recursive/recursive_iv.hpp"
 #include "ctid/recursive/rlssvf.hpp"
@@ -91,10 +91,10 @@ TEST(CompanionKernels, ZohMatchesTheMatrixExponential) {
       const double e_phi = norm_relative_error(Phi, Phi_ref);
       const double e_gamma = norm_relative_error(Gamma, Gamma_ref);
       worst = std::max({worst, e_phi, e_gamma});
-      EXPECT_LE(e_phi, 1e-14) << "n = " << n << ", h = " << h
-                              << ", d = " << d.transpose();
-      EXPECT_LE(e_gamma, 1e-14) << "n = " << n << ", h = " << h
-                                << ", d = " << d.transpose();
+      EXPECT_LE(e_phi, 1e-14)
+          << "n = " << n << ", h = " << h << ", d = " << d.transpose();
+      EXPECT_LE(e_gamma, 1e-14)
+          << "n = " << n << ", h = " << h << ", d = " << d.transpose();
     }
   }
   std::printf("largest relative difference to expm: %.2e\n", worst);
@@ -170,8 +170,7 @@ struct TestRecord {
   Eigen::VectorXd theta;  // [a_1 .. a_n b_0 .. b_(n-1)]
 };
 
-TestRecord make_record(int n, Eigen::Index length, double ts,
-                       unsigned seed) {
+TestRecord make_record(int n, Eigen::Index length, double ts, unsigned seed) {
   const std::vector<std::vector<std::complex<double>>> roots = {
       {{-2, 0}},
       {{-1.2, 1.6}, {-1.2, -1.6}},
@@ -325,9 +324,8 @@ struct IvRunner {
 // (RSRIVC-KF and RIVSVF-KF, na = 4), when the estimates already agree.
 constexpr Eigen::Index kSettle = 200;
 template <typename S, typename Config, typename Runner>
-void expect_paths_agree(const TestRecord& data, double ts,
-                        const Config& config, Runner&& runner, double tol,
-                        const std::string& what) {
+void expect_paths_agree(const TestRecord& data, double ts, const Config& config,
+                        Runner&& runner, double tol, const std::string& what) {
   const RunResult<S> fixed =
       run_record<S>(data, ts, config, FilterKernels::kFixedSize, runner);
   const RunResult<S> dynamic =
@@ -349,13 +347,13 @@ void expect_paths_agree(const TestRecord& data, double ts,
   };
   double settling = settling_difference(yf, yd);
   for (Eigen::Index i = 0; i < tf.cols(); ++i) {
-    EXPECT_TRUE(test::MatrixNear(tf.col(i).tail(rest), td.col(i).tail(rest),
-                                 tol))
+    EXPECT_TRUE(
+        test::MatrixNear(tf.col(i).tail(rest), td.col(i).tail(rest), tol))
         << what << ", parameter " << i;
     settling = std::max(settling, settling_difference(tf.col(i), td.col(i)));
   }
-  EXPECT_TRUE(test::MatrixNear(yf.tail(rest - kSettle),
-                               yd.tail(rest - kSettle), tol))
+  EXPECT_TRUE(
+      test::MatrixNear(yf.tail(rest - kSettle), yd.tail(rest - kSettle), tol))
       << what << ", YH";
   EXPECT_TRUE(std::isfinite(settling)) << what;
   if (settling > tol) {
@@ -407,8 +405,8 @@ TEST(CompanionKernels, EstimatorsAgreeWithTheDynamicPathInSingle) {
     for (const Case c : {Case::kKf, Case::kFf}) {
       expect_paths_agree<float>(
           data, ts, rsrivc_config<float>(n, c, IvMethod::kRsrivc), IvRunner(),
-          tol, "float RSRIVC-" + std::string(name(c)) +
-                   " n = " + std::to_string(n));
+          tol,
+          "float RSRIVC-" + std::string(name(c)) + " n = " + std::to_string(n));
     }
   }
 }

@@ -76,8 +76,8 @@ struct SmallSquare {
 // A (n^2 operations instead of n^3).
 template <int N, typename S>
 inline void identity_plus_companion_times(const S* c, S h, S r,
-                                   const SmallSquare<N, S>& X,
-                                   SmallSquare<N, S>& out) {
+                                          const SmallSquare<N, S>& X,
+                                          SmallSquare<N, S>& out) {
   const S hr = h * r;
   for (int i = 0; i + 1 < N; ++i) {
     for (int j = 0; j < N; ++j) out.a[i][j] = X.a[i + 1][j] * hr;
