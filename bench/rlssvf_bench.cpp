@@ -1,7 +1,10 @@
-// Throughput of RLSSVF in the core, in samples per second, on one core:
+// Throughput of RLSSVF in the core, in samples per second, on one core,
+// for na = 1..4 (nb = 1, nk = 0), each with the fixed-size filter kernels
+// (companion_kernels.hpp, dynamic:0, the default) and the dynamic-size
+// reference (dynamic:1):
 //
 //   BM_RlsSvfUpdate_KF    RlsSvf::update(u, y) per sample, Kalman filter
-//                         adaptation (RLSSVF-KF, eq. 1.59), na = 2, nb = 1;
+//                         adaptation (RLSSVF-KF, eq. 1.59);
 //   BM_RlsSvfUpdate_FF    the same with a forgetting factor of 0.999
 //                         (eq. 1.57);
 //   BM_RunRlsSvf_Thm      run_rlssvf() over the record, THM only;
@@ -9,11 +12,12 @@
 //                         frozen model of every sample (eq. 1.60), whose
 //                         denominator changes at every sample, so the ZOH
 //                         discretisation (a matrix exponential) is redone per
-//                         sample: expect it to be much slower.
+//                         sample.
 //
 // Each iteration is one pass over a record of 1e6 samples generated once:
-// a random binary (PRBS-like) input and the ZOH response of
-// 4 / (p^2 + 2.4 p + 4) at Ts = 0.1 s plus white noise. Items are samples,
+// a random binary (PRBS-like) input and the ZOH response of b0/A(p) of unit
+// static gain (na = 2: 4 / (p^2 + 2.4 p + 4)) at Ts = 0.1 s plus white
+// noise. Items are samples,
 // so items_per_second is samples/s; a summary in million samples/s follows
 // the console table. A run whose final estimate is far from the true
 // parameters is labelled DIVERGED (timed all the same). Run with
@@ -38,25 +42,37 @@ constexpr Eigen::Index kNumSamples = 1000000;
 constexpr double kTs = 0.1;
 constexpr double kLambdaSvf = 3.2;
 constexpr double kForgettingFactor = 0.999;
-// True parameters [a1 a2 b0] of 4 / (p^2 + 2.4 p + 4).
-const double kTheta[3] = {2.4, 4.0, 4.0};
+
+// True denominators [a1 .. a_na] of b0 / A(p), na = 1..4, unit static gain
+// (b0 = a_na); na = 2 is 4 / (p^2 + 2.4 p + 4).
+const std::vector<double>& true_denominator(int na) {
+  static const std::vector<std::vector<double>> a = {
+      {2.0},                   // p + 2
+      {2.4, 4.0},              // p^2 + 2.4 p + 4
+      {3.0, 7.0, 5.0},         // (p + 1)(p^2 + 2 p + 5)
+      {3.2, 8.4, 10.4, 8.0}};  // (p^2 + 1.2 p + 4)(p^2 + 2 p + 2)
+  return a[na - 1];
+}
 
 struct BenchData {
   std::vector<double> u;
   std::vector<double> y;
+  std::vector<double> theta;  // [a1 .. a_na b0]
 };
 
 // Random binary input that switches with probability 0.1 per sample (mean
-// hold 10 samples, rich enough for the 3 parameters), the exact ZOH response
-// of the true system, and output noise of standard deviation 0.05.
-BenchData make_data() {
+// hold 10 samples), the exact ZOH response of the true system of order na,
+// and output noise of standard deviation 0.05.
+BenchData make_data(int na) {
   BenchData data;
+  const std::vector<double>& a = true_denominator(na);
+  data.theta = a;
+  data.theta.push_back(a.back());
   data.u.resize(kNumSamples);
   data.y.resize(kNumSamples);
-  Eigen::VectorXd d(2);
-  d << kTheta[0], kTheta[1];
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(2, 1);
-  G(1, 0) = 1;
+  const Eigen::VectorXd d = Eigen::Map<const Eigen::VectorXd>(a.data(), na);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(na, 1);
+  G(na - 1, 0) = 1;
   Eigen::MatrixXd Phi, Gamma;
   ctid::zoh_discretize<double>(ctid::companion_matrix<double>(d), G, kTs, Phi,
                                Gamma);
@@ -64,33 +80,44 @@ BenchData make_data() {
   std::bernoulli_distribution toggle(0.1);
   std::normal_distribution<double> noise(0.0, 0.05);
   double level = 1;
-  Eigen::Vector2d z = Eigen::Vector2d::Zero();
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(na);
   for (Eigen::Index k = 0; k < kNumSamples; ++k) {
     if (toggle(rng)) level = -level;
     data.u[k] = level;
-    data.y[k] = kTheta[2] * z(0) + noise(rng);
+    data.y[k] = data.theta[na] * z(0) + noise(rng);
     z = Phi * z + Gamma.col(0) * level;
   }
   return data;
 }
 
-const BenchData& bench_data() {
-  static const BenchData data = make_data();
-  return data;
+const BenchData& bench_data(int na) {
+  static std::vector<BenchData> data(4);
+  if (data[na - 1].u.empty()) data[na - 1] = make_data(na);
+  return data[na - 1];
 }
 
-ctid::RlsSvfConfig<double> kf_config() {
+// Benchmark arguments: na, then 0 for the fixed-size filter kernels
+// (companion_kernels.hpp, the default) or 1 for the dynamic-size reference.
+int order_of(const benchmark::State& state) { return int(state.range(0)); }
+ctid::FilterKernels kernels_of(const benchmark::State& state) {
+  return state.range(1) == 0 ? ctid::FilterKernels::kFixedSize
+                             : ctid::FilterKernels::kDynamic;
+}
+
+ctid::RlsSvfConfig<double> kf_config(const benchmark::State& state) {
+  const int na = order_of(state);
   ctid::RlsSvfConfig<double> config;
-  config.orders = ctid::siso_orders(2, 1, 0);
+  config.orders = ctid::siso_orders(na, 1, 0);
   config.svf.lambda_svf = kLambdaSvf;
-  config.adaptation =
-      ctid::KalmanAdaptation<double>(1e-4 * Eigen::MatrixXd::Identity(3, 3));
+  config.svf.kernels = kernels_of(state);
+  config.adaptation = ctid::KalmanAdaptation<double>(
+      1e-4 * Eigen::MatrixXd::Identity(na + 1, na + 1));
   config.ts = kTs;
   return config;
 }
 
-ctid::RlsSvfConfig<double> ff_config() {
-  ctid::RlsSvfConfig<double> config = kf_config();
+ctid::RlsSvfConfig<double> ff_config(const benchmark::State& state) {
+  ctid::RlsSvfConfig<double> config = kf_config(state);
   config.adaptation =
       ctid::ForgettingFactorAdaptation<double>(kForgettingFactor);
   return config;
@@ -110,10 +137,11 @@ ctid::RecordView<double> record_view(const BenchData& data) {
 // recursion diverged (or was optimised away) and the timing does not stand
 // for a working estimator. It is still reported, flagged in the label, so
 // that the cost of the arithmetic stays visible.
-void check_final_estimate(benchmark::State& state, const double* theta,
-                          Eigen::Index stride) {
-  for (int i = 0; i < 3; ++i) {
-    if (!(std::abs(theta[i * stride] - kTheta[i]) <= 0.1 * kTheta[i])) {
+void check_final_estimate(benchmark::State& state, const BenchData& data,
+                          const double* theta, Eigen::Index stride) {
+  for (size_t i = 0; i < data.theta.size(); ++i) {
+    if (!(std::abs(theta[i * stride] - data.theta[i]) <=
+          0.1 * std::abs(data.theta[i]))) {
       state.SetLabel("DIVERGED: final estimate far from the truth");
       return;
     }
@@ -127,7 +155,7 @@ void report_samples(benchmark::State& state) {
 
 void run_update_loop(benchmark::State& state,
                      const ctid::RlsSvfConfig<double>& config) {
-  const BenchData& data = bench_data();
+  const BenchData& data = bench_data(order_of(state));
   ctid::RlsSvf<double> estimator;
   const ctid::Status status = estimator.configure(config);
   if (!status.ok()) {
@@ -142,23 +170,24 @@ void run_update_loop(benchmark::State& state,
     benchmark::DoNotOptimize(estimator.theta().data());
     benchmark::ClobberMemory();
   }
-  check_final_estimate(state, estimator.theta().data(), 1);
+  check_final_estimate(state, data, estimator.theta().data(), 1);
   report_samples(state);
 }
 
 void BM_RlsSvfUpdate_KF(benchmark::State& state) {
-  run_update_loop(state, kf_config());
+  run_update_loop(state, kf_config(state));
 }
 
 void BM_RlsSvfUpdate_FF(benchmark::State& state) {
-  run_update_loop(state, ff_config());
+  run_update_loop(state, ff_config(state));
 }
 
 void run_batch(benchmark::State& state, bool with_yh) {
-  const BenchData& data = bench_data();
-  const ctid::RlsSvfConfig<double> config = kf_config();
+  const int na = order_of(state);
+  const BenchData& data = bench_data(na);
+  const ctid::RlsSvfConfig<double> config = kf_config(state);
   const ctid::RecordView<double> record = record_view(data);
-  std::vector<double> thm(kNumSamples * 3);
+  std::vector<double> thm(kNumSamples * (na + 1));
   std::vector<double> yh(with_yh ? kNumSamples : 0);
   ctid::RecursiveOutputs<double> out;
   out.thm = thm.data();
@@ -173,7 +202,7 @@ void run_batch(benchmark::State& state, bool with_yh) {
     benchmark::DoNotOptimize(yh.data());
     benchmark::ClobberMemory();
   }
-  check_final_estimate(state, thm.data() + kNumSamples - 1, kNumSamples);
+  check_final_estimate(state, data, thm.data() + kNumSamples - 1, kNumSamples);
   report_samples(state);
 }
 
@@ -181,10 +210,21 @@ void BM_RunRlsSvf_Thm(benchmark::State& state) { run_batch(state, false); }
 
 void BM_RunRlsSvf_ThmYh(benchmark::State& state) { run_batch(state, true); }
 
-BENCHMARK(BM_RlsSvfUpdate_KF)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RlsSvfUpdate_FF)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RunRlsSvf_Thm)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_RunRlsSvf_ThmYh)->Unit(benchmark::kMillisecond);
+// Orders 1-4, each with the fixed-size kernels and the dynamic reference
+// next to each other.
+void orders_and_kernels(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"na", "dynamic"});
+  for (int na = 1; na <= 4; ++na) {
+    b->Args({na, 0});
+    b->Args({na, 1});
+  }
+  b->Unit(benchmark::kMillisecond);
+}
+
+BENCHMARK(BM_RlsSvfUpdate_KF)->Apply(orders_and_kernels);
+BENCHMARK(BM_RlsSvfUpdate_FF)->Apply(orders_and_kernels);
+BENCHMARK(BM_RunRlsSvf_Thm)->Apply(orders_and_kernels);
+BENCHMARK(BM_RunRlsSvf_ThmYh)->Apply(orders_and_kernels);
 
 // The console table, then one line per benchmark in million samples/s.
 class SummaryReporter : public benchmark::ConsoleReporter {
@@ -208,7 +248,7 @@ class SummaryReporter : public benchmark::ConsoleReporter {
     std::printf("\nThroughput (million samples/s, %lld samples per pass):\n",
                 static_cast<long long>(kNumSamples));
     for (const auto& [name, rate] : rates_) {
-      std::printf("  %-28s %8.3f\n", name.c_str(), rate / 1e6);
+      std::printf("  %-40s %8.3f\n", name.c_str(), rate / 1e6);
     }
     std::fflush(stdout);
   }

@@ -4,13 +4,16 @@
 ## user would write without the toolbox, used by bench/rsrivc_octave_bench.m
 ## to measure what the compiled @code{rsrivc} front-end buys.
 ##
-## Model nn = [1 2 0]: x = b0 / (p^2 + f1 p + f2) u, y = x + noise, with
-## uniformly sampled data, u held constant between samples (ZOH). @var{Qn}
-## is the 3-by-3 normalised covariance of the random walk of the parameters
-## and @var{thm} (N-by-3) is ordered [b0 f1 f2], as @code{rsrivc}. The same
-## algorithm as the core (core/include/ctid/recursive/recursive_iv.hpp) and so as
+## Model nn = [1 na 0]: x = b0 / (p^na + f1 p^(na-1) + .. + f_na) u,
+## y = x + noise, with uniformly sampled data, u held constant between
+## samples (ZOH); na = rows (@var{Qn}) - 1 (the benchmark runs na = 1..4;
+## na = 2, nn = [1 2 0], is the case described below). @var{Qn} is the
+## (na+1)-by-(na+1) normalised covariance of the random walk of the
+## parameters and @var{thm} (N-by-(na+1)) is ordered [b0 f1 .. f_na], as
+## @code{rsrivc}. The same algorithm as the core
+## (core/include/ctid/recursive_iv.hpp) and so as
 ##
-##   rsrivc (iddata (y, u, Ts, "InterSample", "zoh"), [1 2 0],
+##   rsrivc (iddata (y, u, Ts, "InterSample", "zoh"), [1 na 0],
 ##           "lambda_svf", lambda_svf, "adm", "kf", "adg", Qn, "tsiv", tsiv)
 ##
 ## with the defaults th0 = 0, P0 = 1e4 I, dtupdate = Ts, M_theta = q^-1,
@@ -44,35 +47,37 @@ function thm = rsrivc_plain_octave (y, u, Ts, lambda_svf, Qn, tsiv)
   u = u(:);
   N = numel (y);
   nb = 1;                     # numerator parameters [b0]
-  na = 2;                     # denominator parameters [f1 f2]
+  na = rows (Qn) - 1;         # denominator parameters [f1 .. f_na]
   np = nb + na;
-  if (numel (u) != N || ! isequal (size (Qn), [np np]))
-    error ("rsrivc_plain_octave: y, u must have N samples and Qn be 3-by-3");
+  if (numel (u) != N || na < 1 || ! isequal (size (Qn), [np np]))
+    error ("rsrivc_plain_octave: y, u must have N samples and Qn be square, at least 2-by-2");
   endif
 
-  ## 1. RLSSVF regressors over the whole record: phi_ls = [u_f, -y_f',
-  ## -y_f], target y_f'' with the fixed SVF lambda^2 / (p + lambda)^2.
+  ## 1. RLSSVF regressors over the whole record: phi_ls = [u_f,
+  ## -y_f^(na-1) .. -y_f], target y_f^(na) with the fixed SVF
+  ## lambda^na / (p + lambda)^na.
   d_svf = poly (-lambda_svf * ones (1, na));          # [1 2*lambda lambda^2]
   g_svf = lambda_svf ^ na;
-  yf_svf = zeros (N, na + 1);                         # [y_f, y_f', y_f'']
+  yf_svf = zeros (N, na + 1);                         # [y_f .. y_f^(na)]
   for i = 0:na
     [bq, aq] = tustin ([g_svf, zeros(1, i)], d_svf, Ts);  # g p^i / D(p)
     yf_svf(:, i + 1) = filter (bq, aq, y);
   endfor
   [Phi, Gam] = zoh (companion (d_svf(2:end)), Ts);
   den_q = poly (Phi);
-  num_q = poly (Phi - Gam * [g_svf, 0]) - den_q;      # g [1 0] (qI - Phi)^-1 Gam
+  c_svf = [g_svf, zeros(1, na - 1)];
+  num_q = poly (Phi - Gam * c_svf) - den_q;           # g e1' (qI - Phi)^-1 Gam
   uf_svf = filter (num_q, den_q, u);                  # u_f
-  phi_ls = [uf_svf, -yf_svf(:, 2), -yf_svf(:, 1)];
-  target_ls = yf_svf(:, 3);
+  phi_ls = [uf_svf, -yf_svf(:, na:-1:1)];
+  target_ls = yf_svf(:, na + 1);
 
   ## 2.-3. The recursion.
-  theta = zeros (np, 1);      # [b0; f1; f2]
+  theta = zeros (np, 1);      # [b0; f1; ..; f_na]
   P = 1e4 * eye (np);
   theta_prev = zeros (np, 1); # M_theta = q^-1: the estimate one sample back
   a_fb = d_svf(2:end);        # A(p) of the auxiliary model and prefilter
   b_fb = zeros (nb, 1);       # and the auxiliary model's numerator
-  ## States [w; w'] of 1/A(p). The auxiliary model b0/A(p) and the prefilter
+  ## States [w; w'; ..] of 1/A(p). The auxiliary model b0/A(p) and the prefilter
   ## f2/A(p) on u have the same denominator, rule (ZOH) and input, so one
   ## state serves both.
   w_u = zeros (na, 1);
@@ -101,11 +106,11 @@ function thm = rsrivc_plain_octave (y, u, Ts, lambda_svf, Qn, tsiv)
     y_prev = y(k);
     x_prev = xhat;
 
-    g = a_fb(na);             # unit static gain f2 / A(p)
+    g = a_fb(na);             # unit static gain f_na / A(p)
     u_f = g * w_u(1);
-    y_f2 = g * (y(k) - a_fb * w_y(na:-1:1));          # y_f''
-    phi = [u_f; -g * w_y(2); -g * w_y(1)];
-    zeta = [u_f; -g * w_x(2); -g * w_x(1)];
+    y_fna = g * (y(k) - a_fb * w_y(na:-1:1));         # y_f^(na)
+    phi = [u_f; -g * w_y(na:-1:1)];
+    zeta = [u_f; -g * w_x(na:-1:1)];
 
     P = P + Qn;
     if ((k - 1) * Ts < tsiv * (1 - 1e-12))
@@ -119,7 +124,7 @@ function thm = rsrivc_plain_octave (y, u, Ts, lambda_svf, Qn, tsiv)
       ## IV Kalman filter, eq. (2.29)
       Pzeta = P * zeta;
       L = Pzeta / (1 + phi.' * Pzeta);
-      theta = theta + L * (y_f2 - phi.' * theta);
+      theta = theta + L * (y_fna - phi.' * theta);
       P = P - L * (phi.' * P);
     endif
     thm(k, :) = theta.';

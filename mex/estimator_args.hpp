@@ -110,6 +110,17 @@ inline bool read_single_precision(OptionsReader& opt) {
                           false);
 }
 
+// 'fixed' (default): the fixed-size filter kernels for orders 1-4
+// (companion_kernels.hpp); 'dynamic': the dynamic-size reference, for
+// comparisons and benchmarks.
+inline FilterKernels read_filter_kernels(OptionsReader& opt) {
+  return opt.choice<FilterKernels>(
+      "kernels",
+      {{"fixed", FilterKernels::kFixedSize},
+       {"dynamic", FilterKernels::kDynamic}},
+      FilterKernels::kFixedSize);
+}
+
 // ---- single precision: the same core, instantiated for float -----------
 
 template <typename T>
@@ -136,6 +147,7 @@ SvfSettings<T> cast(const SvfSettings<double>& s) {
   out.u_intersample = s.u_intersample;
   out.y_intersample = s.y_intersample;
   out.rest_at_first_sample = s.rest_at_first_sample;
+  out.kernels = s.kernels;
   return out;
 }
 template <typename T>

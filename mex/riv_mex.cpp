@@ -6,9 +6,11 @@
 //
 // y N-by-1, u N-by-nu, t the sampling interval or the N instants; the
 // fields of options are listed in estimator_args.hpp, plus precision
-// 'double' | 'single'. INFO has the number of estimates refused by the
-// stability test, kappa_2(P), prediction errors and innovation scales per
-// sample, and with conditional updating kappa_2 of the parallel RLSSVF-FF,
+// 'double' | 'single' and kernels 'fixed' | 'dynamic' (the fixed-size
+// filter kernels for orders 1-4, the default, or the dynamic-size
+// reference). INFO has the number of estimates refused by the stability
+// test, kappa_2(P), prediction errors and innovation scales per sample, and
+// with conditional updating kappa_2 of the parallel RLSSVF-FF,
 // whether each sample updated the estimates, and the number of resets.
 #include <vector>
 
@@ -73,6 +75,7 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::RecursiveIvConfig<double> config;
   ctid::ClosedLoopSignals<double> loop;
   ctid::mex::read_riv_config(g, opt, record, &config, &loop);
+  config.svf.kernels = ctid::mex::read_filter_kernels(opt);
   const bool single = ctid::mex::read_single_precision(opt);
   opt.finish();
 

@@ -7,7 +7,8 @@
 // fields of options are listed in estimator_args.hpp (orders, SVF,
 // adaptation, th0, P0, update form, Gamma, scaling, ic, tsls) plus
 // precision 'double' | 'single' (the core instantiated for float on a float
-// copy of the data). YH, PSET and INFO (kappa_2(P), the initial-condition
+// copy of the data) and kernels 'fixed' | 'dynamic' (the fixed-size filter
+// kernels for orders 1-4, the default, or the dynamic-size reference). YH, PSET and INFO (kappa_2(P), the initial-condition
 // coefficients, prediction errors and innovation scales per sample) are
 // computed only when requested.
 #include "estimator_args.hpp"
@@ -30,6 +31,7 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::RlsSvfConfig<double> config;
   ctid::mex::read_rlssvf_config(g, opt, &config);
+  config.svf.kernels = ctid::mex::read_filter_kernels(opt);
   const bool single = ctid::mex::read_single_precision(opt);
   opt.finish();
   g.check(ctid::validate_record(record, config.orders));

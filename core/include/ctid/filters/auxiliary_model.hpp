@@ -22,9 +22,10 @@ class AuxiliaryModel {
  public:
   AuxiliaryModel() = default;
 
-  void configure(const ModelOrders& orders, InterSample u_intersample) {
+  void configure(const ModelOrders& orders, InterSample u_intersample,
+                 FilterKernels kernels = FilterKernels::kFixedSize) {
     orders_ = orders;
-    disc_.configure(orders.na, u_intersample);
+    disc_.configure(orders.na, u_intersample, kernels);
     channels_.resize(orders.num_inputs());
     delays_.resize(orders.num_inputs());
     for (int j = 0; j < orders.num_inputs(); ++j) {

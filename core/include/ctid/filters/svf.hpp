@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ctid/filters/companion_kernels.hpp"
 #include "ctid/filters/discretization.hpp"
 #include "ctid/base/types.hpp"
 
@@ -53,12 +54,19 @@ S svf_gain(int n, S lambda, bool normalised) {
 template <typename S>
 class FilterDiscretization {
  public:
-  void configure(int order, InterSample intersample) {
+  // The fixed-size kernels (companion_kernels.hpp) are chosen here, once,
+  // for orders up to kMaxFixedOrder unless `kernels` asks for the
+  // dynamic-size reference.
+  void configure(int order, InterSample intersample,
+                 FilterKernels kernels = FilterKernels::kFixedSize) {
     n_ = order;
     intersample_ = intersample;
     d_ = Vector<S>::Zero(n_);
     Phi_ = Matrix<S>::Identity(n_, n_);
     gamma_ = Vector<S>::Zero(n_);
+    const bool fixed = kernels == FilterKernels::kFixedSize;
+    discretizer_ = fixed ? companion_discretizer<S>(n_, intersample) : nullptr;
+    propagator_ = fixed ? companion_propagator<S>(n_) : nullptr;
     dirty_ = true;
   }
 
@@ -76,6 +84,12 @@ class FilterDiscretization {
   void ensure(S h) {
     const S tolerance = 64 * std::numeric_limits<S>::epsilon();
     if (!dirty_ && std::abs(h - h_) <= tolerance * h_) return;
+    if (discretizer_ != nullptr) {
+      discretizer_(d_.data(), h, Phi_.data(), gamma_.data());
+      h_ = h;
+      dirty_ = false;
+      return;
+    }
     F_.setZero(n_, n_);
     for (int i = 0; i + 1 < n_; ++i) F_(i, i + 1) = 1;
     for (int j = 0; j < n_; ++j) F_(n_ - 1, j) = -d_(n_ - 1 - j);
@@ -104,6 +118,8 @@ class FilterDiscretization {
   const Vector<S>& denominator() const { return d_; }
   const Matrix<S>& Phi() const { return Phi_; }
   const Vector<S>& Gamma() const { return gamma_; }
+  // The fixed-size z <- Phi z + Gamma v of this order, or nullptr.
+  CompanionPropagator<S> propagator() const { return propagator_; }
 
  private:
   int n_ = 0;
@@ -113,6 +129,8 @@ class FilterDiscretization {
   Vector<S> gamma_;
   Matrix<S> F_, G_, Gamma_, work_;
   Eigen::PartialPivLU<Matrix<S>> lu_;
+  CompanionDiscretizer<S> discretizer_ = nullptr;
+  CompanionPropagator<S> propagator_ = nullptr;
   S h_ = 0;
   bool dirty_ = true;
 };
@@ -146,7 +164,10 @@ class FilterChannel {
   // Feeds s(t_k); `disc` must hold the matrices of t_k - t_(k-1).
   void step(const FilterDiscretization<S>& disc, S gain, S s) {
     const bool zoh = disc.intersample() == InterSample::kZoh;
-    if (!first_) {
+    if (!first_ && disc.propagator() != nullptr) {
+      disc.propagator()(disc.Phi().data(), disc.Gamma().data(), z_.data(),
+                        zoh ? s_prev_ : s_prev_ + s);
+    } else if (!first_) {
       z_next_.noalias() = disc.Phi() * z_;
       z_next_ += disc.Gamma() * (zoh ? s_prev_ : s_prev_ + s);
       z_.swap(z_next_);

@@ -27,6 +27,9 @@ struct SvfSettings {
   // Trapezoidal channels start at rest at the first sample instead of as a
   // discrete filter from rest (see FilterChannel::reset).
   bool rest_at_first_sample = false;
+  // Fixed-size filter kernels for orders 1-4 (companion_kernels.hpp), or the
+  // dynamic-size reference.
+  FilterKernels kernels = FilterKernels::kFixedSize;
 };
 
 template <typename S>
@@ -47,9 +50,9 @@ class SvfRegressor {
     const int na = orders.na;
     const Vector<S> d = svf_denominator<S>(na, svf.lambda_svf);
     gain_ = svf_gain<S>(na, svf.lambda_svf, svf.normalised);
-    y_disc_.configure(na, svf.y_intersample);
+    y_disc_.configure(na, svf.y_intersample, svf.kernels);
     y_disc_.set_denominator(d);
-    u_disc_.configure(na, svf.u_intersample);
+    u_disc_.configure(na, svf.u_intersample, svf.kernels);
     u_disc_.set_denominator(d);
     y_channel_.configure(na);
     y_channel_.set_rest_at_first_sample(svf.rest_at_first_sample);

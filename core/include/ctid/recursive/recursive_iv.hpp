@@ -190,9 +190,10 @@ class RecursiveIv {
     // Fixed SVF (RIVSVF) or adaptive prefilter (RSRIVC) on y, x_hat
     // (trapezoidal) and on u or u_hat (the input's rule).
     const InterSample u_rule = config.svf.u_intersample;
-    signal_disc_.configure(na, config.svf.y_intersample);
-    input_disc_.configure(na, u_rule);
-    aux_disc_.configure(na, u_rule);
+    const FilterKernels kernels = config.svf.kernels;
+    signal_disc_.configure(na, config.svf.y_intersample, kernels);
+    input_disc_.configure(na, u_rule, kernels);
+    aux_disc_.configure(na, u_rule, kernels);
     y_channel_.configure(na);
     xhat_channel_.configure(na);
     uhat_channel_.configure(na);
@@ -593,7 +594,8 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
   const Status run =
       record_recursive_run(config.orders, config.svf.u_intersample, record, out,
                            Adapter{estimator, loop, windup},
-                           "the scaling of the data, lambda_svf and tsiv");
+                           "the scaling of the data, lambda_svf and tsiv",
+                           config.svf.kernels);
   if (rejections != nullptr) *rejections = estimator.stability_rejections();
   if (windup != nullptr) windup->resets = estimator.resets();
   return run;

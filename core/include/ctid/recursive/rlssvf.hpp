@@ -456,12 +456,13 @@ template <typename S, typename Estimator>
 Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
                             const RecordView<S>& record,
                             const RecursiveOutputs<S>& out,
-                            Estimator&& estimator, const char* hint) {
+                            Estimator&& estimator, const char* hint,
+                            FilterKernels kernels = FilterKernels::kFixedSize) {
   const Eigen::Index n = record.num_samples;
   const Eigen::Index np = orders.num_parameters();
   const Eigen::Index nu = record.num_inputs;
   AuxiliaryModel<S> frozen_model;
-  if (out.yh != nullptr) frozen_model.configure(orders, u_rule);
+  if (out.yh != nullptr) frozen_model.configure(orders, u_rule, kernels);
   Vector<S> u_k(nu);
   for (Eigen::Index k = 0; k < n; ++k) {
     for (Eigen::Index j = 0; j < nu; ++j) u_k(j) = record.u_at(k, j);
@@ -524,7 +525,8 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
   };
   status = record_recursive_run(config.orders, config.svf.u_intersample, record,
                                 out, Adapter{estimator},
-                                "the scaling of the data and lambda_svf");
+                                "the scaling of the data and lambda_svf",
+                                config.svf.kernels);
   if (status.ok() && estimator.failed()) {
     return numerical_failure(
         "R of LMR-RLSSVF lost positive definiteness; check Gamma and the "
