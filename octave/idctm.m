@@ -108,7 +108,17 @@ function [M, varargout] = idctm (varargin)
   for f = {"nk", "InterSample", "theta", "covariance", "noise_variance", ...
            "method", "iterations", "converged"}
     if (isfield (s, f{1}) && ! isempty (s.(f{1})))
-      M = set (M, f{1}, s.(f{1}));
+      try
+        M = set (M, f{1}, s.(f{1}));
+      catch err
+        ## The idpoly checks the value; the error is ours.
+        reason = regexprep (err.identifier, '^.*:', "");
+        if (isempty (regexp (reason, '^[A-Za-z]\w*$', "once")))
+          reason = "badInput";
+        endif
+        error (["idctm:" reason], "idctm: %s: %s", f{1},
+               regexprep (err.message, '^[^:]*: *', ""));
+      end_try_catch
     endif
   endfor
 endfunction
@@ -151,6 +161,9 @@ endfunction
 %!error id=idctm:badOption idctm (1, [1 1], "bogus", 1)
 %!error id=idctm:badOption idctm (struct ("B", 1, "F", [1 1], "bogus", 1))
 %!error id=idctm:badInput idctm ({1, 2}, {[1 1]})
+%!error id=idctm:badInput idctm (4, [1 2.4 4], "nk", NaN)
+%!error id=idctm:badInput idctm (4, [1 2.4 4], "nk", -1)
+%!error id=idctm:badInput idctm (struct ("B", 4, "F", [1 2.4 4], "nk", Inf))
 
 %!demo
 %! M = idctm (4, [1 2.4 4])
