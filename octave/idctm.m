@@ -73,7 +73,8 @@ function [M, varargout] = idctm (varargin)
   endif
   for j = 1:numel (F)
     f = F{j};
-    if (! isnumeric (f) || ! isreal (f) || ! isvector (f) || numel (f) < 2
+    if (! isfloat (f) || issparse (f) || ! isreal (f) || ! isvector (f)
+        || numel (f) < 2
         || f(1) == 0 || any (! isfinite (f)))
       error ("idctm:badInput", "idctm: F must be a finite [1 f1 .. f_nf]");
     endif
@@ -84,7 +85,7 @@ function [M, varargout] = idctm (varargin)
   endif
   for j = 1:numel (B)
     g = F{min (j, numel (F))}(1);
-    if (! isnumeric (B{j}) || ! isreal (B{j}) || isempty (B{j})
+    if (! isfloat (B{j}) || issparse (B{j}) || ! isreal (B{j}) || isempty (B{j})
         || ! isvector (B{j}) || any (! isfinite (B{j})))
       error ("idctm:badInput", "idctm: B must be finite real rows");
     endif
@@ -94,7 +95,11 @@ function [M, varargout] = idctm (varargin)
     endif
   endfor
   F = cellfun (@(f) double (f(:).') / f(1), F, "UniformOutput", false);
-  M = idpoly (1, B, 1, 1, F, 1, 0);
+  try
+    M = idpoly (1, B, 1, 1, F, 1, 0);
+  catch err
+    as_idctm (err, "B, F");
+  end_try_catch
   rep = struct ();
   if (isfield (s, "Ts") && ! isempty (s.Ts))
     rep.DataUsed = struct ("Ts", s.Ts);
@@ -108,9 +113,23 @@ function [M, varargout] = idctm (varargin)
   for f = {"nk", "InterSample", "theta", "covariance", "noise_variance", ...
            "method", "iterations", "converged"}
     if (isfield (s, f{1}) && ! isempty (s.(f{1})))
-      M = set (M, f{1}, s.(f{1}));
+      try
+        M = set (M, f{1}, s.(f{1}));
+      catch err
+        as_idctm (err, f{1});
+      end_try_catch
     endif
   endfor
+endfunction
+
+## The idpoly checks the values; the error is ours.
+function as_idctm (err, what)
+  reason = regexprep (err.identifier, '^.*:', "");
+  if (isempty (regexp (reason, '^[A-Za-z]\w*$', "once")))
+    reason = "badInput";
+  endif
+  error (["idctm:" reason], "idctm: %s: %s", what,
+         regexprep (err.message, '^[^:]*: *', ""));
 endfunction
 
 %!test
@@ -151,6 +170,11 @@ endfunction
 %!error id=idctm:badOption idctm (1, [1 1], "bogus", 1)
 %!error id=idctm:badOption idctm (struct ("B", 1, "F", [1 1], "bogus", 1))
 %!error id=idctm:badInput idctm ({1, 2}, {[1 1]})
+%!error id=idctm:badInput idctm (4, [1 2.4 4], "nk", NaN)
+%!error id=idctm:badInput idctm (sparse (4), uint16 ([1 2 4]))
+%!error id=idctm:badInput idctm (int8 (4), [1 2.4 4])
+%!error id=idctm:badInput idctm (4, [1 2.4 4], "nk", -1)
+%!error id=idctm:badInput idctm (struct ("B", 4, "F", [1 2.4 4], "nk", Inf))
 
 %!demo
 %! M = idctm (4, [1 2.4 4])

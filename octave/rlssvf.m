@@ -131,10 +131,10 @@
 ## its normalised variance 1 + phi_f^T P(t_k|t_(k-1)) phi_f (eq. 3.25;
 ## NaN before @code{tsls}); with @code{ic}, @code{ic} the N-by-na c_i;
 ## @code{covariance_guard}, N-by-1, what the covariance protection did to
-## P at each recursion (0 nothing, 1 repair, 2 ceiling, 3 both), with its
-## summary @code{guard_samples} (how many samples) and @code{guard_first}
-## (the first, 0 if none); with missing samples @code{missing} (see the
-## option @code{Missing}).
+## P (LMR: to R) at each recursion (0 nothing, 1 repair, 2 ceiling, 3
+## both), with its summary @code{guard_samples} (how many samples) and
+## @code{guard_first} (the first, 0 if none); with missing samples
+## @code{missing} (see the option @code{Missing}).
 ## @end table
 ##
 ## @strong{Covariance protection} (option @code{covariance_guard}, default
@@ -153,10 +153,17 @@
 ## with a forgetting factor < 1, P grows as lambda^-k without excitation
 ## (estimator windup, sec. 3.6) and would overflow. Nothing is relative to
 ## the trace of P, so a badly scaled P0 (sec. 4.1) is left alone. The
-## Potter and LMR forms keep P positive definite by construction and get
-## no protection. @code{"covariance_guard", false} turns it off, as in the
-## thesis' demonstrations of lost definiteness (sec. 3.5). See
-## @file{core/include/ctid/adaptation/covariance_guard.hpp}.
+## Potter form keeps P positive definite by construction and gets no
+## protection. The LMR form propagates the Cholesky factor of R = P^-1
+## (positive definite by construction; R summed as such lost definiteness
+## in single precision under a constant input) and guards R the same way:
+## a pivot of its LDL^T below np eps times its diagonal, or a diagonal
+## entry below 1/sqrt(realmax), gets information added on that parameter
+## alone (reported as 1), a diagonal entry above sqrt(realmax) scales its
+## row and column down (2). @code{"covariance_guard", false} turns it off,
+## as in the thesis' demonstrations of lost definiteness (sec. 3.5). See
+## @file{core/include/ctid/adaptation/covariance_guard.hpp} and
+## @file{lmr.hpp}.
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
 ## InterSample rule (exact ZOH through the matrix exponential, or the

@@ -39,6 +39,8 @@ endfunction
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "Report", 3)
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "Report", struct ("Nothing", 1))
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "NoiseVariance", -1)
+%!error id=idpoly:badInput set (idpoly (1, 2, 1, 1, [1 3 2], 1, 0), "nk", Inf)
+%!error id=idpoly:badInput set (idpoly (1, 2, 1, 1, [1 3 2], 1, 0), "nk", NaN)
 
 %!demo
 %! M = set (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), "InputDelay", 0.3)

@@ -124,8 +124,9 @@ function m = contsid_model (fname, M, Ts, fractional)
     m.theta = [];
     if (isfield (M, "nk") && ! isempty (M.nk))
       m.nk = M.nk;
-      if (! isnumeric (m.nk) || numel (m.nk) != m.nu
-          || any (m.nk != fix (m.nk)) || any (m.nk < 0))
+      if (! isnumeric (m.nk) || ! isreal (m.nk) || numel (m.nk) != m.nu
+          || any (! isfinite (m.nk)) || any (m.nk != fix (m.nk))
+          || any (m.nk < 0))
         error ([fname ":badInput"],
                "%s: nk must be one integer >= 0 per input", fname);
       endif

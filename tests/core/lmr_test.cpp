@@ -1,6 +1,8 @@
 // Tests of core/include/ctid/adaptation/lmr.hpp: LMR-RLSSVF, eq. (3.82), against the
 // covariance-form least squares it generalises, its bounded information
-// under poor excitation (sec. 3.6.3), and no allocation per step.
+// under poor excitation (sec. 3.6.3), its square-root information form in
+// single precision against the same recursion summed in double, the guard
+// on R (floor and ceiling), and no allocation per step.
 #include "ctid/adaptation/lmr.hpp"
 
 #include <gtest/gtest.h>
@@ -55,6 +57,7 @@ TEST(LmrUpdate, WithZeroGammaItIsTheForgettingFactorRls) {
     EXPECT_TRUE(test::MatrixNear(lmr.theta(), rls.theta(), 1e-10));
     EXPECT_TRUE(test::MatrixNear(lmr.P(), rls.P(), 1e-8));
     EXPECT_FALSE(lmr.failed());
+    EXPECT_EQ(lmr.covariance_guard(), kGuardNone);
   }
 }
 
@@ -122,6 +125,111 @@ TEST(LmrUpdate, UpdateDoesNotAllocate) {
     lmr.update(phi, std::cos(k));
   }
   EXPECT_EQ(g_allocations.load() - before, 0);
+}
+
+// The loss of issue 12: one direction excited (a constant input), lambda
+// = 0.998, Gamma = 1e-3 I, in single precision. R summed in float had a
+// negative eigenvalue within 6 000 such samples of the long-run scenario
+// (rounding of the large excited part, ~eps |R| per step, kept for
+// 1 / (1 - lambda) steps, is as large as Gamma). The factor form must
+// keep R = L L^T close to the same recursion summed in double from the
+// same float regressors: its smallest eigenvalue (Gamma's level) within
+// 5 %, its largest within 1e-4, and the guard must not have been needed.
+TEST(LmrUpdate, SinglePrecisionFactorFollowsTheDoubleRecursion) {
+  const int np = 3;
+  const float lambda = 0.998f;
+  LmrUpdate<float> lmr;
+  lmr.configure(np, lambda, 1e-3f * Eigen::MatrixXf::Identity(np, np));
+  lmr.reset(Eigen::VectorXf::Zero(np), 1e4f * Eigen::MatrixXf::Identity(np, np));
+  Eigen::MatrixXd R = 1e-4 * Eigen::MatrixXd::Identity(np, np);
+  std::mt19937 rng(5);
+  std::normal_distribution<float> normal;
+  const Eigen::Vector3f direction(-0.6f, -1.1f, 1.4f);
+  int guarded = 0;
+  for (int k = 0; k < 200000; ++k) {
+    Eigen::Vector3f phi = direction;
+    if (k < 2000) {
+      for (int i = 0; i < np; ++i) phi(i) = normal(rng);
+    } else {
+      phi *= 1 + 1e-4f * normal(rng);
+    }
+    const float target = phi.dot(Eigen::Vector3f(1, 2, 3)) + 0.01f * normal(rng);
+    lmr.update(phi, target);
+    guarded += lmr.covariance_guard() != kGuardNone;
+    const Eigen::Vector3d p = phi.cast<double>();
+    R = lambda * R + p * p.transpose() +
+        (1 - double(lambda)) * 1e-3 * Eigen::MatrixXd::Identity(np, np);
+  }
+  ASSERT_FALSE(lmr.failed());
+  EXPECT_EQ(guarded, 0);
+  const Eigen::MatrixXd Rf = lmr.information().cast<double>();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ef(Rf), ed(R);
+  EXPECT_NEAR(ef.eigenvalues()(0) / ed.eigenvalues()(0), 1, 0.05)
+      << ef.eigenvalues().transpose() << " vs " << ed.eigenvalues().transpose();
+  EXPECT_NEAR(ef.eigenvalues()(2) / ed.eigenvalues()(2), 1, 1e-4);
+  EXPECT_TRUE(lmr.P().allFinite());
+  EXPECT_TRUE(lmr.theta().allFinite());
+}
+
+// Without Gamma a forgetting factor < 1 lets R decay as lambda^k in the
+// directions not excited (windup, eq. 3.77): in float 0.99^10000 = 2e-44
+// underflows. The guard's floor keeps R_jj at the smaller of
+// 1/sqrt(max) and R(t_0)'s smallest diagonal entry, so P stays finite and
+// positive definite and the estimate stays put; without the guard P is
+// lost.
+TEST(LmrUpdate, GuardFloorBoundsTheWindupWithoutGamma) {
+  const int np = 2;
+  for (const bool guard : {true, false}) {
+    LmrUpdate<float> lmr;
+    lmr.configure(np, 0.99f, Eigen::MatrixXf::Zero(np, np), guard);
+    lmr.reset(Eigen::VectorXf::Zero(np), Eigen::MatrixXf::Identity(np, np));
+    int repairs = 0;
+    for (int k = 0; k < 10000; ++k) {
+      lmr.update(Eigen::Vector2f(1, 0), 2.0f);
+      repairs += (lmr.covariance_guard() & kGuardRepair) != 0;
+    }
+    const Eigen::MatrixXf P = lmr.P();
+    if (guard) {
+      EXPECT_GT(repairs, 0);
+      EXPECT_FALSE(lmr.failed());
+      ASSERT_TRUE(P.allFinite()) << P;
+      EXPECT_TRUE(Eigen::LLT<Eigen::MatrixXf>(P).info() == Eigen::Success);
+      const float floor = 1 / std::sqrt(std::numeric_limits<float>::max());
+      EXPECT_NEAR(lmr.information()(1, 1) / floor, 1, 1e-3);
+      EXPECT_NEAR(lmr.theta()(0), 2, 1e-5);
+      EXPECT_EQ(lmr.theta()(1), 0);
+    } else {
+      EXPECT_EQ(repairs, 0);
+      EXPECT_FALSE(P.allFinite());
+    }
+  }
+}
+
+// lambda = 1 and a large regressor: R_11 grows as k phi_1^2 past
+// sqrt(max) of float; the ceiling scales row 1 of L (R <- E R E), which
+// keeps R's correlations and R finite.
+TEST(LmrUpdate, GuardCeilingIsACongruence) {
+  LmrUpdate<float> lmr;
+  lmr.configure(2, 1.0f, Eigen::MatrixXf::Zero(2, 2));
+  lmr.reset(Eigen::VectorXf::Zero(2), Eigen::MatrixXf::Identity(2, 2));
+  std::mt19937 rng(3);
+  std::normal_distribution<float> normal;
+  int ceilings = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Eigen::Vector2f phi(1e9f * (1 + 0.1f * normal(rng)), normal(rng));
+    lmr.update(phi, phi.sum());
+    ceilings += (lmr.covariance_guard() & kGuardCeiling) != 0;
+  }
+  EXPECT_GT(ceilings, 0);
+  ASSERT_FALSE(lmr.failed());
+  const Eigen::MatrixXf R = lmr.information();
+  const float top = std::sqrt(std::numeric_limits<float>::max());
+  EXPECT_LE(R(0, 0), top * 1.0001f);
+  EXPECT_GT(R(0, 0), 0.5f * top);
+  EXPECT_TRUE(R.allFinite());
+  EXPECT_TRUE(lmr.P().allFinite());
+  // The correlation of the two regressors (about 0) is kept.
+  EXPECT_LT(std::abs(R(0, 1)) / std::sqrt(R(0, 0) * R(1, 1)), 0.1f);
 }
 
 }  // namespace

@@ -10,10 +10,8 @@
 // excites the loop). Every recursive estimator of the core runs over it,
 // and the symmetric part of P is checked for positive definiteness every
 // `check_every` samples (by Eigen's Cholesky, independently of the guard's
-// own LDL^T test). LMR-RLSSVF propagates R = P^-1 and checks R by its own
-// Cholesky at every sample (failed()): for it that check is used, P = R^-1
-// only has to be finite (in float, the formed inverse of an R with kappa_2
-// near 1/eps can fail a Cholesky at working precision while R does not).
+// own LDL^T test). LMR-RLSSVF propagates the Cholesky factor L of
+// R = P^-1 (lmr.hpp): the same check runs on P = L^-T L^-1 formed from it.
 // The IV estimators with a forgetting factor < 1 run with conditional
 // updating (eq. 3.79, gamma = 300, the thesis' remedy for their windup):
 // without it the IV estimates themselves diverge once the input is
@@ -79,8 +77,16 @@ struct Result {
                                     // lambda_min(Ps) / lambda_max(Ps)
   long guard_actions = 0;           // samples where the guard acted
   long first_guard = -1;            // first of them
+  long guard_repairs = 0;           // samples with kGuardRepair
+  long guard_ceilings = 0;          // samples with kGuardCeiling
   Eigen::VectorXd theta_end;
 };
+
+// Optional report of a run in progress (the 10^8-sample benchmark): when
+// progress_interval > 0, progress(k, r) is called after every
+// progress_interval samples with the result so far.
+inline long progress_interval = 0;
+inline std::function<void(long, const Result&)> progress;
 
 // True when the symmetric part of P is positive definite (Cholesky).
 template <typename S, typename Derived>
@@ -97,10 +103,10 @@ bool symmetric_part_definite(const Eigen::MatrixBase<Derived>& P) {
 // definite (default: Cholesky of the symmetric part of P).
 template <typename S, typename Estimator, typename Step>
 Result run(Estimator& e, Step step, bool closed_loop, long n,
-           long check_every, bool lmr = false) {
-  auto definite = [lmr](const Estimator& est) {
+           long check_every) {
+  auto definite = [](const Estimator& est) {
     if constexpr (std::is_same_v<Estimator, RlsSvf<S>>) {
-      if (lmr) return !est.failed();
+      if (est.failed()) return false;
     }
     return symmetric_part_definite<S>(est.P());
   };
@@ -118,9 +124,12 @@ Result run(Estimator& e, Step step, bool closed_loop, long n,
     const double u = closed_loop ? kControllerGain * (level - y) : level;
     plant.advance(u);
     step(e, S(u), S(y), S(level));
-    if (e.covariance_guard() != 0) {
+    const int action = e.covariance_guard();
+    if (action != 0) {
       if (r.first_guard < 0) r.first_guard = k;
       ++r.guard_actions;
+      r.guard_repairs += (action & kGuardRepair) != 0;
+      r.guard_ceilings += (action & kGuardCeiling) != 0;
     }
     if (k % check_every == 0 || k == n - 1) {
       const auto& P = e.P();
@@ -133,7 +142,7 @@ Result run(Estimator& e, Step step, bool closed_loop, long n,
         ++r.indefinite_checks;
         continue;
       }
-      if (!lmr && (k % (1000 * check_every) == 0 || k == n - 1)) {
+      if (k % (1000 * check_every) == 0 || k == n - 1) {
         const Matrix<S> sym = (P + P.transpose()) / 2;
         const Eigen::SelfAdjointEigenSolver<Matrix<S>> eig(
             sym, Eigen::EigenvaluesOnly);
@@ -141,6 +150,10 @@ Result run(Estimator& e, Step step, bool closed_loop, long n,
                              double(eig.eigenvalues()(sym.rows() - 1));
         if (ratio < r.min_relative_eig) r.min_relative_eig = ratio;
       }
+    }
+    if (progress_interval > 0 && (k + 1) % progress_interval == 0 &&
+        progress) {
+      progress(k + 1, r);
     }
   }
   r.theta_end = e.theta().template cast<double>();
@@ -189,7 +202,7 @@ Result run_rlssvf_case(RlsSvfConfig<S> c, long n, long every, bool guard) {
   }
   return run<S>(
       e, [](RlsSvf<S>& est, S u, S y, S) { est.update(&u, y, S(0.01)); },
-      false, n, every, c.form == UpdateForm::kLevenbergMarquardt);
+      false, n, every);
 }
 
 template <typename S>

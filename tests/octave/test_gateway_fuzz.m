@@ -7,6 +7,8 @@
 ## required one must give <name>:badOption), adds an unknown field (must
 ## give <name>:badOption), replaces each field by every value of a pool of
 ## wrong types and sizes, and passes non-struct or non-scalar options.
+## The environment variables CTID_FUZZ_SEED and CTID_FUZZ_CALLS change the
+## seed and the number of random argument lists (see below).
 function test_gateway_fuzz ()
   root = getenv ("CTID_ROOT");
   priv = fullfile (root, "octave", "private");
@@ -22,8 +24,13 @@ function test_gateway_fuzz ()
   endfor
   addpath (tmp);
 
-  rand ("state", 42);
-  randn ("state", 42);
+  ## CTID_FUZZ_SEED (default 42) seeds the data and the random argument
+  ## lists, CTID_FUZZ_CALLS (default 300) is the number of random argument
+  ## lists per gateway call form.
+  seed = env_number ("CTID_FUZZ_SEED", 42);
+  ntrials = env_number ("CTID_FUZZ_CALLS", 300);
+  rand ("state", seed);
+  randn ("state", seed);
   pool = value_pool ();
   y = randn (50, 1);
   u = randn (50, 1);
@@ -206,7 +213,7 @@ function test_gateway_fuzz ()
     ncalls += expect_id (name, base(1:end-1), [fname ":badInput"]);
     ncalls += expect_id (name, [base, {base{end}}], [fname ":badInput"]);
     ## Random argument lists of random length.
-    for trial = 1:300
+    for trial = 1:ntrials
       n = randi ([0 8]);
       args = pool(randi (numel (pool), 1, n));
       if (n > 0 && rand () < 0.7)
@@ -218,8 +225,15 @@ function test_gateway_fuzz ()
       ncalls += check_call (name, args, randi ([0 4]));
     endfor
   endfor
-  printf (["test_gateway_fuzz: %d calls, all succeeded or raised ", ...
-           "identified errors\n"], ncalls);
+  printf (["test_gateway_fuzz: %d calls (seed %d), all succeeded or ", ...
+           "raised identified errors\n"], ncalls, seed);
+endfunction
+
+function v = env_number (name, def)
+  v = str2double (getenv (name));
+  if (isnan (v))
+    v = def;
+  endif
 endfunction
 
 ## Removes each field (a required one must give fname:badOption), adds an

@@ -207,7 +207,8 @@ endfunction
 
 ## CONTSID's nk: input delays in samples of the estimation data.
 function M = set_nk (M, v, fname)
-  if (! isnumeric (v) || numel (v) != M.nu || any (v != fix (v)) || any (v < 0))
+  if (! isnumeric (v) || ! isreal (v) || numel (v) != M.nu
+      || any (! isfinite (v)) || any (v != fix (v)) || any (v < 0))
     error ([fname ":badInput"], "%s: nk must be one integer >= 0 per input",
            fname);
   endif

@@ -16,7 +16,7 @@
 //   - the covariance protection of the standard form (covariance_guard.hpp,
 //     on by default; not part of the thesis): P is repaired when it has
 //     lost positive definiteness and its variances are held below the
-//     range of the precision.
+//     range of the precision; LMR's R the same way (lmr.hpp).
 //
 // RlsSvf is the online estimator (configure once, then update() per sample,
 // no allocation per sample for uniformly sampled data); run_rlssvf() runs it
@@ -62,7 +62,8 @@ struct RlsSvfConfig {
   Vector<S> scaling;    // diagonal of M_s; empty: no scaling
   bool initial_conditions = false;
   S t_s_ls = 0;  // first update at the first sample with t - t_1 >= t_s_ls
-  bool covariance_guard = true;  // covariance_guard.hpp (standard form)
+  bool covariance_guard = true;  // covariance_guard.hpp (standard form),
+                                 // lmr.hpp (R of LMR)
   // Gaps of missing samples (bridged by the caller: the record holds the
   // present samples on their instants). An interval h > gap_interval is a
   // gap (0: none); the filters run through it with the input held, but
@@ -172,7 +173,8 @@ class LeastSquaresUpdate {
         lmr_.configure(
             n, std::get<ForgettingFactorAdaptation<S>>(a).lambda(),
             scaled ? Matrix<S>(m_.asDiagonal() * gamma * m_.asDiagonal())
-                   : gamma);
+                   : gamma,
+            covariance_guard);
         break;
     }
     phi_s_ = Vector<S>::Zero(n);
@@ -266,11 +268,18 @@ class LeastSquaresUpdate {
     }
   }
   UpdateForm form() const { return form_; }
-  // What the covariance protection did at the last step (standard form;
-  // the Potter and LMR forms keep P positive definite by construction).
+  // What the covariance protection did at the last step: to P (standard
+  // form) or to R = P^-1 (LMR, lmr.hpp); the Potter form keeps P positive
+  // definite by construction.
   int covariance_guard() const {
-    return form_ == UpdateForm::kStandard ? standard_.covariance_guard()
-                                          : int(kGuardNone);
+    switch (form_) {
+      case UpdateForm::kStandard:
+        return standard_.covariance_guard();
+      case UpdateForm::kLevenbergMarquardt:
+        return lmr_.covariance_guard();
+      default:
+        return kGuardNone;
+    }
   }
   bool failed() const {
     return form_ == UpdateForm::kLevenbergMarquardt && lmr_.failed();
@@ -529,8 +538,8 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
                                 config.svf.kernels);
   if (status.ok() && estimator.failed()) {
     return numerical_failure(
-        "R of LMR-RLSSVF lost positive definiteness; check Gamma and the "
-        "scaling of the data");
+        "the factor of R of LMR-RLSSVF is no longer finite; check Gamma "
+        "and the scaling of the data");
   }
   return status;
 }
