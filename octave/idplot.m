@@ -93,6 +93,14 @@ function [ax, varargout] = idplot (z, int = [], Ts = [], ny = 1, pc = "",
   if (nax == 0)
     error ("idplot:badInput", "idplot: no signals to plot");
   endif
+  ## Octave's axes cannot place ticks on a range near realmax (it runs out
+  ## of memory): such values are refused, as times and frequencies above
+  ## 1e100 are by the models' plots.
+  big = @(v) any (abs (v(isfinite (v))) > 1e100);
+  if (big (t(int)) || big (y(int,:)) || big (u(int,:)))
+    error ("idplot:badInput",
+           "idplot: times or values above 1e100 cannot be plotted");
+  endif
   h = zeros (nax, 1);
   for c = 1:columns (y)
     h(c) = subplot (nax, 1, c);
@@ -144,6 +152,8 @@ endfunction
 %!   close (fig);
 %! end_unwind_protect
 
+%!error id=idplot:badInput idplot (realmax)
+%!error id=idplot:badInput idplot ([1 2; 3 4], [], realmax)
 %!error id=idplot:badInput idplot ({1})
 %!error id=idplot:badInput idplot (ones (5, 2), 0:2)
 %!error id=idplot:badInput idplot (ones (5, 2), [3 2])

@@ -26,8 +26,8 @@ function [Md, varargout] = c2d (M, Ts, method, varargin)
     error ("c2d:badInput", "c2d: the model is already discrete-time");
   endif
   if (nargin < 2 || ! isnumeric (Ts) || ! isscalar (Ts) || issparse (Ts)
-      || ! (Ts > 0) || ! isfinite (Ts))
-    error ("c2d:badInput", "c2d: Ts must be a finite scalar > 0");
+      || ! isreal (Ts) || ! (Ts > 0) || ! isfinite (Ts))
+    error ("c2d:badInput", "c2d: Ts must be a real finite scalar > 0");
   endif
   [G, delay] = lti_of (P, form_of (P), "c2d");
   nk = round (delay / Ts);
@@ -36,7 +36,22 @@ function [Md, varargout] = c2d (M, Ts, method, varargin)
            "c2d: the delays %s s are not multiples of Ts = %g",
            mat2str (delay, 4), Ts);
   endif
-  Gd = c2d (G, Ts, method);
+  ## exp (p Ts) of an unstable pole p overflows beyond Ts Re(p) = 709, and
+  ## the control package then hangs (c2d (tf (1, [1 -1]), 1e300)).
+  rate = max ([0; real(pole (G))(:)]) * Ts;
+  if (rate > log (realmax))
+    error ("c2d:numericalFailure",
+           "c2d: exp (p Ts) overflows: Ts = %g times an unstable pole", Ts);
+  endif
+  try
+    Gd = c2d (G, Ts, method);
+  catch err
+    ## The control package's errors carry no identifier (e.g. SLICOT's
+    ## "DELTA too large" when Ts times the model's norm overflows expm).
+    error ("c2d:numericalFailure",
+           "c2d: the control package could not discretise at Ts = %g: %s",
+           Ts, err.message);
+  end_try_catch
   Md = back (P, Gd, nk);
 endfunction
 
@@ -68,6 +83,9 @@ endfunction
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), 0.1, 3)
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), 0.1, "bogus")
 %!error id=c2d:badInput c2d (idtf (1, [1 1]), -1)
+%!error id=c2d:badInput c2d (idtf (1, [1 1]), 1 + 2i)
+%!error id=c2d:numericalFailure c2d (idtf (1, [1 2 1]), realmax)
+%!error id=c2d:numericalFailure c2d (idtf (1, [1 -1]), 1e300)
 %!error id=c2d:badInput c2d (idpoly (1, [0 1], 1, 1, [1 -0.5], 1, 0.1), 0.1)
 %!error id=c2d:notSupported c2d (idtf (1, [1 1], "IODelay", 0.15), 0.1)
 

@@ -24,7 +24,15 @@ function [Mc, varargout] = d2c (M, method, varargin)
     f = "ss";
   endif
   [G, delay] = lti_of (P, f, "d2c");
-  Gc = d2c (G, method);
+  try
+    Gc = d2c (G, method);
+  catch err
+    ## The control package's errors carry no identifier (e.g. a pole at
+    ## z = 0 or on the negative real axis has no ZOH continuous equivalent).
+    error ("d2c:numericalFailure",
+           "d2c: the control package could not convert the model: %s",
+           err.message);
+  end_try_catch
   Mc = back (P, Gc, delay * P.Ts);
 endfunction
 

@@ -46,12 +46,7 @@ function [y, varargout] = sim (M, data, Ts, varargin)
     if (P.Ts == 0)
       ## The inputs only: the measured outputs (which may have missing
       ## samples) play no part in a simulation.
-      try
-        yv = simc (M, data(:, [], :));
-      catch err
-        error ([P.kind ":" regexprep(err.identifier, '^.*:', "")], "%s",
-               regexprep (err.message, '^simc:', [P.kind ": sim:"]));
-      end_try_catch
+      yv = ct_sim (M, P, data(:, [], :));
     else
       yv = dt_sim (P, get (data, "InputData"), info.Ts);
     endif
@@ -82,10 +77,19 @@ function [y, varargout] = sim (M, data, Ts, varargin)
       error ([P.kind ":badInput"], "%s: sim's Ts must be a finite scalar > 0",
              P.kind);
     endif
-    y = simc (M, u, Ts);
+    y = ct_sim (M, P, u, Ts);
   else
     y = dt_sim (P, u, P.Ts);
   endif
+endfunction
+## simc's errors under the model's class and sim's name.
+function y = ct_sim (M, P, varargin)
+  try
+    y = simc (M, varargin{:});
+  catch err
+    error ([P.kind ":" regexprep(err.identifier, '^.*:', "")], "%s",
+           regexprep (err.message, '^simc:', [P.kind ": sim:"]));
+  end_try_catch
 endfunction
 
 ## Difference equation of each input-output pair (z rows of equal length
@@ -210,6 +214,7 @@ endfunction
 %!error id=idtf:badInput sim (idtf (1, [1 1]))
 %!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1))
 %!error id=idtf:badInput sim (idtf (1, [1 1]), "u")
+%!error id=idtf:badInput sim (idtf (1, [1 1]), [1; NaN; 1], 0.1)
 %!error id=idpoly:badInput sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), iddata (zeros (5, 0), ones (5, 1), 0.2))
 %!error id=idpoly:dimensionMismatch sim (idpoly (1, 1, 1, 1, [1 -0.5], 1, 0.1), ones (5, 2))
 %!error id=idfrd:notSupported sim (idfrd (1, 1), ones (5, 1))
