@@ -360,9 +360,9 @@ function [M, info] = tf_model (fname, d, rest)
         info = ik;
       endif
     endfor
-    if (theta(end) <= 0)
-      ## At its bound 0 the delay is no free parameter (an active
-      ## constraint): the minimum over the coefficients with td = 0.
+    if (theta(end) <= 1e-6 * median (diff (d.t)))
+      ## At its bound 0 (to 1e-6 samples) the delay is no free parameter (an
+      ## active constraint): the minimum over the coefficients with td = 0.
       estimate = false;
       opts.estimate_delay = false;
       opts.delay = 0;
