@@ -112,7 +112,9 @@ endfunction
 %!error id=tfcoe:notSupported tfcoe (iddata (x, u, Ts), 2, 1, "OverPar", "on")
 %!error id=tfcoe:notSupported tfcoe (iddata (x, [u u], Ts), 2, 1)
 %!error id=tfcoe:badInput tfcoe (1, 2, 3, 4, 5, 6, 7, 8)
-%!warning id=tfcoe:notConverged tfcoe (iddata (x + 0.1 * sin (1:N)', u, Ts), 2, 1, "MaxIter", 1, "Tol", 1e-15);
+%!warning id=tfcoe:notConverged
+%! tfcoe (iddata (x + 0.1 * sin (1:N)', u, Ts), 2, 1, 0.1, "MaxIter", 1,
+%!        "Tol", 1e-15);
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);
