@@ -52,8 +52,8 @@ function r = mc (name, runs, fun)
     [th(:, k), sd(:, k)] = fun ();
   endfor
   r = (std (th, 0, 2) ./ mean (sd, 2)).';
-  ## robust spread (1.4826 MAD): insensitive to the few runs whose delay
-  ## search ends in another local minimum of the loss
+  ## robust spread (1.4826 MAD): insensitive to the few runs whose loss
+  ## has its global minimum at another delay (a zero traded for delay)
   mad = 1.4826 * median (abs (th - median (th, 2)), 2);
   printf ("%s, %d runs (%.0f s): spread / reported sd = %s\n", name, runs,
           toc, mat2str (r, 3));

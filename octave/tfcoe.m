@@ -11,15 +11,24 @@
 ##
 ## The model is simulated exactly under the data's intersample rule (ZOH or
 ## FOH, regular or irregular sampling) and the Jacobian is exact (the
-## sensitivity filters p^i u / F and p^j B u / F^2).  With @var{td} given,
-## the delay is estimated too (a parameter of the iteration started at
-## @var{td}, kept in [0, TdMax]; needs @var{nz} < @var{np}); without it the
-## model has no delay.
+## sensitivity filters p^i u / F and p^j B u / F^2).  For a strictly
+## proper model (@var{nz} < @var{np}) the delay is estimated too, by the
+## delay search of @code{tfsrivc} (the same code): over its grid of
+## delays in [0, TdMax], then its Gauss-Newton refinement of the SRIVC
+## loss, and with @var{td} also that refinement started at @var{td}.  Each
+## delay and SRIVC model found starts the output-error iteration, in which
+## the delay is a parameter kept in [0, TdMax]; the lowest loss wins (on a
+## ZOH input the loss has a kink at every whole number of samples of
+## delay, where a gradient method can stop short of the delay).  For @var{nz} = @var{np}
+## the model has the delay @var{td} (default 0), not estimated.
 ##
 ## Options: @code{Lambda} (SVF cut-off of the SRIVC start, rad/s; default
 ## a grid), @code{MaxIter} (default 100), @code{Tol} (relative step and
-## loss decrease, default 1e-8), @code{TdMax} (default half the record),
-## @code{Focus} (@qcode{"simulation"}), @code{OverPar} (@qcode{"off"};
+## loss decrease, default 1e-8), @code{TdMax} (default: tfsrivc's, from the
+## input-output cross-correlation, at least twice @var{td}, at most half
+## the record), @code{Focus} (@qcode{"simulation"}, or a passband [w1 w2]
+## in rad/s: the data are prefiltered as in @code{tfsrivc}'s Focus, a
+## fourth-order Butterworth band), @code{OverPar} (@qcode{"off"};
 ## @qcode{"on"} gives @code{tfcoe:notSupported}).
 ##
 ## @var{M} is an @code{idtf} with covariance s^2 (J'J)^-1 (s^2 = e'e/(N -
@@ -69,6 +78,24 @@ endfunction
 %! M = tfcoe (iddata (xd, u, Ts), 2, 1, 0.05);
 %! assert (get (M, "IODelay"), 0.12, 1e-6);
 
+%!test  # delay searched without a start (tfsrivc's grid), 10.6 samples
+%! xd = simc (idtf ([1.5 4], [1 2.4 4], "IODelay", 0.53), u, Ts);
+%! M = tfcoe (iddata (xd, u, Ts), 2, 1);
+%! assert (get (M, "IODelay"), 0.53, 1e-6);
+%! [num, den] = tfdata (M, "vector");
+%! assert (den, [1 2.4 4], 1e-6);
+%! ## from a start 8 samples too far
+%! M = tfcoe (iddata (xd, u, Ts), 2, 1, 0.93);
+%! assert (get (M, "IODelay"), 0.53, 1e-6);
+
+%!test  # Focus band: the output error of the prefiltered data (= tfest's)
+%! randn ("state", 5);
+%! y = x + 0.05 * randn (N, 1);
+%! M = tfcoe (iddata (y, u, Ts), 2, 1, 0, "Focus", [0 8], "TdMax", 0.2);
+%! Me = tfest (iddata (y, u, Ts), 2, 1, tfestOptions ("Focus", [0 8]));
+%! assert (abs (get (M, "IODelay")) < 0.02);
+%! assert (getpvec (M), getpvec (Me), 0.05 * norm (getpvec (Me)));
+
 %!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 0, 0)
 %!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 3)
 %!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 1, -1)
@@ -79,13 +106,15 @@ endfunction
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "MaxIter", -1)
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Tol", 0)
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Lambda", -1)
-%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Focus", [0 1])
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Focus", [1 0])
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, 0.1, "TdMax", -1)
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "MaxIter")
 %!error id=tfcoe:notSupported tfcoe (iddata (x, u, Ts), 2, 1, "OverPar", "on")
 %!error id=tfcoe:notSupported tfcoe (iddata (x, [u u], Ts), 2, 1)
 %!error id=tfcoe:badInput tfcoe (1, 2, 3, 4, 5, 6, 7, 8)
-%!warning id=tfcoe:notConverged tfcoe (iddata (x + 0.1 * sin (1:N)', u, Ts), 2, 1, "MaxIter", 1, "Tol", 1e-15);
+%!warning id=tfcoe:notConverged
+%! tfcoe (iddata (x + 0.1 * sin (1:N)', u, Ts), 2, 1, 0.1, "MaxIter", 1,
+%!        "Tol", 1e-15);
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

@@ -43,9 +43,14 @@
 ## largest delay step (default one grid spacing, at least one sampling
 ## interval) and the factor that shortens a step that does not decrease
 ## the loss (0.5).
-## @item Focus
-## 'simulation' only (what SRIVC minimises); a frequency band raises
-## @code{tfsrivc:notSupported}.
+## @item Focus, FocusOrder
+## 'simulation' (default; what SRIVC minimises; 'prediction' is the same
+## for this output-error model) or a passband [w1 w2] (rad/s, 0 <= w1 <
+## w2): as the SITB's Focus band, the output and input are prefiltered by
+## a Butterworth band-pass of order FocusOrder (default 4; a low-pass of
+## cut-off w2 for w1 = 0), discretised by the prewarped Tustin map, so that
+## the simulation error is weighted by the filter's squared gain; needs
+## regularly sampled data. Report.Fit is that of the filtered data.
 ## @end table
 ##
 ## @var{M}: an @code{idtf} with IODelay = td, the covariance of [b; f]
@@ -162,6 +167,30 @@ endfunction
 %! assert (all (ratio > 0.8 & ratio < 1.25));
 %! assert (abs (mean (P(:, 4)) - 0.37) < 3 * std (P(:, 4)) / sqrt (R));
 
+%!test  # Focus band = the fit of data prefiltered by an independent
+%! ## Butterworth (table coefficients, control package's prewarped c2d)
+%! y = simc (M0, iddata ([], u, Ts, "InterSample", "zoh"));
+%! randn ("state", 11);
+%! y += 0.1 * randn (size (y));
+%! d = iddata (y, u, Ts, "InterSample", "zoh");
+%! c = [1 2.613125929752753 3.414213562373095 2.613125929752753 1];
+%! lp = @(w) tf (w ^ 4, c .* w .^ (0:4));           # 4th-order low-pass
+%! hp = @(w) tf ([1 0 0 0 0], c .* w .^ (0:4));     # and high-pass
+%! for band = {[0 6], [0.5 6]}
+%!   w = band{1};
+%!   L = c2d (lp (w(2)), Ts, "prewarp", w(2));
+%!   if (w(1) > 0)
+%!     L = L * c2d (hp (w(1)), Ts, "prewarp", w(1));
+%!   endif
+%!   [bL, aL] = tfdata (L, "vector");
+%!   df = iddata (filter (bL, aL, y), filter (bL, aL, u), Ts,
+%!                "InterSample", "zoh");
+%!   Mf = tfsrivc (d, 2, 1, 0.37, "FixTd", "on", "Focus", w);
+%!   Mr = tfsrivc (df, 2, 1, 0.37, "FixTd", "on");
+%!   assert (getpvec (Mf), getpvec (Mr), 1e-6 * norm (getpvec (Mr)));
+%!   assert (getpvec (Mf), getpvec (M0), 0.05 * norm (getpvec (M0)));
+%! endfor
+
 %!error id=tfsrivc:badInput tfsrivc (data)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 3)
 %!error id=tfsrivc:badInput tfsrivc (data, -1, 0)
@@ -170,7 +199,12 @@ endfunction
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Bogus", 1)
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "TdMin", 2, "TdMax", 1)
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, 5, "TdMax", 1)
-%!error id=tfsrivc:notSupported tfsrivc (data, 2, 1, "Focus", [0 5])
+%!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Focus", [5 1])
+%!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Focus", "bogus")
+%!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "FocusOrder", 0)
+%!error id=tfsrivc:notSupported
+%! tfsrivc (iddata ([1:50]', randn (50, 1), [], "SamplingInstants",
+%!                  cumsum (0.1 + rand (50, 1) / 10)), 1, 0, "Focus", [0 5])
 %!error id=tfsrivc:badInput tfsrivc (data, idpoly (1, 1, 1, 1, [1 1], "Ts", 0))
 %!error id=tfsrivc:notSupported
 %! tfsrivc (iddata (zeros (50, 1), zeros (50, 2), 0.1), 1, 0)

@@ -79,7 +79,8 @@ function M = contsid_tf_front (fname, args)
   o = struct ("fixtd", "off", "tdmin", 0, "tdmax", contsid_default_tdmax (d.t, d.y, d.u),
               "numtd", 30,
               "lambda", [], "maxiter", 30, "tolpar", 1e-5, "tolfun", 1e-8,
-              "stepmax", [], "stepreduction", 0.5, "focus", "simulation");
+              "stepmax", [], "stepreduction", 0.5, "focus", "simulation",
+              "focusorder", 4);
   if (mod (numel (rest), 2) != 0)
     error ([fname ":badOption"], "%s: options come in name-value pairs",
            fname);
@@ -103,11 +104,23 @@ function M = contsid_tf_front (fname, args)
     error ([fname ":badOption"], "%s: FixTd must be 'on' or 'off'", fname);
   endif
   o.fixtd = logical (o.fixtd);
-  if (! (ischar (o.focus) && strcmpi (o.focus, "simulation")))
-    error ([fname ":notSupported"],
-           "%s: Focus: only 'simulation' (SRIVC's criterion); no band filter",
+  band = [];
+  if (isnumeric (o.focus) && isreal (o.focus) && numel (o.focus) == 2
+      && all (isfinite (o.focus)) && o.focus(1) >= 0
+      && o.focus(2) > o.focus(1))
+    band = o.focus(:).';
+  elseif (! (ischar (o.focus)
+             && any (strcmpi (o.focus, {"simulation", "prediction"}))))
+    error ([fname ":badOption"], ["%s: Focus must be 'simulation', ", ...
+           "'prediction' or a band [w1 w2] (rad/s, 0 <= w1 < w2)"], fname);
+  endif
+  if (! isnumeric (o.focusorder) || ! isscalar (o.focusorder)
+      || ! isreal (o.focusorder) || o.focusorder != fix (o.focusorder)
+      || o.focusorder < 1 || o.focusorder > 10)
+    error ([fname ":badOption"], "%s: FocusOrder must be an integer in 1..10",
            fname);
   endif
+  d = contsid_focus_filter (fname, d, band, o.focusorder);
   scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
   if (! scal (o.tdmin) || ! scal (o.tdmax) || o.tdmin < 0
       || o.tdmax < o.tdmin)

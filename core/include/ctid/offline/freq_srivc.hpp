@@ -17,12 +17,13 @@
 // back exactly (a_i = sigma^i a'_i, b of power p: sigma^(n-p) b').
 //
 // The delay: fixed, or a grid search of the SRIVC loss over
-// [td_min, td_max] refined by golden section (the loss is separable in
-// td, Chen, Zhuan, Garnier & Gilson, Automatica 2018). Output error
-// (TFFCOE): Levenberg-Marquardt on sum |Y - G U|^2 over [a b td] from the
-// SRIVC estimate. Covariance (both): s^2 (J^T J)^-1 with J the Jacobian
-// of the stacked model output and s^2 = sum |Y - G U|^2 / (2K - np), the
-// asymptotic covariance of SRIVC (eq. 2.13) and of the output-error fit.
+// [td_min, td_max] refined by golden section on each side of each of
+// the three best local minima of the grid, the lowest refined loss kept (the
+// loss is separable in td, Chen, Zhuan, Garnier & Gilson, Automatica 2018).
+// Output error (TFFCOE): Levenberg-Marquardt on sum |Y - G U|^2 over [a b td]
+// from the SRIVC estimate. Covariance (both): s^2 (J^T J)^-1 with J the
+// Jacobian of the stacked model output and s^2 = sum |Y - G U|^2 / (2K - np),
+// the asymptotic covariance of SRIVC (eq. 2.13) and of the output-error fit.
 #pragma once
 
 #include <Eigen/Dense>
@@ -41,9 +42,9 @@ namespace ctid {
 
 template <typename S>
 struct FreqData {
-  const S* w = nullptr;                 // K frequencies (rad/s), >= 0
-  const std::complex<S>* y = nullptr;   // K output values (or G)
-  const std::complex<S>* u = nullptr;   // K input values, null: 1
+  const S* w = nullptr;                // K frequencies (rad/s), >= 0
+  const std::complex<S>* y = nullptr;  // K output values (or G)
+  const std::complex<S>* u = nullptr;  // K input values, null: 1
   Eigen::Index num_frequencies = 0;
 };
 
@@ -53,22 +54,22 @@ struct FreqSettings {
   int nb = 1;
   S tolerance = S(1e-8);
   int max_iterations = 50;
-  S delay = 0;                 // fixed or initial delay
+  S delay = 0;  // fixed or initial delay
   bool estimate_delay = false;
-  S td_min = 0, td_max = 0;    // search range (estimate_delay)
-  int num_td = 50;             // grid points (estimate_delay)
-  bool grid = true;            // search the grid (else refine from delay)
-  bool output_error = false;   // Levenberg-Marquardt refinement (TFFCOE)
-  Vector<S> theta_init;        // [a b] start (empty: LS with 1/(s+l)^n)
+  S td_min = 0, td_max = 0;   // search range (estimate_delay)
+  int num_td = 50;            // grid points (estimate_delay)
+  bool grid = true;           // search the grid (else refine from delay)
+  bool output_error = false;  // Levenberg-Marquardt refinement (TFFCOE)
+  Vector<S> theta_init;       // [a b] start (empty: LS with 1/(s+l)^n)
 };
 
 template <typename S>
 struct FreqResult {
-  Vector<S> a, b;         // A without its leading 1, B descending
+  Vector<S> a, b;  // A without its leading 1, B descending
   S delay = 0;
-  Matrix<S> covariance;   // of [a b] or [a b td] (estimate_delay)
-  S noise_variance = 0;   // sum |Y - G U|^2 / (K - np/2): E|V_k|^2
-  S loss = 0;             // sum |Y - G U|^2 / K
+  Matrix<S> covariance;  // of [a b] or [a b td] (estimate_delay)
+  S noise_variance = 0;  // sum |Y - G U|^2 / (K - np/2): E|V_k|^2
+  S loss = 0;            // sum |Y - G U|^2 / K
   int iterations = 0;
   bool converged = false;
   bool stable = false;
@@ -119,8 +120,7 @@ Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
     const Complex<S> A = polyval(Af, s);
     const Complex<S> U = p.delayed_u(k, td);
     const Complex<S> Yf = p.y[k] / A, Uf = U / A;
-    const Complex<S> Xf =
-        aux ? polyval(Bx, s) / polyval(Af, s) * Uf : Yf;
+    const Complex<S> Xf = aux ? polyval(Bx, s) / polyval(Af, s) * Uf : Yf;
     std::vector<Complex<S>> phi(np), zeta(np);
     Complex<S> power = 1;
     // powers s^0 .. s^(n-1) for a_n .. a_1; s^0 .. s^(m-1) for b.
@@ -161,7 +161,8 @@ Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
         "the instrument matrix is rank deficient: too few frequencies or "
         "too little excitation for this model order");
   }
-  theta = d.cwiseInverse().asDiagonal() * qr.solve(Vector<S>(Z.transpose() * T));
+  theta =
+      d.cwiseInverse().asDiagonal() * qr.solve(Vector<S>(Z.transpose() * T));
   if (!theta.allFinite()) return numerical_failure("the IV step diverged");
   return Status::Ok();
 }
@@ -241,8 +242,8 @@ Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings, S td,
   iterations = 0;
   for (int it = 1; it <= settings.max_iterations; ++it) {
     Vector<S> next;
-    status = iv_step(p, p.monic(theta.head(n)), Vector<S>(theta.tail(m)),
-                     true, td, next);
+    status = iv_step(p, p.monic(theta.head(n)), Vector<S>(theta.tail(m)), true,
+                     td, next);
     if (!status.ok()) return status;
     stabilise(n, next);
     const S change = (next - theta).norm() / std::max(next.norm(), S(1e-300));
@@ -280,9 +281,8 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   }
   const int np = n + m + (settings.estimate_delay ? 1 : 0);
   if (2 * K < np + 1) {
-    return bad_input("too few frequencies for the model: " +
-                     std::to_string(K) + " complex values, " +
-                     std::to_string(np) + " parameters");
+    return bad_input("too few frequencies for the model: " + std::to_string(K) +
+                     " complex values, " + std::to_string(np) + " parameters");
   }
   Scaled<S> p;
   p.na = n;
@@ -344,35 +344,47 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   S td = settings.delay;
   Status status;
   if (settings.estimate_delay) {
-    // Grid, then golden section between the best point's neighbours.
-    S best_td = td, best_cost = std::numeric_limits<S>::infinity();
+    // Grid, then golden section between the neighbours of each of the
+    // best few local minima of the grid (the loss of a relay or noisy
+    // record has several between grid points); the lowest refined loss
+    // wins.
     S step = 0;
+    std::vector<S> starts;
     if (settings.grid) {
       const int count = settings.num_td;
       step = (settings.td_max - settings.td_min) / (count - 1);
+      std::vector<S> grid_cost(count, std::numeric_limits<S>::infinity());
       for (int i = 0; i < count; ++i) {
         const S t = settings.td_min + step * i;
         Vector<S> th;
         int its;
         bool conv;
         S c;
-        if (!srivc_at(t, th, its, conv, c).ok()) continue;
-        if (c < best_cost) {
-          best_cost = c;
-          best_td = t;
-        }
+        if (srivc_at(t, th, its, conv, c).ok() && std::isfinite(c))
+          grid_cost[i] = c;
       }
-      if (!std::isfinite(best_cost)) {
+      std::vector<int> minima;
+      for (int i = 0; i < count; ++i) {
+        const S c = grid_cost[i];
+        if (!std::isfinite(c)) continue;
+        if ((i == 0 || c <= grid_cost[i - 1]) &&
+            (i == count - 1 || c <= grid_cost[i + 1]))
+          minima.push_back(i);
+      }
+      if (minima.empty()) {
         return numerical_failure("SRIVC failed at every delay of the grid");
       }
+      std::sort(minima.begin(), minima.end(),
+                [&](int i, int j) { return grid_cost[i] < grid_cost[j]; });
+      const std::size_t kept = std::min<std::size_t>(minima.size(), 3);
+      for (std::size_t k = 0; k < kept; ++k)
+        starts.push_back(settings.td_min + step * minima[k]);
     } else {
-      step = std::max((settings.td_max - settings.td_min) / 20,
-                      S(1e-3) / p.sigma);
-      best_td = std::min(std::max(td, settings.td_min), settings.td_max);
+      step =
+          std::max((settings.td_max - settings.td_min) / 20, S(1e-3) / p.sigma);
+      starts.push_back(
+          std::min(std::max(td, settings.td_min), settings.td_max));
     }
-    S a = std::max(settings.td_min, best_td - step);
-    S b = std::min(settings.td_max, best_td + step);
-    const S g = (std::sqrt(S(5)) - 1) / 2;
     auto loss = [&](S t) {
       Vector<S> th;
       int its;
@@ -382,30 +394,51 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
                  ? c
                  : std::numeric_limits<S>::infinity();
     };
-    S x1 = b - g * (b - a), x2 = a + g * (b - a);
-    S f1 = loss(x1), f2 = loss(x2);
-    for (int it = 0; it < 60 && (b - a) > S(1e-10) * (S(1) + b) / p.sigma;
-         ++it) {
-      if (f1 < f2) {
-        b = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = b - g * (b - a);
-        f1 = loss(x1);
-      } else {
-        a = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = a + g * (b - a);
-        f2 = loss(x2);
+    // Golden section on [lo, hi]: the minimiser.
+    auto golden = [&](S lo, S hi, S* at) {
+      S a = std::max(settings.td_min, lo);
+      S b = std::min(settings.td_max, hi);
+      const S g = (std::sqrt(S(5)) - 1) / 2;
+      S x1 = b - g * (b - a), x2 = a + g * (b - a);
+      S f1 = loss(x1), f2 = loss(x2);
+      for (int it = 0; it < 60 && (b - a) > S(1e-10) * (S(1) + b) / p.sigma;
+           ++it) {
+        if (f1 < f2) {
+          b = x2;
+          x2 = x1;
+          f2 = f1;
+          x1 = b - g * (b - a);
+          f1 = loss(x1);
+        } else {
+          a = x1;
+          x1 = x2;
+          f1 = f2;
+          x2 = a + g * (b - a);
+          f2 = loss(x2);
+        }
+      }
+      *at = (a + b) / 2;
+      return loss(*at);
+    };
+    S best_cost = std::numeric_limits<S>::infinity();
+    // Each side of a grid minimum separately: the loss can have two minima
+    // within one grid step of it (e.g. a delay traded for a zero).
+    for (const S centre : starts) {
+      for (int side = 0; side < 2; ++side) {
+        S at = centre;
+        const S c = side == 0 ? golden(centre - step, centre, &at)
+                              : golden(centre, centre + step, &at);
+        if (c < best_cost || !std::isfinite(best_cost)) {
+          best_cost = c;
+          td = at;
+        }
       }
     }
-    td = (a + b) / 2;
   }
   status = srivc_at(td, theta, iterations, converged, cost);
   if (!status.ok()) return status;
-  std::string reason = converged ? "SRIVC converged"
-                                 : "SRIVC: maximum number of iterations";
+  std::string reason =
+      converged ? "SRIVC converged" : "SRIVC: maximum number of iterations";
 
   if (settings.output_error) {
     // Levenberg-Marquardt on [a' b' (td')].
@@ -440,10 +473,9 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
         }
         Vector<S> rn;
         Matrix<S> Jn;
-        const S fn = residual(p, th, settings.estimate_delay
-                                         ? xn(n + m) / p.sigma
-                                         : td,
-                              true, rn, &Jn);
+        const S fn =
+            residual(p, th, settings.estimate_delay ? xn(n + m) / p.sigma : td,
+                     true, rn, &Jn);
         if (fn < f) {
           const S rel = (xn - x).norm() / std::max(xn.norm(), S(1e-300));
           const S drop = (f - fn) / std::max(f, S(1e-300));
@@ -484,7 +516,8 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   for (int k = 0; k < m; ++k) D(n + k) = std::pow(p.sigma, S(n - (m - 1 - k)));
   if (settings.estimate_delay) D(n + m) = 1 / p.sigma;
   Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jq.transpose() * Jq);
-  Matrix<S> cov = Matrix<S>::Constant(q, q, std::numeric_limits<S>::quiet_NaN());
+  Matrix<S> cov =
+      Matrix<S>::Constant(q, q, std::numeric_limits<S>::quiet_NaN());
   if (qr.rank() == q) cov = s2 * qr.inverse();
   result->covariance = D.asDiagonal() * cov * D.asDiagonal();
   result->a = D.head(n).cwiseProduct(theta.head(n));
