@@ -1566,9 +1566,11 @@ class Estimator {
               mean_square > 0 ? fitted.squaredNorm() / mean_square : S(0);
           if (score < std::max(S(1), static_cast<S>(columns))) {
             run.converged = true;
-            how = "stationary simulation loss after a damped step (score "
-                  "statistic " + std::to_string(score) + " below " +
-                  std::to_string(std::max(1, columns)) + ")";
+            how =
+                "stationary simulation loss after a damped step (score "
+                "statistic " +
+                std::to_string(score) + " below " +
+                std::to_string(std::max(1, columns)) + ")";
             break;
           }
           const Run<S> here = run;
