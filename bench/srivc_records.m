@@ -109,4 +109,8 @@ function R = srivc_records (root, only)
   printf (["  of which %d with a detected pole at p = 0 (without them: ", ...
            "%d / %d = %.1f %%)\n"], sum (integ), sum (good & ! integ),
           numel (R), 100 * mean (good & ! integ));
+  nofit = good & [R.RT2] < 0.01;
+  printf (["  of which %d converged at a useless model (R_T^2 < 0.01, ", ...
+           "srivc:noFit; without them: %d / %d)\n"], sum (nofit),
+          sum (good & ! nofit), numel (R));
 endfunction

@@ -1375,7 +1375,10 @@ class Estimator {
   // step is taken). Stops on a fixed point
   // (relative change of the full step below the tolerance) or on a
   // stationary loss (relative decrease of a damped step below the
-  // tolerance); on measured records, where the model is an approximation,
+  // tolerance, confirmed by a score statistic below the number of fitted
+  // sensitivities; else a Gauss-Newton step is taken from there and the
+  // iteration goes on); on measured records, where the model is an
+  // approximation,
   // the undamped iteration often cycles. A further stop for approximate
   // models, after the last iteration: a score statistic below 1 at the
   // lowest-loss iterate (a Gauss-Newton step could not gain a
@@ -1536,11 +1539,59 @@ class Estimator {
       }
       // A plateau of the loss reached by damped steps: the IV fixed point
       // is not approached monotonically (the model is an approximation).
+      // A small damped decrease alone does not show that the loss is
+      // stationary (the damped IV direction may be nearly orthogonal to
+      // the gradient while the loss still falls along a valley): the
+      // plateau counts as converged only if the score statistic
+      // N eps' P_psi eps / eps' eps at this iterate is below the number
+      // n_psi of fitted sensitivities (the mean of its chi^2(n_psi) law
+      // when the iterate is a draw of the estimator around the loss
+      // minimiser: the minimiser is then within the estimate's own
+      // standard errors); else that Gauss-Newton step, halved until it
+      // lowers the loss, is taken and the iteration goes on.
       if (damped && !stalled && !clipped && !newton &&
           previous.cost - run.cost <= s_.tolerance * previous.cost) {
-        run.converged = true;
-        how = "stationary simulation loss";
-        break;
+        if (p_.closed_loop()) {
+          run.converged = true;
+          how = "stationary simulation loss";
+          break;
+        }
+        Vector<S> eps, fitted, delta;
+        Run<S> at = run;
+        int columns = 0;
+        if (gauss_newton(at, eps, fitted, delta, &columns)) {
+          const S mean_square =
+              eps.squaredNorm() / static_cast<S>(e_.samples());
+          const S score =
+              mean_square > 0 ? fitted.squaredNorm() / mean_square : S(0);
+          if (score < std::max(S(1), static_cast<S>(columns))) {
+            run.converged = true;
+            how =
+                "stationary simulation loss after a damped step (score "
+                "statistic " +
+                std::to_string(score) + " below " +
+                std::to_string(std::max(1, columns)) + ")";
+            break;
+          }
+          const Run<S> here = run;
+          bool lowered = false;
+          S beta = 1;
+          for (int k = 0; k < 6 && !lowered; ++k, beta /= 2) {
+            run.theta = here.theta + beta * delta;
+            if (!e_.stable(run.theta)) continue;
+            evaluate(run);
+            lowered = run.cost < here.cost;
+          }
+          if (!lowered) {
+            run = here;
+          } else {
+            run.losses.back() = run.cost;
+            if (lowest.cost > run.cost) {
+              lowest = run;
+              lowest_worst = worst;
+            }
+          }
+        }
       }
     }
     // No convergence by the rules above (a limit cycle of the IV step, a
@@ -1598,7 +1649,7 @@ class Estimator {
   // constant for c. delta (np, zero for fixed entries and c) is the
   // Gauss-Newton step on the simulation loss. False if not finite.
   bool gauss_newton(Run<S>& run, Vector<S>& eps, Vector<S>& fitted,
-                    Vector<S>& delta) const {
+                    Vector<S>& delta, int* columns = nullptr) const {
     evaluate(run);
     eps = e_.y() - run.simulated;
     std::vector<Vector<S>> cols;
@@ -1621,6 +1672,7 @@ class Estimator {
     }
     delta = Vector<S>::Zero(run.theta.size());
     fitted = Vector<S>::Zero(e_.samples());
+    if (columns != nullptr) *columns = static_cast<int>(cols.size());
     if (cols.empty()) return true;
     Matrix<S> psi(e_.samples(), static_cast<Eigen::Index>(cols.size()));
     Vector<S> norms(static_cast<Eigen::Index>(cols.size()));
