@@ -26,7 +26,7 @@
 // that of the dynamic step, in the same order; the guard is applied to the
 // same P by the same object, so it acts exactly as on the dynamic path.
 // The dynamic code stays for larger np, for the IV step and as the
-// reference.
+// reference. The guard runs its tests with n = N at compile time.
 #pragma once
 
 #include <cmath>
@@ -290,7 +290,7 @@ class ParameterUpdate {
       for (int i = 0; i < j; ++i) P(i, j) = P(j, i);
     }
     if (scale_ != S(1)) P *= scale_;
-    guard_.apply(P_);
+    guard_.template apply<N>(P_);
     return error;
   }
 
