@@ -35,6 +35,7 @@
 
 #include "ctid/filters/discretization.hpp"
 #include "ctid/recursive/rlssvf.hpp"
+#include "kernel_orders.hpp"
 
 namespace {
 
@@ -209,17 +210,6 @@ void run_batch(benchmark::State& state, bool with_yh) {
 void BM_RunRlsSvf_Thm(benchmark::State& state) { run_batch(state, false); }
 
 void BM_RunRlsSvf_ThmYh(benchmark::State& state) { run_batch(state, true); }
-
-// Orders 1-4, each with the fixed-size kernels and the dynamic reference
-// next to each other.
-void orders_and_kernels(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"na", "dynamic"});
-  for (int na = 1; na <= 4; ++na) {
-    b->Args({na, 0});
-    b->Args({na, 1});
-  }
-  b->Unit(benchmark::kMillisecond);
-}
 
 BENCHMARK(BM_RlsSvfUpdate_KF)->Apply(orders_and_kernels);
 BENCHMARK(BM_RlsSvfUpdate_FF)->Apply(orders_and_kernels);

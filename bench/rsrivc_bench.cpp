@@ -45,6 +45,7 @@
 
 #include "ctid/filters/discretization.hpp"
 #include "ctid/recursive/recursive_iv.hpp"
+#include "kernel_orders.hpp"
 
 namespace {
 
@@ -221,17 +222,6 @@ void BM_RunRecursiveIv_Rsrivc_Thm(benchmark::State& state) {
 
 void BM_RunRecursiveIv_Rsrivc_ThmYh(benchmark::State& state) {
   run_batch(state, true);
-}
-
-// Orders 1-4, each with the fixed-size kernels and the dynamic reference
-// next to each other.
-void orders_and_kernels(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"na", "dynamic"});
-  for (int na = 1; na <= 4; ++na) {
-    b->Args({na, 0});
-    b->Args({na, 1});
-  }
-  b->Unit(benchmark::kMillisecond);
 }
 
 BENCHMARK(BM_RsrivcUpdate_KF)->Apply(orders_and_kernels);
