@@ -28,6 +28,13 @@
 ## the same loop with coloured noise v = (1 + 0.3 q^-1) / (1 - 0.95
 ## q^-1) e: clrivc [1 1 1 2 0] and cl2srivc (clsrivc's white-noise sd do
 ## not apply).
+## @item "demo"
+## the loop of CONTSID's closedloop1 demo as the family replay builds it
+## (G = (s + 1)/(s^2 + 0.5 s + 1), C = (10 s + 15)/s, r = prbs (4, 500),
+## Ts = 0.005, white FOH disturbance at 20 dB): u = r - C y, r at the
+## plant input. clsrivc called as the demo calls it (r as the setpoint of
+## u = C (r - y), the form it implements) and with the equivalent setpoint
+## r' = Dc/Nc r: the reported sd apply only to the second.
 ## @end table
 ##
 ## Per estimator and parameter: the bias, the Monte Carlo sd, the mean
@@ -42,7 +49,7 @@ function S = closed_loop_mc (R, cases)
     R = 100;
   endif
   if (nargin < 2)
-    cases = {"dt", "ct", "ctc"};
+    cases = {"dt", "ct", "ctc", "demo"};
   endif
   cases = cellstr (cases);
   pkg load control
@@ -57,6 +64,44 @@ function S = closed_loop_mc (R, cases)
   if (any (strcmp (cases, "ctc")))
     S.ctc = continuous_loop (R, true);
   endif
+  if (any (strcmp (cases, "demo")))
+    S.demo = demo_loop (R);
+  endif
+endfunction
+
+## closedloop1's loop u = r - C y (r at the plant input).
+function s = demo_loop (R)
+  N0 = [0 1 1]; D0 = [1 0.5 1]; Nc = [10 15]; Dc = [1 0];
+  Acl = conv (D0, Dc) + conv (N0, Nc);
+  M0yr = idpoly (1, conv (N0, Dc), 1, 1, Acl, "Ts", 0);
+  M0ur = idpoly (1, conv (D0, Dc), 1, 1, Acl, "Ts", 0);
+  M0ud = idpoly (1, conv (D0, Nc), 1, 1, Acl, "Ts", 0);
+  Mc = tf (Nc, Dc);
+  th0 = [0.5 1 1 1];
+  randn ("state", 26);
+  r = [0; prbs(4, 500)]; Ts = 0.005; N = numel (r);
+  datar = iddata ([], r, Ts, "InterSample", "zoh");
+  ydet = simc (M0yr, datar); udet = simc (M0ur, datar);
+  Cy = lsim (c2d (Mc, Ts, "foh"), ydet);
+  printf (["demo loop: |u - (r - C y)| / |u| = %.2g, ", ...
+           "|u - C (r - y)| / |u| = %.2g\n"],
+          norm (udet - (r - Cy)) / norm (udet),
+          norm (udet - lsim (c2d (Mc, Ts), r) + Cy) / norm (udet));
+  rp = lsim (c2d (tf (Dc, Nc), Ts), r);   # u = C (r' - y)
+  [T, SD, Tp, SDp] = deal (zeros (R, 4));
+  for i = 1:R
+    e = randn (N, 1);
+    d = (e - mean (e)) / std (e) * std (ydet) / 10;
+    y = ydet + simc (M0ur, iddata ([], d, Ts, "InterSample", "foh"));
+    u = udet + simc (M0ud, iddata ([], -d, Ts, "InterSample", "foh"));
+    M = clsrivc (iddata (y, u, Ts), iddata (y, r, Ts), [2 2 0], Mc);
+    T(i, :) = M.theta; SD(i, :) = sqrt (diag (M.covariance)).';
+    M = clsrivc (iddata (y, u, Ts), iddata (y, rp, Ts), [2 2 0], Mc);
+    Tp(i, :) = M.theta; SDp(i, :) = sqrt (diag (M.covariance)).';
+  endfor
+  s.as_demo = summary ("demo loop: clsrivc with r (the demo's call)", T, SD,
+                       th0);
+  s.setpoint = summary ("demo loop: clsrivc with r' = Dc/Nc r", Tp, SDp, th0);
 endfunction
 
 ## The thesis' loop with a discrete PI controller, exact at the samples.
