@@ -202,6 +202,10 @@ endfunction
 %! assert (M.B, {[1.5 4], 2}, 1e-8);
 %! assert (RT2, 1, 1e-10);
 %! assert (size (M.covariance), [6 6]);
+%! ## a given start [f_1 f_2 b_1 b_2], and IVARMA for the noise model
+%! M2 = rivc (iddata (x + x2, [u u2], Ts), [2 1 1 1 2 1 0 2], "Tol", 1e-10,
+%!            "InitMethod", [1 3 1 1 3 1], "ArmaMethod", "ivarma");
+%! assert (M2.theta, [1.2 4 0.5 1.5 4 2], 1e-8);
 
 %!test  # two inputs, ARMA noise: the fit equals the sum of each channel
 %! # simulated by the control package (c2d + lsim), within 4 sd of the truth

@@ -489,9 +489,11 @@ Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     const Matrix<S> zphi = Z.transpose() * Phi;
     const Eigen::FullPivLU<Matrix<S>> lu(zphi);
     if (!lu.isInvertible() || !zphi.allFinite()) {
-      return numerical_failure(
-          "the IVARMA instrumental product matrix is singular (ARMA orders "
-          "too high for the noise?)");
+      // A noise estimate that the current ARMA model predicts (almost)
+      // exactly, e.g. the deterministic misfit of an early RIVC iterate on
+      // noise-free data: no IV step; the current model is kept (not
+      // converged), as a Gauss-Newton step without descent would be.
+      break;
     }
     Vector<S> next = lu.solve(Z.transpose() * x);
     project(next);
@@ -506,7 +508,10 @@ Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   build(eta);
   const S v = e.squaredNorm() / static_cast<S>(n);
   const Matrix<S> gram = Z.transpose() * Z;
-  result->covariance = v * gram.ldlt().solve(Matrix<S>::Identity(np, np));
+  // A pseudo-inverse: the directions a (near-)deterministic noise estimate
+  // does not determine get no variance instead of an infinite one.
+  const Eigen::CompleteOrthogonalDecomposition<Matrix<S>> cod(gram);
+  result->covariance = v * cod.pseudoInverse();
   polys(eta, result->d, result->c);
   result->innovation_variance = v;
   if (!result->covariance.allFinite() || !std::isfinite(v)) {
