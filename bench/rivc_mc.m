@@ -8,8 +8,10 @@
 ## to srivc (bar: rivc beats srivc on coloured noise): the MC standard
 ## deviations and RMSE of both, for low-pass ARMA(1,1) noise and for
 ## noise with a resonance above the plant's band. @var{part}: "all"
-## (default), "open" (stop after these; true as before) or "closed" (the
-## closed-loop cases only). Run from the repository root:
+## (default), "open" (stop after these; true as before), "closed" (the
+## closed-loop cases only) or "miso" (two inputs, one denominator each,
+## ARMA(1,1) noise: the stacked-instrument covariance of rivc_miso).
+## Run from the repository root:
 ## @example
 ## octave-cli -q --eval "addpath octave bench; rivc_mc (200)"
 ## @end example
@@ -50,6 +52,10 @@ function S = rivc_mc (R, part)
       ", drift noise");
   endif
   if (strcmp (part, "open"))
+    return;
+  endif
+  if (strcmp (part, "miso"))
+    S.miso = miso (R);
     return;
   endif
 
@@ -96,6 +102,25 @@ function S = rivc_mc (R, part)
   S.cl2srivc = summary ("cl2srivc [1 2 0] [4 4 0]", T2, S2, [2 3 3], R);
   S.cl2srivc_stage2 = summary ("cl2srivc, stage 2's SRIVC sd", T2, S2w,
                                [2 3 3], R);
+endfunction
+
+## Two inputs, B1/F1 = (1.5 s + 4)/(s^2 + 1.2 s + 4), B2/F2 = 2/(s + 0.5)
+## (2 samples of delay), ARMA(1,1) noise.
+function s = miso (R)
+  randn ("state", 8);
+  Ts = 0.05; N = 3000;
+  u1 = kron (sign (randn (N / 10, 1)), ones (10, 1));
+  u2 = kron (sign (randn (N / 15, 1)), ones (15, 1));
+  x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u1) ...
+      + lsim (c2d (tf (2, [1 0.5]), Ts), [0; 0; u2(1:end-2)]);
+  th0 = [1.2 4 0.5 1.5 4 2];
+  [T, SD] = deal (zeros (R, 6));
+  for i = 1:R
+    v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+    M = rivc (iddata (x + v, [u1 u2], Ts), [2 1 1 1 2 1 0 2]);
+    T(i, :) = M.theta; SD(i, :) = sqrt (diag (M.covariance)).';
+  endfor
+  s = summary ("rivc MISO [2 1 1 1 2 1 0 2]", T, SD, th0, R);
 endfunction
 
 ## rivc against srivc on the same R records x + noise ().

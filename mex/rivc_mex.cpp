@@ -3,14 +3,16 @@
 //
 //   [theta, cov, info] = rivc_mex (fname, y, u, Ts, r, opts)
 //
-// y, u N-by-1, Ts the sampling interval (regular data), r the reference
-// (N-by-1) of a closed loop or []. opts fields:
+// y N-by-1, u N-by-m (m > 1: MISO rivc, method 'rivc' in open loop), Ts
+// the sampling interval (regular data), r the reference (N-by-1) of a
+// closed loop or []. opts fields:
 //   method  'rivc' (default; with controller_num/_den: CLRIVC),
 //           'cl2srivc' (two-stage SRIVC: u on r, then y on u_hat) or
 //           'arma' (the ARMA estimator alone on y: nd, nc).
-//   nb, nc, nd, nf, nk, delay (continuous, time units), intersample
+//   nb, nc, nd, nf, nk (nb, nf, nk: one entry per input), delay (continuous, time units), intersample
 //   (0 zoh, 1 foh), tol, maxiter, theta_init ([f b]), cutoffs,
-//   max_starts (the SRIVC start), arma_maxiter, controller_num,
+//   max_starts (the SRIVC start), arma_maxiter, arma_method ('pem' or
+//   'ivarma': the noise model's estimator), controller_num,
 //   controller_den (descending powers of p); cl2srivc: cl_nb, cl_nf, cl_nk,
 //   cl_theta_init (stage 1's start; theta_init starts stage 2).
 // info: converged, iterations, reason, C, D (q^-1), noise_variance (of e),
@@ -47,7 +49,8 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const ctid::RecordView<double> record =
       ctid::mex::read_record(g, prhs[1], prhs[2], prhs[3]);
   const long n = record.num_samples;
-  if (record.num_inputs != 1) g.fail("badInput", "one input only");
+  const int num_inputs = static_cast<int>(record.num_inputs);
+  if (num_inputs < 1) g.fail("badInput", "u needs at least one column");
   if (record.instants != nullptr) {
     g.fail("badInput", "regularly sampled data only (a scalar Ts)");
   }
@@ -59,11 +62,22 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                                            Method::kRivc);
   ctid::RivcProblem<double> problem;
   ctid::RivcSettings<double> settings;
-  problem.nb = opt.integer("nb", 1);
+  // nb, nf, nk: one entry per input (MISO rivc); scalars for one input.
+  const std::vector<int> nb_each = opt.integer_vector("nb", {1});
   problem.nc = opt.integer("nc", 0);
   problem.nd = opt.integer("nd", 0);
-  problem.nf = opt.integer("nf", 1);
-  problem.nk = opt.integer("nk", 0);
+  const std::vector<int> nf_each = opt.integer_vector("nf", {1});
+  const std::vector<int> nk_each = opt.integer_vector("nk", {0});
+  if (static_cast<int>(nb_each.size()) != num_inputs ||
+      static_cast<int>(nf_each.size()) != num_inputs ||
+      static_cast<int>(nk_each.size()) != num_inputs) {
+    g.fail("dimensionMismatch",
+           "nb, nf and nk need one entry per input (" +
+               std::to_string(num_inputs) + ")");
+  }
+  problem.nb = nb_each[0];
+  problem.nf = nf_each[0];
+  problem.nk = nk_each[0];
   problem.delay = opt.scalar("delay", 0);
   problem.u_rule = intersample_rule(g, opt.integer("intersample", 0));
   settings.tolerance = opt.scalar("tol", 1e-6);
@@ -77,6 +91,10 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   settings.start.tolerance = settings.tolerance;
   settings.start.max_iterations = std::max(settings.max_iterations, 30);
   settings.arma.max_iterations = opt.integer("arma_maxiter", 50);
+  settings.arma.method = opt.choice<ctid::ArmaMethod>(
+      "arma_method",
+      {{"pem", ctid::ArmaMethod::kPem}, {"ivarma", ctid::ArmaMethod::kIvarma}},
+      ctid::ArmaMethod::kPem);
   const Eigen::MatrixXd cnum = opt.matrix("controller_num");
   const Eigen::MatrixXd cden = opt.matrix("controller_den");
   const int cl_nb = opt.integer("cl_nb", 1);
@@ -86,6 +104,11 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   opt.finish();
   if (method == Method::kCl2srivc) {
     settings.start.max_iterations = settings.max_iterations;
+  }
+  if (num_inputs > 1 &&
+      (method != Method::kRivc || cnum.size() > 0 || problem.delay != 0)) {
+    g.fail("notSupported",
+           "several inputs: open-loop rivc without a fractional delay only");
   }
   if (settings.max_iterations < 1 || settings.max_iterations > 100000 ||
       settings.arma.max_iterations < 0 ||
@@ -185,10 +208,22 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     } else if (!mxIsEmpty(prhs[4])) {
       g.fail("badInput", "a reference r needs a controller");
     }
-    ctid::RivcData<double> data{record.y, record.u, n, record.ts};
     ctid::RivcResult<double> res;
-    const ctid::Status status =
-        ctid::rivc<double>(problem, settings, data, &res);
+    ctid::Status status;
+    if (num_inputs > 1) {
+      ctid::RivcMisoProblem<double> miso;
+      for (int i = 0; i < num_inputs; ++i) {
+        miso.inputs.push_back({nb_each[i], nf_each[i], nk_each[i]});
+      }
+      miso.nc = problem.nc;
+      miso.nd = problem.nd;
+      miso.u_rule = problem.u_rule;
+      const ctid::RivcMisoData<double> data{record.y, record.u, n, record.ts};
+      status = ctid::rivc_miso<double>(miso, settings, data, &res);
+    } else {
+      const ctid::RivcData<double> data{record.y, record.u, n, record.ts};
+      status = ctid::rivc<double>(problem, settings, data, &res);
+    }
     if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
     theta = res.theta;
     cov = res.covariance;

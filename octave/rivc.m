@@ -19,17 +19,32 @@
 ## Box-Jenkins optimal prefilter). The start is SRIVC (eqs. 2.8-2.13).
 ## With nc = nd = 0 this is SRIVC.
 ##
-## @var{data}: an @code{iddata} (one output, one input, regular sampling,
+## @var{data}: an @code{iddata} (one output, regular sampling,
 ## InterSample 'zoh' or 'foh'). Orders: B has nb parameters (1 <= nb <=
 ## nf + 1), F order nf, C order nc, D order nd, delay nk samples.
+##
+## Several inputs (CONTSID's MISO form): nn = [nb_1 .. nb_m nc nd nf_1
+## .. nf_m nk_1 .. nk_m], one denominator per input (CONTSID's default
+## 'Different'): y = sum_i B_i/F_i u_i(t - nk_i Ts) + C/D e. Each
+## iteration updates the inputs in turn (backfitting: input i's target is
+## y minus the other inputs' auxiliary model outputs; Young's MISO refined
+## IV with different denominators), the start is the MISO SRIVC. @code{M.B},
+## @code{M.F} are then cells, @code{M.theta} = [f_1 .. f_m b_1 .. b_m]
+## and @code{M.covariance} sigma_e^2 (sum zeta_f zeta_f')^-1 with the
+## instruments of all inputs stacked (cross-input blocks included).
 ## @var{Mi}: an @code{idpoly} whose B, C, D, F give the orders and whose
 ## B, F start the iterations.
 ##
 ## Options: @code{lambda} (SVF cut-off of the SRIVC start, rad/s),
 ## @code{Tol} (1e-6, relative parameter change), @code{MaxIter} (30),
 ## @code{InitMethod} ('srivc', an @code{idpoly} or [f b]),
-## @code{ArmaMethod} ('pem'; CONTSID's 'ivarma' is not implemented),
-## @code{ArmaMaxIter} (50).
+## @code{ArmaMethod} (the noise model's estimator: 'pem', prediction
+## error by Gauss-Newton from Hannan-Rissanen, or 'ivarma', Young's IVARMA:
+## the ARMA model's pseudo-linear regression solved iteratively by IV with
+## the instruments prefiltered by 1/C, whose fixed point solves the
+## prediction-error score equation; see @code{ivarma_estimate} in
+## refined_iv_bj.hpp), @code{ArmaMaxIter} (50, Gauss-Newton or IVARMA
+## iterations).
 ##
 ## @var{M}: the hybrid Box-Jenkins model as a continuous-time
 ## @code{idpoly}: B(s)/F(s) with the covariance of [f b] (@code{M.theta},
@@ -161,11 +176,64 @@ endfunction
 %!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "lambda", -1)
 %!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMaxIter", -1)
 %!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", "xx")
-%!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", "ivarma")
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", 3)
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "ArmaMethod", {"pem"})
+
+%!test  # ArmaMethod 'ivarma': the same plant and noise model as 'pem' (both
+%! # solve the prediction-error score equation at their fixed point)
+%! randn ("state", 13);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [Mp, Cp, Dp] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0], "Tol", 1e-10);
+%! [Mi, Ci, Di] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0], "Tol", 1e-10,
+%!                      "ArmaMethod", "ivarma", "ArmaMaxIter", 200);
+%! assert ([Ci Di], [Cp Dp], 1e-5);
+%! assert (Mi.theta, Mp.theta, 1e-6 * norm (Mp.theta));
+%! assert (getcov (Mi), getcov (Mp), 1e-3 * norm (getcov (Mp)));
 %!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", "lssvf")
 %!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [1 2])
 %!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [-1 4 1 1])
-%!error id=rivc:notSupported rivc (iddata (x, [u u], Ts), [2 1 1 2 0])
+%!test  # two inputs, one denominator each (CONTSID's MISO nn): exact
+%! u2 = kron (sign (randn (N / 15, 1)), ones (15, 1));
+%! x2 = lsim (c2d (tf (2, [1 0.5]), Ts), [0; 0; u2(1:end-2)]);
+%! [M, C, D, RT2] = rivc (iddata (x + x2, [u u2], Ts),
+%!                        [2 1 1 1 2 1 0 2], "Tol", 1e-10);
+%! assert (M.theta, [1.2 4 0.5 1.5 4 2], 1e-8);
+%! assert (M.F, {[1 1.2 4], [1 0.5]}, 1e-8);
+%! assert (M.B, {[1.5 4], 2}, 1e-8);
+%! assert (RT2, 1, 1e-10);
+%! assert (size (M.covariance), [6 6]);
+%! ## a given start [f_1 f_2 b_1 b_2], and IVARMA for the noise model
+%! M2 = rivc (iddata (x + x2, [u u2], Ts), [2 1 1 1 2 1 0 2], "Tol", 1e-10,
+%!            "InitMethod", [1 3 1 1 3 1], "ArmaMethod", "ivarma");
+%! assert (M2.theta, [1.2 4 0.5 1.5 4 2], 1e-8);
+
+%!test  # two inputs, ARMA noise: the fit equals the sum of each channel
+%! # simulated by the control package (c2d + lsim), within 4 sd of the truth
+%! randn ("state", 12);
+%! u2 = kron (sign (randn (N / 15, 1)), ones (15, 1));
+%! x2 = lsim (c2d (tf (2, [1 0.5]), Ts), u2);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! y = x + x2 + v;
+%! [M, C, D, RT2] = rivc (iddata (y, [u u2], Ts), [2 1 1 1 2 1 0 0]);
+%! ys = lsim (c2d (tf (M.B{1}, M.F{1}), Ts), u) ...
+%!      + lsim (c2d (tf (M.B{2}, M.F{2}), Ts), u2);
+%! assert (RT2, 1 - mean ((y - ys) .^ 2) / var (y, 1), 1e-9);
+%! sd = sqrt (diag (M.covariance)).';
+%! assert (all (abs (M.theta - [1.2 4 0.5 1.5 4 2]) < 4 * sd));
+%! assert ([C(2) D(2)], [0.5 -0.9], 0.1);
+%! p = getpvec (M);  # [b_1 b_2 c d f_1 f_2]
+%! B = M.B; F = M.F;
+%! assert (p.', [B{:}, C(2), D(2), F{1}(2:3), F{2}(2)], 1e-14);
+%! P = getcov (M);
+%! assert (P([6 7 8 1 2 3], [6 7 8 1 2 3]), M.covariance, 1e-15);
+%! ## the cross-input blocks of the stacked instruments' covariance
+%! assert (any (any (M.covariance(1:2, 3) != 0)));
+
+%!error id=rivc:badInput rivc (iddata (x, [u u], Ts), [2 1 1 2 0])
+%!error id=rivc:badInput rivc (iddata (x, [u u], Ts), [2 1 1 1 2 0 0 0])
+%!error id=rivc:badInput rivc (iddata (x, [u u], Ts), [2 3 1 1 2 1 0 0])
+%!error id=rivc:notSupported rivc (iddata (x, [u u], Ts), idpoly (1, {1, 1}, 1, 1, {[1 1], [1 1]}, 0, 0))
+%!error id=rivc:badOption rivc (iddata (x, [u u], Ts), [1 1 0 0 1 1 0 0], "InitMethod", [1 1])
 %!error id=rivc:notSupported rivc (iddata (x(1:50), u(1:50), "SamplingInstants", cumsum (0.01 + rand (50, 1) / 100)), [2 1 1 2 0])
 %!error id=rivc:badInput rivc (iddata (x(1:40), u(1:40), Ts), [2 1 1 2 0])
 %!error id=rivc:numericalFailure rivc (iddata (x, zeros (N, 1), Ts), [2 1 1 2 0])

@@ -29,11 +29,12 @@ endfunction
 ## rivc (data, [nb nc nd nf nk], Name, Value) or rivc (data, Mi, ...)
 function [M, info, d] = run_rivc (args)
   fname = "rivc";
-  [d, rest] = read_data (fname, args);
+  [d, rest] = read_data (fname, args, true);
   if (isempty (rest))
     error ("rivc:badInput", "rivc: expected the structure [nb nc nd nf nk]");
   endif
   nn = rest{1};
+  nu = columns (d.u);
   theta_init = [];
   if (isa (nn, "idpoly"))
     Mi = nn;
@@ -41,19 +42,31 @@ function [M, info, d] = run_rivc (args)
     F = Mi.F;
     C = Mi.C;
     D = Mi.D;
-    if (iscell (B) || iscell (F))
-      error ("rivc:badInput", "rivc: the initial model must have one input");
+    if (iscell (B) || iscell (F) || nu > 1)
+      error ("rivc:notSupported",
+             "rivc: an initial model is supported for one input only");
     endif
     nn = [numel(B), numel(C) - 1, numel(D) - 1, numel(F) - 1, Mi.nk(1)];
     theta_init = [F(2:end) / F(1), B / F(1)];
   endif
-  nn = read_orders (fname, nn, 5, "[nb nc nd nf nk]");
+  if (nu > 1)
+    ## CONTSID's MISO form [nb_1..nb_m nc nd nf_1..nf_m nk_1..nk_m]
+    nn = read_orders (fname, nn, 3 * nu + 2,
+                      "[nb_1..nb_m nc nd nf_1..nf_m nk_1..nk_m]");
+    nn = {nn(1:nu), nn(nu+1), nn(nu+2), nn(nu+3:2*nu+2), nn(2*nu+3:end)};
+    if (any (nn{4} < 1) || any (nn{1} < 1) || any (nn{1} > nn{4} + 1))
+      error ("rivc:badInput",
+             "rivc: every input needs nf_i >= 1 and 1 <= nb_i <= nf_i + 1");
+    endif
+  else
+    nn = num2cell (read_orders (fname, nn, 5, "[nb nc nd nf nk]"));
+  endif
   opts = read_options (fname, rest(2:end),
                        {"lambda", "Tol", "MaxIter", "InitMethod", ...
                         "ArmaMethod", "ArmaMaxIter"}, ...
                        {[], 1e-6, 30, "srivc", "pem", 50});
   e = engine_options (fname, opts, d);
-  e.nb = nn(1); e.nc = nn(2); e.nd = nn(3); e.nf = nn(4); e.nk = nn(5);
+  [e.nb, e.nc, e.nd, e.nf, e.nk] = nn{:};
   e = init_option (fname, opts.InitMethod, e, theta_init);
   [theta, cov, info] = call_mex (fname, d, [], e);
   info = derived (info, d, theta, cov);
@@ -240,7 +253,7 @@ function [M, info, d] = run_tfrivc (args)
                                 "NoiseVariance", info.noise_variance);
 endfunction
 
-function [d, rest] = read_data (fname, args)
+function [d, rest] = read_data (fname, args, multi = false)
   if (isempty (args))
     error ([fname ":badInput"], "%s: expected the data", fname);
   endif
@@ -251,7 +264,7 @@ function [d, rest] = read_data (fname, args)
            "%s: regularly sampled data only (the noise model is discrete)",
            fname);
   endif
-  if (columns (d.u) != 1)
+  if (columns (d.u) != 1 && ! multi)
     error ([fname ":notSupported"], "%s: one input only", fname);
   endif
 endfunction
@@ -403,11 +416,7 @@ function e = engine_options (fname, opts, d)
       error ([fname ":badOption"],
              "%s: ArmaMethod must be 'pem' or 'ivarma'", fname);
     endif
-    if (strcmpi (m, "ivarma"))
-      error ([fname ":notSupported"],
-             ["%s: ArmaMethod 'ivarma' is not implemented; 'pem' ", ...
-              "(Hannan-Rissanen + Gauss-Newton) is"], fname);
-    endif
+    e.arma_method = lower (m);
   endif
   lam = opts.lambda;
   if (! isempty (lam))
@@ -436,16 +445,17 @@ function e = init_option (fname, init, e, theta_init)
   if (isa (init, "idpoly"))
     F = init.F;
     B = init.B;
-    if (iscell (F) || iscell (B))
+    if (iscell (F) || iscell (B) || numel (e.nf) > 1)
       error ([fname ":badOption"], "%s: InitMethod: one input only", fname);
     endif
     init = [F(2:end) / F(1), B / F(1)];
   endif
-  np = e.nf + e.nb;
+  np = sum (e.nf) + sum (e.nb);
   if (! isnumeric (init) || ! isreal (init) || numel (init) != np
       || any (! isfinite (init(:))))
     error ([fname ":badOption"],
-           "%s: InitMethod must be 'srivc', an idpoly or %d values [f b]",
+           ["%s: InitMethod must be 'srivc', an idpoly or %d values ", ...
+            "[f b] ([f_1 .. f_m b_1 .. b_m] for m inputs)"],
            fname, np);
   endif
   e.theta_init = double (init(:).');
@@ -454,15 +464,18 @@ endfunction
 function [theta, cov, info] = call_mex (fname, d, r, e)
   if (isfield (e, "theta_init"))
     e.theta_init = e.theta_init(:);
-    np = e.nf + e.nb;
+    np = sum (e.nf) + sum (e.nb);
     if (numel (e.theta_init) != np)
       error ([fname ":badInput"], "%s: the initial model needs %d values",
              fname, np);
     endif
-    if (any (real (roots ([1; e.theta_init(1:e.nf)])) >= 0))
-      error ([fname ":badInput"], "%s: the initial model must be stable",
-             fname);
-    endif
+    at = cumsum ([0, e.nf]);
+    for i = 1:numel (e.nf)
+      if (any (real (roots ([1; e.theta_init(at(i)+1:at(i+1))])) >= 0))
+        error ([fname ":badInput"], "%s: the initial model must be stable",
+               fname);
+      endif
+    endfor
   endif
   [theta, cov, info] = rivc_mex (fname, double (d.y), double (d.u),
                                  double (d.Ts), r, e);
@@ -504,9 +517,19 @@ endfunction
 ## The plant/noise cross-covariance is not estimated (zero; in open loop
 ## the two are asymptotically uncorrelated for a Box-Jenkins model).
 function M = plant_model (fname, theta, cov, info, d, e)
-  nf = e.nf;
-  F = [1, theta(1:nf).'];
-  B = theta(nf+1:end).';
+  nf = sum (e.nf);
+  if (numel (e.nf) > 1)
+    ## MISO: theta = [f_1 .. f_m b_1 .. b_m], one B_i/F_i per input
+    fat = cumsum ([0, e.nf]);
+    bat = nf + cumsum ([0, e.nb]);
+    F = arrayfun (@(i) [1, theta(fat(i)+1:fat(i+1)).'], 1:numel (e.nf),
+                  "UniformOutput", false);
+    B = arrayfun (@(i) theta(bat(i)+1:bat(i+1)).', 1:numel (e.nb),
+                  "UniformOutput", false);
+  else
+    F = [1, theta(1:nf).'];
+    B = theta(nf+1:end).';
+  endif
   report = struct ();
   report.Fit = fit_struct (info, d, numel (theta));
   report.DataUsed = struct ("Length", rows (d.y), "Ts", d.Ts);
@@ -516,18 +539,19 @@ function M = plant_model (fname, theta, cov, info, d, e)
   report.Termination = struct ("Iterations", info.iterations,
                                "Converged", info.converged,
                                "Reason", info.reason);
-  M = idctm (struct ("B", B, "F", F, "nk", e.nk, "Ts", d.Ts,
+  M = idctm (struct ("B", {B}, "F", {F}, "nk", e.nk, "Ts", d.Ts,
                      "InterSample", d.intersample, "covariance", cov,
                      "noise_variance", info.noise_variance, "method", fname,
                      "iterations", info.iterations,
                      "converged", info.converged, "Report", report));
   if (numel (info.C) > 1 || numel (info.D) > 1)
-    nb = numel (B);
+    nb = sum (e.nb);
     nc = numel (info.C) - 1;
     nd = numel (info.D) - 1;
     M = set (M, "C", info.C, "D", info.D);
     full = zeros (nb + nc + nd + nf);
-    plant = [nb + nc + nd + (1:nf), 1:nb];   # [f b] in getpvec's order
+    ## [f b] in getpvec's order [b c d f] (MISO: [b_1 .. b_m c d f_1 .. f_m])
+    plant = [nb + nc + nd + (1:nf), 1:nb];
     noise = [nb + nc + (1:nd), nb + (1:nc)];  # [d c]
     full(plant, plant) = cov;
     full(noise, noise) = info.noise_covariance;

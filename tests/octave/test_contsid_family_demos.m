@@ -323,9 +323,12 @@ endfunction
 ## A noisy closed-loop estimate against the noise-free one.  The sd that
 ## clsrivc reports are 30-55 times smaller than the spread of its estimates
 ## (8-run Monte Carlo of closedloop1: spread [3.4 8.7 3.1 4.4]e-3, mean
-## reported sd [1.2 1.6 0.8 1.1]e-4; reported, not fixed here): the
-## tolerance is 3% (about 4 times the measured spread), the sd ratio is
-## printed.
+## reported sd [1.2 1.6 0.8 1.1]e-4): these loops are u = r - C(p) y (r at
+## the plant input), while clsrivc/clrivc's CONTSID form builds its
+## instruments for u = C(p) (r - y); the estimates stay consistent but the
+## reported sd do not apply (with the setpoint r' = Dc/Nc r they match the
+## spread; README, issue 11 third session).  The tolerance is 3% (about 4
+## times the measured spread), the sd ratio is printed.
 function noisy_checks (name, M, pdet)
   [p, sd] = getpvec (M);
   ## a hybrid BJ model (clrivc) holds [b c d f]: its plant's b and f

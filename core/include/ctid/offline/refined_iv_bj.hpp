@@ -48,9 +48,14 @@
 
 namespace ctid {
 
+// How the ARMA noise model is estimated (rivc's 'ArmaMethod'): by
+// prediction error (Gauss-Newton) or by Young's IVARMA (ivarma_estimate).
+enum class ArmaMethod { kPem, kIvarma };
+
 template <typename S>
 struct ArmaSettings {
-  int max_iterations = 50;  // Gauss-Newton steps after Hannan-Rissanen
+  ArmaMethod method = ArmaMethod::kPem;
+  int max_iterations = 50;  // Gauss-Newton (or IVARMA) iterations
   S tolerance = S(1e-8);    // relative decrease of the loss
   int long_ar_order = 0;    // Hannan-Rissanen's long AR; 0: automatic
   // A warm start [d1 .. d_nd, c1 .. c_nc] (e.g. the previous RIVC
@@ -188,10 +193,17 @@ bool least_squares(const Matrix<S>& A, const Vector<S>& b, Vector<S>& x,
 // halving and the roots of C and D kept inside the unit circle. The
 // covariance is sigma_e^2 (J^T J)^-1 of the final Jacobian.
 template <typename S>
+Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
+                       const ArmaSettings<S>& settings, ArmaResult<S>* result);
+
+template <typename S>
 Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
                      const ArmaSettings<S>& settings, ArmaResult<S>* result) {
   using namespace bj_detail;
   if (result == nullptr) return bad_input("arma_estimate: no result");
+  if (settings.method == ArmaMethod::kIvarma && nc > 0) {
+    return ivarma_estimate<S>(xi, n, nd, nc, settings, result);
+  }
   if (xi == nullptr || n < 1) return bad_input("the noise record is empty");
   if (nd < 0 || nc < 0 || nd > 50 || nc > 50) {
     return bad_input("the ARMA orders nd, nc must be in 0..50");
@@ -368,6 +380,142 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   result->innovation_variance = v;
   if (!result->covariance.allFinite()) {
     return numerical_failure("the ARMA covariance is not finite");
+  }
+  return Status::Ok();
+}
+
+// IVARMA: Young's instrumental-variable estimation of the ARMA noise model
+// (P. C. Young, "The refined instrumental variable method: unified
+// estimation of discrete and continuous-time transfer function models",
+// J. Europeen des Systemes Automatises 42, 2008, 149-179; Young,
+// "Recursive Estimation and Time-Series Analysis", 2nd ed., Springer
+// 2011: the IVARMA algorithm of the RIVBJ/RIVCBJ noise model). The ARMA
+// model D xi = C e is the pseudo-linear regression
+//   xi(k) = phi(k)^T eta + e(k),
+//   phi(k) = [-xi(k-1) .. -xi(k-nd), e_hat(k-1) .. e_hat(k-nc)],
+// eta = [d c], with the innovation estimate e_hat = D_j/C_j xi of the
+// previous iterate (the first from Hannan-Rissanen's long AR). Each
+// iteration solves it by IV with the refined instruments zeta(k) =
+// phi(k) / C_j(q^-1) (the prefilter 1/C of the refined IV; they are the
+// negative gradient of the prediction error D/C xi):
+//   eta_(j+1) = (sum zeta phi^T)^-1 sum zeta xi.
+// Since xi - phi^T eta_j = e_hat exactly, eta_(j+1) = eta_j + (sum zeta
+// phi^T)^-1 sum zeta e_hat: a fixed point satisfies the prediction-error
+// score equation sum zeta e_hat = 0, so IVARMA and PEM share their
+// asymptotic distribution (the estimator's covariance is sigma_e^2 (sum
+// zeta zeta^T)^-1, evaluated at the fixed point). The roots of C and D are
+// kept inside the unit circle (reflected, as in arma_estimate).
+template <typename S>
+Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
+                       const ArmaSettings<S>& settings, ArmaResult<S>* result) {
+  using namespace bj_detail;
+  if (result == nullptr) return bad_input("ivarma_estimate: no result");
+  if (xi == nullptr || n < 1) return bad_input("the noise record is empty");
+  if (nd < 0 || nc < 1 || nd > 50 || nc > 50) {
+    return bad_input("IVARMA needs nd in 0..50 and nc in 1..50");
+  }
+  const int np = nd + nc;
+  const Eigen::Index need = 10 * (np + 1) + 4 * (np + 10);
+  if (n < need) {
+    return bad_input("the noise record has " + std::to_string(n) +
+                     " samples; ARMA(" + std::to_string(nd) + "," +
+                     std::to_string(nc) + ") needs at least " +
+                     std::to_string(need));
+  }
+  const Eigen::Map<const Vector<S>> x(xi, n);
+  if (!x.allFinite()) return bad_input("the noise record is not finite");
+  if (!(x.squaredNorm() > 0) || settings.max_iterations < 1) {
+    // No noise (white, zero variance) or no iteration asked for
+    // (Hannan-Rissanen's estimate): as arma_estimate.
+    ArmaSettings<S> pem = settings;
+    pem.method = ArmaMethod::kPem;
+    return arma_estimate<S>(xi, n, nd, nc, pem, result);
+  }
+  // The start: Hannan-Rissanen (arma_estimate without Gauss-Newton steps)
+  // or the caller's warm start.
+  Vector<S> eta(np);
+  if (settings.start.size() == np && settings.start.allFinite()) {
+    eta = settings.start;
+  } else {
+    ArmaSettings<S> hr;
+    hr.max_iterations = 0;
+    hr.long_ar_order = settings.long_ar_order;
+    ArmaResult<S> start;
+    Status status = arma_estimate<S>(xi, n, nd, nc, hr, &start);
+    if (!status.ok()) return status;
+    eta << start.d.tail(nd), start.c.tail(nc);
+  }
+  auto polys = [&](const Vector<S>& p, Vector<S>& dpoly, Vector<S>& cpoly) {
+    dpoly.resize(nd + 1);
+    cpoly.resize(nc + 1);
+    dpoly(0) = cpoly(0) = 1;
+    dpoly.tail(nd) = p.head(nd);
+    cpoly.tail(nc) = p.tail(nc);
+  };
+  auto project = [&](Vector<S>& p) {
+    Vector<S> dpoly, cpoly;
+    polys(p, dpoly, cpoly);
+    dpoly = reflect_into_circle<S>(dpoly, S(0.999));
+    cpoly = reflect_into_circle<S>(cpoly, S(0.999));
+    p.head(nd) = dpoly.tail(nd);
+    p.tail(nc) = cpoly.tail(nc);
+  };
+  project(eta);
+  Matrix<S> Phi(n, np), Z(n, np);
+  Vector<S> e(n), col(n);
+  const Vector<S> one = Vector<S>::Ones(1);
+  // phi and zeta = phi / C at eta; e = D/C xi.
+  auto build = [&](const Vector<S>& p) {
+    Vector<S> dpoly, cpoly;
+    polys(p, dpoly, cpoly);
+    filter_dt<S>(dpoly, cpoly, xi, n, e.data());
+    for (int i = 1; i <= nd; ++i) {
+      Phi.col(i - 1).head(i).setZero();
+      Phi.col(i - 1).tail(n - i) = -x.head(n - i);
+    }
+    for (int i = 1; i <= nc; ++i) {
+      Phi.col(nd + i - 1).head(i).setZero();
+      Phi.col(nd + i - 1).tail(n - i) = e.head(n - i);
+    }
+    for (int i = 0; i < np; ++i) {
+      col = Phi.col(i);
+      filter_dt<S>(one, cpoly, col.data(), n, Z.col(i).data());
+    }
+  };
+  result->converged = false;
+  result->iterations = 0;
+  for (int it = 0; it < settings.max_iterations; ++it) {
+    build(eta);
+    const Matrix<S> zphi = Z.transpose() * Phi;
+    const Eigen::FullPivLU<Matrix<S>> lu(zphi);
+    if (!lu.isInvertible() || !zphi.allFinite()) {
+      // A noise estimate that the current ARMA model predicts (almost)
+      // exactly, e.g. the deterministic misfit of an early RIVC iterate on
+      // noise-free data: no IV step; the current model is kept (not
+      // converged), as a Gauss-Newton step without descent would be.
+      break;
+    }
+    Vector<S> next = lu.solve(Z.transpose() * x);
+    project(next);
+    const S change = (next - eta).norm() / std::max(next.norm(), S(1));
+    eta = next;
+    result->iterations = it + 1;
+    if (change < settings.tolerance) {
+      result->converged = true;
+      break;
+    }
+  }
+  build(eta);
+  const S v = e.squaredNorm() / static_cast<S>(n);
+  const Matrix<S> gram = Z.transpose() * Z;
+  // A pseudo-inverse: the directions a (near-)deterministic noise estimate
+  // does not determine get no variance instead of an infinite one.
+  const Eigen::CompleteOrthogonalDecomposition<Matrix<S>> cod(gram);
+  result->covariance = v * cod.pseudoInverse();
+  polys(eta, result->d, result->c);
+  result->innovation_variance = v;
+  if (!result->covariance.allFinite() || !std::isfinite(v)) {
+    return numerical_failure("the IVARMA covariance is not finite");
   }
   return Status::Ok();
 }
@@ -820,6 +968,276 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
                        (inv.asDiagonal() * inverse_gram * inv.asDiagonal());
   result->simulated = iteration.simulate(theta);
   const Eigen::Map<const Vector<S>> y(data.y, n);
+  result->simulation_variance =
+      (y - result->simulated).squaredNorm() / static_cast<S>(n - np);
+  result->stable = true;
+  if (!result->converged) {
+    return Status(ErrorCode::kNotConverged,
+                  "RIVC did not converge in " +
+                      std::to_string(settings.max_iterations) + " iterations");
+  }
+  return Status::Ok();
+}
+
+// Multi-input RIVC (CONTSID's rivc on MISO data, nn = [nb_1..nb_m nc nd
+// nf_1..nf_m nk_1..nk_m], one denominator per input: CONTSID's
+// 'Different'):
+//
+//   y(t_k) = sum_i B_i(p) / F_i(p) u_i(t_k - nk_i Ts) + C/D e(t_k).
+//
+// Young and Garnier's MISO refined IV (Garnier and Young, "The advantages
+// of directly identifying continuous-time transfer function models in
+// practical applications", Int. J. Control 87(7), 2014, sec. 3; Young,
+// "Recursive Estimation and Time-Series Analysis", 2nd ed. 2011, ch. 7,
+// the MISO RIV with different denominators) by backfitting: for input i
+// the partial target y_i = y - sum_(j != i) x_hat_j carries the other
+// inputs' auxiliary model outputs, and one RIVC step of the SISO
+// iteration (the prefilter D / (C F_i), instruments from x_hat_i, the
+// ARMA model of the common residual xi = y - sum_j x_hat_j) updates
+// [f_i b_i]. The covariance is sigma_e^2 (sum zeta_f zeta_f^T)^-1 (eq.
+// 2.13) with zeta_f the instruments of all inputs stacked, so the
+// cross-input blocks are included.
+struct RivcInput {
+  int nb = 1;  // B_i(p) = b_0 p^(nb-1) + .. + b_(nb-1)
+  int nf = 1;  // F_i(p) = p^nf + f1 p^(nf-1) + .. + f_nf
+  int nk = 0;  // delay in samples
+};
+
+template <typename S>
+struct RivcMisoProblem {
+  std::vector<RivcInput> inputs;
+  int nc = 0;
+  int nd = 0;
+  InterSample u_rule = InterSample::kZoh;
+  int num_parameters() const {
+    int n = 0;
+    for (const RivcInput& i : inputs) n += i.nb + i.nf;
+    return n;
+  }
+};
+
+template <typename S>
+struct RivcMisoData {
+  const S* y = nullptr;
+  const S* u = nullptr;  // N x m, column-major
+  Eigen::Index num_samples = 0;
+  S ts = 0;
+};
+
+// theta (result and settings.theta_init): [f_1 .. f_m, b_1 .. b_m], the
+// order of the MISO SRIVC engine (refined_iv) and of CONTSID's theta.
+template <typename S>
+Status rivc_miso(const RivcMisoProblem<S>& problem,
+                 const RivcSettings<S>& settings, const RivcMisoData<S>& data,
+                 RivcResult<S>* result) {
+  using namespace bj_detail;
+  if (result == nullptr) return bad_input("rivc: no result");
+  const int m = static_cast<int>(problem.inputs.size());
+  if (m < 1 || m > 50) return bad_input("rivc: 1..50 inputs");
+  if (data.u == nullptr || data.y == nullptr) {
+    return bad_input("y and u are required");
+  }
+  if (!(settings.tolerance > 0) || settings.max_iterations < 1) {
+    return Status(ErrorCode::kBadOption, "tol must be > 0 and maxiter >= 1");
+  }
+  const Eigen::Index n = data.num_samples;
+  // Each input's SISO problem, checked by the SISO validation (orders,
+  // delays, record length with all the parameters counted).
+  std::vector<RivcProblem<S>> sub(m);
+  std::vector<int> f_at(m), b_at(m);
+  int nf_total = 0;
+  for (int i = 0; i < m; ++i) nf_total += problem.inputs[i].nf;
+  for (int i = 0, fa = 0, ba = nf_total; i < m; ++i) {
+    const RivcInput& in = problem.inputs[i];
+    sub[i].nb = in.nb;
+    sub[i].nf = in.nf;
+    sub[i].nk = in.nk;
+    sub[i].nc = problem.nc;
+    sub[i].nd = problem.nd;
+    sub[i].u_rule = problem.u_rule;
+    const RivcData<S> d{data.y, data.u + i * n, n, data.ts};
+    Status status = validate(sub[i], d);
+    if (!status.ok()) {
+      return Status(status.code(),
+                    "input " + std::to_string(i + 1) + ": " + status.message());
+    }
+    f_at[i] = fa;
+    b_at[i] = ba;
+    fa += in.nf;
+    ba += in.nb;
+  }
+  const int np = problem.num_parameters();
+  if (n < 10 * (np + problem.nc + problem.nd + 1) +
+              4 * (problem.nc + problem.nd + 10)) {
+    return bad_input("too few samples (" + std::to_string(n) + ") for " +
+                     std::to_string(np) + " plant parameters");
+  }
+
+  // The start: MISO SRIVC with one denominator per input.
+  Vector<S> theta0 = settings.theta_init;
+  if (theta0.size() == 0) {
+    RivProblem<S> start;
+    for (int i = 0; i < m; ++i) {
+      start.nf.push_back(problem.inputs[i].nf);
+      RivChannel c;
+      c.group = i;
+      c.nb = problem.inputs[i].nb;
+      c.nk = problem.inputs[i].nk;
+      c.rule = problem.u_rule;
+      start.channels.push_back(c);
+    }
+    RivData<S> d;
+    d.y = data.y;
+    d.w = data.u;
+    d.num_samples = n;
+    d.ts = data.ts;
+    RivResult<S> r;
+    Status status = refined_iv<S>(start, settings.start, d, &r);
+    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
+      return Status(status.code(), "the SRIVC start: " + status.message());
+    }
+    theta0 = r.theta;
+  } else if (theta0.size() != np || !theta0.allFinite()) {
+    return bad_input("theta_init needs " + std::to_string(np) +
+                     " finite entries [f_1 .. f_m b_1 .. b_m]");
+  }
+  result->start_theta = theta0;
+
+  // Per input: [f_i b_i] in its own scaled time (sigma_i = |F_i(0)|^(1/nf_i)).
+  std::vector<Vector<S>> th(m), scale(m);
+  std::vector<S> sigma(m);
+  std::vector<HurwitzTest<S>> hurwitz;
+  for (int i = 0; i < m; ++i) {
+    const int nf = problem.inputs[i].nf, nb = problem.inputs[i].nb;
+    Vector<S> t(nf + nb);
+    t << theta0.segment(f_at[i], nf), theta0.segment(b_at[i], nb);
+    hurwitz.emplace_back(nf);
+    if (!hurwitz[i].is_stable(t.head(nf))) {
+      return numerical_failure("the start model of input " +
+                               std::to_string(i + 1) +
+                               " is unstable: no stable prefilter 1/F");
+    }
+    sigma[i] = std::pow(std::abs(t(nf - 1)), S(1) / nf);
+    if (!(sigma[i] > 0) || !std::isfinite(sigma[i])) sigma[i] = S(1) / data.ts;
+    scale[i] = scale_factors<S>(nf, nb, sigma[i]);
+    th[i] = t.cwiseProduct(scale[i]);
+  }
+  const Eigen::Map<const Vector<S>> y(data.y, n);
+  std::vector<Vector<S>> x(m);
+  auto channel = [&](int i, const Vector<S>& target) {
+    const RivcData<S> d{target.data(), data.u + i * n, n, data.ts};
+    return std::make_unique<BjIteration<S>>(sub[i], d, sigma[i]);
+  };
+  for (int i = 0; i < m; ++i) x[i] = channel(i, Vector<S>(y))->simulate(th[i]);
+  auto partial = [&](int i) {
+    Vector<S> t = y;
+    for (int j = 0; j < m; ++j) {
+      if (j != i) t -= x[j];
+    }
+    return t;
+  };
+
+  ArmaSettings<S> arma_settings = settings.arma;
+  ArmaResult<S> arma;
+  Vector<S> next, x_hat;
+  Matrix<S> inverse_gram;
+  S condition = 0;
+  result->converged = false;
+  result->reason = "maximum number of iterations reached";
+  int it = 0;
+  for (; it < settings.max_iterations; ++it) {
+    S change2 = 0, norm2 = 0;
+    for (int i = 0; i < m; ++i) {
+      const Vector<S> target = partial(i);
+      const auto iteration = channel(i, target);
+      Status status = iteration->step(th[i], arma_settings, true, next,
+                                      inverse_gram, arma, x_hat, condition);
+      if (!status.ok()) {
+        return Status(status.code(), "input " + std::to_string(i + 1) +
+                                         ": " + status.message());
+      }
+      if (problem.nc > 0) {
+        arma_settings.start.resize(problem.nd + problem.nc);
+        arma_settings.start << arma.d.tail(problem.nd),
+            arma.c.tail(problem.nc);
+      }
+      const int nf = problem.inputs[i].nf;
+      int halvings = 0;
+      while (!hurwitz[i].is_stable(next.head(nf)) && halvings < 30) {
+        next = th[i] + S(0.5) * (next - th[i]);
+        ++halvings;
+      }
+      if (!hurwitz[i].is_stable(next.head(nf))) {
+        return numerical_failure("the RIVC iterate of input " +
+                                 std::to_string(i + 1) + " is unstable");
+      }
+      change2 += (next - th[i]).squaredNorm();
+      norm2 += next.squaredNorm();
+      th[i] = next;
+      x[i] = iteration->simulate(th[i]);
+    }
+    if (std::sqrt(change2 / norm2) < settings.tolerance) {
+      result->converged = true;
+      result->reason = "relative change below tol";
+      ++it;
+      break;
+    }
+  }
+  result->iterations = it;
+
+  // The noise model and the stacked instruments at the final estimate.
+  Matrix<S> Z(n, np);
+  std::vector<int> column(np);  // stacked column -> theta index
+  int col = 0;
+  result->condition = 0;
+  for (int i = 0; i < m; ++i) {
+    const Vector<S> target = partial(i);
+    const auto iteration = channel(i, target);
+    Status status = iteration->step(th[i], arma_settings, true, next,
+                                    inverse_gram, arma, x_hat, condition);
+    if (!status.ok()) {
+      return Status(status.code(), "input " + std::to_string(i + 1) + ": " +
+                                       status.message());
+    }
+    result->condition = std::max(result->condition, condition);
+    const int nf = problem.inputs[i].nf, nb = problem.inputs[i].nb;
+    // Back to the original time: zeta' = zeta / scale (theta' = scale
+    // theta, so zeta^T theta = zeta'^T theta').
+    const Matrix<S>& Zi = iteration->instruments();
+    for (int k = 0; k < nf + nb; ++k, ++col) {
+      Z.col(col) = Zi.col(k) * scale[i](k);
+      column[col] = k < nf ? f_at[i] + k : b_at[i] + (k - nf);
+    }
+  }
+  result->noise = arma;
+  const Matrix<S> gram = Z.transpose() * Z;
+  const Vector<S> d = gram.diagonal().cwiseSqrt();
+  if (!(d.minCoeff() > 0)) {
+    return numerical_failure("an instrument is identically zero");
+  }
+  const Vector<S> di = d.cwiseInverse();
+  const Eigen::FullPivLU<Matrix<S>> lu(di.asDiagonal() * gram *
+                                       di.asDiagonal());
+  if (!lu.isInvertible()) {
+    return numerical_failure(
+        "the stacked instruments are rank deficient (inputs not "
+        "persistently exciting for the structure?)");
+  }
+  const Matrix<S> stacked = arma.innovation_variance *
+                            (di.asDiagonal() * lu.inverse() * di.asDiagonal());
+  result->theta.resize(np);
+  result->covariance.resize(np, np);
+  for (int i = 0, at = 0; i < m; ++i) {
+    const Vector<S> t = th[i].cwiseQuotient(scale[i]);
+    for (int k = 0; k < t.size(); ++k, ++at) result->theta(column[at]) = t(k);
+  }
+  for (int a = 0; a < np; ++a) {
+    for (int b = 0; b < np; ++b) {
+      result->covariance(column[a], column[b]) = stacked(a, b);
+    }
+  }
+  result->simulated = Vector<S>::Zero(n);
+  for (int i = 0; i < m; ++i) result->simulated += x[i];
   result->simulation_variance =
       (y - result->simulated).squaredNorm() / static_cast<S>(n - np);
   result->stable = true;
