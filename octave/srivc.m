@@ -60,7 +60,11 @@
 ## Every iterate is kept stable (an unstable IV solution is pulled back
 ## toward the previous iterate by step halving, reflected as a last resort;
 ## @var{info}.clipped says whether the returned iterate was, and
-## @var{info}.clipped_iterations how many were).
+## @var{info}.clipped_iterations how many were). When no stable step
+## lowers the simulation loss and the Gauss-Newton step that would moves
+## the slowest real pole through p = 0, the iteration stops there (not
+## converged, @var{info}.integrator_suspected set) instead of taking the
+## pulled-back refined-IV step, and the integrator refit below follows.
 ## A pole at p = 0 that the structure does not declare: when the iteration
 ## does not converge because the slowest pole stays real and moves toward
 ## p = 0 at every iteration while the loss falls (an integrating plant,

@@ -1395,7 +1395,13 @@ class Estimator {
   // log-likelihood unit, N ln V; that iterate is returned). A
   // run that still does not converge while its slowest pole creeps to
   // p = 0 flags integrator_suspected (the caller may refit with the pole
-  // declared).
+  // declared). When no step lowers the loss (stalled), the previous
+  // iterate is returned as converged if its score statistic is below the
+  // number of sensitivities (a stationary point), or as not converged with
+  // integrator_suspected if the full Gauss-Newton step, which would lower
+  // the loss, leaves the stable region by moving a real slowest pole
+  // through p = 0 (the minimum is on the stability boundary); only
+  // otherwise is the full IV step taken.
   Status refine(Run<S>& run) const {
     const int groups = p_.num_groups();
     evaluate(run);
@@ -1421,6 +1427,7 @@ class Estimator {
     // while the parameters move: flat directions).
     std::vector<S> losses;
     constexpr int kLossWindow = 5;
+    bool boundary = false;  // stopped at the stability boundary (below)
     for (int it = 1; it <= s_.max_iterations; ++it) {
       const Run<S> previous = run;
       bool clipped = false;
@@ -1445,6 +1452,8 @@ class Estimator {
       // from it was computed (infinite otherwise).
       S previous_score = std::numeric_limits<S>::infinity();
       int score_columns = 0;
+      bool newton_unstable = false;  // the full Gauss-Newton step was
+      std::vector<int> toward_origin(groups, 0);
       if (!(run.cost <= previous.cost)) {
         damped = true;
         const Vector<S> full = run.theta;
@@ -1470,15 +1479,51 @@ class Estimator {
             S beta = 1;
             for (int k = 0; k < 6 && !accepted; ++k, beta /= 2) {
               run.theta = previous.theta + beta * delta;
-              if (!e_.stable(run.theta)) continue;
+              if (!e_.stable(run.theta)) {
+                if (k == 0) newton_unstable = true;
+                continue;
+              }
               evaluate(run);
               accepted = run.cost < previous.cost;
             }
             if (accepted) {
               clipped = false;  // not the pulled-back IV step
               newton = true;
+            } else if (newton_unstable) {
+              // Does the Gauss-Newton direction take a real slowest pole
+              // toward p = 0 (the smallest step tried)?
+              const Vector<S> toward = previous.theta + beta * 2 * delta;
+              for (int g = 0; g < groups; ++g) {
+                const S now = slowest_real_pole(previous.theta, g);
+                const S next = slowest_real_pole(toward, g);
+                if (std::isfinite(now) && now > 0 && std::isfinite(next) &&
+                    next < now) {
+                  toward_origin[g] = 1;
+                }
+              }
             }
           }
+        }
+        if (!accepted && newton_unstable &&
+            std::any_of(toward_origin.begin(), toward_origin.end(),
+                        [](int v) { return v != 0; })) {
+          // The loss falls toward the stability boundary: neither a damped
+          // IV step nor a Gauss-Newton step that stays stable lowers it,
+          // and the full Gauss-Newton step, which would, leaves the stable
+          // region by moving the slowest (real) pole through p = 0. The
+          // loss minimum of the structure lies on or beyond the boundary
+          // (an integrator the structure does not declare). The previous
+          // iterate is returned, not converged, with the pole flagged, instead
+          // of the full IV step (session 6: raw EMPS position, where that
+          // step raised the loss 500-fold and the iterates cycled).
+          const int clips = run.clipped_iterations;
+          run = previous;
+          run.iterations = it;
+          run.clipped = false;
+          run.clipped_iterations = clips;
+          boundary = true;
+          run.integrator_suspected = toward_origin;
+          break;
         }
         if (!accepted && previous_score < std::max(S(1), S(score_columns)) &&
             std::isfinite(previous.cost)) {
@@ -1639,7 +1684,7 @@ class Estimator {
     // session 6 this test asked for 1, one log-likelihood unit; conv4
     // showed that a threshold that strict rejects true minima, and the
     // two tests now agree).
-    if (!run.converged && std::isfinite(lowest.cost) &&
+    if (!run.converged && !boundary && std::isfinite(lowest.cost) &&
         !p_.closed_loop()) {
       int columns = 0;
       const S score = score_statistic(lowest, &columns);
@@ -1659,7 +1704,7 @@ class Estimator {
               std::to_string(std::max(1, columns)) + ")";
       }
     }
-    if (!run.converged) {
+    if (!run.converged && !boundary) {
       for (int g = 0; g < groups; ++g) {
         run.integrator_suspected[g] =
             creeps_to_origin(slowest[g], run.losses) ? 1 : 0;
@@ -1670,6 +1715,12 @@ class Estimator {
     if (run.converged) {
       run.reason = "converged in " + std::to_string(run.iterations) +
                    " iteration(s) (" + how + ")";
+    } else if (boundary) {
+      run.reason =
+          "stopped after " + std::to_string(run.iterations) +
+          " iteration(s): the simulation loss falls toward the stability "
+          "boundary (the Gauss-Newton step that lowers it moves the slowest "
+          "real pole through p = 0)";
     } else if (run.clipped) {
       run.reason =
           "the unconstrained estimate is unstable: the returned model is the "
@@ -1979,8 +2030,9 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     if (r.cost * dof / n < S(0.99) * y_variance) return;
     r.converged = false;
     r.reason = "stopped at a model that explains less than 1 % of the "
-               "output's variance, a saddle of the simulation loss (" +
-               r.reason + "); not accepted as converged";
+               "output's variance, where B ~ 0 and the loss is flat in F "
+               "(a saddle whenever another model fits better; " +
+               r.reason + "): not accepted as converged";
   };
   if (settings.method != RivMethod::kSrivc) {
     best = starts.front().run;
