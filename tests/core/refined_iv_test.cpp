@@ -334,10 +334,9 @@ TEST(RefinedIvStatus, RawIntegratingPlantWithOffsetsIsRecovered) {
     EXPECT_FALSE(free.clipped) << free.reason;
     EXPECT_LT(std::abs(free.theta(1)), 1e-2 * free.theta(0)) << free.reason;
   } else {
-    const bool flagged =
-        free.integrator_suspected.at(0) != 0 ||
-        (free.lowest_theta.size() > 0 &&
-         free.lowest_integrator_suspected.at(0) != 0);
+    const bool flagged = free.integrator_suspected.at(0) != 0 ||
+                         (free.lowest_theta.size() > 0 &&
+                          free.lowest_integrator_suspected.at(0) != 0);
     EXPECT_TRUE(flagged) << free.reason;
   }
 }
@@ -362,9 +361,8 @@ TEST(RefinedIvStatus, ModelThatExplainsNothingIsNotConverged) {
   data.ts = ts;
   RivSettings<double> settings;
   RivResult<double> result;
-  const Status status =
-      refined_iv(second_order(0, 0, InterSample::kZoh), settings, data,
-                 &result);
+  const Status status = refined_iv(second_order(0, 0, InterSample::kZoh),
+                                   settings, data, &result);
   ASSERT_TRUE(status.ok() || status.code() == ErrorCode::kNotConverged)
       << status.message();
   double mean = 0, var = 0;

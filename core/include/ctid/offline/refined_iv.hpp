@@ -1540,10 +1540,11 @@ class Estimator {
           run.clipped = false;
           run.clipped_iterations = clips;
           run.converged = true;
-          how = "stationary simulation loss: neither the refined-IV step "
-                "nor a Gauss-Newton step lowers it (score statistic " +
-                std::to_string(previous_score) + " below " +
-                std::to_string(std::max(1, score_columns)) + ")";
+          how =
+              "stationary simulation loss: neither the refined-IV step "
+              "nor a Gauss-Newton step lowers it (score statistic " +
+              std::to_string(previous_score) + " below " +
+              std::to_string(std::max(1, score_columns)) + ")";
           break;
         }
         if (!accepted) {
@@ -1699,9 +1700,11 @@ class Estimator {
         run.clipped = false;
         run.converged = true;
         run.determined = !(lowest_worst > S(1));
-        how = "stationary simulation loss at the lowest-loss iterate "
-              "(score statistic " + std::to_string(score) + " below " +
-              std::to_string(std::max(1, columns)) + ")";
+        how =
+            "stationary simulation loss at the lowest-loss iterate "
+            "(score statistic " +
+            std::to_string(score) + " below " +
+            std::to_string(std::max(1, columns)) + ")";
       }
     }
     if (!run.converged && !boundary) {
@@ -2025,14 +2028,15 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
   auto reject_zero_output = [&](Run<S>& r) {
     if (!r.converged || !std::isfinite(r.cost)) return;
     const S n = static_cast<S>(engine.samples());
-    const S dof = std::max<S>(n - static_cast<S>(engine.free_parameters()),
-                              S(1));
+    const S dof =
+        std::max<S>(n - static_cast<S>(engine.free_parameters()), S(1));
     if (r.cost * dof / n < S(0.99) * y_variance) return;
     r.converged = false;
-    r.reason = "stopped at a model that explains less than 1 % of the "
-               "output's variance, where B ~ 0 and the loss is flat in F "
-               "(a saddle whenever another model fits better; " +
-               r.reason + "): not accepted as converged";
+    r.reason =
+        "stopped at a model that explains less than 1 % of the "
+        "output's variance, where B ~ 0 and the loss is flat in F "
+        "(a saddle whenever another model fits better; " +
+        r.reason + "): not accepted as converged";
   };
   if (settings.method != RivMethod::kSrivc) {
     best = starts.front().run;
@@ -2119,10 +2123,9 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     // with the integrator it creeps toward declared).
     const bool best_good = best.converged && best.stable;
     const S n_samples = static_cast<S>(engine.samples());
-    const bool far_better =
-        have_lowest && lowest.cost < best.cost &&
-        n_samples * std::log(best.cost / lowest.cost) >
-            S(2) * static_cast<S>(engine.free_parameters());
+    const bool far_better = have_lowest && lowest.cost < best.cost &&
+                            n_samples * std::log(best.cost / lowest.cost) >
+                                S(2) * static_cast<S>(engine.free_parameters());
     if (have_lowest && !(lowest.converged && lowest.stable) &&
         (far_better || !best_good)) {
       engine.set_scale(lowest_sigma);
@@ -2132,9 +2135,10 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
       if (status.ok()) {
         more.iterations += before;
         reject_zero_output(more);
-        more.reason += " (continued from the lowest-loss run over all "
-                       "starts, after " + std::to_string(before) +
-                       " iteration(s))";
+        more.reason +=
+            " (continued from the lowest-loss run over all "
+            "starts, after " +
+            std::to_string(before) + " iteration(s))";
         const bool more_good = more.converged && more.stable;
         if ((more_good && (!best_good || more.cost < best.cost)) ||
             (!more_good && !best_good && more.stable &&
