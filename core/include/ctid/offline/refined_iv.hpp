@@ -2113,9 +2113,10 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     }
     // The lowest-loss stable iterate over all starts, when it did not
     // converge: the iteration is continued from it (a fresh budget of
-    // max_iterations) if no run converged, or if it is far better than the
-    // converged run (likelihood ratio N ln(V_conv / V_lowest) above twice
-    // the number of free parameters: the converged run sits in a local
+    // max_iterations, automatic start only) if no run converged, or if it
+    // is far better than the converged run (likelihood ratio
+    // N ln(V_conv / V_lowest) above twice the number of free parameters:
+    // the converged run sits in a local
     // minimum; EMPS position, mean-removed [2 3 0]: R_T^2 0.93 converged,
     // 0.991 not converged). The continued run replaces the returned one
     // only if it converges (or none did and its loss is lower); otherwise
@@ -2126,7 +2127,10 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     const bool far_better = have_lowest && lowest.cost < best.cost &&
                             n_samples * std::log(best.cost / lowest.cost) >
                                 S(2) * static_cast<S>(engine.free_parameters());
-    if (have_lowest && !(lowest.converged && lowest.stable) &&
+    // Only for the automatic start grid (several starts): a single start
+    // (theta_init, or one cut-off) keeps max_iterations as its cap.
+    const bool multi_start = starts.size() > 1;
+    if (multi_start && have_lowest && !(lowest.converged && lowest.stable) &&
         (far_better || !best_good)) {
       engine.set_scale(lowest_sigma);
       Run<S> more = lowest;
