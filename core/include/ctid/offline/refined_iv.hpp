@@ -2116,9 +2116,8 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
     // max_iterations, automatic start only) if no run converged, or if it
     // is far better than the converged run (likelihood ratio
     // N ln(V_conv / V_lowest) above twice the number of free parameters:
-    // the converged run sits in a local
-    // minimum; EMPS position, mean-removed [2 3 0]: R_T^2 0.93 converged,
-    // 0.991 not converged). The continued run replaces the returned one
+    // the converged run sits in a local minimum; EMPS position,
+    // mean-removed [2 3 0]: R_T^2 0.93 converged, 0.991 not converged). The continued run replaces the returned one
     // only if it converges (or none did and its loss is lower); otherwise
     // it is reported as result->lowest_* for a refit by the caller (e.g.
     // with the integrator it creeps toward declared).
