@@ -17,7 +17,11 @@
 // stable, iterations, reason, noise_variance, cutoff, time_scale, starts,
 // condition, x0, offset, simulated, free_response, determined (false: the
 // simulation loss converged while parameters moved in directions the data
-// do not determine).
+// do not determine), clipped, clipped_iterations, integrator_suspected,
+// loss_history, and lowest_theta, lowest_noise_variance,
+// lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
+// iterate over all starts when it is not the returned model; lowest_theta
+// empty if none).
 #include <algorithm>
 
 #include "ctid/offline/refined_iv.hpp"
@@ -161,8 +165,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
         "noise_variance", "cutoff",    "time_scale", "starts",
         "condition",      "x0",        "offset",     "simulated",
         "free_response",  "determined", "clipped",   "clipped_iterations",
-        "integrator_suspected", "loss_history"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 18, fields);
+        "integrator_suspected", "loss_history", "lowest_theta",
+        "lowest_noise_variance", "lowest_integrator_suspected",
+        "lowest_simulated"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 22, fields);
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
     mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
@@ -187,6 +193,18 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       mxGetLogicals(suspected)[g] = result.integrator_suspected[g] != 0;
     }
     mxSetField(info, 0, "integrator_suspected", suspected);
+    mxSetField(info, 0, "lowest_theta", to_output(result.lowest_theta));
+    mxSetField(info, 0, "lowest_noise_variance",
+               mxCreateDoubleScalar(result.lowest_noise_variance));
+    const std::size_t lowest_groups =
+        result.lowest_integrator_suspected.size();
+    mxArray* lowest_suspected = mxCreateLogicalMatrix(1, lowest_groups);
+    for (std::size_t g = 0; g < lowest_groups; ++g) {
+      mxGetLogicals(lowest_suspected)[g] =
+          result.lowest_integrator_suspected[g] != 0;
+    }
+    mxSetField(info, 0, "lowest_integrator_suspected", lowest_suspected);
+    mxSetField(info, 0, "lowest_simulated", to_output(result.lowest_simulated));
     mxArray* losses = ctid::mex::make_output_matrix(
         result.loss_history.size(), 1);
     std::copy(result.loss_history.begin(), result.loss_history.end(),

@@ -39,11 +39,12 @@
 ## estimate a constant output offset c (y = x + c + e), true or false,
 ## or an offset d_j of each input (u_j + d_j enters the model). The
 ## default of InputOffset, @qcode{"auto"}, fits without input offsets and,
-## when that fit ends unstable or does not converge because its
+## when that fit ends unstable, or does not converge because its
 ## unconstrained iterates are unstable (an input offset on an integrating
-## axis drives the estimate toward an unstable pole), fits again with them and keeps that fit when it converges to a stable model
-## with a smaller loss (said in @var{info}.reason; not with a given
-## initial estimate). Reported in @var{info}.offset and
+## axis drives the estimate toward an unstable pole) or does not converge
+## on raw units (an input whose mean is not zero), fits again with them
+## and keeps that fit when it converges to a stable model with a smaller
+## loss (said in @var{info}.reason; not with a given initial estimate). Reported in @var{info}.offset and
 ## @var{info}.input_offset. The
 ## default of OutputOffset, @qcode{"auto"}, estimates c when the record
 ## does not start at rest (the median of its first samples exceeds 5 % of
@@ -59,7 +60,11 @@
 ## Every iterate is kept stable (an unstable IV solution is pulled back
 ## toward the previous iterate by step halving, reflected as a last resort;
 ## @var{info}.clipped says whether the returned iterate was, and
-## @var{info}.clipped_iterations how many were).
+## @var{info}.clipped_iterations how many were). When no stable step
+## lowers the simulation loss and the Gauss-Newton step that would moves
+## the slowest real pole through p = 0, the iteration stops there (not
+## converged, @var{info}.integrator_suspected set) instead of taking the
+## pulled-back refined-IV step, and the integrator refit below follows.
 ## A pole at p = 0 that the structure does not declare: when the iteration
 ## does not converge because the slowest pole stays real and moves toward
 ## p = 0 at every iteration while the loss falls (an integrating plant,
@@ -70,10 +75,28 @@
 ## poles stable and a simulation error that is not larger: the warning
 ## @code{srivc:integratorDetected} says so and @var{info}.integrators
 ## counts the declared poles per denominator. Otherwise the last iterate
-## stays with @code{srivc:notConverged}.
+## stays with @code{srivc:notConverged}. The same refit starts from the
+## lowest-loss run over all starts when that run did not converge, crept
+## toward p = 0 and has a lower loss than the converged model returned
+## (a local minimum; @var{info}.lowest_theta, lowest_noise_variance,
+## lowest_integrator_suspected describe that run, empty lowest_theta when
+## there is none).
+## Starts: SRIVC runs from the best-ranked IVSVF starts until one
+## converges; a run that stops where the model explains less than 1 % of
+## the output's variance (B ~ 0, where the loss is flat in F: a saddle) is
+## not accepted as converged and the next start is tried; when no run
+## converges, or a run that did not converge reached a much lower loss
+## than the converged one (likelihood ratio above twice the number of
+## parameters), the iteration is continued from the lowest-loss run for
+## another MaxIter iterations (said in @var{info}.reason).
 ## Convergence: a fixed point of the iteration, parameter changes below 1 %
 ## of their standard errors, or a simulation loss that stays within
-## max(10 Tol, 1e-5) of itself over 5 iterations. When the loss is
+## max(10 Tol, 1e-5) of itself over 5 iterations, or a stationary point
+## of the simulation loss shown by the score statistic (N times the
+## relative loss decrease a Gauss-Newton step would give, below the
+## number of parameters) where neither the damped refined-IV step nor a
+## Gauss-Newton step lowers the loss, or at the lowest-loss iterate after
+## the last iteration. When the loss is
 ## stationary but some parameter still moves by more than its standard
 ## error per iteration, the structure has directions the data do not
 ## determine: the warning @code{srivc:overParameterised} says so and
@@ -90,7 +113,8 @@
 ## time_scale, starts, condition, x0, offset, input_offset, simulated,
 ## determined, clipped, clipped_iterations, integrators,
 ## integrator_suspected, loss_history: the simulation loss after each
-## iteration).
+## iteration; lowest_theta, lowest_noise_variance,
+## lowest_integrator_suspected, lowest_simulated: see above).
 ##
 ## @strong{Example}
 ## @example

@@ -99,12 +99,21 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
   ## info.clipped: the returned iterate had to be pulled back into the
   ## stable region (its unconstrained IV solution is unstable)
-  if (auto_input_offset && (! info.stable || (! info.converged
-                                              && info.clipped)))
+  ## Raw units: an input whose mean is not zero (to 1e-8 of its standard
+  ## deviation; a mean-removed record has none).
+  raw_levels = any (abs (mean (d.u, 1)) > 1e-8 * max (std (d.u, 1, 1),
+                                                         realmin));
+  if (auto_input_offset && (! info.stable
+                            || (! info.converged
+                                && (info.clipped || raw_levels))))
     ## An offset of the input (raw units, a force that does not average to
     ## zero on an integrating axis) drives the estimate toward an unstable
-    ## model: the fit is repeated with input offsets and kept when it
-    ## converges to a stable model with a smaller loss.
+    ## model or keeps it from converging: the fit is repeated with input
+    ## offsets and kept when it converges to a stable model with a smaller
+    ## loss. (Session 6: on raw units also after a fit that does not
+    ## converge without being clipped: raw EMPS position [1 3 0], whose
+    ## iterates cycle at R_T^2 -0.47 and which converges at 0.994 with an
+    ## input offset.)
     e2 = e;
     e2.input_offset = true (1, nu);
     try
@@ -137,6 +146,33 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     else
       info.reason = [info.reason, "; a refit with a pole at p = 0 did ", ...
                      "not converge to a better model"];
+    endif
+  elseif (refined && ! closed && ! isempty (info.lowest_theta)
+          && any (info.lowest_integrator_suspected))
+    ## The returned fit converged, but a run from another start reached a
+    ## lower loss without converging while its slowest pole crept to p = 0
+    ## (the engine's info.lowest_*; mean-removed EMPS position [2 3 0]:
+    ## R_T^2 0.93 converged, 0.991 creeping): the integrator refit starts
+    ## from that run and replaces the converged local minimum when it
+    ## converges to a stable model with a loss no larger than the run's.
+    low = info;
+    low.integrator_suspected = info.lowest_integrator_suspected;
+    low.simulated = info.lowest_simulated;
+    low.noise_variance = info.lowest_noise_variance;
+    low.reason = sprintf (["a run from another start reached a lower ", ...
+                           "loss than the converged one (%s) without ", ...
+                           "converging"], info.reason);
+    [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
+                                                      info.lowest_theta, low);
+    if (! ok && auto_input_offset && raw_levels && ! any (e.input_offset))
+      e3 = e;
+      e3.input_offset = true (1, nu);
+      [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e3,
+                                                        info.lowest_theta,
+                                                        low);
+    endif
+    if (ok)
+      e = e2; theta = theta2; cov = cov2; info = info2;
     endif
   endif
 

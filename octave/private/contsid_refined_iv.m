@@ -60,7 +60,13 @@
 ## @code{condition}, @code{x0}, @code{offset}, @code{input_offset},
 ## @code{simulated} (the model's output incl. y0 and c),
 ## @code{free_response}, @code{F} (cell, [1 f..] per group), @code{B}
-## (cell, per channel). SRIVC that does not converge returns its last
+## (cell, per channel), @code{determined}, @code{clipped},
+## @code{clipped_iterations}, @code{integrator_suspected},
+## @code{loss_history}, and @code{lowest_theta} (layout of @var{theta}),
+## @code{lowest_noise_variance}, @code{lowest_integrator_suspected},
+## @code{lowest_simulated}: the lowest-loss stable iterate over all starts
+## when it did not converge and is not the model returned (empty
+## @code{lowest_theta} otherwise). SRIVC that does not converge returns its last
 ## iterate with @code{info.converged} false (no warning here: the caller
 ## reports it).
 ## @end deftypefn
@@ -201,6 +207,9 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   endfor
   theta = th(keep);
   cov = P(keep, keep);
+  if (! isempty (info.lowest_theta))
+    info.lowest_theta = info.lowest_theta(keep);
+  endif
   info.F = cell (1, numel (g.nf));
   off = 0;
   for k = 1:numel (g.nf)
