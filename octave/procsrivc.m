@@ -17,7 +17,8 @@
 ## @code{idproc ("P2DU")}; its @code{Structure.Td} gives the delay: a
 ## finite @code{Value} starts the refinement there, @code{Minimum} and
 ## @code{Maximum} bound it (Maximum Inf: from the input-output
-## cross-correlation, as @code{tfsrivc}'s default TdMax), and
+## cross-correlation, as @code{tfsrivc}'s default TdMax, extended while
+## the loss is smallest at its end), and
 ## @code{Free} false keeps it. The other parameters' values are not used
 ## as a start (SRIVC starts itself); bounds other than Td are not
 ## enforced. @var{type}: the type string instead of a model. Options as
@@ -99,7 +100,8 @@ function [M, varargout] = procsrivc (varargin)
     Td = S.Td;
     lo = Td.Minimum;
     hi = Td.Maximum;
-    if (! isfinite (hi))
+    o.tdmax_auto = ! isfinite (hi);
+    if (o.tdmax_auto)
       hi = contsid_default_tdmax (d.t, d.y, d.u);
     endif
     if (! isfinite (lo) || lo < 0)

@@ -439,7 +439,8 @@ function [starts, tdmax] = srivc_delay_start (fname, d, np, nz, td0, o,
               "tolpar", 1e-5, "tolfun", 1e-8,
               "stepmax", max (tdmax / (numtd - 1), h),
               "stepreduction", 0.5, "theta0", [], "fixed", [],
-              "fixed_values", [], "search_only", false);
+              "fixed_values", [], "search_only", false,
+              "tdmax_auto", ! tdmax_given);
   starts = {};
   td0s = {[]};
   if (! isempty (td0))
@@ -447,8 +448,9 @@ function [starts, tdmax] = srivc_delay_start (fname, d, np, nz, td0, o,
   endif
   for k = 1:numel (td0s)
     s.td0 = td0s{k};
-    [num, den, td] = contsid_tfsrivc (fname, d, np, nz, s);
+    [num, den, td, ~, si] = contsid_tfsrivc (fname, d, np, nz, s);
     starts{end+1} = [den(2:end), num, td].';
+    tdmax = max (tdmax, si.tdmax);
   endfor
 endfunction
 

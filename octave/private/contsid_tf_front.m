@@ -156,6 +156,8 @@ function M = contsid_tf_front (fname, args)
     error ([fname ":badInput"], "%s: FixTd 'on' needs the delay (IODelay)",
            fname);
   endif
+  ## a default TdMax is extended while the loss is smallest at its end
+  o.tdmax_auto = ! any (strcmpi (rest(1:2:end), "tdmax"));
   if (! isempty (td0) && ! o.fixtd && (td0 < o.tdmin || td0 > o.tdmax))
     if (any (strcmpi (rest(1:2:end), "tdmax")))
       error ([fname ":badOption"], ["%s: the start delay %g is outside ", ...
