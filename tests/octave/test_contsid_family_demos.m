@@ -608,7 +608,9 @@ function [num, den, iodelay, data_det, data] = relay_data ()
 endfunction
 
 function relay_checks (name, M, num, den, iodelay, tol)
-  p = getpvec (M);                           # [num den(2:end)]
+  p = getpvec (M);                       # [num den(2:end) IODelay]
+  assert (p(end), totaldelay (M));
+  p = p(1:end-1);
   printf ("%s: parameters %s delay %.4f\n", name, mat2str (p.', 4),
           totaldelay (M));
   assert (abs (totaldelay (M) - iodelay) < 0.03);
