@@ -272,6 +272,24 @@ endfunction
 %! assert (getpvec (M), [2; 0.5; 0.3; 0.23], 1e-4);
 
 %!test
+%! ## A step input (advantage22): its cross-correlation puts the default
+%! ## TdMax (0.47 s) below the delay 0.7 s; the range is extended while
+%! ## the loss is smallest at its end, and the delay is found.  The loss
+%! ## at the estimate is below the true model's (the global minimum).
+%! randn ("state", 34);
+%! Mp = idproc ("P2DU", "Kp", 2, "Tw", 0.05, "Zeta", 0.1, "Td", 0.7);
+%! us = [zeros(30, 1); ones(300, 1)];
+%! x = simc (Mp, iddata ([], us, 0.01, "InterSample", "zoh"));
+%! ys = x + 0.3 * randn (330, 1);
+%! M = procsrivc (iddata (ys, us, 0.01, "InterSample", "zoh"), "P2DU");
+%! tdgrid = M.Report.Termination.DelayGrid;
+%! assert (tdgrid(end) > 0.7);
+%! [p, sd] = getpvec (M);
+%! assert (abs (p(4) - 0.7) < 0.02);
+%! assert (all (abs (p - [2; 0.05; 0.1; 0.7]) < 5 * sd));
+%! assert (M.Report.Fit.MSE < mean ((ys - x) .^ 2));
+
+%!test
 %! ## P1D with a fixed delay and an integrating P1DI model.
 %! M1 = idproc ("P1D", "Kp", 3, "Tp1", 0.8, "Td", 0.1);
 %! y1 = simc (M1, iddata ([], u, Ts, "InterSample", "zoh"));
