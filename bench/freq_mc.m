@@ -40,7 +40,8 @@ function R = freq_mc (runs)
   U.Ts = 0;
   Y0 = sim (idpoly (1, [2 6], 1, 1, [1 1.5 9], "Ts", 0), U);
   K = rows (Y0.y);
-  fd = @() [setfield(Y0, "y", Y0.y + 0.1 * (randn (K, 1) + 1i * randn (K, 1))) U];
+  noisy = @() Y0.y + 0.1 * (randn (K, 1) + 1i * randn (K, 1));
+  fd = @() [setfield(Y0, "y", noisy ()) U];
   R.oe_iddata = mc ("oe (frequency iddata)", runs, @() oe_th (fd ()));
 endfunction
 

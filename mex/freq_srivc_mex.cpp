@@ -116,9 +116,7 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("srivc", {"srivc", "tffsrivc", "tffcoe", "oe", "tfest"},
-                         nrhs, prhs,
-                         [&](const Gateway& g) {
-                           freq_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "srivc", {"srivc", "tffsrivc", "tffcoe", "oe", "tfest"}, nrhs, prhs,
+      [&](const Gateway& g) { freq_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

@@ -25,9 +25,10 @@
 // (the frequency-domain form of the output-error criterion, thesis eq.
 // 1.16 with H = 1, by Parseval), minimised from the SRIVC estimate by the
 // Levenberg-Marquardt iteration of output_error.hpp (levenberg_marquardt)
-// on the stacked real and imaginary parts. Covariance (both): s^2 (J^T J)^-1 with J the
-// Jacobian of the stacked model output and s^2 = sum |Y - G U|^2 / (2K - np),
-// the asymptotic covariance of SRIVC (eq. 2.13) and of the output-error fit.
+// on the stacked real and imaginary parts. Covariance (both): s^2 (J^T J)^-1
+// with J the Jacobian of the stacked model output and s^2 = sum |Y - G U|^2 /
+// (2K - np), the asymptotic covariance of SRIVC (eq. 2.13) and of the
+// output-error fit.
 #pragma once
 
 #include <Eigen/Dense>

@@ -47,10 +47,10 @@
 #include <string>
 #include <vector>
 
-#include "ctid/offline/refined_iv.hpp"
 #include "ctid/base/stability.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/offline/refined_iv.hpp"
 
 namespace ctid {
 
@@ -593,8 +593,7 @@ Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
       step = dn.cwiseQuotient(scale);
       trial = theta + step;
       if (td_index >= 0) {
-        trial(td_index) =
-            std::clamp(trial(td_index), bound.lower, bound.upper);
+        trial(td_index) = std::clamp(trial(td_index), bound.lower, bound.upper);
         step(td_index) = trial(td_index) - theta(td_index);
       }
       if (model.stable(trial)) {
@@ -654,8 +653,8 @@ Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
                                .solve(Matrix<S>::Identity(np, np));
     const Matrix<S> Cn = qr.colsPermutation() * (Rinv * Rinv.transpose()) *
                          qr.colsPermutation().transpose();
-    out->inverse_information =
-        scale.cwiseInverse().asDiagonal() * Cn * scale.cwiseInverse().asDiagonal();
+    out->inverse_information = scale.cwiseInverse().asDiagonal() * Cn *
+                               scale.cwiseInverse().asDiagonal();
   } else {
     reason += "; the Jacobian is rank deficient (no covariance)";
   }
