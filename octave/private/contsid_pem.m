@@ -528,7 +528,14 @@ function th = overpar_start (fname, d, np, nz, td, o)
   if (! isempty (o.band))
     args = [args, {"Focus", o.band}];
   endif
-  Mo = tf_model (fname, d, args);
+  ## only a start: its own (ill-conditioned, a near pole-zero
+  ## cancellation) non-convergence is no news for the user
+  state = warning ("off", [fname ":notConverged"]);
+  unwind_protect
+    Mo = tf_model (fname, d, args);
+  unwind_protect_cleanup
+    warning (state);
+  end_unwind_protect
   [num, den] = tfdata (Mo, "vector");
   h = median (diff (d.t));
   T = d.t(end) - d.t(1);
