@@ -69,7 +69,7 @@ function S = rivc_mc (R, part)
       MP = tfrivc (iddata (xd + v, u, Ts), 2, 0, 0.37, "FixTd", "on",
                    "NN", [1 1]);
       T(i, :) = [MP.num{1}, MP.den{1}(2:3)];
-      SD(i, :) = sqrt (diag (getcov (MP))).';
+      SD(i, :) = sqrt (diag (getcov (MP)))(1:3).';  # then the IODelay
     endfor
     S.tfrivc = summary ("tfrivc 2,0 NN [1 1]", T, SD, [4 1.2 4], R);
   else

@@ -26,8 +26,8 @@ t0 = tic ();
 for r = 1:R
   y = x + 0.3 * randn (N, 1);
   M = tfcoe (iddata (y, u, Ts), 2, 1);
-  [p, sd] = getpvec (M);                # [b1 b0 f1 f2]
-  thc(r, :) = p; sdc(r, :) = sd;
+  [p, sd] = getpvec (M);                # [b1 b0 f1 f2 IODelay]
+  thc(r, :) = p(1:4); sdc(r, :) = sd(1:4);
   yd = xd + 0.3 * randn (N, 1);
   Md = oe (iddata (yd, u, 1), [2 2 1]);
   [p, sd] = getpvec (Md);               # [0 b1 b2 f1 f2]: B's nk zero

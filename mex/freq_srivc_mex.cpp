@@ -1,5 +1,6 @@
 // MEX gateway of the frequency-domain estimators (core/include/ctid/
-// freq_srivc.hpp), called by octave/private/contsid_freq.m:
+// freq_srivc.hpp), called by octave/private/contsid_freq.m (srivc,
+// tffsrivc, tffcoe; oe and tfest on frequency data):
 //
 //   [theta, cov, info] = freq_srivc_mex (fname, w, Y, U, opts)
 //
@@ -115,8 +116,7 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("srivc", {"srivc", "tffsrivc", "tffcoe"}, nrhs, prhs,
-                         [&](const Gateway& g) {
-                           freq_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "srivc", {"srivc", "tffsrivc", "tffcoe", "oe", "tfest"}, nrhs, prhs,
+      [&](const Gateway& g) { freq_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

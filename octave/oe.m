@@ -18,8 +18,24 @@
 ##
 ## @var{M}: an @code{idpoly} (Ts of the data) with covariance s^2 (J'J)^-1
 ## (s^2 = e'e/(N - nb - nf)) and Report (Fit.FitPercent, LossFcn = MSE =
-## e'e/N, FPE; Termination).  One input; frequency-domain data and
-## @code{idfrd} give @code{oe:notSupported}.
+## e'e/N, FPE; Termination).  One input.
+##
+## @strong{Frequency data.}  On an @code{idfrd} (Ts = 0) or on
+## continuous-time frequency-domain @code{iddata} (@code{datafreq = [Y U]}
+## with @code{Y.Ts = U.Ts = 0}), @var{nn} = [@var{nb} @var{nf}] (or
+## [@var{nb} @var{nf} 0]) gives the continuous-time model
+## y = B(s)/F(s) u, B with @var{nb} coefficients, F monic of degree
+## @var{nf}, fitted by frequency-domain output error: the weighted
+## nonlinear least squares min sum_k |Y_k - B/F(j w_k) U_k|^2 (U = 1 for
+## an @code{idfrd}; the output-error criterion of thesis eq. 1.16 with
+## H = 1, by Parseval) by the Levenberg-Marquardt iteration of the
+## time-domain fit (core @file{output_error.hpp}), started from SRIVC in
+## the frequency domain (@code{srivc} on the same data, core
+## @file{freq_srivc.hpp}; Pintelon and Schoukens, System Identification:
+## A Frequency Domain Approach, 2012, ch. 9).  Focus [w1 w2] keeps the
+## frequencies in the band.  Covariance s^2 (J'J)^-1 with J the Jacobian
+## of the stacked real and imaginary parts and s^2 = sum |E|^2 / (2K - np);
+## Report.Fit.LossFcn = sum |E|^2 / K.
 ##
 ## @strong{Example}
 ## @example
@@ -35,9 +51,12 @@ function [M, info, varargout] = oe (varargin)
   [M, info] = contsid_pem ("oe", varargin);
 endfunction
 
-%!shared u, x, N
+%!shared u, x, N, w, B, F, G
 %! N = 600; rand ("state", 1); u = sign (rand (N, 1) - 0.5);
 %! x = filter ([0 0 0.5 0.3], [1 -1.5 0.7], u);
+%! B = [2 5]; F = [1 0.8 4 2];               # resonance near 2 rad/s
+%! w = logspace (-1, 1.3, 80).';
+%! G = polyval (B, 1i * w) ./ polyval (F, 1i * w);
 
 %!test  # noise-free: exact
 %! M = oe (iddata (x, u, 1), [2 2 2]);
@@ -66,6 +85,59 @@ endfunction
 %! M2 = oe (iddata (y, u, 1), [2 2 2], "focus", [0 1]);
 %! assert (M1.F, M2.F, 1e-12);
 
+%!test  # idfrd, noise-free: exact; the control package's freqresp of the
+%! # returned model reproduces the data
+%! pkg load control
+%! M = oe (idfrd (G, w, "Ts", 0), [2 3]);
+%! assert (M.Ts, 0);
+%! assert (M.B, B, 1e-9 * norm (B));
+%! assert (M.F, F, 1e-9 * norm (F));
+%! H = squeeze (freqresp (tf (M.B, M.F), w));
+%! assert (H(:), G, 1e-9 * max (abs (G)));
+
+%!test  # noisy idfrd: the loss is sum |G - B/F|^2 / K evaluated
+%! # independently (polyval), and the estimate is a local minimum of it
+%! randn ("state", 3);
+%! Gn = G + 0.05 * (randn (size (G)) + 1i * randn (size (G)));
+%! M = oe (idfrd (Gn, w, "Ts", 0), [2 3]);
+%! H = @(b, f) polyval (b, 1i * w) ./ polyval (f, 1i * w);
+%! loss = @(b, f) mean (abs (Gn - H (b, f)) .^ 2);
+%! assert (loss (M.B, M.F), M.Report.Fit.LossFcn, 1e-10 * M.Report.Fit.LossFcn);
+%! for k = 2:4
+%!   for s = [-1 1]
+%!     f = M.F; f(k) += s * 1e-4 * abs (f(k));
+%!     assert (loss (M.B, f) > M.Report.Fit.LossFcn);
+%!   endfor
+%! endfor
+%! [p, sd] = getpvec (M);
+%! assert (numel (p), 5);
+%! assert (all (abs (p - [B F(2:end)].') < 5 * sd));
+
+%!test  # Focus [0 wc] is the fit on the frequencies below wc; the
+%! # oeOptions form and the name-value form agree
+%! randn ("state", 4);
+%! Gn = G + 0.05 * (randn (size (G)) + 1i * randn (size (G)));
+%! M1 = oe (idfrd (Gn, w, "Ts", 0), [2 3], "Focus", [0 5]);
+%! M2 = oe (idfrd (Gn, w, "Ts", 0), [2 3], oeOptions ("Focus", [0 5]));
+%! k = w <= 5;
+%! M3 = oe (idfrd (Gn(k), w(k), "Ts", 0), [2 3]);
+%! assert (getpvec (M1), getpvec (M2), 1e-12);
+%! assert (getpvec (M1), getpvec (M3), 1e-12);
+%! assert (M1.Report.DataUsed.Length, sum (k));
+
+%!test  # frequency-domain iddata (tutorial3's construction), noise-free
+%! ui = idinput (400, "sine", [0 0.5]);
+%! U = fft (iddata ([], ui, 0.05, "InterSample", "bl"));
+%! U.Ts = 0;
+%! Y = sim (idpoly (1, B, 1, 1, F, "Ts", 0), U);
+%! M = oe ([Y U], [2 3]);
+%! assert (getpvec (M), [B F(2:end)].', 1e-8);
+
+%!error id=oe:badInput oe (idfrd (G, w, "Ts", 0), 2)
+%!error id=oe:badInput oe (idfrd (G, w, "Ts", 0), [2 0])
+%!error id=oe:notSupported oe (idfrd (G, w, "Ts", 0), [2 3 1])
+%!error id=oe:badOption oe (idfrd (G, w, "Ts", 0), [2 3], "Focus", [50 60])
+%!error id=oe:badOption oe (idfrd (G, w, "Ts", 0), [2 3], "Lambda", 2)
 %!error id=oe:badInput oe (iddata (x, u, 1))
 %!error id=oe:badInput oe (iddata (x, u, 1), [2 2])
 %!error id=oe:badInput oe (iddata (x, u, 1), [0 2 1])
@@ -76,6 +148,14 @@ endfunction
 %!error id=oe:notSupported oe (iddata (x, [u u], 1), [2 2 2])
 %!error id=oe:notSupported oe (idfrd (1, 1, 0), [2 2 2])
 %!error id=oe:badInput oe (iddata (x, u, "SamplingInstants", cumsum (0.5 + rand (N, 1))), [2 2 2])
+
+%!demo
+%! ## frequency-response data (advantages53): oe with and without Focus
+%! w = logspace (-1, 2, 250).';
+%! G = freqs ([-6400 1600], [1 5 408 416 1600], w);
+%! G = G + 1.5 * (randn (size (G)) + 1i * randn (size (G)));
+%! Moe = oe (idfrd (G, w, "Ts", 0), [2 4])
+%! Moefocus = oe (idfrd (G, w, "Ts", 0), [2 4], "Focus", [0 25]);
 
 %!demo
 %! u = sign (randn (500, 1));

@@ -17,7 +17,8 @@
 ## @code{idproc ("P2DU")}; its @code{Structure.Td} gives the delay: a
 ## finite @code{Value} starts the refinement there, @code{Minimum} and
 ## @code{Maximum} bound it (Maximum Inf: from the input-output
-## cross-correlation, as @code{tfsrivc}'s default TdMax), and
+## cross-correlation, as @code{tfsrivc}'s default TdMax, extended while
+## the loss is smallest at its end), and
 ## @code{Free} false keeps it. The other parameters' values are not used
 ## as a start (SRIVC starts itself); bounds other than Td are not
 ## enforced. @var{type}: the type string instead of a model. Options as
@@ -99,7 +100,8 @@ function [M, varargout] = procsrivc (varargin)
     Td = S.Td;
     lo = Td.Minimum;
     hi = Td.Maximum;
-    if (! isfinite (hi))
+    o.tdmax_auto = ! isfinite (hi);
+    if (o.tdmax_auto)
       hi = contsid_default_tdmax (d.t, d.y, d.u);
     endif
     if (! isfinite (lo) || lo < 0)
@@ -268,6 +270,24 @@ endfunction
 %! init.Structure.Td.Maximum = 0.6;
 %! M = procsrivc (di, init);
 %! assert (getpvec (M), [2; 0.5; 0.3; 0.23], 1e-4);
+
+%!test
+%! ## A step input (advantage22): its cross-correlation puts the default
+%! ## TdMax (0.47 s) below the delay 0.7 s; the range is extended while
+%! ## the loss is smallest at its end, and the delay is found.  The loss
+%! ## at the estimate is below the true model's (the global minimum).
+%! randn ("state", 34);
+%! Mp = idproc ("P2DU", "Kp", 2, "Tw", 0.05, "Zeta", 0.1, "Td", 0.7);
+%! us = [zeros(30, 1); ones(300, 1)];
+%! x = simc (Mp, iddata ([], us, 0.01, "InterSample", "zoh"));
+%! ys = x + 0.3 * randn (330, 1);
+%! M = procsrivc (iddata (ys, us, 0.01, "InterSample", "zoh"), "P2DU");
+%! tdgrid = M.Report.Termination.DelayGrid;
+%! assert (tdgrid(end) > 0.7);
+%! [p, sd] = getpvec (M);
+%! assert (abs (p(4) - 0.7) < 0.02);
+%! assert (all (abs (p - [2; 0.05; 0.1; 0.7]) < 5 * sd));
+%! assert (M.Report.Fit.MSE < mean ((ys - x) .^ 2));
 
 %!test
 %! ## P1D with a fixed delay and an integrating P1DI model.

@@ -18,8 +18,16 @@
 ## name-value pairs with those names.
 ##
 ## @var{M}: an @code{idtf} with covariance and Report (Fit.FitPercent,
-## LossFcn, MSE, FPE; Termination).  Frequency-domain data and
-## @code{idfrd} give @code{tfest:notSupported} here.
+## LossFcn, MSE, FPE; Termination).
+##
+## @strong{Frequency data.}  On an @code{idfrd} (Ts = 0) or on
+## continuous-time frequency-domain @code{iddata} (@code{[Y U]}, Ts = 0)
+## the same model (@var{iodelay} fixed) is fitted by frequency-domain
+## output error, min sum_k |Y_k - G(j w_k) U_k|^2 (U = 1 for an
+## @code{idfrd}), by the Levenberg-Marquardt iteration of the time-domain
+## fit from the frequency-domain SRIVC estimate (as @code{oe} on frequency
+## data, which documents it); Focus [w1 w2] keeps the frequencies in the
+## band.
 ##
 ## @strong{Example}
 ## @example
@@ -85,7 +93,39 @@ endfunction
 %!error id=tfest:badOption tfest (iddata (x, u, Ts), 2, 1, "Lambda", 2)
 %!error id=tfest:badOption tfest (iddata (x, u, Ts), 2, 1, "Focus", "bogus")
 %!error id=tfest:badOption tfest (iddata (x, u, Ts), 2, 1, struct ("a", 1))
-%!error id=tfest:notSupported tfest (idfrd (1, 1, 0), 2, 1)
+%!error id=tfest:badInput tfest (idfrd (1, 1, 0), 2, 1)
+%!error id=tfest:badInput tfest (idfrd ([1; 2; 3], [1; 2; 3], 0), 2, 3)
+%!error id=tfest:badOption tfest (idfrd ([1; 2; 3], [1; 2; 3], 0), 1, 0, "Focus", [5 6])
+
+%!test  # idfrd with a fixed delay, noise-free: exact; the control
+%! # package's freqresp of the returned model reproduces the data
+%! pkg load control
+%! w = logspace (-1, 1.5, 60).';
+%! G = polyval ([1.5 4], 1i * w) ./ polyval ([1 2.4 4], 1i * w) ...
+%!     .* exp (-0.3i * w);
+%! M = tfest (idfrd (G, w, "Ts", 0), 2, 1, 0.3);
+%! [num, den] = tfdata (M, "vector");
+%! assert (den, [1 2.4 4], 1e-9);
+%! assert (num(end-1:end), [1.5 4], 1e-9);
+%! assert (M.IODelay, 0.3);
+%! H = squeeze (freqresp (tf (num, den), w)) .* exp (-0.3i * w);
+%! assert (H(:), G, 1e-9 * max (abs (G)));
+%! assert (getpvec (M)(end), 0.3);     # [b1 b0 f1 f2 IODelay]
+
+%!test  # frequency-domain iddata: tfest and oe reach the same minimum, and
+%! # the tfestOptions Focus form equals the fit on the band's frequencies
+%! randn ("state", 8);
+%! ui = idinput (400, "sine", [0 0.5]);
+%! U = fft (iddata ([], ui, 0.05, "InterSample", "bl"));
+%! U.Ts = 0;
+%! Y = sim (idpoly (1, [1.5 4], 1, 1, [1 2.4 4], "Ts", 0), U);
+%! Y.y = Y.y + 0.05 * (randn (size (Y.y)) + 1i * randn (size (Y.y)));
+%! Mt = tfest ([Y U], 2, 1);
+%! Mo = oe ([Y U], [2 2]);
+%! assert (getpvec (Mt)(1:4), getpvec (Mo), 1e-8);
+%! M1 = tfest ([Y U], 2, 1, tfestOptions ("Focus", [0 10]));
+%! M2 = tfest ([Y U], 2, 1, "Focus", [0 10]);
+%! assert (getpvec (M1), getpvec (M2), 1e-12);
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

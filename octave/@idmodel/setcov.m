@@ -1,7 +1,10 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} setcov (@var{M}, @var{C})
 ## Sets the covariance of the parameters (order of @code{getpvec}):
-## symmetric positive semi-definite, np-by-np; @code{[]} removes it.
+## symmetric positive semi-definite, np-by-np; @code{[]} removes it.  For
+## an @code{idtf}, whose parameter vector ends with its IODelay entries
+## (as in the SITB), the covariance of the coefficients alone may be given:
+## the delays are then fixed parameters (zero rows and columns).
 ## Errors: @code{<class>:dimensionMismatch}, @code{<class>:badInput}.
 ## @end deftypefn
 
@@ -12,6 +15,14 @@ function [M, varargout] = setcov (M, C, varargin)
   if (isempty (C))
     M.cov = [];
     return;
+  endif
+  nd = 0;
+  if (strcmp (P.kind, "idtf"))
+    nd = numel (P.par.IODelay);
+  endif
+  if (nd > 0 && isnumeric (C) && isequal (size (C), [np-nd np-nd]))
+    ## an idtf's coefficients alone: its IODelay is fixed (variance 0)
+    C = blkdiag (C, zeros (nd));
   endif
   if (! isnumeric (C) || ! isreal (C) || ! isequal (size (C), [np np]))
     error ([P.kind ":dimensionMismatch"],
@@ -29,7 +40,13 @@ endfunction
 %!test
 %! M = setcov (idtf (2, [1 3]), diag ([0.04 0.01]));
 %! [~, sd] = getpvec (M);
-%! assert (sd, [0.2; 0.1], 1e-15);
+%! assert (sd, [0.2; 0.1; 0], 1e-15);    # the fixed IODelay: sd 0
+%!test  # an idtf's coefficient block: the (fixed) delay gets variance 0
+%! M = setcov (idtf (2, [1 3], "IODelay", 0.4), diag ([0.04 0.01]));
+%! assert (getcov (M), diag ([0.04 0.01 0]));
+%! M = setcov (M, diag ([0.04 0.01 0.0025]));
+%! [p, sd] = getpvec (M);
+%! assert ([p sd], [2 0.2; 3 0.1; 0.4 0.05], 1e-15);
 %!error id=idtf:dimensionMismatch setcov (idtf (2, [1 3]), 1)
 %!error id=idtf:badInput setcov (idtf (2, [1 3]), [1 2; 0 1])
 

@@ -1,8 +1,8 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} setpvec (@var{M}, @var{p})
 ## Sets the parameters of a model from a vector in the order of
-## @code{getpvec}; the covariance is kept (it describes the same
-## parameters).  A vector of the wrong length: @code{<class>:dimensionMismatch}.
+## @code{getpvec} (an @code{idtf}'s ends with its IODelay entries, >= 0);
+## the covariance is kept (it describes the same parameters).  A vector of the wrong length: @code{<class>:dimensionMismatch}.
 ## @end deftypefn
 
 function [M, varargout] = setpvec (M, p, varargin)
@@ -22,7 +22,12 @@ endfunction
 %! assert ({M.B, M.F}, {[1 2], [1 3 4]});
 %! P = setpvec (idproc ("P1D"), [2 4 1]);
 %! assert ([P.Kp P.Tp1 P.Td], [2 4 1]);
+%! M = setpvec (idtf (1, [1 2]), [1; 5; 0.25]);   # [num den(2) IODelay]
+%! [~, den] = tfdata (M, "vector");
+%! assert ({den, M.IODelay}, {[1 5], 0.25});
 %!error id=idtf:dimensionMismatch setpvec (idtf (2, [1 3 2]), [1 2])
+%!error id=idtf:dimensionMismatch setpvec (idtf (2, [1 3 2]), [1 2 3])
+%!error id=idtf:badInput setpvec (idtf (2, [1 3 2]), [1 2 3 -1])
 
 %!demo
-%! M = setpvec (idtf (2, [1 3 2]), [4 3 2])
+%! M = setpvec (idtf (2, [1 3 2]), [4 3 2 0.5])

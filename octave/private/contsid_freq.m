@@ -24,7 +24,18 @@ function [M, info] = contsid_freq (fname, args)
   o = struct ();
   theta_init = [];
   td0 = [];
-  if (strcmp (fname, "srivc"))
+  pem = any (strcmp (fname, {"oe", "tfest"}));
+  band = [];
+  if (pem)
+    ## oe/tfest: orders and options already read by contsid_pem (spec)
+    spec = args{2};
+    [na, nb, band] = deal (spec.na, spec.nb, spec.band);
+    td0 = spec.delay;
+    opts.FixTd = "on";
+    opts.MaxIter = spec.maxiter;
+    opts.Tol = spec.tol;
+    rest = {};
+  elseif (strcmp (fname, "srivc"))
     nn = args{2};
     if (! isnumeric (nn) || ! isreal (nn) || ! any (numel (nn) == [2 3])
         || any (nn != round (nn)) || any (nn < 0))
@@ -83,6 +94,18 @@ function [M, info] = contsid_freq (fname, args)
   intsamp = onoff (opts.IntSamp, "IntSamp");
 
   [w, Y, U, period, Ts] = frequency_data (data);
+  if (! isempty (band))
+    ## Focus [w1 w2] on frequency data: the frequencies inside the band
+    keep = w >= band(1) & w <= band(2);
+    if (sum (keep) < 1)
+      error ([fname ":badOption"], ["%s: the Focus band [%g %g] holds no ", ...
+             "frequency of the data"], fname, band(1), band(2));
+    endif
+    w = w(keep); Y = Y(keep);
+    if (! isempty (U))
+      U = U(keep);
+    endif
+  endif
   o.na = na;
   o.nb = nb;
   tol = opts.Tol;
@@ -139,7 +162,7 @@ function [M, info] = contsid_freq (fname, args)
       o.td_max = max (o.td_max, td0);
     endif
   endif
-  o.output_error = strcmp (fname, "tffcoe");
+  o.output_error = strcmp (fname, "tffcoe") || pem;
 
   [theta, P, info] = freq_srivc_mex (fname, w, Y, U, o);
   if (! info.converged)
@@ -165,6 +188,25 @@ function [M, info] = contsid_freq (fname, args)
   info.w = w;
   info.Y = Y;
   info.U = U;
+  if (strcmp (fname, "oe"))
+    M = idpoly (1, b, 1, 1, F, info.noise_variance, 0);
+    perm = [na + (1:nb), 1:na];
+    C = P(perm, perm);
+    if (all (isfinite (C(:))))
+      M = setcov (M, (C + C.') / 2);
+    endif
+    rep = struct ("Method", "OE",
+                  "Status", "Estimated using OE (frequency domain)",
+                  "Fit", fit,
+                  "Parameters", struct ("ParVector", getpvec (M)),
+                  "Termination", struct ("Iterations", info.iterations,
+                                         "Converged", info.converged,
+                                         "Reason", info.reason),
+                  "DataUsed", struct ("Length", K, "Domain", "Frequency",
+                                      "Ts", 0, "InterSample", "bl"));
+    M = set (M, "Report", rep);
+    return;
+  endif
   if (strcmp (fname, "srivc"))
     report = struct ("Fit", fit, "Method", "srivc (frequency domain)",
                      "DataUsed", struct ("Length", K, "Domain", "Frequency"));
@@ -177,6 +219,9 @@ function [M, info] = contsid_freq (fname, args)
   endif
   M = idtf (b, F, "IODelay", info.delay);
   perm = [na + (1:nb), 1:na];
+  if (estimate_td)
+    perm(end+1) = na + nb + 1;          # getpvec ends with the IODelay
+  endif
   C = P(perm, perm);
   if (all (isfinite (C(:))))
     M = setcov (M, C);

@@ -15,9 +15,13 @@ function [M, info] = contsid_pem (fname, args)
   endif
   a1 = args{1};
   if (isa (a1, "idfrd") || (isa (a1, "iddata") && isfield_domain (a1)))
-    error ([fname ":notSupported"],
-           "%s: frequency-domain data are not supported here (time domain)",
-           fname);
+    if (! any (strcmp (fname, {"oe", "tfest"})))
+      error ([fname ":notSupported"],
+             "%s: frequency-domain data are not supported here (time domain)",
+             fname);
+    endif
+    [M, info] = freq_model (fname, args);
+    return;
   endif
   d = contsid_getdata (fname, args{:});
   rest = args(d.nconsumed+1:end);
@@ -295,11 +299,10 @@ function [M, info] = tf_model (fname, d, rest)
   if (strcmp (fname, "tfest"))
     check_unused (fname, o, {"lambda", "overpar", "tdmax"});
   endif
-  if (! (ischar (o.overpar) && strcmpi (o.overpar, "off")))
-    error ([fname ":notSupported"],
-           ["%s: OverPar 'on' is not supported (the model is estimated ", ...
-            "in its own parameters)"], fname);
+  if (! (ischar (o.overpar) && any (strcmpi (o.overpar, {"on", "off"}))))
+    error ([fname ":badOption"], "%s: OverPar must be 'on' or 'off'", fname);
   endif
+  overpar = strcmpi (o.overpar, "on");
   if (! isempty (o.lambda) && ! (isnumeric (o.lambda) && isscalar (o.lambda)
                                  && isreal (o.lambda) && o.lambda > 0
                                  && isfinite (o.lambda)))
@@ -345,6 +348,10 @@ function [M, info] = tf_model (fname, d, rest)
     ## stays at 7.4994 s for a true 8 s.)
     [starts, o.tdmax] = srivc_delay_start (fname, df, np, nz, td_given,
                                            o, tdmax_given);
+    if (overpar)
+      starts{end+1} = overpar_start (fname, d, np, nz, td_given, o);
+      starts = starts(! cellfun ("isempty", starts));
+    endif
     estimate = true;
     opts.estimate_delay = true;
     opts.delay_max = o.tdmax;
@@ -372,6 +379,17 @@ function [M, info] = tf_model (fname, d, rest)
     endif
   else
     [theta, P, info] = call_gateway (fname, df, opts);
+    th0 = [];
+    if (overpar)
+      th0 = overpar_start (fname, d, np, nz, td_given, o);
+    endif
+    if (! isempty (th0))
+      opts.theta_init = th0(1:end-1);
+      [th, Pk, ik] = call_gateway (fname, df, opts);
+      if (ik.loss < info.loss)
+        [theta, P, info] = deal (th, Pk, ik);
+      endif
+    endif
   endif
   den = [1 theta(1:np).'];
   num = theta(np+(1:nz+1)).';
@@ -380,7 +398,10 @@ function [M, info] = tf_model (fname, d, rest)
   endif
   M = idtf (num, den, "IODelay", td);
   perm = [np + (1:nz+1), 1:np];
-  M = set_cov (M, P(perm, perm), theta(1:np+nz+1));
+  if (estimate)
+    perm(end+1) = np + nz + 2;          # getpvec ends with the IODelay
+  endif
+  M = set_cov (M, P(perm, perm), theta(perm));
   e = df.y - info.simulated;
   M = set_report (M, fname, d, e, numel (theta), info.iterations,
                   info.converged, info.reason, rows (d.y));
@@ -418,7 +439,8 @@ function [starts, tdmax] = srivc_delay_start (fname, d, np, nz, td0, o,
               "tolpar", 1e-5, "tolfun", 1e-8,
               "stepmax", max (tdmax / (numtd - 1), h),
               "stepreduction", 0.5, "theta0", [], "fixed", [],
-              "fixed_values", [], "search_only", false);
+              "fixed_values", [], "search_only", false,
+              "tdmax_auto", ! tdmax_given);
   starts = {};
   td0s = {[]};
   if (! isempty (td0))
@@ -426,7 +448,111 @@ function [starts, tdmax] = srivc_delay_start (fname, d, np, nz, td0, o,
   endif
   for k = 1:numel (td0s)
     s.td0 = td0s{k};
-    [num, den, td] = contsid_tfsrivc (fname, d, np, nz, s);
+    [num, den, td, ~, si] = contsid_tfsrivc (fname, d, np, nz, s);
     starts{end+1} = [den(2:end), num, td].';
+    tdmax = max (tdmax, si.tdmax);
   endfor
+endfunction
+
+## oe (data, [nb nf (0)][, opt]) and tfest (data, np, nz[, iodelay][, opt])
+## on an idfrd or continuous-time frequency-domain iddata: the orders and
+## options read here, the fit (SRIVC start, then output error on the
+## frequency response) by contsid_freq, which receives them as one struct.
+function [M, info] = freq_model (fname, args)
+  if (numel (args) < 2)
+    error ([fname ":badInput"], "%s: expected data and orders", fname);
+  endif
+  rest = args(2:end);
+  td = 0;
+  if (strcmp (fname, "oe"))
+    nn = rest{1};
+    if (! isorder (nn) || ! any (numel (nn) == [2 3]))
+      error ([fname ":badInput"], ["%s: on continuous-time frequency data ", ...
+             "the orders are [nb nf] (or [nb nf 0])"], fname);
+    endif
+    if (numel (nn) == 3 && nn(3) != 0)
+      error ([fname ":notSupported"], ["%s: a delay nk on continuous-time ", ...
+             "frequency data is not supported"], fname);
+    endif
+    nb = nn(1); na = nn(2);
+    rest = rest(2:end);
+  else
+    if (numel (rest) < 2 || ! isorder (rest{1}) || ! isscalar (rest{1})
+        || ! isorder (rest{2}) || ! isscalar (rest{2}))
+      error ([fname ":badInput"], "%s: expected np and nz (integers)", fname);
+    endif
+    na = rest{1}; nb = rest{2} + 1;
+    rest = rest(3:end);
+    if (! isempty (rest) && isnumeric (rest{1}))
+      td = rest{1};
+      rest = rest(2:end);
+      if (! isreal (td) || ! isscalar (td) || ! isfinite (td) || td < 0)
+        error ([fname ":badInput"], "%s: IODelay must be a real scalar >= 0",
+               fname);
+      endif
+    endif
+  endif
+  if (na < 1 || nb < 1 || nb > na + 1)
+    error ([fname ":badInput"], "%s: need nf >= 1 and 1 <= nb <= nf + 1",
+           fname);
+  endif
+  o = read_options (fname, rest,
+                    struct ("focus", "simulation", "maxiter", 100,
+                            "tol", 1e-8, "lambda", [], "overpar", "off",
+                            "tdmax", []));
+  check_unused (fname, o, {"lambda", "overpar", "tdmax"});
+  spec = struct ("na", na, "nb", nb, "delay", td, "band", o.band,
+                 "maxiter", max (o.maxiter, 1), "tol", o.tol);
+  [M, info] = contsid_freq (fname, {args{1}, spec});
+endfunction
+
+## tfcoe's OverPar 'on': one more start [f; b; td] from an over-parametrised
+## fit.  The output error of the structure with one pole and one zero more
+## (np + 1, nz + 1; its delay searched as tfcoe's) is fitted first: the
+## output-error loss of an over-parametrised model has fewer non-global
+## minima (Soderstrom and Stoica, "Some properties of the output error
+## method", Automatica 18(1), 1982), and the extra pole-zero pair can take
+## up a delay error (a first-order Pade term).  Its frequency response over
+## the band of the record (2 pi / T to the Nyquist frequency) is then
+## reduced to the asked orders, the delay with them, by tffcoe's
+## frequency-domain output error (contsid_freq), which gives the start.
+function th = overpar_start (fname, d, np, nz, td, o)
+  args = {np + 1, nz + 1};
+  if (! isempty (td))
+    args{end+1} = td;
+  endif
+  args = [args, {"MaxIter", o.maxiter, "Tol", o.tol, "TdMax", o.tdmax}];
+  if (! isempty (o.lambda))
+    args = [args, {"Lambda", o.lambda}];
+  endif
+  if (! isempty (o.band))
+    args = [args, {"Focus", o.band}];
+  endif
+  ## only a start: its own (ill-conditioned, a near pole-zero
+  ## cancellation) non-convergence is no news for the user
+  state = warning ("off", [fname ":notConverged"]);
+  unwind_protect
+    Mo = tf_model (fname, d, args);
+  unwind_protect_cleanup
+    warning (state);
+  end_unwind_protect
+  [num, den] = tfdata (Mo, "vector");
+  h = median (diff (d.t));
+  T = d.t(end) - d.t(1);
+  w = logspace (log10 (2 * pi / T), log10 (pi / h), 200).';
+  G = polyval (num, 1i * w) ./ polyval (den, 1i * w) ...
+      .* exp (-1i * w * get (Mo, "IODelay"));
+  fr = idfrd (G, w, "Ts", 0);
+  if (nz < np)
+    Mr = contsid_freq ("tffcoe", {fr, np, nz, "TdMax", o.tdmax});
+  else
+    Mr = contsid_freq ("tffcoe", {fr, np, nz, get(Mo, "IODelay"),
+                                  "FixTd", "on"});
+  endif
+  [num, den] = tfdata (Mr, "vector");
+  num = num(end-nz:end);
+  th = [den(2:end), num, get(Mr, "IODelay")].';
+  if (any (real (roots (den)) >= 0))
+    th = [];                            # no stable start: not used
+  endif
 endfunction

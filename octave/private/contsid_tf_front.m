@@ -156,6 +156,8 @@ function M = contsid_tf_front (fname, args)
     error ([fname ":badInput"], "%s: FixTd 'on' needs the delay (IODelay)",
            fname);
   endif
+  ## a default TdMax is extended while the loss is smallest at its end
+  o.tdmax_auto = ! any (strcmpi (rest(1:2:end), "tdmax"));
   if (! isempty (td0) && ! o.fixtd && (td0 < o.tdmin || td0 > o.tdmax))
     if (any (strcmpi (rest(1:2:end), "tdmax")))
       error ([fname ":badOption"], ["%s: the start delay %g is outside ", ...
@@ -176,11 +178,14 @@ function M = contsid_tf_front (fname, args)
 
   [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o);
 
-  ## The idtf: parameters [b; f] (SITB order), covariance mapped from
-  ## [f; b (; td)].
+  ## The idtf: parameters [b; f; td] (SITB order), covariance mapped from
+  ## [f; b (; td)] (a fixed delay: variance 0).
   M = idtf (num, den, "IODelay", td);
   nth = np + nz + 1;
   perm = [np + (1:nz+1), 1:np];
+  if (info.delay_estimated)
+    perm(end+1) = nth + 1;
+  endif
   C = P(perm, perm);
   if (all (isfinite (C(:))))
     M = setcov (M, C);

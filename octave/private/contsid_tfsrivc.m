@@ -12,7 +12,9 @@
 ## @code{stepmax}, @code{stepreduction}, @code{theta0} ([] or [f; b]),
 ## @code{fixed}, @code{fixed_values} ([] or a mask over [f; b] and the
 ## values of the fixed entries, e.g. a pole at 0),
-## @code{search_only} (the grid only: tfsrivc_init).
+## @code{search_only} (the grid only: tfsrivc_init), and optionally
+## @code{tdmax_auto} (true: tdmax is a default, extended while the grid's
+## minimum lies at its upper end; @var{info}.tdmax the range used).
 ##
 ## Delay: the loss V(td) (simulation-error variance of the SRIVC model at
 ## td) is evaluated on a grid of @code{numtd} delays in [tdmin, tdmax];
@@ -61,6 +63,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
   else
     tdgrid = linspace (o.tdmin, o.tdmax, o.numtd);
   endif
+  auto_tdmax = isfield (o, "tdmax_auto") && o.tdmax_auto;
 
   ## The grid search (tfsrivc_init, or tfsrivc without a start delay).
   if (! isempty (tdgrid))
@@ -77,6 +80,35 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
         endif
       end_try_catch
     endfor
+    ## A default TdMax is a guess (from the cross-correlation, which a
+    ## step input makes uninformative): while the grid's minimum lies at
+    ## its upper end, the range is extended by the same grid step, to at
+    ## most twice its length per round and half the record overall.
+    [~, i] = min (loss);
+    step = tdgrid(end) - tdgrid(max (end - 1, 1));
+    while (auto_tdmax && i == numel (tdgrid) && step > 0 && o.tdmax < T / 2)
+      hi = min (2 * o.tdmax - o.tdmin, T / 2);
+      more = tdgrid(end) + step * (1:floor ((hi - tdgrid(end)) / step));
+      if (isempty (more))
+        more = hi;
+      endif
+      for td_k = more
+        tdgrid(end+1) = td_k;
+        loss(end+1) = Inf;
+        fits{end+1} = [];
+        try
+          fits{end} = fit (td_k, o.theta0);
+          loss(end) = fits{end}.loss;
+        catch err
+          if (! any (strcmp (err.identifier, {[fname ":numericalFailure"],
+                                               [fname ":notConverged"]})))
+            rethrow (err);
+          endif
+        end_try_catch
+      endfor
+      o.tdmax = tdgrid(end);
+      [~, i] = min (loss);
+    endwhile
     info.grid = tdgrid;
     info.grid_loss = loss;
     if (all (! isfinite (loss)))
@@ -84,7 +116,6 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
              "%s: SRIVC failed at every delay of the grid [%g, %g]", fname,
              o.tdmin, o.tdmax);
     endif
-    [~, i] = min (loss);
     cur = fits{i};
     info.reason = sprintf ("grid search over %d delays", numel (tdgrid));
   else
@@ -154,6 +185,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
   endif
 
   td = cur.td;
+  info.tdmax = o.tdmax;
   nth = np + nz + 1;
   ## Covariance sigma^2 (J' J)^-1 from the output sensitivities.
   [J, idx] = theta_jacobian (cur);

@@ -25,8 +25,8 @@ function test_pem_monte_carlo ()
     ## searches a delay, as CONTSID documents, and a delay bounded below by
     ## 0 would bias the other estimates of a delay-free system)
     M = tfcoe (iddata (x + 0.3 * randn (N, 1), u, Ts), 2, 1, "TdMax", 0);
-    [p, sd] = getpvec (M);
-    thc(r, :) = p; sdc(r, :) = sd;
+    [p, sd] = getpvec (M);              # [b1 b0 f1 f2 IODelay (0, fixed)]
+    thc(r, :) = p(1:4); sdc(r, :) = sd(1:4);
     Md = oe (iddata (xd + 0.3 * randn (N, 1), u, 1), [2 2 1]);
     [p, sd] = getpvec (Md);
     thd(r, :) = p(2:end); sdd(r, :) = sd(2:end);

@@ -46,7 +46,13 @@ function txt = model_text (P, with_sd)
   if (! strcmp (P.kind, "idfrd"))
     L{end+1} = "";
     L{end+1} = "Parameterization:";
-    L{end+1} = sprintf ("   Number of free coefficients: %d", numel (p));
+    nfree = numel (p);
+    if (strcmp (P.kind, "idtf"))
+      ## the IODelay entries of getpvec are free only when estimated
+      nd = numel (P.par.IODelay);
+      nfree -= sum (! (sd(end-nd+1:end) > 0));
+    endif
+    L{end+1} = sprintf ("   Number of free coefficients: %d", nfree);
     L{end+1} = ["   Use ""polydata"", ""getpvec"", ""getcov"" for ", ...
                 "parameters and their uncertainties."];
   endif
@@ -280,7 +286,10 @@ function L = tf_lines (P, sd, ct)
     L{end+1} = ["  ", blanks(floor ((w - numel (num)) / 2)), num];
     dl = ["  ", repmat("-", 1, w)];
     if (s.IODelay(k) != 0)
-      if (ct)
+      sdd = sd(offs_f(end) + k);
+      if (ct && sdd > 0)
+        dl = [dl, sprintf("  exp(-%.4g (+/- %.4g)*s)", s.IODelay(k), sdd)];
+      elseif (ct)
         dl = [dl, sprintf("  exp(-%.4g*s)", s.IODelay(k))];
       else
         dl = [dl, sprintf("  z^-%d", s.IODelay(k))];

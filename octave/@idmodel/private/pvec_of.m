@@ -1,8 +1,8 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{p}, @var{names}] =} pvec_of (@var{M})
 ## The parameter vector of @var{M} in the SITB order (idpoly: A, B, C, D,
-## F without the leading 1s; idtf: numerators then denominators without
-## the leading 1; idproc: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz of its type;
+## F without the leading 1s; idtf: numerators, denominators without
+## the leading 1, then the IODelay entries; idproc: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz of its type;
 ## idss: A, B, C, D column-wise) and the parameters' names.
 ## @end deftypefn
 
@@ -27,6 +27,12 @@ function [p, names] = pvec_of (M)
       endfor
       for k = 1:numel (s.Denominator)
         add ("f", s.Denominator{k}(2:end), suffix (k, numel (s.Numerator)));
+      endfor
+      ## the I/O delays are parameters of an idtf in the SITB (fixed
+      ## unless estimated): nparams (idtf (1, [1 2])) is 3
+      for k = 1:numel (s.IODelay)
+        p(end+1, 1) = s.IODelay(k);
+        names{end+1, 1} = sprintf ("iodelay%s", suffix (k, numel (s.IODelay)));
       endfor
     case "idproc"
       fn = proc_names (s.Type);

@@ -26,6 +26,14 @@ function P = pvec_set (P, p)
       for i = 1:numel (s.Denominator)
         s.Denominator{i}(2:end) = take (numel (s.Denominator{i}) - 1);
       endfor
+      d = take (numel (s.IODelay));
+      if (any (! isfinite (d)) || any (d < 0)
+          || (P.Ts > 0 && any (d != round (d))))
+        error ("idtf:badInput", ["idtf: the IODelay entries of the ", ...
+               "parameter vector must be finite and >= 0 (whole samples ", ...
+               "in discrete time)"]);
+      endif
+      s.IODelay(:) = d;
     case "idproc"
       names = proc_names (s.Type);
       for i = 1:numel (names)

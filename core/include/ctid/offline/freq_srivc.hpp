@@ -20,10 +20,15 @@
 // [td_min, td_max] refined by golden section on each side of each of
 // the three best local minima of the grid, the lowest refined loss kept (the
 // loss is separable in td, Chen, Zhuan, Garnier & Gilson, Automatica 2018).
-// Output error (TFFCOE): Levenberg-Marquardt on sum |Y - G U|^2 over [a b td]
-// from the SRIVC estimate. Covariance (both): s^2 (J^T J)^-1 with J the
-// Jacobian of the stacked model output and s^2 = sum |Y - G U|^2 / (2K - np),
-// the asymptotic covariance of SRIVC (eq. 2.13) and of the output-error fit.
+// Output error (TFFCOE; oe and tfest on frequency data): the weighted
+// nonlinear least squares sum_k |Y_k - G(j w_k) U_k|^2 over [a b (td)]
+// (the frequency-domain form of the output-error criterion, thesis eq.
+// 1.16 with H = 1, by Parseval), minimised from the SRIVC estimate by the
+// Levenberg-Marquardt iteration of output_error.hpp (levenberg_marquardt)
+// on the stacked real and imaginary parts. Covariance (both): s^2 (J^T J)^-1
+// with J the Jacobian of the stacked model output and s^2 = sum |Y - G U|^2 /
+// (2K - np), the asymptotic covariance of SRIVC (eq. 2.13) and of the
+// output-error fit.
 #pragma once
 
 #include <Eigen/Dense>
@@ -37,6 +42,7 @@
 #include "ctid/base/stability.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/offline/output_error.hpp"
 
 namespace ctid {
 
@@ -259,6 +265,38 @@ Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings, S td,
   return Status::Ok();
 }
 
+// The output-error model of the frequency data for levenberg_marquardt
+// (output_error.hpp): y_hat = [Re G U; Im G U] over [a' b' (td')].
+template <typename S>
+class FreqOeModel {
+ public:
+  FreqOeModel(const Scaled<S>& p, bool estimate_delay, S td)
+      : p_(p), estimate_delay_(estimate_delay), td_(td), hurwitz_(p.na) {}
+  bool stable(const Vector<S>& x) {
+    return x.allFinite() && hurwitz_.is_stable(x.head(p_.na));
+  }
+  void evaluate(const Vector<S>& x, Vector<S>& yhat, Matrix<S>* J) {
+    const int nm = p_.na + p_.nb;
+    const Vector<S> theta = x.head(nm);
+    const S td = estimate_delay_ ? x(nm) / p_.sigma : td_;
+    Vector<S> r;
+    residual<S>(p_, theta, td, J != nullptr, r, J ? &J_ : nullptr);
+    yhat.resize(2 * p_.K);
+    for (Eigen::Index k = 0; k < p_.K; ++k) {
+      yhat(k) = p_.y[k].real() - r(k);
+      yhat(p_.K + k) = p_.y[k].imag() - r(p_.K + k);
+    }
+    if (J != nullptr) *J = J_.leftCols(x.size());
+  }
+
+ private:
+  const Scaled<S>& p_;
+  bool estimate_delay_;
+  S td_;
+  HurwitzTest<S> hurwitz_;
+  Matrix<S> J_;
+};
+
 }  // namespace freq_detail
 
 template <typename S>
@@ -441,66 +479,37 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
       converged ? "SRIVC converged" : "SRIVC: maximum number of iterations";
 
   if (settings.output_error) {
-    // Levenberg-Marquardt on [a' b' (td')].
+    // Output error on [a' b' (td')], td' = sigma td: the Levenberg-Marquardt
+    // minimiser of the time-domain output error (output_error.hpp) on the
+    // stacked real and imaginary parts of Y - G U.
     const int q = settings.estimate_delay ? n + m + 1 : n + m;
     Vector<S> x(q);
     x.head(n + m) = theta;
     if (settings.estimate_delay) x(n + m) = td * p.sigma;
-    Vector<S> r;
-    Matrix<S> J;
-    S f = residual(p, theta, td, true, r, &J);
-    S mu = S(1e-3);
-    bool done = false;
-    int it = 0;
-    for (; it < settings.max_iterations && !done; ++it) {
-      const Matrix<S> Jq = J.leftCols(q);
-      const Matrix<S> H = Jq.transpose() * Jq;
-      const Vector<S> gvec = Jq.transpose() * r;
-      bool accepted = false;
-      for (int tries = 0; tries < 30 && !accepted; ++tries) {
-        Matrix<S> Hm = H;
-        Hm.diagonal() += mu * H.diagonal().cwiseMax(S(1e-12));
-        const Vector<S> dx = Hm.ldlt().solve(gvec);
-        Vector<S> xn = x + dx;
-        if (settings.estimate_delay) {
-          xn(n + m) = std::min(std::max(xn(n + m), settings.td_min * p.sigma),
-                               settings.td_max * p.sigma);
-        }
-        Vector<S> th = xn.head(n + m);
-        if (stabilise(n, th)) {
-          mu *= 10;
-          continue;
-        }
-        Vector<S> rn;
-        Matrix<S> Jn;
-        const S fn =
-            residual(p, th, settings.estimate_delay ? xn(n + m) / p.sigma : td,
-                     true, rn, &Jn);
-        if (fn < f) {
-          const S rel = (xn - x).norm() / std::max(xn.norm(), S(1e-300));
-          const S drop = (f - fn) / std::max(f, S(1e-300));
-          x = xn;
-          r = rn;
-          J = Jn;
-          f = fn;
-          mu = std::max(mu / 10, S(1e-12));
-          accepted = true;
-          if (rel < settings.tolerance || drop < settings.tolerance * 1e-3) {
-            done = true;
-          }
-        } else {
-          mu *= 10;
-        }
-      }
-      if (!accepted) done = true;  // no decrease: a (local) minimum
+    FreqOeModel<S> model(p, settings.estimate_delay, td);
+    Vector<S> target(2 * K);
+    for (Eigen::Index k = 0; k < K; ++k) {
+      target(k) = p.y[k].real();
+      target(K + k) = p.y[k].imag();
     }
+    OeSettings<S> lm_settings;
+    lm_settings.max_iterations = settings.max_iterations;
+    lm_settings.tolerance = settings.tolerance;
+    LmBound<S> bound;
+    if (settings.estimate_delay) {
+      bound.index = n + m;
+      bound.lower = settings.td_min * p.sigma;
+      bound.upper = settings.td_max * p.sigma;
+    }
+    LmOutcome<S> lm;
+    status = levenberg_marquardt<S>(model, target, lm_settings, bound, &x, &lm);
+    if (!status.ok()) return status;
     theta = x.head(n + m);
     if (settings.estimate_delay) td = x(n + m) / p.sigma;
-    iterations = it;
-    converged = done;
-    reason = done ? "output error minimised (Levenberg-Marquardt)"
-                  : "Levenberg-Marquardt: maximum number of iterations";
-    cost = f;
+    iterations = lm.iterations;
+    converged = lm.converged;
+    reason = "output error (Levenberg-Marquardt): " + lm.reason;
+    cost = lm.cost;
   }
 
   // Covariance in scaled units, mapped back.

@@ -47,10 +47,10 @@
 #include <string>
 #include <vector>
 
-#include "ctid/offline/refined_iv.hpp"
 #include "ctid/base/stability.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/offline/refined_iv.hpp"
 
 namespace ctid {
 
@@ -486,6 +486,182 @@ Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
 
 }  // namespace oe_detail
 
+// A box bound on one parameter (the delay), kept by projection.
+template <typename S>
+struct LmBound {
+  int index = -1;  // -1: no bound
+  S lower = 0, upper = 0;
+};
+
+template <typename S>
+struct LmOutcome {
+  S cost = 0;  // ||y - y_hat||^2 at the result
+  int iterations = 0;
+  bool converged = false;
+  std::string reason;
+  S damping = 0;
+  S gradient_norm = 0;  // ||Jn^T e|| / ||e|| (equilibrated Jacobian)
+  Vector<S> yhat;
+  // (J^T J)^-1 in the model's parameters (NaN when J is rank deficient).
+  Matrix<S> inverse_information;
+};
+
+// Levenberg-Marquardt minimisation of ||y - y_hat(theta)||^2, shared by the
+// time-domain output-error fit above and the frequency-domain one
+// (freq_srivc.hpp): Marquardt's scaled damping on the equilibrated
+// Jacobian, each damped step solved by QR of [J; sqrt(mu) I]; a trial
+// point that Model::stable refuses, or with a larger loss, raises the
+// damping (bounded steps, every iterate stable); an optional bound kept by
+// projection. Model provides bool stable(theta) and
+// evaluate(theta, y_hat, Matrix* J) (J = d y_hat / d theta, or null).
+// Stops when the scaled gradient vanishes, the residual is at rounding
+// level, the relative step and loss decrease fall below the tolerance, or
+// no damped step lowers the loss (converged when the predicted decrease is
+// negligible); MaxIter reached: not converged, the last iterate kept.
+template <typename S, typename Model>
+Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
+                           const OeSettings<S>& settings,
+                           const LmBound<S>& bound, Vector<S>* theta_io,
+                           LmOutcome<S>* out) {
+  Vector<S>& theta = *theta_io;
+  const Eigen::Index np = theta.size();
+  const int td_index = bound.index;
+  Vector<S> yhat, trial_yhat;
+  Matrix<S> J;
+  model.evaluate(theta, yhat, &J);
+  Vector<S> e = y - yhat;
+  S cost = e.squaredNorm();
+  if (!std::isfinite(cost))
+    return numerical_failure("the start model's output is not finite");
+  // The residual of an exact model is rounding: ||e|| <= 1e-12 ||y||
+  // (the simulation's relative accuracy is ~1e-14 per sample) ends the
+  // iteration, as no step can lower it reliably.
+  const S exact_floor = S(1e-24) * y.squaredNorm();
+  S mu = settings.initial_damping;
+  int iter = 0;
+  bool converged = false;
+  std::string reason;
+  Vector<S> scale(np), gn(np);
+  auto equilibrate = [&]() {
+    scale = J.colwise().norm().transpose();
+    for (Eigen::Index i = 0; i < np; ++i)
+      if (!(scale(i) > 0)) scale(i) = 1;
+  };
+  for (;;) {
+    equilibrate();
+    const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
+    gn = Jn.transpose() * e;
+    const S yscale = std::max(cost, std::numeric_limits<S>::min());
+    if (gn.norm() <= settings.gradient_tolerance * std::sqrt(yscale) +
+                         std::numeric_limits<S>::min()) {
+      converged = true;
+      reason = "the gradient vanished";
+      break;
+    }
+    if (cost <= exact_floor) {
+      converged = true;
+      reason = "exact fit (the residual is at rounding level)";
+      break;
+    }
+    if (iter >= settings.max_iterations) {
+      reason =
+          "MaxIter (" + std::to_string(settings.max_iterations) + ") reached";
+      break;
+    }
+    ++iter;
+    // R of the equilibrated Jacobian and Q^T e, then damped steps.
+    const Eigen::HouseholderQR<Matrix<S>> qr(Jn);
+    const Matrix<S> R =
+        qr.matrixQR().topRows(np).template triangularView<Eigen::Upper>();
+    // Q^T e = R^-T Jn^T e (cheaper than applying Q to e; equal while R is
+    // regular, else Q is applied).
+    Vector<S> qte =
+        R.transpose().template triangularView<Eigen::Lower>().solve(gn);
+    if (!qte.allFinite()) {
+      qte = (qr.householderQ().transpose() * e).head(np);
+    }
+    bool accepted = false;
+    S new_cost = cost;
+    Vector<S> step, trial;
+    for (int attempt = 0; attempt < 40; ++attempt) {
+      Matrix<S> A(2 * np, np);
+      A.topRows(np) = R;
+      A.bottomRows(np) = std::sqrt(mu) * Matrix<S>::Identity(np, np);
+      Vector<S> rhs = Vector<S>::Zero(2 * np);
+      rhs.head(np) = qte;
+      const Vector<S> dn = A.householderQr().solve(rhs);
+      step = dn.cwiseQuotient(scale);
+      trial = theta + step;
+      if (td_index >= 0) {
+        trial(td_index) = std::clamp(trial(td_index), bound.lower, bound.upper);
+        step(td_index) = trial(td_index) - theta(td_index);
+      }
+      if (model.stable(trial)) {
+        model.evaluate(trial, trial_yhat, nullptr);
+        new_cost = (y - trial_yhat).squaredNorm();
+        if (std::isfinite(new_cost) && new_cost < cost) {
+          accepted = true;
+          break;
+        }
+      }
+      mu *= 10;
+      if (mu > S(1e16)) break;
+    }
+    if (!accepted) {
+      // No damped step lowers the loss: a (local) minimum to the working
+      // precision when the predicted decrease is negligible.
+      const S predicted = qte.squaredNorm();
+      if (predicted <= settings.tolerance * cost || cost <= 4 * exact_floor) {
+        converged = true;
+        reason = "no further decrease (a local minimum)";
+      } else {
+        reason = "no step lowers the loss while keeping F stable";
+      }
+      break;
+    }
+    const S rel_step = step.cwiseProduct(scale).norm() /
+                       (theta.cwiseProduct(scale).norm() + S(1e-300));
+    const S rel_decrease = (cost - new_cost) / cost;
+    theta = trial;
+    cost = new_cost;
+    mu = std::max(mu / 10, S(1e-12));
+    model.evaluate(theta, yhat, &J);
+    e = y - yhat;
+    if (rel_step <= settings.tolerance && rel_decrease <= settings.tolerance) {
+      converged = true;
+      reason = "the relative step and loss decrease fell below the tolerance";
+      equilibrate();
+      gn = (J * scale.cwiseInverse().asDiagonal()).transpose() * e;
+      break;
+    }
+  }
+  out->cost = cost;
+  out->iterations = iter;
+  out->converged = converged;
+  out->damping = mu;
+  out->gradient_norm = gn.norm() / std::sqrt(std::max(cost, S(1e-300)));
+  out->yhat = yhat;
+  // (J^T J)^-1 from the column-pivoted QR of the equilibrated Jacobian.
+  const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
+  const Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jn);
+  out->inverse_information =
+      Matrix<S>::Constant(np, np, std::numeric_limits<S>::quiet_NaN());
+  if (qr.rank() == np) {
+    const Matrix<S> Rinv = qr.matrixR()
+                               .topLeftCorner(np, np)
+                               .template triangularView<Eigen::Upper>()
+                               .solve(Matrix<S>::Identity(np, np));
+    const Matrix<S> Cn = qr.colsPermutation() * (Rinv * Rinv.transpose()) *
+                         qr.colsPermutation().transpose();
+    out->inverse_information = scale.cwiseInverse().asDiagonal() * Cn *
+                               scale.cwiseInverse().asDiagonal();
+  } else {
+    reason += "; the Jacobian is rank deficient (no covariance)";
+  }
+  out->reason = reason;
+  return Status::Ok();
+}
+
 // The output-error estimate by Levenberg-Marquardt from the SRIVC/ARX (or
 // given) start. Returns kNotConverged with the last (stable) iterate when
 // MaxIter is reached or no step lowers the loss before convergence.
@@ -539,146 +715,29 @@ Status output_error(const OeStructure& s, const OeSettings<S>& settings,
   Vector<S> theta = theta0.cwiseQuotient(factors);
 
   const Eigen::Map<const Vector<S>> y(data.y, n);
-  Vector<S> yhat, trial_yhat;
-  Matrix<S> J;
-  model.evaluate(theta, yhat, &J);
-  Vector<S> e = y - yhat;
-  S cost = e.squaredNorm();
-  if (!std::isfinite(cost))
-    return numerical_failure("the start model's simulation is not finite");
-  // The residual of an exact model is rounding: ||e|| <= 1e-12 ||y||
-  // (the simulation's relative accuracy is ~1e-14 per sample) ends the
-  // iteration, as no step can lower it reliably.
-  const S exact_floor = S(1e-24) * y.squaredNorm();
-  S mu = settings.initial_damping;
-  int iter = 0;
-  bool converged = false;
-  std::string reason;
-  Vector<S> scale(np), gn(np);
-  for (;;) {
-    scale = J.colwise().norm().transpose();
-    for (int i = 0; i < np; ++i)
-      if (!(scale(i) > 0)) scale(i) = 1;
-    const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
-    gn = Jn.transpose() * e;
-    const S yscale = std::max(cost, std::numeric_limits<S>::min());
-    if (gn.norm() <= settings.gradient_tolerance * std::sqrt(yscale) +
-                         std::numeric_limits<S>::min()) {
-      converged = true;
-      reason = "the gradient vanished";
-      break;
-    }
-    if (cost <= exact_floor) {
-      converged = true;
-      reason = "exact fit (the residual is at rounding level)";
-      break;
-    }
-    if (iter >= settings.max_iterations) {
-      reason =
-          "MaxIter (" + std::to_string(settings.max_iterations) + ") reached";
-      break;
-    }
-    ++iter;
-    // R of the equilibrated Jacobian and Q^T e, then damped steps.
-    const Eigen::HouseholderQR<Matrix<S>> qr(Jn);
-    const Matrix<S> R =
-        qr.matrixQR().topRows(np).template triangularView<Eigen::Upper>();
-    // Q^T e = R^-T Jn^T e (cheaper than applying Q to e; equal while R is
-    // regular, else Q is applied).
-    Vector<S> qte =
-        R.transpose().template triangularView<Eigen::Lower>().solve(gn);
-    if (!qte.allFinite()) {
-      qte = (qr.householderQ().transpose() * e).head(np);
-    }
-    bool accepted = false;
-    S new_cost = cost;
-    Vector<S> step, trial;
-    for (int attempt = 0; attempt < 40; ++attempt) {
-      Matrix<S> A(2 * np, np);
-      A.topRows(np) = R;
-      A.bottomRows(np) = std::sqrt(mu) * Matrix<S>::Identity(np, np);
-      Vector<S> rhs = Vector<S>::Zero(2 * np);
-      rhs.head(np) = qte;
-      const Vector<S> dn = A.householderQr().solve(rhs);
-      step = dn.cwiseQuotient(scale);
-      trial = theta + step;
-      if (td_index >= 0) {
-        // Projection on the delay's bounds.
-        trial(td_index) =
-            std::clamp(trial(td_index), S(0), static_cast<S>(s.delay_max));
-        step(td_index) = trial(td_index) - theta(td_index);
-      }
-      if (model.stable(trial)) {
-        model.evaluate(trial, trial_yhat, nullptr);
-        new_cost = (y - trial_yhat).squaredNorm();
-        if (std::isfinite(new_cost) && new_cost < cost) {
-          accepted = true;
-          break;
-        }
-      }
-      mu *= 10;
-      if (mu > S(1e16)) break;
-    }
-    if (!accepted) {
-      // No damped step lowers the loss: a (local) minimum to the working
-      // precision when the predicted decrease is negligible.
-      const S predicted = qte.squaredNorm();
-      if (predicted <= settings.tolerance * cost || cost <= 4 * exact_floor) {
-        converged = true;
-        reason = "no further decrease (a local minimum)";
-      } else {
-        reason = "no step lowers the loss while keeping F stable";
-      }
-      break;
-    }
-    const S rel_step = step.cwiseProduct(scale).norm() /
-                       (theta.cwiseProduct(scale).norm() + S(1e-300));
-    const S rel_decrease = (cost - new_cost) / cost;
-    theta = trial;
-    cost = new_cost;
-    mu = std::max(mu / 10, S(1e-12));
-    model.evaluate(theta, yhat, &J);
-    e = y - yhat;
-    if (rel_step <= settings.tolerance && rel_decrease <= settings.tolerance) {
-      converged = true;
-      reason = "the relative step and loss decrease fell below the tolerance";
-      scale = J.colwise().norm().transpose();
-      for (int i = 0; i < np; ++i)
-        if (!(scale(i) > 0)) scale(i) = 1;
-      gn = (J * scale.cwiseInverse().asDiagonal()).transpose() * e;
-      break;
-    }
+  LmBound<S> bound;
+  if (td_index >= 0) {
+    bound.index = td_index;
+    bound.lower = 0;
+    bound.upper = static_cast<S>(s.delay_max);
   }
-
+  LmOutcome<S> lm;
+  status = levenberg_marquardt<S>(model, y, settings, bound, &theta, &lm);
+  if (!status.ok()) return status;
   result->theta = theta.cwiseProduct(factors);
-  result->loss = cost / static_cast<S>(n);
-  result->noise_variance = n > np ? cost / static_cast<S>(n - np)
+  result->loss = lm.cost / static_cast<S>(n);
+  result->noise_variance = n > np ? lm.cost / static_cast<S>(n - np)
                                   : std::numeric_limits<S>::quiet_NaN();
-  result->iterations = iter;
-  result->converged = converged;
-  result->reason = reason;
-  result->damping = mu;
-  result->gradient_norm = gn.norm() / std::sqrt(std::max(cost, S(1e-300)));
-  result->simulated = yhat;
-  // Covariance s^2 (J^T J)^-1 (equilibrated, then mapped to theta).
-  const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
-  const Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jn);
-  Matrix<S> cov =
-      Matrix<S>::Constant(np, np, std::numeric_limits<S>::quiet_NaN());
-  if (qr.rank() == np) {
-    const Matrix<S> Rinv = qr.matrixR()
-                               .topLeftCorner(np, np)
-                               .template triangularView<Eigen::Upper>()
-                               .solve(Matrix<S>::Identity(np, np));
-    const Matrix<S> Cn = qr.colsPermutation() * (Rinv * Rinv.transpose()) *
-                         qr.colsPermutation().transpose();
-    const Vector<S> d = factors.cwiseQuotient(scale);
-    cov = result->noise_variance * d.asDiagonal() * Cn * d.asDiagonal();
-  } else {
-    result->reason += "; the Jacobian is rank deficient (no covariance)";
-  }
-  result->covariance = cov;
-  if (!converged) return Status(ErrorCode::kNotConverged, result->reason);
+  result->iterations = lm.iterations;
+  result->converged = lm.converged;
+  result->reason = lm.reason;
+  result->damping = lm.damping;
+  result->gradient_norm = lm.gradient_norm;
+  result->simulated = lm.yhat;
+  // Covariance s^2 (J^T J)^-1, mapped from the scaled to the original time.
+  result->covariance = result->noise_variance * factors.asDiagonal() *
+                       lm.inverse_information * factors.asDiagonal();
+  if (!lm.converged) return Status(ErrorCode::kNotConverged, result->reason);
   return Status::Ok();
 }
 
