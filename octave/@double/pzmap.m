@@ -14,7 +14,8 @@
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [p, z] = pzmap (varargin)
+function [p, z, varargout] = pzmap (varargin)
+  contsid_nargchk ("pzmap", nargin, nargout, [2 4], 2);
   if (! any (nargin == [2, 4]))
     error ("pzmap:badInput",
            ["pzmap: with numeric arguments use pzmap (num, den) or ", ...
@@ -43,6 +44,7 @@ endfunction
 %!error id=pzmap:badInput pzmap (1, 2, 3)
 %!error id=pzmap:badInput pzmap (1, [0 0])
 %!error id=pzmap:dimensionMismatch pzmap (eye (2), [1; 1], [1 0 0], 0)
+%!error id=pzmap:badInput [a, b, c] = pzmap (1, [1 1])
 
 %!demo
 %! pzmap ([0 1; -2 -3], [0; 1], [1 1], 0)
