@@ -24,8 +24,17 @@
 ## The number of calls is @env{CTID_FUZZ_CALLS} (default 10000) and the
 ## seed @env{CTID_FUZZ_SEED} (default 12).  @env{CTID_FUZZ_ONLY}, a
 ## comma-separated list of names (functions, classes or gateways), limits
-## the targets to those, for a developer checking new functions.  A summary (calls, accepted,
-## identified errors, failures by kind, slowest calls) is printed.
+## the targets to those, for a developer checking new functions.  A
+## summary (calls, accepted, identified errors, failures by kind, slowest
+## calls) is printed.
+##
+## Completeness: the targets are found by listing the folders (the
+## methods of @@double, the pre-LTI numeric forms, get numeric calls
+## only); every gateway of @file{mex/CMakeLists.txt}'s @code{CTID_GATEWAYS}
+## must be built, and every public function must have well-formed calls in
+## @file{fuzz_public_templates.m} (which the child mutates, 70 % of the
+## calls to a function); the test fails otherwise, so that the lists stay
+## complete as the API grows.
 ## @end deftypefn
 
 function test_fuzz_public ()
