@@ -90,7 +90,9 @@
 ## time_scale, starts, condition, x0, offset, input_offset, simulated,
 ## determined, clipped, clipped_iterations, integrators,
 ## integrator_suspected, loss_history: the simulation loss after each
-## iteration).
+## iteration, missing: the N-by-1 mask of the missing samples, NaN in y
+## or u, which are bridged as in @code{rlssvf} unless @code{"Missing",
+## "error"} is given; simulated then holds the present samples).
 ##
 ## @strong{Example}
 ## @example

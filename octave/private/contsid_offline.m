@@ -184,6 +184,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   M = make_model (fname, e, theta, cov, info, d, nu);
   M = simulation_fit (M, d, np, info.simulated);
+  ## The samples missing from the record (NaN in y or u), bridged by
+  ## contsid_recursive_args: per-sample outputs (info.simulated) hold the
+  ## present samples only.
+  if (isfield (d, "missing"))
+    info.missing = d.missing;
+  else
+    info.missing = false (n, 1);
+  endif
   if (nargout > 1)
     s2 = info.noise_variance;
     vy = var (d.y, 1);
