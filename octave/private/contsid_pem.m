@@ -20,6 +20,7 @@ function [M, info] = contsid_pem (fname, args)
            fname);
   endif
   d = contsid_getdata (fname, args{:});
+  contsid_check_output (fname, d.y);
   rest = args(d.nconsumed+1:end);
   if (size (d.u, 2) < 1)
     error ([fname ":badInput"], "%s: the data need an input", fname);

@@ -13,6 +13,7 @@ function M = contsid_tf_front (fname, args)
            fname);
   endif
   d = contsid_getdata (fname, args{:});
+  contsid_check_output (fname, d.y);
   rest = args(d.nconsumed+1:end);
   if (isempty (rest))
     error ([fname ":badInput"], "%s: expected np, nz or a model", fname);
