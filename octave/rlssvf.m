@@ -90,8 +90,9 @@
 ## trapezoidal rule between the present samples around the gap) and no
 ## update is made at a missing sample. The outputs keep N rows: at a
 ## missing sample thm, yh, pset, kappa and ic repeat the last present
-## sample (the first present one before it), error and innovation are 0,
-## and @code{info.missing} marks the missing samples. A sample with y
+## sample (the first present one before it), error and innovation are 0
+## (innovation also where the estimates were held, see @code{GapSettle}
+## and @code{tsls}), and @code{info.missing} marks the missing samples. A sample with y
 ## present but u missing (or the reverse) is missing as a whole. The
 ## Kalman filter adds Qn once per present sample, so a gap counts as one
 ## step. Not with nk > 0 (shift the input instead). With @qcode{"error"}
@@ -349,6 +350,14 @@ endfunction
 %! ## y is bridged linearly over the 2 s gap: its error enters a few
 %! ## updates, which forgetting factor 1 never forgets (3.5 % here)
 %! assert (thm(end, :), [2.4 4 4], 0.05 * 4);
+
+%!test  # a bridged run leaves no NaN: innovation 0 where no update was made
+%! randn ("state", 2);
+%! ug = sign (randn (400, 1)); yg = filter ([0 0.1], [1 -0.9], ug);
+%! yg(100:105) = NaN;
+%! [~, ~, ~, ig] = rlssvf (yg, ug, 0.1, [1 1 0], "lambda_svf", 3);
+%! assert (all (isfinite (ig.innovation)));
+%! assert (all (ig.innovation(106:150) == 0));   # GapSettle 20/3 s: held
 
 %!test  # after a gap the filters settle GapSettle s (20/lambda_svf) unused
 %! ym = y; ym(1001:1040) = NaN;
