@@ -82,8 +82,7 @@ function [args, nout] = make_call (tgt)
     case "method"
       if (numeric)
         ## A method of the built-in class double (the pre-LTI step/bode/
-        ## pzmap forms): an object anywhere would send the call to another
-        ## class, so its calls stay numeric.
+        ## pzmap forms): its calls stay numeric (see mpool below).
         args = pick (numeric_templates ());
         args = args(1:randi (numel (args)));
         obj = [];
@@ -108,7 +107,11 @@ function [args, nout] = make_call (tgt)
   endswitch
   mpool = pool;
   if (numeric)
-    mpool = pool(! cellfun (@isobject, pool));
+    ## Only double (and char, which ranks below it) arguments keep the
+    ## dispatch on the class double: a cell, single, integer, logical,
+    ## struct or object argument sends the call to the control package's
+    ## function of that name instead of ours.
+    mpool = pool(cellfun (@(v) isa (v, "double") || ischar (v), pool));
   endif
   nmut = randi ([0 3]);                  # 0: a well-formed call
   for m = 1:nmut
