@@ -52,6 +52,7 @@ endfunction
 %!error id=pzmap:dimensionMismatch pzmap (eye (2), [1; 1], [1 0 0], 0)
 %!error id=pzmap:badInput [a, b, c] = pzmap (1, [1 1])
 %!error id=pzmap:badInput pzmap (-1, 1)
+%!error id=pzmap:badInput pzmap (2, NaN)
 
 %!demo
 %! pzmap ([0 1; -2 -3], [0; 1], [1 1], 0)

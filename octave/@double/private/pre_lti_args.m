@@ -24,6 +24,13 @@ function [sys, iu, extra] = pre_lti_args (who, args)
            who, bad);
   endif
   args = cellfun (@double, args, "uniformoutput", false);
+  nsys = 2 + 2 * (numel (args) >= 4);    # num, den or a, b, c, d
+  bad = find (! cellfun (@(x) all (isfinite (x(:))),
+                         args(1:min (nsys, end))), 1);
+  if (! isempty (bad))
+    error ([who, ":badInput"],
+           "%s: argument %d of the numeric form must be finite", who, bad);
+  endif
   iu = [];
   extra = [];
   switch (numel (args))
