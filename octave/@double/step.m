@@ -96,6 +96,8 @@ endfunction
 %!error id=step:badInput step (1, [1 1], [1 NaN])
 %!error id=step:badInput step (1, [1i 1])
 %!error id=step:badInput step (-1, 1, Inf, 0)
+%!error id=step:badInput step ([1 2], [2 1 1], 0)
+%!error id=step:badInput step ([1 2], 1e9)
 %!error id=step:dimensionMismatch step (eye (2), [1; 1], [1 0 0], 0)
 %!error id=step:badInput step (-1, 1, 1, 0, 2)
 %!error id=step:badInput [a, b, c, d] = step (1, [1 1])

@@ -75,6 +75,25 @@ function [sys, iu, extra] = pre_lti_args (who, args)
   if (! isempty (extra) && ! (isvector (extra) && all (isfinite (extra))))
     error ([who, ":badInput"], "%s: the last argument must be a vector", who);
   endif
+  ## The time (final time or instants) or the frequencies: positive, and
+  ## increasing when a vector (the control package rejects the rest
+  ## without an identifier).
+  if (! isempty (extra) && (any (extra(:) < 0) || (isscalar (extra)
+                                                   && extra <= 0)
+                            || any (diff (extra(:)) <= 0)))
+    error ([who, ":badInput"],
+           "%s: the time or frequency argument must be positive and increasing",
+           who);
+  endif
+  ## A step response needs a proper model (the control package's
+  ## conversion of an improper one fails under its own identifier).
+  if (strcmp (who, "step") && isa (sys, "tf"))
+    [n, d] = tfdata (sys, "vector");
+    if (numel (n) - find (n != 0, 1) > numel (d) - find (d != 0, 1))
+      error ([who, ":badInput"],
+             "%s: num/den is improper (more zeros than poles)", who);
+    endif
+  endif
 endfunction
 
 function ok = is_real_matrix (x)
