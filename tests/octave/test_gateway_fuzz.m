@@ -8,7 +8,10 @@
 ## give <name>:badOption), replaces each field by every value of a pool of
 ## wrong types and sizes, and passes non-struct or non-scalar options.
 ## The environment variables CTID_FUZZ_SEED and CTID_FUZZ_CALLS change the
-## seed and the number of random argument lists (see below).
+## seed and the number of random argument lists (see below).  Every gateway
+## of mex/CMakeLists.txt's CTID_GATEWAYS must be built and have a valid
+## call here, or the test fails (the list stays complete as gateways are
+## added).
 function test_gateway_fuzz ()
   root = getenv ("CTID_ROOT");
   priv = fullfile (root, "octave", "private");
