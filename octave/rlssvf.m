@@ -199,6 +199,14 @@ function varargout = rlssvf (varargin)
     contsid_rethrow (err);
   end_try_catch
   varargout = contsid_expand (varargout, p.d);
+  if (nargout > 1 && ! all (isfinite (varargout{2}(:))))
+    ## (e.g. lambda_svf far above the Nyquist frequency pi/Ts: the frozen
+    ## models are meaningless and their output overflows)
+    error ("rlssvf:numericalFailure",
+           ["rlssvf: the frozen-model output yh is not finite from sample ", ...
+            "%d on (is lambda_svf far above pi/Ts?)"],
+           find (! isfinite (varargout{2}), 1));
+  endif
 endfunction
 
 %!shared Ts, u, y, data
@@ -456,6 +464,9 @@ endfunction
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "covariance_guard", "yes")
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "GapSettle", -1)
+%!error id=rlssvf:numericalFailure
+%! [a, b] = rlssvf (sin ((1:200)'), sign (sin ((1:200)' * 0.37)), 0.1, ...
+%!                  [2 1 0], 1e9);
 %!error id=rlssvf:badInput rlssvf ()
 %!error id=rlssvf:badInput rlssvf (data)
 

@@ -98,6 +98,7 @@ endfunction
 %!error id=step:badInput step (-1, 1, Inf, 0)
 %!error id=step:badInput step ([1 2], [2 1 1], 0)
 %!error id=step:badInput step ([1 2], 1e9)
+%!error id=step:notSupported step (1, 0.98, 10)
 %!error id=step:dimensionMismatch step (eye (2), [1; 1], [1 0 0], 0)
 %!error id=step:badInput step (-1, 1, 1, 0, 2)
 %!error id=step:badInput [a, b, c, d] = step (1, [1 1])

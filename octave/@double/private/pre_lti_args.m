@@ -93,6 +93,12 @@ function [sys, iu, extra] = pre_lti_args (who, args)
       error ([who, ":badInput"],
              "%s: num/den is improper (more zeros than poles)", who);
     endif
+    if (numel (d) - find (d != 0, 1) == 0)
+      ## (the control package's step fails on it without an identifier)
+      error ([who, ":notSupported"],
+             "%s: num/den is a static gain: its step response is num/den",
+             who);
+    endif
   endif
 endfunction
 
