@@ -194,6 +194,7 @@ endfunction
 %!error id=tfsrivc:badInput tfsrivc (data)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 3)
 %!error id=tfsrivc:badInput tfsrivc (data, -1, 0)
+%!error id=tfsrivc:badInput tfsrivc (data, realmax, 1)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 1, -0.1)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 1, "FixTd", "on")
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Bogus", 1)
