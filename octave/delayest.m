@@ -22,6 +22,7 @@
 function [nk, loss, varargout] = delayest (varargin)
   contsid_nargchk ("delayest", nargin, nargout, [1 6], 2);
   d = contsid_getdata ("delayest", varargin{:});
+  contsid_check_output ("delayest", d.y);
   rest = varargin(d.nconsumed+1:end);
   if (size (d.u, 2) != 1)
     error ("delayest:notSupported", "delayest: one input only");

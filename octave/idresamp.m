@@ -118,6 +118,11 @@ function [datar, ract, varargout] = idresamp (data, R, order = 10, tol = [],
             "(every experiment)"]);
   endif
   s = struct (data);
+  if (any (cellfun (@(x) any (! isfinite (x(:))), [s.y(:); s.u(:)])))
+    error ("idresamp:notSupported",
+           ["idresamp: 'data' holds missing samples (NaN) or Inf; the ", ...
+            "resampling filter would spread them over the record"]);
+  endif
   y = cellfun (@(x) resample_columns (x, p, q, order), s.y,
                "uniformoutput", false);
   if (isempty (s.u))
@@ -202,6 +207,7 @@ endfunction
 %! assert (r.N, [50, 30]);
 %! assert (r.Ts, {2; 4});
 
+%!error id=idresamp:notSupported idresamp (iddata ([1; NaN; 3; 4], (1:4)', 1), 2)
 %!error id=idresamp:badInput idresamp (ones (10, 1), 0)
 %!error id=idresamp:badInput idresamp (ones (10, 1), [1 2])
 %!error id=idresamp:badInput idresamp (ones (10, 1), 2, 0)

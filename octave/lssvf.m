@@ -8,7 +8,10 @@
 ## @var{data}: an iddata object or numeric y, u, Ts (see @code{rlssvf});
 ## @var{nn} = [na nb nk] as in @code{rlssvf}; @var{lambda}: the SVF cut-off
 ## (rad/s), a little above the system's bandwidth. Option @code{"svf"}:
-## @qcode{"normalised"} (default) or @qcode{"ordinary"}.
+## @qcode{"normalised"} (default) or @qcode{"ordinary"}.  Missing samples
+## (NaN in y or u) are bridged as in @code{rlssvf}: the SVF runs over the
+## present samples at their own instants; @code{"Missing", "error"}
+## refuses them.
 ##
 ## Returns an @code{idctm} model (fields B, F, nk, covariance,
 ## noise_variance, ...), accepted by @code{simc}, @code{comparec},

@@ -24,7 +24,9 @@ function [phi, varargout] = phase (varargin)
            "phase: G must be a finite numeric vector or matrix");
   endif
   phi = angle (double (full (G)));
-  if (isrow (phi))
+  if (isempty (phi))
+    return;                              # unwrap fails on an empty matrix
+  elseif (isrow (phi))
     phi = unwrap (phi, [], 2);
   else
     phi = unwrap (phi);
@@ -37,6 +39,8 @@ endfunction
 %! assert (phase (G), -3 * atan (w), 1e-12);
 %! assert (phase (G.'), -3 * atan (w.'), 1e-12);
 %! assert (phase ([G.', 2 * G.']), -3 * atan ([w.', w.']), 1e-12);
+%!assert (phase ([]), [])
+%!assert (phase (zeros (0, 3)), zeros (0, 3))
 %!error id=phase:badInput phase ()
 %!error id=phase:badInput phase ("abc")
 %!error id=phase:badInput phase ([1 NaN])

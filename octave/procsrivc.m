@@ -49,6 +49,7 @@ function [M, varargout] = procsrivc (varargin)
     error ("procsrivc:badInput", "procsrivc: expected data and a model");
   endif
   d = contsid_getdata (fname, varargin{:});
+  contsid_check_output (fname, d.y);
   rest = varargin(d.nconsumed+1:end);
   if (isempty (rest))
     error ("procsrivc:badInput", "procsrivc: expected an idproc or a type");

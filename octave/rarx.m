@@ -57,6 +57,7 @@ function [thm, yhat, P, varargout] = rarx (z, nn, adm, adg, th0, P0, varargin)
   else
     d = contsid_getdata ("rarx", z);
   endif
+  contsid_check_output ("rarx", d.y);
   if (! (ischar (adm) && rows (adm) == 1))
     error ("rarx:badOption", "rarx: adm must be 'ff' or 'kf'");
   endif

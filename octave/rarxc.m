@@ -51,6 +51,7 @@
 function [THM, YH, info, varargout] = rarxc (varargin)
   contsid_nargchk ("rarxc", nargin, nargout, [0 Inf], 3);
   d = contsid_getdata ("rarxc", varargin{:});
+  contsid_check_output ("rarxc", d.y);
   rest = varargin(d.nconsumed + 1:end);
   if (isempty (rest))
     error ("rarxc:badInput", "rarxc: nn = [na nb nk] is missing");

@@ -90,8 +90,9 @@
 ## trapezoidal rule between the present samples around the gap) and no
 ## update is made at a missing sample. The outputs keep N rows: at a
 ## missing sample thm, yh, pset, kappa and ic repeat the last present
-## sample (the first present one before it), error and innovation are 0,
-## and @code{info.missing} marks the missing samples. A sample with y
+## sample (the first present one before it), error and innovation are 0
+## (innovation also where the estimates were held, see @code{GapSettle}
+## and @code{tsls}), and @code{info.missing} marks the missing samples. A sample with y
 ## present but u missing (or the reverse) is missing as a whole. The
 ## Kalman filter adds Qn once per present sample, so a gap counts as one
 ## step. Not with nk > 0 (shift the input instead). With @qcode{"error"}
@@ -198,6 +199,14 @@ function varargout = rlssvf (varargin)
     contsid_rethrow (err);
   end_try_catch
   varargout = contsid_expand (varargout, p.d);
+  if (nargout > 1 && ! all (isfinite (varargout{2}(:))))
+    ## (e.g. lambda_svf far above the Nyquist frequency pi/Ts: the frozen
+    ## models are meaningless and their output overflows)
+    error ("rlssvf:numericalFailure",
+           ["rlssvf: the frozen-model output yh is not finite from sample ", ...
+            "%d on (is lambda_svf far above pi/Ts?)"],
+           find (! isfinite (varargout{2}), 1));
+  endif
 endfunction
 
 %!shared Ts, u, y, data
@@ -350,6 +359,14 @@ endfunction
 %! ## updates, which forgetting factor 1 never forgets (3.5 % here)
 %! assert (thm(end, :), [2.4 4 4], 0.05 * 4);
 
+%!test  # a bridged run leaves no NaN: innovation 0 where no update was made
+%! randn ("state", 2);
+%! ug = sign (randn (400, 1)); yg = filter ([0 0.1], [1 -0.9], ug);
+%! yg(100:105) = NaN;
+%! [~, ~, ~, ig] = rlssvf (yg, ug, 0.1, [1 1 0], "lambda_svf", 3);
+%! assert (all (isfinite (ig.innovation)));
+%! assert (all (ig.innovation(106:150) == 0));   # GapSettle 20/3 s: held
+
 %!test  # after a gap the filters settle GapSettle s (20/lambda_svf) unused
 %! ym = y; ym(1001:1040) = NaN;
 %! thm = rlssvf (ym, u, Ts, [2 1 0], "lambda_svf", 3, "adm", "kf", "adg", 1e-6);
@@ -447,6 +464,9 @@ endfunction
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "covariance_guard", "yes")
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "GapSettle", -1)
+%!error id=rlssvf:numericalFailure
+%! [a, b] = rlssvf (sin ((1:200)'), sign (sin ((1:200)' * 0.37)), 0.1, ...
+%!                  [2 1 0], 1e9);
 %!error id=rlssvf:badInput rlssvf ()
 %!error id=rlssvf:badInput rlssvf (data)
 

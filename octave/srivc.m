@@ -114,7 +114,10 @@
 ## determined, clipped, clipped_iterations, integrators,
 ## integrator_suspected, loss_history: the simulation loss after each
 ## iteration; lowest_theta, lowest_noise_variance,
-## lowest_integrator_suspected, lowest_simulated: see above).
+## lowest_integrator_suspected, lowest_simulated: see above; missing: the
+## N-by-1 mask of the missing samples, NaN in y or u, which are bridged as
+## in @code{rlssvf} unless @code{"Missing", "error"} is given; simulated
+## then holds the present samples).
 ##
 ## @strong{Example}
 ## @example

@@ -29,6 +29,11 @@
 ## @code{fit} (validation fit in per cent, 100 (1 - |y - y_sim| /
 ## |y - mean y|)).
 ##
+## Missing samples (NaN in y or u) of ZE are bridged by @code{srivc}; its
+## criteria then use the present samples (N counts them).  ZV is
+## simulated sample by sample, so a NaN in ZV is an error
+## (@code{srivcstruc:badInput}).
+##
 ## @strong{Example}
 ## @example
 ## u = prbs (10, 8); Ts = 0.05; N = numel (u);
@@ -94,7 +99,17 @@ function [V, info, varargout] = srivcstruc (varargin)
   check_start (n0e, rows (ye), "n0e");
   if (! isempty (ZV))
     check_start (n0v, rows (yv), "n0v");
+    if (any (isnan ([yv(:); uv(:)])))
+      error ("srivcstruc:badInput",
+             ["srivcstruc: ZV holds missing samples (NaN); the validation ", ...
+              "simulation needs every sample (give a ZV without the gap)"]);
+    endif
   endif
+  ## Missing samples of ZE: srivc bridges them and simulates the present
+  ## ones, so the criteria on ZE use the present samples from n0e on.
+  present_e = ! (isnan (ye) | any (isnan (ue), 2));
+  used_e = present_e;
+  used_e(1:n0e-1) = false;
   structures = expand (NN, nu, form);
 
   ns = rows (structures);
@@ -118,8 +133,8 @@ function [V, info, varargout] = srivcstruc (varargin)
     info.converged(k) = est.converged;
     info.stable(k) = est.stable;
     if (isempty (ZV))
-      y = ye(n0e:end);
-      ys = est.simulated(n0e:end);
+      y = ye(used_e);
+      ys = est.simulated(used_e(present_e));
     else
       ys = simc (M, uv, get (ZV, "Ts"));
       y = yv(n0v:end);
@@ -187,13 +202,16 @@ function S = expand (NN, nu, form)
   endif
 endfunction
 
-%!shared ZE, ZV
+%!shared ZE, ZV, ZN
 %! randn ("state", 3);
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);
 %! y = simc (idctm (4, [1 2.4 4]), u, Ts) + 0.1 * randn (N, 1);
 %! h = floor (N / 2);
 %! ZE = iddata (y(1:h), u(1:h), Ts);
 %! ZV = iddata (y(h+1:end), u(h+1:end), Ts);
+%! yn = y(h+1:end);
+%! yn(10) = NaN;
+%! ZN = iddata (yn, u(h+1:end), Ts);
 
 %!test  # range form: the true structure [1 2 0] is among the best
 %! [V, info] = srivcstruc (ZE, ZV, [1 1 0; 2 3 0]);
@@ -215,6 +233,14 @@ endfunction
 %!error id=srivcstruc:badInput srivcstruc (ZE, 3, [1 2 0])
 %!error id=srivcstruc:badInput srivcstruc (ZE, [], [1 2])
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "NN", "bogus")
+%!test  # a gap in ZE is bridged by srivc; criteria on the present samples
+%! yg = get (ZE, "OutputData");
+%! yg(40:45) = NaN;
+%! V = srivcstruc (iddata (yg, get (ZE, "InputData"), get (ZE, "Ts")), [],
+%!                 [1 2 0], "NN", "list");
+%! assert (all (isfinite (V(1, :))));
+%! assert (V(1, end), numel (yg) - 6);
+%!error id=srivcstruc:badInput srivcstruc (ZE, ZN, [1 2 0])
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e", 0)
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e")
 %!error id=srivcstruc:dimensionMismatch srivcstruc (ZE, iddata (randn (50, 1), randn (50, 2), 0.1), [1 2 0])

@@ -117,6 +117,7 @@ endfunction
 %!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 2, 0.1)
 %!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 1, 1e4)
 %!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), realmax, 2, 1)
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Bogus", 1)
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "MaxIter", -1)
 %!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Tol", 0)

@@ -195,6 +195,7 @@ endfunction
 %!error id=tfsrivc:badInput tfsrivc (data)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 3)
 %!error id=tfsrivc:badInput tfsrivc (data, -1, 0)
+%!error id=tfsrivc:badInput tfsrivc (data, realmax, 1)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 1, -0.1)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 1, "FixTd", "on")
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Bogus", 1)
@@ -208,8 +209,10 @@ endfunction
 %!                  cumsum (0.1 + rand (50, 1) / 10)), 1, 0, "Focus", [0 5])
 %!error id=tfsrivc:badInput tfsrivc (data, idpoly (1, 1, 1, 1, [1 1], "Ts", 0))
 %!error id=tfsrivc:notSupported
-%! tfsrivc (iddata (zeros (50, 1), zeros (50, 2), 0.1), 1, 0)
+%! tfsrivc (iddata ((1:50)', zeros (50, 2), 0.1), 1, 0)
 %!error id=tfsrivc:numericalFailure
+%! tfsrivc (iddata (sin ((1:100)'), zeros (100, 1), 0.1), 1, 0)
+%!error id=tfsrivc:badInput  # a constant output identifies nothing
 %! tfsrivc (iddata (ones (100, 1), zeros (100, 1), 0.1), 1, 0)
 
 %!demo

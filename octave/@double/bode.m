@@ -27,7 +27,8 @@
 ## @seealso{step, bodeplot}
 ## @end deftypefn
 
-function [mag, phase, w] = bode (varargin)
+function [mag, phase, w, varargout] = bode (varargin)
+  contsid_nargchk ("bode", nargin, nargout, [2 6], 3);
   [sys, iu, w] = pre_lti_args ("bode", varargin);
   if (isempty (iu))
     iu = 1;
@@ -102,6 +103,7 @@ endfunction
 %!error id=bode:badInput bode (1, [1 1], [1 Inf])
 %!error id=bode:dimensionMismatch bode (eye (2), [1; 1], [1 0 0], 0)
 %!error id=bode:badInput bode (-1, 1, 1, 0, 3, 1:3)
+%!error id=bode:badInput [a, b, c, d] = bode (1, [1 1])
 
 %!demo
 %! ## a CONTSID script's pre-LTI call

@@ -14,7 +14,8 @@
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [p, z] = pzmap (varargin)
+function [p, z, varargout] = pzmap (varargin)
+  contsid_nargchk ("pzmap", nargin, nargout, [2 4], 2);
   if (! any (nargin == [2, 4]))
     error ("pzmap:badInput",
            ["pzmap: with numeric arguments use pzmap (num, den) or ", ...
@@ -22,6 +23,12 @@ function [p, z] = pzmap (varargin)
   endif
   sys = pre_lti_args ("pzmap", varargin);
   if (nargout == 0)
+    [p, z] = pzmap (sys);
+    if (isempty (p) && isempty (z))
+      ## (the control package's plot would fail without an identifier)
+      error ("pzmap:badInput",
+             "pzmap: the model (a static gain) has no poles or zeros to plot");
+    endif
     pzmap (sys);
   else
     [p, z] = pzmap (sys);
@@ -43,6 +50,9 @@ endfunction
 %!error id=pzmap:badInput pzmap (1, 2, 3)
 %!error id=pzmap:badInput pzmap (1, [0 0])
 %!error id=pzmap:dimensionMismatch pzmap (eye (2), [1; 1], [1 0 0], 0)
+%!error id=pzmap:badInput [a, b, c] = pzmap (1, [1 1])
+%!error id=pzmap:badInput pzmap (-1, 1)
+%!error id=pzmap:badInput pzmap (2, NaN)
 
 %!demo
 %! pzmap ([0 1; -2 -3], [0; 1], [1 1], 0)

@@ -29,7 +29,8 @@
 ## @seealso{bode, ord2, stepplot}
 ## @end deftypefn
 
-function [y, x, t] = step (varargin)
+function [y, x, t, varargout] = step (varargin)
+  contsid_nargchk ("step", nargin, nargout, [2 6], 3);
   [sys, iu, tt] = pre_lti_args ("step", varargin);
   if (! isempty (iu))
     sys = sys(:, iu);
@@ -94,8 +95,13 @@ endfunction
 %!error id=step:badInput step (1, [0 0])
 %!error id=step:badInput step (1, [1 1], [1 NaN])
 %!error id=step:badInput step (1, [1i 1])
+%!error id=step:badInput step (-1, 1, Inf, 0)
+%!error id=step:badInput step ([1 2], [2 1 1], 0)
+%!error id=step:badInput step ([1 2], 1e9)
+%!error id=step:notSupported step (1, 0.98, 10)
 %!error id=step:dimensionMismatch step (eye (2), [1; 1], [1 0 0], 0)
 %!error id=step:badInput step (-1, 1, 1, 0, 2)
+%!error id=step:badInput [a, b, c, d] = step (1, [1 1])
 
 %!demo
 %! ## a CONTSID script's pre-LTI call: the step response of N(s)/D(s)

@@ -12,6 +12,7 @@
 
 function [M, Infos, yhat] = contsid_block (fname, args)
   d = contsid_getdata (fname, args{:});
+  contsid_check_output (fname, d.y);
   rest = args(d.nconsumed+1:end);
   if (isempty (rest))
     error ([fname ":badInput"], "%s: the structure nn is missing", fname);

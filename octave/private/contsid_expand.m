@@ -13,8 +13,13 @@
 ## present sample (the first present sample's before it); @var{yh} holds
 ## the model output of the last present sample, as the zero-order hold of
 ## the bridged record does; @code{info.innovation} and @code{info.error}
-## are 0 there (no update was made).  @var{info} gains the field
-## @code{missing}: the @var{N}-by-1 logical mask of the missing samples.
+## are 0 there (no update was made).  In such a run
+## @code{info.innovation} is 0 wherever no update was made, also at the
+## present samples the estimator held (the @code{GapSettle} time after a
+## gap, and before @code{tsls}), where the core marks it NaN: one mark of
+## "no update", and no NaN left in the outputs of a bridged record.
+## @var{info} gains the field @code{missing}: the @var{N}-by-1 logical mask
+## of the missing samples.
 ##
 ## With or without missing samples, an @var{info} with the per-sample field
 ## @code{covariance_guard} (what the covariance protection did: 0 nothing,
@@ -67,6 +72,9 @@ function info = expand_info (info, src, n, missing)
       zeroed = {"innovation", "error", "covariance_guard"};
       if (any (strcmp (names{j}, zeroed)))
         x(missing, :) = 0;
+      endif
+      if (strcmp (names{j}, "innovation"))
+        x(isnan (x)) = 0;                # held: no update made
       endif
       info.(names{j}) = x;
     endif

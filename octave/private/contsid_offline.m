@@ -220,6 +220,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   M = make_model (fname, e, theta, cov, info, d, nu);
   M = simulation_fit (M, d, np, info.simulated);
+  ## The samples missing from the record (NaN in y or u), bridged by
+  ## contsid_recursive_args: per-sample outputs (info.simulated) hold the
+  ## present samples only.
+  if (isfield (d, "missing"))
+    info.missing = d.missing;
+  else
+    info.missing = false (n, 1);
+  endif
   if (nargout > 1)
     s2 = info.noise_variance;
     vy = var (d.y, 1);
@@ -295,17 +303,23 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     if (nu != 1)
       error ("clsrivc:badInput", "clsrivc: one input only");
     endif
+    ## datacl is sampled as the data: with missing samples (bridged), its
+    ## rows at the present samples
+    present = true (n, 1);
+    if (isfield (d, "missing"))
+      present = ! d.missing;
+    endif
     if (isa (Mc, "tf") && isct (Mc))
       [num, den] = tfdata (Mc, "vector");
       if (numel (num) > numel (den) || ! all (isfinite ([num(:); den(:)])))
         error ("clsrivc:badInput", "clsrivc: the controller must be proper");
       endif
-      r = read_datacl (datacl, n, true);
+      r = read_datacl (datacl, present, true);
       e.controller = struct ("num", num, "den", den);
       e.reference = r;
       return;
     endif
-    [r1, r2] = read_datacl (datacl, n, false);
+    [r1, r2] = read_datacl (datacl, present, false);
     Ts = NaN;
     if (d.uniform)
       Ts = d.Ts;
@@ -530,7 +544,8 @@ function theta = init_estimate (fname, init, e, np)
   endfor
 endfunction
 
-function varargout = read_datacl (datacl, n, reference)
+function varargout = read_datacl (datacl, present, reference)
+  n = numel (present);
   if (isa (datacl, "iddata"))
     if (reference)
       ## CONTSID: datacl = iddata (y, r), the reference is its input.
@@ -556,17 +571,17 @@ function varargout = read_datacl (datacl, n, reference)
       error ("clsrivc:dimensionMismatch",
              "clsrivc: the reference r must be %d-by-1", n);
     endif
-    varargout{1} = double (datacl);
+    varargout{1} = double (datacl(present));
     return;
   endif
   if (rows (datacl) != n || columns (datacl) > 2)
     error ("clsrivc:dimensionMismatch", ...
            "clsrivc: datacl must be %d-by-1 (r1) or %d-by-2 ([r1 r2])", n, n);
   endif
-  varargout{1} = double (datacl(:, 1));
+  varargout{1} = double (datacl(present, 1));
   if (columns (datacl) == 2)
-    varargout{2} = double (datacl(:, 2));
+    varargout{2} = double (datacl(present, 2));
   else
-    varargout{2} = zeros (n, 1);
+    varargout{2} = zeros (nnz (present), 1);
   endif
 endfunction

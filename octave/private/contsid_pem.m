@@ -24,6 +24,7 @@ function [M, info] = contsid_pem (fname, args)
     return;
   endif
   d = contsid_getdata (fname, args{:});
+  contsid_check_output (fname, d.y);
   rest = args(d.nconsumed+1:end);
   if (size (d.u, 2) < 1)
     error ([fname ":badInput"], "%s: the data need an input", fname);
@@ -274,8 +275,10 @@ function [M, info] = tf_model (fname, d, rest)
     error ([fname ":badInput"], "%s: expected np and nz (integers)", fname);
   endif
   np = rest{1}; nz = rest{2};
-  if (np < 1 || nz > np)
-    error ([fname ":badInput"], "%s: need np >= 1 and 0 <= nz <= np", fname);
+  if (np < 1 || nz > np || np > 30)
+    ## (30: the order limit of every estimator, contsid_recursive_args)
+    error ([fname ":badInput"],
+           "%s: need 1 <= np <= 30 and 0 <= nz <= np", fname);
   endif
   if (size (d.u, 2) != 1)
     error ([fname ":notSupported"], "%s: one input only", fname);

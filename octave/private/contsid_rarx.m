@@ -42,6 +42,12 @@ function [thm, yhat, thmc, failed, P] = contsid_rarx (fname, d, nn, o)
            "%s: adm must be 'ff' or 'kf', got '%s'", fname, adm);
   endif
   np = na + nb;
+  if (rows (d.y) <= np)
+    ## as contsid_recursive_args: more samples than parameters
+    error ([fname ":badInput"],
+           ["%s: the record has %d samples, fewer than needed for %d ", ...
+            "parameters (at least %d)"], fname, rows (d.y), np, np + 1);
+  endif
   adg = double (o.adg);
   if (strcmp (adm, "kf") && isscalar (adg))
     adg = adg * eye (np);

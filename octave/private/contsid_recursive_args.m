@@ -129,11 +129,7 @@ function check_record (fname, d, orders)
             "for %d parameters (at least %d)"], fname, n, orders.np,
            orders.np + 1);
   endif
-  if (all (d.y == d.y(1)))
-    error ([fname ":badInput"],
-           "%s: the output 'y' is constant: the model is not identifiable",
-           fname);
-  endif
+  contsid_check_output (fname, d.y);
 endfunction
 
 function orders = parse_orders (fname, nn, nu, form, n)

@@ -258,6 +258,7 @@ function [d, rest] = read_data (fname, args, multi = false)
     error ([fname ":badInput"], "%s: expected the data", fname);
   endif
   d = contsid_getdata (fname, args{1});
+  contsid_check_output (fname, d.y);
   rest = args(2:end);
   if (! d.uniform)
     error ([fname ":notSupported"],

@@ -13,6 +13,7 @@ function M = contsid_tf_front (fname, args)
            fname);
   endif
   d = contsid_getdata (fname, args{:});
+  contsid_check_output (fname, d.y);
   rest = args(d.nconsumed+1:end);
   if (isempty (rest))
     error ([fname ":badInput"], "%s: expected np, nz or a model", fname);
@@ -66,10 +67,13 @@ function M = contsid_tf_front (fname, args)
     endif
   endif
   if (! isnumeric (np) || ! isscalar (np) || np != fix (np) || np < 1
+      || np > 30
       || ! isnumeric (nz) || ! isscalar (nz) || nz != fix (nz) || nz < 0
       || nz > np)
+    ## (30: the order limit of every estimator, contsid_recursive_args)
     error ([fname ":badInput"], ...
-           "%s: np must be an integer >= 1 and nz an integer in 0..np", fname);
+           "%s: np must be an integer in 1..30 and nz an integer in 0..np",
+           fname);
   endif
   T = d.t(end) - d.t(1);
   h = T / (rows (d.y) - 1);

@@ -72,35 +72,61 @@ endfunction
 ## inserted, or a name-value pair appended), and a random number of
 ## outputs (up to two more than any public function returns).
 function [args, nout] = make_call (tgt)
-  persistent pool templates names
+  persistent pool templates names own
   if (isempty (pool))
     [pool, templates, names] = value_pool ();
+    own = fuzz_public_templates ();
   endif
+  numeric = strcmp (tgt.cls, "double");
   switch (tgt.kind)
     case "method"
-      obj = object_of (tgt.cls);
-      tpl = pick (templates);
-      args = [{obj}, tpl(2:end)];
-      args = args(1:randi (numel (args)));
+      if (numeric)
+        ## A method of the built-in class double (the pre-LTI step/bode/
+        ## pzmap forms): its calls stay numeric (see mpool below).
+        args = pick (numeric_templates ());
+        args = args(1:randi (numel (args)));
+        obj = [];
+      else
+        obj = object_of (tgt.cls);
+      endif
+      if (! numeric)
+        tpl = pick (templates);
+        args = [{obj}, tpl(2:end)];
+        args = args(1:randi (numel (args)));
+      endif
     case "gateway"
       args = [{tgt.name(1:end-4)}, pick(templates)];
     otherwise
-      args = pick (templates);
+      ## The function's own well-formed calls (fuzz_public_templates) or,
+      ## less often, a generic one.
+      if (isfield (own, tgt.name) && rand () < 0.7)
+        args = pick (own.(tgt.name));
+      else
+        args = pick (templates);
+      endif
   endswitch
+  mpool = pool;
+  if (numeric)
+    ## Only double (and char, which ranks below it) arguments keep the
+    ## dispatch on the class double: a cell, single, integer, logical,
+    ## struct or object argument sends the call to the control package's
+    ## function of that name instead of ours.
+    mpool = pool(cellfun (@(v) isa (v, "double") || ischar (v), pool));
+  endif
   nmut = randi ([0 3]);                  # 0: a well-formed call
   for m = 1:nmut
     r = rand ();
-    first = 1 + strcmp (tgt.kind, "method");   # keep the object
+    first = 1 + strcmp (tgt.kind, "method");   # keep the object (or number)
     if (r < 0.5 && numel (args) >= first)
       j = randi ([first, max(first, numel(args))]);
-      args{j} = pick (pool);
+      args{j} = pick (mpool);
     elseif (r < 0.65 && numel (args) > first)
       args(randi ([first, numel(args)])) = [];
     elseif (r < 0.8)
       j = randi ([first, numel(args) + 1]);
-      args = [args(1:j-1), {pick(pool)}, args(j:end)];
+      args = [args(1:j-1), {pick(mpool)}, args(j:end)];
     else
-      args(end+1:end+2) = {pick(names), pick(pool)};
+      args(end+1:end+2) = {pick(names), pick(mpool)};
     endif
   endfor
   w = rand ();
@@ -111,6 +137,14 @@ function [args, nout] = make_call (tgt)
   else
     nout = randi ([2 7]);
   endif
+endfunction
+
+## Valid calls of the pre-LTI numeric forms (num, den[, w or t]) and
+## (a, b, c, d[, iu[, w or t]]).
+function tpl = numeric_templates ()
+  tpl = {{1, [1 3 2]}, {[1 2], [1 3 2], logspace(-1, 1, 5)}, ...
+         {-1, 1, 1, 0}, {-1, 1, 1, 0, 1}, {-eye(2), [1; 0], [0 1], 0, 1, ...
+         (0:0.1:1)'}, {2, [1 1], (0:0.5:3)}};
 endfunction
 
 function v = pick (c)

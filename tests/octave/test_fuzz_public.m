@@ -24,8 +24,17 @@
 ## The number of calls is @env{CTID_FUZZ_CALLS} (default 10000) and the
 ## seed @env{CTID_FUZZ_SEED} (default 12).  @env{CTID_FUZZ_ONLY}, a
 ## comma-separated list of names (functions, classes or gateways), limits
-## the targets to those, for a developer checking new functions.  A summary (calls, accepted,
-## identified errors, failures by kind, slowest calls) is printed.
+## the targets to those, for a developer checking new functions.  A
+## summary (calls, accepted, identified errors, failures by kind, slowest
+## calls) is printed.
+##
+## Completeness: the targets are found by listing the folders (the
+## methods of @@double, the pre-LTI numeric forms, get numeric calls
+## only); every gateway of @file{mex/CMakeLists.txt}'s @code{CTID_GATEWAYS}
+## must be built, and every public function must have well-formed calls in
+## @file{fuzz_public_templates.m} (which the child mutates, 70 % of the
+## calls to a function); the test fails otherwise, so that the lists stay
+## complete as the API grows.
 ## @end deftypefn
 
 function test_fuzz_public ()
@@ -40,6 +49,19 @@ function test_fuzz_public ()
   mkdir (tmp);
   cleanup = onCleanup (@() remove_dir (tmp));
   [targets, gwdir] = discover (root, tmp);
+  ## Every public function has well-formed calls in fuzz_public_templates,
+  ## and every entry there is a public function.
+  addpath (fullfile (root, "octave"));
+  own = fieldnames (fuzz_public_templates ());
+  funcs = {targets(strcmp ({targets.kind}, "function")).name};
+  if (! isempty (setdiff (funcs, own)))
+    error ("test_fuzz_public: no template in fuzz_public_templates for %s",
+           strjoin (setdiff (funcs, own), ", "));
+  endif
+  if (! isempty (setdiff (own, funcs)))
+    error ("test_fuzz_public: fuzz_public_templates names no function %s",
+           strjoin (setdiff (own, funcs), ", "));
+  endif
   only = getenv ("CTID_FUZZ_ONLY");
   if (! isempty (only))
     names = strtrim (strsplit (only, ","));
@@ -167,11 +189,6 @@ function [targets, gwdir] = discover (root, tmp)
   c = dir (fullfile (root, "octave", "@*"));
   for i = 1:numel (c)
     cls = c(i).name(2:end);
-    if (any (strcmp (cls, {"double", "single", "logical", "char"})))
-      ## Methods of a built-in class (@double: the pre-LTI step/bode/pzmap
-      ## wrappers) are not constructors of ours; not covered here yet.
-      continue;
-    endif
     m = dir (fullfile (root, "octave", c(i).name, "*.m"));
     for j = 1:numel (m)
       name = m(j).name(1:end-2);
@@ -193,6 +210,20 @@ function [targets, gwdir] = discover (root, tmp)
     targets(end+1) = struct ("name", g(i).name(1:end-4), "kind", "gateway",
                              "cls", "");
   endfor
+  ## Every gateway of mex/CMakeLists.txt's CTID_GATEWAYS must be built, or
+  ## it would escape the test.
+  txt = fileread (fullfile (root, "mex", "CMakeLists.txt"));
+  tok = regexp (txt, 'set\(CTID_GATEWAYS\s+([^)]*)\)', "tokens", "once");
+  if (isempty (tok))
+    error ("test_fuzz_public: no set(CTID_GATEWAYS ...) in %s",
+           "mex/CMakeLists.txt");
+  endif
+  unbuilt = setdiff (regexp (tok{1}, '\w+', "match"),
+                     {targets(strcmp ({targets.kind}, "gateway")).name});
+  if (! isempty (unbuilt))
+    error ("test_fuzz_public: gateway(s) of CTID_GATEWAYS not built: %s",
+           strjoin (unbuilt, ", "));
+  endif
 endfunction
 
 ## An identifier <name>:<reason> naming the function called (or the class

@@ -8,7 +8,10 @@
 ## give <name>:badOption), replaces each field by every value of a pool of
 ## wrong types and sizes, and passes non-struct or non-scalar options.
 ## The environment variables CTID_FUZZ_SEED and CTID_FUZZ_CALLS change the
-## seed and the number of random argument lists (see below).
+## seed and the number of random argument lists (see below).  Every gateway
+## of mex/CMakeLists.txt's CTID_GATEWAYS must be built and have a valid
+## call here, or the test fails (the list stays complete as gateways are
+## added).
 function test_gateway_fuzz ()
   root = getenv ("CTID_ROOT");
   priv = fullfile (root, "octave", "private");
@@ -183,6 +186,20 @@ function test_gateway_fuzz ()
     error ("test_gateway_fuzz: no valid call for the gateway(s) %s",
            strjoin (missing, ", "));
   endif
+  ## The truth is mex/CMakeLists.txt's CTID_GATEWAYS: every gateway listed
+  ## there must be built (a gateway not compiled would escape the test) and
+  ## have a valid call above.
+  listed = cmake_gateways (root);
+  unbuilt = setdiff (listed, gateways);
+  if (! isempty (unbuilt))
+    error ("test_gateway_fuzz: gateway(s) of CTID_GATEWAYS not built: %s",
+           strjoin (unbuilt, ", "));
+  endif
+  missing = setdiff (listed, covered);
+  if (! isempty (missing))
+    error ("test_gateway_fuzz: no valid call for the gateway(s) %s",
+           strjoin (missing, ", "));
+  endif
   ncalls = 0;
   for c = 1:numel (calls)
     [name, base, required] = calls{c}{:};
@@ -227,6 +244,20 @@ function test_gateway_fuzz ()
   endfor
   printf (["test_gateway_fuzz: %d calls (seed %d), all succeeded or ", ...
            "raised identified errors\n"], ncalls, seed);
+endfunction
+
+## The gateways named in mex/CMakeLists.txt's set(CTID_GATEWAYS ...).
+function names = cmake_gateways (root)
+  txt = fileread (fullfile (root, "mex", "CMakeLists.txt"));
+  tok = regexp (txt, 'set\(CTID_GATEWAYS\s+([^)]*)\)', "tokens", "once");
+  if (isempty (tok))
+    error ("test_gateway_fuzz: no set(CTID_GATEWAYS ...) in %s",
+           "mex/CMakeLists.txt");
+  endif
+  names = regexp (tok{1}, '\w+', "match");
+  if (isempty (names))
+    error ("test_gateway_fuzz: CTID_GATEWAYS lists no gateway");
+  endif
 endfunction
 
 function v = env_number (name, def)

@@ -14,7 +14,11 @@
 ## concatenating records of different Ts keeps each sample's instant;
 ## @item @code{lssvf}, @code{ivsvf}, @code{svfscaling}, @code{svfcutoff}
 ## on a constant output, @code{lssvf} on a 3-sample record: errors;
-## @item @code{idctm (..., "nk", NaN)} (and Inf): an error.
+## @item @code{idctm (..., "nk", NaN)} (and Inf): an error;
+## @item the same cases on the newer estimators (the refined-IV,
+## Hammerstein, output-error and ARX families): a second input, a constant
+## output, a 3-sample record, a NaN delay: each an identified error (a
+## second input may also give a two-input model).
 ## @end itemize
 ## @end deftypefn
 
@@ -103,6 +107,51 @@ function test_issue12_silent_cases ()
     nfail += expect_error (calls{i, 1}, calls{i, 2},
                            sprintf ("degenerate call %d accepted", i));
   endfor
+
+  ## The same cases on the newer estimators: a second input to a one-input
+  ## estimator, a constant output, a 3-sample record, a NaN delay.  Each
+  ## must be an identified error (a two-input record may also be accepted
+  ## by an estimator whose model then has two inputs).
+  one = iddata (y, u, Ts);
+  cl = iddata (u, u, Ts);
+  C = struct ("num", [1 -0.5], "den", [1 -1]);
+  three = iddata (y(1:3), u(1:3), Ts);
+  ## {name, call (data), call with a NaN delay ([] if it takes none)}
+  newer = {
+    "tfsrivc",      @(d) tfsrivc (d, 2, 0),   @() tfsrivc (one, 2, 0, NaN)
+    "tfsrivc_init", @(d) tfsrivc_init (d, 2, 0), []
+    "tfcoe",        @(d) tfcoe (d, 2, 0),     @() tfcoe (one, 2, 0, NaN)
+    "tfrivc",       @(d) tfrivc (d, 2, 0),    @() tfrivc (one, 2, 0, NaN)
+    "procsrivc",    @(d) procsrivc (d, "P2"), []
+    "oe",           @(d) oe (d, [1 2 0]),     @() oe (one, [1 2 NaN])
+    "tfest",        @(d) tfest (d, 2, 0),     @() tfest (one, 2, 0, NaN)
+    "arx",          @(d) arx (d, [2 1 1]),    @() arx (one, [2 1 NaN])
+    "rivc",         @(d) rivc (d, [1 1 1 2 0]), ...
+                    @() rivc (one, [1 1 1 2 NaN])
+    "clrivc",       @(d) clrivc (d, cl, [1 1 1 2 0], C), ...
+                    @() clrivc (one, cl, [1 1 1 2 NaN], C)
+    "cl2srivc",     @(d) cl2srivc (d, cl, [1 2 0], [2 2 0]), ...
+                    @() cl2srivc (one, cl, [1 2 NaN], [2 2 0])
+    "hsrivc",       @(d) hsrivc (d, [1 2 0]), @() hsrivc (one, [1 2 NaN])
+    "hrivc",        @(d) hrivc (d, [1 1 1 2 0]), ...
+                    @() hrivc (one, [1 1 1 2 NaN])
+    "hwsrivc",      @(d) hwsrivc (d, [1 3 0]), @() hwsrivc (one, [1 3 NaN])
+    "srivc",        @(d) srivc (d, [1 2 0]),  @() srivc (one, [1 2 NaN])
+    "rarx",         @(d) rarx (d, [2 1 1], "ff", 0.99), ...
+                    @() rarx (one, [2 1 NaN], "ff", 0.99)
+    "rarxc",        @(d) rarxc (d, [2 1 1], "lambda_svf", 3), ...
+                    @() rarxc (one, [2 1 NaN], "lambda_svf", 3)
+    "delayest",     @(d) delayest (d),        []
+  };
+  for i = 1:rows (newer)
+    [name, f, fnk] = newer{i, :};
+    nfail += two_inputs (name, f, two);
+    nfail += expect_error (name, @() f (k), [name ": constant output"]);
+    nfail += expect_error (name, @() f (three), [name ": 3 samples"]);
+    if (! isempty (fnk))
+      nfail += expect_error (name, fnk, [name ": NaN delay"]);
+    endif
+  endfor
   if (nfail > 0)
     error ("test_issue12_silent_cases: %d failures", nfail);
   endif
@@ -113,6 +162,31 @@ function n = check (ok, what)
   n = 0;
   if (! ok)
     printf ("  FAIL %s\n", what);
+    n = 1;
+  endif
+endfunction
+
+## A two-input record: an identified error, or a model with two inputs
+## (never the one-input result with the second input ignored).
+function n = two_inputs (name, f, data)
+  n = 0;
+  try
+    M = f (data);
+  catch err
+    if (isempty (regexp (err.identifier, ['^' name ':\w+$'], "once")))
+      printf ("  FAIL %s, two inputs: id '%s': %s\n", name, err.identifier,
+              err.message);
+      n = 1;
+    endif
+    return;
+  end_try_catch
+  nu = NaN;
+  try
+    nu = size (M, 2);
+  end_try_catch
+  if (! (isobject (M) && nu == 2))
+    printf ("  FAIL %s: second input ignored (a %s with %d inputs)\n", name,
+            class (M), nu);
     n = 1;
   endif
 endfunction

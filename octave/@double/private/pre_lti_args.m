@@ -24,6 +24,13 @@ function [sys, iu, extra] = pre_lti_args (who, args)
            who, bad);
   endif
   args = cellfun (@double, args, "uniformoutput", false);
+  nsys = 2 + 2 * (numel (args) >= 4);    # num, den or a, b, c, d
+  bad = find (! cellfun (@(x) all (isfinite (x(:))),
+                         args(1:min (nsys, end))), 1);
+  if (! isempty (bad))
+    error ([who, ":badInput"],
+           "%s: argument %d of the numeric form must be finite", who, bad);
+  endif
   iu = [];
   extra = [];
   switch (numel (args))
@@ -67,6 +74,31 @@ function [sys, iu, extra] = pre_lti_args (who, args)
   endswitch
   if (! isempty (extra) && ! (isvector (extra) && all (isfinite (extra))))
     error ([who, ":badInput"], "%s: the last argument must be a vector", who);
+  endif
+  ## The time (final time or instants) or the frequencies: positive, and
+  ## increasing when a vector (the control package rejects the rest
+  ## without an identifier).
+  if (! isempty (extra) && (any (extra(:) < 0) || (isscalar (extra)
+                                                   && extra <= 0)
+                            || any (diff (extra(:)) <= 0)))
+    error ([who, ":badInput"],
+           "%s: the time or frequency argument must be positive and increasing",
+           who);
+  endif
+  ## A step response needs a proper model (the control package's
+  ## conversion of an improper one fails under its own identifier).
+  if (strcmp (who, "step") && isa (sys, "tf"))
+    [n, d] = tfdata (sys, "vector");
+    if (numel (n) - find (n != 0, 1) > numel (d) - find (d != 0, 1))
+      error ([who, ":badInput"],
+             "%s: num/den is improper (more zeros than poles)", who);
+    endif
+    if (numel (d) - find (d != 0, 1) == 0)
+      ## (the control package's step fails on it without an identifier)
+      error ([who, ":notSupported"],
+             "%s: num/den is a static gain: its step response is num/den",
+             who);
+    endif
   endif
 endfunction
 

@@ -1,0 +1,123 @@
+## -*- texinfo -*-
+## @deftypefn {} {@var{tpl} =} fuzz_public_templates ()
+## Well-formed calls of every public function of @file{octave/*.m} for the
+## public fuzz test (@file{test_fuzz_public.m}, @file{fuzz_public_child.m}):
+## a struct with one field per function, each a cell of argument lists
+## (cells), that the child mutates as it mutates its generic templates, so
+## that the random calls also reach beyond each function's first argument
+## check.  @file{test_fuzz_public.m} fails when a public function has no
+## field here (the list is kept complete as the API grows) or when a field
+## names no public function.
+## @end deftypefn
+
+function tpl = fuzz_public_templates ()
+  Ts = 0.1;
+  n = 200;
+  k = (1:n)';
+  u = sign (sin (k * 0.37 + 0.3) + 0.4 * sin (k * 0.11));
+  u(u == 0) = 1;
+  y = filter ([0 0.05 0.04], [1 -1.6 0.7], u) + 0.01 * sin (k * 2.1);
+  r = u;
+  data = iddata (y, u, Ts);
+  dcl = iddata (u, r, Ts);
+  yn = y;
+  yn(50:55) = NaN;                  # a gap of missing samples
+  gap = iddata (yn, u, Ts);
+  M = idtf (2, [1 3 2]);
+  P = idpoly (1, 2, 1, 1, [1 3 2], "Ts", 0);
+  C = struct ("num", [1 -0.5], "den", [1 -1]);
+  thm = repmat ([3 2 2], n, 1);
+  w = logspace (-1, 1, 20)';
+  G = 2 ./ ((1i * w) .^ 2 + 3 * 1i * w + 2);
+  frd = idfrd (G, w, "Ts", 0);
+  hw = struct ("ltim", idtf (1, [1 1]), "NL_H", [1 0.5]);
+  ## a longer record for the functions that split it into blocks
+  kl = (1:800)';
+  ul = sign (sin (kl * 0.37 + 0.3) + 0.4 * sin (kl * 0.11));
+  ul(ul == 0) = 1;
+  long = iddata (filter ([0 0.05 0.04], [1 -1.6 0.7], ul)
+                 + 0.01 * sin (kl * 2.1), ul, Ts);
+  ctl = {"controller", C, "r1", r, "r2", zeros(n, 1)};
+
+  tpl = struct ();
+  tpl.Ham = {{u}, {}};
+  tpl.Wie = {{u}, {}};
+  tpl.arx = {{data, [2 2 1]}, {gap, [2 1 1]}};
+  tpl.bandwidthc = {{M}, {2, [1 3 2]}};
+  tpl.bode4frozensys = {{thm, [2 1], "w", w}, {M, "w", [1 2]}};
+  tpl.bodeoptions = {{}, {"cstprefs"}};
+  tpl.bodeplot = {{M}, {M, "r", P}};
+  tpl.chisqr = {{3, 100, 0.95}};
+  tpl.cl2srivc = {{data, dcl, [1 2 0], [2 2 0]}};
+  tpl.clrivc = {{data, dcl, [1 1 1 2 0], C}};
+  tpl.clrivsvf = {[{data, [2 1 0], "lambda_svf", 3}, ctl]};
+  tpl.clrsrivc = {[{data, [1 2 0], "lambda_svf", 3}, ctl]};
+  tpl.clsrivc = {{data, dcl, [1 2 0], C}};
+  tpl.comparec = {{data, M}, {data, thm, [2 1 0]}};
+  tpl.compress = {{[y u], Ts, 0.05}, {y, Ts, 0.05}};
+  tpl.cra = {{data}, {data, 20, 5, 0}};
+  tpl.dbode = {{0.1, [1 -0.9], Ts}, {0.1, [1 -0.9], Ts, w}};
+  tpl.delayest = {{data}, {data, 2, 2, 0, 5}};
+  tpl.freqs = {{2, [1 3 2], w}, {2, [1 3 2]}};
+  tpl.hrivc = {{data, [1 1 1 2 0]}};
+  tpl.hsrivc = {{data, [1 2 0]}, {gap, [1 2 0]}};
+  tpl.hwsrivc = {{data, [1 3 0]}};
+  tpl.idctm = {{2, [1 3 2]}, {2, [1 3 2], "nk", 1}};
+  tpl.idinput = {{n}, {n, "prbs", [0 0.2]}};
+  tpl.idplot = {{data}, {data, 1:50}};
+  tpl.idresamp = {{data, 2}, {y, 0.5}};
+  tpl.ivsvf = {{data, [2 1 0], 3}, {gap, [2 1 0], "lambda_svf", 3}};
+  tpl.lssvf = {{data, [2 1 0], 3}, {y, u, Ts, [2 1 0], 3}};
+  tpl.oe = {{data, [1 2 0]}, {gap, [2 2 1]}};
+  tpl.oeOptions = {{}, {"Focus", "simulation"}};
+  tpl.ord2 = {{2, 0.5}};
+  tpl.phase = {{G}};
+  tpl.prbs = {{7}, {7, 3}};
+  tpl.present = {{M}, {P}};
+  tpl.procsrivc = {{data, "P2U"}, {data, "P1D"}};
+  tpl.qnml = {{data, [2 1 0], "lambda_svf", 3}};
+  tpl.rarx = {{data, [2 2 1], "ff", 0.98}, {[y u], [2 2 1], "kf", 1e-3}};
+  tpl.rarxc = {{data, [2 1 1], "lambda_svf", 3}};
+  tpl.relay = {{1, [1 2 1], 0.05}, {1, [1 2 1], 0.05, "NumCycle", 3}};
+  tpl.residc = {{data, M}, {data, thm, [2 1 0]}};
+  ## residtrace on 320 samples (the fewest its validation third takes:
+  ## about 10 s a call on this machine, 50 s on the 800 of long)
+  mid = long(1:320);
+  tpl.residtrace = {{mid, M}};
+  ## a complete result (residtrace runs once per child process)
+  try
+    R = residtrace (mid, idtf (0.9, [1 1.5 0.5]));
+  catch
+    R = struct ("steps", struct ("label", {"a"}, "params", {[]}));
+  end_try_catch
+  tpl.residtrace_table = {{R}};
+  tpl.rivc = {{data, [1 1 1 2 0]}, {gap, [1 0 0 2 0]}};
+  tpl.rivsvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}};
+  tpl.rlsconverge = {{long, [2 1 0], "lambda_svf", 3}, ...
+                     {data, [2 1 0], "lambda_svf", 3, "nblocks", 3}};
+  tpl.rlssvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}};
+  tpl.rsrivc = {{data, [1 2 0], "lambda_svf", 3}, {gap, [1 2 0], 3}};
+  tpl.selcstruc = {{[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1]}};
+  tpl.shadedplot = {{(1:n)' * Ts, y, y + 0.1}};
+  tpl.simc = {{M, data}, {M, u, Ts}, {thm, [2 1 0], data}};
+  tpl.simc_hw = {{hw, data}};
+  tpl.sineresp = {{M, 1, (0:n-1)' * Ts}};
+  tpl.spafdr = {{data}, {data, 20, w}};
+  tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, {data, [1 2 0], "lambda", 3}};
+  tpl.srivcstruc = {{data, data, [1 2 0; 2 2 0]}, {data, [], [1 1 0; 2 2 0]}};
+  tpl.stepplot = {{M}, {M, "r", P}};
+  tpl.svfcutoff = {{long, [1 2 0]}};
+  tpl.svfscaling = {{data, [2 1 0], "lambda_svf", 3}};
+  tpl.tfcoe = {{data, 2, 1}, {data, 2, 0, 0.1}};
+  tpl.tfest = {{data, 2}, {data, 2, 1}, {frd, 2, 0}};
+  tpl.tfestOptions = {{}, {"InitialCondition", "zero"}};
+  tpl.tffcoe = {{frd, 2, 0}, {frd, M}};
+  tpl.tffsrivc = {{frd, 2, 0}, {frd, M}};
+  tpl.tfrivc = {{data, 2, 1}, {data, 2, 0, "NN", [1 1]}};
+  tpl.tfsrivc = {{data, 2, 1}, {data, M}};
+  tpl.tfsrivc_init = {{data, 2, 1}};
+  ts = throttlesim ("duration", 1, "noisevar", 0);
+  tpl.throttleid = {{ts, "clrsrivc", "tsiv", 0.5}};
+  tpl.throttleparams = {{}};
+  tpl.throttlesim = {{}, {0.5 * ones(50, 1), 1e-3}};
+endfunction
