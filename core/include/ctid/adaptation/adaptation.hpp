@@ -17,11 +17,22 @@
 // exactly symmetric. After each step the covariance protection of
 // covariance_guard.hpp checks P when asked (the estimators' default). No
 // allocation happens in update().
+//
+// Fixed-size path (issue 14): configured with fixed_size = true and
+// np <= kMaxFixedParameters (the parameter counts orders 1-4 produce), the
+// least-squares step runs on compile-time-size maps of the same storage
+// (theta, P, Qn), with lambda and the adaptation kind read once at
+// configure instead of through the variant every sample. The arithmetic is
+// that of the dynamic step, in the same order; the guard is applied to the
+// same P by the same object, so it acts exactly as on the dynamic path.
+// The dynamic code stays for larger np, for the IV step and as the
+// reference. The guard runs its tests with n = N at compile time.
 #pragma once
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "ctid/adaptation/covariance_guard.hpp"
@@ -134,13 +145,17 @@ S kappa_2(const Matrix<S>& P) {
   return sv(0) / sv(sv.size() - 1);
 }
 
+// Largest parameter count of the fixed-size least-squares step: na = 4,
+// nb = 4.
+constexpr int kMaxFixedParameters = 8;
+
 template <typename S>
 class ParameterUpdate {
  public:
   ParameterUpdate() = default;
   ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation,
-                  bool covariance_guard = false) {
-    configure(np, std::move(adaptation), covariance_guard);
+                  bool covariance_guard = false, bool fixed_size = false) {
+    configure(np, std::move(adaptation), covariance_guard, fixed_size);
   }
 
   // covariance_guard: the protection of P (covariance_guard.hpp) after
@@ -150,9 +165,16 @@ class ParameterUpdate {
   // legitimate, and the guard would change it); the estimators
   // (LeastSquaresUpdate: RLSSVF, RIVSVF, RSRIVC, CL*) turn it on by
   // default through their configs.
+  // fixed_size: the compile-time-size least-squares step when np <=
+  // kMaxFixedParameters (chosen here, once).
   void configure(Eigen::Index np, Adaptation<S> adaptation,
-                 bool covariance_guard = false) {
+                 bool covariance_guard = false, bool fixed_size = false) {
     adaptation_ = std::move(adaptation);
+    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
+    kalman_ = std::holds_alternative<KalmanAdaptation<S>>(adaptation_);
+    offset_ = offset();
+    scale_ = std::visit([](const auto& a) { return a.covariance_scale(); },
+                        adaptation_);
     guard_.configure(np, covariance_guard);
     theta_ = Vector<S>::Zero(np);
     P_ = Matrix<S>::Identity(np, np);
@@ -171,6 +193,19 @@ class ParameterUpdate {
   // target - phi^T theta(t_(k-1)), eq. (1.55).
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    if constexpr (std::is_same_v<Derived, Vector<S>>) {
+      switch (fixed_np_) {
+        case 1: return update_fixed<1>(phi.derived().data(), target);
+        case 2: return update_fixed<2>(phi.derived().data(), target);
+        case 3: return update_fixed<3>(phi.derived().data(), target);
+        case 4: return update_fixed<4>(phi.derived().data(), target);
+        case 5: return update_fixed<5>(phi.derived().data(), target);
+        case 6: return update_fixed<6>(phi.derived().data(), target);
+        case 7: return update_fixed<7>(phi.derived().data(), target);
+        case 8: return update_fixed<8>(phi.derived().data(), target);
+        default: break;
+      }
+    }
     predict();
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * phi;
@@ -221,8 +256,44 @@ class ParameterUpdate {
   // What the covariance protection did to P at the last step (a
   // CovarianceGuardAction mask).
   int covariance_guard() const { return guard_.last_action(); }
+  // N of the fixed-size step in use, 0 for the dynamic one.
+  int fixed_size() const { return fixed_np_; }
 
  private:
+  // The least-squares step above for np = N, on fixed-size maps of theta_,
+  // P_ and Qn: same operations in the same order, unrolled.
+  template <int N>
+  S update_fixed(const S* phi_data, S target) {
+    using Vec = Eigen::Matrix<S, N, 1>;
+    using Mat = Eigen::Matrix<S, N, N>;
+    const Eigen::Map<const Vec> phi(phi_data);
+    Eigen::Map<Vec> theta(theta_.data());
+    Eigen::Map<Mat> P(P_.data());
+    if (kalman_) {
+      P += Eigen::Map<const Mat>(
+          std::get<KalmanAdaptation<S>>(adaptation_).qn().data());
+    }
+    const S error = target - phi.dot(theta);
+    const Vec pz = P * phi;
+    const S denominator = offset_ + phi.dot(pz);
+    innovation_scale_ = denominator;
+    Eigen::Map<Vec> gain(gain_.data());
+    gain = pz / denominator;
+    theta += gain * error;
+    // Lower triangle column by column as rankUpdate does, then mirrored.
+    const S alpha = -1 / denominator;
+    for (int j = 0; j < N; ++j) {
+      const S a = alpha * pz(j);
+      for (int i = j; i < N; ++i) P(i, j) += a * pz(i);
+    }
+    for (int j = 1; j < N; ++j) {
+      for (int i = 0; i < j; ++i) P(i, j) = P(j, i);
+    }
+    if (scale_ != S(1)) P *= scale_;
+    guard_.template apply<N>(P_);
+    return error;
+  }
+
   void predict() {
     std::visit([this](const auto& a) { a.predict(P_); }, adaptation_);
   }
@@ -244,6 +315,10 @@ class ParameterUpdate {
   Vector<S> gain_;
   S innovation_scale_ = 1;
   CovarianceGuard<S> guard_;
+  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
+  bool kalman_ = false;
+  S offset_ = 1;
+  S scale_ = 1;
 };
 
 }  // namespace ctid

@@ -93,12 +93,16 @@ class CovarianceGuard {
     last_ = kGuardNone;
   }
 
-  template <typename Derived>
+  // K: the size n as a compile-time constant for the fixed-size kernels
+  // (adaptation.hpp), which then run the same tests in the same order with
+  // unrolled loops; Eigen::Dynamic (the default) reads n at run time.
+  template <int K = Eigen::Dynamic, typename Derived>
   int apply(Eigen::MatrixBase<Derived>& P) {
     last_ = kGuardNone;
     if (!enabled_ || n_ == 0) return last_;
+    const Eigen::Index n = K == Eigen::Dynamic ? n_ : Eigen::Index(K);
     bool suspect = false;
-    for (Eigen::Index i = 0; i < n_; ++i) {
+    for (Eigen::Index i = 0; i < n; ++i) {
       const S pii = P(i, i);
       if (!std::isfinite(pii)) return last_;  // the run reports it
       suspect = suspect || !(pii > 0);
@@ -109,8 +113,8 @@ class CovarianceGuard {
         last_ |= kGuardCeiling;
       }
     }
-    for (Eigen::Index j = 0; j < n_ && !suspect; ++j) {
-      for (Eigen::Index i = j + 1; i < n_; ++i) {
+    for (Eigen::Index j = 0; j < n && !suspect; ++j) {
+      for (Eigen::Index i = j + 1; i < n; ++i) {
         const S s = (P(i, j) + P(j, i)) / 2;
         if (!(s * s < P(i, i) * P(j, j))) {
           suspect = true;
@@ -120,7 +124,7 @@ class CovarianceGuard {
     }
     if (!suspect && ++since_check_ < period_) return last_;
     since_check_ = 0;
-    if (!suspect && definite(P)) return last_;
+    if (!suspect && definite<K>(P)) return last_;
     repair(P);
     last_ |= kGuardRepair;
     return last_;
@@ -133,9 +137,10 @@ class CovarianceGuard {
   static S range_ceiling() { return std::sqrt(std::numeric_limits<S>::max()); }
 
   // LDL^T of Ps in the lower triangle of work_, each pivot > rho Ps_jj.
-  template <typename Derived>
+  template <int K, typename Derived>
   bool definite(const Eigen::MatrixBase<Derived>& P) {
-    for (Eigen::Index j = 0; j < n_; ++j) {
+    const Eigen::Index n = K == Eigen::Dynamic ? n_ : Eigen::Index(K);
+    for (Eigen::Index j = 0; j < n; ++j) {
       S dj = P(j, j);
       for (Eigen::Index k = 0; k < j; ++k) {
         v_(k) = work_(j, k) * pivots_(k);
@@ -143,7 +148,7 @@ class CovarianceGuard {
       }
       if (!(dj > rho_ * P(j, j))) return false;
       pivots_(j) = dj;
-      for (Eigen::Index i = j + 1; i < n_; ++i) {
+      for (Eigen::Index i = j + 1; i < n; ++i) {
         S lij = (P(i, j) + P(j, i)) / 2;
         for (Eigen::Index k = 0; k < j; ++k) lij -= work_(i, k) * v_(k);
         work_(i, j) = lij / dj;

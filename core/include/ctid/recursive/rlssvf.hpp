@@ -156,7 +156,8 @@ class LeastSquaresUpdate {
  public:
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
-                 const Vector<S>& scaling, bool covariance_guard = true) {
+                 const Vector<S>& scaling, bool covariance_guard = true,
+                 bool fixed_size = false) {
     form_ = form;
     m_ = scaling;
     const bool scaled = m_.size() != 0;
@@ -164,7 +165,7 @@ class LeastSquaresUpdate {
         scaled ? scaled_adaptation(adaptation, m_) : adaptation;
     switch (form_) {
       case UpdateForm::kStandard:
-        standard_.configure(n, a, covariance_guard);
+        standard_.configure(n, a, covariance_guard, fixed_size);
         break;
       case UpdateForm::kPotter:
         potter_.configure(n, a);
@@ -359,8 +360,11 @@ class RlsSvf {
       ic_regressor_.configure(config.orders.na, svf.lambda_svf, svf.normalised);
     }
     regressor_.configure(config.orders, svf);
+    // The fixed-size least-squares step goes with the fixed-size filter
+    // kernels (svf.kernels, chosen once here).
     update_.configure(n, config.form, config.adaptation, config.lmr_gamma,
-                      config.scaling, config.covariance_guard);
+                      config.scaling, config.covariance_guard,
+                      svf.kernels == FilterKernels::kFixedSize);
     phi_ = Vector<S>::Zero(n);
     reset();
     return Status::Ok();
