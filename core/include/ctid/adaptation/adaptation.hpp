@@ -260,37 +260,98 @@ class ParameterUpdate {
   int fixed_size() const { return fixed_np_; }
 
  private:
-  // The least-squares step above for np = N, on fixed-size maps of theta_,
-  // P_ and Qn: same operations in the same order, unrolled.
+  // The least-squares step above for np = N, unrolled scalar code on local
+  // copies of phi, theta and P (P column-major as P_: p[j][i] = P(i, j)),
+  // written back once: through the members' storage every store would make
+  // the compiler reload the rest (all of it S*), and Eigen's packet copies
+  // of these small objects reload, 16 bytes at a time, values just stored
+  // 8 bytes at a time, which stalls store forwarding. The same operations
+  // as the dynamic step, the sums in the order of its products; the guard
+  // then tests the stored P with n = N fixed (covariance_guard.hpp).
   template <int N>
   S update_fixed(const S* phi_data, S target) {
-    using Vec = Eigen::Matrix<S, N, 1>;
-    using Mat = Eigen::Matrix<S, N, N>;
-    const Eigen::Map<const Vec> phi(phi_data);
-    Eigen::Map<Vec> theta(theta_.data());
-    Eigen::Map<Mat> P(P_.data());
-    if (kalman_) {
-      P += Eigen::Map<const Mat>(
-          std::get<KalmanAdaptation<S>>(adaptation_).qn().data());
+    S phi[N], theta[N], p[N][N], pz[N], gain[N];
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      phi[i] = phi_data[i];
+      theta[i] = theta_.data()[i];
     }
-    const S error = target - phi.dot(theta);
-    const Vec pz = P * phi;
-    const S denominator = offset_ + phi.dot(pz);
-    innovation_scale_ = denominator;
-    Eigen::Map<Vec> gain(gain_.data());
-    gain = pz / denominator;
-    theta += gain * error;
-    // Lower triangle column by column as rankUpdate does, then mirrored.
-    const S alpha = -1 / denominator;
+    const S* P_in = P_.data();
+#pragma GCC unroll 8
     for (int j = 0; j < N; ++j) {
-      const S a = alpha * pz(j);
-      for (int i = j; i < N; ++i) P(i, j) += a * pz(i);
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
     }
+    if (kalman_) {  // P- = P + Qn
+      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
+      }
+    }
+    S prediction = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    const S error = target - prediction;
+    // P- phi, column by column.
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) pz[i] = p[0][i] * phi[0];
+#pragma GCC unroll 8
     for (int j = 1; j < N; ++j) {
-      for (int i = 0; i < j; ++i) P(i, j) = P(j, i);
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) pz[i] += p[j][i] * phi[j];
     }
-    if (scale_ != S(1)) P *= scale_;
-    guard_.template apply<N>(P_);
+    S phi_pz = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) phi_pz += phi[i] * pz[i];
+    const S denominator = offset_ + phi_pz;
+    innovation_scale_ = denominator;
+    // One division instead of N + 1: the gain is pz times 1/den, within
+    // one rounding of the dynamic step's pz / den; P's update below uses
+    // the same -1/den as there, so P, all the guard sees, is unchanged.
+    const S inverse = 1 / denominator;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      gain[i] = pz[i] * inverse;
+      theta[i] += gain[i] * error;
+    }
+    // Lower triangle column by column as rankUpdate does, then mirrored.
+    const S alpha = -inverse;
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+      const S a = alpha * pz[j];
+#pragma GCC unroll 8
+      for (int i = j; i < N; ++i) p[j][i] += a * pz[i];
+    }
+#pragma GCC unroll 8
+    for (int j = 1; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < j; ++i) p[j][i] = p[i][j];
+    }
+    const S scale = scale_;  // read once: the stores below may alias it
+    if (scale != S(1)) {
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] *= scale;
+      }
+    }
+    S* P_data = P_.data();
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) P_data[j * N + i] = p[j][i];
+    }
+    S* theta_data = theta_.data();
+    S* gain_data = gain_.data();
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      theta_data[i] = theta[i];
+      gain_data[i] = gain[i];
+    }
+    Eigen::Map<Eigen::Matrix<S, N, N>> P(P_data);
+    guard_.template apply_symmetric<N>(p, P);
     return error;
   }
 

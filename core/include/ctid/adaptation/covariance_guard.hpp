@@ -42,7 +42,8 @@
 // apply() returns what it did (kGuardRepair, kGuardCeiling, both, or
 // kGuardNone) and allocates nothing; a non-finite P is left to the run's
 // check of the estimates. Templated on the size (N fixed or
-// Eigen::Dynamic) so that fixed-size kernels can hold one.
+// Eigen::Dynamic) so that fixed-size kernels can hold one; apply_symmetric()
+// is apply() unrolled for the fixed-size least-squares step.
 #pragma once
 
 #include <algorithm>
@@ -93,16 +94,12 @@ class CovarianceGuard {
     last_ = kGuardNone;
   }
 
-  // K: the size n as a compile-time constant for the fixed-size kernels
-  // (adaptation.hpp), which then run the same tests in the same order with
-  // unrolled loops; Eigen::Dynamic (the default) reads n at run time.
-  template <int K = Eigen::Dynamic, typename Derived>
+  template <typename Derived>
   int apply(Eigen::MatrixBase<Derived>& P) {
     last_ = kGuardNone;
     if (!enabled_ || n_ == 0) return last_;
-    const Eigen::Index n = K == Eigen::Dynamic ? n_ : Eigen::Index(K);
     bool suspect = false;
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < n_; ++i) {
       const S pii = P(i, i);
       if (!std::isfinite(pii)) return last_;  // the run reports it
       suspect = suspect || !(pii > 0);
@@ -113,8 +110,8 @@ class CovarianceGuard {
         last_ |= kGuardCeiling;
       }
     }
-    for (Eigen::Index j = 0; j < n && !suspect; ++j) {
-      for (Eigen::Index i = j + 1; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n_ && !suspect; ++j) {
+      for (Eigen::Index i = j + 1; i < n_; ++i) {
         const S s = (P(i, j) + P(j, i)) / 2;
         if (!(s * s < P(i, i) * P(j, j))) {
           suspect = true;
@@ -124,7 +121,51 @@ class CovarianceGuard {
     }
     if (!suspect && ++since_check_ < period_) return last_;
     since_check_ = 0;
-    if (!suspect && definite<K>(P)) return last_;
+    if (!suspect && definite(P)) return last_;
+    repair(P);
+    last_ |= kGuardRepair;
+    return last_;
+  }
+
+  // apply() for n = K known at compile time and a P known to be exactly
+  // symmetric (the fixed-size least-squares step of adaptation.hpp, which
+  // mirrors its lower triangle), whose entries the caller also holds in p
+  // (column-major, p[j][i] = P(i, j)): the tests run on p, unrolled, with
+  // the factor in local arrays, and reach P only to act on it. The same
+  // decisions, counters and repairs as apply(), bit for bit:
+  //   - a variance that is not finite, not > 0 or above the ceiling hands
+  //     the step to apply() (which returns or acts);
+  //   - otherwise the tests read s_ij = P(i, j) where apply() forms
+  //     (P(i, j) + P(j, i)) / 2: the same number for a symmetric P (the
+  //     sum of two equal numbers and the halving are exact) unless
+  //     |P(i, j)| > max / 2, where both fail the correlation test (s^2
+  //     overflows) and never reach the factorisation;
+  //   - the correlation tests are all evaluated, without branches,
+  //     instead of stopping at the first failure: the same verdict.
+  template <int K, typename Derived>
+  int apply_symmetric(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
+    if (!enabled_ || n_ == 0) {
+      last_ = kGuardNone;
+      return last_;
+    }
+    bool usual = true;
+#pragma GCC unroll 8
+    for (int i = 0; i < K; ++i) {
+      usual = usual & (p[i][i] > 0) & (p[i][i] <= ceiling_);
+    }
+    if (!usual) return apply(P);
+    last_ = kGuardNone;
+    bool suspect = false;
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) {
+#pragma GCC unroll 8
+      for (int i = j + 1; i < K; ++i) {
+        suspect = suspect | !(p[j][i] * p[j][i] < p[i][i] * p[j][j]);
+      }
+    }
+    if (!suspect && ++since_check_ < period_) return last_;
+    since_check_ = 0;
+    if (!suspect && definite_symmetric<K>(p)) return last_;
     repair(P);
     last_ |= kGuardRepair;
     return last_;
@@ -137,10 +178,9 @@ class CovarianceGuard {
   static S range_ceiling() { return std::sqrt(std::numeric_limits<S>::max()); }
 
   // LDL^T of Ps in the lower triangle of work_, each pivot > rho Ps_jj.
-  template <int K, typename Derived>
+  template <typename Derived>
   bool definite(const Eigen::MatrixBase<Derived>& P) {
-    const Eigen::Index n = K == Eigen::Dynamic ? n_ : Eigen::Index(K);
-    for (Eigen::Index j = 0; j < n; ++j) {
+    for (Eigen::Index j = 0; j < n_; ++j) {
       S dj = P(j, j);
       for (Eigen::Index k = 0; k < j; ++k) {
         v_(k) = work_(j, k) * pivots_(k);
@@ -148,10 +188,36 @@ class CovarianceGuard {
       }
       if (!(dj > rho_ * P(j, j))) return false;
       pivots_(j) = dj;
-      for (Eigen::Index i = j + 1; i < n; ++i) {
+      for (Eigen::Index i = j + 1; i < n_; ++i) {
         S lij = (P(i, j) + P(j, i)) / 2;
         for (Eigen::Index k = 0; k < j; ++k) lij -= work_(i, k) * v_(k);
         work_(i, j) = lij / dj;
+      }
+    }
+    return true;
+  }
+
+  // definite() on the symmetric p of apply_symmetric(), the factor in
+  // local arrays: the same operations in the same order.
+  template <int K>
+  bool definite_symmetric(const S (&p)[K][K]) const {
+    S L[K][K], pivots[K], v[K];
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) {
+      S dj = p[j][j];
+#pragma GCC unroll 8
+      for (int k = 0; k < j; ++k) {
+        v[k] = L[j][k] * pivots[k];
+        dj -= L[j][k] * v[k];
+      }
+      if (!(dj > rho_ * p[j][j])) return false;
+      pivots[j] = dj;
+#pragma GCC unroll 8
+      for (int i = j + 1; i < K; ++i) {
+        S lij = p[j][i];
+#pragma GCC unroll 8
+        for (int k = 0; k < j; ++k) lij -= L[i][k] * v[k];
+        L[i][j] = lij / dj;
       }
     }
     return true;
