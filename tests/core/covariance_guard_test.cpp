@@ -212,8 +212,8 @@ void expect_symmetric_test_matches_apply() {
     if (kind <= 6) lambda(0) = smallest[kind];
     Eigen::MatrixXd C = with_eigenvalues(lambda, 700 + trial);
     C = (C + C.transpose()).eval() / 2;  // exactly symmetric
-    const Eigen::VectorXd scales =
-        Eigen::VectorXd::LinSpaced(K, 0, 8 * (trial % 3)).array().exp10();
+    Eigen::VectorXd scales = Eigen::VectorXd::LinSpaced(K, 0, 8 * (trial % 3));
+    for (int i = 0; i < K; ++i) scales(i) = std::pow(10.0, scales(i));
     Mat P = scales.asDiagonal() * C * scales.asDiagonal();
     for (int j = 0; j < K; ++j) {
       for (int i = 0; i < j; ++i) P(i, j) = P(j, i);
