@@ -460,6 +460,100 @@ void expect_no_allocation(int n) {
       << "frozen model (YH), n = " << n;
 }
 
+// The fixed-size least-squares step of ParameterUpdate (adaptation.hpp)
+// against the dynamic one, np = 1..8 (every count orders 1-4 give, odd
+// ones included), KF and FF, on the same regressors, step by step: theta,
+// P, the gain and the innovation scale to `tol` relative to their norms,
+// the covariance guard's action identical at every step. Random
+// regressors, then regressors confined to one direction: with lambda = 0.9
+// the windup reaches the guard's ceiling in float (in double the variance
+// only grows). A P(t_0) the guard must repair amplified the rounding of
+// the first steps past 1e-12 and is not part of this record. The fixed step
+// must not allocate.
+template <typename S>
+void expect_update_paths_agree(int np, bool kalman, double tol) {
+  const std::string what = std::string(kalman ? "KF" : "FF") +
+                           " np = " + std::to_string(np) +
+                           (sizeof(S) == 4 ? " float" : " double");
+  const Adaptation<S> adaptation =
+      kalman ? Adaptation<S>(KalmanAdaptation<S>(
+                   Matrix<S>(S(1e-4) * Matrix<S>::Identity(np, np))))
+             : Adaptation<S>(ForgettingFactorAdaptation<S>(S(0.9)));
+  ParameterUpdate<S> fixed(np, adaptation, true, true);
+  ParameterUpdate<S> dynamic(np, adaptation, true, false);
+  ASSERT_EQ(fixed.fixed_size(), np) << what;
+  ASSERT_EQ(dynamic.fixed_size(), 0) << what;
+  const Matrix<S> P0 = S(100) * Matrix<S>::Identity(np, np);
+  fixed.reset(Vector<S>::Zero(np), P0);
+  dynamic.reset(Vector<S>::Zero(np), P0);
+  std::mt19937_64 rng(500 + np);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Vector<S> truth(np);
+  for (int i = 0; i < np; ++i) truth(i) = S(1 + 0.5 * i);
+  Vector<S> phi(np);
+  int repairs = 0, ceilings = 0;
+  long allocations = 0;
+  for (int k = 0; k < 1500; ++k) {
+    for (int i = 0; i < np; ++i) {
+      // From k = 300 on: one direction only, the others wind up.
+      phi(i) = S(k < 300 || i == 0 ? normal(rng) : 0.0);
+    }
+    const S target = phi.dot(truth) + S(0.01 * normal(rng));
+    // The gain P^- phi / den to the rounding of the product: relative to
+    // ||P^-|| ||phi|| / |den|, not to its own norm (cancellation).
+    const double p_norm = double(dynamic.P().norm());
+    const long before = g_allocations.load();
+    const S error_fixed = fixed.update(phi, target);
+    allocations += g_allocations.load() - before;
+    const S error_dynamic = dynamic.update(phi, target);
+    ASSERT_EQ(fixed.covariance_guard(), dynamic.covariance_guard())
+        << what << ", step " << k;
+    repairs += (dynamic.covariance_guard() & kGuardRepair) != 0;
+    ceilings += (dynamic.covariance_guard() & kGuardCeiling) != 0;
+    const auto near = [&](const auto& a, const auto& b) {
+      const Eigen::MatrixXd ad = a.template cast<double>();
+      const Eigen::MatrixXd bd = b.template cast<double>();
+      return (ad - bd).norm() <= tol * std::max(bd.norm(), 1e-300);
+    };
+    ASSERT_TRUE(near(fixed.theta(), dynamic.theta())) << what << ", " << k;
+    ASSERT_TRUE(near(fixed.P(), dynamic.P())) << what << ", step " << k;
+    const double gain_scale = p_norm * double(phi.norm()) /
+                              std::abs(double(dynamic.innovation_scale()));
+    ASSERT_LE(double((fixed.gain() - dynamic.gain()).norm()),
+              tol * std::max(double(dynamic.gain().norm()), gain_scale))
+        << what << ", step " << k;
+    ASSERT_NEAR(double(fixed.innovation_scale()),
+                double(dynamic.innovation_scale()),
+                tol * std::abs(double(dynamic.innovation_scale())))
+        << what << ", step " << k;
+    ASSERT_NEAR(double(error_fixed), double(error_dynamic),
+                tol * std::max(1.0, std::abs(double(error_dynamic))))
+        << what << ", step " << k;
+  }
+  EXPECT_TRUE(fixed.P() == fixed.P().transpose()) << what;
+  std::printf("%s: %d repairs, %d ceilings\n", what.c_str(), repairs,
+              ceilings);
+  if (sizeof(S) == 4 && !kalman && np > 1) {
+    EXPECT_GE(ceilings, 1) << what << ": the windup never hit the ceiling";
+  }
+  EXPECT_EQ(allocations, 0) << what;
+}
+
+TEST(CompanionKernels, FixedSizeUpdateAgreesWithTheDynamicStep) {
+  const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
+  for (int np = 1; np <= kMaxFixedParameters; ++np) {
+    for (const bool kalman : {true, false}) {
+      expect_update_paths_agree<double>(np, kalman, 1e-12);
+      expect_update_paths_agree<float>(np, kalman, float_tol);
+    }
+  }
+  // Beyond kMaxFixedParameters the dynamic step is kept.
+  ParameterUpdate<double> large(kMaxFixedParameters + 1,
+                                ForgettingFactorAdaptation<double>(1), true,
+                                true);
+  EXPECT_EQ(large.fixed_size(), 0);
+}
+
 TEST(CompanionKernels, PerSamplePathsDoNotAllocate) {
   {  // the counter works: an allocation is seen
     const long probe = g_allocations.load();

@@ -13,7 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include "allocation_counter.hpp"
 #include "long_run_scenario.hpp"
@@ -185,6 +187,85 @@ TEST(CovarianceGuard, NoAllocationAndFixedSizeAlike) {
   EXPECT_EQ(dynamic.apply(a), kGuardNone);
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_TRUE(test::MatrixNear(a, Eigen::MatrixXd(b), 1e-15));
+}
+
+// apply_symmetric<K> (the unrolled test of the fixed-size least-squares
+// step) against apply() on the same exactly symmetric matrices, K = 1..8:
+// positive definite ones from well to barely conditioned (smallest
+// eigenvalue of the correlation form around the detection level rho =
+// n eps), indefinite ones, a variance that is zero, negative, NaN or above
+// the ceiling, an off-diagonal entry above max / 2. The same action at
+// every call and the same P bit for bit, over two calls in a row (the
+// counters carry over).
+template <int K>
+void expect_symmetric_test_matches_apply() {
+  using Mat = Eigen::Matrix<double, K, K>;
+  const double eps = std::numeric_limits<double>::epsilon();
+  int acted = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    Eigen::VectorXd lambda = Eigen::VectorXd::LinSpaced(K, 1, 2);
+    const int kind = trial % 10;
+    // The smallest eigenvalue from comfortable to the detection level
+    // rho = K eps and below it, then negative.
+    const double smallest[7] = {1,       1e-6,         1e-10,  1e3 * K * eps,
+                                K * eps, 0.5 * K * eps, -1e-10};
+    if (kind <= 6) lambda(0) = smallest[kind];
+    Eigen::MatrixXd C = with_eigenvalues(lambda, 700 + trial);
+    C = (C + C.transpose()).eval() / 2;  // exactly symmetric
+    Eigen::VectorXd scales = Eigen::VectorXd::LinSpaced(K, 0, 8 * (trial % 3));
+    for (int i = 0; i < K; ++i) scales(i) = std::pow(10.0, scales(i));
+    Mat P = scales.asDiagonal() * C * scales.asDiagonal();
+    for (int j = 0; j < K; ++j) {
+      for (int i = 0; i < j; ++i) P(i, j) = P(j, i);
+    }
+    const int last = K - 1;
+    if (kind == 7) P(last, last) = trial % 2 ? 0.0 : -1.0;
+    if (kind == 8) {
+      P(last, last) =
+          trial % 4 == 0 ? std::numeric_limits<double>::quiet_NaN() : 1e160;
+    }
+    if (kind == 9 && K > 1) {
+      P(last, 0) = P(0, last) = 1e308;
+      P(0, 0) = P(last, last) = 1e300;
+    }
+    CovarianceGuard<double> dynamic, fixed;
+    dynamic.configure(K, true);
+    fixed.configure(K, true);
+    if (kind == 9) {  // a ceiling of 1e300, raised by P(t_0)
+      dynamic.reset(P);
+      fixed.reset(P);
+    }
+    Eigen::MatrixXd a = P;
+    Mat b = P;
+    for (int call = 0; call < 2; ++call) {
+      double p[K][K];
+      for (int j = 0; j < K; ++j) {
+        for (int i = 0; i < K; ++i) p[j][i] = b(i, j);
+      }
+      if (!(b == b.transpose())) break;  // a repair may leave it asymmetric
+      const int expected = dynamic.apply(a);
+      const int got = fixed.apply_symmetric<K>(p, b);
+      acted += expected != kGuardNone;
+      ASSERT_EQ(got, expected) << "K = " << K << ", trial " << trial;
+      const Eigen::MatrixXd bd = b;
+      ASSERT_TRUE((a.array() == bd.array() ||
+                   (a.array().isNaN() && bd.array().isNaN()))
+                      .all())
+          << "K = " << K << ", trial " << trial;
+    }
+  }
+  EXPECT_GE(acted, 10) << "K = " << K << ": the cases never made it act";
+}
+
+TEST(CovarianceGuard, UnrolledSymmetricTestDecidesAsApply) {
+  expect_symmetric_test_matches_apply<1>();
+  expect_symmetric_test_matches_apply<2>();
+  expect_symmetric_test_matches_apply<3>();
+  expect_symmetric_test_matches_apply<4>();
+  expect_symmetric_test_matches_apply<5>();
+  expect_symmetric_test_matches_apply<6>();
+  expect_symmetric_test_matches_apply<7>();
+  expect_symmetric_test_matches_apply<8>();
 }
 
 // A short run (20 s excited, 180 s constant) is not touched: every

@@ -17,11 +17,22 @@
 // exactly symmetric. After each step the covariance protection of
 // covariance_guard.hpp checks P when asked (the estimators' default). No
 // allocation happens in update().
+//
+// Fixed-size path (issue 14): configured with fixed_size = true and
+// np <= kMaxFixedParameters (the parameter counts orders 1-4 produce), the
+// least-squares step runs on compile-time-size maps of the same storage
+// (theta, P, Qn), with lambda and the adaptation kind read once at
+// configure instead of through the variant every sample. The arithmetic is
+// that of the dynamic step, in the same order; the guard is applied to the
+// same P by the same object, so it acts exactly as on the dynamic path.
+// The dynamic code stays for larger np, for the IV step and as the
+// reference. The guard runs its tests with n = N at compile time.
 #pragma once
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "ctid/adaptation/covariance_guard.hpp"
@@ -134,13 +145,17 @@ S kappa_2(const Matrix<S>& P) {
   return sv(0) / sv(sv.size() - 1);
 }
 
+// Largest parameter count of the fixed-size least-squares step: na = 4,
+// nb = 4.
+constexpr int kMaxFixedParameters = 8;
+
 template <typename S>
 class ParameterUpdate {
  public:
   ParameterUpdate() = default;
   ParameterUpdate(Eigen::Index np, Adaptation<S> adaptation,
-                  bool covariance_guard = false) {
-    configure(np, std::move(adaptation), covariance_guard);
+                  bool covariance_guard = false, bool fixed_size = false) {
+    configure(np, std::move(adaptation), covariance_guard, fixed_size);
   }
 
   // covariance_guard: the protection of P (covariance_guard.hpp) after
@@ -150,9 +165,16 @@ class ParameterUpdate {
   // legitimate, and the guard would change it); the estimators
   // (LeastSquaresUpdate: RLSSVF, RIVSVF, RSRIVC, CL*) turn it on by
   // default through their configs.
+  // fixed_size: the compile-time-size least-squares step when np <=
+  // kMaxFixedParameters (chosen here, once).
   void configure(Eigen::Index np, Adaptation<S> adaptation,
-                 bool covariance_guard = false) {
+                 bool covariance_guard = false, bool fixed_size = false) {
     adaptation_ = std::move(adaptation);
+    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
+    kalman_ = std::holds_alternative<KalmanAdaptation<S>>(adaptation_);
+    offset_ = offset();
+    scale_ = std::visit([](const auto& a) { return a.covariance_scale(); },
+                        adaptation_);
     guard_.configure(np, covariance_guard);
     theta_ = Vector<S>::Zero(np);
     P_ = Matrix<S>::Identity(np, np);
@@ -171,6 +193,19 @@ class ParameterUpdate {
   // target - phi^T theta(t_(k-1)), eq. (1.55).
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    if constexpr (std::is_same_v<Derived, Vector<S>>) {
+      switch (fixed_np_) {
+        case 1: return update_fixed<1>(phi.derived().data(), target);
+        case 2: return update_fixed<2>(phi.derived().data(), target);
+        case 3: return update_fixed<3>(phi.derived().data(), target);
+        case 4: return update_fixed<4>(phi.derived().data(), target);
+        case 5: return update_fixed<5>(phi.derived().data(), target);
+        case 6: return update_fixed<6>(phi.derived().data(), target);
+        case 7: return update_fixed<7>(phi.derived().data(), target);
+        case 8: return update_fixed<8>(phi.derived().data(), target);
+        default: break;
+      }
+    }
     predict();
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * phi;
@@ -221,8 +256,105 @@ class ParameterUpdate {
   // What the covariance protection did to P at the last step (a
   // CovarianceGuardAction mask).
   int covariance_guard() const { return guard_.last_action(); }
+  // N of the fixed-size step in use, 0 for the dynamic one.
+  int fixed_size() const { return fixed_np_; }
 
  private:
+  // The least-squares step above for np = N, unrolled scalar code on local
+  // copies of phi, theta and P (P column-major as P_: p[j][i] = P(i, j)),
+  // written back once: through the members' storage every store would make
+  // the compiler reload the rest (all of it S*), and Eigen's packet copies
+  // of these small objects reload, 16 bytes at a time, values just stored
+  // 8 bytes at a time, which stalls store forwarding. The same operations
+  // as the dynamic step, the sums in the order of its products; the guard
+  // then tests the stored P with n = N fixed (covariance_guard.hpp).
+  template <int N>
+  S update_fixed(const S* phi_data, S target) {
+    S phi[N], theta[N], p[N][N], pz[N], gain[N];
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      phi[i] = phi_data[i];
+      theta[i] = theta_.data()[i];
+    }
+    const S* P_in = P_.data();
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
+    }
+    if (kalman_) {  // P- = P + Qn
+      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
+      }
+    }
+    S prediction = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    const S error = target - prediction;
+    // P- phi, column by column.
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) pz[i] = p[0][i] * phi[0];
+#pragma GCC unroll 8
+    for (int j = 1; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) pz[i] += p[j][i] * phi[j];
+    }
+    S phi_pz = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) phi_pz += phi[i] * pz[i];
+    const S denominator = offset_ + phi_pz;
+    innovation_scale_ = denominator;
+    // One division instead of N + 1: the gain is pz times 1/den, within
+    // one rounding of the dynamic step's pz / den; P's update below uses
+    // the same -1/den as there, so P, all the guard sees, is unchanged.
+    const S inverse = 1 / denominator;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      gain[i] = pz[i] * inverse;
+      theta[i] += gain[i] * error;
+    }
+    // Lower triangle column by column as rankUpdate does, then mirrored.
+    const S alpha = -inverse;
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+      const S a = alpha * pz[j];
+#pragma GCC unroll 8
+      for (int i = j; i < N; ++i) p[j][i] += a * pz[i];
+    }
+#pragma GCC unroll 8
+    for (int j = 1; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < j; ++i) p[j][i] = p[i][j];
+    }
+    const S scale = scale_;  // read once: the stores below may alias it
+    if (scale != S(1)) {
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] *= scale;
+      }
+    }
+    S* P_data = P_.data();
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) P_data[j * N + i] = p[j][i];
+    }
+    S* theta_data = theta_.data();
+    S* gain_data = gain_.data();
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      theta_data[i] = theta[i];
+      gain_data[i] = gain[i];
+    }
+    Eigen::Map<Eigen::Matrix<S, N, N>> P(P_data);
+    guard_.template apply_symmetric<N>(p, P);
+    return error;
+  }
+
   void predict() {
     std::visit([this](const auto& a) { a.predict(P_); }, adaptation_);
   }
@@ -244,6 +376,10 @@ class ParameterUpdate {
   Vector<S> gain_;
   S innovation_scale_ = 1;
   CovarianceGuard<S> guard_;
+  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
+  bool kalman_ = false;
+  S offset_ = 1;
+  S scale_ = 1;
 };
 
 }  // namespace ctid

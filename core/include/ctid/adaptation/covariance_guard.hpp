@@ -42,7 +42,8 @@
 // apply() returns what it did (kGuardRepair, kGuardCeiling, both, or
 // kGuardNone) and allocates nothing; a non-finite P is left to the run's
 // check of the estimates. Templated on the size (N fixed or
-// Eigen::Dynamic) so that fixed-size kernels can hold one.
+// Eigen::Dynamic) so that fixed-size kernels can hold one; apply_symmetric()
+// is apply() unrolled for the fixed-size least-squares step.
 #pragma once
 
 #include <algorithm>
@@ -126,6 +127,50 @@ class CovarianceGuard {
     return last_;
   }
 
+  // apply() for n = K known at compile time and a P known to be exactly
+  // symmetric (the fixed-size least-squares step of adaptation.hpp, which
+  // mirrors its lower triangle), whose entries the caller also holds in p
+  // (column-major, p[j][i] = P(i, j)): the tests run on p, unrolled, with
+  // the factor in local arrays, and reach P only to act on it. The same
+  // decisions, counters and repairs as apply(), bit for bit:
+  //   - a variance that is not finite, not > 0 or above the ceiling hands
+  //     the step to apply() (which returns or acts);
+  //   - otherwise the tests read s_ij = P(i, j) where apply() forms
+  //     (P(i, j) + P(j, i)) / 2: the same number for a symmetric P (the
+  //     sum of two equal numbers and the halving are exact) unless
+  //     |P(i, j)| > max / 2, where both fail the correlation test (s^2
+  //     overflows) and never reach the factorisation;
+  //   - the correlation tests are all evaluated, without branches,
+  //     instead of stopping at the first failure: the same verdict.
+  template <int K, typename Derived>
+  int apply_symmetric(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
+    if (!enabled_ || n_ == 0) {
+      last_ = kGuardNone;
+      return last_;
+    }
+    bool usual = true;
+#pragma GCC unroll 8
+    for (int i = 0; i < K; ++i) {
+      usual = usual & (p[i][i] > 0) & (p[i][i] <= ceiling_);
+    }
+    if (!usual) return apply(P);
+    last_ = kGuardNone;
+    bool suspect = false;
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) {
+#pragma GCC unroll 8
+      for (int i = j + 1; i < K; ++i) {
+        suspect = suspect | !(p[j][i] * p[j][i] < p[i][i] * p[j][j]);
+      }
+    }
+    if (!suspect && ++since_check_ < period_) return last_;
+    since_check_ = 0;
+    if (!suspect && definite_symmetric<K>(p)) return last_;
+    repair(P);
+    last_ |= kGuardRepair;
+    return last_;
+  }
+
   int last_action() const { return last_; }
   bool enabled() const { return enabled_; }
 
@@ -147,6 +192,32 @@ class CovarianceGuard {
         S lij = (P(i, j) + P(j, i)) / 2;
         for (Eigen::Index k = 0; k < j; ++k) lij -= work_(i, k) * v_(k);
         work_(i, j) = lij / dj;
+      }
+    }
+    return true;
+  }
+
+  // definite() on the symmetric p of apply_symmetric(), the factor in
+  // local arrays: the same operations in the same order.
+  template <int K>
+  bool definite_symmetric(const S (&p)[K][K]) const {
+    S L[K][K], pivots[K], v[K];
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) {
+      S dj = p[j][j];
+#pragma GCC unroll 8
+      for (int k = 0; k < j; ++k) {
+        v[k] = L[j][k] * pivots[k];
+        dj -= L[j][k] * v[k];
+      }
+      if (!(dj > rho_ * p[j][j])) return false;
+      pivots[j] = dj;
+#pragma GCC unroll 8
+      for (int i = j + 1; i < K; ++i) {
+        S lij = p[j][i];
+#pragma GCC unroll 8
+        for (int k = 0; k < j; ++k) lij -= L[i][k] * v[k];
+        L[i][j] = lij / dj;
       }
     }
     return true;

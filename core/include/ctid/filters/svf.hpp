@@ -84,6 +84,22 @@ class FilterDiscretization {
   void ensure(S h) {
     const S tolerance = 64 * std::numeric_limits<S>::epsilon();
     if (!dirty_ && std::abs(h - h_) <= tolerance * h_) return;
+    recompute(h);
+  }
+
+  int order() const { return n_; }
+  InterSample intersample() const { return intersample_; }
+  const Vector<S>& denominator() const { return d_; }
+  const Matrix<S>& Phi() const { return Phi_; }
+  const Vector<S>& Gamma() const { return gamma_; }
+  // The fixed-size z <- Phi z + Gamma v of this order, or nullptr.
+  CompanionPropagator<S> propagator() const { return propagator_; }
+
+ private:
+  // The discretisation of the interval h (ensure() keeps the test of
+  // whether it is needed small enough to be inlined in the per-sample
+  // loops).
+  void recompute(S h) {
     if (discretizer_ != nullptr) {
       discretizer_(d_.data(), h, Phi_.data(), gamma_.data());
       h_ = h;
@@ -113,15 +129,6 @@ class FilterDiscretization {
     dirty_ = false;
   }
 
-  int order() const { return n_; }
-  InterSample intersample() const { return intersample_; }
-  const Vector<S>& denominator() const { return d_; }
-  const Matrix<S>& Phi() const { return Phi_; }
-  const Vector<S>& Gamma() const { return gamma_; }
-  // The fixed-size z <- Phi z + Gamma v of this order, or nullptr.
-  CompanionPropagator<S> propagator() const { return propagator_; }
-
- private:
   int n_ = 0;
   InterSample intersample_ = InterSample::kZoh;
   Vector<S> d_;
@@ -183,6 +190,54 @@ class FilterChannel {
       highest -= d(i) * z_(n_ - 1 - i);
     }
     out_(n_) = gain * highest;
+  }
+
+  // step() for a discretisation of compile-time order N with the
+  // fixed-size kernels (disc.propagator() set): z <- Phi z + Gamma v and
+  // the outputs as unrolled scalar code, the sums in the order of the
+  // propagator's product (column by column, then Gamma v). Scalar loads
+  // and stores only: a packet load of values just stored one by one (or
+  // the converse) stalls store forwarding.
+  template <int N>
+  void step_fixed(const FilterDiscretization<S>& disc, S gain, S s) {
+    const S* Phi = disc.Phi().data();
+    const S* Gamma = disc.Gamma().data();
+    const S* d = disc.denominator().data();
+    const bool zoh = disc.intersample() == InterSample::kZoh;
+    S* z = z_.data();
+    S next[N];
+    if (!first_) {
+      const S v = zoh ? s_prev_ : s_prev_ + s;
+      S state[N];
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) state[i] = z[i];
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) next[i] = Phi[i] * state[0];
+#pragma GCC unroll 4
+      for (int l = 1; l < N; ++l) {
+#pragma GCC unroll 4
+        for (int i = 0; i < N; ++i) next[i] += Phi[l * N + i] * state[l];
+      }
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) next[i] += Gamma[i] * v;
+    } else if (!zoh && !rest_at_first_sample_) {
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) next[i] = Gamma[i] * s;
+    } else {
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) next[i] = z[i];
+    }
+    first_ = false;
+    s_prev_ = s;
+    S* out = out_.data();
+    S highest = s;
+#pragma GCC unroll 4
+    for (int i = 0; i < N; ++i) {
+      z[i] = next[i];
+      out[i] = gain * next[i];
+      highest -= d[i] * next[N - 1 - i];
+    }
+    out[N] = gain * highest;
   }
 
   // Replaces s(t_k) of the last step by `s` (ZOH only, where the state at

@@ -65,6 +65,12 @@ class SvfRegressor {
     }
     phi_ = Vector<S>::Zero(orders.num_parameters());
     target_ = 0;
+    // The fixed-size kernels of both discretisations (set by configure
+    // above for these orders) allow the fixed-order step.
+    fixed_order_ = y_disc_.propagator() != nullptr &&
+                           u_disc_.propagator() != nullptr
+                       ? na
+                       : 0;
   }
 
   void reset() {
@@ -75,20 +81,12 @@ class SvfRegressor {
 
   // Feeds u(t_k) (num_inputs values) and y(t_k); h = t_k - t_(k-1).
   void step(const S* u, S y, S h) {
-    const int na = orders_.na;
-    y_disc_.ensure(h);
-    u_disc_.ensure(h);
-    y_channel_.step(y_disc_, gain_, y);
-    const Vector<S>& yf = y_channel_.outputs();
-    for (int i = 0; i < na; ++i) phi_(i) = -yf(na - 1 - i);
-    target_ = yf(na);
-    int offset = na;
-    for (int j = 0; j < orders_.num_inputs(); ++j) {
-      u_channels_[j].step(u_disc_, gain_, delays_[j].push(u[j]));
-      const Vector<S>& uf = u_channels_[j].outputs();
-      const int nb = orders_.nb[j];
-      for (int l = 0; l < nb; ++l) phi_(offset + l) = uf(nb - 1 - l);
-      offset += nb;
+    switch (fixed_order_) {
+      case 1: return step_order<1>(u, y, h);
+      case 2: return step_order<2>(u, y, h);
+      case 3: return step_order<3>(u, y, h);
+      case 4: return step_order<4>(u, y, h);
+      default: return step_order<Eigen::Dynamic>(u, y, h);
     }
   }
 
@@ -97,6 +95,39 @@ class SvfRegressor {
   const ModelOrders& orders() const { return orders_; }
 
  private:
+  // The step with na = N known at compile time (the fixed-size kernels:
+  // the channels' propagation inlined, FilterChannel::step_fixed) or read
+  // at run time (Eigen::Dynamic).
+  template <int N>
+  void step_order(const S* u, S y, S h) {
+    const int na = N == Eigen::Dynamic ? orders_.na : N;
+    y_disc_.ensure(h);
+    u_disc_.ensure(h);
+    channel_step<N>(y_channel_, y_disc_, y);
+    const S* yf = y_channel_.outputs().data();
+    S* phi = phi_.data();
+    for (int i = 0; i < na; ++i) phi[i] = -yf[na - 1 - i];
+    target_ = yf[na];
+    int offset = na;
+    for (int j = 0; j < orders_.num_inputs(); ++j) {
+      channel_step<N>(u_channels_[j], u_disc_, delays_[j].push(u[j]));
+      const S* uf = u_channels_[j].outputs().data();
+      const int nb = orders_.nb[j];
+      for (int l = 0; l < nb; ++l) phi[offset + l] = uf[nb - 1 - l];
+      offset += nb;
+    }
+  }
+
+  template <int N>
+  void channel_step(FilterChannel<S>& channel,
+                    const FilterDiscretization<S>& disc, S s) const {
+    if constexpr (N == Eigen::Dynamic) {
+      channel.step(disc, gain_, s);
+    } else {
+      channel.template step_fixed<N>(disc, gain_, s);
+    }
+  }
+
   ModelOrders orders_;
   FilterDiscretization<S> y_disc_;
   FilterDiscretization<S> u_disc_;
@@ -106,6 +137,7 @@ class SvfRegressor {
   std::vector<DelayLine<S>> delays_;
   Vector<S> phi_;
   S target_ = 0;
+  int fixed_order_ = 0;  // na of the fixed-order step, 0: dynamic
 };
 
 // Initial-condition regressors of RLSSVF, eqs. (3.36)-(3.41):

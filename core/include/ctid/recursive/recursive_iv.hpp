@@ -177,13 +177,17 @@ class RecursiveIv {
       config_.m_theta.denominator = Vector<S>::Ones(1);
     }
     ls_regressor_.configure(orders, config.svf);
+    // The least-squares steps with the fixed-size kernels as in RLSSVF
+    // (rlssvf.hpp), so that before t_s,iv the estimates are RLSSVF's bit
+    // for bit; the IV step stays dynamic.
+    const bool fixed_ls = config.svf.kernels == FilterKernels::kFixedSize;
     update_.configure(np, UpdateForm::kStandard, config.adaptation, Matrix<S>(),
-                      config.scaling, config.covariance_guard);
+                      config.scaling, config.covariance_guard, fixed_ls);
     if (antiwindup()) {
       windup_monitor_.configure(
           np, UpdateForm::kStandard,
           ForgettingFactorAdaptation<S>(config.antiwindup_lambda), Matrix<S>(),
-          config.scaling, config.covariance_guard);
+          config.scaling, config.covariance_guard, fixed_ls);
       eigen_ = Eigen::SelfAdjointEigenSolver<Matrix<S>>(np);
     }
 

@@ -28,6 +28,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "ctid/adaptation/adaptation.hpp"
 #include "ctid/filters/auxiliary_model.hpp"
@@ -156,15 +157,17 @@ class LeastSquaresUpdate {
  public:
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
-                 const Vector<S>& scaling, bool covariance_guard = true) {
+                 const Vector<S>& scaling, bool covariance_guard = true,
+                 bool fixed_size = false) {
     form_ = form;
     m_ = scaling;
     const bool scaled = m_.size() != 0;
+    plain_ = form == UpdateForm::kStandard && !scaled;
     const Adaptation<S> a =
         scaled ? scaled_adaptation(adaptation, m_) : adaptation;
     switch (form_) {
       case UpdateForm::kStandard:
-        standard_.configure(n, a, covariance_guard);
+        standard_.configure(n, a, covariance_guard, fixed_size);
         break;
       case UpdateForm::kPotter:
         potter_.configure(n, a);
@@ -196,6 +199,16 @@ class LeastSquaresUpdate {
   // Least-squares step on phi_f; returns the prediction error.
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    // Standard form without scaling: phi and theta as they are, no copy
+    // (the fixed-size step of ParameterUpdate takes phi's storage).
+    if (plain_) {
+      if constexpr (std::is_same_v<Derived, Vector<S>>) {
+        return standard_.update(phi, target);
+      } else {
+        phi_s_ = phi;
+        return standard_.update(phi_s_, target);
+      }
+    }
     const Vector<S>& p = scaled_regressor(phi, phi_s_);
     S error = 0;
     switch (form_) {
@@ -225,7 +238,9 @@ class LeastSquaresUpdate {
     return error;
   }
 
-  const Vector<S>& theta() const { return theta_; }
+  const Vector<S>& theta() const {
+    return plain_ ? standard_.theta() : theta_;
+  }
   // Unscaled P(t_k) (M_s P_s M_s), formed on request.
   const Matrix<S>& P() const {
     const Matrix<S>& working = working_P();
@@ -330,6 +345,7 @@ class LeastSquaresUpdate {
   }
 
   UpdateForm form_ = UpdateForm::kStandard;
+  bool plain_ = true;  // standard form, no scaling: theta is standard_'s
   ParameterUpdate<S> standard_;
   PotterUpdate<S> potter_;
   LmrUpdate<S> lmr_;
@@ -359,8 +375,11 @@ class RlsSvf {
       ic_regressor_.configure(config.orders.na, svf.lambda_svf, svf.normalised);
     }
     regressor_.configure(config.orders, svf);
+    // The fixed-size least-squares step goes with the fixed-size filter
+    // kernels (svf.kernels, chosen once here).
     update_.configure(n, config.form, config.adaptation, config.lmr_gamma,
-                      config.scaling, config.covariance_guard);
+                      config.scaling, config.covariance_guard,
+                      svf.kernels == FilterKernels::kFixedSize);
     phi_ = Vector<S>::Zero(n);
     reset();
     return Status::Ok();
@@ -389,18 +408,20 @@ class RlsSvf {
     }
     first_ = false;
     regressor_.step(u, y, h);
-    const Eigen::Index np = config_.orders.num_parameters();
-    phi_.head(np) = regressor_.phi();
+    // phi_f itself, or extended by the initial-condition regressors.
+    const Vector<S>* phi = &regressor_.phi();
     if (config_.initial_conditions) {
+      phi_.head(config_.orders.num_parameters()) = regressor_.phi();
       ic_regressor_.step(h);
       phi_.tail(config_.orders.na) = ic_regressor_.phi();
+      phi = &phi_;
     }
     updating_ = elapsed_ >= config_.t_s_ls * (1 - 1e-12) &&
                 since_gap_ >= config_.gap_settle * (1 - 1e-12);
     if (updating_) {
-      prediction_error_ = update_.update(phi_, regressor_.target());
+      prediction_error_ = update_.update(*phi, regressor_.target());
     } else {
-      prediction_error_ = regressor_.target() - phi_.dot(update_.theta());
+      prediction_error_ = regressor_.target() - phi->dot(update_.theta());
     }
     return update_.theta();
   }
