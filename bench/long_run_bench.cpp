@@ -5,7 +5,9 @@
 // FF(0.999), KF; Potter KF, FF(1); LMR FF(0.998); RIVSVF, RSRIVC,
 // CLRIVSVF, CLRSRIVC each FF(1), KF, FF(0.999)+AW) whether P stayed finite
 // with a positive definite symmetric part at every check (LMR: P = R^-1
-// from R's factor), the smallest lambda_min / lambda_max of that symmetric
+// from R's factor; decided by a Cholesky in double of the stored entries,
+// with the samples where a Cholesky in the run's own precision failed
+// counted apart: see long_run_scenario.hpp), the smallest lambda_min / lambda_max of that symmetric
 // part, on how many samples the covariance protection
 // (core/include/ctid/adaptation/covariance_guard.hpp; for LMR its guard on
 // R, lmr.hpp) acted, the first, how many were repairs and ceilings, the
@@ -69,11 +71,13 @@ bool run_all(const char* precision, long n, long every,
     ok = ok && kept;
     std::printf(
         "%-6s %-20s %s  min eig ratio %.3g  guard %ld (first %ld; repair "
-        "%ld, ceiling %ld)  indefinite %ld (first %ld)  non-finite from %ld  "
+        "%ld, ceiling %ld)  indefinite %ld (first %ld)  Cholesky in %s "
+        "failed %ld  non-finite from %ld  "
         "theta_end [%.4g %.4g %.4g]  %.1f s  %.3f M samples/s\n",
         precision, c.name.c_str(), kept ? "P kept" : "P LOST",
         r.min_relative_eig, r.guard_actions, r.first_guard, r.guard_repairs,
-        r.guard_ceilings, r.indefinite_checks, r.first_indefinite,
+        r.guard_ceilings, r.indefinite_checks, r.first_indefinite, precision,
+        r.precision_cholesky_failures,
         r.first_nonfinite, r.theta_end(0), r.theta_end(1), r.theta_end(2),
         seconds, n / seconds / 1e6);
     std::fflush(stdout);
