@@ -1,0 +1,110 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{t}, @var{why}] =} residtrace_physcascade (@var{cur}, @var{ctx}, @var{g}, @var{clip})
+## A "cascade" realisation (@code{residtrace_physsim}) of the current
+## @code{residtrace} model @var{cur}, fitted on the estimation record
+## (@code{residtrace_physfit}): two first-order sections, the nonlinearity
+## @var{g} ("sqrt": square-root outflows, two tanks by Torricelli's law;
+## "lin": linear) at both nodes, the inner state limited above when
+## @var{clip} (an upper tank that overflows, its level estimated).
+##
+## Started at the model's linearisation: the current model's two slowest
+## poles (the faster one upstream; a first-order model: its pole
+## downstream and four times it upstream), its static gains, the output
+## level c at min(0, min(y) - 0.1 range(y)) for square-root nodes (a
+## level measured from the outlet starts at c = 0) and 0 for linear ones;
+## the inner level on the quantiles 0.7-0.99 of the unclipped inner state
+## (the one with the smallest simulation error). Applicable in open loop,
+## to a model whose channels are inputs or static functions of them (an
+## input constant is dropped: the inflow's constant d replaces it),
+## without integrators. @var{t} is [] with the reason @var{why} otherwise.
+## @end deftypefn
+
+function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
+  t = [];
+  why = "";
+  D = ctx.D;
+  if (! isempty (D.loop))
+    why = "a cascade realisation in open loop only";
+    return;
+  endif
+  types = {cur.channels.type};
+  keep = ismember (types, {"input", "power", "clip"});
+  if (any (! keep & ! strcmp (types, "const")) || ! any (keep))
+    why = "channels other than inputs";
+    return;
+  endif
+  if (! isempty (cur.out) && any (! strcmp ({cur.out.type}, "offset")))
+    why = "output terms other than a level";
+    return;
+  endif
+  r = roots (cur.F);
+  if (isempty (r) || any (abs (r) < 1e-9 * max (abs (r))) || any (real (r) >= 0))
+    why = "integrators or unstable poles";
+    return;
+  endif
+  p = sort (abs (real (r)));
+  if (numel (p) == 1)
+    p1 = 4 * p(1); p2 = p(1);
+  else
+    p1 = p(2); p2 = p(1);
+  endif
+  chans = cur.channels(keep);
+  W = residtrace_channels (chans, D.u, zeros (numel (D.y), 1));
+  wbar = mean (W, 1);
+  K = arrayfun (@(c) c.B(end), chans) / cur.F(end) * cur.F(1);
+  y = D.y;
+  sq = strcmp (g, "sqrt");
+  if (sq)
+    c0 = min (0, min (y) - 0.1 * (max (y) - min (y)));
+  else
+    c0 = 0;
+  endif
+  hbar = mean (y) - c0;
+  if (hbar <= 0)
+    why = "no positive level";
+    return;
+  endif
+  if (sq)
+    s = 2 * p2 * hbar;                   # sqrt(z) at the mean
+    al = 2 * p1 * s;
+    ga = 2 * p2 * sqrt (hbar);
+    b = 2 * K * s * p1 * p2;
+    d = al * s - wbar * b(:);
+  else
+    al = p1; ga = p2;
+    b = K * p1 * p2;
+    d = al * ga * hbar - wbar * b(:);
+  endif
+  t = cur;
+  for j = 1:numel (chans)
+    chans(j).nb = 1;
+    chans(j).B = b(j);
+  endfor
+  t.channels = chans;
+  t.out = t.out([]);
+  t.fixed = false (1, 2);
+  S = min (20, max (2, ceil (D.Ts * max (p1, p2) / 0.1)));
+  t.phys = struct ("kind", "cascade", "g", g, "d", d, "alpha", al,
+                   "gamma", ga, "c", c0, "hi", Inf, "substeps", S,
+                   "wbar", wbar, "yscale", std (y));
+  t.F = residtrace_physlin (t);
+  if (clip)
+    [~, z] = residtrace_physsim (t, D.u, D.Ts);
+    best = Inf;
+    for q = [0.7 0.8 0.9 0.95 0.99]
+      tq = t;
+      tq.phys.hi = quantile (z, q);
+      e = y - residtrace_physsim (tq, D.u, D.Ts);
+      if (e' * e < best)
+        best = e' * e;
+        hi = tq.phys.hi;
+      endif
+    endfor
+    if (! isfinite (best))
+      t = [];
+      why = "no inner level to try";
+      return;
+    endif
+    t.phys.hi = hi;
+  endif
+endfunction
