@@ -412,5 +412,6 @@ function [t, name] = stop_template (cur, ctx, y, x)
   t = cur;
   t.phys = struct ("kind", "stop", "lo", lvb(1), "hi", lvb(2),
                    "substeps", 20, "yscale", std (y));
-  name = sprintf ("output (a position) at an end stop, velocity reset, %s level", sb);
+  name = sprintf (["output (a position) at an end stop, velocity ", ...
+                   "reset, %s level"], sb);
 endfunction

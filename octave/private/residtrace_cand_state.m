@@ -22,12 +22,14 @@
 ## estimated the terms come with a constant (F(0) = 0 needs one to
 ## balance B(0) u0). A further variant puts the nonlinearity at an inner
 ## node: two first-order sections with square-root outflows (two tanks,
-## @code{residtrace_physcascade}), fitted on its simulation error. Evidence: the coefficients g_k with their standard deviations.
+## @code{residtrace_physcascade}), fitted on its simulation error.
+## Evidence: the coefficients g_k with their standard deviations.
 ## @end deftypefn
 
 function c = residtrace_cand_state (cur, ctx)
   c = residtrace_cand ("state_nonlinearity");
-  if (any (strcmp ({cur.channels.type}, "ypower")) || ! isempty (cur.phys))
+  if (any (strcmp ({cur.channels.type}, "ypower"))
+      || ! isempty (cur.phys))
     c.reason = "the model has a nonlinearity of the output already";
     return;
   endif

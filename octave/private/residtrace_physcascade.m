@@ -14,9 +14,10 @@
 ## level measured from the outlet starts at c = 0) and 0 for linear ones;
 ## the inner level on the quantiles 0.7-0.99 of the unclipped inner state
 ## (the one with the smallest simulation error). Applicable in open loop,
-## to a model whose channels are inputs or static functions of them (an
-## input constant is dropped: the inflow's constant d replaces it),
-## without integrators. @var{t} is [] with the reason @var{why} otherwise.
+## to a model of real stable poles (a cascade of first-order sections)
+## whose channels are inputs or static functions of them (an input
+## constant is dropped: the inflow's constant d replaces it). @var{t} is
+## [] with the reason @var{why} otherwise.
 ## @end deftypefn
 
 function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
@@ -38,8 +39,9 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
     return;
   endif
   r = roots (cur.F);
-  if (isempty (r) || any (abs (r) < 1e-9 * max (abs (r))) || any (real (r) >= 0))
-    why = "integrators or unstable poles";
+  if (isempty (r) || any (abs (r) < 1e-9 * max (abs (r)))
+      || any (real (r) >= 0) || any (imag (r) != 0))
+    why = "not a model of real, stable poles";
     return;
   endif
   p = sort (abs (real (r)));

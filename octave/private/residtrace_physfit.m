@@ -18,8 +18,9 @@
 ## squares, as for every other model. At most @code{ctx.maxiter}
 ## iterations (three while residtrace screens), on at most the first 6000
 ## samples; the residual variance, BIC and @code{e_est} are those of the
-## whole record. @code{theta}, @code{cov}: the parameters above and their
-## Gauss-Newton covariance.
+## whole record. @code{phys.theta}, @code{phys.cov}: the parameters above
+## and their Gauss-Newton covariance; @code{theta}, @code{cov}: those of
+## the linear part (for a cascade, its linearisation, without covariance).
 ## @end deftypefn
 
 function model = residtrace_physfit (tmpl, D, ctx)
@@ -83,9 +84,23 @@ function model = residtrace_physfit (tmpl, D, ctx)
   model.s2 = (e' * e) / max (N - np, 1);
   model.bic = N * log (model.s2) + np * log (N);
   model.e_est = e;
-  model.theta = th(:);
   s2f = sse / max (nfit - np, 1);
-  model.cov = s2f * pinv (J' * J);
+  C = s2f * pinv (J' * J);
+  model.phys.theta = th(:);
+  model.phys.cov = C;
+  ## the linear part's parameters as every model carries them (free f's,
+  ## then the numerators): for an end stop the first ones of th; for a
+  ## cascade its linearisation (no covariance)
+  nl = sum (! model.fixed) + sum ([model.channels.nb]);
+  if (strcmp (model.phys.kind, "stop"))
+    model.theta = th(1:nl);
+    model.cov = C(1:nl, 1:nl);
+  else
+    F = model.F / model.F(1);
+    model.theta = [F(1 + find (! model.fixed)), ...
+                   [model.channels.B] / model.F(1)](:);
+    model.cov = NaN (nl);
+  endif
   model.ok = true;
 endfunction
 
