@@ -9,18 +9,26 @@
 ##
 ## Started at the model's linearisation: the current model's two slowest
 ## poles (the faster one upstream; a first-order model: its pole
-## downstream and four times it upstream), its static gains, the output
+## downstream and four times it upstream; a complex pair: two real poles
+## at its natural frequency), its static gains, the output
 ## level c at min(0, min(y) - 0.1 range(y)) for square-root nodes (a
 ## level measured from the outlet starts at c = 0) and 0 for linear ones;
 ## the inner level on the quantiles 0.7-0.99 of the unclipped inner state
 ## (the one with the smallest simulation error). Applicable in open loop,
-## to a model of real stable poles (a cascade of first-order sections)
-## whose channels are inputs or static functions of them (an input
-## constant is dropped: the inflow's constant d replaces it). @var{t} is
+## to a model of stable poles without integrators whose channels are
+## inputs or static functions of them (an input constant is dropped: the
+## inflow's constant d replaces it). @var{t} is
 ## [] with the reason @var{why} otherwise.
 ## @end deftypefn
 
 function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
+  [t, why] = cascade_ (cur, ctx, g, clip);
+  if (! isempty (getenv ("CTID_PHYS_DEBUG")))
+    printf ("physcascade %s: %s F = %s\n", g, why, mat2str (cur.F, 4));
+  endif
+endfunction
+
+function [t, why] = cascade_ (cur, ctx, g, clip)
   t = [];
   why = "";
   D = ctx.D;
@@ -40,15 +48,18 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
   endif
   r = roots (cur.F);
   if (isempty (r) || any (abs (r) < 1e-9 * max (abs (r)))
-      || any (real (r) >= 0) || any (imag (r) != 0))
-    why = "not a model of real, stable poles";
+      || any (real (r) >= 0))
+    why = "integrators or unstable poles";
     return;
   endif
-  p = sort (abs (real (r)));
-  if (numel (p) == 1)
-    p1 = 4 * p(1); p2 = p(1);
+  [~, i] = sort (abs (r));
+  r = r(i);
+  if (numel (r) == 1)
+    p1 = 4 * abs (r(1)); p2 = abs (r(1));
+  elseif (imag (r(1)) != 0)
+    p1 = p2 = abs (r(1));        # a pair: the critically damped cascade
   else
-    p1 = p(2); p2 = p(1);
+    p1 = abs (r(2)); p2 = abs (r(1));
   endif
   chans = cur.channels(keep);
   W = residtrace_channels (chans, D.u, zeros (numel (D.y), 1));
@@ -85,7 +96,7 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
   t.channels = chans;
   t.out = t.out([]);
   t.fixed = false (1, 2);
-  S = min (20, max (2, ceil (D.Ts * max (p1, p2) / 0.1)));
+  S = min (20, max (1, ceil (D.Ts * max (p1, p2) / 0.1)));
   t.phys = struct ("kind", "cascade", "g", g, "d", d, "alpha", al,
                    "gamma", ga, "c", c0, "hi", Inf, "substeps", S,
                    "wbar", wbar, "yscale", std (y));

@@ -16,7 +16,7 @@
 ## inner level (when finite). With @code{D.initial_state} the free
 ## response of the model's (linearised) F is fitted on the error by least
 ## squares, as for every other model. At most @code{ctx.maxiter}
-## iterations (three while residtrace screens), on at most the first 6000
+## iterations, at most 8 (three while residtrace screens), on at most the first 6000
 ## samples; the residual variance, BIC and @code{e_est} are those of the
 ## whole record. @code{phys.theta}, @code{phys.cov}: the parameters above
 ## and their Gauss-Newton covariance; @code{theta}, @code{cov}: those of
@@ -24,6 +24,8 @@
 ## @end deftypefn
 
 function model = residtrace_physfit (tmpl, D, ctx)
+  warning ("off", "Octave:singular-matrix", "local");
+  warning ("off", "Octave:nearly-singular-matrix", "local");
   model = tmpl;
   model.ok = false;
   y = D.y;
@@ -36,10 +38,11 @@ function model = residtrace_physfit (tmpl, D, ctx)
   res = @(t) resid (unpack (tmpl, t), Df, x0);
   r = res (th);
   sse = r' * r;
+  sse0 = sse;
   if (! isfinite (sse))
     return;
   endif
-  maxit = min (max (ctx.maxiter, 1), 12);
+  maxit = min (max (ctx.maxiter, 1), 8);
   mu = [];
   np = numel (th);
   for it = 1:maxit
@@ -48,7 +51,9 @@ function model = residtrace_physfit (tmpl, D, ctx)
       break;
     endif
     H = J' * J; g = J' * r;
-    dH = max (diag (H), 1e-12 * max ([diag(H); 1]));
+    ## a parameter without effect (a level never reached) gets the floor,
+    ## and so a zero step
+    dH = max (diag (H), 1e-6 * max ([diag(H); eps]));
     if (isempty (mu))
       mu = 1e-3;
     endif
@@ -77,6 +82,10 @@ function model = residtrace_physfit (tmpl, D, ctx)
   endfor
   model = unpack (tmpl, th);
   e = resid (model, D, x0);
+  if (! isempty (getenv ("CTID_PHYS_DEBUG")))
+    printf ("physfit %s: sse %.4g -> %.4g after %d its, th %s\n",
+            tmpl.phys.kind, sse0, sse, it, mat2str (th(:).', 4));
+  endif
   if (! all (isfinite (e)))
     return;
   endif
