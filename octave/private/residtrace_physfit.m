@@ -15,9 +15,9 @@
 ## log alpha, log gamma, the output level c (square-root nodes) and the
 ## inner level (when finite). With @code{D.initial_state} the free
 ## response of the model's (linearised) F is fitted on the error by least
-## squares, as for every other model. At most @code{ctx.maxiter}
-## iterations, at most 8 (three while residtrace screens), on at most the first 6000
-## samples; the residual variance, BIC and @code{e_est} are those of the
+## squares, as for every other model. At most min(@code{ctx.maxiter}, 8)
+## iterations (three while residtrace screens), on at most the first
+## 6000 samples; the residual variance, BIC and @code{e_est} are those of the
 ## whole record. @code{phys.theta}, @code{phys.cov}: the parameters above
 ## and their Gauss-Newton covariance; @code{theta}, @code{cov}: those of
 ## the linear part (for a cascade, its linearisation, without covariance).
