@@ -384,7 +384,8 @@ endfunction
 ## stop). Needs two or more poles and a relative degree of at least two
 ## for every channel (the velocity is a state), channels that are inputs
 ## or functions of them, open loop. The side(s) and the start of the
-## levels: the output saturation's screening on the current model output.
+## levels: the output saturation's screening on the current model output,
+## which must lower the BIC by at least 10 (else no fit: for speed).
 function [t, name] = stop_template (cur, ctx, y, x)
   t = []; name = "";
   n = numel (cur.F) - 1;
@@ -406,7 +407,9 @@ function [t, name] = stop_template (cur, ctx, y, x)
       best = v; lvb = lv; sb = side{1};
     endif
   endfor
-  if (! isfinite (best))
+  ## the costly fit only where the screening's clip shows evidence of a
+  ## level (BIC at least 10 below the unclipped model's)
+  if (! (best < bic_of (sum ((y - x) .^ 2), y, []) - 10))
     return;
   endif
   t = cur;
