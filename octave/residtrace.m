@@ -682,6 +682,16 @@ endfunction
 
 function row = screened_row_ (effect, cur, ctx, e0)
   fn = ["residtrace_cand_" cand_file(effect)];
+  if (isfield (cur, "phys") && ! isempty (cur.phys)
+      && ! strcmp (effect, "delay"))
+    ## a physical realisation (end stop, cascade) holds its own levels
+    ## and offsets, and no extra channel or output term: of the other
+    ## effects only a delay has a meaning in it
+    c = residtrace_cand (effect);
+    c.reason = "the model's physical realisation does not hold it";
+    row = score (c, cur, ctx, e0);
+    return;
+  endif
   if (ctx.maxiter > 3)
     [q, qcur] = screening_context (ctx, cur);
     c = feval (fn, qcur, q);
