@@ -121,7 +121,8 @@ function check_axis ()
       assert (abs ([P.lo P.hi] - [20 100]) < 0.02 * 80);
       assert (R.rmse_after < 0.5 * R.rmse_before);
     else
-      assert (! any (strcmp (R.effect, {"saturation", "state_nonlinearity",
+      assert (! any (strcmp (R.effect, {"saturation", ...
+                                         "state_nonlinearity", ...
                                          "static_nonlinearity"})));
     endif
   endfor
@@ -147,6 +148,6 @@ function check_tanks ()
   M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
   R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
                   "iterate", 1);
-  assert (! any (strcmp (R.effect, {"saturation", "state_nonlinearity",
+  assert (! any (strcmp (R.effect, {"saturation", "state_nonlinearity", ...
                                      "static_nonlinearity", "coulomb"})));
 endfunction
