@@ -2,13 +2,13 @@
 // simulation/physical_realisations.hpp), used by
 // octave/private/residtrace_physsim.m:
 //
-//   x      = physsim_mex ("stop", W, options)
-//   [y, z] = physsim_mex ("cascade", W, options)
+//   x      = physsim_mex (fname, W, options)    options.kind = "stop"
+//   [y, z] = physsim_mex (fname, W, options)    options.kind = "cascade"
 //
-// W: N-by-m channel signals, already delayed. Fields of options for "stop":
-// ts, f (1-by-n, f1..fn of the monic F), b (n-by-m, channel j's numerator
+// fname: the public function ("residtrace"). W: N-by-m channel signals,
+// already delayed. Fields of options for "stop": kind, ts, f (1-by-n, f1..fn of the monic F), b (n-by-m, channel j's numerator
 // right-aligned in column j), substeps, lo and hi (the levels of x1; absent
-// or []: none). For "cascade": ts, g ("sqrt" or "lin"), b (m-by-K, one
+// or []: none). For "cascade": kind, ts, g ("sqrt" or "lin"), b (m-by-K, one
 // column per parameter set), d, alpha, gamma, c (1-by-K each), hi (1-by-K
 // upper levels of the inner state; absent or []: none), substeps. y, z:
 // N-by-K.
@@ -24,16 +24,17 @@ Eigen::VectorXd row(const Eigen::MatrixXd& a) { return a.row(0).transpose(); }
 void physsim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                      const mxArray* prhs[]) {
   if (nrhs != 3) {
-    g.fail("badInput", "the gateway takes 3 arguments (kind, W, options), "
+    g.fail("badInput", "the gateway takes 3 arguments (fname, W, options), "
                        "got " + std::to_string(nrhs));
   }
-  const std::string kind = g.text(prhs[0], "kind");
   g.require_real_double(prhs[1], "W");
   const long n = static_cast<long>(mxGetM(prhs[1]));
   const long m = static_cast<long>(mxGetN(prhs[1]));
   const double* W = g.matrix(prhs[1], "W", n, m);
   ctid::mex::OptionsReader opt(g, prhs[2]);
-  if (kind == "stop") {
+  const bool stop = opt.choice<bool>("kind", {{"stop", true}, {"cascade", false}},
+                                     false);
+  if (stop) {
     if (nlhs > 1) g.fail("badInput", "at most 1 output for 'stop'");
     ctid::EndStopConfig<double> c;
     c.ts = opt.scalar("ts");
@@ -48,9 +49,6 @@ void physsim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     plhs[0] = ctid::mex::make_output_matrix(n, 1);
     g.check(ctid::simulate_end_stop<double>(c, W, n, mxGetPr(plhs[0])));
     return;
-  }
-  if (kind != "cascade") {
-    g.fail("badInput", "kind must be 'stop' or 'cascade', got '" + kind + "'");
   }
   if (nlhs > 2) g.fail("badInput", "at most 2 outputs (y, z) for 'cascade'");
   ctid::CascadeConfig<double> c;

@@ -87,14 +87,15 @@ function [y, pos] = sim_stop (model, W, Ts)
     Bm(n-numel(b)+1:n, j) = b;
   endfor
   c = out_offset (model);
-  o = struct ("ts", Ts, "f", F(2:end), "b", Bm, "substeps", P.substeps);
+  o = struct ("kind", "stop", "ts", Ts, "f", F(2:end), "b", Bm,
+              "substeps", P.substeps);
   if (isfinite (P.lo))
     o.lo = P.lo - c;                     # the levels of x
   endif
   if (isfinite (P.hi))
     o.hi = P.hi - c;
   endif
-  pos = physsim_mex ("stop", W, o) + c;
+  pos = physsim_mex ("residtrace", W, o) + c;
   y = pos;
 endfunction
 
@@ -116,8 +117,8 @@ function [y, z] = sim_cascade (models, W, Ts)
     c(i) = P.c;
     S = max (S, P.substeps);
   endfor
-  o = struct ("ts", Ts, "g", models{1}.phys.g, "b", b, "d", d,
-              "alpha", al, "gamma", ga, "c", c, "substeps", S);
+  o = struct ("kind", "cascade", "ts", Ts, "g", models{1}.phys.g, "b", b,
+              "d", d, "alpha", al, "gamma", ga, "c", c, "substeps", S);
   fin = isfinite (top);
   if (all (fin))
     o.hi = top;
@@ -127,5 +128,5 @@ function [y, z] = sim_cascade (models, W, Ts)
     [y(:, ! fin), z(:, ! fin)] = sim_cascade (models(! fin), W, Ts);
     return;
   endif
-  [y, z] = physsim_mex ("cascade", W, o);
+  [y, z] = physsim_mex ("residtrace", W, o);
 endfunction
