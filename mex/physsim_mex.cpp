@@ -6,12 +6,12 @@
 //   [y, z] = physsim_mex (fname, W, options)    options.kind = "cascade"
 //
 // fname: the public function ("residtrace"). W: N-by-m channel signals,
-// already delayed. Fields of options for "stop": kind, ts, f (1-by-n, f1..fn of the monic F), b (n-by-m, channel j's numerator
-// right-aligned in column j), substeps, lo and hi (the levels of x1; absent
-// or []: none). For "cascade": kind, ts, g ("sqrt" or "lin"), b (m-by-K, one
-// column per parameter set), d, alpha, gamma, c (1-by-K each), hi (1-by-K
-// upper levels of the inner state; absent or []: none), substeps. y, z:
-// N-by-K.
+// already delayed. Fields of options for "stop": kind, ts, f (1-by-n, f1..fn of
+// the monic F), b (n-by-m, channel j's numerator right-aligned in column j),
+// substeps, lo and hi (the levels of x1; absent or []: none). For "cascade":
+// kind, ts, g ("sqrt" or "lin"), b (m-by-K, one column per parameter set), d,
+// alpha, gamma, c (1-by-K each), hi (1-by-K upper levels of the inner state;
+// absent or []: none), substeps. y, z: N-by-K.
 #include "ctid/simulation/physical_realisations.hpp"
 #include "options_reader.hpp"
 
@@ -24,16 +24,18 @@ Eigen::VectorXd row(const Eigen::MatrixXd& a) { return a.row(0).transpose(); }
 void physsim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                      const mxArray* prhs[]) {
   if (nrhs != 3) {
-    g.fail("badInput", "the gateway takes 3 arguments (fname, W, options), "
-                       "got " + std::to_string(nrhs));
+    g.fail("badInput",
+           "the gateway takes 3 arguments (fname, W, options), "
+           "got " +
+               std::to_string(nrhs));
   }
   g.require_real_double(prhs[1], "W");
   const long n = static_cast<long>(mxGetM(prhs[1]));
   const long m = static_cast<long>(mxGetN(prhs[1]));
   const double* W = g.matrix(prhs[1], "W", n, m);
   ctid::mex::OptionsReader opt(g, prhs[2]);
-  const bool stop = opt.choice<bool>("kind", {{"stop", true}, {"cascade", false}},
-                                     false);
+  const bool stop =
+      opt.choice<bool>("kind", {{"stop", true}, {"cascade", false}}, false);
   if (stop) {
     if (nlhs > 1) g.fail("badInput", "at most 1 output for 'stop'");
     ctid::EndStopConfig<double> c;
@@ -61,10 +63,9 @@ void physsim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   c.gamma = row(opt.required_matrix("gamma", 1, K));
   c.c = row(opt.required_matrix("c", 1, K));
   const Eigen::MatrixXd hi = opt.matrix("hi", 1, K);
-  c.hi = hi.size() > 0
-             ? row(hi)
-             : Eigen::VectorXd::Constant(
-                   K, std::numeric_limits<double>::infinity());
+  c.hi = hi.size() > 0 ? row(hi)
+                       : Eigen::VectorXd::Constant(
+                             K, std::numeric_limits<double>::infinity());
   c.substeps = opt.integer("substeps", 1);
   opt.finish();
   plhs[0] = ctid::mex::make_output_matrix(n, K);
@@ -79,8 +80,7 @@ void physsim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("residtrace", {"residtrace"}, nrhs, prhs,
-                         [&](const Gateway& g) {
-                           physsim_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "residtrace", {"residtrace"}, nrhs, prhs,
+      [&](const Gateway& g) { physsim_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

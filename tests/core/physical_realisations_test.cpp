@@ -54,8 +54,8 @@ void linear_cascade_step(double al, double ga, double q, double T, double& z,
   const double zss = q / al;
   const double ea = std::exp(-al * T);
   const double eg = std::exp(-ga * T);
-  const double hn = eg * h + zss * (1 - eg) / ga +
-                    (z - zss) * (ea - eg) / (ga - al);
+  const double hn =
+      eg * h + zss * (1 - eg) / ga + (z - zss) * (ea - eg) / (ga - al);
   z = ea * z + zss * (1 - ea);
   h = hn;
 }
@@ -77,8 +77,8 @@ TEST(Cascade, LinearMatchesClosedForm) {
     const CascadeConfig<double> cfg =
         cascade(false, b, d, al, ga, INFINITY, c, ts, steps[i]);
     std::vector<double> y(n);
-    ASSERT_TRUE(simulate_cascade<double>(cfg, u.data(), n, y.data(), nullptr)
-                    .ok());
+    ASSERT_TRUE(
+        simulate_cascade<double>(cfg, u.data(), n, y.data(), nullptr).ok());
     err[i] = 0;
     for (long k = 0; k < n; ++k) {
       err[i] = std::max(err[i], std::abs(y[k] - exact[k]));
@@ -100,8 +100,8 @@ TEST(Cascade, SquareRootRestAndOverflow) {
   // at rest for the first sample's inflow: stays there
   CascadeConfig<double> cfg = cascade(true, b, 0, al, ga, INFINITY, 0, ts, 8);
   std::vector<double> y(n), z(n);
-  ASSERT_TRUE(simulate_cascade<double>(cfg, u.data(), n, y.data(), z.data())
-                  .ok());
+  ASSERT_TRUE(
+      simulate_cascade<double>(cfg, u.data(), n, y.data(), z.data()).ok());
   const double zss = std::pow(b * 5 / al, 2);
   const double hss = std::pow(std::sqrt(zss) / ga, 2);
   for (long k = 0; k < n; ++k) {
@@ -148,8 +148,8 @@ TEST(Cascade, SideBySideEqualsAlone) {
   all.ts = 2;
   all.substeps = 4;
   std::vector<double> y(3 * n), z(3 * n);
-  ASSERT_TRUE(simulate_cascade<double>(all, u.data(), n, y.data(), z.data())
-                  .ok());
+  ASSERT_TRUE(
+      simulate_cascade<double>(all, u.data(), n, y.data(), z.data()).ok());
   for (int i = 0; i < 3; ++i) {
     CascadeConfig<double> one = all;
     one.b = all.b.col(i);

@@ -172,8 +172,8 @@ struct CascadeConfig {
 // sampling instants; z may be null. min/max ignore a NaN operand (fmin,
 // fmax), as Octave's do.
 template <typename S>
-Status simulate_cascade(const CascadeConfig<S>& c, const S* W,
-                        long num_samples, S* y, S* z_out) {
+Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
+                        S* y, S* z_out) {
   const Eigen::Index m = c.b.rows();
   const Eigen::Index K = c.b.cols();
   if (K < 1) return bad_input("at least one parameter set");
@@ -248,7 +248,7 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W,
           const S a4 = qk - al * o4;
           const S b4 = o4 - ga * pos(ha);
           zi = std::fmin(std::fmax(zi + h6 * (a1 + 2 * a2 + 2 * a3 + a4), S(0)),
-                        top);
+                         top);
           hi_ = std::fmax(hi_ + h6 * (b1 + 2 * b2 + 2 * b3 + b4), S(0));
         }
       } else {
