@@ -87,6 +87,13 @@ function check_simulators ()
   Y = residtrace_physsim ({m, m2}, u, Ts);
   assert (Y(:, 1), ys, 0);
   assert (Y(:, 2), residtrace_physsim (m2, u, Ts), 0);
+  ## a set with the inner level and one without (two gateway calls)
+  m3 = m; m3.phys.hi = Inf;
+  [Y, Z] = residtrace_physsim ({m3, m, m2}, u, Ts);
+  [y3, z3] = residtrace_physsim (m3, u, Ts);
+  assert ([Y(:, 1), Z(:, 1)], [y3, z3], 0);
+  assert (Y(:, 2:3), residtrace_physsim ({m, m2}, u, Ts), 0);
+  assert (max (z3) > q.c1 ^ 2 * q.h1max);        # it would overflow
 endfunction
 
 function u = levels_ (N, Ts, tmin, tmax, lo, hi)
