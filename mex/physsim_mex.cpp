@@ -6,12 +6,13 @@
 //   [y, z] = physsim_mex (fname, W, options)    options.kind = "cascade"
 //
 // fname: the public function ("residtrace"). W: N-by-m channel signals,
-// already delayed. Fields of options for "stop": kind, ts, f (1-by-n, f1..fn of
-// the monic F), b (n-by-m, channel j's numerator right-aligned in column j),
-// substeps, lo and hi (the levels of x1; absent or []: none). For "cascade":
-// kind, ts, g ("sqrt" or "lin"), b (m-by-K, one column per parameter set), d,
-// alpha, gamma, c (1-by-K each), hi (1-by-K upper levels of the inner state;
-// absent or []: none), substeps. y, z: N-by-K.
+// already delayed. options.kind: "stop" or "cascade" (the default). Other
+// fields for "stop": ts, f (1-by-n, f1..fn of the monic F), b (n-by-m,
+// channel j's numerator right-aligned in column j), substeps, lo and hi (the
+// levels of x1; absent or []: none). For "cascade": ts, g ("sqrt" or
+// "lin"), b (m-by-K, one column per parameter set), d, alpha, gamma, c
+// (1-by-K each), hi (1-by-K upper levels of the inner state; absent or []:
+// none), substeps. y, z: N-by-K.
 #include "ctid/simulation/physical_realisations.hpp"
 #include "options_reader.hpp"
 
