@@ -41,11 +41,23 @@
 ## @item 'saturation'
 ## the output, or an inner node of the model (a tank that overflows, a
 ## valve at its end stop: F split into upstream and downstream sections),
-## limited to levels that are estimated.
+## limited to levels that are estimated; or a state of a physical
+## realisation: the output as a position held at an end stop with its
+## velocity reset (the velocity a state of the observable canonical form
+## when every channel's relative degree is at least two), or the inner
+## state of a cascade of two first-order sections with square-root or
+## linear outflows that overflows (two tanks). These two are simulated
+## in sub-steps and fitted on their simulation error, levels included
+## (Levenberg-Marquardt; the refined-IV engine has no regression form for
+## a nonlinearity of an unmeasured state), and compete with the other
+## variants by BIC.
 ## @item 'state_nonlinearity'
 ## a function of the output inside the dynamics: sqrt(y) (the outflow of a
 ## tank), y^2 (a time constant that depends on the operating point), y^3
-## or y^2 and y^3 (a nonlinear spring).
+## or y^2 and y^3 (a nonlinear spring), with a constant of their own when
+## the record's levels are estimated; or square-root outflows at both
+## nodes of a cascade of two first-order sections (two tanks; fitted on
+## its simulation error).
 ## @item 'initial_state'
 ## the record did not start at rest: the model's free response from an
 ## initial state fitted on each record (declared: the simulations of such
@@ -670,6 +682,16 @@ endfunction
 
 function row = screened_row_ (effect, cur, ctx, e0)
   fn = ["residtrace_cand_" cand_file(effect)];
+  if (isfield (cur, "phys") && ! isempty (cur.phys)
+      && ! strcmp (effect, "delay"))
+    ## a physical realisation (end stop, cascade) holds its own levels
+    ## and offsets, and no extra channel or output term: of the other
+    ## effects only a delay has a meaning in it
+    c = residtrace_cand (effect);
+    c.reason = "the model's physical realisation does not hold it";
+    row = score (c, cur, ctx, e0);
+    return;
+  endif
   if (ctx.maxiter > 3)
     [q, qcur] = screening_context (ctx, cur);
     c = feval (fn, qcur, q);

@@ -35,5 +35,6 @@ function model = residtrace_base (M, d)
                   "intersample", d.intersample, "Ts", d.Ts,
                   "effects", {{}}, "ltv", [], "noise", [],
                   "theta", [], "cov", [], "s2", NaN, "np", 0, "bic", NaN,
-                  "e_est", [], "ok", true, "levels", false, "x0", false);
+                  "e_est", [], "ok", true, "levels", false, "x0", false,
+                  "phys", []);
 endfunction

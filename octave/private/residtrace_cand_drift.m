@@ -33,6 +33,10 @@
 function c = residtrace_cand_drift (cur, ctx)
   c = residtrace_cand ("drift");
   c.kind = "tracking";
+  if (isfield (cur, "phys") && ! isempty (cur.phys))
+    c.reason = "a physical realisation (end stop, cascade) is not tracked";
+    return;
+  endif
   D = ctx.D;
   N = numel (D.y);
   np = numel (cur.theta);

@@ -28,12 +28,27 @@
 ## each level), and the model fitted again, while the BIC falls (at most
 ## three rounds). Evidence: the
 ## level(s), the share of samples at a level, the node's poles.
+## @itemize
+## @item An end stop (issue 9): the output is a position, a state of the
+## model's realisation (observable canonical form, x1 = y, the velocity
+## a state when every channel's relative degree is at least two), held
+## at a level with its velocity reset to zero while the model pushes it
+## into the stop (@code{residtrace_physsim}, kind "stop").
+## @item An inner state of a two-section cascade that overflows (a tank
+## cascade): z' = b u + d - alpha g(z), z <= h, y = c + x with x' = g(z)
+## - gamma g(x), g a square root (Torricelli) or linear
+## (@code{residtrace_physcascade}).
+## @end itemize
+## These two are fitted on their simulation error, all their parameters
+## and levels together (@code{residtrace_physfit}), and compared with the
+## other variants by the same BIC.
 ## @end deftypefn
 
 function c = residtrace_cand_saturation (cur, ctx)
   c = residtrace_cand ("saturation");
   if (any (strcmp ({cur.out.type}, "sat"))
-      || any (strcmp ({cur.channels.type}, "node")))
+      || any (strcmp ({cur.channels.type}, "node"))
+      || ! isempty (cur.phys))
     c.reason = "the model has a saturation already";
     return;
   endif
@@ -66,6 +81,29 @@ function c = residtrace_cand_saturation (cur, ctx)
   for k = 1:numel (nt)
     starts{end+1} = {nt{k}.F};
   endfor
+  ## physical realisations (issue 9): a state saturated with its velocity
+  ## reset (an end stop), and a two-section cascade whose inner state
+  ## overflows (square-root or linear nodes); fitted here on their
+  ## simulation error and only compared by residtrace_select
+  ph = {}; pn = {};
+  [t, nm] = stop_template (cur, ctx, y, x);
+  if (! isempty (t))
+    ph{end+1} = t; pn{end+1} = nm;
+  endif
+  for g = {"sqrt", "lin"}
+    t = residtrace_physcascade (cur, ctx, g{1}, true);
+    if (! isempty (t))
+      ph{end+1} = t;
+      pn{end+1} = sprintf ("inner state of a %s cascade, upper level", g{1});
+    endif
+  endfor
+  for k = 1:numel (ph)
+    m = residtrace_physfit (ph{k}, D, ctx);
+    if (m.ok)
+      m.fitted = true;
+      tmpls{end+1} = m; names{end+1} = pn{k}; starts{end+1} = {};
+    endif
+  endfor
   if (isempty (tmpls))
     c.reason = "no level to try";
     return;
@@ -75,7 +113,7 @@ function c = residtrace_cand_saturation (cur, ctx)
     c.reason = "the estimation failed";
     return;
   endif
-  for it = 1:3                  # the levels and the model, alternately
+  for it = 1:3 * isempty (m.phys)   # the levels and the model, alternately
     [m, better] = refine (m, cur, ctx);
     if (! better)
       break;
@@ -85,7 +123,24 @@ function c = residtrace_cand_saturation (cur, ctx)
   c.model = m;
   c.variant = m.variant_;
   c.nadd = m.np - cur.np;
-  if (any (strcmp ({m.out.type}, "sat")))
+  if (! isempty (m.phys))
+    P = m.phys;
+    if (strcmp (P.kind, "stop"))
+      lv = [P.lo P.hi];
+      z = y - m.e_est;
+      what = "output (a position) held at";
+    else
+      lv = [-Inf P.hi];
+      [~, z] = residtrace_physsim (m, D.u, D.Ts);
+      what = sprintf ("inner state of the %s cascade limited to", P.g);
+    endif
+    share = mean (z >= lv(2) - 1e-9 * abs (lv(2)) | z <= lv(1));
+    c.evidence = struct ("term", "levels [lo hi]", "value", lv,
+                         "std", NaN, "share", share,
+                         "text", sprintf (["%s [%.4g, %.4g] (%.1f %% of ", ...
+                                           "the estimation samples)"],
+                                          what, lv(1), lv(2), 100 * share));
+  elseif (any (strcmp ({m.out.type}, "sat")))
     lv = m.out(strcmp ({m.out.type}, "sat")).c;
     xo = y - m.e_est;
     share = mean (xo >= lv(2) | xo <= lv(1));
@@ -321,4 +376,45 @@ function [m, better] = refine (m, cur, ctx)
     m = m2;
     m.variant_ = v;
   endif
+endfunction
+
+## A state saturation with the velocity reset: the output is a position
+## (the first state of the observable canonical form) limited to levels
+## that are estimated, the velocity zeroed at the level (an inelastic end
+## stop). Needs two or more poles and a relative degree of at least two
+## for every channel (the velocity is a state), channels that are inputs
+## or functions of them, open loop. The side(s) and the start of the
+## levels: the output saturation's screening on the current model output,
+## which must lower the BIC by at least 10 (else no fit: for speed).
+function [t, name] = stop_template (cur, ctx, y, x)
+  t = []; name = "";
+  n = numel (cur.F) - 1;
+  if (! isempty (ctx.D.loop) || n < 2
+      || any (! ismember ({cur.channels.type},
+                          {"input", "const", "power", "clip"}))
+      || any ([cur.channels.nb] > n - 1)
+      || (! isempty (cur.out) && any (! strcmp ({cur.out.type}, "offset"))))
+    return;
+  endif
+  best = Inf;
+  for side = {"upper", "lower", "both"}
+    lv = out_levels (y, x, side{1});
+    if (isempty (lv))
+      continue;
+    endif
+    v = bic_of (sum ((y - min (max (x, lv(1)), lv(2))) .^ 2), y, lv);
+    if (v < best)
+      best = v; lvb = lv; sb = side{1};
+    endif
+  endfor
+  ## the costly fit only where the screening's clip shows evidence of a
+  ## level (BIC at least 10 below the unclipped model's)
+  if (! (best < bic_of (sum ((y - x) .^ 2), y, []) - 10))
+    return;
+  endif
+  t = cur;
+  t.phys = struct ("kind", "stop", "lo", lvb(1), "hi", lvb(2),
+                   "substeps", 20, "yscale", std (y));
+  name = sprintf (["output (a position) at an end stop, velocity ", ...
+                   "reset, %s level"], sb);
 endfunction

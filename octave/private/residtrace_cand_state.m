@@ -18,12 +18,18 @@
 ## output (plus its output offset), re-evaluated at each sub-step. The
 ## variant with the smallest BIC on the estimation data is kept; it is
 ## not tested (nor simulated) when none of its coefficients is three
-## standard deviations away from zero. Evidence: the coefficients g_k with their standard deviations.
+## standard deviations away from zero. With the record's levels
+## estimated the terms come with a constant (F(0) = 0 needs one to
+## balance B(0) u0). A further variant puts the nonlinearity at an inner
+## node: two first-order sections with square-root outflows (two tanks,
+## @code{residtrace_physcascade}), fitted on its simulation error.
+## Evidence: the coefficients g_k with their standard deviations.
 ## @end deftypefn
 
 function c = residtrace_cand_state (cur, ctx)
   c = residtrace_cand ("state_nonlinearity");
-  if (any (strcmp ({cur.channels.type}, "ypower")))
+  if (any (strcmp ({cur.channels.type}, "ypower"))
+      || ! isempty (cur.phys))
     c.reason = "the model has a nonlinearity of the output already";
     return;
   endif
@@ -33,8 +39,17 @@ function c = residtrace_cand_state (cur, ctx)
     pw = [{0.5}, pw];
   endif
   tmpls = {}; names = {}; starts = {};
+  ## a record in raw units has its input level u0 removed and an output
+  ## offset c estimated: F(p)(y - c) = B(p)(u - u0) + g(y) has then
+  ## nothing to balance B(0) u0 where F(0) = 0 (a tank whose only damping
+  ## is its outflow), so the terms come with a constant of their own
+  lev = isfield (cur, "levels") && cur.levels ...
+        && ! any (strcmp ({cur.channels.type}, "const"));
   for k = 1:numel (pw)
     t = cur;
+    if (lev)
+      t.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "1");
+    endif
     for p = pw{k}
       if (p == 0.5)
         nm = "sqrt(y)";
@@ -47,14 +62,43 @@ function c = residtrace_cand_state (cur, ctx)
     names{end+1} = ["output in the dynamics: " ...
                     strjoin({t.channels(end-numel(pw{k})+1:end).name}, ", ")];
   endfor
+  ## the nonlinearity at an inner node: two first-order sections with
+  ## square-root outflows (two tanks), fitted on its simulation error
+  if (mean (y > 0) >= 0.95)
+    t = residtrace_physcascade (cur, ctx, "sqrt", false);
+    if (! isempty (t))
+      m = residtrace_physfit (t, ctx.D, ctx);
+      if (m.ok)
+        m.fitted = true;
+        tmpls{end+1} = m; starts{end+1} = {};
+        names{end+1} = "square-root outflows of a two-section cascade";
+      endif
+    endif
+  endif
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = "the estimation failed";
     return;
   endif
   nadd = m.np - cur.np;
-  val = m.theta(end-nadd+1:end);
-  sd = sqrt (diag (m.cov))(end-nadd+1:end);
+  if (! isempty (m.phys))
+    ## a realisation fitted on its simulation error: its parameters are
+    ## not added terms (no three-sigma test)
+    c.applicable = true;
+    c.model = m;
+    c.variant = m.variant_;
+    c.nadd = max (nadd, 1);
+    P = m.phys;
+    c.evidence = struct ("term", "alpha, gamma, inner level", "value",
+                         [P.alpha P.gamma P.hi], "std", NaN,
+                         "text", sprintf (["%s: alpha %.4g, gamma %.4g, ", ...
+                                           "output level %.4g"], c.variant,
+                                          P.alpha, P.gamma, P.c));
+    return;
+  endif
+  nlin = sum (strcmp ({m.channels.type}, "ypower"));
+  val = m.theta(end-nlin+1:end);
+  sd = sqrt (diag (m.cov))(end-nlin+1:end);
   if (all (abs (val) < 3 * sd))
     c.evidence.tmax = max (abs (val) ./ sd);
     c.reason = sprintf (["the output terms are not significant on the ", ...

@@ -27,13 +27,20 @@
 ## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
 ## @code{s2}, @code{np} (number of estimated parameters), @code{bic} =
 ## N log s2 + np log N, @code{ok}. Starts that end on an unstable F
-## (apart from the model's integrators) are discarded.
+## (apart from the model's integrators) are discarded. A model with a
+## physical realisation (@code{tmpl.phys}) is fitted by
+## @code{residtrace_physfit} instead (simulation error).
 ## @end deftypefn
 
 function model = residtrace_fit (tmpl, D, ctx, starts)
   model = tmpl;
   if (isfield (model, "nlin"))
     model = rmfield (model, "nlin");   # a Hammerstein fit's, now stale
+  endif
+  if (isfield (tmpl, "phys") && ! isempty (tmpl.phys))
+    ## a physical realisation: fitted on its simulation error
+    model = residtrace_physfit (tmpl, D, ctx);
+    return;
   endif
   y = D.y;
   N = numel (y);

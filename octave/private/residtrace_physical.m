@@ -137,6 +137,38 @@ function p = residtrace_physical (model, Ts)
                          "std", NaN);
     endfor
   endif
+  if (isfield (model, "phys") && ! isempty (model.phys))
+    P = model.phys;
+    sd = NaN (numel (P.theta), 1);
+    if (isfield (P, "cov"))
+      sd = sqrt (max (diag (P.cov), 0));
+    endif
+    if (strcmp (P.kind, "stop"))
+      lv = [P.lo P.hi];
+      k = numel (P.theta) - sum (isfinite (lv));
+      for s = find (isfinite (lv))
+        k++;
+        p(end+1) = struct ("name", ifelse_ (s == 1, "lower end stop",
+                                            "upper end stop"),
+                           "value", lv(s), "std", sd(k));
+      endfor
+    else
+      nc = numel (model.channels);
+      p(end+1) = struct ("name", "inner outflow coefficient alpha",
+                         "value", P.alpha, "std", P.alpha * sd(nc+2));
+      p(end+1) = struct ("name", "outflow coefficient gamma",
+                         "value", P.gamma, "std", P.gamma * sd(nc+3));
+      p(end+1) = struct ("name", "constant inflow d", "value", P.d,
+                         "std", sd(nc+1));
+      if (isfinite (P.hi))
+        p(end+1) = struct ("name", "inner state's upper level",
+                           "value", P.hi, "std", sd(end));
+      endif
+      p(end+1) = struct ("name", "output level c", "value", P.c,
+                         "std", ifelse_ (strcmp (P.g, "sqrt"), sd(nc+4),
+                                         NaN));
+    endif
+  endif
   if (! isempty (model.noise))
     p(end+1) = struct ("name", "AR noise order", "value",
                        numel (model.noise) - 1, "std", NaN);
@@ -172,4 +204,12 @@ endfunction
 ## std of a / b by the delta method
 function s = ratio_std (a, b, va, vb, cab)
   s = sqrt (max (va / b ^ 2 + a ^ 2 * vb / b ^ 4 - 2 * a * cab / b ^ 3, 0));
+endfunction
+
+function v = ifelse_ (c, a, b)
+  if (c)
+    v = a;
+  else
+    v = b;
+  endif
 endfunction

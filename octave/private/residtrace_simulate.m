@@ -38,10 +38,23 @@
 ## An output saturation (@code{out} term @qcode{"sat"}, levels c = [lo
 ## hi]) clips the output last: y = min (max (x + terms, lo), hi).
 ## @var{x} is the dynamic part alone, @var{uc} the input applied (equal to
-## @var{u} in open loop).
+## @var{u} in open loop). A model with a physical realisation
+## (@code{model.phys}: an end stop, a tank cascade) is simulated by
+## @code{residtrace_physsim} (open loop only).
 ## @end deftypefn
 
 function [y, x, uc] = residtrace_simulate (model, u, Ts, loop, substeps, thm)
+  if (isfield (model, "phys") && ! isempty (model.phys))
+    ## a physical realisation (an end stop, a tank cascade)
+    if (! isempty (loop) || (nargin > 5 && ! isempty (thm)))
+      error ("residtrace:notSupported",
+             "residtrace: a physical realisation in closed loop or drifting");
+    endif
+    y = residtrace_physsim (model, u, Ts);
+    x = y;
+    uc = u;
+    return;
+  endif
   N = rows (u);
   chans = model.channels;
   if (nargin < 6)

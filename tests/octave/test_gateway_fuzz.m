@@ -98,6 +98,12 @@ function test_gateway_fuzz ()
                 "s", zeros (50, 1), "poly", [0 0.1],
                 "f_t", repmat ([1.2 4], 50, 1),
                 "b_t", repmat ([0 4 0.5 -1 0 0.1], 50, 1));
+  ## residtrace's physical realisations: a two-tank cascade (two parameter
+  ## sets side by side)
+  phys = struct ("kind", "cascade", "ts", 2, "g", "sqrt",
+                 "b", [0.0012 0.0011], "d", [0 0], "alpha", [0.01 0.011],
+                 "gamma", [0.085 0.085], "c", [0 0], "hi", [0.4 0.4],
+                 "substeps", 4);
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -108,6 +114,8 @@ function test_gateway_fuzz ()
     {"pem_mex", {"arx", yp, u, 1, pemarx}, {"model", "na", "nb", "nk"}}
     {"effect_sim_mex", {"residtrace", [u, u, u], eff}, ...
      {"ts", "f", "b", "kind", "nk", "param"}}
+    {"physsim_mex", {"residtrace", abs(u), phys}, ...
+     {"ts", "b", "d", "alpha", "gamma", "c"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf", "adg"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

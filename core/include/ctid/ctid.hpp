@@ -33,4 +33,5 @@
 #include "ctid/simulation/controller.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "ctid/simulation/ltv_simulator.hpp"
+#include "ctid/simulation/physical_realisations.hpp"
 #include "ctid/apps/throttle.hpp"

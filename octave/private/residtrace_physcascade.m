@@ -1,0 +1,140 @@
+## -*- texinfo -*-
+## @deftypefn {} {[@var{t}, @var{why}] =} residtrace_physcascade (@var{cur}, @var{ctx}, @var{g}, @var{clip})
+## A "cascade" realisation (@code{residtrace_physsim}) of the current
+## @code{residtrace} model @var{cur}, fitted on the estimation record
+## (@code{residtrace_physfit}): two first-order sections, the nonlinearity
+## @var{g} ("sqrt": square-root outflows, two tanks by Torricelli's law;
+## "lin": linear) at both nodes, the inner state limited above when
+## @var{clip} (an upper tank that overflows, its level estimated).
+##
+## Started at the model's linearisation: the current model's two slowest
+## poles (the faster one upstream; a first-order model: its pole
+## downstream and four times it upstream; a complex pair: two real poles
+## at its natural frequency), its static gains, the output
+## level c at min(0, min(y) - 0.1 range(y)) for square-root nodes (a
+## level measured from the outlet starts at c = 0) and 0 for linear ones;
+## the inner level on the quantiles 0.7-0.99 of the unclipped inner state
+## (the one with the smallest simulation error). Tried only when the
+## current model's estimation residual shows a nonlinearity of the output
+## level (regressed on x and x^2, x the model output, the square lowers
+## the BIC by at least 10; for speed). Applicable in open loop,
+## to a model of stable poles without integrators whose channels are
+## inputs or static functions of them (an input constant is dropped: the
+## inflow's constant d replaces it). @var{t} is
+## [] with the reason @var{why} otherwise.
+## @end deftypefn
+
+function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
+  [t, why] = cascade_ (cur, ctx, g, clip);
+  if (! isempty (getenv ("CTID_PHYS_DEBUG")))
+    printf ("physcascade %s: %s F = %s\n", g, why, mat2str (cur.F, 4));
+  endif
+endfunction
+
+function [t, why] = cascade_ (cur, ctx, g, clip)
+  t = [];
+  why = "";
+  D = ctx.D;
+  if (! isempty (D.loop))
+    why = "a cascade realisation in open loop only";
+    return;
+  endif
+  types = {cur.channels.type};
+  keep = ismember (types, {"input", "power", "clip"});
+  if (any (! keep & ! strcmp (types, "const")) || ! any (keep))
+    why = "channels other than inputs";
+    return;
+  endif
+  if (! isempty (cur.out) && any (! strcmp ({cur.out.type}, "offset")))
+    why = "output terms other than a level";
+    return;
+  endif
+  r = roots (cur.F);
+  if (isempty (r) || any (abs (r) < 1e-9 * max (abs (r)))
+      || any (real (r) >= 0))
+    why = "integrators or unstable poles";
+    return;
+  endif
+  [~, i] = sort (abs (r));
+  r = r(i);
+  if (numel (r) == 1)
+    p1 = 4 * abs (r(1)); p2 = abs (r(1));
+  elseif (imag (r(1)) != 0)
+    p1 = p2 = abs (r(1));        # a pair: the critically damped cascade
+  else
+    p1 = abs (r(2)); p2 = abs (r(1));
+  endif
+  ## the costly fit only where the residual shows a nonlinearity of the
+  ## output's level: e ~ x^2 lowers the BIC of e ~ x by at least 10
+  x = D.y - cur.e_est;
+  xs = (x - mean (x)) / max (std (x), eps);
+  N = numel (x);
+  X1 = [ones(N, 1), xs];
+  X2 = [X1, xs .^ 2];
+  e = cur.e_est;
+  s1 = sum ((e - X1 * (X1 \ e)) .^ 2);
+  s2 = sum ((e - X2 * (X2 \ e)) .^ 2);
+  if (! (N * log (s1 / s2) > log (N) + 10))
+    why = "no sign of a level-dependent nonlinearity in the residual";
+    return;
+  endif
+  chans = cur.channels(keep);
+  W = residtrace_channels (chans, D.u, zeros (numel (D.y), 1));
+  wbar = mean (W, 1);
+  K = arrayfun (@(c) c.B(end), chans) / cur.F(end) * cur.F(1);
+  y = D.y;
+  sq = strcmp (g, "sqrt");
+  if (sq)
+    c0 = min (0, min (y) - 0.1 * (max (y) - min (y)));
+  else
+    c0 = 0;
+  endif
+  hbar = mean (y) - c0;
+  if (hbar <= 0)
+    why = "no positive level";
+    return;
+  endif
+  if (sq)
+    s = 2 * p2 * hbar;                   # sqrt(z) at the mean
+    al = 2 * p1 * s;
+    ga = 2 * p2 * sqrt (hbar);
+    b = 2 * K * s * p1 * p2;
+    d = al * s - wbar * b(:);
+  else
+    al = p1; ga = p2;
+    b = K * p1 * p2;
+    d = al * ga * hbar - wbar * b(:);
+  endif
+  t = cur;
+  for j = 1:numel (chans)
+    chans(j).nb = 1;
+    chans(j).B = b(j);
+  endfor
+  t.channels = chans;
+  t.out = t.out([]);
+  t.fixed = false (1, 2);
+  S = min (20, max (1, ceil (D.Ts * max (p1, p2) / 0.1)));
+  t.phys = struct ("kind", "cascade", "g", g, "d", d, "alpha", al,
+                   "gamma", ga, "c", c0, "hi", Inf, "substeps", S,
+                   "wbar", wbar, "yscale", std (y));
+  t.F = residtrace_physlin (t);
+  if (clip)
+    [~, z] = residtrace_physsim (t, D.u, D.Ts);
+    best = Inf;
+    for q = [0.7 0.8 0.9 0.95 0.99]
+      tq = t;
+      tq.phys.hi = quantile (z, q);
+      e = y - residtrace_physsim (tq, D.u, D.Ts);
+      if (e' * e < best)
+        best = e' * e;
+        hi = tq.phys.hi;
+      endif
+    endfor
+    if (! isfinite (best))
+      t = [];
+      why = "no inner level to try";
+      return;
+    endif
+    t.phys.hi = hi;
+  endif
+endfunction

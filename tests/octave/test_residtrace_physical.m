@@ -1,0 +1,160 @@
+## -*- texinfo -*-
+## @deftypefn {} {} test_residtrace_physical ()
+## residtrace's physical realisations (issue 9, private
+## residtrace_physsim/physfit/physcascade):
+## @itemize
+## @item the end-stop simulation ("stop") against the positioning axis's
+## own simulator (demos/axis_sim.m, written apart: a 2-state loop with its
+## sub-steps everywhere) to 1e-9 relative, and the cascade ("cascade")
+## against the two tanks' simulator (demos/tanks_sim.m, Runge-Kutta with
+## the same sub-steps, the upper tank overflowing) mapped by z = c1^2 h1,
+## b = c1^2 k, alpha = c1^2, gamma = c2;
+## @item on a simulated axis with end stops (its own seed and stops, not
+## a record of the demos), residtrace names the saturation first with the
+## end-stop variant, levels within 2 % of the travel of the truth; on the
+## same drive without stops (a linear record) no saturation and no state
+## nonlinearity is named;
+## @item on two tanks with an overflowing upper tank (own seed), the
+## saturation or the state nonlinearity is named first by one of the
+## cascade variants (the inner node); on a linear second-order record
+## with the same input and levels no nonlinear effect is named.
+## @end itemize
+## @end deftypefn
+
+function test_residtrace_physical ()
+  root = getenv ("CTID_ROOT");
+  if (isempty (root))
+    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
+  endif
+  addpath (fullfile (root, "demos"));
+  priv = fullfile (root, "octave", "private");
+  here = pwd ();
+  unwind_protect
+    cd (priv);                      # the private functions, directly
+    check_simulators ();
+  unwind_protect_cleanup
+    cd (here);
+  end_unwind_protect
+  check_axis ();
+  check_tanks ();
+endfunction
+
+function check_simulators ()
+  ## the end stop against axis_sim
+  p = struct ("wn", 9, "zeta", 0.7, "K", 25, "ymin", -40, "ymax", 60,
+              "substeps", 20);
+  Ts = 0.01;
+  randn ("state", 11);
+  r = filter (0.05, [1 -0.95], kron (4 * randn (30, 1), ones (100, 1)));
+  r(1) = 0;
+  y = axis_sim (r, Ts, p);
+  ch = struct ("name", "u1", "type", "input", "col", 1, "param", [],
+               "nb", 1, "nk", 0, "B", p.wn ^ 2 * p.K);
+  out = struct ("type", {}, "c", {}, "cstd", {}, "omega", {});
+  m = struct ("F", [1, 2 * p.zeta * p.wn, p.wn ^ 2], "fixed", [false false],
+              "channels", ch, "out", out,
+              "phys", struct ("kind", "stop", "lo", -40, "hi", 60,
+                              "substeps", 20, "yscale", 1));
+  ys = residtrace_physsim (m, r, Ts);
+  assert (mean (y >= 60 | y <= -40) > 0.2);      # the stops are reached
+  assert (max (abs (ys - y)) < 1e-9 * (max (y) - min (y)));
+  ## the same with an output offset: levels in output units
+  m.out = struct ("type", "offset", "c", 5, "cstd", 0, "omega", 0);
+  m.phys.lo = -35; m.phys.hi = 65;
+  ys = residtrace_physsim (m, r, Ts);
+  assert (max (abs (ys - 5 - y)) < 1e-9 * (max (y) - min (y)));
+
+  ## the cascade against tanks_sim
+  q = struct ("k", 0.12, "c1", 0.1, "c2", 0.085, "h1max", 45,
+              "substeps", 8);
+  Ts = 2;
+  rand ("state", 3);
+  u = kron (2 + 5 * rand (15, 1), ones (100, 1));
+  [y, h1] = tanks_sim (u, Ts, q);
+  assert (mean (h1 >= 45) > 0.02);               # it overflows
+  ch.B = q.c1 ^ 2 * q.k;
+  m = struct ("F", [1 1 1], "fixed", [false false], "channels", ch,
+              "out", out,
+              "phys", struct ("kind", "cascade", "g", "sqrt", "d", 0,
+                              "alpha", q.c1 ^ 2, "gamma", q.c2, "c", 0,
+                              "hi", q.c1 ^ 2 * q.h1max, "substeps", 8,
+                              "wbar", mean (u), "yscale", 1));
+  [ys, z] = residtrace_physsim (m, u, Ts);
+  assert (max (abs (ys - y)) < 1e-9 * max (y));
+  assert (max (abs (z / q.c1 ^ 2 - h1)) < 1e-9 * 45);
+  ## side by side: two models in one pass, each as alone
+  m2 = m; m2.phys.alpha *= 1.1;
+  Y = residtrace_physsim ({m, m2}, u, Ts);
+  assert (Y(:, 1), ys, 0);
+  assert (Y(:, 2), residtrace_physsim (m2, u, Ts), 0);
+  ## a set with the inner level and one without (two gateway calls)
+  m3 = m; m3.phys.hi = Inf;
+  [Y, Z] = residtrace_physsim ({m3, m, m2}, u, Ts);
+  [y3, z3] = residtrace_physsim (m3, u, Ts);
+  assert ([Y(:, 1), Z(:, 1)], [y3, z3], 0);
+  assert (Y(:, 2:3), residtrace_physsim ({m, m2}, u, Ts), 0);
+  assert (max (z3) > q.c1 ^ 2 * q.h1max);        # it would overflow
+endfunction
+
+function u = levels_ (N, Ts, tmin, tmax, lo, hi)
+  u = zeros (N, 1);
+  k = 1;
+  while (k <= N)
+    L = max (1, round ((tmin + (tmax - tmin) * rand) / Ts));
+    u(k:min (N, k + L - 1)) = lo + (hi - lo) * rand;
+    k += L;
+  endwhile
+endfunction
+
+function check_axis ()
+  randn ("state", 424242); rand ("state", 424242);
+  p = struct ("wn", 7, "zeta", 0.5, "K", 12, "ymin", 20, "ymax", 100);
+  Ts = 0.02; N = 2500;
+  f = @() filter (0.1, [1 -0.9], levels_ (N, Ts, 0.6, 3, 0, 10));
+  u = f (); uv = f ();
+  for stops = [true false]
+    if (! stops)
+      p.ymin = -Inf; p.ymax = Inf;
+    endif
+    y = axis_sim (u, Ts, p) + 0.1 * randn (N, 1);
+    yv = axis_sim (uv, Ts, p) + 0.1 * randn (N, 1);
+    M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
+    R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+                    "iterate", 1);
+    if (stops)
+      assert (R.effect, "saturation");
+      P = R.model.phys;
+      assert (P.kind, "stop");
+      assert (abs ([P.lo P.hi] - [20 100]) < 0.02 * 80);
+      assert (R.rmse_after < 0.5 * R.rmse_before);
+    else
+      assert (! any (strcmp (R.effect, {"saturation", ...
+                                         "state_nonlinearity", ...
+                                         "static_nonlinearity"})));
+    endif
+  endfor
+endfunction
+
+function check_tanks ()
+  randn ("state", 515151); rand ("state", 515151);
+  q = struct ("k", 0.12, "c1", 0.1, "c2", 0.085, "h1max", 40);
+  Ts = 2; N = 2000;
+  u = levels_ (N, Ts, 50, 250, 2, 7); uv = levels_ (N, Ts, 50, 250, 2, 7);
+  y = tanks_sim (u, Ts, q) + 0.25 * randn (N, 1);
+  yv = tanks_sim (uv, Ts, q) + 0.25 * randn (N, 1);
+  M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
+  R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+                  "iterate", 1);
+  assert (any (strcmp (R.effect, {"saturation", "state_nonlinearity"})));
+  assert (! isempty (R.model.phys) && strcmp (R.model.phys.kind, "cascade"));
+  assert (R.rmse_after < 0.5 * R.rmse_before);
+  ## a linear two-tank (linearised) with the same input: nothing nonlinear
+  G = idctm (0.8 * 0.01 * 0.006, conv ([1 0.01], [1 0.006]));
+  g = @(u) simc (G, u - 4.5, Ts) + 36 + 0.25 * randn (N, 1);
+  y = g (u); yv = g (uv);
+  M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
+  R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+                  "iterate", 1);
+  assert (! any (strcmp (R.effect, {"saturation", "state_nonlinearity", ...
+                                     "static_nonlinearity", "coulomb"})));
+endfunction
