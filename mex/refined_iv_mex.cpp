@@ -21,7 +21,7 @@
 // loss_history, and lowest_theta, lowest_noise_variance,
 // lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
 // iterate over all starts when it is not the returned model; lowest_theta
-// empty if none).
+// and lowest_noise_variance empty if none).
 #include <algorithm>
 
 #include "ctid/offline/refined_iv.hpp"
@@ -194,8 +194,12 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     }
     mxSetField(info, 0, "integrator_suspected", suspected);
     mxSetField(info, 0, "lowest_theta", to_output(result.lowest_theta));
+    // Empty with lowest_theta when there is no such iterate (the core's
+    // Inf there means "none", not a noise variance).
     mxSetField(info, 0, "lowest_noise_variance",
-               mxCreateDoubleScalar(result.lowest_noise_variance));
+               result.lowest_theta.size() > 0
+                   ? mxCreateDoubleScalar(result.lowest_noise_variance)
+                   : mxCreateDoubleMatrix(0, 0, mxREAL));
     const std::size_t lowest_groups =
         result.lowest_integrator_suspected.size();
     mxArray* lowest_suspected = mxCreateLogicalMatrix(1, lowest_groups);

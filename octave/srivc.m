@@ -79,8 +79,8 @@
 ## lowest-loss run over all starts when that run did not converge, crept
 ## toward p = 0 and has a lower loss than the converged model returned
 ## (a local minimum; @var{info}.lowest_theta, lowest_noise_variance,
-## lowest_integrator_suspected describe that run, empty lowest_theta when
-## there is none).
+## lowest_integrator_suspected describe that run, empty lowest_theta and
+## lowest_noise_variance when there is none).
 ## Starts: SRIVC runs from the best-ranked IVSVF starts until one
 ## converges; a run that stops where the model explains less than 1 % of
 ## the output's variance (B ~ 0, where the loss is flat in F: a saddle) is
@@ -150,6 +150,24 @@ endfunction
 %! assert (RT2, 1, 1e-9);
 %! assert (M.converged);
 
+%!test  # a gap of missing samples: every number returned is finite (the
+%! ## lowest-loss fields are empty when there is no such run)
+%! randn ("state", 5); rand ("state", 5);
+%! Ts = 0.05; u = sign (randn (600, 1));
+%! y = simc (idctm (2, [1 3 2]), u, Ts) + 0.01 * randn (600, 1);
+%! y(200:210) = NaN;
+%! [M, R, Y, info] = srivc (iddata (y, u, Ts), [1 2 0]);
+%! assert (all (isfinite (getpvec (M))));
+%! f = fieldnames (info);
+%! for k = 1:numel (f)
+%!   v = info.(f{k});
+%!   if (isnumeric (v))
+%!     assert (all (isfinite (v(:))), "info.%s", f{k});
+%!   endif
+%! endfor
+%! if (isempty (info.lowest_theta))
+%!   assert (isempty (info.lowest_noise_variance));
+%! endif
 %!test  # default start (grid of cut-offs), noisy data: close and converged
 %! randn ("state", 4);
 %! y = x + 0.2 * randn (N, 1);

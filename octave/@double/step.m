@@ -90,6 +90,12 @@ endfunction
 %!   close (h);
 %! end_unwind_protect
 
+%!test  # a sparse final time is a final time (fuzz seed 12, call 7128)
+%! y1 = step (1, [1 2 1], sparse (3));
+%! y2 = step (1, [1 2 1], 3);
+%! assert (y1, y2);
+%! assert (! issparse (y1));
+
 %!error id=step:badInput step (1, 2, 3, 4, 5, 6, 7)
 %!error id=step:badInput step ([1 2; 3 4], [1 2; 3 4])
 %!error id=step:badInput step (1, [0 0])

@@ -23,7 +23,9 @@ function [sys, iu, extra] = pre_lti_args (who, args)
            "%s: argument %d of the numeric form must be a real matrix",
            who, bad);
   endif
-  args = cellfun (@double, args, "uniformoutput", false);
+  ## full: the control package takes a sparse time or frequency argument
+  ## for something else and fails without an identifier.
+  args = cellfun (@(x) full (double (x)), args, "uniformoutput", false);
   nsys = 2 + 2 * (numel (args) >= 4);    # num, den or a, b, c, d
   bad = find (! cellfun (@(x) all (isfinite (x(:))),
                          args(1:min (nsys, end))), 1);
