@@ -184,6 +184,24 @@ bool least_squares(const Matrix<S>& A, const Vector<S>& b, Vector<S>& x,
   return x.allFinite();
 }
 
+// The length and finiteness checks of an ARMA(nd, nc) noise record, shared
+// by arma_estimate and ivarma_estimate (after their own order checks).
+template <typename S>
+Status noise_record_status(const S* xi, Eigen::Index n, int nd, int nc) {
+  const int np = nd + nc;
+  const Eigen::Index need = 10 * (np + 1) + 4 * (np + 10);
+  if (n < need) {
+    return bad_input("the noise record has " + std::to_string(n) +
+                     " samples; ARMA(" + std::to_string(nd) + "," +
+                     std::to_string(nc) + ") needs at least " +
+                     std::to_string(need));
+  }
+  if (!Eigen::Map<const Vector<S>>(xi, n).allFinite()) {
+    return bad_input("the noise record is not finite");
+  }
+  return Status::Ok();
+}
+
 }  // namespace bj_detail
 
 // ARMA model D(q^-1) xi = C(q^-1) e of a sampled record xi (N samples),
@@ -209,15 +227,9 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     return bad_input("the ARMA orders nd, nc must be in 0..50");
   }
   const int np = nd + nc;
-  const Eigen::Index need = 10 * (np + 1) + 4 * (np + 10);
-  if (n < need) {
-    return bad_input("the noise record has " + std::to_string(n) +
-                     " samples; ARMA(" + std::to_string(nd) + "," +
-                     std::to_string(nc) + ") needs at least " +
-                     std::to_string(need));
-  }
+  const Status record = noise_record_status(xi, n, nd, nc);
+  if (!record.ok()) return record;
   const Eigen::Map<const Vector<S>> x(xi, n);
-  if (!x.allFinite()) return bad_input("the noise record is not finite");
   result->c = Vector<S>::Ones(1);
   result->d = Vector<S>::Ones(1);
   result->iterations = 0;
@@ -415,15 +427,9 @@ Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     return bad_input("IVARMA needs nd in 0..50 and nc in 1..50");
   }
   const int np = nd + nc;
-  const Eigen::Index need = 10 * (np + 1) + 4 * (np + 10);
-  if (n < need) {
-    return bad_input("the noise record has " + std::to_string(n) +
-                     " samples; ARMA(" + std::to_string(nd) + "," +
-                     std::to_string(nc) + ") needs at least " +
-                     std::to_string(need));
-  }
+  const Status record = noise_record_status(xi, n, nd, nc);
+  if (!record.ok()) return record;
   const Eigen::Map<const Vector<S>> x(xi, n);
-  if (!x.allFinite()) return bad_input("the noise record is not finite");
   if (!(x.squaredNorm() > 0) || settings.max_iterations < 1) {
     // No noise (white, zero variance) or no iteration asked for
     // (Hannan-Rissanen's estimate): as arma_estimate.
