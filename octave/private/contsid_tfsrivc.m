@@ -70,15 +70,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
     loss = Inf (size (tdgrid));
     fits = cell (size (tdgrid));
     for i = 1:numel (tdgrid)
-      try
-        fits{i} = fit (tdgrid(i), o.theta0);
-        loss(i) = fits{i}.loss;
-      catch err
-        if (! any (strcmp (err.identifier, {[fname ":numericalFailure"],
-                                             [fname ":notConverged"]})))
-          rethrow (err);
-        endif
-      end_try_catch
+      [fits{i}, loss(i)] = grid_point (tdgrid(i));
     endfor
     ## A default TdMax is a guess (from the cross-correlation, which a
     ## step input makes uninformative): while the grid's minimum lies at
@@ -94,17 +86,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
       endif
       for td_k = more
         tdgrid(end+1) = td_k;
-        loss(end+1) = Inf;
-        fits{end+1} = [];
-        try
-          fits{end} = fit (td_k, o.theta0);
-          loss(end) = fits{end}.loss;
-        catch err
-          if (! any (strcmp (err.identifier, {[fname ":numericalFailure"],
-                                               [fname ":notConverged"]})))
-            rethrow (err);
-          endif
-        end_try_catch
+        [fits{end+1}, loss(end+1)] = grid_point (td_k);
       endfor
       o.tdmax = tdgrid(end);
       [~, i] = min (loss);
@@ -246,6 +228,23 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
     for i = 1:numel (idx)
       J(:, i) = sensitivity (r, idx(i));
     endfor
+  endfunction
+
+  ## One point of the delay grid: the SRIVC fit from the user's start and
+  ## its loss, or [] and Inf where SRIVC fails numerically or does not
+  ## converge at that delay (other errors are raised).
+  function [r, loss] = grid_point (td)
+    r = [];
+    loss = Inf;
+    try
+      r = fit (td, o.theta0);
+      loss = r.loss;
+    catch err
+      if (! any (strcmp (err.identifier, {[fname ":numericalFailure"],
+                                           [fname ":notConverged"]})))
+        rethrow (err);
+      endif
+    end_try_catch
   endfunction
 
   ## dy/dp by central differences, p = theta(i) or "td".
