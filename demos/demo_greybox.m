@@ -47,15 +47,15 @@ function out = demo_greybox (outdir = "results", reduced = false)
   ## two tanks
   pt = struct ("k", 0.1, "c1", 0.09, "c2", 0.075, "h1max", 40);
   Tt = 2;
-  [ut, yt, st] = tanks_record (Nt, Tt, pt);
-  [utv, ytv, stv] = tanks_record (Nt, Tt, pt);
+  [ut, yt, st] = greybox_record ("tanks", Nt, Tt, pt);
+  [utv, ytv, stv] = greybox_record ("tanks", Nt, Tt, pt);
   out.tanks = trace ("two tanks", ut, yt, utv, ytv, Tt, 3);
   out.tanks.spill_share = [mean(st), mean(stv)];
   ## positioning axis
   pa = struct ("wn", 6, "zeta", 0.6, "K", 10, "ymin", 8, "ymax", 92);
   Ta = 0.02;
-  [ua, ya] = axis_record (Na, Ta, pa);
-  [uav, yav] = axis_record (Na, Ta, pa);
+  [ua, ya] = greybox_record ("axis", Na, Ta, pa);
+  [uav, yav] = greybox_record ("axis", Na, Ta, pa);
   out.axis = trace ("axis", ua, ya, uav, yav, Ta, 2);
   out.axis.stop_share = [mean(ya <= pa.ymin + 0.2 | ya >= pa.ymax - 0.2),
                          mean(yav <= pa.ymin + 0.2 | yav >= pa.ymax - 0.2)];
@@ -72,34 +72,6 @@ function out = demo_greybox (outdir = "results", reduced = false)
             strjoin (o.R.effects, ", "), o.rmse_linear, o.R.rmse_before,
             o.R.rmse_final);
   endfor
-endfunction
-
-## Pump voltage: random levels held for random times; level of the lower
-## tank with noise.
-function [u, y, spill] = tanks_record (N, Ts, p)
-  u = zeros (N, 1);
-  k = 1;
-  while (k <= N)
-    L = round ((40 + 260 * rand) / Ts);
-    u(k:min (N, k + L - 1)) = 2.5 + 5 * rand;
-    k += L;
-  endwhile
-  [h2, ~, spill] = tanks_sim (u, Ts, p);
-  y = h2 + 0.3 * randn (N, 1);
-endfunction
-
-## Reference: a random staircase between 0 and 10 V, smoothed by a
-## first-order filter of 0.3 s (the operator's set-point ramps).
-function [r, y] = axis_record (N, Ts, p)
-  s = zeros (N, 1);
-  k = 1;
-  while (k <= N)
-    L = round ((0.8 + 2 * rand) / Ts);
-    s(k:min (N, k + L - 1)) = 10 * rand;
-    k += L;
-  endwhile
-  r = filter (Ts / 0.3, [1, Ts / 0.3 - 1], s, s(1) * (1 - Ts / 0.3));
-  y = axis_sim (r, Ts, p) + 0.05 * randn (N, 1);
 endfunction
 
 function o = trace (name, u, y, uv, yv, Ts, iterate)
