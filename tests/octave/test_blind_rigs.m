@@ -250,7 +250,8 @@ function check_adc_clip ()
             [p.Kw / p.tau_m; 0], [0 1], 0);
   u = steps (N, -8, 8);
   y = rig.out (p, rig.sim (p, u, [0; 0]));
-  check ("adc_clip: tacho voltage vs lsim", relerr (y, zoh_lsim (sys, u, rig.Ts)),
+  check ("adc_clip: tacho voltage vs lsim",
+         relerr (y, zoh_lsim (sys, u, rig.Ts)),
          1e-6);
   ## The ADC: clipped at +-Vmax, on the 2 Vmax / 2^bits grid.
   q = p;
