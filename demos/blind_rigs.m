@@ -2,6 +2,7 @@
 ## @deftypefn {} {@var{names} =} blind_rigs ()
 ## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name})
 ## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name}, @var{scale})
+## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name}, @var{scale}, @var{draw})
 ## The lab rigs of the blind held-out check of @code{residtrace} (issue 9,
 ## session 6; @code{demos/residtrace_blind.m}): five nonlinear and three
 ## linear processes, each simulated from its physics (@code{blind_rk4}:
@@ -23,7 +24,9 @@
 ## a user would try, and the records @code{de}, @code{dv} (iddata) with
 ## their noise-free outputs @code{ye0}, @code{yv0}.  @var{scale} (default
 ## 1) shortens the records; 0 gives the rig without records (for the
-## simulator checks of @code{tests/octave/test_blind_rigs.m}).
+## simulator checks of @code{tests/octave/test_blind_rigs.m}).  @var{draw}
+## (default 0) selects another random draw of the excitations and the
+## noise (a replicate of the same rigs).
 ##
 ## Rigs (documented effect):
 ## @table @code
@@ -62,15 +65,18 @@
 ## @end table
 ## @end deftypefn
 
-function rig = blind_rigs (name, scale)
+function rig = blind_rigs (name, scale, draw)
   names = {"heated_block", "conveyor", "fan_driver", "adc_clip", ...
            "pendulum", "thermal3", "beam_mode", "mixing_delay"};
   if (nargin == 0)
     rig = names;
     return;
   endif
-  if (nargin < 2)
+  if (nargin < 2 || isempty (scale))
     scale = 1;
+  endif
+  if (nargin < 3)
+    draw = 0;
   endif
   k = find (strcmp (name, names));
   if (isempty (k))
@@ -89,8 +95,9 @@ function rig = blind_rigs (name, scale)
   endif
   rig.est.N = round (scale * rig.est.N);
   rig.val.N = round (scale * rig.val.N);
-  [rig.de, rig.ye0, rig.ue] = make_record (rig, rig.est, 1000 * k + 1);
-  [rig.dv, rig.yv0, rig.uv] = make_record (rig, rig.val, 1000 * k + 2);
+  seed = 1000 * k + 10 * draw;
+  [rig.de, rig.ye0, rig.ue] = make_record (rig, rig.est, seed + 1);
+  [rig.dv, rig.yv0, rig.uv] = make_record (rig, rig.val, seed + 2);
 endfunction
 
 ## One record: rest at u_rest, then the excitation; the state starts at

@@ -1,6 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} residtrace_blind ()
-## @deftypefnx {} {@var{S} =} residtrace_blind (@var{outdir}, @var{rigs}, @var{rule})
+## @deftypefnx {} {@var{S} =} residtrace_blind (@var{outdir}, @var{rigs}, @var{rule}, @var{draw})
 ## Blind held-out check of @code{residtrace} (issue 9, session 6): on the
 ## records of @code{blind_rigs} (five nonlinear lab rigs, three linear
 ## ones, made by a tester who read only the help texts of
@@ -28,10 +28,12 @@
 ## @var{rule}: the user's choice of structure, "simplest" (default, as
 ## above) or "best" (the best validation R_T^2, @code{selcstruc (V,
 ## "c2sort", "RT2")}: the sensitivity of the verdicts to that choice).
+## @var{draw}: the random draw of the records (default 0; see
+## @code{blind_rigs}).
 ## @var{S}: struct array of the figures.
 ## @end deftypefn
 
-function S = residtrace_blind (outdir, rigs, rule)
+function S = residtrace_blind (outdir, rigs, rule, draw)
   if (nargin < 1 || isempty (outdir))
     outdir = "results";
   endif
@@ -44,6 +46,9 @@ function S = residtrace_blind (outdir, rigs, rule)
   if (! any (strcmp (rule, {"simplest", "best"})))
     error ("residtrace_blind:badOption", "residtrace_blind: rule '%s'", rule);
   endif
+  if (nargin < 4 || isempty (draw))
+    draw = 0;
+  endif
   here = fileparts (mfilename ("fullpath"));
   addpath (fullfile (here, "..", "octave"));
   addpath (here);
@@ -51,7 +56,7 @@ function S = residtrace_blind (outdir, rigs, rule)
                "state_nonlinearity"};
   S = struct ([]);
   for i = 1:numel (rigs)
-    rig = blind_rigs (rigs{i});
+    rig = blind_rigs (rigs{i}, 1, draw);
     s = run_rig (rig, nonlinear, rule);
     printf ("%-13s %-19s named %-19s all {%s}  %.4g -> %.4g  %.1f s  %s\n",
             s.name, s.effect, s.named, strjoin (s.all, ", "),

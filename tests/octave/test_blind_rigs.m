@@ -304,6 +304,10 @@ function check_records ()
     error ("test_blind_rigs: records: lengths %d, %d", numel (a.de.y),
            numel (a.dv.y));
   endif
+  c = blind_rigs ("conveyor", 0.1, 1);
+  if (isequal (c.de.u, a.de.u))
+    error ("test_blind_rigs: records: draw 1 repeats draw 0");
+  endif
   if (isequal (a.de.u(1:400), a.dv.u))
     error ("test_blind_rigs: records: validation input = estimation input");
   endif
