@@ -318,15 +318,14 @@ function closedloop1 ()
   noisy_checks ("CLSRIVC", Mclsrivc, pdet);
 endfunction
 
-## A noisy closed-loop estimate against the noise-free one.  The sd that
-## clsrivc reports are 30-55 times smaller than the spread of its estimates
-## (8-run Monte Carlo of closedloop1: spread [3.4 8.7 3.1 4.4]e-3, mean
-## reported sd [1.2 1.6 0.8 1.1]e-4): these loops are u = r - C(p) y (r at
-## the plant input), while clsrivc/clrivc's CONTSID form builds its
-## instruments for u = C(p) (r - y); the estimates stay consistent but the
-## reported sd do not apply (with the setpoint r' = Dc/Nc r they match the
-## spread; README, issue 11 third session).  The tolerance is 3% (about 4
-## times the measured spread), the sd ratio is printed.
+## A noisy closed-loop estimate against the noise-free one.  These loops
+## are u = r - C(p) y (r at the plant input), the default of clsrivc and
+## clrivc's "ReferenceAt" (before issue 11's fourth session they built
+## their instruments for u = C(p) (r - y) and reported sd 20-55 times
+## smaller than the spread; their covariance is now the IV sandwich, and
+## bench/closed_loop_mc.m's "demo" case checks the sd against a Monte
+## Carlo of closedloop1).  The tolerance is 3% (about 4 times the measured
+## spread), the distance in reported sd is printed.
 function noisy_checks (name, M, pdet)
   [p, sd] = getpvec (M);
   ## a hybrid BJ model (clrivc) holds [b c d f]: its plant's b and f
