@@ -444,12 +444,12 @@ struct InputLoopRecord : ClosedLoopRecord {
     wd << 1, 10;
     const Eigen::VectorXd den = bj_detail::conv<double>(acl, wd);
     r1 = simulate_zoh(wn, wd, r, ts);
-    y = simulate_zoh(bj_detail::conv<double>(bj_detail::conv<double>(b, dc),
-                                             wn),
-                     den, r, ts);
-    u = simulate_zoh(bj_detail::conv<double>(bj_detail::conv<double>(f, dc),
-                                             wn),
-                     den, r, ts);
+    y = simulate_zoh(
+        bj_detail::conv<double>(bj_detail::conv<double>(b, dc), wn), den, r,
+        ts);
+    u = simulate_zoh(
+        bj_detail::conv<double>(bj_detail::conv<double>(f, dc), wn), den, r,
+        ts);
   }
 };
 
@@ -495,9 +495,9 @@ TEST(IvCovariance, SandwichIsInverseGramForZEqualPhi) {
   Eigen::VectorXd target = Z * Eigen::Vector4d(1, -2, 3e-3, 4);
   offline_iv_detail::IvSolution<double> sol;
   double condition = 0;
-  ASSERT_TRUE(riv_detail::solve_equilibrated<double>(Z, Z, target, "Z", sol,
-                                                     condition)
-                  .ok());
+  ASSERT_TRUE(
+      riv_detail::solve_equilibrated<double>(Z, Z, target, "Z", sol, condition)
+          .ok());
   const Eigen::MatrixXd gram_inverse = (Z.transpose() * Z).inverse();
   EXPECT_LT((sol.sandwich - gram_inverse).norm(), 1e-9 * gram_inverse.norm());
   EXPECT_LT((sol.inverse_gram - gram_inverse).norm(),
@@ -531,11 +531,11 @@ TEST(Clrivc, SandwichEqualsInverseGramOnlyForTheDataLoop) {
     const Eigen::MatrixXd& Z = iteration.instruments();
     const Eigen::MatrixXd gram_inverse = (Z.transpose() * Z).inverse();
     // the sandwich (returned in closed loop) against an independent one
-    const Eigen::MatrixXd M = (Z.transpose() * iteration.regressors()).inverse();
+    const Eigen::MatrixXd M =
+        (Z.transpose() * iteration.regressors()).inverse();
     const Eigen::MatrixXd direct = M * Z.transpose() * Z * M.transpose();
     EXPECT_LT((sandwich - direct).norm(), 1e-6 * direct.norm());
-    mismatch[at_input] =
-        (sandwich - gram_inverse).norm() / gram_inverse.norm();
+    mismatch[at_input] = (sandwich - gram_inverse).norm() / gram_inverse.norm();
   }
   EXPECT_LT(mismatch[1], 1e-2) << "r1 at the plant input (the data's loop)";
   EXPECT_GT(mismatch[0], 10.0) << "r1 as the setpoint (another loop)";

@@ -802,8 +802,8 @@ class BjIteration {
         Z, Phi, target, "RIVC instrument", solution, condition);
     if (!s.ok()) return s;
     next = solution.theta;
-    inverse_gram = problem_.closed_loop() ? solution.sandwich
-                                          : solution.inverse_gram;
+    inverse_gram =
+        problem_.closed_loop() ? solution.sandwich : solution.inverse_gram;
     return Status::Ok();
   }
 
