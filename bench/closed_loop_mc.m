@@ -16,14 +16,15 @@
 ## piecewise constant, the data are exact. clsrivc with the discrete
 ## controller.
 ## @item "ct"
-## the CONTSID loop u = C(p) (r - y) with a strictly proper continuous
+## the loop u = C(p) (r - y) (r the setpoint) with a strictly proper continuous
 ## controller C = (0.5 s + 1) / (0.1 s^2 + s), r ZOH, a white
 ## output disturbance v held over each sample (ZOH) so that y(t_k) =
 ## G u (t_k) + v_k exactly; the closed loop is sampled exactly (c2d of
 ## the loop's transfer functions). u = C (r - y) is smooth (C strictly
 ## proper), FOH reproduces it to O((w Ts)^2): the noise-free estimate's
 ## error is printed against the spread. clsrivc (data 'foh'), clrivc
-## [1 0 0 2 0] and cl2srivc [1 2 0] [4 4 0].
+## [1 0 0 2 0] (both with "ReferenceAt", "setpoint") and cl2srivc [1 2 0]
+## [4 4 0].
 ## @item "ctc"
 ## the same loop with coloured noise v = (1 + 0.3 q^-1) / (1 - 0.95
 ## q^-1) e: clrivc [1 1 1 2 0] and cl2srivc (clsrivc's white-noise sd do
@@ -32,9 +33,11 @@
 ## the loop of CONTSID's closedloop1 demo as the family replay builds it
 ## (G = (s + 1)/(s^2 + 0.5 s + 1), C = (10 s + 15)/s, r = prbs (4, 500),
 ## Ts = 0.005, white FOH disturbance at 20 dB): u = r - C y, r at the
-## plant input. clsrivc called as the demo calls it (r as the setpoint of
-## u = C (r - y), the form it implements) and with the equivalent setpoint
-## r' = Dc/Nc r: the reported sd apply only to the second.
+## plant input. clsrivc and clrivc [2 0 0 2 0] called as the demo calls
+## them (r at the plant input, their default "ReferenceAt"), and clsrivc
+## told the wrong loop ("ReferenceAt", "setpoint": the instruments of u =
+## C (r - y), not optimal; the covariance is the IV sandwich, so its sd
+## must still match its own, larger, spread).
 ## @end table
 ##
 ## Per estimator and parameter: the bias, the Monte Carlo sd, the mean
@@ -87,21 +90,29 @@ function s = demo_loop (R)
            "|u - C (r - y)| / |u| = %.2g\n"],
           norm (udet - (r - Cy)) / norm (udet),
           norm (udet - lsim (c2d (Mc, Ts), r) + Cy) / norm (udet));
-  rp = lsim (c2d (tf (Dc, Nc), Ts), r);   # u = C (r' - y)
-  [T, SD, Tp, SDp] = deal (zeros (R, 4));
+  [T, SD, Tc, SDc, Tw, SDw] = deal (zeros (R, 4));
+  t0 = cputime ();
   for i = 1:R
     e = randn (N, 1);
     d = (e - mean (e)) / std (e) * std (ydet) / 10;
     y = ydet + simc (M0ur, iddata ([], d, Ts, "InterSample", "foh"));
     u = udet + simc (M0ud, iddata ([], -d, Ts, "InterSample", "foh"));
-    M = clsrivc (iddata (y, u, Ts), iddata (y, r, Ts), [2 2 0], Mc);
+    data_yu = iddata (y, u, Ts, "InterSample", "zoh");
+    data_yr = iddata (y, r, Ts, "InterSample", "zoh");
+    M = clsrivc (data_yu, data_yr, [2 2 0], Mc);
     T(i, :) = M.theta; SD(i, :) = sqrt (diag (M.covariance)).';
-    M = clsrivc (iddata (y, u, Ts), iddata (y, rp, Ts), [2 2 0], Mc);
-    Tp(i, :) = M.theta; SDp(i, :) = sqrt (diag (M.covariance)).';
+    M = clrivc (data_yu, data_yr, [2 0 0 2 0], Mc, 1);
+    Tc(i, :) = M.theta; SDc(i, :) = sqrt (diag (M.covariance)).';
+    M = clsrivc (data_yu, data_yr, [2 2 0], Mc, "ReferenceAt", "setpoint");
+    Tw(i, :) = M.theta; SDw(i, :) = sqrt (diag (M.covariance)).';
   endfor
-  s.as_demo = summary ("demo loop: clsrivc with r (the demo's call)", T, SD,
-                       th0);
-  s.setpoint = summary ("demo loop: clsrivc with r' = Dc/Nc r", Tp, SDp, th0);
+  printf ("demo loop: %.1f s CPU for %d runs\n", cputime () - t0, R);
+  s.as_demo = summary ("demo loop: clsrivc [2 2 0] as the demo calls it", T,
+                       SD, th0);
+  s.clrivc = summary ("demo loop: clrivc [2 0 0 2 0] as the demo calls it",
+                      Tc, SDc, th0);
+  s.wrong_loop = summary (["demo loop: clsrivc told ReferenceAt = ", ...
+                           "setpoint (another loop)"], Tw, SDw, th0);
 endfunction
 
 ## The thesis' loop with a discrete PI controller, exact at the samples.
@@ -156,9 +167,11 @@ function s = continuous_loop (R, coloured)
     what = "ct loop, white noise";
   endif
   fit = @(y, u) {clsrivc(iddata (y, u, Ts, "InterSample", "foh"),
-                         iddata (y, r, Ts), [1 2 0], Mc),
+                         iddata (y, r, Ts), [1 2 0], Mc,
+                         "ReferenceAt", "setpoint"),
                  clrivc(iddata (y, u, Ts, "InterSample", "foh"), r,
-                        [1 coloured coloured 2 0], Mc),
+                        [1 coloured coloured 2 0], Mc,
+                        "ReferenceAt", "setpoint"),
                  cl2srivc(iddata (y, u, Ts), r, [1 2 0], [4 4 0])};
   names = {"clsrivc [1 2 0]", ...
            sprintf("clrivc [1 %d %d 2 0]", coloured, coloured), ...

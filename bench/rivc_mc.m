@@ -92,7 +92,7 @@ function S = rivc_mc (R, part)
     yc = yr + lsim (Sy, v);
     uc = ur - lsim (Su, v);
     M = clrivc (iddata (yc, uc, Ts, "InterSample", "foh"), r,
-                [1 1 1 2 0], Mc);
+                [1 1 1 2 0], Mc, "ReferenceAt", "setpoint");
     TC(i, :) = M.theta; SC(i, :) = sqrt (diag (M.covariance)).';
     M2 = cl2srivc (iddata (yc, uc, Ts), r, [1 2 0], [4 4 0]);
     T2(i, :) = M2.theta; S2(i, :) = sqrt (diag (M2.covariance)).';

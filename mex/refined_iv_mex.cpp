@@ -4,8 +4,9 @@
 //   [theta, cov, info] = refined_iv_mex (fname, y, w, t, r, opts)
 //
 // y N-by-1; w N-by-m (the inputs and extra regressors, one channel each);
-// t a scalar Ts or the N sampling instants; r the reference (N-by-1) of a
-// closed loop with a continuous-time controller, or []. opts fields (see
+// t a scalar Ts or the N sampling instants; r the setpoint (N-by-1) or
+// [r1 r] (N-by-2, r1 at the plant input: u = r1 + C (r - y)) of a closed
+// loop with a continuous-time controller, or []. opts fields (see
 // RivProblem/RivSettings): method ('srivc' | 'ivsvf' | 'lssvf'), nf (order
 // of each denominator), group, nb, nk, intersample (per channel; group
 // 1-based, intersample 0 = zoh, 1 = foh), delay (per channel, a continuous
@@ -143,7 +144,14 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
         Eigen::Map<const Eigen::VectorXd>(cnum.data(), cnum.size());
     problem.controller_den =
         Eigen::Map<const Eigen::VectorXd>(cden.data(), cden.size());
-    problem.reference = g.matrix(prhs[4], "the reference r", n, 1);
+    // r (N-by-1, the setpoint) or [r1 r] (N-by-2, r1 at the plant input)
+    if (mxGetN(prhs[4]) == 2) {
+      const double* r = g.matrix(prhs[4], "[r1 r]", n, 2);
+      problem.r1 = r;
+      problem.reference = r + n;
+    } else {
+      problem.reference = g.matrix(prhs[4], "the reference r", n, 1);
+    }
   } else if (!mxIsEmpty(prhs[4])) {
     g.fail("badInput", "a reference r needs a controller");
   }

@@ -4,8 +4,9 @@
 //   [theta, cov, info] = rivc_mex (fname, y, u, Ts, r, opts)
 //
 // y N-by-1, u N-by-m (m > 1: MISO rivc, method 'rivc' in open loop), Ts
-// the sampling interval (regular data), r the reference (N-by-1) of a
-// closed loop or []. opts fields:
+// the sampling interval (regular data), r the reference of a closed loop:
+// the setpoint (N-by-1) or [r1 r] (N-by-2, r1 at the plant input: u = r1
+// + C (r - y); cl2srivc: N-by-1), or []. opts fields:
 //   method  'rivc' (default; with controller_num/_den: CLRIVC),
 //           'cl2srivc' (two-stage SRIVC: u on r, then y on u_hat) or
 //           'arma' (the ARMA estimator alone on y: nd, nc).
@@ -204,7 +205,14 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       }
       problem.controller_num = cnum.reshaped();
       problem.controller_den = cden.reshaped();
-      problem.reference = g.matrix(prhs[4], "the reference r", n, 1);
+      // r (N-by-1, the setpoint) or [r1 r] (N-by-2, r1 at the plant input)
+      if (mxGetN(prhs[4]) == 2) {
+        const double* r = g.matrix(prhs[4], "[r1 r]", n, 2);
+        problem.r1 = r;
+        problem.reference = r + n;
+      } else {
+        problem.reference = g.matrix(prhs[4], "the reference r", n, 1);
+      }
     } else if (!mxIsEmpty(prhs[4])) {
       g.fail("badInput", "a reference r needs a controller");
     }

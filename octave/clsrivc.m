@@ -3,21 +3,32 @@
 ## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} clsrivc (@dots{}, @var{name}, @var{value})
 ## Closed-loop simplified refined IV estimate (CLSRIVC, thesis eqs.
 ## 2.47-2.50) of a continuous-time plant in the loop
-## u = r1 + C(q^-1) (r2 - y) with a known discrete controller.
+## u = r1 + C (r2 - y) (eq. 2.49b) with a known controller C.
 ##
 ## @var{data}: the measured plant input u and output y (iddata, ZOH);
-## @var{datacl}: the external signals, N-by-1 r1 (then r2 = 0) or N-by-2
-## [r1 r2], or an iddata with those as inputs; @var{Mc}: the controller, a
-## struct with @code{num} and @code{den} (powers of q^-1), or @code{kp},
-## @code{ki}, @code{kd} (backward-Euler PID, thesis eq. 2.55), or a
-## discrete control-package tf. Options and outputs as for @code{srivc};
-## the start is the closed-loop IVSVF (eq. 2.44).
+## @var{datacl}: the external signals, N-by-2 [r1 r2], or one signal r
+## (N-by-1, or an iddata with it as input, CONTSID's @code{iddata (y, r)})
+## that enters the loop where option @code{"ReferenceAt"} says:
+## @code{"input"} (default, r1 = r, r2 = 0: r added to the plant input, u
+## = r - C y, as CONTSID's closedloop demos build their data) or
+## @code{"setpoint"} (r2 = r, r1 = 0: u = C (r - y)). @var{Mc}: the
+## controller, a struct with @code{num} and @code{den} (powers of
+## q^-1), or @code{kp}, @code{ki}, @code{kd} (backward-Euler PID, thesis
+## eq. 2.55), or a discrete control-package tf (ZOH data). Options and
+## outputs as for @code{srivc}; the start is the closed-loop IVSVF (eq.
+## 2.44).
 ##
 ## CONTSID's form: @var{Mc} a @strong{continuous-time} control-package
-## @code{tf} C(p) in the loop u = C(p) (r - y), and @var{datacl} =
-## @code{iddata (y, r)} (its input is the reference r, or r itself as an
-## N-by-1 vector). The auxiliary model is then the continuous closed loop
-## x_hat = B Nc / (F Dc + B Nc) r, u_hat = F Nc / (F Dc + B Nc) r (nk = 0).
+## @code{tf} C(p) = Nc/Dc (nk = 0). The auxiliary model is then the
+## continuous closed loop x_hat = B (Nc r2 + Dc r1) / (F Dc + B Nc),
+## u_hat = F (Nc r2 + Dc r1) / (F Dc + B Nc).
+##
+## The covariance is the IV sandwich sigma^2 (Z'Phi)^-1 Z'Z (Phi'Z)^-1 of
+## the prefiltered instruments Z and regressors Phi (sigma^2 the
+## simulation-error variance): it equals eq. 2.13's sigma^2 (Z'Z)^-1 when
+## the instruments are the noise-free regressors (the loop given right)
+## and remains the estimate's covariance (white noise) when they are built
+## from another loop than the data's (e.g. r given at the wrong place).
 ##
 ## @strong{Example}
 ## @example
@@ -53,7 +64,8 @@ endfunction
 %! b = clsrivc (iddata (x, u, Ts), r1, [1 2 0], tf ([0.5 + 2 * Ts, -0.5], [1 -1], Ts), "lambda", 16);
 %! assert (b.theta, a.theta, 1e-9);
 
-%!test  # CONTSID form: continuous-time controller, datacl = iddata (y, r)
+%!test  # CONTSID form: continuous-time controller, datacl = iddata (y, r),
+%! # r the setpoint (u = Cc (r - y))
 %! pkg load control
 %! Tsc = 0.005; Nc = 4000; tc = (0:Nc-1)' * Tsc;
 %! randn ("state", 2);
@@ -71,9 +83,30 @@ endfunction
 %!   s2 = E2(1:end-1, 1:end-1) * s2 + E2(1:end-1, end) * r(k);
 %! endfor
 %! yn = yc + 0.01 * randn (Nc, 1);
-%! [M, ~, ~, info] = clsrivc (iddata (yn, uc, Tsc), iddata (yn, r, Tsc), [1 2 0], Cc);
+%! [M, ~, ~, info] = clsrivc (iddata (yn, uc, Tsc), iddata (yn, r, Tsc),
+%!                            [1 2 0], Cc, "ReferenceAt", "setpoint");
 %! assert (info.converged && info.stable);
 %! assert (M.theta, [2 3 3], 0.05);
+%! M2 = clsrivc (iddata (yn, uc, Tsc), [0 * r, r], [1 2 0], Cc);
+%! assert (M2.theta, M.theta, 1e-10);
+
+%!test  # CONTSID form, r at the plant input (u = r - Cc y, the default, as
+%! # CONTSID's closedloop demos build their data): r a binary signal
+%! # through 10 / (s + 10), so that u is continuous; noise-free exact to
+%! # O((w Ts)^2), [r 0] the same
+%! pkg load control
+%! Tsc = 0.005; Nc = 4000; randn ("state", 3);
+%! W = tf (10, [1 10]);
+%! v = kron (sign (randn (Nc / 100, 1)), ones (100, 1));
+%! G = tf (3, [1 2 3]); Cc = tf ([0.5 1], [0.1 1 0]);
+%! r = lsim (c2d (W, Tsc), v);
+%! yc = lsim (c2d (feedback (G, Cc) * W, Tsc), v);
+%! uc = lsim (c2d (feedback (1, G * Cc) * W, Tsc), v);
+%! dat = iddata (yc, uc, Tsc, "InterSample", "foh");
+%! a = clsrivc (dat, iddata (yc, r, Tsc), [1 2 0], Cc);
+%! b = clsrivc (dat, [r, 0 * r], [1 2 0], Cc, "ReferenceAt", "setpoint");
+%! assert (a.theta, [2 3 3], 1e-3);
+%! assert (b.theta, a.theta, 1e-10);
 
 %!test  # reported sd against a small Monte Carlo on exact closed-loop data
 %! # (discrete PI, ZOH plant exact at the samples, white noise fed back;
@@ -102,6 +135,8 @@ endfunction
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0])
 %!error id=clsrivc:dimensionMismatch clsrivc (iddata (x, u, Ts), r1(1:10), [1 2 0], C, "lambda", 16)
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), {1}, [1 2 0], C, "lambda", 16)
+%!error id=clsrivc:badOption clsrivc (iddata (x, u, Ts), r1, [1 2 0], C, "ReferenceAt", "output")
+%!error id=clsrivc:badOption clsrivc (iddata (x, u, Ts), r1, [1 2 0], C, "ReferenceAt", 1)
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0], 3, "lambda", 16)
 %!error id=clsrivc:badInput clsrivc (iddata (x, u, Ts), r1, [1 2 0], struct ("num", 1, "den", 0), "lambda", 16)
 

@@ -73,21 +73,8 @@ endfunction
 %! M = tffsrivc (G, 2, 1, "NumTd", 10, "TdMax", 2);
 %! assert (get (M, "IODelay"), 0.37, 1e-7);
 
-%!test  # the 27th noise draw of bench/freq_mc.m (delay 0.16 s, not 0.37):
-%! ## the loss is lowest there (a right-half-plane zero traded for delay),
-%! ## checked against an exhaustive scan of fixed delays
-%! randn ("state", 1);
-%! s = 1i * w(:);
-%! G0 = (0.5 * s + 4) ./ (s.^2 + 1.2 * s + 4) .* exp (-0.37 * s);
-%! for k = 1:27
-%!   e = 0.05 * (randn (50, 1) + 1i * randn (50, 1)) / sqrt (2);
-%! endfor
-%! Gn = idfrd (G0 + e, w, "Ts", 0);
-%! M = tffsrivc (Gn, 2, 1);
-%! tdmax = pi / median (w);                 # the default TdMax (idfrd)
-%! scan = arrayfun (@(td) get (tffsrivc (Gn, 2, 1, td, "FixTd", "on"),
-%!                             "Report").Fit.LossFcn, 0:0.01:tdmax);
-%! assert (M.Report.Fit.LossFcn <= min (scan) * (1 + 1e-9));
+## The delay search against an exhaustive scan of fixed delays (one copy
+## for tffsrivc and tffcoe): tests/octave/test_freq_delay_scan.m.
 
 %!error id=tffsrivc:badInput tffsrivc (G)
 %!error id=tffsrivc:badInput tffsrivc (G, 2)

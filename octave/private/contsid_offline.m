@@ -42,6 +42,11 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   ## CONTSID's MISO form [nb1..nbm nf1..nfm nk1..nkm]: one denominator per
   ## input ('Different'); the parser reads its common-denominator twin.
+  if (closed)
+    ## where a single external signal r enters the loop: "input" (u = r +
+    ## C (0 - y), CONTSID's closedloop demos) or "setpoint" (u = C (r - y))
+    defaults.ReferenceAt = "input";
+  endif
   [args, nf_each] = different_denominators (fname, refined, args);
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults, args{:});
   n = rows (d.y);
@@ -296,12 +301,18 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     v = logical (v(:).');
   endfunction
 
-  ## clsrivc: a discrete controller (the thesis' loop u = r1 + C (r2 - y))
-  ## or a continuous-time tf (CONTSID's loop u = C(p) (r - y), datacl =
-  ## iddata (y, r)).
+  ## clsrivc: the thesis' loop u = r1 + C (r2 - y) (eq. 2.49b) with a
+  ## discrete controller or a continuous-time tf (CONTSID's form, datacl =
+  ## iddata (y, r)). datacl holds [r1 r2], or one signal r that enters
+  ## where opts.ReferenceAt says (r1 = r: "input", r2 = r: "setpoint").
   function read_loop ()
     if (nu != 1)
       error ("clsrivc:badInput", "clsrivc: one input only");
+    endif
+    at = opts.ReferenceAt;
+    if (! ischar (at) || ! any (strcmpi (at, {"input", "setpoint"})))
+      error ("clsrivc:badOption",
+             "clsrivc: ReferenceAt must be 'input' or 'setpoint'");
     endif
     ## datacl is sampled as the data: with missing samples (bridged), its
     ## rows at the present samples
@@ -314,12 +325,12 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
       if (numel (num) > numel (den) || ! all (isfinite ([num(:); den(:)])))
         error ("clsrivc:badInput", "clsrivc: the controller must be proper");
       endif
-      r = read_datacl (datacl, present, true);
+      [r1, r2] = read_datacl (datacl, present, at);
       e.controller = struct ("num", num, "den", den);
-      e.reference = r;
+      e.reference = [r1, r2];
       return;
     endif
-    [r1, r2] = read_datacl (datacl, present, false);
+    [r1, r2] = read_datacl (datacl, present, at);
     Ts = NaN;
     if (d.uniform)
       Ts = d.Ts;
@@ -544,15 +555,13 @@ function theta = init_estimate (fname, init, e, np)
   endfor
 endfunction
 
-function varargout = read_datacl (datacl, present, reference)
+## [r1 r2] from datacl: N-by-2 [r1 r2], or one signal r placed by `at`
+## ("input": r1 = r, r2 = 0; "setpoint": r1 = 0, r2 = r). CONTSID: datacl
+## = iddata (y, r), the reference is its input.
+function [r1, r2] = read_datacl (datacl, present, at)
   n = numel (present);
   if (isa (datacl, "iddata"))
-    if (reference)
-      ## CONTSID: datacl = iddata (y, r), the reference is its input.
-      datacl = get (datacl, "InputData");
-    else
-      datacl = get (datacl, "InputData");
-    endif
+    datacl = get (datacl, "InputData");
     if (iscell (datacl))
       datacl = datacl{1};
     endif
@@ -566,22 +575,17 @@ function varargout = read_datacl (datacl, present, reference)
   if (isvector (datacl))
     datacl = datacl(:);
   endif
-  if (reference)
-    if (rows (datacl) != n || columns (datacl) != 1)
-      error ("clsrivc:dimensionMismatch",
-             "clsrivc: the reference r must be %d-by-1", n);
-    endif
-    varargout{1} = double (datacl(present));
-    return;
-  endif
   if (rows (datacl) != n || columns (datacl) > 2)
     error ("clsrivc:dimensionMismatch", ...
-           "clsrivc: datacl must be %d-by-1 (r1) or %d-by-2 ([r1 r2])", n, n);
+           "clsrivc: datacl must be %d-by-1 (r) or %d-by-2 ([r1 r2])", n, n);
   endif
-  varargout{1} = double (datacl(present, 1));
+  r1 = double (datacl(present, 1));
   if (columns (datacl) == 2)
-    varargout{2} = double (datacl(present, 2));
+    r2 = double (datacl(present, 2));
+  elseif (strcmpi (at, "setpoint"))
+    r2 = r1;
+    r1 = zeros (size (r2));
   else
-    varargout{2} = zeros (nnz (present), 1);
+    r2 = zeros (size (r1));
   endif
 endfunction

@@ -43,9 +43,10 @@
 ## derivatives of each group's free response), an output offset c, and
 ## per channel an input offset d_j (a constant channel in its group).
 ## @item controller, reference
-## closed loop u = C(p) (r - y): @code{controller} a struct with
+## closed loop u = r1 + C(p) (r - y): @code{controller} a struct with
 ## @code{num} and @code{den} (descending powers of p), @code{reference}
-## r (N-by-1). One input, W = the measured u. With
+## r (N-by-1, the setpoint) or [r1 r] (N-by-2). One input, W = the
+## measured u. With
 ## @code{controller.discrete} true, C(q^-1) = num/den in powers of q^-1
 ## in the loop u = r1 + C (r2 - y) (ZOH data) and @code{reference} =
 ## [r1 r2] (N-by-2).

@@ -73,7 +73,8 @@ function [M, info, d] = run_rivc (args)
   M = plant_model (fname, theta, cov, info, d, e);
 endfunction
 
-## clrivc (data_yu, data_yr, [nb nc nd nf nk], Mc[, T0, tol, maxiter])
+## clrivc (data_yu, data_yr, [nb nc nd nf nk], Mc[, T0, tol, maxiter]
+##         [, "ReferenceAt", at])
 function [M, info, d] = run_clrivc (args)
   fname = "clrivc";
   [d, rest] = read_data (fname, args);
@@ -81,7 +82,19 @@ function [M, info, d] = run_clrivc (args)
     error ("clrivc:badInput",
            "clrivc: expected data_yu, data_yr, [nb nc nd nf nk] and Mc");
   endif
-  r = read_reference (fname, rest{1}, rows (d.y), 2);
+  ## a trailing name-value pair after the positional arguments
+  named = find (cellfun (@ischar, rest(4:end)), 1);
+  at = "input";
+  if (! isempty (named))
+    o = read_options (fname, rest(3+named:end), {"ReferenceAt"}, {at});
+    at = o.ReferenceAt;
+    rest = rest(1:2+named);
+    if (! ischar (at) || ! any (strcmpi (at, {"input", "setpoint"})))
+      error ("clrivc:badOption",
+             "clrivc: ReferenceAt must be 'input' or 'setpoint'");
+    endif
+  endif
+  r = read_loop_signals (fname, rest{1}, rows (d.y), at);
   nn = read_orders (fname, rest{2}, 5, "[nb nc nd nf nk]");
   [num, den] = read_controller (fname, rest{3});
   pos = {"T0", "tol", "maxiter"};
@@ -354,6 +367,40 @@ function [num, den] = read_controller (fname, Mc)
   endif
   if (numel (num) > numel (den))
     error ([fname ":badInput"], "%s: the controller must be proper", fname);
+  endif
+endfunction
+
+## [r1 r] (N-by-2) of the loop u = r1 + C (r - y) from data_yr: an
+## iddata (y, r) or a matrix, N-by-2 [r1 r] or one signal that enters where
+## `at` says ("input": r1, CONTSID's closedloop demos; "setpoint": r).
+function r = read_loop_signals (fname, data, n, at)
+  if (isa (data, "iddata"))
+    data = get (data, "InputData");
+    if (iscell (data))
+      data = data{1};
+    endif
+  endif
+  if (isnumeric (data) && isvector (data))
+    data = data(:);
+  endif
+  if (! isnumeric (data) || ! isreal (data) || ndims (data) > 2
+      || isempty (data) || columns (data) > 2 || any (! isfinite (data(:))))
+    error ([fname ":badInput"],
+           "%s: the closed-loop data must hold r or [r1 r] (finite, real)",
+           fname);
+  endif
+  if (rows (data) != n)
+    error ([fname ":dimensionMismatch"],
+           "%s: the reference r needs %d samples, got %d", fname, n,
+           rows (data));
+  endif
+  data = double (data);
+  if (columns (data) == 2)
+    r = data;
+  elseif (strcmpi (at, "setpoint"))
+    r = [zeros(n, 1), data];
+  else
+    r = [data, zeros(n, 1)];
   endif
 endfunction
 

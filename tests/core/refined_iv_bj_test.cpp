@@ -431,6 +431,116 @@ TEST(Clrivc, NoiseFreeExact) {
       << res.theta.transpose();
 }
 
+// The same plant and controller in the loop u = r1 - C(p) y (r1 at the
+// plant input, CONTSID's closedloop demos): y = G Dc / Acl r1, u = F Dc /
+// Acl r1. r1 is a binary signal through W = 10 / (p + 10), so that u = r1
+// - C y is continuous (FOH to O((w Ts)^2), as above); the records are W's
+// and the loop's responses to the held binary signal, exact at the samples.
+struct InputLoopRecord : ClosedLoopRecord {
+  std::vector<double> r1;
+  explicit InputLoopRecord(unsigned seed) : ClosedLoopRecord(seed) {
+    Eigen::VectorXd wn(1), wd(2);
+    wn << 10;
+    wd << 1, 10;
+    const Eigen::VectorXd den = bj_detail::conv<double>(acl, wd);
+    r1 = simulate_zoh(wn, wd, r, ts);
+    y = simulate_zoh(
+        bj_detail::conv<double>(bj_detail::conv<double>(b, dc), wn), den, r,
+        ts);
+    u = simulate_zoh(
+        bj_detail::conv<double>(bj_detail::conv<double>(f, dc), wn), den, r,
+        ts);
+  }
+};
+
+RivcProblem<double> input_loop_problem(const InputLoopRecord& rec,
+                                       const std::vector<double>& zero,
+                                       bool at_input) {
+  RivcProblem<double> problem;
+  problem.nb = 1;
+  problem.nf = 2;
+  problem.u_rule = InterSample::kFoh;
+  problem.controller_num = rec.nc;
+  problem.controller_den = rec.dc;
+  problem.reference = at_input ? zero.data() : rec.r1.data();
+  problem.r1 = at_input ? rec.r1.data() : nullptr;
+  return problem;
+}
+
+TEST(Clrivc, NoiseFreeExactReferenceAtPlantInput) {
+  const InputLoopRecord rec(34);
+  const std::vector<double> zero(rec.n, 0.0);
+  RivcProblem<double> problem = input_loop_problem(rec, zero, true);
+  problem.nc = 1;
+  problem.nd = 1;
+  RivcSettings<double> settings;
+  settings.tolerance = 1e-10;
+  RivcData<double> data{rec.y.data(), rec.u.data(), rec.n, rec.ts};
+  RivcResult<double> res;
+  const Status s = rivc<double>(problem, settings, data, &res);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_LT(relative_error(res.theta, rec.plant_theta()), 1e-3)
+      << res.theta.transpose();
+}
+
+// The IV sandwich (Z^T Phi)^-1 Z^T Z (Phi^T Z)^-1 equals (Z^T Z)^-1 when
+// the instruments are the regressors (Z = Phi): to round-off for any Z.
+TEST(IvCovariance, SandwichIsInverseGramForZEqualPhi) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal(0, 1);
+  Eigen::MatrixXd Z(500, 4);
+  for (Eigen::Index i = 0; i < Z.size(); ++i) Z.data()[i] = normal(rng);
+  Z.col(2) *= 1e3;  // badly scaled columns: the equilibration is exercised
+  Z.col(3) = 0.9 * Z.col(0) + 0.1 * Z.col(3);
+  Eigen::VectorXd target = Z * Eigen::Vector4d(1, -2, 3e-3, 4);
+  offline_iv_detail::IvSolution<double> sol;
+  double condition = 0;
+  ASSERT_TRUE(
+      riv_detail::solve_equilibrated<double>(Z, Z, target, "Z", sol, condition)
+          .ok());
+  const Eigen::MatrixXd gram_inverse = (Z.transpose() * Z).inverse();
+  EXPECT_LT((sol.sandwich - gram_inverse).norm(), 1e-9 * gram_inverse.norm());
+  EXPECT_LT((sol.inverse_gram - gram_inverse).norm(),
+            1e-9 * gram_inverse.norm());
+}
+
+// CLRIVC's covariance matrix at the true plant on the noise-free record
+// of the loop u = r1 - C y: with r1 given at the plant input the
+// instruments are the noise-free regressors (up to the O((w Ts)^2) FOH
+// error of u), and the sandwich equals (Z^T Z)^-1; with r1 given as the
+// setpoint (instruments of the loop u = C (r1 - y), another loop) it does
+// not, and (Z^T Z)^-1 is off by far (the 20-39 times too small sd of
+// CONTSID's closedloop1 replay): the sandwich is what is reported.
+TEST(Clrivc, SandwichEqualsInverseGramOnlyForTheDataLoop) {
+  const InputLoopRecord rec(35);
+  const std::vector<double> zero(rec.n, 0.0);
+  const RivcData<double> data{rec.y.data(), rec.u.data(), rec.n, rec.ts};
+  double mismatch[2];
+  for (int at_input = 0; at_input < 2; ++at_input) {
+    const RivcProblem<double> problem =
+        input_loop_problem(rec, zero, at_input == 1);
+    bj_detail::BjIteration<double> iteration(problem, data, 1.0);
+    Eigen::VectorXd next, x_hat;
+    Eigen::MatrixXd sandwich;
+    ArmaResult<double> arma;
+    double condition = 0;
+    ASSERT_TRUE(iteration
+                    .step(rec.plant_theta(), ArmaSettings<double>(), false,
+                          next, sandwich, arma, x_hat, condition)
+                    .ok());
+    const Eigen::MatrixXd& Z = iteration.instruments();
+    const Eigen::MatrixXd gram_inverse = (Z.transpose() * Z).inverse();
+    // the sandwich (returned in closed loop) against an independent one
+    const Eigen::MatrixXd M =
+        (Z.transpose() * iteration.regressors()).inverse();
+    const Eigen::MatrixXd direct = M * Z.transpose() * Z * M.transpose();
+    EXPECT_LT((sandwich - direct).norm(), 1e-6 * direct.norm());
+    mismatch[at_input] = (sandwich - gram_inverse).norm() / gram_inverse.norm();
+  }
+  EXPECT_LT(mismatch[1], 1e-2) << "r1 at the plant input (the data's loop)";
+  EXPECT_GT(mismatch[0], 10.0) << "r1 as the setpoint (another loop)";
+}
+
 // CL2SRIVC's stages on ClosedLoopRecord: the plant [1 2 0] on u_hat (FOH),
 // the loop u/r [4 4 0] (exact: F Nc / Acl).
 RivProblem<double> cl2srivc_plant() {

@@ -84,10 +84,13 @@ struct RivProblem {
   InterSample y_rule = InterSample::kFoh;  // y is filtered by the trapezoid
   bool output_offset = false;              // estimate c
   bool initial_state = false;              // estimate y0 (free responses)
-  // Closed loop u = C(p) (r - y), C = nc / dc a continuous-time controller
-  // (one group, one channel: the plant input). Empty nc: open loop.
+  // Closed loop u = r1 + C(p) (r - y), C = nc / dc a continuous-time
+  // controller (one group, one channel: the plant input; the thesis' form
+  // of eq. 2.49b with r2 = r). Empty nc: open loop. r1 (the external
+  // signal at the plant input, CONTSID's closedloop demos' r) is optional
+  // here (nullptr: 0).
   Vector<S> controller_num, controller_den;  // descending powers of p
-  const S* reference = nullptr;              // r, N samples
+  const S* reference = nullptr;              // r (setpoint), N samples
   // Closed loop u = r1 + C(q^-1) (r2 - y) with a discrete controller (the
   // thesis' form, eqs. 2.44-2.50; ZOH input), simulated by LtvSimulator.
   const DiscreteTransferFunction<S>* discrete_controller = nullptr;
@@ -697,7 +700,8 @@ Status validate(const RivProblem<S>& problem, const RivSettings<S>& settings,
                     "controller");
     }
     for (Eigen::Index k = 0; k < n; ++k) {
-      if (!std::isfinite(problem.reference[k])) {
+      if (!std::isfinite(problem.reference[k]) ||
+          (problem.r1 != nullptr && !std::isfinite(problem.r1[k]))) {
         return bad_input("the reference must be finite");
       }
     }
@@ -727,6 +731,9 @@ class Engine {
     clock_.n = n_;
     if (problem.continuous_loop()) {
       r_ = Eigen::Map<const Vector<S>>(problem.reference, n_);
+      if (problem.r1 != nullptr) {
+        r1_ = Eigen::Map<const Vector<S>>(problem.r1, n_);
+      }
     }
   }
 
@@ -853,9 +860,10 @@ class Engine {
     }
   }
 
-  // Closed loop, u = C(p)(r - y), plant B/F: x_hat = B Nc / Acl r and
-  // u_hat = F Nc / Acl r with Acl = F Dc + B Nc (eqs. 2.48-2.49 with a
-  // continuous-time controller). Scaled time: C(p) = C(sigma p').
+  // Closed loop, u = r1 + C(p)(r - y), plant B/F: x_hat = B (Nc r + Dc
+  // r1) / Acl and u_hat = F (Nc r + Dc r1) / Acl with Acl = F Dc + B Nc
+  // (eqs. 2.48-2.49b with a continuous-time controller). Scaled time:
+  // C(p) = C(sigma p'). A zero signal is not filtered.
   Status simulate_closed_loop(const Vector<S>& theta, Vector<S>& x,
                               Vector<S>& u) const {
     if (p_.discrete_controller != nullptr) {
@@ -884,11 +892,21 @@ class Engine {
       return numerical_failure(
           "the model in the loop with the controller is unstable");
     }
+    x = Vector<S>::Zero(n_);
+    u = Vector<S>::Zero(n_);
     Matrix<S> D;
-    filter_derivatives<S>(d, S(1) / lead, p_.channels[0].rule, clock_,
-                          r_.data(), D);
-    x = combine(D, bx);
-    u = combine(D, fu);
+    if (!r_.isZero(0)) {
+      filter_derivatives<S>(d, S(1) / lead, p_.channels[0].rule, clock_,
+                            r_.data(), D);
+      x += combine(D, bx);
+      u += combine(D, fu);
+    }
+    if (r1_.size() > 0 && !r1_.isZero(0)) {
+      filter_derivatives<S>(d, S(1) / lead, p_.channels[0].rule, clock_,
+                            r1_.data(), D);
+      x += combine(D, conv(B, dc));
+      u += combine(D, conv(F, dc));
+    }
     return Status::Ok();
   }
 
@@ -1124,7 +1142,7 @@ class Engine {
   Layout<S> layout_;
   RivData<S> data_;
   Eigen::Index n_ = 0;
-  Vector<S> y_, r_;
+  Vector<S> y_, r_, r1_;
   Matrix<S> w_;
   Clock<S> clock_;
   // Work arrays reused from call to call (N rows: allocating them anew at
@@ -1287,8 +1305,15 @@ class Estimator {
     }
     // Refined IV: (sum zeta_f zeta_f^T)^-1, scaled by sigma^2 later
     // (eq. 2.13); one-step methods: the IV/LS formula for white equation
-    // error (nominal, the SVF-filtered equation error is coloured).
-    if (refined) {
+    // error (nominal, the SVF-filtered equation error is coloured). In
+    // closed loop the sandwich (Z^T Phi)^-1 Z^T Z (Phi^T Z)^-1: it equals
+    // (Z^T Z)^-1 for the optimal instruments (Z the noise-free part of
+    // Phi, eq. 2.48) and stays right for instruments built from another
+    // loop than the data's (a controller or an external signal given
+    // wrong), where (Z^T Z)^-1 is off by the instruments' scale.
+    if (refined && p_.closed_loop()) {
+      cov_block = gain * gain * solution.sandwich;
+    } else if (refined) {
       cov_block = gain * gain * solution.inverse_gram;
     } else {
       cov_block = solution.equation_error_variance * solution.sandwich;

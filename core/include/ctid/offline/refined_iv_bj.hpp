@@ -23,10 +23,17 @@
 // zeta_f^T)^-1 (eq. 2.13 with the innovation variance of the ARMA model),
 // which is the asymptotic covariance when the noise model is right.
 //
-// Closed loop with a known continuous-time controller u = Nc/Dc (r - y)
-// (CLRIVC): the instruments come from the closed loop driven by r,
-// x_hat = B Nc / Acl r and u_hat = F Nc / Acl r with Acl = F Dc + B Nc
-// (eqs. 2.48-2.49), the noise estimate is still y - B/F u.
+// Closed loop with a known continuous-time controller u = r1 + Nc/Dc (r -
+// y) (CLRIVC; r1 the external signal at the plant input, r the setpoint,
+// eq. 2.49b): the instruments come from the closed loop driven by them,
+// x_hat = B (Nc r + Dc r1) / Acl and u_hat = F (Nc r + Dc r1) / Acl with
+// Acl = F Dc + B Nc (eqs. 2.48-2.49), the noise estimate is still y - B/F
+// u. Its covariance is the IV sandwich sigma_e^2 (Z^T Phi)^-1 Z^T Z
+// (Phi^T Z)^-1 (Z, Phi the prefiltered instruments and regressors): equal
+// to eq. 2.13's sigma_e^2 (Z^T Z)^-1 when Z is the noise-free part of Phi,
+// and still right when the instruments come from another loop than the
+// data's (r given at the wrong place, a controller off), where (Z^T Z)^-1
+// is off by the instruments' scale.
 //
 // Two-stage closed loop (CL2SRIVC): SRIVC of the input's response to the
 // reference, u = S(p) r, gives the noise-free input u_hat = S r; SRIVC of
@@ -535,10 +542,12 @@ struct RivcProblem {
   int nk = 0;   // input delay in samples
   S delay = 0;  // continuous delay on top of nk (time units, >= 0)
   InterSample u_rule = InterSample::kZoh;
-  // Closed loop u = Nc(p) / Dc(p) (r - y) (descending powers of p); empty
-  // Nc: open loop. The reference r (N samples, ZOH).
+  // Closed loop u = r1 + Nc(p) / Dc(p) (r - y) (descending powers of p);
+  // empty Nc: open loop. The setpoint r and the plant-input signal r1 (N
+  // samples each, ZOH; r1 nullptr: 0).
   Vector<S> controller_num, controller_den;
   const S* reference = nullptr;
+  const S* r1 = nullptr;
   bool closed_loop() const { return controller_num.size() > 0; }
   int num_parameters() const { return nf + nb; }
 };
@@ -555,7 +564,9 @@ struct RivcSettings {
 template <typename S>
 struct RivcResult {
   Vector<S> theta;            // [f1 .. f_nf, b_0 .. b_(nb-1)], original time
-  Matrix<S> covariance;       // sigma_e^2 (sum zeta_f zeta_f^T)^-1, eq. 2.13
+  // sigma_e^2 (sum zeta_f zeta_f^T)^-1, eq. 2.13 (closed loop: the IV
+  // sandwich, see the header comment)
+  Matrix<S> covariance;
   ArmaResult<S> noise;        // C, D, innovation variance, their covariance
   Vector<S> start_theta;      // the SRIVC start
   S simulation_variance = 0;  // ||y - x_hat||^2 / (N - np)
@@ -653,7 +664,9 @@ Status validate(const RivcProblem<S>& problem, const RivcData<S>& data) {
     if (problem.nk != 0 || problem.delay != 0) {
       return bad_input("the closed loop takes no input delay (nk = 0)");
     }
-    if (!Eigen::Map<const Vector<S>>(problem.reference, n).allFinite()) {
+    if (!Eigen::Map<const Vector<S>>(problem.reference, n).allFinite() ||
+        (problem.r1 != nullptr &&
+         !Eigen::Map<const Vector<S>>(problem.r1, n).allFinite())) {
       return bad_input("the reference r must be finite");
     }
   }
@@ -676,6 +689,9 @@ class BjIteration {
     }
     if (problem.closed_loop()) {
       r_ = Eigen::Map<const Vector<S>>(problem.reference, n_);
+      if (problem.r1 != nullptr) {
+        r1_ = Eigen::Map<const Vector<S>>(problem.r1, n_);
+      }
     }
   }
 
@@ -701,7 +717,8 @@ class BjIteration {
   }
 
   // One RIVC step from theta (scaled): the new IV solution, the noise
-  // model of y - x_hat, (Z^T Z)^-1 in `inverse_gram`.
+  // model of y - x_hat, (Z^T Z)^-1 in `inverse_gram` (closed loop: the
+  // sandwich (Z^T Phi)^-1 Z^T Z (Phi^T Z)^-1, see the header comment).
   Status step(const Vector<S>& theta, const ArmaSettings<S>& arma_settings,
               bool refined, Vector<S>& next, Matrix<S>& inverse_gram,
               ArmaResult<S>& arma, Vector<S>& x_hat, S& condition) const {
@@ -785,13 +802,15 @@ class BjIteration {
         Z, Phi, target, "RIVC instrument", solution, condition);
     if (!s.ok()) return s;
     next = solution.theta;
-    inverse_gram = solution.inverse_gram;
+    inverse_gram =
+        problem_.closed_loop() ? solution.sandwich : solution.inverse_gram;
     return Status::Ok();
   }
 
  private:
-  // p'^i x_hat / F and p'^i u_hat / F from x_hat = B Nc / Acl r,
-  // u_hat = F Nc / Acl r, Acl = F Dc + B Nc (scaled time; eqs. 2.48-2.49).
+  // p'^i x_hat / F and p'^i u_hat / F from x_hat = B (Nc r + Dc r1) /
+  // Acl, u_hat = F (Nc r + Dc r1) / Acl, Acl = F Dc + B Nc (scaled time;
+  // eqs. 2.48-2.49b). A zero signal is not filtered.
   Status closed_loop_instruments(const Vector<S>& fpoly, const Vector<S>& b,
                                  Matrix<S>& Zx, Matrix<S>& Zu) const {
     const int nf = problem_.nf, nb = problem_.nb;
@@ -817,12 +836,8 @@ class BjIteration {
     }
     const Vector<S> den = conv<S>(acl, fpoly);  // monic, order nf + ncl
     Matrix<S> R;
-    riv_detail::filter_derivatives<S>(den.tail(den.size() - 1), S(1) / lead,
-                                      InterSample::kZoh, clock_, r_.data(), R);
-    const Vector<S> fnc = conv<S>(fpoly, nc);
-    // sum_k num_k p'^(k + i) r / (Acl F), num in descending powers.
+    // sum_k num_k p'^(k + i) s / (Acl F), num in descending powers.
     auto apply = [&](const Vector<S>& num, int count, Matrix<S>& out) {
-      out = Matrix<S>::Zero(n_, count);
       const int deg = static_cast<int>(num.size()) - 1;
       for (int i = 0; i < count; ++i) {
         for (int k = 0; k <= deg; ++k) {
@@ -831,8 +846,22 @@ class BjIteration {
         }
       }
     };
-    apply(bnc, nf + 1, Zx);
-    apply(fnc, nb, Zu);
+    Zx = Matrix<S>::Zero(n_, nf + 1);
+    Zu = Matrix<S>::Zero(n_, nb);
+    if (!r_.isZero(0)) {
+      riv_detail::filter_derivatives<S>(den.tail(den.size() - 1), S(1) / lead,
+                                        InterSample::kZoh, clock_, r_.data(),
+                                        R);
+      apply(bnc, nf + 1, Zx);
+      apply(conv<S>(fpoly, nc), nb, Zu);
+    }
+    if (r1_.size() > 0 && !r1_.isZero(0)) {
+      riv_detail::filter_derivatives<S>(den.tail(den.size() - 1), S(1) / lead,
+                                        InterSample::kZoh, clock_, r1_.data(),
+                                        R);
+      apply(conv<S>(b, dc), nf + 1, Zx);
+      apply(conv<S>(fpoly, dc), nb, Zu);
+    }
     return Status::Ok();
   }
 
@@ -840,7 +869,7 @@ class BjIteration {
   Eigen::Index n_;
   S sigma_;
   riv_detail::Clock<S> clock_;
-  Vector<S> y_, u_, r_;
+  Vector<S> y_, u_, r_, r1_;
   mutable Matrix<S> u1_, u2_, xf_, yf_, phi_, z_;
   mutable Vector<S> target_;
 
@@ -895,6 +924,7 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
       start.controller_num = problem.controller_num;
       start.controller_den = problem.controller_den;
       start.reference = problem.reference;
+      start.r1 = problem.r1;
     }
     RivData<S> d;
     d.y = data.y;
