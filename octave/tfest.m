@@ -42,7 +42,7 @@ function [M, info, varargout] = tfest (varargin)
   contsid_nargchk ("tfest", nargin, nargout, [2 Inf], 2);
   args = varargin;
   if (numel (args) == 2 || (numel (args) >= 3 && ! isnumeric (args{3})))
-    if (isnumeric (args{2}) && isscalar (args{2}))
+    if (isnumeric (args{2}) && ! isempty (args{2}) && isvector (args{2}))
       args = [args(1:2), {max(args{2} - 1, 0)}, args(3:end)];
     endif
   endif
