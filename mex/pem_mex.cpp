@@ -6,10 +6,10 @@
 // y N-by-1; u N-by-nu; t a scalar Ts or the N sampling instants
 // (continuous-time output error only). opts fields: model ('oe_ct' |
 // 'oe_dt' | 'arx'); output error: nf, nb, nk, delay (one entry per input:
-// y = sum_j B_j/F_j u_j; delay in time units, continuous time, default 0), estimate_delay (true: the total delay is
-// the last parameter, started from nk Ts + delay, kept in [0, delay_max]),
-// cutoff (SVF cut-off of the SRIVC start, rad/s; 0 a grid), intersample (0 zoh,
-// 1 foh), theta_init
+// y = sum_j B_j/F_j u_j; delay in time units, continuous time, default 0),
+// estimate_delay (true: the total delay is the last parameter, started from nk
+// Ts + delay, kept in [0, delay_max]), cutoff (SVF cut-off of the SRIVC start,
+// rad/s; 0 a grid), intersample (0 zoh, 1 foh), theta_init
 // ([f; b], or absent for the SRIVC / ARX start), maxiter, tol; arx: na,
 // nb, nk (nb, nk one entry per input). info: converged, iterations,
 // reason, loss, noise_variance, gradient_norm, damping, start,

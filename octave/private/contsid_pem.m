@@ -536,37 +536,44 @@ function [M, info] = freq_model (fname, args)
   if (numel (args) < 2)
     error ([fname ":badInput"], "%s: expected data and orders", fname);
   endif
+  nu = freq_inputs (args{1});
   rest = args(2:end);
-  td = 0;
+  td = zeros (1, nu);
   if (strcmp (fname, "oe"))
+    ## [nb nf] or [nb nf nk] with nk = 0, one entry of each per input
     nn = rest{1};
-    if (! isorder (nn) || ! any (numel (nn) == [2 3]))
+    if (! isorder (nn) || isempty (nn) || ! isvector (nn)
+        || ! any (numel (nn) == [2 3]  * nu))
       error ([fname ":badInput"], ["%s: on continuous-time frequency data ", ...
-             "the orders are [nb nf] (or [nb nf 0])"], fname);
+             "the orders are [nb nf] (or [nb nf 0]), one entry each per ", ...
+             "input (%d)"], fname, nu);
     endif
-    if (numel (nn) == 3 && nn(3) != 0)
+    if (numel (nn) == 3 * nu && any (nn(2*nu+1:end) != 0))
       error ([fname ":notSupported"], ["%s: a delay nk on continuous-time ", ...
              "frequency data is not supported"], fname);
     endif
-    nb = nn(1); na = nn(2);
+    nb = nn(1:nu); na = nn(nu+1:2*nu);
     rest = rest(2:end);
   else
-    if (numel (rest) < 2 || ! isorder (rest{1}) || ! isscalar (rest{1})
-        || ! isorder (rest{2}) || ! isscalar (rest{2}))
+    if (numel (rest) < 2 || ! isorder (rest{1}) || ! isvector (rest{1})
+        || ! isorder (rest{2}) || ! isvector (rest{2}))
       error ([fname ":badInput"], "%s: expected np and nz (integers)", fname);
     endif
-    na = rest{1}; nb = rest{2} + 1;
+    na = per_input (fname, rest{1}, nu, "np");
+    nb = per_input (fname, rest{2}, nu, "nz") + 1;
     rest = rest(3:end);
     if (! isempty (rest) && isnumeric (rest{1}))
       td = rest{1};
       rest = rest(2:end);
-      if (! isreal (td) || ! isscalar (td) || ! isfinite (td) || td < 0)
-        error ([fname ":badInput"], "%s: IODelay must be a real scalar >= 0",
+      if (! isreal (td) || isempty (td) || ! isvector (td)
+          || ! all (isfinite (td)) || any (td < 0))
+        error ([fname ":badInput"], "%s: IODelay must be real and >= 0",
                fname);
       endif
+      td = per_input (fname, td, nu, "IODelay");
     endif
   endif
-  if (na < 1 || nb < 1 || nb > na + 1)
+  if (any (na < 1) || any (nb < 1) || any (nb > na + 1))
     error ([fname ":badInput"], "%s: need nf >= 1 and 1 <= nb <= nf + 1",
            fname);
   endif
@@ -575,9 +582,24 @@ function [M, info] = freq_model (fname, args)
                             "tol", 1e-8, "lambda", [], "overpar", "off",
                             "tdmax", []));
   check_unused (fname, o, {"lambda", "overpar", "tdmax"});
-  spec = struct ("na", na, "nb", nb, "delay", td, "band", o.band,
-                 "maxiter", max (o.maxiter, 1), "tol", o.tol);
+  spec = struct ("na", double (na(:).'), "nb", double (nb(:).'),
+                 "delay", td, "band", o.band, "maxiter", max (o.maxiter, 1),
+                 "tol", o.tol);
   [M, info] = contsid_freq (fname, {args{1}, spec});
+endfunction
+
+## The number of inputs of frequency data (1 when it cannot be read: the
+## data are checked by contsid_freq).
+function nu = freq_inputs (data)
+  nu = 1;
+  try
+    if (isa (data, "idfrd"))
+      nu = max (size (get (data, "ResponseData"), 2), 1);
+    else
+      nu = max (columns (get (data, "InputData")), 1);
+    endif
+  catch
+  end_try_catch
 endfunction
 
 ## tfcoe's OverPar 'on': one more start [f; b; td] from an over-parametrised

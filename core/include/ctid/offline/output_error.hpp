@@ -274,9 +274,8 @@ class OeModel {
     for (int j = 0; j < num_channels(); ++j) {
       const Vector<S> f = theta.segment(f_offset_[j], channels_[j].nf);
       if (!f.allFinite()) return false;
-      const bool ok = s_.time == OeTime::kContinuous
-                          ? hurwitz_[j].is_stable(f)
-                          : schur_stable<S>(f);
+      const bool ok = s_.time == OeTime::kContinuous ? hurwitz_[j].is_stable(f)
+                                                     : schur_stable<S>(f);
       if (!ok) return false;
     }
     return true;
@@ -301,8 +300,8 @@ class OeModel {
   void filter(int j, const Vector<S>& d, Matrix<S>& out) {
     const InterSample rule = channels_[j].rule;
     if (delay_[j] > 0) {
-      riv_detail::filter_delayed_derivatives<S>(
-          d, S(1), rule, clock_, input(j), static_cast<S>(delay_[j]), out);
+      riv_detail::filter_delayed_derivatives<S>(d, S(1), rule, clock_, input(j),
+                                                static_cast<S>(delay_[j]), out);
     } else {
       riv_detail::filter_derivatives<S>(d, S(1), rule, clock_, input(j), out);
     }
@@ -555,8 +554,8 @@ Status arx_start(const std::vector<OeChannel>& channels, const OeData<S>& d,
       for (int i = 0; i < m; ++i)
         if (i != j) target -= x.col(i);
       ArxResult<S> arx;
-      const Status st = arx_least_squares<S>(
-          target.data(), d.u + j * n, n, 1, c.nf, {c.nb}, {c.nk}, &arx);
+      const Status st = arx_least_squares<S>(target.data(), d.u + j * n, n, 1,
+                                             c.nf, {c.nb}, {c.nk}, &arx);
       if (!st.ok()) {
         const std::string of =
             m > 1 ? " (input " + std::to_string(j + 1) + ")" : std::string();
