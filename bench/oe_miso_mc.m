@@ -54,8 +54,7 @@ function R = oe_miso_mc (runs)
        .* Ud(:, 1) + 2 ./ (1i * wu + 0.8) .* Ud(:, 2);
   K = numel (Y0);
   Ys = sim (idpoly (1, {[1.5 4], 2}, 1, 1, {[1 2.4 4], [1 0.8]}, "Ts", 0), U);
-  fd = @() [setfield(Ys, "y", Y0 + 0.1 * (randn (K, 1) + 1i * randn (K, 1)))
-            U];
+  fd = @() noisy_fd (Ys, Y0, U);
   R.tfest_iddata = mc ("tfest, 2 inputs (frequency iddata)", runs,
                        @() free_pvec (tfest (fd (), [2 1], [1 0])));
   ## idfrd, one output, two inputs
@@ -63,11 +62,26 @@ function R = oe_miso_mc (runs)
   s = 1i * w;
   G1 = (1.5 * s + 4) ./ (s .^ 2 + 2.4 * s + 4);
   G2 = 2 ./ (s + 0.8);
-  noise = @() 0.05 * (randn (50, 1) + 1i * randn (50, 1)) / sqrt (2);
-  frd = @() idfrd (reshape ([G1 + noise (), G2 + noise ()].', 1, 2, 50),
-                   w, "Ts", 0);
+  frd = @() noisy_frd (G1, G2, w);
   R.tfest_idfrd = mc ("tfest, 1 output 2 inputs (idfrd)", runs,
                       @() free_pvec (tfest (frd (), [2 1], [1 0])));
+endfunction
+
+## [Y U] with circular complex noise of sd 0.1 sqrt (2) on Y = Y0.
+function d = noisy_fd (Ys, Y0, U)
+  K = numel (Y0);
+  Ys.y = Y0 + 0.1 * (randn (K, 1) + 1i * randn (K, 1));
+  d = [Ys U];
+endfunction
+
+## The idfrd of [G1 G2] with circular complex noise of sd 0.05 on each.
+function F = noisy_frd (G1, G2, w)
+  K = numel (w);
+  noise = @() 0.05 * (randn (K, 1) + 1i * randn (K, 1)) / sqrt (2);
+  R = zeros (1, 2, K);
+  R(1, 1, :) = G1 + noise ();
+  R(1, 2, :) = G2 + noise ();
+  F = idfrd (R, w, "Ts", 0);
 endfunction
 
 function y = zoh_sim (n, d, u, Ts)
