@@ -4,7 +4,12 @@
 //   Y_k = G(j w_k) U_k + V_k,  G(s) = B(s)/A(s) e^(-s td),
 //   A(s) = s^n + a_1 s^(n-1) + .. + a_n,  B(s) = b_0 s^(m-1) + .. + b_(m-1)
 //
-// (U_k = 1 for a frequency response, idfrd). SRIVC (thesis eqs. 2.8-2.13
+// (U_k = 1 for a frequency response, idfrd). Several inputs: Y_k = sum_j
+// G_j(j w_k) U_jk, each G_j = B_j/A_j e^(-s td_j) with its own denominator
+// and fixed delay, theta = [a_1 .. a_m b_1 .. b_m]; each SRIVC iteration
+// updates the inputs in turn, input j fitted to Y minus the other inputs'
+// current model outputs (Gauss-Seidel, as refined_iv.hpp's groups), and
+// the output-error Jacobian is per input. SRIVC (thesis eqs. 2.8-2.13
 // with the prefilter 1/A applied in the frequency domain): with the
 // current A_i, B_i the filtered data Y_f = Y / A_i(jw), U_f = e^(-jw td)
 // U / A_i(jw) and the auxiliary-model output X_f = B_i/A_i U_f give the

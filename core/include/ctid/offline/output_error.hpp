@@ -7,6 +7,11 @@
 // theta = [f_1 .. f_nf, b_0 .. b_(nb-1) (, td)] (descending powers of p; in
 // discrete time F = 1 + f_1 q^-1 + .., B = q^-nk (b_0 + b_1 q^-1 + ..)),
 // minimising V(theta) = 1/N sum_k (y_k - y_hat_k(theta))^2 from rest.
+// Several inputs (the SITB's multi-input OE/tfest structure): y_hat =
+// sum_j B_j/F_j u_j, each input with its own denominator and delay, theta
+// = [f of input 1, .., f of input m, b of input 1, .., b of input m]; the
+// sensitivities below are then per input (those of x_j = B_j/F_j u_j),
+// and one input is the m = 1 case of the same code.
 //
 // The continuous-time model is simulated exactly under the data's
 // intersample rule (ZOH or FOH input, App. A.1; regular or irregular
@@ -31,8 +36,11 @@
 // runs in the time t' = sigma t (sigma = |f_nf|^(1/nf) of the start), as
 // the refined-IV engine does, for conditioning.
 //
-// Start: SRIVC (refined_iv.hpp) in continuous time, least-squares ARX with
-// unstable roots reflected in discrete time, or a given stable theta.
+// Start: SRIVC (refined_iv.hpp; one denominator group per input) in
+// continuous time, least-squares ARX with unstable roots reflected in
+// discrete time (several inputs: each input's ARX fitted to y minus the
+// others' simulated outputs, a few backfitting sweeps), or a given stable
+// theta.
 //
 // Covariance: s^2 (J^T J)^-1 with s^2 = sum e^2 / (N - np), the
 // asymptotic covariance of the prediction-error estimate (thesis eq. 1.18
