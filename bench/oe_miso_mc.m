@@ -26,6 +26,7 @@ function R = oe_miso_mc (runs)
     runs = 200;
   endif
   warning ("off", "all");
+  mc = @mc_sd_ratio;                    # bench/mc_sd_ratio.m
   ## discrete time
   N = 1000;
   rand ("state", 1);
@@ -95,21 +96,4 @@ function [th, sd] = free_pvec (M)
   [th, sd] = getpvec (M);
   keep = sd > 0;
   [th, sd] = deal (th(keep), sd(keep));
-endfunction
-
-function r = mc (name, runs, fun)
-  randn ("state", 1);
-  [th1, sd1] = fun ();
-  th = zeros (numel (th1), runs);
-  sd = th;
-  t0 = cputime ();
-  for k = 1:runs
-    [th(:, k), sd(:, k)] = fun ();
-  endfor
-  r = (std (th, 0, 2) ./ mean (sd, 2)).';
-  mad = 1.4826 * median (abs (th - median (th, 2)), 2);
-  printf ("%s, %d runs (%.0f s CPU): spread / reported sd = %s\n", name,
-          runs, cputime () - t0, mat2str (r, 3));
-  printf ("  robust spread (1.4826 MAD) / reported sd = %s\n",
-          mat2str ((mad ./ mean (sd, 2)).', 3));
 endfunction

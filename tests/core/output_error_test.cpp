@@ -172,6 +172,22 @@ Eigen::MatrixXd central_differences(const Eigen::VectorXd& theta, Fn&& sim) {
   return J;
 }
 
+// The model's Jacobian at theta against central differences of its
+// simulation.
+void expect_jacobian_exact(oe_detail::OeModel<double>& model,
+                           const Eigen::VectorXd& theta) {
+  Eigen::VectorXd yhat;
+  Eigen::MatrixXd J;
+  model.evaluate(theta, yhat, &J);
+  const Eigen::MatrixXd Jd =
+      central_differences(theta, [&](const Eigen::VectorXd& t) {
+        Eigen::VectorXd out;
+        model.evaluate(t, out, nullptr);
+        return out;
+      });
+  EXPECT_TRUE(test::MatrixNear(J, Jd, 1e-6));
+}
+
 TEST(OutputError, JacobianMatchesCentralDifferences) {
   const std::vector<double> u = binary_input(300, 4, 6);
   const std::vector<double> y(u.size(), 0.0);
@@ -193,16 +209,7 @@ TEST(OutputError, JacobianMatchesCentralDifferences) {
       } else {
         theta << -1.2, 0.5, 0.3, 0.2;
       }
-      Eigen::VectorXd yhat;
-      Eigen::MatrixXd J;
-      model.evaluate(theta, yhat, &J);
-      const Eigen::MatrixXd Jd =
-          central_differences(theta, [&](const Eigen::VectorXd& t) {
-            Eigen::VectorXd out;
-            model.evaluate(t, out, nullptr);
-            return out;
-          });
-      EXPECT_TRUE(test::MatrixNear(J, Jd, 1e-6));
+      expect_jacobian_exact(model, theta);
     }
   }
 }
@@ -240,16 +247,7 @@ TEST(OutputError, TwoInputJacobianMatchesCentralDifferences) {
       } else {
         theta << -1.2, 0.5, -0.6, 0.3, 0.2, 1.2, -0.4;
       }
-      Eigen::VectorXd yhat;
-      Eigen::MatrixXd J;
-      model.evaluate(theta, yhat, &J);
-      const Eigen::MatrixXd Jd =
-          central_differences(theta, [&](const Eigen::VectorXd& t) {
-            Eigen::VectorXd out;
-            model.evaluate(t, out, nullptr);
-            return out;
-          });
-      EXPECT_TRUE(test::MatrixNear(J, Jd, 1e-6));
+      expect_jacobian_exact(model, theta);
     }
   }
 }

@@ -863,6 +863,36 @@ class BjIteration {
   }
 };
 
+// One Box-Jenkins refined-IV iteration of [f b] (scaled time), shared by
+// rivc and each input of rivc_miso: the RIVC step from theta, the ARMA
+// noise model of this step kept as the next step's Gauss-Newton start
+// (the noise estimate changes little between iterations), then F kept
+// stable by step halving toward theta (the previous, stable iterate).
+// what names the iterate in the instability message.
+template <typename S>
+Status stable_bj_step(BjIteration<S>& iteration, const Vector<S>& theta, int nf,
+                      int nd, int nc, HurwitzTest<S>& hurwitz,
+                      const std::string& what, ArmaSettings<S>& arma_settings,
+                      Vector<S>& next, Matrix<S>& inverse_gram,
+                      ArmaResult<S>& arma, Vector<S>& x_hat, S& condition) {
+  const Status status = iteration.step(theta, arma_settings, true, next,
+                                       inverse_gram, arma, x_hat, condition);
+  if (!status.ok()) return status;
+  if (nc > 0) {
+    arma_settings.start.resize(nd + nc);
+    arma_settings.start << arma.d.tail(nd), arma.c.tail(nc);
+  }
+  int halvings = 0;
+  while (!hurwitz.is_stable(next.head(nf)) && halvings < 30) {
+    next = theta + S(0.5) * (next - theta);
+    ++halvings;
+  }
+  if (!hurwitz.is_stable(next.head(nf))) {
+    return numerical_failure(what + " is unstable");
+  }
+  return Status::Ok();
+}
+
 }  // namespace bj_detail
 
 // RIVC / CLRIVC: see the header comment. Returns kNotConverged (result
@@ -936,22 +966,10 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   // previous one (the noise estimate changes little between iterations).
   ArmaSettings<S> arma_settings = settings.arma;
   for (; it < settings.max_iterations; ++it) {
-    status = iteration.step(theta, arma_settings, true, next, inverse_gram,
-                            arma, x_hat, condition);
-    if (status.ok() && problem.nc > 0) {
-      arma_settings.start.resize(problem.nd + problem.nc);
-      arma_settings.start << arma.d.tail(problem.nd), arma.c.tail(problem.nc);
-    }
+    status = stable_bj_step(iteration, theta, nf, problem.nd, problem.nc,
+                            hurwitz, "the RIVC iterate", arma_settings, next,
+                            inverse_gram, arma, x_hat, condition);
     if (!status.ok()) return status;
-    // Keep F stable: step halving toward the previous (stable) iterate.
-    int halvings = 0;
-    while (!hurwitz.is_stable(next.head(nf)) && halvings < 30) {
-      next = theta + S(0.5) * (next - theta);
-      ++halvings;
-    }
-    if (!hurwitz.is_stable(next.head(nf))) {
-      return numerical_failure("the RIVC iterate is unstable");
-    }
     const S change = (next - theta).norm() / next.norm();
     theta = next;
     if (change < settings.tolerance) {
@@ -1156,26 +1174,13 @@ Status rivc_miso(const RivcMisoProblem<S>& problem,
     for (int i = 0; i < m; ++i) {
       const Vector<S> target = partial(i);
       const auto iteration = channel(i, target);
-      Status status = iteration->step(th[i], arma_settings, true, next,
-                                      inverse_gram, arma, x_hat, condition);
+      const Status status = stable_bj_step(
+          *iteration, th[i], problem.inputs[i].nf, problem.nd, problem.nc,
+          hurwitz[i], "the RIVC iterate", arma_settings, next, inverse_gram,
+          arma, x_hat, condition);
       if (!status.ok()) {
-        return Status(status.code(), "input " + std::to_string(i + 1) +
-                                         ": " + status.message());
-      }
-      if (problem.nc > 0) {
-        arma_settings.start.resize(problem.nd + problem.nc);
-        arma_settings.start << arma.d.tail(problem.nd),
-            arma.c.tail(problem.nc);
-      }
-      const int nf = problem.inputs[i].nf;
-      int halvings = 0;
-      while (!hurwitz[i].is_stable(next.head(nf)) && halvings < 30) {
-        next = th[i] + S(0.5) * (next - th[i]);
-        ++halvings;
-      }
-      if (!hurwitz[i].is_stable(next.head(nf))) {
-        return numerical_failure("the RIVC iterate of input " +
-                                 std::to_string(i + 1) + " is unstable");
+        return Status(status.code(), "input " + std::to_string(i + 1) + ": " +
+                                         status.message());
       }
       change2 += (next - th[i]).squaredNorm();
       norm2 += next.squaredNorm();
