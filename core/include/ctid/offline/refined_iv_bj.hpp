@@ -202,6 +202,29 @@ Status noise_record_status(const S* xi, Eigen::Index n, int nd, int nc) {
   return Status::Ok();
 }
 
+// The monic D and C of the ARMA parameters p = [d_1 .. d_nd, c_1 .. c_nc].
+template <typename S>
+void arma_polynomials(const Vector<S>& p, int nd, int nc, Vector<S>& dpoly,
+                      Vector<S>& cpoly) {
+  dpoly.resize(nd + 1);
+  cpoly.resize(nc + 1);
+  dpoly(0) = cpoly(0) = 1;
+  dpoly.tail(nd) = p.head(nd);
+  cpoly.tail(nc) = p.tail(nc);
+}
+
+// The roots of D and C reflected into the circle of radius 0.999 (the
+// ARMA estimators keep both minimum phase and stable).
+template <typename S>
+void project_arma(int nd, int nc, Vector<S>& p) {
+  Vector<S> dpoly, cpoly;
+  arma_polynomials<S>(p, nd, nc, dpoly, cpoly);
+  dpoly = reflect_into_circle<S>(dpoly, S(0.999));
+  cpoly = reflect_into_circle<S>(cpoly, S(0.999));
+  p.head(nd) = dpoly.tail(nd);
+  p.tail(nc) = cpoly.tail(nc);
+}
+
 }  // namespace bj_detail
 
 // ARMA model D(q^-1) xi = C(q^-1) e of a sampled record xi (N samples),
@@ -298,20 +321,9 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   }
 
   auto polys = [&](const Vector<S>& p, Vector<S>& dpoly, Vector<S>& cpoly) {
-    dpoly.resize(nd + 1);
-    cpoly.resize(nc + 1);
-    dpoly(0) = cpoly(0) = 1;
-    dpoly.tail(nd) = p.head(nd);
-    cpoly.tail(nc) = p.tail(nc);
+    arma_polynomials<S>(p, nd, nc, dpoly, cpoly);
   };
-  auto project = [&](Vector<S>& p) {
-    Vector<S> dpoly, cpoly;
-    polys(p, dpoly, cpoly);
-    dpoly = reflect_into_circle<S>(dpoly, S(0.999));
-    cpoly = reflect_into_circle<S>(cpoly, S(0.999));
-    p.head(nd) = dpoly.tail(nd);
-    p.tail(nc) = cpoly.tail(nc);
-  };
+  auto project = [&](Vector<S>& p) { project_arma<S>(nd, nc, p); };
   auto loss = [&](const Vector<S>& p, Vector<S>& e) -> S {
     Vector<S> dpoly, cpoly;
     polys(p, dpoly, cpoly);
@@ -452,20 +464,9 @@ Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     eta << start.d.tail(nd), start.c.tail(nc);
   }
   auto polys = [&](const Vector<S>& p, Vector<S>& dpoly, Vector<S>& cpoly) {
-    dpoly.resize(nd + 1);
-    cpoly.resize(nc + 1);
-    dpoly(0) = cpoly(0) = 1;
-    dpoly.tail(nd) = p.head(nd);
-    cpoly.tail(nc) = p.tail(nc);
+    arma_polynomials<S>(p, nd, nc, dpoly, cpoly);
   };
-  auto project = [&](Vector<S>& p) {
-    Vector<S> dpoly, cpoly;
-    polys(p, dpoly, cpoly);
-    dpoly = reflect_into_circle<S>(dpoly, S(0.999));
-    cpoly = reflect_into_circle<S>(cpoly, S(0.999));
-    p.head(nd) = dpoly.tail(nd);
-    p.tail(nc) = cpoly.tail(nc);
-  };
+  auto project = [&](Vector<S>& p) { project_arma<S>(nd, nc, p); };
   project(eta);
   Matrix<S> Phi(n, np), Z(n, np);
   Vector<S> e(n), col(n);
