@@ -260,4 +260,4 @@ endfunction
 %! N = 1000; u1 = sign (randn (N, 1)); u2 = randn (N, 1);
 %! y = filter ([0 0.5], [1 -0.8], u1) + filter ([0 0 1 0.5], [1 -0.3], u2);
 %! M = oe (iddata (y + 0.1 * randn (N, 1), [u1 u2], 1), [1 2 1 1 1 2])
-%! [M.F{1}; [M.F{2} 0]]
+%! celldisp (M.F)
