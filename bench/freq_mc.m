@@ -22,6 +22,7 @@ function R = freq_mc (runs)
     runs = 200;
   endif
   warning ("off", "all");
+  mc = @mc_sd_ratio;                    # bench/mc_sd_ratio.m
   w = logspace (-1, 1.5, 50).';
   s = 1i * w;
   G1 = (2 * s + 6) ./ (s.^2 + 1.5 * s + 9);
@@ -64,23 +65,4 @@ endfunction
 function [th, sd] = tfest_th (G)
   [th, sd] = getpvec (tfest (G, 2, 1));
   [th, sd] = deal (th(1:end-1), sd(1:end-1));   # the IODelay is fixed at 0
-endfunction
-
-function r = mc (name, runs, fun)
-  randn ("state", 1);
-  [th1, sd1] = fun ();
-  th = zeros (numel (th1), runs);
-  sd = th;
-  tic;
-  for k = 1:runs
-    [th(:, k), sd(:, k)] = fun ();
-  endfor
-  r = (std (th, 0, 2) ./ mean (sd, 2)).';
-  ## robust spread (1.4826 MAD): insensitive to the few runs whose loss
-  ## has its global minimum at another delay (a zero traded for delay)
-  mad = 1.4826 * median (abs (th - median (th, 2)), 2);
-  printf ("%s, %d runs (%.0f s): spread / reported sd = %s\n", name, runs,
-          toc, mat2str (r, 3));
-  printf ("  robust spread (1.4826 MAD) / reported sd = %s\n",
-          mat2str ((mad ./ mean (sd, 2)).', 3));
 endfunction

@@ -5,11 +5,12 @@
 //   [theta, cov, info] = freq_srivc_mex (fname, w, Y, U, opts)
 //
 // w K-by-1 frequencies (rad/s, >= 0); Y K-by-1 complex output (or the
-// frequency response); U K-by-1 complex input, or [] (U = 1). opts fields:
-// na, nb (required), tol, maxiter, delay, estimate_delay, td_min, td_max,
-// num_td, grid, output_error, theta_init ([a b]). theta = [a; b] or
-// [a; b; td] (estimate_delay); cov its covariance; info: delay,
-// noise_variance, loss, iterations, converged, stable, reason.
+// frequency response); U K-by-m complex inputs, or [] (U = 1). opts fields:
+// na, nb (required; one entry per input, y = sum_j B_j/A_j U_j), tol, maxiter,
+// delay, estimate_delay, td_min, td_max, num_td, grid, output_error, theta_init
+// ([a b]). theta = [a; b] or [a; b; td] (several inputs: [a_1; ..; a_m; b_1;
+// ..; b_m]) (estimate_delay); cov its covariance; info: delay, noise_variance,
+// loss, iterations, converged, stable, reason.
 #include <algorithm>
 #include <complex>
 #include <vector>
@@ -26,9 +27,10 @@ using ctid::mex::OptionsReader;
 std::vector<std::complex<double>> complex_column(const Gateway& g,
                                                  const mxArray* a,
                                                  const char* name, long n) {
+  // (a vector, or the K-by-m matrix U read as its n = K m values)
   if (!mxIsDouble(a) || mxIsSparse(a) ||
       mxGetNumberOfElements(a) != static_cast<size_t>(n) ||
-      (mxGetM(a) != 1 && mxGetN(a) != 1)) {
+      (mxGetM(a) != 1 && mxGetN(a) != 1 && std::string(name) != "U")) {
     g.fail("badInput", std::string(name) + " must be a double vector of " +
                            std::to_string(n) + " values");
   }
@@ -54,16 +56,48 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const double* w = g.matrix(prhs[1], "w", K, 1);
   const std::vector<std::complex<double>> Y =
       complex_column(g, prhs[2], "Y", K);
+  // U: K-by-m, one column per input (several inputs: y = sum_j G_j U_j)
   std::vector<std::complex<double>> U;
-  if (!mxIsEmpty(prhs[3])) U = complex_column(g, prhs[3], "U", K);
+  long inputs = 1;
+  if (!mxIsEmpty(prhs[3])) {
+    if (mxGetNumberOfDimensions(prhs[3]) != 2 ||
+        mxGetM(prhs[3]) != static_cast<size_t>(K)) {
+      g.fail("badInput",
+             "U must have one row per frequency (" + std::to_string(K) + ")");
+    }
+    inputs = static_cast<long>(mxGetN(prhs[3]));
+    U = complex_column(g, prhs[3], "U", K * inputs);
+  }
 
   OptionsReader opt(g, prhs[4]);
   ctid::FreqSettings<double> s;
-  s.na = opt.integer("na");
-  s.nb = opt.integer("nb");
+  // na, nb, delay: one entry per input (a scalar: one input)
+  const std::vector<int> na = opt.integer_vector("na");
+  const std::vector<int> nb = opt.integer_vector("nb");
+  const Eigen::MatrixXd delay = opt.matrix("delay");
+  if (na.size() != static_cast<size_t>(inputs) ||
+      nb.size() != static_cast<size_t>(inputs) ||
+      (delay.size() != 0 && delay.size() != inputs)) {
+    g.fail("dimensionMismatch", "na, nb and delay need one entry per input (" +
+                                    std::to_string(inputs) + ")");
+  }
+  s.na = na[0];
+  s.nb = nb[0];
+  s.delay = delay.size() != 0 ? delay(0) : 0.0;
+  long np = 0;
+  for (long j = 0; j < inputs; ++j) {
+    ctid::FreqChannel<double> c;
+    c.na = na[j];
+    c.nb = nb[j];
+    c.delay = delay.size() != 0 ? delay(j) : 0.0;
+    if (inputs > 1) s.inputs.push_back(c);
+    if (c.na < 0 || c.nb < 0 || c.na > 1000 || c.nb > 1000) {
+      g.fail("badInput", "na and nb must lie in [0, 1000]");
+    }
+    np += c.na + c.nb;
+  }
   s.tolerance = opt.scalar("tol", 1e-8);
   s.max_iterations = opt.integer("maxiter", 50);
-  s.delay = opt.scalar("delay", 0);
   s.estimate_delay = opt.flag("estimate_delay", false);
   s.td_min = opt.scalar("td_min", 0);
   s.td_max = opt.scalar("td_max", 0);
@@ -81,16 +115,18 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   data.y = Y.data();
   data.u = U.empty() ? nullptr : U.data();
   data.num_frequencies = K;
+  data.num_inputs = static_cast<int>(inputs);
   ctid::FreqResult<double> result;
   const ctid::Status status = ctid::freq_srivc(s, data, &result);
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
 
-  const long np = s.na + s.nb + (s.estimate_delay ? 1 : 0);
+  if (s.estimate_delay) ++np;
   plhs[0] = ctid::mex::make_output_matrix(np, 1);
   double* th = mxGetPr(plhs[0]);
-  std::copy(result.a.data(), result.a.data() + s.na, th);
-  std::copy(result.b.data(), result.b.data() + s.nb, th + s.na);
-  if (s.estimate_delay) th[s.na + s.nb] = result.delay;
+  const long na_total = static_cast<long>(result.a.size());
+  std::copy(result.a.data(), result.a.data() + na_total, th);
+  std::copy(result.b.data(), result.b.data() + result.b.size(), th + na_total);
+  if (s.estimate_delay) th[np - 1] = result.delay;
   if (nlhs >= 2) {
     plhs[1] = ctid::mex::make_output_matrix(np, np);
     std::copy(result.covariance.data(), result.covariance.data() + np * np,

@@ -5,11 +5,11 @@
 //
 // y N-by-1; u N-by-nu; t a scalar Ts or the N sampling instants
 // (continuous-time output error only). opts fields: model ('oe_ct' |
-// 'oe_dt' | 'arx'); output error: nf, nb, nk (scalars), delay (time units,
-// continuous time, default 0), estimate_delay (true: the total delay is
-// the last parameter, started from nk Ts + delay, kept in [0, delay_max]),
-// cutoff (SVF cut-off of the SRIVC start, rad/s; 0 a grid), intersample (0 zoh,
-// 1 foh), theta_init
+// 'oe_dt' | 'arx'); output error: nf, nb, nk, delay (one entry per input:
+// y = sum_j B_j/F_j u_j; delay in time units, continuous time, default 0),
+// estimate_delay (true: the total delay is the last parameter, started from nk
+// Ts + delay, kept in [0, delay_max]), cutoff (SVF cut-off of the SRIVC start,
+// rad/s; 0 a grid), intersample (0 zoh, 1 foh), theta_init
 // ([f; b], or absent for the SRIVC / ARX start), maxiter, tol; arx: na,
 // nb, nk (nb, nk one entry per input). info: converged, iterations,
 // reason, loss, noise_variance, gradient_norm, damping, start,
@@ -72,24 +72,44 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (model != "oe_ct" && model != "oe_dt") {
     g.fail("badOption", "model must be 'oe_ct', 'oe_dt' or 'arx'");
   }
-  if (record.num_inputs != 1) {
-    g.fail("notSupported", "output error takes one input, got " +
-                               std::to_string(record.num_inputs));
-  }
   ctid::OeStructure s;
   s.time =
       model == "oe_ct" ? ctid::OeTime::kContinuous : ctid::OeTime::kDiscrete;
-  s.nf = opt.integer("nf");
-  s.nb = opt.integer("nb");
-  s.nk = opt.integer("nk", 0);
-  s.delay = opt.scalar("delay", 0);
-  s.estimate_delay = opt.flag("estimate_delay", false);
-  s.delay_max = opt.scalar("delay_max", 0);
+  // One entry per input (a scalar: one input).
+  const std::vector<int> nf = opt.integer_vector("nf");
+  const std::vector<int> nb = opt.integer_vector("nb");
+  const std::vector<int> nk = opt.integer_vector("nk", {0});
+  const Eigen::MatrixXd delay = opt.matrix("delay");
+  const std::size_t m = record.num_inputs;
+  if (nf.size() != m || nb.size() != m || nk.size() != m ||
+      (delay.size() != 0 && static_cast<std::size_t>(delay.size()) != m)) {
+    g.fail("dimensionMismatch",
+           "nf, nb, nk and delay need one entry per input (" +
+               std::to_string(m) + ")");
+  }
   const int rule = opt.integer("intersample", 0);
   if (rule != 0 && rule != 1) {
     g.fail("badOption", "intersample must be 0 (zoh) or 1 (foh)");
   }
-  s.rule = rule == 0 ? ctid::InterSample::kZoh : ctid::InterSample::kFoh;
+  for (std::size_t j = 0; j < m; ++j) {
+    ctid::OeChannel c;
+    c.nf = nf[j];
+    c.nb = nb[j];
+    c.nk = nk[j];
+    c.delay = delay.size() != 0 ? delay(j) : 0.0;
+    c.rule = rule == 0 ? ctid::InterSample::kZoh : ctid::InterSample::kFoh;
+    if (m == 1) {
+      s.nf = c.nf;
+      s.nb = c.nb;
+      s.nk = c.nk;
+      s.delay = c.delay;
+      s.rule = c.rule;
+    } else {
+      s.inputs.push_back(c);
+    }
+  }
+  s.estimate_delay = opt.flag("estimate_delay", false);
+  s.delay_max = opt.scalar("delay_max", 0);
   ctid::OeSettings<double> settings;
   const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
   if (theta_init.size() > 0) {
@@ -103,6 +123,7 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::OeData<double> data;
   data.y = record.y;
   data.u = record.u;
+  data.num_inputs = static_cast<int>(m);
   data.num_samples = record.num_samples;
   data.ts = record.ts;
   data.instants = record.instants;

@@ -18,7 +18,23 @@
 ##
 ## @var{M}: an @code{idpoly} (Ts of the data) with covariance s^2 (J'J)^-1
 ## (s^2 = e'e/(N - nb - nf)) and Report (Fit.FitPercent, LossFcn = MSE =
-## e'e/N, FPE; Termination).  One input.
+## e'e/N, FPE; Termination).
+##
+## @strong{Several inputs.}  With nu inputs, @var{nb}, @var{nf} and
+## @var{nk} are row vectors of nu entries each (@code{[nb nf nk]} has
+## 3 nu entries) and the model is y(t) = sum_j B_j(q)/F_j(q) u_j(t -
+## nk_j) + e(t), each input with its own F_j (the System Identification
+## Toolbox's multi-input OE structure); @code{M.B} and @code{M.F} are
+## 1-by-nu cells, getpvec (M) = [B_1 .. B_nu (with their leading zeros),
+## F_1(2:end) .. F_nu(2:end)].  The Jacobian is exact per input (1/F_j
+## applied to u_j and to that input's simulated output x_j); the start
+## fits each input's ARX model to y minus the other inputs' simulated
+## outputs (a few backfitting sweeps).  On frequency data the orders are
+## @code{[nb nf]} with nu entries each, for an @code{idfrd} with one
+## output and nu inputs (its responses fitted together, the loss the sum
+## over the inputs) or frequency-domain @code{iddata} with nu inputs
+## (Y = sum_j B_j/F_j U_j); the SRIVC start then updates the inputs in
+## turn, each fitted to Y minus the others' model outputs.
 ##
 ## @strong{Frequency data.}  On an @code{idfrd} (Ts = 0) or on
 ## continuous-time frequency-domain @code{iddata} (@code{datafreq = [Y U]}
@@ -42,6 +58,12 @@
 ## u = sign (randn (500, 1));
 ## y = filter ([0 0.5], [1 -0.8], u) + 0.1 * randn (500, 1);
 ## M = oe (iddata (y, u, 1), [1 1 1])
+## ## two inputs, each with its own denominator: nb = [1 2], nf = [1 1],
+## ## nk = [1 2]
+## u2 = randn (500, 1);
+## y2 = y + filter ([0 0 1 0.5], [1 -0.3], u2);
+## M2 = oe (iddata (y2, [u u2], 1), [1 2 1 1 1 2]);
+## M2.F@{2@}                    # about [1 -0.3]
 ## @end example
 ## @seealso{oeOptions, arx, tfest, tfcoe}
 ## @end deftypefn
@@ -133,6 +155,76 @@ endfunction
 %! M = oe ([Y U], [2 3]);
 %! assert (getpvec (M), [B F(2:end)].', 1e-8);
 
+%!test  # two inputs, noise-free: exact, each input with its own F; B
+%! # and F are cells (as the SITB's multi-input idpoly)
+%! u2 = filter (1, [1 -0.5], sign (rand (N, 1) - 0.5));
+%! x2 = x + filter ([0 0 1.2 -0.4], [1 -0.6], u2);
+%! M = oe (iddata (x2, [u u2], 1), [2 2 2 1 2 2]);
+%! assert (iscell (M.B) && iscell (M.F));
+%! assert (M.F{1}, [1 -1.5 0.7], 1e-8);
+%! assert (M.B{1}, [0 0 0.5 0.3], 1e-8);
+%! assert (M.F{2}, [1 -0.6], 1e-8);
+%! assert (M.B{2}, [0 0 1.2 -0.4], 1e-8);
+
+%!test  # two inputs, noisy: the loss equals an independent evaluation (each
+%! # input filtered by its B_j/F_j, summed), the optimum is a local minimum
+%! # in every F coefficient, and the covariance is in getpvec's layout
+%! randn ("state", 9); rand ("state", 10);
+%! u2 = filter (1, [1 -0.5], sign (rand (N, 1) - 0.5));
+%! y = x + filter ([0 0 1.2 -0.4], [1 -0.6], u2) + 0.3 * randn (N, 1);
+%! M = oe (iddata (y, [u u2], 1), [2 2 2 1 2 2]);
+%! yh = @(B, F) filter (B{1}, F{1}, u) + filter (B{2}, F{2}, u2);
+%! loss = @(B, F) mean ((y - yh (B, F)) .^ 2);
+%! assert (loss (M.B, M.F), M.Report.Fit.LossFcn, 1e-12);
+%! for j = 1:2
+%!   for k = 2:numel (M.F{j})
+%!     for s = [-1 1]
+%!       Fp = M.F; Fp{j}(k) += s * 1e-4;
+%!       assert (loss (M.B, Fp) > M.Report.Fit.LossFcn);
+%!     endfor
+%!   endfor
+%! endfor
+%! [p, sd] = getpvec (M);
+%! assert (numel (p), 4 + 4 + 2 + 1);  # B_1, B_2 with their zeros, F_1, F_2
+%! assert (sd([1 2 5 6]), zeros (4, 1));         # the nk leading zeros
+%! assert (all (sd([3 4 7 8 9 10 11]) > 0));
+%! assert (all (abs (p - [0 0 0.5 0.3 0 0 1.2 -0.4 -1.5 0.7 -0.6].') ...
+%!              < 5 * sd + 1e-12));
+
+%!test  # idfrd with one output and two inputs, noise-free: exact; the
+%! # control package's freqresp of each returned B_j/F_j reproduces G_j
+%! pkg load control
+%! B2 = [1 3]; F2 = [1 2 6];
+%! G2 = polyval (B2, 1i * w) ./ polyval (F2, 1i * w);
+%! R = zeros (1, 2, numel (w)); R(1, 1, :) = G; R(1, 2, :) = G2;
+%! M = oe (idfrd (R, w, "Ts", 0), [2 2 3 2]);
+%! assert (M.B{1}, B, 1e-9 * norm (B));
+%! assert (M.F{1}, F, 1e-9 * norm (F));
+%! assert (M.B{2}, B2, 1e-9 * norm (B2));
+%! assert (M.F{2}, F2, 1e-9 * norm (F2));
+%! H1 = squeeze (freqresp (tf (M.B{1}, M.F{1}), w));
+%! H2 = squeeze (freqresp (tf (M.B{2}, M.F{2}), w));
+%! assert (H1(:), G, 1e-9 * max (abs (G)));
+%! assert (H2(:), G2, 1e-9 * max (abs (G2)));
+
+%!test  # two-input frequency-domain iddata, noise-free: exact (Y formed
+%! # independently as G_1 U_1 + G_2 U_2 by polyval)
+%! rand ("state", 5); ui = sign (rand (400, 2) - 0.5);  # independent inputs
+%! U = fft (iddata ([], ui, 0.05, "InterSample", "bl"));
+%! U.Ts = 0;
+%! wu = get (U, "Frequency"); Ud = get (U, "InputData");
+%! Yd = polyval (B, 1i * wu) ./ polyval (F, 1i * wu) .* Ud(:, 1) ...
+%!      + 3 ./ (1i * wu + 0.8) .* Ud(:, 2);
+%! Y = sim (idpoly (1, {B, 3}, 1, 1, {F, [1 0.8]}, "Ts", 0), U);
+%! Y.y = Yd;
+%! M = oe ([Y U], [2 1 3 1]);
+%! assert (getpvec (M), [B 3 F(2:end) 0.8].', 1e-8);
+
+%!error id=oe:dimensionMismatch oe (iddata (x, [u u], 1), [2 2 2])
+%!error id=oe:badInput oe (iddata (x, [u u], 1), [2 2 2 2 1])
+%!error id=oe:badInput oe (iddata (x, [u u], 1), [2 2 -1 2 1 1])
+%!error id=oe:badInput oe (iddata (x, [u u], 1), [2 0 2 2 1 1])
+%!error id=oe:badInput oe (idfrd (zeros (1, 2, 3), [1 2 3], 0), [2 2])
 %!error id=oe:badInput oe (idfrd (G, w, "Ts", 0), 2)
 %!error id=oe:badInput oe (idfrd (G, w, "Ts", 0), [2 0])
 %!error id=oe:notSupported oe (idfrd (G, w, "Ts", 0), [2 3 1])
@@ -145,7 +237,6 @@ endfunction
 %!error id=oe:badOption oe (iddata (x, u, 1), [2 2 2], "Lambda", 1)
 %!error id=oe:badOption oe (iddata (x, u, 1), [2 2 2], "Focus", [2 1])
 %!error id=oe:badOption oe (iddata (x, u, 1), [2 2 2], "Bogus", 1)
-%!error id=oe:notSupported oe (iddata (x, [u u], 1), [2 2 2])
 %!error id=oe:notSupported oe (idfrd (1, 1, 0), [2 2 2])
 %!error id=oe:badInput oe (iddata (x, u, "SamplingInstants", cumsum (0.5 + rand (N, 1))), [2 2 2])
 
@@ -162,3 +253,11 @@ endfunction
 %! y = filter ([0 0.5], [1 -0.8], u) + 0.1 * randn (500, 1);
 %! M = oe (iddata (y, u, 1), [1 1 1]);
 %! present (M)
+
+%!demo
+%! ## two inputs, each with its own denominator: [nb nf nk] with two
+%! ## entries each; M.B and M.F are cells
+%! N = 1000; u1 = sign (randn (N, 1)); u2 = randn (N, 1);
+%! y = filter ([0 0.5], [1 -0.8], u1) + filter ([0 0 1 0.5], [1 -0.3], u2);
+%! M = oe (iddata (y + 0.1 * randn (N, 1), [u1 u2], 1), [1 2 1 1 1 2])
+%! celldisp (M.F)

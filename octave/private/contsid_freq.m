@@ -85,7 +85,7 @@ function [M, info] = contsid_freq (fname, args)
       endif
     endif
   endif
-  if (na < 1 || nb < 1 || nb > na + 1)
+  if (any (na < 1) || any (nb < 1) || any (nb > na + 1))
     error ([fname ":badInput"], ["%s: the orders must be nf >= 1 and "
            "1 <= nb <= nf + 1"], fname);
   endif
@@ -103,7 +103,7 @@ function [M, info] = contsid_freq (fname, args)
     endif
     w = w(keep); Y = Y(keep);
     if (! isempty (U))
-      U = U(keep);
+      U = U(keep, :);
     endif
   endif
   o.na = na;
@@ -169,16 +169,30 @@ function [M, info] = contsid_freq (fname, args)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
              fname, info.reason);
   endif
-  a = theta(1:na).';
-  b = theta(na+1:na+nb).';
-  F = [1 a];
+  ## theta = [a_1; ..; a_nu; b_1; ..; b_nu] (several inputs: oe, tfest)
+  nu = numel (na);
   if (isempty (U))
     Uc = ones (size (Y));
   else
     Uc = U;
   endif
-  G = polyval (b, 1i * w) ./ polyval (F, 1i * w) .* exp (-1i * w * info.delay);
-  E = Y - G .* Uc;
+  Fs = cell (1, nu); bs = cell (1, nu);
+  at = 0; bt = sum (na);
+  GU = zeros (size (Y));
+  delays = info.delay;
+  if (nu > 1)
+    delays = td0;
+  endif
+  for j = 1:nu
+    Fs{j} = [1 theta(at+(1:na(j))).'];
+    bs{j} = theta(bt+(1:nb(j))).';
+    at += na(j);
+    bt += nb(j);
+    GU += polyval (bs{j}, 1i * w) ./ polyval (Fs{j}, 1i * w) ...
+          .* exp (-1i * w * delays(j)) .* Uc(:, j);
+  endfor
+  [F, b] = deal (Fs{1}, bs{1});
+  E = Y - GU;
   K = numel (w);
   npar = numel (theta);
   mse = mean (abs (E) .^ 2);
@@ -188,9 +202,14 @@ function [M, info] = contsid_freq (fname, args)
   info.w = w;
   info.Y = Y;
   info.U = U;
+  ## getpvec's order: the numerators, then the denominators
+  perm = [sum(na) + (1:sum (nb)), 1:sum(na)];
   if (strcmp (fname, "oe"))
-    M = idpoly (1, b, 1, 1, F, info.noise_variance, 0);
-    perm = [na + (1:nb), 1:na];
+    if (nu > 1)
+      M = idpoly (1, bs, 1, 1, Fs, info.noise_variance, 0);
+    else
+      M = idpoly (1, b, 1, 1, F, info.noise_variance, 0);
+    endif
     C = P(perm, perm);
     if (all (isfinite (C(:))))
       M = setcov (M, (C + C.') / 2);
@@ -217,14 +236,23 @@ function [M, info] = contsid_freq (fname, args)
                        "converged", info.converged, "Report", report));
     return;
   endif
-  M = idtf (b, F, "IODelay", info.delay);
-  perm = [na + (1:nb), 1:na];
+  if (nu > 1)
+    M = idtf (bs, Fs, "IODelay", delays);
+  else
+    M = idtf (b, F, "IODelay", info.delay);
+  endif
   if (estimate_td)
-    perm(end+1) = na + nb + 1;          # getpvec ends with the IODelay
+    perm(end+1) = sum (na) + sum (nb) + 1;  # getpvec ends with the IODelay
   endif
   C = P(perm, perm);
   if (all (isfinite (C(:))))
-    M = setcov (M, C);
+    if (nu > 1)
+      Cf = zeros (numel (getpvec (M)));   # the fixed IODelays last
+      Cf(1:numel (theta), 1:numel (theta)) = C;
+      M = setcov (M, Cf);
+    else
+      M = setcov (M, C);
+    endif
   endif
   tdsd = 0;
   if (estimate_td)
@@ -233,7 +261,7 @@ function [M, info] = contsid_freq (fname, args)
   rep = struct ("Fit", fit,
                 "Parameters", struct ("ParVector", getpvec (M),
                                       "FreeParCovariance", C,
-                                      "IODelay", info.delay,
+                                      "IODelay", delays,
                                       "IODelaySD", tdsd),
                 "Termination", struct ("Iterations", info.iterations,
                                        "Converged", info.converged,
@@ -278,11 +306,22 @@ function [M, info] = contsid_freq (fname, args)
     U = [];
     if (isa (data, "idfrd"))
       R = get (data, "ResponseData");
-      if (size (R, 1) != 1 || size (R, 2) != 1)
-        error ([fname ":notSupported"], "%s: the idfrd must be SISO", fname);
+      nu = size (R, 2);
+      if (size (R, 1) != 1 || (nu != 1 && ! (pem && nu == numel (na))))
+        error ([fname ":notSupported"], "%s: the idfrd must be SISO%s",
+               fname, ifelse (pem, " or have one output", ""));
       endif
       w = get (data, "Frequency");
       Y = R(:);
+      if (nu > 1)
+        ## one output, several inputs: the responses G_j stacked, each
+        ## the output of the unit input j (U = 0 for the others), so that
+        ## sum |Y - sum_j G_j U_j|^2 is the sum of the inputs' fits
+        K = numel (w);
+        Y = reshape (permute (R, [3 2 1]), [], 1);
+        U = kron (eye (nu), ones (K, 1));
+        w = repmat (w(:), nu, 1);
+      endif
       if (get (data, "Ts") != 0)
         error ([fname ":notSupported"],
                "%s: the idfrd must be continuous-time (Ts = 0)", fname);
@@ -291,10 +330,12 @@ function [M, info] = contsid_freq (fname, args)
                                              "Frequency"))
       y = get (data, "OutputData");
       u = get (data, "InputData");
-      if (columns (y) != 1 || columns (u) != 1)
+      if (columns (y) != 1
+          || (columns (u) != 1 && ! (pem && columns (u) == numel (na))))
         error ([fname ":notSupported"],
-               "%s: the frequency data must have one output and one input",
-               fname);
+               "%s: the frequency data must have one output and %s",
+               fname, ifelse (pem, sprintf ("%d input(s)", numel (na)),
+                              "one input"));
       endif
       if (get (data, "Ts") != 0)
         error ([fname ":notSupported"], ["%s: set data.Ts = 0 to declare "
@@ -314,11 +355,15 @@ function [M, info] = contsid_freq (fname, args)
     w = double (w(:));
     Y = double (Y(:));
     if (! isempty (U))
-      U = double (U(:));
-      keep = abs (U) > 0;
-      w = w(keep); Y = Y(keep); U = U(keep);
+      if (rows (U) != numel (Y))
+        error ([fname ":dimensionMismatch"],
+               "%s: U and Y need one row per frequency", fname);
+      endif
+      U = double (U);
+      keep = any (abs (U) > 0, 2);
+      w = w(keep); Y = Y(keep); U = U(keep, :);
     endif
-    if (any (! isfinite (Y)) || any (! isfinite (U)))
+    if (any (! isfinite (Y)) || any (! isfinite (U(:))))
       error ([fname ":badInput"], "%s: the frequency data must be finite",
              fname);
     endif

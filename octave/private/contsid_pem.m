@@ -213,20 +213,27 @@ function M = set_report (M, fname, d, e, npar, iters, conv, reason, n)
   M = set (M, "Report", rep);
 endfunction
 
+## oe (data, [nb nf nk]): nb, nf, nk one entry per input (y = sum_j
+## B_j/F_j u_j(t - nk_j), each input with its own F_j, as the SITB's oe);
+## B and F are cells for several inputs.
 function [M, info] = oe_model (fname, d, rest)
-  if (isempty (rest) || ! isorder (rest{1}) || numel (rest{1}) != 3)
+  nu = size (d.u, 2);
+  if (isempty (rest) || ! isorder (rest{1}) || isempty (rest{1})
+      || ! isvector (rest{1}) || mod (numel (rest{1}), 3) != 0)
     error ([fname ":badInput"], "%s: expected orders [nb nf nk]", fname);
   endif
-  if (size (d.u, 2) != 1)
-    error ([fname ":notSupported"], "%s: one input only", fname);
+  nn = rest{1};
+  if (numel (nn) != 3 * nu)
+    error ([fname ":dimensionMismatch"],
+           "%s: [nb nf nk] needs 3*%d entries for %d input(s), got %d",
+           fname, nu, nu, numel (nn));
   endif
   if (! d.uniform)
     error ([fname ":badInput"], ["%s: a discrete-time OE model needs ", ...
            "regularly sampled data"], fname);
   endif
-  nn = rest{1};
-  nb = nn(1); nf = nn(2); nk = nn(3);
-  if (nb < 1)
+  nb = nn(1:nu); nf = nn(nu+1:2*nu); nk = nn(2*nu+1:end);
+  if (any (nb < 1))
     error ([fname ":badInput"], "%s: nb must be >= 1", fname);
   endif
   o = read_options (fname, rest(2:end),
@@ -240,14 +247,34 @@ function [M, info] = oe_model (fname, d, rest)
                                            "nb", nb, "nk", nk,
                                            "maxiter", o.maxiter,
                                            "tol", o.tol));
-  F = [1 theta(1:nf).'];
-  B = [zeros(1, nk) theta(nf+(1:nb)).'];
+  ## theta = [f_1; ..; f_nu; b_1; ..; b_nu]; getpvec (M) = [B_1 .. B_nu
+  ## (with their nk leading zeros), F_1(2:end) .. F_nu(2:end)]
+  B = cell (1, nu); F = cell (1, nu);
+  perm = []; free = [];
+  at = 0; bt = sum (nf);
+  for j = 1:nu
+    B{j} = [zeros(1, nk(j)) theta(bt+(1:nb(j))).'];
+    perm = [perm, bt + (1:nb(j))];
+    free = [free, at + nk(j) + (1:nb(j))];
+    at += nk(j) + nb(j);
+    bt += nb(j);
+  endfor
+  ft = 0;
+  for j = 1:nu
+    F{j} = [1 theta(ft+(1:nf(j))).'];
+    perm = [perm, ft + (1:nf(j))];
+    free = [free, at + (1:nf(j))];
+    at += nf(j);
+    ft += nf(j);
+  endfor
+  if (nu == 1)
+    B = B{1}; F = F{1};
+  endif
   M = idpoly (1, B, 1, 1, F, info.noise_variance, d.Ts);
-  perm = [nf + (1:nb), 1:nf];
-  M = set_cov (M, P(perm, perm), theta, [nk + (1:nb), nk + nb + (1:nf)]);
+  M = set_cov (M, P(perm, perm), theta, free);
   e = df.y - info.simulated;
-  M = set_report (M, fname, d, e, nb + nf, info.iterations, info.converged,
-                  info.reason, rows (d.y));
+  M = set_report (M, fname, d, e, sum (nb) + sum (nf), info.iterations,
+                  info.converged, info.reason, rows (d.y));
   warn_unconverged (fname, info);
 endfunction
 
@@ -270,17 +297,21 @@ endfunction
 ## tfest (data, np, nz[, iodelay][, opt]) and tfcoe (data, np, nz[, td][,
 ## Name, Value]): continuous-time idtf; tfcoe estimates a given delay.
 function [M, info] = tf_model (fname, d, rest)
-  if (numel (rest) < 2 || ! isorder (rest{1}) || ! isscalar (rest{1})
-      || ! isorder (rest{2}) || ! isscalar (rest{2}))
+  nu = size (d.u, 2);
+  if (numel (rest) < 2 || ! isorder (rest{1}) || ! isvector (rest{1})
+      || ! isorder (rest{2}) || ! isvector (rest{2}))
     error ([fname ":badInput"], "%s: expected np and nz (integers)", fname);
   endif
-  np = rest{1}; nz = rest{2};
-  if (np < 1 || nz > np || np > 30)
+  ## np, nz (and the IODelay): scalars for every input or one per input
+  ## (y = sum_j B_j/F_j u_j(t - td_j), each input with its own F_j)
+  np = per_input (fname, rest{1}, nu, "np");
+  nz = per_input (fname, rest{2}, nu, "nz");
+  if (any (np < 1) || any (nz > np) || any (np > 30))
     ## (30: the order limit of every estimator, contsid_recursive_args)
     error ([fname ":badInput"],
            "%s: need 1 <= np <= 30 and 0 <= nz <= np", fname);
   endif
-  if (size (d.u, 2) != 1)
+  if (nu != 1 && ! strcmp (fname, "tfest"))
     error ([fname ":notSupported"], "%s: one input only", fname);
   endif
   rest = rest(3:end);
@@ -288,11 +319,12 @@ function [M, info] = tf_model (fname, d, rest)
   if (! isempty (rest) && isnumeric (rest{1}))
     td = rest{1};
     rest = rest(2:end);
-    if (! isnumeric (td) || ! isreal (td) || ! isscalar (td)
-        || ! isfinite (td) || td < 0)
-      error ([fname ":badInput"], "%s: IODelay must be a real scalar >= 0",
+    if (! isnumeric (td) || ! isreal (td) || isempty (td) || ! isvector (td)
+        || ! all (isfinite (td)) || any (td < 0))
+      error ([fname ":badInput"], "%s: IODelay must be real and >= 0",
              fname);
     endif
+    td = per_input (fname, td, nu, "IODelay");
   endif
   T = d.t(end) - d.t(1);
   o = read_options (fname, rest,
@@ -322,11 +354,11 @@ function [M, info] = tf_model (fname, d, rest)
     error ([fname ":badOption"], "%s: TdMax must be a scalar >= 0", fname);
   endif
   if (isempty (td))
-    td = 0;
+    td = zeros (1, nu);
   endif
-  if (td > T / 2 || (estimate && td > o.tdmax))
-    error ([fname ":badInput"], "%s: the delay %g exceeds %g s", fname, td,
-           min (T / 2, o.tdmax));
+  if (any (td > T / 2) || (estimate && td > o.tdmax))
+    error ([fname ":badInput"], "%s: the delay %g exceeds %g s", fname,
+           max (td), min (T / 2, o.tdmax));
   endif
   if (estimate && nz >= np)
     error ([fname ":badInput"],
@@ -334,7 +366,7 @@ function [M, info] = tf_model (fname, d, rest)
   endif
   df = contsid_focus_filter (fname, d, o.band, 4);
   rule = double (strcmpi (d.intersample, "foh"));
-  opts = struct ("model", "oe_ct", "nf", np, "nb", nz + 1, "nk", 0,
+  opts = struct ("model", "oe_ct", "nf", np, "nb", nz + 1, "nk", 0 * np,
                  "delay", td, "intersample", rule, "maxiter", o.maxiter,
                  "tol", o.tol, "estimate_delay", estimate,
                  "delay_max", o.tdmax, "cutoff", 0);
@@ -394,17 +426,21 @@ function [M, info] = tf_model (fname, d, rest)
       endif
     endif
   endif
-  den = [1 theta(1:np).'];
-  num = theta(np+(1:nz+1)).';
-  if (estimate)
-    td = theta(end);
+  if (nu > 1)
+    M = tf_multi (theta, P, np, nz, td);
+  else
+    den = [1 theta(1:np).'];
+    num = theta(np+(1:nz+1)).';
+    if (estimate)
+      td = theta(end);
+    endif
+    M = idtf (num, den, "IODelay", td);
+    perm = [np + (1:nz+1), 1:np];
+    if (estimate)
+      perm(end+1) = np + nz + 2;        # getpvec ends with the IODelay
+    endif
+    M = set_cov (M, P(perm, perm), theta(perm));
   endif
-  M = idtf (num, den, "IODelay", td);
-  perm = [np + (1:nz+1), 1:np];
-  if (estimate)
-    perm(end+1) = np + nz + 2;          # getpvec ends with the IODelay
-  endif
-  M = set_cov (M, P(perm, perm), theta(perm));
   e = df.y - info.simulated;
   M = set_report (M, fname, d, e, numel (theta), info.iterations,
                   info.converged, info.reason, rows (d.y));
@@ -418,6 +454,41 @@ function [M, info] = tf_model (fname, d, rest)
   r.Termination.Start = info.start;
   M = set (M, "NoiseVariance", info.noise_variance, "Report", r);
   warn_unconverged (fname, info);
+endfunction
+
+## A scalar order (or delay) v for each of the nu inputs, or one per input.
+function v = per_input (fname, v, nu, name)
+  if (isscalar (v))
+    v = repmat (v, 1, nu);
+  elseif (numel (v) != nu)
+    error ([fname ":dimensionMismatch"],
+           "%s: %s needs 1 or %d entries (one per input), got %d", fname,
+           name, nu, numel (v));
+  endif
+  v = double (v(:).');
+endfunction
+
+## The idtf of several inputs from theta = [f_1; ..; f_nu; b_1; ..; b_nu]:
+## one numerator and denominator per input; getpvec (M) = [num_1 ..
+## num_nu, den_1(2:end) .. den_nu(2:end), IODelay], the delays fixed.
+function M = tf_multi (theta, P, np, nz, td)
+  nu = numel (np);
+  num = cell (1, nu); den = cell (1, nu);
+  perm = [];
+  bt = sum (np);
+  for j = 1:nu
+    num{j} = theta(bt+(1:nz(j)+1)).';
+    perm = [perm, bt + (1:nz(j)+1)];
+    bt += nz(j) + 1;
+  endfor
+  ft = 0;
+  for j = 1:nu
+    den{j} = [1 theta(ft+(1:np(j))).'];
+    perm = [perm, ft + (1:np(j))];
+    ft += np(j);
+  endfor
+  M = idtf (num, den, "IODelay", td);
+  M = set_cov (M, P(perm, perm), theta(perm), 1:numel (theta));
 endfunction
 
 ## tfcoe's starts [f; b; td]: SRIVC at the delay of tfsrivc's search
@@ -465,37 +536,44 @@ function [M, info] = freq_model (fname, args)
   if (numel (args) < 2)
     error ([fname ":badInput"], "%s: expected data and orders", fname);
   endif
+  nu = freq_inputs (args{1});
   rest = args(2:end);
-  td = 0;
+  td = zeros (1, nu);
   if (strcmp (fname, "oe"))
+    ## [nb nf] or [nb nf nk] with nk = 0, one entry of each per input
     nn = rest{1};
-    if (! isorder (nn) || ! any (numel (nn) == [2 3]))
+    if (! isorder (nn) || isempty (nn) || ! isvector (nn)
+        || ! any (numel (nn) == [2 3]  * nu))
       error ([fname ":badInput"], ["%s: on continuous-time frequency data ", ...
-             "the orders are [nb nf] (or [nb nf 0])"], fname);
+             "the orders are [nb nf] (or [nb nf 0]), one entry each per ", ...
+             "input (%d)"], fname, nu);
     endif
-    if (numel (nn) == 3 && nn(3) != 0)
+    if (numel (nn) == 3 * nu && any (nn(2*nu+1:end) != 0))
       error ([fname ":notSupported"], ["%s: a delay nk on continuous-time ", ...
              "frequency data is not supported"], fname);
     endif
-    nb = nn(1); na = nn(2);
+    nb = nn(1:nu); na = nn(nu+1:2*nu);
     rest = rest(2:end);
   else
-    if (numel (rest) < 2 || ! isorder (rest{1}) || ! isscalar (rest{1})
-        || ! isorder (rest{2}) || ! isscalar (rest{2}))
+    if (numel (rest) < 2 || ! isorder (rest{1}) || ! isvector (rest{1})
+        || ! isorder (rest{2}) || ! isvector (rest{2}))
       error ([fname ":badInput"], "%s: expected np and nz (integers)", fname);
     endif
-    na = rest{1}; nb = rest{2} + 1;
+    na = per_input (fname, rest{1}, nu, "np");
+    nb = per_input (fname, rest{2}, nu, "nz") + 1;
     rest = rest(3:end);
     if (! isempty (rest) && isnumeric (rest{1}))
       td = rest{1};
       rest = rest(2:end);
-      if (! isreal (td) || ! isscalar (td) || ! isfinite (td) || td < 0)
-        error ([fname ":badInput"], "%s: IODelay must be a real scalar >= 0",
+      if (! isreal (td) || isempty (td) || ! isvector (td)
+          || ! all (isfinite (td)) || any (td < 0))
+        error ([fname ":badInput"], "%s: IODelay must be real and >= 0",
                fname);
       endif
+      td = per_input (fname, td, nu, "IODelay");
     endif
   endif
-  if (na < 1 || nb < 1 || nb > na + 1)
+  if (any (na < 1) || any (nb < 1) || any (nb > na + 1))
     error ([fname ":badInput"], "%s: need nf >= 1 and 1 <= nb <= nf + 1",
            fname);
   endif
@@ -504,9 +582,24 @@ function [M, info] = freq_model (fname, args)
                             "tol", 1e-8, "lambda", [], "overpar", "off",
                             "tdmax", []));
   check_unused (fname, o, {"lambda", "overpar", "tdmax"});
-  spec = struct ("na", na, "nb", nb, "delay", td, "band", o.band,
-                 "maxiter", max (o.maxiter, 1), "tol", o.tol);
+  spec = struct ("na", double (na(:).'), "nb", double (nb(:).'),
+                 "delay", td, "band", o.band, "maxiter", max (o.maxiter, 1),
+                 "tol", o.tol);
   [M, info] = contsid_freq (fname, {args{1}, spec});
+endfunction
+
+## The number of inputs of frequency data (1 when it cannot be read: the
+## data are checked by contsid_freq).
+function nu = freq_inputs (data)
+  nu = 1;
+  try
+    if (isa (data, "idfrd"))
+      nu = max (size (get (data, "ResponseData"), 2), 1);
+    else
+      nu = max (columns (get (data, "InputData")), 1);
+    endif
+  catch
+  end_try_catch
 endfunction
 
 ## tfcoe's OverPar 'on': one more start [f; b; td] from an over-parametrised

@@ -172,6 +172,22 @@ Eigen::MatrixXd central_differences(const Eigen::VectorXd& theta, Fn&& sim) {
   return J;
 }
 
+// The model's Jacobian at theta against central differences of its
+// simulation.
+void expect_jacobian_exact(oe_detail::OeModel<double>& model,
+                           const Eigen::VectorXd& theta) {
+  Eigen::VectorXd yhat;
+  Eigen::MatrixXd J;
+  model.evaluate(theta, yhat, &J);
+  const Eigen::MatrixXd Jd =
+      central_differences(theta, [&](const Eigen::VectorXd& t) {
+        Eigen::VectorXd out;
+        model.evaluate(t, out, nullptr);
+        return out;
+      });
+  EXPECT_TRUE(test::MatrixNear(J, Jd, 1e-6));
+}
+
 TEST(OutputError, JacobianMatchesCentralDifferences) {
   const std::vector<double> u = binary_input(300, 4, 6);
   const std::vector<double> y(u.size(), 0.0);
@@ -193,18 +209,98 @@ TEST(OutputError, JacobianMatchesCentralDifferences) {
       } else {
         theta << -1.2, 0.5, 0.3, 0.2;
       }
-      Eigen::VectorXd yhat;
-      Eigen::MatrixXd J;
-      model.evaluate(theta, yhat, &J);
-      const Eigen::MatrixXd Jd =
-          central_differences(theta, [&](const Eigen::VectorXd& t) {
-            Eigen::VectorXd out;
-            model.evaluate(t, out, nullptr);
-            return out;
-          });
-      EXPECT_TRUE(test::MatrixNear(J, Jd, 1e-6));
+      expect_jacobian_exact(model, theta);
     }
   }
+}
+
+// Two inputs, each with its own denominator (theta = [f_1 f_2 b_1 b_2]):
+// the Jacobian against central differences of the simulation, continuous
+// (ZOH and FOH, a fractional delay on the second input) and discrete time.
+TEST(OutputError, TwoInputJacobianMatchesCentralDifferences) {
+  const std::vector<double> u1 = binary_input(300, 4, 6);
+  const std::vector<double> u2 = binary_input(300, 3, 9);
+  std::vector<double> u(u1);
+  u.insert(u.end(), u2.begin(), u2.end());
+  const std::vector<double> y(u1.size(), 0.0);
+  for (OeTime time : {OeTime::kContinuous, OeTime::kDiscrete}) {
+    for (InterSample rule : {InterSample::kZoh, InterSample::kFoh}) {
+      OeStructure s;
+      s.time = time;
+      OeChannel c1, c2;
+      c1.nf = 2;
+      c1.nb = time == OeTime::kContinuous ? 1 : 2;
+      c1.nk = 1;
+      c1.rule = rule;
+      c2.nf = 1;
+      c2.nb = 2;
+      c2.nk = time == OeTime::kContinuous ? 0 : 2;
+      c2.delay = time == OeTime::kContinuous ? 0.037 : 0;
+      c2.rule = rule;
+      s.inputs = {c1, c2};
+      OeData<double> data = make_data(y, u, 0.05);
+      data.num_inputs = 2;
+      oe_detail::OeModel<double> model(s, data);
+      Eigen::VectorXd theta(s.num_parameters());
+      if (time == OeTime::kContinuous) {
+        theta << 1.5, 6, 2, 5, 0.5, 3;  // f1 f2 | f | b0 | b0 b1
+      } else {
+        theta << -1.2, 0.5, -0.6, 0.3, 0.2, 1.2, -0.4;
+      }
+      expect_jacobian_exact(model, theta);
+    }
+  }
+}
+
+// Two inputs, noise-free ZOH record y = b_1/f_1 u_1 + b_2/f_2 u_2 (each
+// simulated by the matrix exponential): exact from the SRIVC start.
+TEST(OutputError, TwoInputContinuousNoiseFreeIsExact) {
+  const std::vector<double> u1 = binary_input(1000, 7, 3);
+  const std::vector<double> u2 = binary_input(1000, 5, 11);
+  Eigen::VectorXd f1(3), b1(2), f2(2), b2(1);
+  f1 << 1, 1.2, 4;
+  b1 << 1.5, 4;
+  f2 << 1, 0.8;
+  b2 << 2;
+  const std::vector<double> x1 = simulate(f1, b1, u1, 0.05, false);
+  const std::vector<double> x2 = simulate(f2, b2, u2, 0.05, false);
+  std::vector<double> y(x1.size()), u(u1);
+  for (std::size_t k = 0; k < y.size(); ++k) y[k] = x1[k] + x2[k];
+  u.insert(u.end(), u2.begin(), u2.end());
+  OeStructure s;
+  OeChannel c1, c2;
+  c1.nf = 2;
+  c1.nb = 2;
+  c2.nf = 1;
+  c2.nb = 1;
+  s.inputs = {c1, c2};
+  OeData<double> data = make_data(y, u, 0.05);
+  data.num_inputs = 2;
+  OeResult<double> r;
+  ASSERT_TRUE(output_error<double>(s, OeSettings<double>(), data, &r).ok())
+      << r.reason;
+  Eigen::VectorXd truth(6);
+  truth << 1.2, 4, 0.8, 1.5, 4, 2;
+  EXPECT_LT(relative_error(r.theta, truth), 1e-8);
+  EXPECT_EQ(r.start, "srivc");
+}
+
+// A structure whose number of inputs differs from the data's, and a
+// delay estimated with several inputs: identified errors.
+TEST(OutputError, TwoInputBadStructureIsReported) {
+  const std::vector<double> u = binary_input(400, 4, 6);
+  const std::vector<double> y(200, 0.0);
+  OeStructure s;
+  s.inputs = {OeChannel(), OeChannel()};
+  OeData<double> data = make_data(y, u, 0.05);
+  OeResult<double> r;
+  EXPECT_EQ(output_error<double>(s, OeSettings<double>(), data, &r).code(),
+            ErrorCode::kDimensionMismatch);
+  data.num_inputs = 2;
+  s.estimate_delay = true;
+  s.delay_max = 1;
+  EXPECT_EQ(output_error<double>(s, OeSettings<double>(), data, &r).code(),
+            ErrorCode::kBadInput);
 }
 
 TEST(OutputError, DiscreteNoiseFreeIsExactAndNoisyIsStationary) {

@@ -4,7 +4,12 @@
 //   Y_k = G(j w_k) U_k + V_k,  G(s) = B(s)/A(s) e^(-s td),
 //   A(s) = s^n + a_1 s^(n-1) + .. + a_n,  B(s) = b_0 s^(m-1) + .. + b_(m-1)
 //
-// (U_k = 1 for a frequency response, idfrd). SRIVC (thesis eqs. 2.8-2.13
+// (U_k = 1 for a frequency response, idfrd). Several inputs: Y_k = sum_j
+// G_j(j w_k) U_jk, each G_j = B_j/A_j e^(-s td_j) with its own denominator
+// and fixed delay, theta = [a_1 .. a_m b_1 .. b_m]; each SRIVC iteration
+// updates the inputs in turn, input j fitted to Y minus the other inputs'
+// current model outputs (Gauss-Seidel, as refined_iv.hpp's groups), and
+// the output-error Jacobian is per input. SRIVC (thesis eqs. 2.8-2.13
 // with the prefilter 1/A applied in the frequency domain): with the
 // current A_i, B_i the filtered data Y_f = Y / A_i(jw), U_f = e^(-jw td)
 // U / A_i(jw) and the auxiliary-model output X_f = B_i/A_i U_f give the
@@ -50,8 +55,19 @@ template <typename S>
 struct FreqData {
   const S* w = nullptr;                // K frequencies (rad/s), >= 0
   const std::complex<S>* y = nullptr;  // K output values (or G)
-  const std::complex<S>* u = nullptr;  // K input values, null: 1
+  // K-by-num_inputs input values (column-major); null: 1 (one input)
+  const std::complex<S>* u = nullptr;
   Eigen::Index num_frequencies = 0;
+  int num_inputs = 1;
+};
+
+// One input of a multi-input model Y = sum_j B_j/A_j e^(-s td_j) U_j:
+// its own denominator order na, numerator length nb and fixed delay.
+template <typename S>
+struct FreqChannel {
+  int na = 1;
+  int nb = 1;
+  S delay = 0;
 };
 
 template <typename S>
@@ -67,11 +83,24 @@ struct FreqSettings {
   bool grid = true;           // search the grid (else refine from delay)
   bool output_error = false;  // Levenberg-Marquardt refinement (TFFCOE)
   Vector<S> theta_init;       // [a b] start (empty: LS with 1/(s+l)^n)
+  // Several inputs: one entry per column of U (then na, nb and delay above
+  // are not read; the delays are fixed); theta = [a_1 .. a_m b_1 .. b_m].
+  std::vector<FreqChannel<S>> inputs;
+  std::vector<FreqChannel<S>> channels() const {
+    if (!inputs.empty()) return inputs;
+    FreqChannel<S> c;
+    c.na = na;
+    c.nb = nb;
+    c.delay = delay;
+    return {c};
+  }
 };
 
 template <typename S>
 struct FreqResult {
-  Vector<S> a, b;  // A without its leading 1, B descending
+  // A without its leading 1, B descending (several inputs: [a_1 .. a_m],
+  // [b_1 .. b_m])
+  Vector<S> a, b;
   S delay = 0;
   Matrix<S> covariance;  // of [a b] or [a b td] (estimate_delay)
   S noise_variance = 0;  // sum |Y - G U|^2 / (K - np/2): E|V_k|^2
@@ -94,38 +123,80 @@ Complex<S> polyval(const Vector<S>& c, Complex<S> s) {
   return v;
 }
 
-// The problem in scaled frequency w' = w / sigma.
+// The problem in scaled frequency w' = w / sigma: Y and the inputs U_j,
+// channel j with na[j], nb[j] coefficients at a_offset[j], b_offset[j] of
+// theta' = [a_1' .. a_m' b_1' .. b_m'].
 template <typename S>
 struct Scaled {
-  std::vector<Complex<S>> s, y, u;  // jw', Y, U (U without the delay)
-  std::vector<S> w;                 // original w
+  std::vector<Complex<S>> s, y;            // jw', Y
+  std::vector<std::vector<Complex<S>>> u;  // U_j (without the delay)
+  std::vector<S> w;                        // original w
   S sigma = 1;
-  int na = 1, nb = 1;
+  std::vector<int> na, nb, a_offset, b_offset;
   Eigen::Index K = 0;
 
+  int inputs() const { return static_cast<int>(na.size()); }
+  int num_ab() const { return b_offset.back() + nb.back(); }
+  void set_orders(const std::vector<FreqChannel<S>>& channels) {
+    int at = 0;
+    for (const FreqChannel<S>& c : channels) {
+      na.push_back(c.na);
+      nb.push_back(c.nb);
+      a_offset.push_back(at);
+      at += c.na;
+    }
+    for (const FreqChannel<S>& c : channels) {
+      b_offset.push_back(at);
+      at += c.nb;
+    }
+  }
+  Vector<S> a(const Vector<S>& theta, int j) const {
+    return theta.segment(a_offset[j], na[j]);
+  }
+  Vector<S> b(const Vector<S>& theta, int j) const {
+    return theta.segment(b_offset[j], nb[j]);
+  }
   Vector<S> monic(const Vector<S>& a) const {
-    Vector<S> A(na + 1);
+    Vector<S> A(a.size() + 1);
     A << 1, a;
     return A;
   }
-  Complex<S> delayed_u(Eigen::Index k, S td) const {
-    return u[k] * std::exp(Complex<S>(0, -w[k] * td));
+  Complex<S> delayed_u(int j, Eigen::Index k, S td) const {
+    return u[j][k] * std::exp(Complex<S>(0, -w[k] * td));
+  }
+  // Y minus the model output of every input but j (the target of input
+  // j's refined-IV step, Gauss-Seidel over the inputs as in refined_iv.hpp);
+  // with one input, Y. Only the inputs before `upto` count (the start,
+  // where the later ones have no model yet).
+  std::vector<Complex<S>> target(const Vector<S>& theta,
+                                 const std::vector<S>& td, int j,
+                                 int upto) const {
+    std::vector<Complex<S>> t = y;
+    for (int i = 0; i < upto; ++i) {
+      if (i == j) continue;
+      const Vector<S> A = monic(a(theta, i)), B = b(theta, i);
+      for (Eigen::Index k = 0; k < K; ++k)
+        t[k] -= polyval(B, s[k]) / polyval(A, s[k]) * delayed_u(i, k, td[i]);
+    }
+    return t;
   }
 };
 
-// One SRIVC step (or LS with instruments = regressors when aux is false)
-// from the prefilter 1/Af; returns theta' = [a' b'].
+// One SRIVC step of input j (or LS with instruments = regressors when aux
+// is false) from the prefilter 1/Af, fitted to the target y; returns its
+// theta_j' = [a_j' b_j'].
 template <typename S>
-Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
-               bool aux, S td, Vector<S>& theta) {
-  const int n = p.na, m = p.nb, np = n + m;
+Status iv_step(const Scaled<S>& p, int j, const std::vector<Complex<S>>& y,
+               const Vector<S>& Af, const Vector<S>& Bx, bool aux, S td,
+               Vector<S>& theta) {
+  const int n = p.na[j], m = p.nb[j], np = n + m;
   Matrix<S> Phi(2 * p.K, np), Z(2 * p.K, np);
   Vector<S> T(2 * p.K);
   for (Eigen::Index k = 0; k < p.K; ++k) {
     const Complex<S> s = p.s[k];
     const Complex<S> A = polyval(Af, s);
-    const Complex<S> U = p.delayed_u(k, td);
-    const Complex<S> Yf = p.y[k] / A, Uf = U / A;
+    const Complex<S> U = p.delayed_u(j, k, td);
+    const Complex<S> Yf = y[k] / A, Uf = U / A;
     const Complex<S> Xf = aux ? polyval(Bx, s) / polyval(Af, s) * Uf : Yf;
     std::vector<Complex<S>> phi(np), zeta(np);
     Complex<S> power = 1;
@@ -144,20 +215,24 @@ Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
     Complex<S> sn = 1;
     for (int i = 0; i < n; ++i) sn *= s;
     const Complex<S> t = sn * Yf;
-    for (int j = 0; j < np; ++j) {
-      Phi(k, j) = phi[j].real();
-      Phi(p.K + k, j) = phi[j].imag();
-      Z(k, j) = zeta[j].real();
-      Z(p.K + k, j) = zeta[j].imag();
+    for (int c = 0; c < np; ++c) {
+      Phi(k, c) = phi[c].real();
+      Phi(p.K + k, c) = phi[c].imag();
+      Z(k, c) = zeta[c].real();
+      Z(p.K + k, c) = zeta[c].imag();
     }
     T(k) = t.real();
     T(p.K + k) = t.imag();
   }
   Vector<S> d = Phi.colwise().norm().transpose();
-  for (int j = 0; j < np; ++j) {
-    if (!(d(j) > 0)) {
+  const std::string of =
+      p.inputs() > 1 ? " (input " + std::to_string(j + 1) + ")" : std::string();
+  for (int c = 0; c < np; ++c) {
+    if (!(d(c) > 0)) {
       return numerical_failure(
-          "the frequency data do not excite the model (a regressor is zero)");
+          "the frequency data do not excite the model (a regressor is "
+          "zero)" +
+          of);
     }
   }
   const Matrix<S> M = Z.transpose() * Phi * d.cwiseInverse().asDiagonal();
@@ -165,7 +240,8 @@ Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
   if (qr.rank() < np) {
     return numerical_failure(
         "the instrument matrix is rank deficient: too few frequencies or "
-        "too little excitation for this model order");
+        "too little excitation for this model order" +
+        of);
   }
   theta =
       d.cwiseInverse().asDiagonal() * qr.solve(Vector<S>(Z.transpose() * T));
@@ -173,85 +249,128 @@ Status iv_step(const Scaled<S>& p, const Vector<S>& Af, const Vector<S>& Bx,
   return Status::Ok();
 }
 
-// Output error E_k = Y_k - G U_k (td in time units) and its stacked
-// Jacobian in [a' b' td'], td' = sigma td.
+// Output error E_k = Y_k - sum_j G_j U_jk (td_j in time units) and its
+// stacked Jacobian in [a' b' td'], td' = sigma td (the delay of input 1:
+// the one that can be estimated, with one input).
 template <typename S>
-S residual(const Scaled<S>& p, const Vector<S>& theta, S td, bool jac,
-           Vector<S>& r, Matrix<S>* J) {
-  const int n = p.na, m = p.nb;
-  const Vector<S> A = p.monic(theta.head(n));
-  const Vector<S> B = theta.tail(m);
+S residual(const Scaled<S>& p, const Vector<S>& theta, const std::vector<S>& td,
+           bool jac, Vector<S>& r, Matrix<S>* J) {
+  const int q = p.num_ab();
   r.resize(2 * p.K);
-  if (jac) J->resize(2 * p.K, n + m + 1);
+  if (jac) J->setZero(2 * p.K, q + 1);
   S cost = 0;
+  std::vector<Vector<S>> A(p.inputs()), B(p.inputs());
+  for (int j = 0; j < p.inputs(); ++j) {
+    A[j] = p.monic(p.a(theta, j));
+    B[j] = p.b(theta, j);
+  }
+  std::vector<Complex<S>> GU(p.inputs()), Av(p.inputs()), U(p.inputs());
   for (Eigen::Index k = 0; k < p.K; ++k) {
     const Complex<S> s = p.s[k];
-    const Complex<S> Av = polyval(A, s);
-    const Complex<S> U = p.delayed_u(k, td);
-    const Complex<S> GU = polyval(B, s) / Av * U;
-    const Complex<S> e = p.y[k] - GU;
+    Complex<S> total = 0;
+    for (int j = 0; j < p.inputs(); ++j) {
+      Av[j] = polyval(A[j], s);
+      U[j] = p.delayed_u(j, k, td[j]);
+      GU[j] = polyval(B[j], s) / Av[j] * U[j];
+      total += GU[j];
+    }
+    const Complex<S> e = p.y[k] - total;
     r(k) = e.real();
     r(p.K + k) = e.imag();
     cost += std::norm(e);
     if (!jac) continue;
-    Complex<S> power = 1;
-    for (int i = 0; i < std::max(n, m); ++i) {
-      if (i < n) {
-        const Complex<S> g = -GU * power / Av;  // d(GU)/d a_(n-i)
-        (*J)(k, n - 1 - i) = g.real();
-        (*J)(p.K + k, n - 1 - i) = g.imag();
+    for (int j = 0; j < p.inputs(); ++j) {
+      const int n = p.na[j], m = p.nb[j];
+      const int ao = p.a_offset[j], bo = p.b_offset[j];
+      Complex<S> power = 1;
+      for (int i = 0; i < std::max(n, m); ++i) {
+        if (i < n) {
+          const Complex<S> g = -GU[j] * power / Av[j];  // d(GU)/d a_(n-i)
+          (*J)(k, ao + n - 1 - i) = g.real();
+          (*J)(p.K + k, ao + n - 1 - i) = g.imag();
+        }
+        if (i < m) {
+          const Complex<S> g = power / Av[j] * U[j];
+          (*J)(k, bo + m - 1 - i) = g.real();
+          (*J)(p.K + k, bo + m - 1 - i) = g.imag();
+        }
+        power *= s;
       }
-      if (i < m) {
-        const Complex<S> g = power / Av * U;
-        (*J)(k, n + m - 1 - i) = g.real();
-        (*J)(p.K + k, n + m - 1 - i) = g.imag();
-      }
-      power *= s;
     }
-    // td' = sigma td: d/dtd' of e^(-j w' td') GU.
-    const Complex<S> g = -s * GU;
-    (*J)(k, n + m) = g.real();
-    (*J)(p.K + k, n + m) = g.imag();
+    // td' = sigma td: d/dtd' of e^(-j w' td') G_1 U_1.
+    const Complex<S> g = -s * GU[0];
+    (*J)(k, q) = g.real();
+    (*J)(p.K + k, q) = g.imag();
   }
   return cost;
 }
 
+// Reflects the unstable roots of input j's A; true if any was.
 template <typename S>
-bool stabilise(int n, Vector<S>& theta) {
+bool stabilise_input(const Scaled<S>& p, int j, Vector<S>& theta) {
+  const int n = p.na[j];
   HurwitzTest<S> hurwitz(n);
-  if (hurwitz.is_stable(theta.head(n))) return false;
-  theta.head(n) = reflect_unstable_roots<S>(Vector<S>(theta.head(n)));
+  auto a = theta.segment(p.a_offset[j], n);
+  if (hurwitz.is_stable(a)) return false;
+  a = reflect_unstable_roots<S>(Vector<S>(a));
   return true;
 }
 
-// SRIVC at the fixed delay td. theta' in/out (empty: LS start).
+// The same for every input; true if any was unstable.
 template <typename S>
-Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings, S td,
-                   Vector<S>& theta, int& iterations, bool& converged,
-                   S& cost) {
-  const int n = p.na, m = p.nb;
+bool stabilise(const Scaled<S>& p, Vector<S>& theta) {
+  bool changed = false;
+  for (int j = 0; j < p.inputs(); ++j)
+    changed = stabilise_input(p, j, theta) || changed;
+  return changed;
+}
+
+// SRIVC at the fixed delays td. theta' in/out (empty: LS start). With
+// several inputs each step updates the inputs in turn, input j fitted to
+// Y minus the other inputs' current model outputs.
+template <typename S>
+Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings,
+                   const std::vector<S>& td, Vector<S>& theta, int& iterations,
+                   bool& converged, S& cost) {
+  const int q = p.num_ab();
   Status status;
-  if (theta.size() != n + m) {
-    // LS start with the prefilter 1/(s' + 1)^n.
-    Vector<S> Af = Vector<S>::Ones(1);
-    for (int i = 0; i < n; ++i) {
-      Vector<S> next = Vector<S>::Zero(Af.size() + 1);
-      next.head(Af.size()) += Af;
-      next.tail(Af.size()) += Af;
-      Af = next;
+  if (theta.size() != q) {
+    // LS start with the prefilter 1/(s' + 1)^n, input by input (the
+    // inputs not yet started count as zero).
+    theta = Vector<S>::Zero(q);
+    for (int j = 0; j < p.inputs(); ++j) {
+      Vector<S> Af = Vector<S>::Ones(1);
+      for (int i = 0; i < p.na[j]; ++i) {
+        Vector<S> next = Vector<S>::Zero(Af.size() + 1);
+        next.head(Af.size()) += Af;
+        next.tail(Af.size()) += Af;
+        Af = next;
+      }
+      std::vector<Complex<S>> y = p.y;
+      if (p.inputs() > 1) y = p.target(theta, td, j, j);
+      Vector<S> tj;
+      status = iv_step(p, j, y, Af, Vector<S>(), false, td[j], tj);
+      if (!status.ok()) return status;
+      theta.segment(p.a_offset[j], p.na[j]) = tj.head(p.na[j]);
+      theta.segment(p.b_offset[j], p.nb[j]) = tj.tail(p.nb[j]);
+      stabilise_input(p, j, theta);
     }
-    status = iv_step(p, Af, Vector<S>(), false, td, theta);
-    if (!status.ok()) return status;
-    stabilise(n, theta);
   }
   converged = false;
   iterations = 0;
   for (int it = 1; it <= settings.max_iterations; ++it) {
-    Vector<S> next;
-    status = iv_step(p, p.monic(theta.head(n)), Vector<S>(theta.tail(m)), true,
-                     td, next);
-    if (!status.ok()) return status;
-    stabilise(n, next);
+    Vector<S> next = theta;
+    for (int j = 0; j < p.inputs(); ++j) {
+      std::vector<Complex<S>> y = p.y;
+      if (p.inputs() > 1) y = p.target(next, td, j, p.inputs());
+      Vector<S> tj;
+      status = iv_step(p, j, y, p.monic(p.a(next, j)), p.b(next, j), true,
+                       td[j], tj);
+      if (!status.ok()) return status;
+      next.segment(p.a_offset[j], p.na[j]) = tj.head(p.na[j]);
+      next.segment(p.b_offset[j], p.nb[j]) = tj.tail(p.nb[j]);
+      stabilise_input(p, j, next);
+    }
     const S change = (next - theta).norm() / std::max(next.norm(), S(1e-300));
     theta = next;
     iterations = it;
@@ -266,19 +385,25 @@ Status srivc_fixed(const Scaled<S>& p, const FreqSettings<S>& settings, S td,
 }
 
 // The output-error model of the frequency data for levenberg_marquardt
-// (output_error.hpp): y_hat = [Re G U; Im G U] over [a' b' (td')].
+// (output_error.hpp): y_hat = [Re sum G_j U_j; Im ..] over [a' b' (td')].
 template <typename S>
 class FreqOeModel {
  public:
-  FreqOeModel(const Scaled<S>& p, bool estimate_delay, S td)
-      : p_(p), estimate_delay_(estimate_delay), td_(td), hurwitz_(p.na) {}
+  FreqOeModel(const Scaled<S>& p, bool estimate_delay, std::vector<S> td)
+      : p_(p), estimate_delay_(estimate_delay), td_(std::move(td)) {}
   bool stable(const Vector<S>& x) {
-    return x.allFinite() && hurwitz_.is_stable(x.head(p_.na));
+    if (!x.allFinite()) return false;
+    for (int j = 0; j < p_.inputs(); ++j) {
+      HurwitzTest<S> hurwitz(p_.na[j]);
+      if (!hurwitz.is_stable(x.segment(p_.a_offset[j], p_.na[j]))) return false;
+    }
+    return true;
   }
   void evaluate(const Vector<S>& x, Vector<S>& yhat, Matrix<S>* J) {
-    const int nm = p_.na + p_.nb;
+    const int nm = p_.num_ab();
     const Vector<S> theta = x.head(nm);
-    const S td = estimate_delay_ ? x(nm) / p_.sigma : td_;
+    std::vector<S> td = td_;
+    if (estimate_delay_) td[0] = x(nm) / p_.sigma;
     Vector<S> r;
     residual<S>(p_, theta, td, J != nullptr, r, J ? &J_ : nullptr);
     yhat.resize(2 * p_.K);
@@ -292,8 +417,7 @@ class FreqOeModel {
  private:
   const Scaled<S>& p_;
   bool estimate_delay_;
-  S td_;
-  HurwitzTest<S> hurwitz_;
+  std::vector<S> td_;
   Matrix<S> J_;
 };
 
@@ -304,49 +428,69 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
                   FreqResult<S>* result) {
   using namespace freq_detail;
   if (result == nullptr) return bad_input("result must not be null");
-  const int n = settings.na, m = settings.nb;
-  if (n < 1 || m < 1 || m > n + 1) {
-    return bad_input("orders must be np >= 1 and 0 <= nz <= np");
+  const std::vector<FreqChannel<S>> channels = settings.channels();
+  const int inputs = static_cast<int>(channels.size());
+  for (const FreqChannel<S>& c : channels) {
+    if (c.na < 1 || c.nb < 1 || c.nb > c.na + 1 || c.na > 1000) {
+      return bad_input("orders must be np >= 1 and 0 <= nz <= np");
+    }
+    if (!(c.delay >= 0) || !std::isfinite(c.delay)) {
+      return Status(ErrorCode::kBadOption, "the delay must be finite and >= 0");
+    }
   }
   if (settings.max_iterations < 1 || !(settings.tolerance > 0) ||
       settings.num_td < 2 || settings.num_td > 100000) {
     return Status(ErrorCode::kBadOption,
                   "MaxIter must be >= 1, Tol > 0 and 2 <= NumTd <= 1e5");
   }
+  if (data.num_inputs != inputs) {
+    return Status(ErrorCode::kDimensionMismatch,
+                  "the structure has " + std::to_string(inputs) +
+                      " input(s), the data " + std::to_string(data.num_inputs));
+  }
+  if (inputs > 1 && (settings.estimate_delay || data.u == nullptr)) {
+    return bad_input("several inputs need their input data U and fixed delays");
+  }
   const Eigen::Index K = data.num_frequencies;
   if (data.w == nullptr || data.y == nullptr || K < 1) {
     return bad_input("the frequency data are empty");
   }
-  const int np = n + m + (settings.estimate_delay ? 1 : 0);
+  Scaled<S> p;
+  p.set_orders(channels);
+  p.K = K;
+  const int nab = p.num_ab();
+  const int np = nab + (settings.estimate_delay ? 1 : 0);
   if (2 * K < np + 1) {
     return bad_input("too few frequencies for the model: " + std::to_string(K) +
                      " complex values, " + std::to_string(np) + " parameters");
   }
-  Scaled<S> p;
-  p.na = n;
-  p.nb = m;
-  p.K = K;
   S lo = std::numeric_limits<S>::infinity(), hi = 0;
   for (Eigen::Index k = 0; k < K; ++k) {
     const S w = data.w[k];
     if (!(w >= 0) || !std::isfinite(w)) {
       return bad_input("frequencies must be finite and >= 0");
     }
-    if (!std::isfinite(data.y[k].real()) || !std::isfinite(data.y[k].imag()) ||
-        (data.u != nullptr && (!std::isfinite(data.u[k].real()) ||
-                               !std::isfinite(data.u[k].imag())))) {
+    if (!std::isfinite(data.y[k].real()) || !std::isfinite(data.y[k].imag())) {
       return bad_input("the frequency data must be finite");
+    }
+    for (int j = 0; j < inputs && data.u != nullptr; ++j) {
+      const std::complex<S> v = data.u[j * K + k];
+      if (!std::isfinite(v.real()) || !std::isfinite(v.imag()))
+        return bad_input("the frequency data must be finite");
     }
     if (w > 0) lo = std::min(lo, w);
     hi = std::max(hi, w);
   }
   if (!(hi > 0)) return bad_input("at least one frequency must be > 0");
   p.sigma = std::sqrt(lo * hi);
+  p.u.resize(inputs);
   for (Eigen::Index k = 0; k < K; ++k) {
     p.w.push_back(data.w[k]);
     p.s.push_back(Complex<S>(0, data.w[k] / p.sigma));
     p.y.push_back(data.y[k]);
-    p.u.push_back(data.u != nullptr ? data.u[k] : Complex<S>(1));
+    for (int j = 0; j < inputs; ++j) {
+      p.u[j].push_back(data.u != nullptr ? data.u[j * K + k] : Complex<S>(1));
+    }
   }
   if (settings.estimate_delay &&
       !(settings.td_min >= 0 && settings.td_max >= settings.td_min &&
@@ -354,32 +498,39 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
     return Status(ErrorCode::kBadOption,
                   "the delay range must satisfy 0 <= TdMin <= TdMax < Inf");
   }
-  if (!(settings.delay >= 0) || !std::isfinite(settings.delay)) {
-    return Status(ErrorCode::kBadOption, "the delay must be finite and >= 0");
+  // The scale factors of [a b]: a_i = sigma^i a_i', b of power k:
+  // sigma^(n-k) b'.
+  Vector<S> D(nab);
+  for (int j = 0; j < inputs; ++j) {
+    const int n = p.na[j], m = p.nb[j];
+    for (int i = 0; i < n; ++i)
+      D(p.a_offset[j] + i) = std::pow(p.sigma, S(i + 1));
+    for (int k = 0; k < m; ++k)
+      D(p.b_offset[j] + k) = std::pow(p.sigma, S(n - (m - 1 - k)));
   }
   // Start in scaled units.
   Vector<S> start;
-  if (settings.theta_init.size() == n + m) {
-    start = settings.theta_init;
-    for (int i = 0; i < n; ++i) start(i) /= std::pow(p.sigma, S(i + 1));
-    for (int k = 0; k < m; ++k) {
-      start(n + k) /= std::pow(p.sigma, S(n - (m - 1 - k)));
-    }
-    if (stabilise(n, start)) {
+  if (settings.theta_init.size() == nab) {
+    start = settings.theta_init.cwiseQuotient(D);
+    if (stabilise(p, start)) {
       return bad_input("the initial model must be stable");
     }
   }
+  std::vector<S> delays;
+  for (const FreqChannel<S>& c : channels) delays.push_back(c.delay);
   auto srivc_at = [&](S td, Vector<S>& theta, int& its, bool& conv,
                       S& cost) -> Status {
     theta = start;
-    return srivc_fixed(p, settings, td, theta, its, conv, cost);
+    std::vector<S> t = delays;
+    t[0] = td;  // (one input when the delay is estimated)
+    return srivc_fixed(p, settings, t, theta, its, conv, cost);
   };
 
   Vector<S> theta;
   int iterations = 0;
   bool converged = false;
   S cost = 0;
-  S td = settings.delay;
+  S td = delays[0];
   Status status;
   if (settings.estimate_delay) {
     // Grid, then golden section between the neighbours of each of the
@@ -482,11 +633,12 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
     // Output error on [a' b' (td')], td' = sigma td: the Levenberg-Marquardt
     // minimiser of the time-domain output error (output_error.hpp) on the
     // stacked real and imaginary parts of Y - G U.
-    const int q = settings.estimate_delay ? n + m + 1 : n + m;
+    const int q = settings.estimate_delay ? nab + 1 : nab;
     Vector<S> x(q);
-    x.head(n + m) = theta;
-    if (settings.estimate_delay) x(n + m) = td * p.sigma;
-    FreqOeModel<S> model(p, settings.estimate_delay, td);
+    x.head(nab) = theta;
+    if (settings.estimate_delay) x(nab) = td * p.sigma;
+    delays[0] = td;
+    FreqOeModel<S> model(p, settings.estimate_delay, delays);
     Vector<S> target(2 * K);
     for (Eigen::Index k = 0; k < K; ++k) {
       target(k) = p.y[k].real();
@@ -497,15 +649,15 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
     lm_settings.tolerance = settings.tolerance;
     LmBound<S> bound;
     if (settings.estimate_delay) {
-      bound.index = n + m;
+      bound.index = nab;
       bound.lower = settings.td_min * p.sigma;
       bound.upper = settings.td_max * p.sigma;
     }
     LmOutcome<S> lm;
     status = levenberg_marquardt<S>(model, target, lm_settings, bound, &x, &lm);
     if (!status.ok()) return status;
-    theta = x.head(n + m);
-    if (settings.estimate_delay) td = x(n + m) / p.sigma;
+    theta = x.head(nab);
+    if (settings.estimate_delay) td = x(nab) / p.sigma;
     iterations = lm.iterations;
     converged = lm.converged;
     reason = "output error (Levenberg-Marquardt): " + lm.reason;
@@ -515,29 +667,31 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   // Covariance in scaled units, mapped back.
   Vector<S> r;
   Matrix<S> J;
-  cost = residual(p, theta, td, true, r, &J);
-  const int q = settings.estimate_delay ? n + m + 1 : n + m;
+  delays[0] = td;
+  cost = residual(p, theta, delays, true, r, &J);
+  const int q = settings.estimate_delay ? nab + 1 : nab;
   const Matrix<S> Jq = J.leftCols(q);
   const S dof = std::max(S(1), S(2 * K - q));
   const S s2 = r.squaredNorm() / dof;
-  Vector<S> D(q);
-  for (int i = 0; i < n; ++i) D(i) = std::pow(p.sigma, S(i + 1));
-  for (int k = 0; k < m; ++k) D(n + k) = std::pow(p.sigma, S(n - (m - 1 - k)));
-  if (settings.estimate_delay) D(n + m) = 1 / p.sigma;
+  Vector<S> Dq(q);
+  Dq.head(nab) = D;
+  if (settings.estimate_delay) Dq(nab) = 1 / p.sigma;
   Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jq.transpose() * Jq);
   Matrix<S> cov =
       Matrix<S>::Constant(q, q, std::numeric_limits<S>::quiet_NaN());
   if (qr.rank() == q) cov = s2 * qr.inverse();
-  result->covariance = D.asDiagonal() * cov * D.asDiagonal();
-  result->a = D.head(n).cwiseProduct(theta.head(n));
-  result->b = D.segment(n, m).cwiseProduct(theta.tail(m));
+  result->covariance = Dq.asDiagonal() * cov * Dq.asDiagonal();
+  int na_total = 0;
+  for (int j = 0; j < inputs; ++j) na_total += p.na[j];
+  const Vector<S> ab = D.cwiseProduct(theta);
+  result->a = ab.head(na_total);
+  result->b = ab.tail(nab - na_total);
   result->delay = td;
   result->noise_variance = 2 * s2;
   result->loss = cost / static_cast<S>(K);
   result->iterations = iterations;
   result->converged = converged;
-  HurwitzTest<S> hurwitz(n);
-  result->stable = hurwitz.is_stable(theta.head(n));
+  result->stable = !stabilise(p, theta);
   result->reason = reason;
   if (!converged) return Status(ErrorCode::kNotConverged, reason);
   return Status::Ok();

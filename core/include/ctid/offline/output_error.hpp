@@ -7,6 +7,11 @@
 // theta = [f_1 .. f_nf, b_0 .. b_(nb-1) (, td)] (descending powers of p; in
 // discrete time F = 1 + f_1 q^-1 + .., B = q^-nk (b_0 + b_1 q^-1 + ..)),
 // minimising V(theta) = 1/N sum_k (y_k - y_hat_k(theta))^2 from rest.
+// Several inputs (the SITB's multi-input OE/tfest structure): y_hat =
+// sum_j B_j/F_j u_j, each input with its own denominator and delay, theta
+// = [f of input 1, .., f of input m, b of input 1, .., b of input m]; the
+// sensitivities below are then per input (those of x_j = B_j/F_j u_j),
+// and one input is the m = 1 case of the same code.
 //
 // The continuous-time model is simulated exactly under the data's
 // intersample rule (ZOH or FOH input, App. A.1; regular or irregular
@@ -31,8 +36,11 @@
 // runs in the time t' = sigma t (sigma = |f_nf|^(1/nf) of the start), as
 // the refined-IV engine does, for conditioning.
 //
-// Start: SRIVC (refined_iv.hpp) in continuous time, least-squares ARX with
-// unstable roots reflected in discrete time, or a given stable theta.
+// Start: SRIVC (refined_iv.hpp; one denominator group per input) in
+// continuous time, least-squares ARX with unstable roots reflected in
+// discrete time (several inputs: each input's ARX fitted to y minus the
+// others' simulated outputs, a few backfitting sweeps), or a given stable
+// theta.
 //
 // Covariance: s^2 (J^T J)^-1 with s^2 = sum e^2 / (N - np), the
 // asymptotic covariance of the prediction-error estimate (thesis eq. 1.18
@@ -56,7 +64,24 @@ namespace ctid {
 
 enum class OeTime { kContinuous, kDiscrete };
 
-// Single-input output-error structure.
+// One input channel of the output-error structure: x_j = B_j/F_j u_j
+// (delayed by nk_j samples and, in continuous time, delay_j time units),
+// each with its own monic denominator F_j (the SITB's multi-input OE and
+// tfest structures, y = sum_j B_j/F_j u_j).
+struct OeChannel {
+  int nf = 1;  // denominator order, >= 1 (continuous), >= 0 (discrete)
+  int nb = 1;  // numerator coefficients, >= 1
+  int nk = 0;  // input delay in samples, >= 0
+  // Continuous time: an extra delay in time units (>= 0) on top of nk.
+  double delay = 0;
+  InterSample rule = InterSample::kZoh;  // of u_j (continuous time)
+};
+
+// The output-error structure. One input: the fields nf .. rule; several
+// inputs: one OeChannel per column of u in `inputs` (then those fields are
+// not read). theta = [f_1; ..; f_m; b_1; ..; b_m (; td)], the layout of
+// the refined-IV engine (refined_iv.hpp) with one denominator group per
+// input, which gives the start; one input is its m = 1 case.
 struct OeStructure {
   OeTime time = OeTime::kContinuous;
   int nf = 1;  // denominator order, >= 1 (continuous), >= 0 (discrete)
@@ -65,12 +90,30 @@ struct OeStructure {
   // Continuous time: an extra delay in time units (>= 0) on top of nk.
   double delay = 0;
   InterSample rule = InterSample::kZoh;  // of u (continuous time)
-  // Continuous time: estimate the total delay td (time units) as the last
-  // parameter, started from nk Ts + delay and kept in [0, delay_max] (the
-  // bounds of the iteration); needs a strictly proper model (nb <= nf).
+  // Several inputs: one entry per column of u (empty: the one input above).
+  std::vector<OeChannel> inputs;
+  // Continuous time, one input: estimate the total delay td (time units)
+  // as the last parameter, started from nk Ts + delay and kept in
+  // [0, delay_max] (the bounds of the iteration); needs a strictly proper
+  // model (nb <= nf).
   bool estimate_delay = false;
   double delay_max = 0;
-  int num_parameters() const { return nf + nb + (estimate_delay ? 1 : 0); }
+  std::vector<OeChannel> channels() const {
+    if (!inputs.empty()) return inputs;
+    OeChannel c;
+    c.nf = nf;
+    c.nb = nb;
+    c.nk = nk;
+    c.delay = delay;
+    c.rule = rule;
+    return {c};
+  }
+  // (Orders are checked against the record before this sum is formed.)
+  int num_parameters() const {
+    int n = estimate_delay ? 1 : 0;
+    for (const OeChannel& c : channels()) n += c.nf + c.nb;
+    return n;
+  }
 };
 
 template <typename S>
@@ -99,11 +142,13 @@ struct OeResult {
   Vector<S> simulated;
 };
 
-// The data: y and u (N samples), Ts or N instants (continuous time only).
+// The data: y (N samples) and u (N-by-num_inputs, column-major), Ts or N
+// instants (continuous time only).
 template <typename S>
 struct OeData {
   const S* y = nullptr;
   const S* u = nullptr;
+  int num_inputs = 1;
   Eigen::Index num_samples = 0;
   S ts = 0;
   const S* instants = nullptr;
@@ -181,120 +226,155 @@ Vector<S> polynomial_square(const Vector<S>& f) {
 }
 
 // The model: simulation and exact Jacobian of y_hat for a theta (scaled
-// time in continuous time).
+// time in continuous time), y_hat = sum_j x_j over the input channels,
+// each channel's sensitivities filtered from its own input by its own
+// denominator (d y_hat / d theta_j = d x_j / d theta_j).
 template <typename S>
 class OeModel {
  public:
-  OeModel(const OeStructure& s, const OeData<S>& d) : s_(s), d_(d) {
+  OeModel(const OeStructure& s, const OeData<S>& d)
+      : s_(s), d_(d), channels_(s.channels()) {
     clock_.ts = d.ts;
     clock_.instants = d.instants;
     clock_.n = d.num_samples;
-    hurwitz_.configure(s.nf);
-    delay_ = s.delay;
-    if (s.time == OeTime::kContinuous && s.nk > 0) {
-      delay_ +=
-          s.nk * (d.instants == nullptr ? d.ts : clock_.median_interval());
+    int at = 0;
+    for (const OeChannel& c : channels_) {
+      f_offset_.push_back(at);
+      at += c.nf;
+    }
+    for (const OeChannel& c : channels_) {
+      b_offset_.push_back(at);
+      at += c.nb;
+      hurwitz_.emplace_back(c.nf);
+      double delay = c.delay;
+      if (s.time == OeTime::kContinuous && c.nk > 0) {
+        delay +=
+            c.nk * (d.instants == nullptr ? d.ts : clock_.median_interval());
+      }
+      delay_.push_back(delay);
     }
   }
-  // The total delay nk Ts + delay (time units, continuous time).
-  double total_delay() const { return delay_; }
+  // The total delay nk Ts + delay (time units, continuous time) of the
+  // first input (the one whose delay can be estimated).
+  double total_delay() const { return delay_[0]; }
   void set_scale(S sigma) { clock_.sigma = sigma; }
   S sigma() const { return clock_.sigma; }
   Eigen::Index samples() const { return d_.num_samples; }
+  int num_channels() const { return static_cast<int>(channels_.size()); }
+  const OeChannel& channel(int j) const { return channels_[j]; }
+  int f_offset(int j) const { return f_offset_[j]; }
 
   // Scale factors: theta = theta_scaled .* factors (continuous time).
   Vector<S> factors(S sigma) const {
     Vector<S> d = Vector<S>::Ones(s_.num_parameters());
     if (s_.time == OeTime::kDiscrete) return d;
-    for (int i = 0; i < s_.nf; ++i) d(i) = std::pow(sigma, S(i + 1));
-    for (int k = 0; k < s_.nb; ++k)
-      d(s_.nf + k) = std::pow(sigma, S(s_.nf - (s_.nb - 1 - k)));
+    for (int j = 0; j < num_channels(); ++j) {
+      const OeChannel& c = channels_[j];
+      for (int i = 0; i < c.nf; ++i)
+        d(f_offset_[j] + i) = std::pow(sigma, S(i + 1));
+      for (int k = 0; k < c.nb; ++k)
+        d(b_offset_[j] + k) = std::pow(sigma, S(c.nf - (c.nb - 1 - k)));
+    }
     return d;  // td stays in time units
   }
 
   bool stable(const Vector<S>& theta) {
-    const Vector<S> f = theta.head(s_.nf);
-    if (!f.allFinite()) return false;
-    if (s_.time == OeTime::kContinuous) return hurwitz_.is_stable(f);
-    return schur_stable<S>(f);
+    for (int j = 0; j < num_channels(); ++j) {
+      const Vector<S> f = theta.segment(f_offset_[j], channels_[j].nf);
+      if (!f.allFinite()) return false;
+      const bool ok = s_.time == OeTime::kContinuous ? hurwitz_[j].is_stable(f)
+                                                     : schur_stable<S>(f);
+      if (!ok) return false;
+    }
+    return true;
   }
 
   // y_hat and (with J non-null) d y_hat / d theta.
   void evaluate(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
-    if (s_.time == OeTime::kContinuous) {
-      continuous(theta, yhat, J);
-    } else {
-      discrete(theta, yhat, J);
+    yhat = Vector<S>::Zero(d_.num_samples);
+    if (J != nullptr) J->setZero(d_.num_samples, s_.num_parameters());
+    for (int j = 0; j < num_channels(); ++j) {
+      if (s_.time == OeTime::kContinuous) {
+        continuous(j, theta, yhat, J);
+      } else {
+        discrete(j, theta, yhat, J);
+      }
     }
   }
 
  private:
-  void filter(const Vector<S>& d, Matrix<S>& out) {
-    if (delay_ > 0) {
-      riv_detail::filter_delayed_derivatives<S>(d, S(1), s_.rule, clock_, d_.u,
-                                                static_cast<S>(delay_), out);
+  const S* input(int j) const { return d_.u + j * d_.num_samples; }
+
+  void filter(int j, const Vector<S>& d, Matrix<S>& out) {
+    const InterSample rule = channels_[j].rule;
+    if (delay_[j] > 0) {
+      riv_detail::filter_delayed_derivatives<S>(d, S(1), rule, clock_, input(j),
+                                                static_cast<S>(delay_[j]), out);
     } else {
-      riv_detail::filter_derivatives<S>(d, S(1), s_.rule, clock_, d_.u, out);
+      riv_detail::filter_derivatives<S>(d, S(1), rule, clock_, input(j), out);
     }
   }
 
-  void continuous(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
-    const int nf = s_.nf, nb = s_.nb;
-    const Vector<S> f = theta.head(nf);
-    const Vector<S> b = theta.segment(nf, nb);
-    if (s_.estimate_delay) delay_ = static_cast<double>(theta(nf + nb));
-    filter(f, X_);  // columns p^i u / F, i = 0..nf
-    yhat = Vector<S>::Zero(d_.num_samples);
+  // Channel j's x_j added to y_hat and its columns of J.
+  void continuous(int j, const Vector<S>& theta, Vector<S>& yhat,
+                  Matrix<S>* J) {
+    const int nf = channels_[j].nf, nb = channels_[j].nb;
+    const int fo = f_offset_[j], bo = b_offset_[j];
+    const int td_index = s_.num_parameters() - 1;
+    const Vector<S> f = theta.segment(fo, nf);
+    const Vector<S> b = theta.segment(bo, nb);
+    if (s_.estimate_delay) delay_[j] = static_cast<double>(theta(td_index));
+    filter(j, f, X_);  // columns p^i u_j / F_j, i = 0..nf
     for (int k = 0; k < nb; ++k) yhat += b(k) * X_.col(nb - 1 - k);
     if (J == nullptr) return;
-    J->resize(d_.num_samples, s_.num_parameters());
-    for (int k = 0; k < nb; ++k) J->col(nf + k) = X_.col(nb - 1 - k);
+    for (int k = 0; k < nb; ++k) J->col(bo + k) = X_.col(nb - 1 - k);
     if (s_.estimate_delay) {
       // -p y_hat in original time: p = sigma p'.
-      auto col = J->col(nf + nb);
-      col.setZero();
+      auto col = J->col(td_index);
       for (int k = 0; k < nb; ++k) col -= clock_.sigma * b(k) * X_.col(nb - k);
     }
-    filter(polynomial_square<S>(f), X2_);  // p^j u / F^2, j = 0..2 nf
+    filter(j, polynomial_square<S>(f), X2_);  // p^i u_j / F_j^2, i <= 2 nf
     for (int i = 1; i <= nf; ++i) {
-      auto col = J->col(i - 1);
-      col.setZero();
+      auto col = J->col(fo + i - 1);
       for (int k = 0; k < nb; ++k) col -= b(k) * X2_.col(nf - i + nb - 1 - k);
     }
   }
 
-  void discrete(const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
-    const int nf = s_.nf, nb = s_.nb, nk = s_.nk;
+  void discrete(int j, const Vector<S>& theta, Vector<S>& yhat, Matrix<S>* J) {
+    const int nf = channels_[j].nf, nb = channels_[j].nb, nk = channels_[j].nk;
+    const int fo = f_offset_[j], bo = b_offset_[j];
     const Eigen::Index n = d_.num_samples;
-    const Vector<S> f = theta.head(nf);
-    const Vector<S> b = theta.tail(nb);
+    const Vector<S> f = theta.segment(fo, nf);
+    const Vector<S> b = theta.segment(bo, nb);
     v_.resize(n);
-    all_pole<S>(f, d_.u, n, v_.data());  // u / F
-    yhat = Vector<S>::Zero(n);
+    all_pole<S>(f, input(j), n, v_.data());  // u_j / F_j
+    x_ = Vector<S>::Zero(n);
     for (int k = 0; k < nb; ++k) {
       const Eigen::Index shift = nk + k;
-      if (shift < n) yhat.tail(n - shift) += b(k) * v_.head(n - shift);
+      if (shift < n) x_.tail(n - shift) += b(k) * v_.head(n - shift);
     }
+    yhat += x_;
     if (J == nullptr) return;
-    J->setZero(n, nf + nb);
     for (int k = 0; k < nb; ++k) {
       const Eigen::Index shift = nk + k;
-      if (shift < n) J->col(nf + k).tail(n - shift) = v_.head(n - shift);
+      if (shift < n) J->col(bo + k).tail(n - shift) = v_.head(n - shift);
     }
     w_.resize(n);
-    all_pole<S>(f, yhat.data(), n, w_.data());  // y_hat / F
+    all_pole<S>(f, x_.data(), n, w_.data());  // x_j / F_j
     for (int i = 1; i <= nf; ++i) {
-      if (i < n) J->col(i - 1).tail(n - i) = -w_.head(n - i);
+      if (i < n) J->col(fo + i - 1).tail(n - i) = -w_.head(n - i);
     }
   }
 
   OeStructure s_;
   OeData<S> d_;
+  std::vector<OeChannel> channels_;
+  std::vector<int> f_offset_, b_offset_;
   riv_detail::Clock<S> clock_;
-  HurwitzTest<S> hurwitz_;
-  double delay_ = 0;
+  std::vector<HurwitzTest<S>> hurwitz_;
+  std::vector<double> delay_;
   Matrix<S> X_, X2_;
-  Vector<S> v_, w_;
+  Vector<S> v_, w_, x_;
 };
 
 }  // namespace oe_detail
@@ -390,39 +470,60 @@ Status validate(const OeStructure& s, const OeSettings<S>& settings,
                 const OeData<S>& d, OeResult<S>* result) {
   if (result == nullptr) return bad_input("no result given");
   if (d.y == nullptr || d.u == nullptr) return bad_input("no data given");
-  if (s.nb < 1) return bad_input("nb must be >= 1");
-  if (s.nk < 0) return bad_input("nk must be >= 0");
-  // Each order against the record before any sum of them (which would
-  // overflow int for orders near INT_MAX).
-  if (s.nf > d.num_samples || s.nb > d.num_samples || s.nk > d.num_samples)
-    return bad_input("orders and delay must be smaller than the record");
+  const std::vector<OeChannel> channels = s.channels();
+  const int m = static_cast<int>(channels.size());
+  if (d.num_inputs != m) {
+    return Status(ErrorCode::kDimensionMismatch,
+                  "the structure has " + std::to_string(m) +
+                      " input(s), the data " + std::to_string(d.num_inputs));
+  }
+  if (m > 1 && s.estimate_delay)
+    return bad_input("the delay is estimated for one input only");
+  for (int j = 0; j < m; ++j) {
+    const OeChannel& c = channels[j];
+    const std::string of =
+        m > 1 ? " (input " + std::to_string(j + 1) + ")" : std::string();
+    if (c.nb < 1) return bad_input("nb must be >= 1" + of);
+    if (c.nk < 0) return bad_input("nk must be >= 0" + of);
+    // Each order against the record before any sum of them (which would
+    // overflow int for orders near INT_MAX).
+    if (c.nf > d.num_samples || c.nb > d.num_samples || c.nk > d.num_samples)
+      return bad_input("orders and delay must be smaller than the record" + of);
+    if (s.time == OeTime::kContinuous) {
+      if (c.nf < 1) return bad_input("nf must be >= 1 in continuous time" + of);
+      if (c.nb > c.nf + 1)
+        return bad_input("the model must be proper (nb <= nf + 1)" + of);
+      if (!(c.delay >= 0) || !std::isfinite(c.delay))
+        return bad_input("the delay must be finite and >= 0" + of);
+    } else if (c.nf < 0) {
+      return bad_input("nf must be >= 0" + of);
+    }
+  }
   if (s.time == OeTime::kContinuous) {
-    if (s.nf < 1) return bad_input("nf must be >= 1 in continuous time");
-    if (s.nb > s.nf + 1)
-      return bad_input("the model must be proper (nb <= nf + 1)");
-    if (s.estimate_delay && s.nb > s.nf)
+    if (s.estimate_delay && channels[0].nb > channels[0].nf)
       return bad_input("estimating the delay needs a strictly proper model");
     if (s.estimate_delay && !(s.delay_max >= 0 && std::isfinite(s.delay_max)))
       return bad_input("the delay bound must be finite and >= 0");
-    if (!(s.delay >= 0) || !std::isfinite(s.delay))
-      return bad_input("the delay must be finite and >= 0");
     if (d.instants == nullptr && !(d.ts > 0))
       return bad_input("Ts must be > 0");
   } else {
-    if (s.nf < 0) return bad_input("nf must be >= 0");
     if (s.estimate_delay)
       return bad_input("a discrete-time delay is nk, not estimated here");
     if (d.instants != nullptr)
       return bad_input("a discrete-time model needs regular sampling");
   }
+  if (m > d.num_samples) return bad_input("more inputs than samples");
   const int np = s.num_parameters();
-  if (d.num_samples < 2 * np + 2) {
+  if (d.num_samples < 2 * static_cast<Eigen::Index>(np) + 2) {
     return bad_input("too few samples (" + std::to_string(d.num_samples) +
                      ") for " + std::to_string(np) + " parameters");
   }
   for (Eigen::Index k = 0; k < d.num_samples; ++k) {
-    if (!std::isfinite(d.y[k]) || !std::isfinite(d.u[k]))
-      return bad_input("y and u must be finite");
+    if (!std::isfinite(d.y[k])) return bad_input("y and u must be finite");
+    for (int j = 0; j < m; ++j) {
+      if (!std::isfinite(d.u[j * d.num_samples + k]))
+        return bad_input("y and u must be finite");
+    }
   }
   if (settings.max_iterations < 0)
     return Status(ErrorCode::kBadOption, "MaxIter must be >= 0");
@@ -436,23 +537,81 @@ Status validate(const OeStructure& s, const OeSettings<S>& settings,
   return Status::Ok();
 }
 
+// Discrete-time start: least-squares ARX of each input's channel with
+// unstable roots reflected. With several inputs each channel is fitted to
+// y minus the simulated outputs of the others (backfitting, a few sweeps:
+// the other channels act as an equation error on the first ones); with
+// one input this is the ARX fit itself.
+template <typename S>
+Status arx_start(const std::vector<OeChannel>& channels, const OeData<S>& d,
+                 Vector<S>* theta) {
+  const int m = static_cast<int>(channels.size());
+  const Eigen::Index n = d.num_samples;
+  int np = 0;
+  for (const OeChannel& c : channels) np += c.nf + c.nb;
+  Vector<S> th(np);
+  Matrix<S> x = Matrix<S>::Zero(n, m);  // simulated channel outputs
+  const Eigen::Map<const Vector<S>> y(d.y, n);
+  const int sweeps = m > 1 ? 8 : 1;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    int fo = 0, bo = 0;
+    for (const OeChannel& c : channels) bo += c.nf;
+    for (int j = 0; j < m; ++j) {
+      const OeChannel& c = channels[j];
+      Vector<S> target = y;
+      for (int i = 0; i < m; ++i)
+        if (i != j) target -= x.col(i);
+      ArxResult<S> arx;
+      const Status st = arx_least_squares<S>(target.data(), d.u + j * n, n, 1,
+                                             c.nf, {c.nb}, {c.nk}, &arx);
+      if (!st.ok()) {
+        const std::string of =
+            m > 1 ? " (input " + std::to_string(j + 1) + ")" : std::string();
+        return Status(st.code(), "ARX start: " + st.message() + of);
+      }
+      const Vector<S> f = reflect_outside_roots<S>(arx.theta.head(c.nf));
+      th.segment(fo, c.nf) = f;
+      th.segment(bo, c.nb) = arx.theta.tail(c.nb);
+      if (m > 1) {
+        Vector<S> v(n);
+        all_pole<S>(f, d.u + j * n, n, v.data());
+        x.col(j).setZero();
+        for (int k = 0; k < c.nb; ++k) {
+          const Eigen::Index shift = c.nk + k;
+          if (shift < n)
+            x.col(j).tail(n - shift) += arx.theta(c.nf + k) * v.head(n - shift);
+        }
+      }
+      fo += c.nf;
+      bo += c.nb;
+    }
+  }
+  *theta = th;
+  return Status::Ok();
+}
+
 template <typename S>
 Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
                       double start_delay, Vector<S>* theta, std::string* how) {
-  const int nf = s.nf, nb = s.nb;
+  const std::vector<OeChannel> channels = s.channels();
   if (s.time == OeTime::kContinuous) {
+    // SRIVC with one denominator group per input (refined_iv.hpp).
     RivProblem<S> problem;
-    problem.nf = {nf};
-    RivChannel c;
-    c.nb = nb;
-    c.nk = s.nk;
-    c.rule = s.rule;
-    c.delay = s.delay;
-    if (s.estimate_delay) {
-      c.nk = 0;
-      c.delay = start_delay;
+    for (int j = 0; j < static_cast<int>(channels.size()); ++j) {
+      const OeChannel& in = channels[j];
+      problem.nf.push_back(in.nf);
+      RivChannel c;
+      c.group = j;
+      c.nb = in.nb;
+      c.nk = in.nk;
+      c.rule = in.rule;
+      c.delay = in.delay;
+      if (s.estimate_delay) {
+        c.nk = 0;
+        c.delay = start_delay;
+      }
+      problem.channels.push_back(c);
     }
-    problem.channels.push_back(c);
     RivSettings<S> settings;
     if (cutoff > 0) settings.cutoffs = {cutoff};
     RivData<S> data;
@@ -466,20 +625,15 @@ Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
     if (!st.ok() && st.code() != ErrorCode::kNotConverged) {
       return Status(st.code(), "SRIVC start: " + st.message());
     }
+    const int nfb = static_cast<int>(r.theta.size());
     *theta = Vector<S>(s.num_parameters());
-    theta->head(nf + nb) = r.theta;
-    if (s.estimate_delay) (*theta)(nf + nb) = static_cast<S>(start_delay);
+    theta->head(nfb) = r.theta;
+    if (s.estimate_delay) (*theta)(nfb) = static_cast<S>(start_delay);
     *how = "srivc";
     return Status::Ok();
   }
-  ArxResult<S> arx;
-  const Status st =
-      arx_least_squares<S>(d.y, d.u, d.num_samples, 1, nf, {nb}, {s.nk}, &arx);
-  if (!st.ok()) return Status(st.code(), "ARX start: " + st.message());
-  Vector<S> th(nf + nb);
-  th.head(nf) = reflect_outside_roots<S>(arx.theta.head(nf));
-  th.tail(nb) = arx.theta.tail(nb);
-  *theta = th;
+  const Status st = arx_start<S>(channels, d, theta);
+  if (!st.ok()) return st;
   *how = "arx";
   return Status::Ok();
 }
@@ -694,20 +848,28 @@ Status output_error(const OeStructure& s, const OeSettings<S>& settings,
   if (!model.stable(theta0)) {
     if (result->start == "given")
       return bad_input("the initial model must have a stable F");
-    if (s.time == OeTime::kContinuous) {
-      theta0.head(s.nf) = reflect_unstable_roots<S>(theta0.head(s.nf).eval());
-    } else {
-      theta0.head(s.nf) = reflect_outside_roots<S>(theta0.head(s.nf).eval());
+    for (int j = 0; j < model.num_channels(); ++j) {
+      auto f = theta0.segment(model.f_offset(j), model.channel(j).nf);
+      if (s.time == OeTime::kContinuous) {
+        f = reflect_unstable_roots<S>(f.eval());
+      } else {
+        f = reflect_outside_roots<S>(f.eval());
+      }
     }
     if (!model.stable(theta0))
       return numerical_failure("no stable start model");
   }
 
-  // Time scale (continuous time): |f_nf|^(1/nf) of the start.
+  // Time scale (continuous time): |f_nf|^(1/nf) of the start, the
+  // geometric mean of the inputs' ones with several inputs.
   S sigma = 1;
   if (s.time == OeTime::kContinuous) {
-    const S fn = std::abs(theta0(s.nf - 1));
-    sigma = fn > 0 ? std::pow(fn, S(1) / S(s.nf)) : S(1);
+    const int m = model.num_channels();
+    for (int j = 0; j < m; ++j) {
+      const int nf = model.channel(j).nf;
+      const S fn = std::abs(theta0(model.f_offset(j) + nf - 1));
+      if (fn > 0) sigma *= std::pow(fn, S(1) / S(nf * m));
+    }
     if (!std::isfinite(sigma) || !(sigma > 0)) sigma = 1;
   }
   model.set_scale(sigma);

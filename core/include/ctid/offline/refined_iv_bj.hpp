@@ -209,6 +209,29 @@ Status noise_record_status(const S* xi, Eigen::Index n, int nd, int nc) {
   return Status::Ok();
 }
 
+// The monic D and C of the ARMA parameters p = [d_1 .. d_nd, c_1 .. c_nc].
+template <typename S>
+void arma_polynomials(const Vector<S>& p, int nd, int nc, Vector<S>& dpoly,
+                      Vector<S>& cpoly) {
+  dpoly.resize(nd + 1);
+  cpoly.resize(nc + 1);
+  dpoly(0) = cpoly(0) = 1;
+  dpoly.tail(nd) = p.head(nd);
+  cpoly.tail(nc) = p.tail(nc);
+}
+
+// The roots of D and C reflected into the circle of radius 0.999 (the
+// ARMA estimators keep both minimum phase and stable).
+template <typename S>
+void project_arma(int nd, int nc, Vector<S>& p) {
+  Vector<S> dpoly, cpoly;
+  arma_polynomials<S>(p, nd, nc, dpoly, cpoly);
+  dpoly = reflect_into_circle<S>(dpoly, S(0.999));
+  cpoly = reflect_into_circle<S>(cpoly, S(0.999));
+  p.head(nd) = dpoly.tail(nd);
+  p.tail(nc) = cpoly.tail(nc);
+}
+
 }  // namespace bj_detail
 
 // ARMA model D(q^-1) xi = C(q^-1) e of a sampled record xi (N samples),
@@ -305,20 +328,9 @@ Status arma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
   }
 
   auto polys = [&](const Vector<S>& p, Vector<S>& dpoly, Vector<S>& cpoly) {
-    dpoly.resize(nd + 1);
-    cpoly.resize(nc + 1);
-    dpoly(0) = cpoly(0) = 1;
-    dpoly.tail(nd) = p.head(nd);
-    cpoly.tail(nc) = p.tail(nc);
+    arma_polynomials<S>(p, nd, nc, dpoly, cpoly);
   };
-  auto project = [&](Vector<S>& p) {
-    Vector<S> dpoly, cpoly;
-    polys(p, dpoly, cpoly);
-    dpoly = reflect_into_circle<S>(dpoly, S(0.999));
-    cpoly = reflect_into_circle<S>(cpoly, S(0.999));
-    p.head(nd) = dpoly.tail(nd);
-    p.tail(nc) = cpoly.tail(nc);
-  };
+  auto project = [&](Vector<S>& p) { project_arma<S>(nd, nc, p); };
   auto loss = [&](const Vector<S>& p, Vector<S>& e) -> S {
     Vector<S> dpoly, cpoly;
     polys(p, dpoly, cpoly);
@@ -459,20 +471,9 @@ Status ivarma_estimate(const S* xi, Eigen::Index n, int nd, int nc,
     eta << start.d.tail(nd), start.c.tail(nc);
   }
   auto polys = [&](const Vector<S>& p, Vector<S>& dpoly, Vector<S>& cpoly) {
-    dpoly.resize(nd + 1);
-    cpoly.resize(nc + 1);
-    dpoly(0) = cpoly(0) = 1;
-    dpoly.tail(nd) = p.head(nd);
-    cpoly.tail(nc) = p.tail(nc);
+    arma_polynomials<S>(p, nd, nc, dpoly, cpoly);
   };
-  auto project = [&](Vector<S>& p) {
-    Vector<S> dpoly, cpoly;
-    polys(p, dpoly, cpoly);
-    dpoly = reflect_into_circle<S>(dpoly, S(0.999));
-    cpoly = reflect_into_circle<S>(cpoly, S(0.999));
-    p.head(nd) = dpoly.tail(nd);
-    p.tail(nc) = cpoly.tail(nc);
-  };
+  auto project = [&](Vector<S>& p) { project_arma<S>(nd, nc, p); };
   project(eta);
   Matrix<S> Phi(n, np), Z(n, np);
   Vector<S> e(n), col(n);
@@ -892,6 +893,36 @@ class BjIteration {
   }
 };
 
+// One Box-Jenkins refined-IV iteration of [f b] (scaled time), shared by
+// rivc and each input of rivc_miso: the RIVC step from theta, the ARMA
+// noise model of this step kept as the next step's Gauss-Newton start
+// (the noise estimate changes little between iterations), then F kept
+// stable by step halving toward theta (the previous, stable iterate).
+// what names the iterate in the instability message.
+template <typename S>
+Status stable_bj_step(BjIteration<S>& iteration, const Vector<S>& theta, int nf,
+                      int nd, int nc, HurwitzTest<S>& hurwitz,
+                      const std::string& what, ArmaSettings<S>& arma_settings,
+                      Vector<S>& next, Matrix<S>& inverse_gram,
+                      ArmaResult<S>& arma, Vector<S>& x_hat, S& condition) {
+  const Status status = iteration.step(theta, arma_settings, true, next,
+                                       inverse_gram, arma, x_hat, condition);
+  if (!status.ok()) return status;
+  if (nc > 0) {
+    arma_settings.start.resize(nd + nc);
+    arma_settings.start << arma.d.tail(nd), arma.c.tail(nc);
+  }
+  int halvings = 0;
+  while (!hurwitz.is_stable(next.head(nf)) && halvings < 30) {
+    next = theta + S(0.5) * (next - theta);
+    ++halvings;
+  }
+  if (!hurwitz.is_stable(next.head(nf))) {
+    return numerical_failure(what + " is unstable");
+  }
+  return Status::Ok();
+}
+
 }  // namespace bj_detail
 
 // RIVC / CLRIVC: see the header comment. Returns kNotConverged (result
@@ -966,22 +997,10 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   // previous one (the noise estimate changes little between iterations).
   ArmaSettings<S> arma_settings = settings.arma;
   for (; it < settings.max_iterations; ++it) {
-    status = iteration.step(theta, arma_settings, true, next, inverse_gram,
-                            arma, x_hat, condition);
-    if (status.ok() && problem.nc > 0) {
-      arma_settings.start.resize(problem.nd + problem.nc);
-      arma_settings.start << arma.d.tail(problem.nd), arma.c.tail(problem.nc);
-    }
+    status = stable_bj_step(iteration, theta, nf, problem.nd, problem.nc,
+                            hurwitz, "the RIVC iterate", arma_settings, next,
+                            inverse_gram, arma, x_hat, condition);
     if (!status.ok()) return status;
-    // Keep F stable: step halving toward the previous (stable) iterate.
-    int halvings = 0;
-    while (!hurwitz.is_stable(next.head(nf)) && halvings < 30) {
-      next = theta + S(0.5) * (next - theta);
-      ++halvings;
-    }
-    if (!hurwitz.is_stable(next.head(nf))) {
-      return numerical_failure("the RIVC iterate is unstable");
-    }
     const S change = (next - theta).norm() / next.norm();
     theta = next;
     if (change < settings.tolerance) {
@@ -1186,26 +1205,13 @@ Status rivc_miso(const RivcMisoProblem<S>& problem,
     for (int i = 0; i < m; ++i) {
       const Vector<S> target = partial(i);
       const auto iteration = channel(i, target);
-      Status status = iteration->step(th[i], arma_settings, true, next,
-                                      inverse_gram, arma, x_hat, condition);
+      const Status status = stable_bj_step(
+          *iteration, th[i], problem.inputs[i].nf, problem.nd, problem.nc,
+          hurwitz[i], "the RIVC iterate", arma_settings, next, inverse_gram,
+          arma, x_hat, condition);
       if (!status.ok()) {
-        return Status(status.code(), "input " + std::to_string(i + 1) +
-                                         ": " + status.message());
-      }
-      if (problem.nc > 0) {
-        arma_settings.start.resize(problem.nd + problem.nc);
-        arma_settings.start << arma.d.tail(problem.nd),
-            arma.c.tail(problem.nc);
-      }
-      const int nf = problem.inputs[i].nf;
-      int halvings = 0;
-      while (!hurwitz[i].is_stable(next.head(nf)) && halvings < 30) {
-        next = th[i] + S(0.5) * (next - th[i]);
-        ++halvings;
-      }
-      if (!hurwitz[i].is_stable(next.head(nf))) {
-        return numerical_failure("the RIVC iterate of input " +
-                                 std::to_string(i + 1) + " is unstable");
+        return Status(status.code(), "input " + std::to_string(i + 1) + ": " +
+                                         status.message());
       }
       change2 += (next - th[i]).squaredNorm();
       norm2 += next.squaredNorm();
