@@ -27,7 +27,12 @@
 ## dynamic parameters), @code{out(k).c} with @code{out(k).cstd},
 ## @code{s2}, @code{np} (number of estimated parameters), @code{bic} =
 ## N log s2 + np log N, @code{ok}. Starts that end on an unstable F
-## (apart from the model's integrators) are discarded. A model with a
+## (apart from the model's integrators) are discarded. A real pole p of
+## the fit with p Ts > 1000 (a mode gone within a sampling interval, which
+## the samples cannot tell from an infinitely fast one) is residualised
+## and the model fitted again in the order without it (see
+## @code{residualised} below): the returned model may have a lower order
+## than @var{tmpl}. A model with a
 ## physical realisation (@code{tmpl.phys}) is fitted by
 ## @code{residtrace_physfit} instead (simulation error).
 ## @end deftypefn
