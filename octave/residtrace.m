@@ -110,8 +110,8 @@
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
 ## (thesis eqs. 2.8-2.13) with the added regressors; a real pole that a
-## fit sends beyond what the samples can see (p Ts > 1000) is residualised
-## (its mode at steady state) and the fit repeated in the lower order, so
+## fit sends beyond what the samples can see (p Ts > 1000) is brought back
+## to p Ts = 1000, the numerators scaled to keep the response in band, so
 ## that no model is stiffer than its data; the model as given
 ## is re-estimated the same way first, and candidates are scored against
 ## that re-estimate, so that a better estimator is never credited to an
