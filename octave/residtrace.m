@@ -110,9 +110,11 @@
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
 ## (thesis eqs. 2.8-2.13) with the added regressors; a real pole that a
-## fit sends beyond what the samples can see (p Ts > 1000) is brought back
-## to p Ts = 1000, the numerators scaled to keep the response in band, so
-## that no model is stiffer than its data; the model as given
+## candidate's fit sends beyond what the samples can see (p Ts > 1000) is
+## residualised (its mode at steady state) and the fit repeated in the
+## lower order, so that no model is stiffer than its data (the
+## re-estimates of the current model in its own structure keep its
+## order); the model as given
 ## is re-estimated the same way first, and candidates are scored against
 ## that re-estimate, so that a better estimator is never credited to an
 ## effect.
@@ -384,7 +386,10 @@ function [R, varargout] = residtrace (varargin)
     tmpl.levels = true;
   endif
   t0 = tic ();
-  cur = residtrace_fit (tmpl, D, ctx, starts);
+  ## the re-estimates in the current structure keep its order (see
+  ## residtrace_fit)
+  keep = setfield (ctx, "keep_order", true);
+  cur = residtrace_fit (tmpl, D, keep, starts);
   if (opts.verbose)
     printf ("residtrace: M re-estimated in %.1f s\n", toc (t0));
   endif
@@ -474,7 +479,8 @@ function [R, varargout] = residtrace (varargin)
       ## the estimation would have biased it, and every candidate would
       ## be scored against that biased baseline
       ctx.D.initial_state = true;
-      refit = residtrace_fit (cur, ctx.D, ctx, {cur.F});
+      keep.D = ctx.D;
+      refit = residtrace_fit (cur, ctx.D, keep, {cur.F});
       if (refit.ok)
         e_re = residtrace_valerror (refit, V, ctx);
         if (all (isfinite (e_re)))
