@@ -56,12 +56,9 @@ function T = residtrace_heldout (outdir = "results", which = {})
     endif
     randn ("state", 2026112301 + k); rand ("state", 2026112301 + k);
     [u, y, uv, yv, Ts, nn] = feval (["rec_" recs{k}]);
-    d = iddata (y, u, Ts, "InterSample", "zoh");
-    dv = iddata (yv, uv, Ts, "InterSample", "zoh");
-    M = srivc (iddata (y - mean (y), u - mean (u), Ts, "InterSample",
-                       "zoh"), nn);
     tic;
-    R = residtrace (d, M, "validation", dv, "iterate", 2, "verbose", true);
+    R = residtrace_record (y, u, yv, uv, Ts, nn, "iterate", 2,
+                           "verbose", true);
     el = toc;
     T(end+1) = struct ("record", recs{k}, "documented", strjoin (doc{k}, "/"),
                        "found", R.effect, "all", strjoin (R.effects, ", "),
@@ -69,7 +66,8 @@ function T = residtrace_heldout (outdir = "results", which = {})
                        "rmse_after", R.rmse_final, "elapsed", el,
                        "levels", R.levels.estimated,
                        "passes", {passes(R)});
-    printf ("%-6s documented %-30s found %-20s (%s) RMSE %.4g -> %.4g, %.0f s\n",
+    printf (["%-6s documented %-30s found %-20s (%s) RMSE %.4g -> %.4g, ", ...
+             "%.0f s\n"],
             recs{k}, T(end).documented, R.effect, T(end).all,
             R.rmse_before, R.rmse_final, el);
     fflush (stdout);
@@ -109,14 +107,9 @@ function s = ifelse (c, a, b)
   endif
 endfunction
 
-function u = levels (N, Ts, tmin, tmax, lo, hi)
-  u = zeros (N, 1);
-  k = 1;
-  while (k <= N)
-    L = max (1, round ((tmin + (tmax - tmin) * rand) / Ts));
-    u(k:min (N, k + L - 1)) = lo + (hi - lo) * rand;
-    k += L;
-  endwhile
+## the staircase inputs (residtrace_levels, shared with the tests)
+function u = levels (varargin)
+  u = residtrace_levels (varargin{:});
 endfunction
 
 function [u, y, uv, yv, Ts, nn] = rec_tanks ()

@@ -109,7 +109,12 @@
 ## what the simpler one leaves) (parsimony). The
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
-## (thesis eqs. 2.8-2.13) with the added regressors; the model as given
+## (thesis eqs. 2.8-2.13) with the added regressors; a real pole that a
+## candidate's fit sends beyond what the samples can see (p Ts > 1000) is
+## residualised (its mode at steady state) and the fit repeated in the
+## lower order, so that no model is stiffer than its data (the
+## re-estimates of the current model in its own structure keep its
+## order); the model as given
 ## is re-estimated the same way first, and candidates are scored against
 ## that re-estimate, so that a better estimator is never credited to an
 ## effect.
@@ -238,9 +243,9 @@
 ##
 ## Errors (identifiers @code{residtrace:badInput},
 ## @code{residtrace:dimensionMismatch}, @code{residtrace:badOption}): a
-## model that is not a continuous-time single-output model, a validation record with other inputs,
-## records too short for @code{maxlag}, irregular sampling, unknown
-## options or effects. A residual that is zero to rounding (a perfect
+## model that is not a continuous-time single-output model, a validation
+## record with other inputs, records too short for @code{maxlag},
+## irregular sampling, unknown options or effects. A residual that is zero to rounding (a perfect
 ## model) or not finite gives @code{effect = 'none'} with
 ## @code{testable = false} and the reason.
 ##
@@ -381,7 +386,10 @@ function [R, varargout] = residtrace (varargin)
     tmpl.levels = true;
   endif
   t0 = tic ();
-  cur = residtrace_fit (tmpl, D, ctx, starts);
+  ## the re-estimates in the current structure keep its order (see
+  ## residtrace_fit)
+  keep = setfield (ctx, "keep_order", true);
+  cur = residtrace_fit (tmpl, D, keep, starts);
   if (opts.verbose)
     printf ("residtrace: M re-estimated in %.1f s\n", toc (t0));
   endif
@@ -471,7 +479,8 @@ function [R, varargout] = residtrace (varargin)
       ## the estimation would have biased it, and every candidate would
       ## be scored against that biased baseline
       ctx.D.initial_state = true;
-      refit = residtrace_fit (cur, ctx.D, ctx, {cur.F});
+      keep.D = ctx.D;
+      refit = residtrace_fit (cur, ctx.D, keep, {cur.F});
       if (refit.ok)
         e_re = residtrace_valerror (refit, V, ctx);
         if (all (isfinite (e_re)))
@@ -614,7 +623,8 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   endfor
   rows_ = significance (rows_, opts);
   if (! isempty (rows_))
-    [rows_(strcmp ({rows_.effect}, "initial_state")).significant] = deal (false);
+    k = strcmp ({rows_.effect}, "initial_state");
+    [rows_(k).significant] = deal (false);
   endif
   vrows = [];
   if (any (strcmp (opts.effects, "drift")))

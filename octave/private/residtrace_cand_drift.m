@@ -53,7 +53,8 @@ function c = residtrace_cand_drift (cur, ctx)
   for k = 1:K
     idx = (k - 1) * L + (1:L);
     Dk = slice (D, idx);
-    m = residtrace_fit (cur, Dk, ctx, {cur.F});
+    m = residtrace_fit (cur, Dk, setfield (ctx, "keep_order", true),
+                        {cur.F});
     if (! m.ok || numel (m.theta) != np)
       ok(k) = false;
       continue;

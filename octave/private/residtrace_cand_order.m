@@ -7,7 +7,9 @@
 ## freed. Each variant is started from the current F times a factor at
 ## 1/3 and 3 times (order + 1) or 1/2 and 2 times (order + 2) the
 ## geometric mean of the current poles' moduli, and from the SVF start;
-## the variant with the smallest BIC on the estimation data is kept.
+## the variant with the smallest BIC on the estimation data is kept; a
+## variant whose fit sends an added pole beyond the samples (residualised
+## by @code{residtrace_fit}) is not that variant and is dropped.
 ## Evidence: the poles and zeros of the chosen model and the drop in BIC.
 ## @end deftypefn
 
@@ -43,6 +45,7 @@ function c = residtrace_cand_order (cur, ctx)
     t.F = [1, zeros(1, nn)];
     t.fixed = false (1, nn);
     t.fixed(nn-r+1:nn) = true;
+    t.order_floor_ = nn;      # a fit that drops the added poles is not it
     for j = ins
       t.channels(j).nb += db;
       t.channels(j).B = [zeros(1, db), t.channels(j).B];

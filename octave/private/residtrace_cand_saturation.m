@@ -57,22 +57,12 @@ function c = residtrace_cand_saturation (cur, ctx)
   x = y - cur.e_est;                     # the current model's output
   tmpls = {}; names = {}; starts = {};
   ## output saturation: the side(s) by the screening's BIC
-  best = Inf;
-  for side = {"upper", "lower", "both"}
-    lv = out_levels (y, x, side{1});
-    if (isempty (lv))
-      continue;
-    endif
-    v = bic_of (sum ((y - min (max (x, lv(1)), lv(2))) .^ 2), y, lv);
-    if (v < best)
-      best = v;
-      t = cur;
-      t.out(end+1) = struct ("type", "sat", "c", lv, "cstd", [NaN NaN],
-                             "omega", 0);
-      tout = t; nout = sprintf ("output, %s level", side{1});
-    endif
-  endfor
+  [best, lv, side] = best_side (y, x);
   if (isfinite (best))
+    tout = cur;
+    tout.out(end+1) = struct ("type", "sat", "c", lv, "cstd", [NaN NaN],
+                              "omega", 0);
+    nout = sprintf ("output, %s level", side);
     tmpls{end+1} = tout; starts{end+1} = {cur.F}; names{end+1} = nout;
   endif
   ## inner-node saturation
@@ -308,6 +298,24 @@ function [tmpls, names] = node_templates (cur, ctx, y, x)
 endfunction
 
 ## BIC of a screening fit: N log(sse/N) + (finite levels) log N.
+## The output clipped at the levels of each side ("upper", "lower",
+## "both") chosen from the model output x: the side whose clip has the
+## smallest BIC, its levels and that BIC (Inf, [], "" when no side has a
+## level to try).
+function [best, lvb, sb] = best_side (y, x)
+  best = Inf; lvb = []; sb = "";
+  for side = {"upper", "lower", "both"}
+    lv = out_levels (y, x, side{1});
+    if (isempty (lv))
+      continue;
+    endif
+    v = bic_of (sum ((y - min (max (x, lv(1)), lv(2))) .^ 2), y, lv);
+    if (v < best)
+      best = v; lvb = lv; sb = side{1};
+    endif
+  endfor
+endfunction
+
 function v = bic_of (sse, y, lv)
   N = numel (y);
   v = N * log (max (sse, realmin) / N) + sum (isfinite (lv)) * log (N);
@@ -396,17 +404,7 @@ function [t, name] = stop_template (cur, ctx, y, x)
       || (! isempty (cur.out) && any (! strcmp ({cur.out.type}, "offset"))))
     return;
   endif
-  best = Inf;
-  for side = {"upper", "lower", "both"}
-    lv = out_levels (y, x, side{1});
-    if (isempty (lv))
-      continue;
-    endif
-    v = bic_of (sum ((y - min (max (x, lv(1)), lv(2))) .^ 2), y, lv);
-    if (v < best)
-      best = v; lvb = lv; sb = side{1};
-    endif
-  endfor
+  [best, lvb, sb] = best_side (y, x);
   ## the costly fit only where the screening's clip shows evidence of a
   ## level (BIC at least 10 below the unclipped model's)
   if (! (best < bic_of (sum ((y - x) .^ 2), y, []) - 10))

@@ -25,13 +25,6 @@
 ## @end deftypefn
 
 function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
-  [t, why] = cascade_ (cur, ctx, g, clip);
-  if (! isempty (getenv ("CTID_PHYS_DEBUG")))
-    printf ("physcascade %s: %s F = %s\n", g, why, mat2str (cur.F, 4));
-  endif
-endfunction
-
-function [t, why] = cascade_ (cur, ctx, g, clip)
   t = [];
   why = "";
   D = ctx.D;

@@ -82,10 +82,6 @@ function model = residtrace_physfit (tmpl, D, ctx)
   endfor
   model = unpack (tmpl, th);
   e = resid (model, D, x0);
-  if (! isempty (getenv ("CTID_PHYS_DEBUG")))
-    printf ("physfit %s: sse %.4g -> %.4g after %d its, th %s\n",
-            tmpl.phys.kind, sse0, sse, it, mat2str (th(:).', 4));
-  endif
   if (! all (isfinite (e)))
     return;
   endif

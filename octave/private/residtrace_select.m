@@ -18,7 +18,10 @@
 ## variants' loss differences are decided long before their iterations
 ## end; issue 9, speed). @var{table}: the variants' names with their
 ## BIC and residual variance (after screening, or converged), and
-## @code{converged} (iterated to the end).
+## @code{converged} (iterated to the end). A template with the field
+## @code{order_floor_} fails when its fit comes back with a lower order
+## (the poles it adds residualised by @code{residtrace_fit}: it is then
+## another variant).
 ## @end deftypefn
 
 function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
@@ -32,6 +35,16 @@ function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
   if (screen)
     quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
   endif
+  ## the least order a variant's fit may come back with (a template's
+  ## field order_floor_): a fit that residualised the poles the variant
+  ## adds (residtrace_fit) is another variant, and fails as this one
+  lo = zeros (1, n);
+  for i = 1:n
+    if (isfield (tmpls{i}, "order_floor_"))
+      lo(i) = tmpls{i}.order_floor_;
+      tmpls{i} = rmfield (tmpls{i}, "order_floor_");
+    endif
+  endfor
   fits = cell (1, n);
   for i = 1:n
     if (isfield (tmpls{i}, "fitted"))
@@ -41,6 +54,7 @@ function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
       m = residtrace_fit (tmpls{i}, D, quick, starts{i});
       table(i).converged = ! screen;
     endif
+    m.ok = m.ok && numel (m.F) - 1 >= lo(i);
     fits{i} = m;
     if (m.ok)
       table(i).bic = m.bic;
@@ -58,8 +72,10 @@ function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
       ## iterated to convergence from the screening estimate (its F and
       ## numerators), then from the variant's own starts if that fails
       m = residtrace_fit (fits{i}, D, ctx, {fits{i}.F});
+      m.ok = m.ok && numel (m.F) - 1 >= lo(i);
       if (! m.ok)
         m = residtrace_fit (tmpls{i}, D, ctx, starts{i});
+        m.ok = m.ok && numel (m.F) - 1 >= lo(i);
       endif
       table(i).converged = true;
       if (m.ok)

@@ -96,21 +96,11 @@ function check_simulators ()
   assert (max (z3) > q.c1 ^ 2 * q.h1max);        # it would overflow
 endfunction
 
-function u = levels_ (N, Ts, tmin, tmax, lo, hi)
-  u = zeros (N, 1);
-  k = 1;
-  while (k <= N)
-    L = max (1, round ((tmin + (tmax - tmin) * rand) / Ts));
-    u(k:min (N, k + L - 1)) = lo + (hi - lo) * rand;
-    k += L;
-  endwhile
-endfunction
-
 function check_axis ()
   randn ("state", 424242); rand ("state", 424242);
   p = struct ("wn", 7, "zeta", 0.5, "K", 12, "ymin", 20, "ymax", 100);
   Ts = 0.02; N = 2500;
-  f = @() filter (0.1, [1 -0.9], levels_ (N, Ts, 0.6, 3, 0, 10));
+  f = @() filter (0.1, [1 -0.9], residtrace_levels (N, Ts, 0.6, 3, 0, 10));
   u = f (); uv = f ();
   for stops = [true false]
     if (! stops)
@@ -118,9 +108,7 @@ function check_axis ()
     endif
     y = axis_sim (u, Ts, p) + 0.1 * randn (N, 1);
     yv = axis_sim (uv, Ts, p) + 0.1 * randn (N, 1);
-    M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
-    R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
-                    "iterate", 1);
+    R = residtrace_record (y, u, yv, uv, Ts, [1 2 0], "iterate", 1);
     if (stops)
       assert (R.effect, "saturation");
       P = R.model.phys;
@@ -139,12 +127,11 @@ function check_tanks ()
   randn ("state", 515151); rand ("state", 515151);
   q = struct ("k", 0.12, "c1", 0.1, "c2", 0.085, "h1max", 40);
   Ts = 2; N = 2000;
-  u = levels_ (N, Ts, 50, 250, 2, 7); uv = levels_ (N, Ts, 50, 250, 2, 7);
+  u = residtrace_levels (N, Ts, 50, 250, 2, 7);
+  uv = residtrace_levels (N, Ts, 50, 250, 2, 7);
   y = tanks_sim (u, Ts, q) + 0.25 * randn (N, 1);
   yv = tanks_sim (uv, Ts, q) + 0.25 * randn (N, 1);
-  M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
-  R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
-                  "iterate", 1);
+  R = residtrace_record (y, u, yv, uv, Ts, [1 2 0], "iterate", 1);
   assert (any (strcmp (R.effect, {"saturation", "state_nonlinearity"})));
   assert (! isempty (R.model.phys) && strcmp (R.model.phys.kind, "cascade"));
   assert (R.rmse_after < 0.5 * R.rmse_before);
@@ -152,9 +139,7 @@ function check_tanks ()
   G = idctm (0.8 * 0.01 * 0.006, conv ([1 0.01], [1 0.006]));
   g = @(u) simc (G, u - 4.5, Ts) + 36 + 0.25 * randn (N, 1);
   y = g (u); yv = g (uv);
-  M = srivc (iddata (y - mean (y), u - mean (u), Ts), [1 2 0]);
-  R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
-                  "iterate", 1);
+  R = residtrace_record (y, u, yv, uv, Ts, [1 2 0], "iterate", 1);
   assert (! any (strcmp (R.effect, {"saturation", "state_nonlinearity", ...
                                      "static_nonlinearity", "coulomb"})));
 endfunction

@@ -1,0 +1,71 @@
+## residtrace_fit (private, issue 9's Silverbox regression): a real pole
+## that a fit leaves beyond what the samples can see (p Ts > 1000) is
+## residualised and the model fitted again in the lower order (not in the
+## re-estimates of the current structure).
+## @itemize
+## @item A record of a second-order system with a zero, fitted in a
+## third-order structure started from the truth times a pole at p Ts =
+## 1e4 (a mode gone within a hundredth of a sample): the model returned
+## is of second order, and its F and B are the system's (to the noise's
+## precision: relative 1e-2), its simulation error the noise's.
+## @item The same with @code{ctx.keep_order} (residtrace's re-estimates
+## of the current model in its own structure): the third order is kept.
+## @item The same with the third pole at p Ts = 4 (a pole the samples
+## see, like the Silverbox's order candidate's -2484 rad/s at Ts = 1.6
+## ms): the third order is kept and the pole estimated within 10 %.
+## @end itemize
+function test_residtrace_fit ()
+  root = getenv ("CTID_ROOT");
+  if (isempty (root))
+    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
+  endif
+  here = pwd ();
+  unwind_protect
+    cd (fullfile (root, "octave", "private"));   # the private functions
+    check ();
+  unwind_protect_cleanup
+    cd (here);
+  end_unwind_protect
+endfunction
+
+function check ()
+  randn ("state", 90901);
+  Ts = 0.01; N = 4000;
+  u = filter (0.3, [1 -0.7], randn (N, 1));
+  F2 = [1 1.2 4]; B2 = [2 10];
+  x2 = simc (idctm (B2, F2), u, Ts);
+  sn = 1e-3 * std (x2);
+  ctx = struct ("maxiter", 30, "opts", struct ("substeps", 10));
+  for pTs = [1e4 4]
+    p = pTs / Ts;
+    F3 = conv ([1 p], F2); B3 = p * B2;
+    y = simc (idctm (B3, F3), u, Ts) + sn * randn (N, 1);
+    D = struct ("y", y, "u", u, "Ts", Ts, "intersample", "zoh", "loop", [],
+                "vhat", zeros (N, 2), "ysm", y);
+    tmpl = residtrace_base (struct ("B", B3, "F", F3, "nk", 0),
+                            struct ("intersample", "zoh", "Ts", Ts));
+    m = residtrace_fit (tmpl, D, ctx, {F3});
+    assert (m.ok);
+    e = y - residtrace_simulate (m, u, Ts, [], 10);
+    printf ("p Ts = %g: order %d, F %s, B %s, error RMS / noise %.3f\n",
+            pTs, numel (m.F) - 1, mat2str (m.F, 5),
+            mat2str (m.channels.B, 5), sqrt (mean (e .^ 2)) / sn);
+    assert (sqrt (mean (e .^ 2)) < 1.2 * sn);
+    if (pTs > 1000)
+      assert (numel (m.F), 3);             # residualised
+      assert (m.fixed, [false false]);
+      assert (m.F, F2, 1e-2 * norm (F2));
+      assert (m.channels.B, B2, 1e-2 * norm (B2));
+      assert (m.np, 4);
+      ctx.keep_order = true;
+      m = residtrace_fit (tmpl, D, ctx, {F3});
+      ctx.keep_order = false;
+      assert (m.ok);
+      assert (numel (m.F), 4);             # the current structure's order
+    else
+      assert (numel (m.F), 4);             # kept
+      assert (max (abs (roots (m.F))), p, 0.1 * p);
+    endif
+  endfor
+  printf ("test_residtrace_fit: passed\n");
+endfunction
