@@ -100,7 +100,12 @@
 ## stationary but some parameter still moves by more than its standard
 ## error per iteration, the structure has directions the data do not
 ## determine: the warning @code{srivc:overParameterised} says so and
-## @var{info}.determined is false (try a lower order).
+## @var{info}.determined is false (try a lower order). The same warning
+## comes for a converged model with a real pole the data cannot see: one
+## with |p| Ts > 1000 (it dies out within a thousandth of a sample), or,
+## with one denominator, one whose standard error exceeds its magnitude
+## (its time constant is not distinguished from 0), as first-order data
+## fitted with [1 2 0] give.
 ## A model that did not converge gives the warning @code{srivc:notConverged}
 ## (and the last iterate); an unstable one @code{srivc:unstable}; one whose
 ## simulation explains less than 1 % of the output's variance (R_T^2 <
@@ -289,6 +294,33 @@ endfunction
 %! assert (M.F, [1 1.5 9], 1e-9);
 %! assert (M.B, [2 6], 1e-9);
 %!error id=srivc:badInput srivc (idfrd (ones (1, 5), 1:5, "Ts", 0), [2 2 0 1])
+
+%!test
+%! ## first-order data fitted with one pole too many: the extra pole runs
+%! ## to |p| Ts of 1e5-1e7 or keeps a standard error above its magnitude;
+%! ## either way srivc says the structure is over-parameterised, and a
+%! ## well-posed second-order fit of the same input gives no warning
+%! rand ("state", 3);
+%! v = prbs (10, 4, [-1 1], 2000); h = 0.05;
+%! for seed = [1 5]
+%!   randn ("state", seed);
+%!   y1 = simc (idctm (2, [1 0.5]), v, h) + 0.02 * randn (2000, 1);
+%!   warning ("off", "srivc:overParameterised", "local");
+%!   [~, ~, ~, inf1] = srivc (iddata (y1, v, h), [1 2 0]);
+%!   assert (inf1.determined, false);
+%!   assert (regexp (inf1.reason, "\\|p\\| Ts = |standard error"));
+%!   warning ("on", "srivc:overParameterised", "local");
+%!   y2 = simc (idctm (4, [1 1.2 4]), v, h) + 0.05 * randn (2000, 1);
+%!   lastwarn ("");
+%!   srivc (iddata (y2, v, h), [1 2 0]);
+%!   [~, id] = lastwarn ();
+%!   assert (id, "");
+%! endfor
+%!warning <has \|p\| Ts = [0-9.e+]* . 1000; try a lower order>
+%! rand ("state", 3); randn ("state", 1);
+%! v = prbs (10, 4, [-1 1], 2000);
+%! y1 = simc (idctm (2, [1 0.5]), v, 0.05) + 0.02 * randn (2000, 1);
+%! srivc (iddata (y1, v, 0.05), [1 2 0]);
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);
