@@ -170,14 +170,14 @@ class LeastSquaresUpdate {
         standard_.configure(n, a, covariance_guard, fixed_size);
         break;
       case UpdateForm::kPotter:
-        potter_.configure(n, a);
+        potter_.configure(n, a, fixed_size);
         break;
       case UpdateForm::kLevenbergMarquardt:
         lmr_.configure(
             n, std::get<ForgettingFactorAdaptation<S>>(a).lambda(),
             scaled ? Matrix<S>(m_.asDiagonal() * gamma * m_.asDiagonal())
                    : gamma,
-            covariance_guard);
+            covariance_guard, fixed_size);
         break;
     }
     phi_s_ = Vector<S>::Zero(n);
@@ -231,6 +231,12 @@ class LeastSquaresUpdate {
   template <typename D1, typename D2>
   S update(const Eigen::MatrixBase<D1>& phi, const Eigen::MatrixBase<D2>& zeta,
            S target) {
+    // Without scaling, phi and zeta as they are (the fixed-size IV step of
+    // ParameterUpdate takes their storage); theta() is then standard_'s.
+    if constexpr (std::is_same_v<D1, Vector<S>> &&
+                  std::is_same_v<D2, Vector<S>>) {
+      if (plain_) return standard_.update(phi, zeta, target);
+    }
     const Vector<S>& p = scaled_regressor(phi, phi_s_);
     const Vector<S>& z = scaled_regressor(zeta, zeta_s_);
     const S error = standard_.update(p, z, target);
@@ -298,6 +304,17 @@ class LeastSquaresUpdate {
   }
   bool failed() const {
     return form_ == UpdateForm::kLevenbergMarquardt && lmr_.failed();
+  }
+  // N of the fixed-size step of the form in use, 0 for the dynamic one.
+  int fixed_size() const {
+    switch (form_) {
+      case UpdateForm::kPotter:
+        return potter_.fixed_size();
+      case UpdateForm::kLevenbergMarquardt:
+        return lmr_.fixed_size();
+      default:
+        return standard_.fixed_size();
+    }
   }
 
  private:
