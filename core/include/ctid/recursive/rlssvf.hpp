@@ -151,18 +151,22 @@ Status validate(const RlsSvfConfig<S>& config) {
 // The parameter update of the least-squares estimators in one of the three
 // forms, with optional signal scaling: update() takes the unscaled phi_f,
 // theta() and P() are unscaled, kappa() is kappa_2 of the matrix actually
-// propagated (P_s, S_s S_s^T or R_s).
-template <typename S>
+// propagated (P_s, S_s S_s^T or R_s). SquareRootForms = false (the
+// recursive IV estimators, whose configuration has no update form) leaves
+// the Potter and LMR steps out of update(), so that their fixed-size code
+// is not compiled where it cannot run; configure() then takes kStandard
+// only.
+template <typename S, bool SquareRootForms = true>
 class LeastSquaresUpdate {
  public:
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
                  const Vector<S>& scaling, bool covariance_guard = true,
                  bool fixed_size = false) {
-    form_ = form;
+    form_ = SquareRootForms ? form : UpdateForm::kStandard;
     m_ = scaling;
     const bool scaled = m_.size() != 0;
-    plain_ = form == UpdateForm::kStandard && !scaled;
+    plain_ = form_ == UpdateForm::kStandard && !scaled;
     const Adaptation<S> a =
         scaled ? scaled_adaptation(adaptation, m_) : adaptation;
     switch (form_) {
@@ -216,10 +220,10 @@ class LeastSquaresUpdate {
         error = standard_.update(p, target);
         break;
       case UpdateForm::kPotter:
-        error = potter_.update(p, target);
+        if constexpr (SquareRootForms) error = potter_.update(p, target);
         break;
       case UpdateForm::kLevenbergMarquardt:
-        error = lmr_.update(p, target);
+        if constexpr (SquareRootForms) error = lmr_.update(p, target);
         break;
     }
     refresh_theta();
