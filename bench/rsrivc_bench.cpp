@@ -20,7 +20,17 @@
 //                         record and the writing of THM;
 //   BM_RunRecursiveIv_Rsrivc_ThmYh
 //                         the same with YH, the frozen model of each sample
-//                         simulated along the record (eq. 1.60).
+//                         simulated along the record (eq. 1.60);
+//   BM_RivsvfUpdate_FF    RIVSVF with the IV forgetting factor (eq. 2.30),
+//                         lambda = 0.999;
+//   BM_RlsSvfUpdate_Potter  RlsSvf::update per sample, PotterSVF (eq. 3.73,
+//                         square-root Kalman filter), Qn = 1e-4 I;
+//   BM_RlsSvfUpdate_Lmr   the same, LMR-RLSSVF (eq. 3.82), lambda = 0.999,
+//                         Gamma = 1e-3 I.
+// The fixed-size path (dynamic:0) takes the fixed-size filter kernels and
+// the fixed-size adaptation steps (adaptation.hpp: the least-squares and
+// IV steps; potter.hpp, lmr.hpp); dynamic:1 takes the dynamic-size code
+// for both.
 //
 // True systems b0/A(p) of unit static gain (na = 2: 4 / (p^2 + 2.4 p + 4)),
 // lambda_svf = 3.2, RLSSVF until tsiv = 100 s, then IV. Each iteration is
@@ -150,12 +160,17 @@ void report_samples(benchmark::State& state) {
                           kNumSamples);
 }
 
-void run_update_loop(benchmark::State& state, ctid::IvMethod method) {
+void run_update_loop(benchmark::State& state, ctid::IvMethod method,
+                     bool kalman = true) {
   const int na = order_of(state);
   const BenchData& data = bench_data(na);
   ctid::RecursiveIv<double> estimator;
-  const ctid::Status status =
-      estimator.configure(iv_config(method, na, kernels_of(state)));
+  ctid::RecursiveIvConfig<double> config =
+      iv_config(method, na, kernels_of(state));
+  if (!kalman) {
+    config.adaptation = ctid::ForgettingFactorAdaptation<double>(0.999);
+  }
+  const ctid::Status status = estimator.configure(config);
   if (!status.ok()) {
     state.SkipWithError(status.message().c_str());
     return;
@@ -182,6 +197,56 @@ void BM_RsrivcUpdate_KF(benchmark::State& state) {
 
 void BM_RivsvfUpdate_KF(benchmark::State& state) {
   run_update_loop(state, ctid::IvMethod::kRivsvf);
+}
+
+void BM_RivsvfUpdate_FF(benchmark::State& state) {
+  run_update_loop(state, ctid::IvMethod::kRivsvf, false);
+}
+
+// RlsSvf::update per sample in the square-root (Potter) or regularised
+// (LMR) form, on the same records.
+void run_rlssvf_loop(benchmark::State& state, ctid::UpdateForm form) {
+  const int na = order_of(state);
+  const BenchData& data = bench_data(na);
+  ctid::RlsSvfConfig<double> config;
+  config.orders = ctid::siso_orders(na, 1, 0);
+  config.svf.lambda_svf = kLambdaSvf;
+  config.svf.kernels = kernels_of(state);
+  config.ts = kTs;
+  config.form = form;
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(na + 1, na + 1);
+  if (form == ctid::UpdateForm::kPotter) {
+    config.adaptation = ctid::KalmanAdaptation<double>(1e-4 * identity);
+  } else {
+    config.adaptation = ctid::ForgettingFactorAdaptation<double>(0.999);
+    config.lmr_gamma = 1e-3 * identity;
+  }
+  ctid::RlsSvf<double> estimator;
+  const ctid::Status status = estimator.configure(config);
+  if (!status.ok()) {
+    state.SkipWithError(status.message().c_str());
+    return;
+  }
+  const double* u = data.u.data();
+  const double* y = data.y.data();
+  for (auto _ : state) {
+    estimator.reset();
+    for (Eigen::Index k = 0; k < kNumSamples; ++k) {
+      estimator.update(u + k, y[k], kTs);
+    }
+    benchmark::DoNotOptimize(estimator.theta().data());
+    benchmark::ClobberMemory();
+  }
+  check_final_estimate(state, data, estimator.theta().data(), 1);
+  report_samples(state);
+}
+
+void BM_RlsSvfUpdate_Potter(benchmark::State& state) {
+  run_rlssvf_loop(state, ctid::UpdateForm::kPotter);
+}
+
+void BM_RlsSvfUpdate_Lmr(benchmark::State& state) {
+  run_rlssvf_loop(state, ctid::UpdateForm::kLevenbergMarquardt);
 }
 
 void run_batch(benchmark::State& state, bool with_yh) {
@@ -228,6 +293,9 @@ BENCHMARK(BM_RsrivcUpdate_KF)->Apply(orders_and_kernels);
 BENCHMARK(BM_RivsvfUpdate_KF)->Apply(orders_and_kernels);
 BENCHMARK(BM_RunRecursiveIv_Rsrivc_Thm)->Apply(orders_and_kernels);
 BENCHMARK(BM_RunRecursiveIv_Rsrivc_ThmYh)->Apply(orders_and_kernels);
+BENCHMARK(BM_RivsvfUpdate_FF)->Apply(orders_and_kernels);
+BENCHMARK(BM_RlsSvfUpdate_Potter)->Apply(orders_and_kernels);
+BENCHMARK(BM_RlsSvfUpdate_Lmr)->Apply(orders_and_kernels);
 
 // The console table, then one line per benchmark in million samples/s.
 class SummaryReporter : public benchmark::ConsoleReporter {

@@ -268,6 +268,81 @@ TEST(CovarianceGuard, UnrolledSymmetricTestDecidesAsApply) {
   expect_symmetric_test_matches_apply<8>();
 }
 
+// apply_unrolled<K> (the unrolled test of the fixed-size IV step, whose P
+// is not symmetric) against apply() on the same matrices, K = 1..8, double
+// and float: a symmetric part from well conditioned to barely and not
+// positive definite (its smallest eigenvalue around the detection level
+// rho = n eps and below), an antisymmetric part from none to as large as
+// the symmetric one, variances over 16 decades, a variance that is zero,
+// negative, NaN or above the ceiling. The same action at every call and
+// the same P bit for bit, over two calls in a row (the counters carry
+// over, a repaired P is tested again).
+template <typename S, int K>
+void expect_unrolled_test_matches_apply() {
+  using Mat = Eigen::Matrix<S, K, K>;
+  const double eps = std::numeric_limits<S>::epsilon();
+  int acted = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    Eigen::VectorXd lambda = Eigen::VectorXd::LinSpaced(K, 1, 2);
+    const int kind = trial % 10;
+    const double smallest[7] = {1,       1e-3,          1e-6, 1e3 * K * eps,
+                                K * eps, 0.5 * K * eps, -1e-4};
+    if (kind <= 6) lambda(0) = smallest[kind];
+    Eigen::MatrixXd C = with_eigenvalues(lambda, 900 + trial);
+    C = (C + C.transpose()).eval() / 2;
+    const double skew[4] = {0, 1e-6, 0.1, 1};
+    C += antisymmetric(K, skew[trial % 4]);
+    Eigen::VectorXd scales = Eigen::VectorXd::LinSpaced(K, 0, 4 * (trial % 3));
+    for (int i = 0; i < K; ++i) scales(i) = std::pow(10.0, scales(i));
+    Mat P = (scales.asDiagonal() * C * scales.asDiagonal()).cast<S>();
+    const int last = K - 1;
+    if (kind == 7) P(last, last) = trial % 2 ? S(0) : S(-1);
+    if (kind == 8) {
+      P(last, last) = trial % 4 == 0 ? std::numeric_limits<S>::quiet_NaN()
+                                     : S(2) * std::sqrt(std::numeric_limits<
+                                                        S>::max());
+    }
+    CovarianceGuard<S> dynamic, fixed;
+    dynamic.configure(K, true);
+    fixed.configure(K, true);
+    Matrix<S> a = P;
+    Mat b = P;
+    for (int call = 0; call < 2; ++call) {
+      S p[K][K];
+      for (int j = 0; j < K; ++j) {
+        for (int i = 0; i < K; ++i) p[j][i] = b(i, j);
+      }
+      const int expected = dynamic.apply(a);
+      const int got = fixed.template apply_unrolled<K>(p, b);
+      acted += expected != kGuardNone;
+      ASSERT_EQ(got, expected) << "K = " << K << ", trial " << trial;
+      const Matrix<S> bd = b;
+      ASSERT_TRUE((a.array() == bd.array() ||
+                   (a.array().isNaN() && bd.array().isNaN()))
+                      .all())
+          << "K = " << K << ", trial " << trial;
+    }
+  }
+  EXPECT_GE(acted, 10) << "K = " << K << ": the cases never made it act";
+}
+
+template <typename S>
+void expect_unrolled_tests_match_apply() {
+  expect_unrolled_test_matches_apply<S, 1>();
+  expect_unrolled_test_matches_apply<S, 2>();
+  expect_unrolled_test_matches_apply<S, 3>();
+  expect_unrolled_test_matches_apply<S, 4>();
+  expect_unrolled_test_matches_apply<S, 5>();
+  expect_unrolled_test_matches_apply<S, 6>();
+  expect_unrolled_test_matches_apply<S, 7>();
+  expect_unrolled_test_matches_apply<S, 8>();
+}
+
+TEST(CovarianceGuard, UnrolledGeneralTestDecidesAsApply) {
+  expect_unrolled_tests_match_apply<double>();
+  expect_unrolled_tests_match_apply<float>();
+}
+
 // A short run (20 s excited, 180 s constant) is not touched: every
 // estimator gives the same bits with and without the guard (the thesis
 // reproductions depend on it).

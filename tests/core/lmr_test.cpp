@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <random>
+#include <string>
 
 #include "allocation_counter.hpp"
 #include "test_util.hpp"
@@ -230,6 +233,112 @@ TEST(LmrUpdate, GuardCeilingIsACongruence) {
   EXPECT_TRUE(lmr.P().allFinite());
   // The correlation of the two regressors (about 0) is kept.
   EXPECT_LT(std::abs(R(0, 1)) / std::sqrt(R(0, 0) * R(1, 1)), 0.1f);
+}
+
+// The fixed-size step (LmrUpdate::update_fixed) against the dynamic one on
+// the same regressors, step by step, np = 1..8, double and float: theta,
+// the factor L and the prediction error to `tol` relative to their norms,
+// the guard's action identical at every step. Three records: lambda = 0.98
+// with Gamma = 1e-2 I (one rank-one update per column of its root);
+// lambda = 0.9 without Gamma and the regressors confined to one direction
+// after 300 samples, so that R decays to the guard's floor in the others;
+// lambda = 1 with regressors (and noise) of 1e9 (float) or 1e76 (double),
+// so that R's diagonal reaches the ceiling. (A first regressor alone that
+// large made the prediction error, target - phi^T theta with |phi_1
+// theta_1| = 1e76, the rounding of that product, which the other
+// parameters then follow: the two paths parted completely in double, as
+// any two orders of the sums would.) The fixed step must not allocate.
+struct LmrCounts {
+  int repairs = 0, ceilings = 0;
+};
+
+template <typename S>
+void expect_lmr_paths_agree(int np, int variant, double tol,
+                            LmrCounts& total) {
+  const char* names[3] = {"Gamma", "windup", "ceiling"};
+  const std::string what = std::string("LMR-") + names[variant] +
+                           " np = " + std::to_string(np) +
+                           (sizeof(S) == 4 ? " float" : " double");
+  const S lambda = variant == 0 ? S(0.98) : variant == 1 ? S(0.9) : S(1);
+  const Matrix<S> gamma =
+      variant == 0 ? Matrix<S>(S(1e-2) * Matrix<S>::Identity(np, np))
+                   : Matrix<S>(Matrix<S>::Zero(np, np));
+  const double big = sizeof(S) == 4 ? 1e9 : 1e76;
+  LmrUpdate<S> fixed, dynamic;
+  fixed.configure(np, lambda, gamma, true, true);
+  dynamic.configure(np, lambda, gamma, true, false);
+  EXPECT_EQ(fixed.fixed_size(), np) << what;
+  EXPECT_EQ(dynamic.fixed_size(), 0) << what;
+  const Matrix<S> P0 = S(10) * Matrix<S>::Identity(np, np);
+  fixed.reset(Vector<S>::Zero(np), P0);
+  dynamic.reset(Vector<S>::Zero(np), P0);
+  std::mt19937 rng(60 + np + 10 * variant);
+  std::normal_distribution<double> normal;
+  const auto near = [&](const auto& a, const auto& b) {
+    const Eigen::MatrixXd ad = a.template cast<double>();
+    const Eigen::MatrixXd bd = b.template cast<double>();
+    return (ad - bd).norm() <= tol * std::max(bd.norm(), 1e-300);
+  };
+  LmrCounts counts;
+  long allocations = 0;
+  Vector<S> phi(np);
+  const int steps = variant == 1 ? 4000 : 1500;
+  for (int k = 0; k < steps; ++k) {
+    for (int i = 0; i < np; ++i) {
+      double v = normal(rng);
+      if (variant == 1 && k >= 300 && i > 0) v = 0;
+      if (variant == 2) v *= big;
+      phi(i) = S(v);
+    }
+    const double noise = 0.1 * normal(rng) * (variant == 2 ? big : 1.0);
+    const S target = S(double(phi.sum()) + noise);
+    const long before = g_allocations.load();
+    const S error_fixed = fixed.update(phi, target);
+    allocations += g_allocations.load() - before;
+    const S error_dynamic = dynamic.update(phi, target);
+    ASSERT_EQ(fixed.covariance_guard(), dynamic.covariance_guard())
+        << what << ", step " << k;
+    ASSERT_EQ(fixed.failed(), dynamic.failed()) << what << ", step " << k;
+    counts.repairs += (dynamic.covariance_guard() & kGuardRepair) != 0;
+    counts.ceilings += (dynamic.covariance_guard() & kGuardCeiling) != 0;
+    ASSERT_TRUE(near(fixed.theta(), dynamic.theta()))
+        << what << ", step " << k << ": relative difference "
+        << (fixed.theta() - dynamic.theta()).norm() / dynamic.theta().norm();
+    ASSERT_TRUE(near(fixed.factor(), dynamic.factor())) << what << ", " << k;
+    // The error target - phi^T theta to the rounding of its terms (it
+    // cancels: 1e72 out of terms of 1e76 in the ceiling record).
+    const double terms = std::max(
+        {1.0, std::abs(double(error_dynamic)), std::abs(double(target))});
+    ASSERT_NEAR(double(error_fixed), double(error_dynamic), tol * terms)
+        << what << ", step " << k;
+  }
+  EXPECT_FALSE(dynamic.failed()) << what;
+  std::printf("%s: %d repairs, %d ceilings\n", what.c_str(), counts.repairs,
+              counts.ceilings);
+  EXPECT_EQ(allocations, 0) << what;
+  total.repairs += counts.repairs;
+  total.ceilings += counts.ceilings;
+}
+
+TEST(LmrUpdate, FixedSizeStepAgreesWithTheDynamicStep) {
+  const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
+  LmrCounts total;
+  for (int np = 1; np <= kMaxFixedParameters; ++np) {
+    for (int variant = 0; variant < 3; ++variant) {
+      expect_lmr_paths_agree<double>(np, variant, 1e-12, total);
+      expect_lmr_paths_agree<float>(np, variant, float_tol, total);
+    }
+  }
+  // The records make the guard act, so that identical actions mean
+  // something.
+  EXPECT_GE(total.repairs, 1);
+  EXPECT_GE(total.ceilings, 1);
+  LmrUpdate<double> large;
+  large.configure(kMaxFixedParameters + 1, 1.0,
+                  Eigen::MatrixXd::Zero(kMaxFixedParameters + 1,
+                                        kMaxFixedParameters + 1),
+                  true, true);
+  EXPECT_EQ(large.fixed_size(), 0);
 }
 
 }  // namespace

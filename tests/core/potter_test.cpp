@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <new>
 #include <random>
+#include <string>
 
 #include "allocation_counter.hpp"
 #include "test_util.hpp"
@@ -50,12 +51,16 @@ struct Agreement {
 // Runs the standard KF and PotterSVF in double on the same random
 // regression (random-walk parameters, noisy target) and records how far
 // apart they get.
+// fixed_size: both on their fixed-size steps (issue 14).
 Agreement compare_with_kalman(const Eigen::MatrixXd& Qn, int steps,
-                              unsigned seed) {
+                              unsigned seed, bool fixed_size = false) {
   const Eigen::Index np = Qn.rows();
   std::mt19937 rng(seed);
-  ParameterUpdate<double> kf(np, KalmanAdaptation<double>(Qn));
-  PotterUpdate<double> potter(np, KalmanAdaptation<double>(Qn));
+  ParameterUpdate<double> kf(np, KalmanAdaptation<double>(Qn), false,
+                             fixed_size);
+  PotterUpdate<double> potter(np, KalmanAdaptation<double>(Qn), fixed_size);
+  EXPECT_EQ(kf.fixed_size(), fixed_size ? np : 0);
+  EXPECT_EQ(potter.fixed_size(), fixed_size ? np : 0);
   const Eigen::VectorXd theta0 = random_vector(np, rng);
   const Eigen::MatrixXd P0 = 100 * Eigen::MatrixXd::Identity(np, np);
   kf.reset(theta0, P0);
@@ -82,23 +87,97 @@ Agreement compare_with_kalman(const Eigen::MatrixXd& Qn, int steps,
 // while still catching any algebraic slip (which shows at 1e-3 or more).
 constexpr double kDoubleTolerance = 1e-10;
 
+// Both forms dynamic, then both on their fixed-size steps.
 TEST(PotterUpdate, AgreesWithStandardKalmanFilter) {
   std::mt19937 rng(1);
   Eigen::MatrixXd A(4, 4);
   for (int i = 0; i < 16; ++i) A(i) = uniform(rng);
   const Eigen::MatrixXd Qn = 1e-3 * A * A.transpose();
-  const Agreement worst = compare_with_kalman(Qn, 4000, 2);
-  EXPECT_LT(worst.theta, kDoubleTolerance) << test::scientific(worst.theta);
-  EXPECT_LT(worst.P, kDoubleTolerance) << test::scientific(worst.P);
-  EXPECT_LT(worst.error, kDoubleTolerance) << test::scientific(worst.error);
+  for (const bool fixed : {false, true}) {
+    const Agreement worst = compare_with_kalman(Qn, 4000, 2, fixed);
+    EXPECT_LT(worst.theta, kDoubleTolerance) << test::scientific(worst.theta);
+    EXPECT_LT(worst.P, kDoubleTolerance) << test::scientific(worst.P);
+    EXPECT_LT(worst.error, kDoubleTolerance) << test::scientific(worst.error);
+  }
 }
 
 TEST(PotterUpdate, AgreesWithRecursiveLeastSquaresWhenQnIsZero) {
-  const Agreement worst =
-      compare_with_kalman(Eigen::MatrixXd::Zero(3, 3), 4000, 3);
-  EXPECT_LT(worst.theta, kDoubleTolerance) << test::scientific(worst.theta);
-  EXPECT_LT(worst.P, kDoubleTolerance) << test::scientific(worst.P);
-  EXPECT_LT(worst.error, kDoubleTolerance) << test::scientific(worst.error);
+  for (const bool fixed : {false, true}) {
+    const Agreement worst =
+        compare_with_kalman(Eigen::MatrixXd::Zero(3, 3), 4000, 3, fixed);
+    EXPECT_LT(worst.theta, kDoubleTolerance) << test::scientific(worst.theta);
+    EXPECT_LT(worst.P, kDoubleTolerance) << test::scientific(worst.P);
+    EXPECT_LT(worst.error, kDoubleTolerance) << test::scientific(worst.error);
+  }
+}
+
+// The fixed-size step (PotterUpdate::update_fixed) against the dynamic one
+// on the same regression, step by step, np = 1..8: Qn of full rank, Qn
+// with a zero direction (a shorter QR stack), no Qn, and the forgetting
+// factor form. theta, P = S S^T, the gain, beta and the prediction error
+// to `tol` relative to their norms; the fixed step must not allocate.
+template <typename S>
+void expect_potter_paths_agree(int np, int variant, double tol) {
+  const char* names[4] = {"KF", "KF semi-definite Qn", "KF Qn = 0", "FF"};
+  const std::string what = std::string("Potter-") + names[variant] +
+                           " np = " + std::to_string(np) +
+                           (sizeof(S) == 4 ? " float" : " double");
+  std::mt19937 rng(40 + np + 10 * variant);
+  Matrix<S> Qn = Matrix<S>::Zero(np, np);
+  for (int i = 0; i < np; ++i) Qn(i, i) = S(1e-4 * (1 + i));
+  if (variant == 1) Qn(0, 0) = 0;
+  if (variant == 2) Qn.setZero();
+  const Adaptation<S> adaptation =
+      variant == 3 ? Adaptation<S>(ForgettingFactorAdaptation<S>(S(0.98)))
+                   : Adaptation<S>(KalmanAdaptation<S>(Qn));
+  PotterUpdate<S> fixed(np, adaptation, true);
+  PotterUpdate<S> dynamic(np, adaptation, false);
+  ASSERT_EQ(fixed.fixed_size(), np) << what;
+  ASSERT_EQ(dynamic.fixed_size(), 0) << what;
+  const Vector<S> theta0 = random_vector(np, rng).cast<S>();
+  const Matrix<S> P0 = S(100) * Matrix<S>::Identity(np, np);
+  fixed.reset(theta0, P0);
+  dynamic.reset(theta0, P0);
+  Vector<S> truth = (3 * random_vector(np, rng)).cast<S>();
+  const auto near = [&](const auto& a, const auto& b) {
+    const Eigen::MatrixXd ad = a.template cast<double>();
+    const Eigen::MatrixXd bd = b.template cast<double>();
+    return (ad - bd).norm() <= tol * std::max(bd.norm(), 1e-300);
+  };
+  long allocations = 0;
+  for (int k = 0; k < 1500; ++k) {
+    truth += (0.01 * random_vector(np, rng)).cast<S>();
+    const Vector<S> phi = random_vector(np, rng).cast<S>();
+    const S target = phi.dot(truth) + S(0.1 * uniform(rng));
+    const long before = g_allocations.load();
+    const S error_fixed = fixed.update(phi, target);
+    allocations += g_allocations.load() - before;
+    const S error_dynamic = dynamic.update(phi, target);
+    ASSERT_TRUE(near(fixed.theta(), dynamic.theta())) << what << ", " << k;
+    ASSERT_TRUE(near(fixed.P(), dynamic.P())) << what << ", step " << k;
+    ASSERT_TRUE(near(fixed.gain(), dynamic.gain())) << what << ", " << k;
+    ASSERT_NEAR(double(fixed.innovation_scale()),
+                double(dynamic.innovation_scale()),
+                tol * double(dynamic.innovation_scale()))
+        << what << ", step " << k;
+    ASSERT_NEAR(double(error_fixed), double(error_dynamic),
+                tol * std::max(1.0, std::abs(double(error_dynamic))))
+        << what << ", step " << k;
+  }
+  EXPECT_EQ(allocations, 0) << what;
+}
+
+TEST(PotterUpdate, FixedSizeStepAgreesWithTheDynamicStep) {
+  const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
+  for (int np = 1; np <= kMaxFixedParameters; ++np) {
+    for (int variant = 0; variant < 4; ++variant) {
+      expect_potter_paths_agree<double>(np, variant, 1e-12);
+      expect_potter_paths_agree<float>(np, variant, float_tol);
+    }
+  }
+  PotterUpdate<double> large(kMaxFixedParameters + 1,
+                             ForgettingFactorAdaptation<double>(1), true);
+  EXPECT_EQ(large.fixed_size(), 0);
 }
 
 // The forgetting-factor form: S (I - f f^T / alpha) / sqrt(lambda) with

@@ -19,14 +19,16 @@
 // allocation happens in update().
 //
 // Fixed-size path (issue 14): configured with fixed_size = true and
-// np <= kMaxFixedParameters (the parameter counts orders 1-4 produce), the
-// least-squares step runs on compile-time-size maps of the same storage
+// np <= kMaxFixedParameters (the parameter counts orders 1-4 produce), each
+// step runs on compile-time-size maps of the same storage
 // (theta, P, Qn), with lambda and the adaptation kind read once at
 // configure instead of through the variant every sample. The arithmetic is
 // that of the dynamic step, in the same order; the guard is applied to the
 // same P by the same object, so it acts exactly as on the dynamic path.
-// The dynamic code stays for larger np, for the IV step and as the
-// reference. The guard runs its tests with n = N at compile time.
+// The instrumental-variable step (2.29)/(2.30) has its fixed-size form
+// too (update_fixed_iv), with the guard's unrolled test of a P that is not
+// symmetric. The dynamic code stays for larger np and as the reference.
+// The guard runs its tests with n = N at compile time.
 #pragma once
 
 #include <cmath>
@@ -165,8 +167,8 @@ class ParameterUpdate {
   // legitimate, and the guard would change it); the estimators
   // (LeastSquaresUpdate: RLSSVF, RIVSVF, RSRIVC, CL*) turn it on by
   // default through their configs.
-  // fixed_size: the compile-time-size least-squares step when np <=
-  // kMaxFixedParameters (chosen here, once).
+  // fixed_size: the compile-time-size least-squares and IV steps when
+  // np <= kMaxFixedParameters (chosen here, once).
   void configure(Eigen::Index np, Adaptation<S> adaptation,
                  bool covariance_guard = false, bool fixed_size = false) {
     adaptation_ = std::move(adaptation);
@@ -229,6 +231,22 @@ class ParameterUpdate {
   template <typename D1, typename D2>
   S update(const Eigen::MatrixBase<D1>& phi, const Eigen::MatrixBase<D2>& zeta,
            S target) {
+    if constexpr (std::is_same_v<D1, Vector<S>> &&
+                  std::is_same_v<D2, Vector<S>>) {
+      const S* p = phi.derived().data();
+      const S* z = zeta.derived().data();
+      switch (fixed_np_) {
+        case 1: return update_fixed_iv<1>(p, z, target);
+        case 2: return update_fixed_iv<2>(p, z, target);
+        case 3: return update_fixed_iv<3>(p, z, target);
+        case 4: return update_fixed_iv<4>(p, z, target);
+        case 5: return update_fixed_iv<5>(p, z, target);
+        case 6: return update_fixed_iv<6>(p, z, target);
+        case 7: return update_fixed_iv<7>(p, z, target);
+        case 8: return update_fixed_iv<8>(p, z, target);
+        default: break;
+      }
+    }
     predict();
     const S error = target - phi.dot(theta_);
     p_zeta_.noalias() = P_ * zeta;
@@ -352,6 +370,97 @@ class ParameterUpdate {
     }
     Eigen::Map<Eigen::Matrix<S, N, N>> P(P_data);
     guard_.template apply_symmetric<N>(p, P);
+    return error;
+  }
+
+  // The IV step above for np = N, in the manner of update_fixed(): local
+  // copies written back once, the products in the order of the dynamic
+  // step's (P zeta and P^T phi column by column, the outer product entry
+  // by entry), the gain by division as there, so that P, theta and what
+  // the guard sees differ from the dynamic step's by the rounding of the
+  // sums only. P is not symmetric: the guard's unrolled test forms its
+  // symmetric part as apply() does (covariance_guard.hpp).
+  template <int N>
+  S update_fixed_iv(const S* phi_data, const S* zeta_data, S target) {
+    S phi[N], zeta[N], theta[N], p[N][N], pz[N], ptphi[N], gain[N];
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      phi[i] = phi_data[i];
+      zeta[i] = zeta_data[i];
+      theta[i] = theta_.data()[i];
+    }
+    const S* P_in = P_.data();
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
+    }
+    if (kalman_) {  // P- = P + Qn
+      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
+      }
+    }
+    S prediction = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    const S error = target - prediction;
+    // P- zeta, column by column; P-^T phi, a dot product per column.
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) pz[i] = p[0][i] * zeta[0];
+#pragma GCC unroll 8
+    for (int j = 1; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) pz[i] += p[j][i] * zeta[j];
+    }
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+      S sum = 0;
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) sum += p[j][i] * phi[i];
+      ptphi[j] = sum;
+    }
+    S phi_pz = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) phi_pz += phi[i] * pz[i];
+    const S denominator = offset_ + phi_pz;
+    innovation_scale_ = denominator;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      gain[i] = pz[i] / denominator;
+      theta[i] += gain[i] * error;
+    }
+    // P- - L (P-^T phi)^T, eq. (2.29c)/(2.30c).
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) p[j][i] -= gain[i] * ptphi[j];
+    }
+    const S scale = scale_;  // read once: the stores below may alias it
+    if (scale != S(1)) {
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] *= scale;
+      }
+    }
+    S* P_data = P_.data();
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) P_data[j * N + i] = p[j][i];
+    }
+    S* theta_data = theta_.data();
+    S* gain_data = gain_.data();
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      theta_data[i] = theta[i];
+      gain_data[i] = gain[i];
+    }
+    Eigen::Map<Eigen::Matrix<S, N, N>> P(P_data);
+    guard_.template apply_unrolled<N>(p, P);
     return error;
   }
 

@@ -43,7 +43,8 @@
 // kGuardNone) and allocates nothing; a non-finite P is left to the run's
 // check of the estimates. Templated on the size (N fixed or
 // Eigen::Dynamic) so that fixed-size kernels can hold one; apply_symmetric()
-// is apply() unrolled for the fixed-size least-squares step.
+// is apply() unrolled for the fixed-size least-squares step,
+// apply_unrolled() for the fixed-size IV step (a P that is not symmetric).
 #pragma once
 
 #include <algorithm>
@@ -144,6 +145,38 @@ class CovarianceGuard {
   //     instead of stopping at the first failure: the same verdict.
   template <int K, typename Derived>
   int apply_symmetric(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
+    return apply_fixed<K, true>(p, P);
+  }
+
+  // apply_symmetric() for any P, symmetric or not (the fixed-size IV step
+  // of adaptation.hpp, eqs. 2.29/2.30): the tests read the symmetric part
+  // s_ij = (P(i, j) + P(j, i)) / 2 as apply() forms it, the same number
+  // by the same operations, so the decisions, counters and repairs are
+  // apply()'s, bit for bit.
+  template <int K, typename Derived>
+  int apply_unrolled(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
+    return apply_fixed<K, false>(p, P);
+  }
+
+  int last_action() const { return last_; }
+  bool enabled() const { return enabled_; }
+
+ private:
+  static S range_ceiling() { return std::sqrt(std::numeric_limits<S>::max()); }
+
+  // s_ij of the tests from p (p[j][i] = P(i, j)), i > j: P(i, j) itself
+  // when P is known to be symmetric, else (P(i, j) + P(j, i)) / 2.
+  template <bool Symmetric, int K>
+  static S symmetric_part(const S (&p)[K][K], int i, int j) {
+    if constexpr (Symmetric) {
+      return p[j][i];
+    } else {
+      return (p[j][i] + p[i][j]) / 2;
+    }
+  }
+
+  template <int K, bool Symmetric, typename Derived>
+  int apply_fixed(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
     if (!enabled_ || n_ == 0) {
       last_ = kGuardNone;
       return last_;
@@ -160,22 +193,17 @@ class CovarianceGuard {
     for (int j = 0; j < K; ++j) {
 #pragma GCC unroll 8
       for (int i = j + 1; i < K; ++i) {
-        suspect = suspect | !(p[j][i] * p[j][i] < p[i][i] * p[j][j]);
+        const S s = symmetric_part<Symmetric>(p, i, j);
+        suspect = suspect | !(s * s < p[i][i] * p[j][j]);
       }
     }
     if (!suspect && ++since_check_ < period_) return last_;
     since_check_ = 0;
-    if (!suspect && definite_symmetric<K>(p)) return last_;
+    if (!suspect && definite_fixed<K, Symmetric>(p)) return last_;
     repair(P);
     last_ |= kGuardRepair;
     return last_;
   }
-
-  int last_action() const { return last_; }
-  bool enabled() const { return enabled_; }
-
- private:
-  static S range_ceiling() { return std::sqrt(std::numeric_limits<S>::max()); }
 
   // LDL^T of Ps in the lower triangle of work_, each pivot > rho Ps_jj.
   template <typename Derived>
@@ -197,10 +225,10 @@ class CovarianceGuard {
     return true;
   }
 
-  // definite() on the symmetric p of apply_symmetric(), the factor in
-  // local arrays: the same operations in the same order.
-  template <int K>
-  bool definite_symmetric(const S (&p)[K][K]) const {
+  // definite() on the p of apply_fixed(), the factor in local arrays: the
+  // same operations in the same order.
+  template <int K, bool Symmetric>
+  bool definite_fixed(const S (&p)[K][K]) const {
     S L[K][K], pivots[K], v[K];
 #pragma GCC unroll 8
     for (int j = 0; j < K; ++j) {
@@ -214,7 +242,7 @@ class CovarianceGuard {
       pivots[j] = dj;
 #pragma GCC unroll 8
       for (int i = j + 1; i < K; ++i) {
-        S lij = p[j][i];
+        S lij = symmetric_part<Symmetric>(p, i, j);
 #pragma GCC unroll 8
         for (int k = 0; k < j; ++k) lij -= L[i][k] * v[k];
         L[i][j] = lij / dj;

@@ -49,11 +49,19 @@
 //     range of the precision.
 // The guard leaves L untouched, bit for bit, while neither applies.
 // Nothing is allocated per step.
+//
+// Fixed-size path (issue 14): configured with fixed_size = true and
+// np <= kMaxFixedParameters, the step runs as update_fixed<np>, unrolled
+// scalar code on a local copy of L written back once (as
+// ParameterUpdate::update_fixed in adaptation.hpp): the same rotations,
+// guard and triangular solves in the same order as the dynamic step. The
+// dynamic code stays for larger np and as the reference.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "ctid/adaptation/adaptation.hpp"
 #include "ctid/adaptation/covariance_guard.hpp"
@@ -64,9 +72,12 @@ template <typename S>
 class LmrUpdate {
  public:
   // np parameters, forgetting factor lambda, Gamma (symmetric positive
-  // semi-definite, see validate_covariance), the guard on R on or off.
+  // semi-definite, see validate_covariance), the guard on R on or off;
+  // fixed_size: the compile-time-size step when np <= kMaxFixedParameters
+  // (chosen here, once).
   void configure(Eigen::Index np, S lambda, const Matrix<S>& gamma,
-                 bool guard = true) {
+                 bool guard = true, bool fixed_size = false) {
+    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
     lambda_ = lambda;
     sqrt_lambda_ = std::sqrt(lambda);
     guard_ = guard;
@@ -122,6 +133,20 @@ class LmrUpdate {
   // precision), the estimate is kept and failed() turns true.
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    if constexpr (std::is_same_v<Derived, Vector<S>>) {
+      const S* p = phi.derived().data();
+      switch (fixed_np_) {
+        case 1: return update_fixed<1>(p, target);
+        case 2: return update_fixed<2>(p, target);
+        case 3: return update_fixed<3>(p, target);
+        case 4: return update_fixed<4>(p, target);
+        case 5: return update_fixed<5>(p, target);
+        case 6: return update_fixed<6>(p, target);
+        case 7: return update_fixed<7>(p, target);
+        case 8: return update_fixed<8>(p, target);
+        default: break;
+      }
+    }
     const S error = target - phi.dot(theta_);
     last_ = kGuardNone;
     if (failed_) return error;
@@ -175,8 +200,148 @@ class LmrUpdate {
   // What the guard did to R at the last update (CovarianceGuardAction:
   // kGuardRepair for a raised pivot or diagonal, kGuardCeiling).
   int covariance_guard() const { return last_; }
+  // N of the fixed-size step in use, 0 for the dynamic one.
+  int fixed_size() const { return fixed_np_; }
 
  private:
+  // The step above for np = N on l[k][i] = L(i, k) (column-major as L_),
+  // written back once.
+  template <int N>
+  S update_fixed(const S* phi_data, S target) {
+    S phi[N], theta[N], l[N][N], x[N], w[N];
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      phi[i] = phi_data[i];
+      theta[i] = theta_.data()[i];
+    }
+    S prediction = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    const S error = target - prediction;
+    last_ = kGuardNone;
+    if (failed_) return error;
+    const S* L_in = L_.data();
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) l[k][i] = L_in[k * N + i];
+    }
+    if (lambda_ != S(1)) {
+      const S sqrt_lambda = sqrt_lambda_;
+#pragma GCC unroll 8
+      for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) l[k][i] *= sqrt_lambda;
+      }
+    }
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) x[i] = phi[i];
+    rank_one_update_fixed<N>(l, x, 0);
+    const S* g = gamma_root_.data();
+    for (Eigen::Index c = 0; c < gamma_root_.cols(); ++c) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) x[i] = g[c * N + i];
+      rank_one_update_fixed<N>(l, x, 0);
+    }
+    bool finite = true;
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) finite = finite & std::isfinite(l[k][i]);
+    }
+    S* L_out = L_.data();
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) L_out[k * N + i] = l[k][i];
+    }
+    if (!finite) {
+      failed_ = true;
+      return error;
+    }
+    if (guard_) {
+      last_ = guard_fixed<N>(l, x);
+      if (last_ != kGuardNone) {
+#pragma GCC unroll 8
+        for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+          for (int i = 0; i < N; ++i) L_out[k * N + i] = l[k][i];
+        }
+      }
+    }
+    // R^-1 phi: L w = phi forward, then L^T w = w backward.
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) w[i] = phi[i];
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+      w[k] /= l[k][k];
+#pragma GCC unroll 8
+      for (int i = k + 1; i < N; ++i) w[i] -= w[k] * l[k][i];
+    }
+#pragma GCC unroll 8
+    for (int k = N - 1; k >= 0; --k) {
+      S sum = w[k];
+#pragma GCC unroll 8
+      for (int i = k + 1; i < N; ++i) sum -= l[k][i] * w[i];
+      w[k] = sum / l[k][k];
+    }
+    S* theta_data = theta_.data();
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) theta_data[i] = theta[i] + w[i] * error;
+    return error;
+  }
+
+  // rank_one_update() on l and x.
+  template <int N>
+  static void rank_one_update_fixed(S (&l)[N][N], S (&x)[N], int first) {
+#pragma GCC unroll 8
+    for (int k = first; k < N; ++k) {
+      const S xk = x[k];
+      if (xk == 0) continue;
+      const S lkk = l[k][k];
+      const S r = std::sqrt(lkk * lkk + xk * xk);
+      const S c = lkk / r, s = xk / r;
+      l[k][k] = r;
+#pragma GCC unroll 8
+      for (int i = k + 1; i < N; ++i) {
+        const S lik = l[k][i];
+        l[k][i] = c * lik + s * x[i];
+        x[i] = c * x[i] - s * lik;
+      }
+    }
+  }
+
+  // guard() on l, x as workspace.
+  template <int N>
+  int guard_fixed(S (&l)[N][N], S (&x)[N]) const {
+    int action = kGuardNone;
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+      S rjj = 0;
+#pragma GCC unroll 8
+      for (int k = 0; k <= j; ++k) rjj += l[k][j] * l[k][j];
+      if (rjj > ceiling_) {
+        const S e = std::sqrt(ceiling_ / rjj);
+        for (int k = 0; k <= j; ++k) l[k][j] *= e;
+        rjj = 0;
+        for (int k = 0; k <= j; ++k) rjj += l[k][j] * l[k][j];
+        action |= kGuardCeiling;
+      }
+      const S pivot = l[j][j] * l[j][j];
+      S delta = 0;
+      if (!(pivot > rho_ * rjj)) {
+        delta = (10 * rho_ * rjj - pivot) / (1 - 10 * rho_);
+      }
+      if (rjj < floor_) delta = std::max(delta, floor_ - rjj);
+      if (!(delta > 0)) continue;
+      for (int i = 0; i < N; ++i) x[i] = 0;
+      x[j] = std::sqrt(delta);
+      rank_one_update_fixed<N>(l, x, j);
+      action |= kGuardRepair;
+    }
+    return action;
+  }
+
   // L L^T + x x^T, x_ (zero above `first`) consumed: Givens rotations of
   // column k of L against x that zero x_k (LINPACK's dchud), |c|, |s| <= 1
   // whatever the size of x_k against L_kk.
@@ -232,6 +397,7 @@ class LmrUpdate {
   Vector<S> work_, x_;
   bool failed_ = false;
   int last_ = kGuardNone;
+  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
 };
 
 }  // namespace ctid

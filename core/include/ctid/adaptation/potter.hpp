@@ -33,10 +33,19 @@
 // never Q): for the handful of parameters of these models a generic QR
 // costs several times the rest of the step (bench/ch3_bench.cpp). No
 // allocation happens in update().
+//
+// Fixed-size path (issue 14): configured with fixed_size = true and
+// np <= kMaxFixedParameters, the step runs as update_fixed<np>, unrolled
+// scalar code on local copies of S^T, theta and phi written back once (as
+// ParameterUpdate::update_fixed in adaptation.hpp): the same operations in
+// the same order as the dynamic step, the time update's Householder sweep
+// included (on a local [S^T; Qn^(T/2)] of N + rank rows). The dynamic code
+// stays for larger np and as the reference.
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "ctid/adaptation/adaptation.hpp"
@@ -87,14 +96,18 @@ class PotterUpdate {
       Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
   PotterUpdate() = default;
-  PotterUpdate(Eigen::Index np, Adaptation<S> adaptation) {
-    configure(np, std::move(adaptation));
+  PotterUpdate(Eigen::Index np, Adaptation<S> adaptation,
+               bool fixed_size = false) {
+    configure(np, std::move(adaptation), fixed_size);
   }
 
   // A default-constructed KalmanAdaptation (empty Qn) means Qn = 0. Qn must
   // otherwise be np-by-np and positive semi-definite (validate_covariance);
-  // a forgetting factor must lie in (0, 1].
-  void configure(Eigen::Index np, Adaptation<S> adaptation) {
+  // a forgetting factor must lie in (0, 1]. fixed_size: the compile-time-size
+  // step when np <= kMaxFixedParameters (chosen here, once).
+  void configure(Eigen::Index np, Adaptation<S> adaptation,
+                 bool fixed_size = false) {
+    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
     lambda_ = 1;
     Matrix<S> qn;
     if (const auto* ff =
@@ -115,6 +128,7 @@ class PotterUpdate {
     f_ = Vector<S>::Zero(np);
     s_f_ = Vector<S>::Zero(np);
     gain_ = Vector<S>::Zero(np);
+    shrink_ = lambda_ != S(1) ? S(1) / std::sqrt(lambda_) : S(1);
   }
 
   // S(t_0) is the Cholesky factor of P0; a P0 that is only semi-definite
@@ -141,6 +155,20 @@ class PotterUpdate {
   // target - phi^T theta(t_k|t_(k-1)), eq. (3.73d).
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
+    if constexpr (std::is_same_v<Derived, Vector<S>>) {
+      const S* p = phi.derived().data();
+      switch (fixed_np_) {
+        case 1: return update_fixed<1>(p, target);
+        case 2: return update_fixed<2>(p, target);
+        case 3: return update_fixed<3>(p, target);
+        case 4: return update_fixed<4>(p, target);
+        case 5: return update_fixed<5>(p, target);
+        case 6: return update_fixed<6>(p, target);
+        case 7: return update_fixed<7>(p, target);
+        case 8: return update_fixed<8>(p, target);
+        default: break;
+      }
+    }
     predict();
     const S error = target - phi.dot(theta_);
     // The rows of the top block of stacked_ are the columns of S; plain
@@ -193,8 +221,127 @@ class PotterUpdate {
     return P_;
   }
   const Adaptation<S>& adaptation() const { return adaptation_; }
+  // N of the fixed-size step in use, 0 for the dynamic one.
+  int fixed_size() const { return fixed_np_; }
 
  private:
+  // The step above for np = N: st[k][i] = S(i, k) (the rows of stacked_'s
+  // top block), the time update's sweep on a local copy of stacked_ with
+  // the rows of Qn^(T/2) below, every sum in the dynamic step's order.
+  template <int N>
+  S update_fixed(const S* phi_data, S target) {
+    S phi[N], theta[N], st[N][N], f[N], sf[N], gain[N];
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      phi[i] = phi_data[i];
+      theta[i] = theta_.data()[i];
+    }
+    const S* top = stacked_.data();
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) st[k][i] = top[k * N + i];
+    }
+    const int r = int(qn_root_t_.rows());
+    if (r > 0) {  // eq. (3.73b)
+      S a[2 * N][N];
+#pragma GCC unroll 8
+      for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) a[k][i] = st[k][i];
+      }
+      const S* q = qn_root_t_.data();  // column-major, r-by-N
+      for (int k = 0; k < r; ++k) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) a[N + k][i] = q[i * r + k];
+      }
+      triangularize_fixed<N>(a, N + r);
+#pragma GCC unroll 8
+      for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) st[k][i] = i < k ? S(0) : a[k][i];
+      }
+    }
+    S prediction = 0;
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    const S error = target - prediction;
+    S ff = 0;
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+      S sum = 0;
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) sum += st[k][i] * phi[i];
+      f[k] = sum;
+      ff += sum * sum;
+    }
+    const S lambda = lambda_;
+    const S beta = lambda + ff;
+    const S alpha = beta + std::sqrt(lambda * beta);
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) sf[i] = 0;
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) sf[i] += f[k] * st[k][i];
+    }
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      gain[i] = sf[i] / beta;
+      theta[i] += gain[i] * error;
+    }
+    const S shrink = shrink_;
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+      const S c = f[k] / alpha;
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) st[k][i] -= c * sf[i];
+      if (shrink != S(1)) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) st[k][i] *= shrink;
+      }
+    }
+    S* out = stacked_.data();
+#pragma GCC unroll 8
+    for (int k = 0; k < N; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) out[k * N + i] = st[k][i];
+    }
+    S* theta_data = theta_.data();
+    S* gain_data = gain_.data();
+#pragma GCC unroll 8
+    for (int i = 0; i < N; ++i) {
+      theta_data[i] = theta[i];
+      gain_data[i] = gain[i];
+    }
+    innovation_scale_ = beta;
+    return error;
+  }
+
+  // triangularize() on the first m rows of a (m <= 2 N), N columns.
+  template <int N>
+  static void triangularize_fixed(S (&a)[2 * N][N], int m) {
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+      S norm2 = 0;
+      for (int i = j; i < m; ++i) norm2 += a[i][j] * a[i][j];
+      if (!(norm2 > 0)) continue;
+      const S norm = std::sqrt(norm2);
+      const S x = a[j][j];
+      const S diagonal = x > 0 ? -norm : norm;
+      a[j][j] = x - diagonal;
+      const S v_norm2 = a[j][j] * a[j][j] + (norm2 - x * x);
+#pragma GCC unroll 8
+      for (int k = j + 1; k < N; ++k) {
+        S dot = 0;
+        for (int i = j; i < m; ++i) dot += a[i][j] * a[i][k];
+        const S f = 2 * dot / v_norm2;
+        for (int i = j; i < m; ++i) a[i][k] -= f * a[i][j];
+      }
+      a[j][j] = diagonal;
+    }
+  }
+
   // S S^T + Qn = [S^T; Qn^(T/2)]^T [S^T; Qn^(T/2)] = R^T R, eq. (3.73b):
   // the orthogonal T is a product of Householder reflections, applied in
   // place; R is the new S^T (upper triangular).
@@ -247,6 +394,8 @@ class PotterUpdate {
   Vector<S> f_;
   Vector<S> s_f_;
   Vector<S> gain_;
+  S shrink_ = 1;      // 1 / sqrt(lambda)
+  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
 };
 
 }  // namespace ctid

@@ -483,8 +483,9 @@ class RecursiveIv {
 
   RecursiveIvConfig<S> config_;
   SvfRegressor<S> ls_regressor_;
-  LeastSquaresUpdate<S> update_;
-  LeastSquaresUpdate<S> windup_monitor_;
+  // Standard form only (eqs. 2.29/2.30 and the RLSSVF start, 1.57/1.59).
+  LeastSquaresUpdate<S, false> update_;
+  LeastSquaresUpdate<S, false> windup_monitor_;
   Eigen::SelfAdjointEigenSolver<Matrix<S>> eigen_;
   S monitor_kappa_ = 1;
   bool armed_ = false, excited_ = true;

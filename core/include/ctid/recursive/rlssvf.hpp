@@ -151,18 +151,22 @@ Status validate(const RlsSvfConfig<S>& config) {
 // The parameter update of the least-squares estimators in one of the three
 // forms, with optional signal scaling: update() takes the unscaled phi_f,
 // theta() and P() are unscaled, kappa() is kappa_2 of the matrix actually
-// propagated (P_s, S_s S_s^T or R_s).
-template <typename S>
+// propagated (P_s, S_s S_s^T or R_s). SquareRootForms = false (the
+// recursive IV estimators, whose configuration has no update form) leaves
+// the Potter and LMR steps out of update(), so that their fixed-size code
+// is not compiled where it cannot run; configure() then takes kStandard
+// only.
+template <typename S, bool SquareRootForms = true>
 class LeastSquaresUpdate {
  public:
   void configure(Eigen::Index n, UpdateForm form,
                  const Adaptation<S>& adaptation, const Matrix<S>& gamma,
                  const Vector<S>& scaling, bool covariance_guard = true,
                  bool fixed_size = false) {
-    form_ = form;
+    form_ = SquareRootForms ? form : UpdateForm::kStandard;
     m_ = scaling;
     const bool scaled = m_.size() != 0;
-    plain_ = form == UpdateForm::kStandard && !scaled;
+    plain_ = form_ == UpdateForm::kStandard && !scaled;
     const Adaptation<S> a =
         scaled ? scaled_adaptation(adaptation, m_) : adaptation;
     switch (form_) {
@@ -170,14 +174,14 @@ class LeastSquaresUpdate {
         standard_.configure(n, a, covariance_guard, fixed_size);
         break;
       case UpdateForm::kPotter:
-        potter_.configure(n, a);
+        potter_.configure(n, a, fixed_size);
         break;
       case UpdateForm::kLevenbergMarquardt:
         lmr_.configure(
             n, std::get<ForgettingFactorAdaptation<S>>(a).lambda(),
             scaled ? Matrix<S>(m_.asDiagonal() * gamma * m_.asDiagonal())
                    : gamma,
-            covariance_guard);
+            covariance_guard, fixed_size);
         break;
     }
     phi_s_ = Vector<S>::Zero(n);
@@ -216,10 +220,10 @@ class LeastSquaresUpdate {
         error = standard_.update(p, target);
         break;
       case UpdateForm::kPotter:
-        error = potter_.update(p, target);
+        if constexpr (SquareRootForms) error = potter_.update(p, target);
         break;
       case UpdateForm::kLevenbergMarquardt:
-        error = lmr_.update(p, target);
+        if constexpr (SquareRootForms) error = lmr_.update(p, target);
         break;
     }
     refresh_theta();
@@ -231,6 +235,12 @@ class LeastSquaresUpdate {
   template <typename D1, typename D2>
   S update(const Eigen::MatrixBase<D1>& phi, const Eigen::MatrixBase<D2>& zeta,
            S target) {
+    // Without scaling, phi and zeta as they are (the fixed-size IV step of
+    // ParameterUpdate takes their storage); theta() is then standard_'s.
+    if constexpr (std::is_same_v<D1, Vector<S>> &&
+                  std::is_same_v<D2, Vector<S>>) {
+      if (plain_) return standard_.update(phi, zeta, target);
+    }
     const Vector<S>& p = scaled_regressor(phi, phi_s_);
     const Vector<S>& z = scaled_regressor(zeta, zeta_s_);
     const S error = standard_.update(p, z, target);
@@ -298,6 +308,17 @@ class LeastSquaresUpdate {
   }
   bool failed() const {
     return form_ == UpdateForm::kLevenbergMarquardt && lmr_.failed();
+  }
+  // N of the fixed-size step of the form in use, 0 for the dynamic one.
+  int fixed_size() const {
+    switch (form_) {
+      case UpdateForm::kPotter:
+        return potter_.fixed_size();
+      case UpdateForm::kLevenbergMarquardt:
+        return lmr_.fixed_size();
+      default:
+        return standard_.fixed_size();
+    }
   }
 
  private:
