@@ -273,9 +273,12 @@ void companion_propagate(const S* phi, const S* gamma, S* z, S v) {
 //     first state of the ODE at the start of the interval), so that
 //     zh_i(tau) = sum_(j=0..q) g_(i+j) tau^j / j!.
 // The degree q is the first with theta^(q+1)/(q+1)! below a quarter of the
-// unit roundoff (the criterion of companion_zoh above), theta the 1-norm of
-// tau [A e_n] in the scaled coordinates (at most 2 tau); when theta > 1 the
-// interval is split into 2^s equal steps (at most kMaxSubsteps).
+// unit roundoff (the criterion of companion_zoh above), theta = 2 tau, a
+// bound of the 1-norm of tau [A e_n] in the scaled coordinates (its column
+// sums are |a_k| + 1 < 2 and the input column's 1); when theta > 1 the
+// interval is split into 2^s equal steps (at most kMaxSubsteps). These
+// depend on tau only and are kept from one call to the next while tau is
+// the same.
 // prepare() returns false where this does not apply (a coefficient or h not
 // finite, rho outside 2^(+-kMaxScaleExponent / n), more substeps; n = 1:
 // |x| > 32): the caller then takes the matrix kernels, which behave as
@@ -313,14 +316,9 @@ class CompanionZohAdvance {
       const S rho = detail::power_of_two<S>(p);
       const S inv_rho = detail::power_of_two<S>(-p);
       S power = 1;
-      S norm = 1;  // the input column's 1
       for (int k = 1; k <= N; ++k) {
         power *= inv_rho;  // rho^-k, exact
-        const S a = d[k - 1] * power;
-        minus_a_[k - 1] = -a;
-        // Column n-k of the scaled companion matrix: |a_k|, plus the
-        // superdiagonal's 1 except in the first column (k = n).
-        norm = std::max(norm, std::abs(a) + (k < N ? S(1) : S(0)));
+        minus_a_[k - 1] = -(d[k - 1] * power);
       }
       input_scale_ = power;  // rho^-n
       S scale = 1;
@@ -331,22 +329,27 @@ class CompanionZohAdvance {
         scale *= rho;
         inverse *= inv_rho;
       }
-      S tau = h * rho;
-      S theta = tau * norm;
-      substeps_ = 1;
-      while (theta > S(1)) {
-        if (substeps_ == kMaxSubsteps) return false;
-        substeps_ *= 2;
-        tau *= S(0.5);
-        theta *= S(0.5);
-      }
-      const int q = detail::taylor_degree<S>(theta);
-      terms_ = q;
-      S c = 1;
-      coefficient_[0] = 1;
-      for (int j = 1; j <= q; ++j) {
-        c *= tau * detail::reciprocal<S>(j);
-        coefficient_[j] = c;
+      // The substeps, the degree and tau^j/j! depend on tau = rho h only
+      // (theta bounded by 2 tau): kept while tau stays the same (rho is a
+      // power of two, so it changes only when a coefficient crosses one).
+      const S tau = h * rho;
+      if (!(tau == tau_)) {
+        S step = tau;
+        int substeps = 1;
+        while (2 * step > S(1)) {
+          if (substeps == kMaxSubsteps) return false;
+          substeps *= 2;
+          step *= S(0.5);
+        }
+        tau_ = tau;
+        substeps_ = substeps;
+        terms_ = detail::taylor_degree<S>(2 * step);
+        S c = 1;
+        coefficient_[0] = 1;
+        for (int j = 1; j <= terms_; ++j) {
+          c *= step * detail::reciprocal<S>(j);
+          coefficient_[j] = c;
+        }
       }
       return true;
     }
@@ -410,6 +413,7 @@ class CompanionZohAdvance {
   S inv_scale_[N] = {};
   S input_scale_ = 1;
   S coefficient_[kMaxTerms + 1] = {};
+  S tau_ = std::numeric_limits<S>::quiet_NaN();  // of the cached terms
   int terms_ = 0;
   int substeps_ = 1;
 };

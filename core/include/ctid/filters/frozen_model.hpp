@@ -98,7 +98,7 @@ class FrozenModel {
   template <int N>
   S step_fixed(const S* u, S h) {
     const S* d = theta_.data();
-    CompanionZohAdvance<N, S> series;
+    CompanionZohAdvance<N, S>& series = series_kernel<N>();
     const bool use_series = !first_ && series.prepare(d, h);
     if (!first_ && !use_series) {
       disc_.set_denominator(theta_.head(N));
@@ -131,6 +131,19 @@ class FrozenModel {
     return x;
   }
 
+  template <int N>
+  CompanionZohAdvance<N, S>& series_kernel() {
+    if constexpr (N == 1) {
+      return series1_;
+    } else if constexpr (N == 2) {
+      return series2_;
+    } else if constexpr (N == 3) {
+      return series3_;
+    } else {
+      return series4_;
+    }
+  }
+
   ModelOrders orders_;
   int n_ = 0;
   bool series_ = false;
@@ -142,6 +155,11 @@ class FrozenModel {
   std::vector<DelayLine<S>> delays_;
   FilterDiscretization<S> disc_;  // the samples the series does not take
   AuxiliaryModel<S> general_;     // other rules, orders, kDynamic
+  // The series of each order (they keep the terms of the last interval).
+  CompanionZohAdvance<1, S> series1_;
+  CompanionZohAdvance<2, S> series2_;
+  CompanionZohAdvance<3, S> series3_;
+  CompanionZohAdvance<4, S> series4_;
 };
 
 }  // namespace ctid
