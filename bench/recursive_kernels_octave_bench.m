@@ -15,7 +15,11 @@
 ## auxiliary model refreshed every sample), and thm = rlssvf (data,
 ## [na 1 0], "lambda_svf", 3.2, "adm", "kf", "adg", 1e-4*eye (na+1)) and
 ## [thm, yh] = rlssvf (...) on 1e6 samples; best of 3, CPU time (cputime),
-## as the core benchmarks. The dynamic path is
+## as the core benchmarks. The RLSSVF table prints the ratio of the time of
+## [thm, yh] to that of thm alone in the core (run_rlssvf) and end to end
+## (the two front-end calls timed in turn), and the largest difference of
+## YH between the fixed-size path (the series of frozen_model.hpp) and the
+## dynamic reference. Without riv_mex the RSRIVC table is skipped. The dynamic path is
 ## reached through the gateways' option kernels = "dynamic" (the front-ends
 ## do not expose it), called from octave/private with the options struct
 ## the front-end builds; "gateway fixed" is the same call with the default.

@@ -5,8 +5,8 @@
 ## companion_kernels.hpp) against the gateway's dynamic-size reference
 ## (option kernels = "dynamic": a matrix exponential per sample) and against
 ## a plain-Octave simulation of the frozen models from THM (expm of the
-## augmented matrix per sample), na = 1..4, one and two inputs (one
-## delayed), on a record with a gap (irregular intervals).  Errors on the
+## augmented matrix per sample), na = 1..4: one input on a record with a
+## gap (irregular intervals), two inputs (one delayed) uniformly sampled.  Errors on the
 ## first failure:
 ## @example
 ## octave --no-gui -q --eval "addpath octave tests/octave; test_frozen_model_kernels"
@@ -28,16 +28,21 @@ function test_frozen_model_kernels ()
   for na = 1:4
     for nu = 1:2
       u = 2 * mod (cumsum (rand (N, nu) < 0.1), 2) - 1;
-      y = filter (0.1, [1 -0.9], u(:, 1)) + 0.02 * randn (N, 1);
-      if (nu == 2)
-        y += filter (0.05, [1 -0.8], [0; 0; u(1:end-2, 2)]);
-      endif
       t = Ts * (1:N).';
-      t(800:end) += 0.35;  # a gap: one interval of 0.45 s
       nb = [na, 1](1:nu);
       nk = [0, 2](1:nu);
-      data = iddata (y, u, Ts, "InterSample", "zoh");
-      p = contsid_rlssvf_args ("rlssvf", y, u, t, [na nb nk],
+      if (nu == 1)
+        t(800:end) += 0.35;  # a gap: one interval of 0.45 s
+        time_arg = t;
+      else
+        time_arg = Ts;  # (a delay needs uniform sampling)
+      endif
+      ## the true system: A(p) y = a_na u_1 (+ 0.5 a_na u_2 delayed)
+      theta = [A{na}, zeros(1, na - 1), A{na}, 0.5 * A{na}];
+      theta = theta(1:na + sum (nb));
+      y = frozen_model_output (repmat (theta, N, 1), u, t, na, nb, nk);
+      y += 0.02 * randn (N, 1);
+      p = contsid_rlssvf_args ("rlssvf", y, u, time_arg, [na nb nk],
                                "lambda_svf", 3, "adm", "kf",
                                "adg", 1e-4 * eye (na + sum (nb)));
       opts = p.opts;
@@ -46,15 +51,23 @@ function test_frozen_model_kernels ()
       opts.kernels = "dynamic";
       [thm_d, yh_d] = rlssvf_mex ("rlssvf", p.data{:}, opts);
       what = sprintf ("na = %d, nu = %d", na, nu);
-      assert (thm, thm_d, 1e-12 * max (abs (thm_d(:))));
-      err = max (abs (yh - yh_d)) / max (abs (yh_d));
-      assert (err <= 1e-12, "%s: yh fixed vs dynamic %.1e", what, err);
-      ## plain Octave: the frozen model of each sample over its interval
+      ## THM on the two paths (the SVF kernels, not this test's subject):
+      ## after the settling window, as tests/core/companion_kernels_test.cpp
+      ## (there P0 = 1e4 I amplifies the rounding of the regressors)
+      assert (thm(201:end, :), thm_d(201:end, :),
+              1e-12 * max (abs (thm_d(:))));
+      ## YH against plain Octave, each path on its own THM, every sample
       yo = frozen_model_output (thm, u, t, na, nb, nk);
-      err = max (abs (yh - yo)) / max (abs (yo));
-      assert (err <= 1e-10, "%s: yh vs plain Octave %.1e", what, err);
-      printf ("%s: |yh - dynamic| %.1e, |yh - plain Octave| %.1e\n", what,
-              max (abs (yh - yh_d)) / max (abs (yh_d)), err);
+      e_plain = max (abs (yh - yo)) / max (abs (yo));
+      assert (e_plain <= 1e-12, "%s: yh vs plain Octave %.1e", what, e_plain);
+      yo_d = frozen_model_output (thm_d, u, t, na, nb, nk);
+      e_plain_d = max (abs (yh_d - yo_d)) / max (abs (yo_d));
+      ## YH fixed vs dynamic once the THM agree (the frozen model forgets
+      ## the settling window's differences as fast as its slowest pole)
+      e_dyn = max (abs (yh(401:end) - yh_d(401:end))) / max (abs (yh_d));
+      assert (e_dyn <= 1e-12, "%s: yh fixed vs dynamic %.1e", what, e_dyn);
+      printf (["%s: |yh - plain Octave| %.1e (dynamic path: %.1e), ", ...
+               "|yh - dynamic| %.1e\n"], what, e_plain, e_plain_d, e_dyn);
     endfor
   endfor
 endfunction

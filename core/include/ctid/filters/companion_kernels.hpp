@@ -27,7 +27,10 @@
 // FilterDiscretization (svf.hpp) picks these kernels once, when configured
 // with FilterKernels::kFixedSize and an order up to kMaxFixedOrder; the
 // dynamic-size code stays for larger orders and as the reference
-// (FilterKernels::kDynamic).
+// (FilterKernels::kDynamic). The frozen model of YH (frozen_model.hpp),
+// whose Phi would change at every sample and be applied to one state,
+// advances the state by CompanionZohAdvance below instead (the action of
+// the exponential on the state, O(n) per Taylor term).
 #pragma once
 
 #include <algorithm>
