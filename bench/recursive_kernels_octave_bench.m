@@ -128,11 +128,11 @@ if (! exist (fullfile (private_dir, "riv_mex.mex"), "file"))
   na_iv = [];
 else
   na_iv = 1:4;
+  printf ("\nRSRIVC-KF, 1e5 samples, per-sample refresh (M samples/s)\n");
+  printf ("%3s %9s %9s %9s %9s %9s %9s %9s %9s\n", "na", "core fix",
+          "core dyn", "run fix", "run dyn", "front", "gw fix", "gw dyn",
+          "plain");
 endif
-printf ("\nRSRIVC-KF, 1e5 samples, per-sample refresh (M samples/s)\n");
-printf ("%3s %9s %9s %9s %9s %9s %9s %9s %9s\n", "na", "core fix",
-        "core dyn", "run fix", "run dyn", "front", "gw fix", "gw dyn",
-        "plain");
 for na = na_iv
   a = A{na};
   N = 1e5;
