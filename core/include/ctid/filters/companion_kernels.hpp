@@ -268,8 +268,9 @@ void companion_propagate(const S* phi, const S* gamma, S* z, S v) {
 //     floating point), turns F into rho times the companion matrix of
 //     a_k = d_k / rho^k, k = 1..n, and z, v into zh_i = z_i / rho^i,
 //     vh = v / rho^n; p is the smallest integer with |a_k| < 1 for every k
-//     (so that the 1-norm is of the order of the largest pole, not of
-//     d_n h: no squarings where the matrix kernel above needs them);
+//     and rho h >= 1/4 (so that the 1-norm is of the order of the largest
+//     pole or 1/h, not of d_n h: no squarings where the matrix kernel
+//     above needs them);
 //   - with tau = rho h, the i-th entry of (tau M)^j [zh; vh] / j! is
 //     g_(i+j) tau^j / j!, where g_0..g_(n-1) = zh, g_n = vh - sum_k a_k
 //     g_(n-k) and g_j = -sum_k a_k g_(j-k) beyond (the derivatives of the
@@ -293,7 +294,7 @@ class CompanionZohAdvance {
   static constexpr int kMaxSubsteps = 8;
   // The scaling factors rho^(+-i), i <= n, stay within 2^(+-this).
   static constexpr int kMaxScaleExponent =
-      std::numeric_limits<S>::max_exponent / 8;
+      std::numeric_limits<S>::max_exponent / 4;
 
   // Prepares the interval h of D(p) = p^n + d1 p^(n-1) + .. + dn.
   bool prepare(const S* d, S h) {
@@ -314,6 +315,15 @@ class CompanionZohAdvance {
         if (!detail::exponent_bound(d[k - 1], e)) return false;
         const int pk = e >= 0 ? (e + k - 1) / k : -((-e) / k);
         p = std::max(p, pk);
+      }
+      // and rho h >= 1/4: the series' a priori bound holds in the scaled
+      // 1-norm, which mixes the components; with rho h far below 1 the
+      // unscaling (rho^i) would magnify what it neglects (found with
+      // d = 0, where the coefficients give no lower bound for rho).
+      if (h != S(0)) {
+        int eh = 0;
+        detail::exponent_bound(h, eh);  // h < 2^eh, h >= 2^(eh - 1)
+        p = std::max(p, -eh - 1);
       }
       if (p * N > kMaxScaleExponent) return false;
       const S rho = detail::power_of_two<S>(p);
