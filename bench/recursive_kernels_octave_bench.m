@@ -19,9 +19,9 @@
 ## [thm, yh] to that of thm alone in the core (run_rlssvf) and end to end
 ## (the two front-end calls timed in turn), and the largest difference of
 ## YH between the fixed-size path (the series of frozen_model.hpp) and the
-## dynamic reference. Without riv_mex the RSRIVC table is skipped. The dynamic path is
-## reached through the gateways' option kernels = "dynamic" (the front-ends
-## do not expose it), called from octave/private with the options struct
+## dynamic reference. Without riv_mex the RSRIVC table is skipped.
+## The dynamic path is reached through the gateways' option
+## kernels = "dynamic" (the front-ends do not expose it), called from octave/private with the options struct
 ## the front-end builds; "gateway fixed" is the same call with the default.
 ## Data: a random binary input (switching with probability 0.1), the exact
 ## ZOH response of b0/A(p) (unit static gain; A as in the core benchmarks),
@@ -173,7 +173,8 @@ if (! exist (fullfile (private_dir, "rlssvf_mex.mex"), "file"))
   return;
 endif
 printf ("\nRLSSVF-KF, 1e6 samples (M samples/s); +yh: [thm, yh] = rlssvf\n");
-printf (["ratio: time of [thm, yh] over time of thm alone (core: run_rlssvf;", ...
+printf (["ratio: time of [thm, yh] over time of thm alone ", ...
+         "(core: run_rlssvf;", ...
          " front: the Octave\nfront-end, the two timed in turn, best of %d", ...
          " each); |dyn|: max |yh fixed - yh dynamic|\nover max |yh|", ...
          " (gateway option kernels)\n"], runs);

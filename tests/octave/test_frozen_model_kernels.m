@@ -6,10 +6,11 @@
 ## (option kernels = "dynamic": a matrix exponential per sample) and against
 ## a plain-Octave simulation of the frozen models from THM (expm of the
 ## augmented matrix per sample), na = 1..4: one input on a record with a
-## gap (irregular intervals), two inputs (one delayed) uniformly sampled.  Errors on the
-## first failure:
+## gap (irregular intervals), two inputs (one delayed) uniformly sampled.
+## Errors on the first failure:
 ## @example
-## octave --no-gui -q --eval "addpath octave tests/octave; test_frozen_model_kernels"
+## octave --no-gui -q --eval \
+##   "addpath octave tests/octave; test_frozen_model_kernels"
 ## @end example
 ## The private folder (the gateway) is put on the path for the duration of
 ## the test.

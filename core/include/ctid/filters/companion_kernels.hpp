@@ -268,16 +268,15 @@ void companion_propagate(const S* phi, const S* gamma, S* z, S v) {
 //     floating point), turns F into rho times the companion matrix of
 //     a_k = d_k / rho^k, k = 1..n, and z, v into zh_i = z_i / rho^i,
 //     vh = v / rho^n; p is the smallest integer with |a_k| < 1 for every k
-//     and rho h >= 1/4 (so that the 1-norm is of the order of the largest
-//     pole or 1/h, not of d_n h: no squarings where the matrix kernel
-//     above needs them);
+//     (so that the 1-norm is of the order of the largest pole, not of
+//     d_n h: no squarings where the matrix kernel above needs them);
 //   - with tau = rho h, the i-th entry of (tau M)^j [zh; vh] / j! is
 //     g_(i+j) tau^j / j!, where g_0..g_(n-1) = zh, g_n = vh - sum_k a_k
 //     g_(n-k) and g_j = -sum_k a_k g_(j-k) beyond (the derivatives of the
 //     first state of the ODE at the start of the interval), so that
 //     zh_i(tau) = sum_(j=0..q) g_(i+j) tau^j / j!.
-// The degree q is the first with theta^(q+1)/(q+1)! below a quarter of the
-// unit roundoff (the criterion of companion_zoh above), theta = 2 tau, a
+// The degree q is n plus the first with theta^(q+1)/(q+1)! below a quarter
+// of the unit roundoff (the criterion of companion_zoh above), theta = 2 tau, a
 // bound of the 1-norm of tau [A e_n] in the scaled coordinates (its column
 // sums are |a_k| + 1 < 2 and the input column's 1); when theta > 1 the
 // interval is split into 2^s equal steps (at most kMaxSubsteps). These
@@ -290,7 +289,7 @@ void companion_propagate(const S* phi, const S* gamma, S* z, S v) {
 template <int N, typename S>
 class CompanionZohAdvance {
  public:
-  static constexpr int kMaxTerms = 24;
+  static constexpr int kMaxTerms = 24 + N;
   static constexpr int kMaxSubsteps = 8;
   // The scaling factors rho^(+-i), i <= n, stay within 2^(+-this).
   static constexpr int kMaxScaleExponent =
@@ -315,15 +314,6 @@ class CompanionZohAdvance {
         if (!detail::exponent_bound(d[k - 1], e)) return false;
         const int pk = e >= 0 ? (e + k - 1) / k : -((-e) / k);
         p = std::max(p, pk);
-      }
-      // and rho h >= 1/4: the series' a priori bound holds in the scaled
-      // 1-norm, which mixes the components; with rho h far below 1 the
-      // unscaling (rho^i) would magnify what it neglects (found with
-      // d = 0, where the coefficients give no lower bound for rho).
-      if (h != S(0)) {
-        int eh = 0;
-        detail::exponent_bound(h, eh);  // h < 2^eh, h >= 2^(eh - 1)
-        p = std::max(p, -eh - 1);
       }
       if (p * N > kMaxScaleExponent) return false;
       const S rho = detail::power_of_two<S>(p);
@@ -356,7 +346,14 @@ class CompanionZohAdvance {
         }
         tau_ = tau;
         substeps_ = substeps;
-        terms_ = detail::taylor_degree<S>(2 * step);
+        // n more terms than the criterion asks: it bounds the error in
+        // the scaled 1-norm, which mixes the components, and the unscaling
+        // (rho^i) magnifies what it neglects; the state of component l
+        // (and v) first enters component i at the power l - i (n - i), so
+        // that each of these paths keeps the criterion's degree beyond its
+        // first term (found by the test of the integrator chain d = 0,
+        // where rho is the lower clamp and rho h ~ 1e-7 gave degree 2).
+        terms_ = detail::taylor_degree<S>(2 * step) + N;
         S c = 1;
         coefficient_[0] = 1;
         for (int j = 1; j <= terms_; ++j) {
