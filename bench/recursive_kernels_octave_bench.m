@@ -21,8 +21,9 @@
 ## YH between the fixed-size path (the series of frozen_model.hpp) and the
 ## dynamic reference. Without riv_mex the RSRIVC table is skipped.
 ## The dynamic path is reached through the gateways' option
-## kernels = "dynamic" (the front-ends do not expose it), called from octave/private with the options struct
-## the front-end builds; "gateway fixed" is the same call with the default.
+## kernels = "dynamic" (the front-ends do not expose it), called from
+## octave/private with the options struct the front-end builds; "gateway
+## fixed" is the same call with the default.
 ## Data: a random binary input (switching with probability 0.1), the exact
 ## ZOH response of b0/A(p) (unit static gain; A as in the core benchmarks),
 ## Ts = 0.1 s, output noise 0.05.
