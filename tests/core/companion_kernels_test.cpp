@@ -11,10 +11,12 @@
 #include <cmath>
 #include <complex>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "allocation_counter.hpp"  // replaces operator new: one TU only
 #include "ctid/filters/discretization.hpp"
+#include "ctid/filters/frozen_model.hpp"
 #include "ctid/recursive/recursive_iv.hpp"
 #include "ctid/recursive/rlssvf.hpp"
 #include "test_util.hpp"
@@ -161,6 +163,303 @@ TEST(CompanionKernels, SinglePrecisionAgreesAtFloatRounding) {
       }
     }
   }
+}
+
+// Denominators with the cases the series of CompanionZohAdvance must get
+// right besides random ones: near-repeated poles (a double pole split by
+// 1e-7), a pole near zero (1e-9 times the others), fast and slow poles
+// together (a ratio of 1e4), a pure integrator chain (d = 0) and unstable
+// poles; each scaled by 10^(-2..2).
+std::vector<Eigen::VectorXd> special_denominators(int n, std::mt19937_64& rng) {
+  using C = std::complex<double>;
+  std::uniform_real_distribution<double> scale_exp(-2, 2);
+  std::vector<std::vector<C>> sets;
+  const auto fill = [n](std::vector<C> r) {
+    while (int(r.size()) < n) r.push_back(C(-1.3, 0));
+    r.resize(n);
+    return r;
+  };
+  sets.push_back(fill({C(-1, 0), C(-1 - 1e-7, 0), C(-2, 0), C(-2 + 1e-7, 0)}));
+  sets.push_back(fill({C(-1e-9, 0), C(-1, 0), C(-0.5, 0), C(-3, 0)}));
+  sets.push_back(fill({C(-1e4, 0), C(-1, 0), C(-0.2, 1), C(-0.2, -1)}));
+  sets.push_back(fill({C(0.8, 0), C(-1, 0), C(0.3, 2), C(0.3, -2)}));
+  if (n >= 2) {
+    sets.push_back(fill({C(-0.01, 5), C(-0.01, -5), C(-1, 0), C(-1, 0)}));
+  }
+  std::vector<Eigen::VectorXd> out;
+  for (const auto& roots : sets) {
+    const double scale = std::pow(10.0, scale_exp(rng));
+    std::vector<C> scaled;
+    for (const C& r : roots) scaled.push_back(r * scale);
+    out.push_back(poly_from_roots(scaled));
+  }
+  out.push_back(Eigen::VectorXd::Zero(n));  // p^n: integrators
+  return out;
+}
+
+// One interval of CompanionZohAdvance<N> (n = N) against Phi z + Gamma v
+// with Phi, Gamma from expm([F e_n; 0 0] h) (Eigen's MatrixExponential,
+// the dynamic reference), relative to ||Phi|| ||z|| + ||Gamma|| |v| (the
+// scale of the rounding of the product). Returns -1 when prepare()
+// declines (the caller then takes the matrix kernels).
+template <int N>
+double advance_error(const Eigen::VectorXd& d, double h,
+                     const Eigen::VectorXd& z, double v) {
+  CompanionZohAdvance<N, double> series;
+  if (!series.prepare(d.data(), h)) return -1;
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(N, 1);
+  G(N - 1, 0) = 1;
+  Eigen::MatrixXd Phi, Gamma;
+  zoh_discretize<double>(companion_matrix<double>(d), G, h, Phi, Gamma);
+  if (N == 1) {
+    // n = 1: the exact scalar in long double (Eigen's Pade loses digits
+    // at |d1 h| ~ 8: 1.4e-14 relative where this and a 40-digit mpmath
+    // value agree with the series to 4e-16).
+    const long double x = -static_cast<long double>(d(0)) * h;
+    Phi(0, 0) = double(std::exp(x));
+    Gamma(0, 0) = double(x == 0 ? static_cast<long double>(h)
+                                : h * (std::expm1(x) / x));
+  }
+  const Eigen::VectorXd reference = Phi * z + Gamma.col(0) * v;
+  Eigen::VectorXd next = z;
+  series.advance(next.data(), v);
+  return (next - reference).norm() /
+         (Phi.norm() * z.norm() + Gamma.norm() * std::abs(v));
+}
+
+double advance_error(int n, const Eigen::VectorXd& d, double h,
+                     const Eigen::VectorXd& z, double v) {
+  switch (n) {
+    case 1:
+      return advance_error<1>(d, h, z, v);
+    case 2:
+      return advance_error<2>(d, h, z, v);
+    case 3:
+      return advance_error<3>(d, h, z, v);
+    default:
+      return advance_error<4>(d, h, z, v);
+  }
+}
+
+// The series over random stable and unstable denominators and the special
+// ones above, h ||F||_1 from 1e-4 to 10, states and
+// inputs of random sign and size: at the level of the matrix kernel's own
+// test (1e-14 relative, about 50 unit roundoffs), and taken (prepare()
+// true) for every case up to h |pole| = 1 (the frozen models YH meets).
+TEST(CompanionKernels, ZohAdvanceMatchesTheMatrixExponential) {
+  std::mt19937_64 rng(1414);
+  std::uniform_real_distribution<double> log_hr(-4, 1);
+  std::normal_distribution<double> normal(0, 1);
+  double worst = 0;
+  int declined = 0, total = 0;
+  for (int n = 1; n <= kMaxFixedOrder; ++n) {
+    std::vector<Eigen::VectorXd> denominators;
+    for (int trial = 0; trial < 300; ++trial) {
+      denominators.push_back(random_denominator(n, rng));
+    }
+    for (int rep = 0; rep < 20; ++rep) {
+      for (const auto& d : special_denominators(n, rng)) {
+        denominators.push_back(d);
+      }
+    }
+    for (const Eigen::VectorXd& d : denominators) {
+      Eigen::VectorXd poly(n + 1);
+      poly << 1, d;
+      // h ||F||_1 from 1e-4 to 10, as the matrix kernel's test: beyond,
+      // Eigen's Pade expm (the reference) loses digits on these badly
+      // scaled companion matrices (measured: 1e-11 relative at h ||F||_1
+      // ~ 1e3, where the series agreed with a 40-digit mpmath expm to
+      // 2e-16).
+      const Eigen::MatrixXd F = companion_matrix<double>(d);
+      const double radius = F.eigenvalues().cwiseAbs().maxCoeff();
+      const double norm = F.cwiseAbs().colwise().sum().maxCoeff();
+      const double h = std::pow(10.0, log_hr(rng)) / std::max(norm, 1.0);
+      Eigen::VectorXd z(n);
+      for (int i = 0; i < n; ++i) {
+        z(i) = normal(rng) * std::pow(10.0, 2 * normal(rng));
+      }
+      const double v = normal(rng) * std::pow(10.0, normal(rng));
+      const double e = advance_error(n, d, h, z, v);
+      ++total;
+      if (e < 0) {
+        ++declined;
+        EXPECT_GT(h * radius, 1.0)
+            << "declined: n = " << n << ", h = " << h << ", d = "
+            << d.transpose();
+        continue;
+      }
+      worst = std::max(worst, e);
+      EXPECT_LE(e, 1e-14) << "n = " << n << ", h = " << h
+                          << ", d = " << d.transpose()
+                          << ", z = " << z.transpose() << ", v = " << v;
+    }
+  }
+  std::printf("series: largest relative difference to expm %.2e, %d of %d "
+              "intervals declined (matrix kernels)\n",
+              worst, declined, total);
+}
+
+// Where the series declines, so that the matrix kernels keep their
+// behaviour: a coefficient or h not finite, coefficients beyond the
+// scaling range, an interval of more than kMaxSubsteps unit steps; n = 1:
+// |d1 h| > 32. It takes h = 0 (Phi = I, Gamma = 0).
+TEST(CompanionKernels, ZohAdvanceDeclinesWhatItCannotTake) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  CompanionZohAdvance<1, double> s1;
+  CompanionZohAdvance<3, double> s3;
+  const double d1_nan[1] = {nan};
+  const double d1_fast[1] = {1e3};
+  const double d1_unstable[1] = {-40};
+  EXPECT_FALSE(s1.prepare(d1_nan, 0.1));
+  EXPECT_FALSE(s1.prepare(d1_fast, 0.1));
+  EXPECT_FALSE(s1.prepare(d1_unstable, 1));
+  const double d3_ok[3] = {2, 3, 1};
+  const double d3_nan[3] = {2, nan, 1};
+  const double d3_inf[3] = {2, 3, -inf};
+  const double d3_huge[3] = {2, 3, 1e300};
+  const double d3_fast[3] = {300, 3e4, 1e6};  // poles at 100: h = 1 is 100
+  EXPECT_TRUE(s3.prepare(d3_ok, 0.1));
+  EXPECT_FALSE(s3.prepare(d3_nan, 0.1));
+  EXPECT_FALSE(s3.prepare(d3_inf, 0.1));
+  EXPECT_FALSE(s3.prepare(d3_huge, 0.1));
+  EXPECT_FALSE(s3.prepare(d3_ok, nan));
+  EXPECT_FALSE(s3.prepare(d3_ok, inf));
+  EXPECT_FALSE(s3.prepare(d3_fast, 1));
+  EXPECT_TRUE(s3.prepare(d3_fast, 1e-3));
+  for (const double d1 : {0.0, 2.0}) {
+    const double d1v[1] = {d1};
+    ASSERT_TRUE(s1.prepare(d1v, 0.0));
+    double z1 = 3;
+    s1.advance(&z1, 5);
+    EXPECT_EQ(z1, 3);
+  }
+  ASSERT_TRUE(s3.prepare(d3_ok, 0.0));
+  double z3[3] = {1, -2, 3};
+  s3.advance(z3, 7);
+  EXPECT_EQ(z3[0], 1);
+  EXPECT_EQ(z3[1], -2);
+  EXPECT_EQ(z3[2], 3);
+}
+
+// Single precision: the float series against the double series on the
+// same (float) data, relative to the norms as in the double test, at 32
+// float roundoffs times the conditioning 1 + h |pole|.
+TEST(CompanionKernels, ZohAdvanceInSingleAgreesAtFloatRounding) {
+  std::mt19937_64 rng(1415);
+  std::uniform_real_distribution<double> log_hr(-3, 0);
+  std::normal_distribution<double> normal(0, 1);
+  const double tol = 32 * std::numeric_limits<float>::epsilon();
+  int compared = 0;
+  const auto check = [&](auto order) {
+    constexpr int N = decltype(order)::value;
+    for (int trial = 0; trial < 300; ++trial) {
+      const Eigen::VectorXf df = random_denominator(N, rng).cast<float>();
+      const Eigen::VectorXd d = df.cast<double>();
+      const double radius =
+          companion_matrix<double>(d).eigenvalues().cwiseAbs().maxCoeff();
+      const float h = float(std::pow(10.0, log_hr(rng)) / radius);
+      Eigen::VectorXf zf(N);
+      for (int i = 0; i < N; ++i) zf(i) = float(normal(rng));
+      const float v = float(normal(rng));
+      CompanionZohAdvance<N, float> sf;
+      CompanionZohAdvance<N, double> sd;
+      if (!sf.prepare(df.data(), h)) continue;  // float's narrower range
+      ASSERT_TRUE(sd.prepare(d.data(), double(h)));
+      Eigen::VectorXd zd = zf.cast<double>();
+      sd.advance(zd.data(), double(v));
+      sf.advance(zf.data(), v);
+      Eigen::MatrixXd G = Eigen::MatrixXd::Zero(N, 1);
+      G(N - 1, 0) = 1;
+      Eigen::MatrixXd Phi, Gamma;
+      zoh_discretize<double>(companion_matrix<double>(d), G, double(h), Phi,
+                             Gamma);
+      const double scale = Phi.norm() * zd.norm() + Gamma.norm() * std::abs(v);
+      EXPECT_LE((zf.cast<double>() - zd).norm(),
+                tol * (1 + radius * h) * scale)
+          << "n = " << N << ", h = " << h;
+      ++compared;
+    }
+  };
+  check(std::integral_constant<int, 1>());
+  check(std::integral_constant<int, 2>());
+  check(std::integral_constant<int, 3>());
+  check(std::integral_constant<int, 4>());
+  // (float's scaling range declines the shortest intervals at na = 4)
+  std::printf("float series: %d of 1200 intervals compared\n", compared);
+  EXPECT_GT(compared, 600);
+}
+
+// FrozenModel (the series) against AuxiliaryModel on the dynamic-size
+// reference (matrix exponential per sample), sample by sample: two inputs,
+// one delayed, nb up to na + 1 (the highest derivative enters), a model
+// changing at every sample, stable and then unstable for a stretch, and
+// irregular intervals; to 1e-12 relative to the largest |output|. A NaN in
+// the parameters gives NaN from there on in both.
+template <int N>
+void expect_frozen_model_agrees() {
+  ModelOrders orders;
+  orders.na = N;
+  orders.nb = {N + 1, 2};
+  orders.nk = {0, 3};
+  FrozenModel<double> series;
+  AuxiliaryModel<double> reference;
+  series.configure(orders, InterSample::kZoh);
+  reference.configure(orders, InterSample::kZoh, FilterKernels::kDynamic);
+  const std::vector<std::vector<std::complex<double>>> roots = {
+      {{-2, 0}},
+      {{-1.2, 1.6}, {-1.2, -1.6}},
+      {{-1, 0}, {-1, 2}, {-1, -2}},
+      {{-0.6, 1.9}, {-0.6, -1.9}, {-1, 1}, {-1, -1}}};
+  const Eigen::VectorXd a = poly_from_roots(roots[N - 1]);
+  std::mt19937_64 rng(600 + N);
+  std::normal_distribution<double> normal(0, 1);
+  std::uniform_real_distribution<double> interval(0.02, 0.2);
+  Eigen::VectorXd theta(orders.num_parameters());
+  std::vector<double> ys, yr;
+  double largest = 0;
+  for (int k = 0; k < 3000; ++k) {
+    // A slowly wandering model; from k = 1000 to 1100 the constant
+    // coefficient is negated (an unstable frozen model).
+    for (int i = 0; i < N; ++i) {
+      theta(i) = a(i) * (1 + 0.2 * std::sin(0.01 * k + i));
+    }
+    if (k >= 1000 && k < 1100) theta(N - 1) = -theta(N - 1);
+    for (int i = N; i < theta.size(); ++i) {
+      theta(i) = 0.5 + 0.1 * i + 0.05 * normal(rng);
+    }
+    const double u[2] = {normal(rng), k % 50 < 25 ? 1.0 : -1.0};
+    const double h = interval(rng);
+    series.set_parameters(theta);
+    reference.set_parameters(theta);
+    ys.push_back(series.step(u, h));
+    yr.push_back(reference.step(u, h));
+    largest = std::max(largest, std::abs(yr.back()));
+  }
+  double worst = 0;
+  for (size_t k = 0; k < ys.size(); ++k) {
+    worst = std::max(worst, std::abs(ys[k] - yr[k]) / largest);
+  }
+  EXPECT_LE(worst, 1e-12) << "n = " << N;
+  std::printf("FrozenModel n = %d: largest difference to the reference "
+              "%.1e relative\n", N, worst);
+  // A NaN estimate: NaN from that sample on, in both.
+  theta(0) = std::numeric_limits<double>::quiet_NaN();
+  series.set_parameters(theta);
+  reference.set_parameters(theta);
+  const double u[2] = {1, 1};
+  EXPECT_TRUE(std::isnan(series.step(u, 0.1)));
+  EXPECT_TRUE(std::isnan(reference.step(u, 0.1)));
+  theta(0) = a(0);
+  series.set_parameters(theta);
+  EXPECT_TRUE(std::isnan(series.step(u, 0.1)));  // the state stays NaN
+}
+
+TEST(CompanionKernels, FrozenModelAgreesWithTheDynamicReference) {
+  expect_frozen_model_agrees<1>();
+  expect_frozen_model_agrees<2>();
+  expect_frozen_model_agrees<3>();
+  expect_frozen_model_agrees<4>();
 }
 
 // A record of the stable system B(p)/A(p) of order n (nb = n, nk = 0),
@@ -458,6 +757,25 @@ void expect_no_allocation(int n) {
             }),
             0)
       << "frozen model (YH), n = " << n;
+  // What record_recursive_run uses for YH: the series of
+  // CompanionZohAdvance, two inputs (one delayed), a model changing at
+  // every sample.
+  ModelOrders two_inputs;
+  two_inputs.na = n;
+  two_inputs.nb = {n, 1};
+  two_inputs.nk = {0, 2};
+  FrozenModel<S> series;
+  series.configure(two_inputs, InterSample::kZoh);
+  Vector<S> theta2(n + n + 1);
+  theta2 << data.theta.cast<S>(), S(0.5);
+  EXPECT_EQ(count([&](int k) {
+              theta2(0) *= S(1 + 1e-4 * std::sin(double(k)));
+              series.set_parameters(theta2);
+              const S u[2] = {S(data.u[k]), S(data.u[(k + 7) % 600])};
+              series.step(u, S(0.05));
+            }),
+            0)
+      << "FrozenModel (YH, series), n = " << n;
 }
 
 // The fixed-size least-squares step of ParameterUpdate (adaptation.hpp)

@@ -27,11 +27,18 @@
 // FilterDiscretization (svf.hpp) picks these kernels once, when configured
 // with FilterKernels::kFixedSize and an order up to kMaxFixedOrder; the
 // dynamic-size code stays for larger orders and as the reference
-// (FilterKernels::kDynamic).
+// (FilterKernels::kDynamic). The frozen model of YH (frozen_model.hpp),
+// whose Phi would change at every sample and be applied to one state,
+// advances the state by CompanionZohAdvance below instead (the action of
+// the exponential on the state, O(n) per Taylor term).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "ctid/base/types.hpp"
 
@@ -62,6 +69,62 @@ S reciprocal(int k) {
       1.0 / 14, 1.0 / 15, 1.0 / 16, 1.0 / 17, 1.0 / 18, 1.0 / 19, 1.0 / 20,
       1.0 / 21, 1.0 / 22, 1.0 / 23, 1.0 / 24, 1.0 / 25};
   return S(kTable[k]);
+}
+
+// For finite x: e with |x| < 2^e (from the exponent bits: no library
+// call), false when x is not finite. Zero and subnormals give the bound of
+// the smallest normal exponent.
+template <typename S>
+bool exponent_bound(S x, int& e) {
+  static_assert(std::numeric_limits<S>::is_iec559, "IEEE 754 binary type");
+  constexpr int kMantissa = std::numeric_limits<S>::digits - 1;
+  constexpr int kBias = std::numeric_limits<S>::max_exponent - 1;
+  using Bits = std::conditional_t<sizeof(S) == 8, std::uint64_t, std::uint32_t>;
+  Bits bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = int((bits >> kMantissa) & Bits(2 * kBias + 1));
+  if (biased == 2 * kBias + 1) return false;  // Inf, NaN
+  e = std::max(biased, 1) - kBias + 1;
+  return true;
+}
+
+// 2^p for p within the normal exponent range.
+template <typename S>
+S power_of_two(int p) {
+  constexpr int kMantissa = std::numeric_limits<S>::digits - 1;
+  constexpr int kBias = std::numeric_limits<S>::max_exponent - 1;
+  using Bits = std::conditional_t<sizeof(S) == 8, std::uint64_t, std::uint32_t>;
+  const Bits bits = Bits(p + kBias) << kMantissa;
+  S x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+// The first q with theta^(q+1) / (q+1)! <= eps/4 (at most 24), for
+// 0 <= theta <= 1 (the loop of companion_zoh, without its dependent chain
+// of multiplications: theta against the root of each degree, computed
+// once).
+template <typename S>
+int taylor_degree(S theta) {
+  struct Table {
+    S limit[25];
+    Table() {
+      const double tolerance = std::numeric_limits<S>::epsilon() / 4;
+      double factorial = 1;
+      for (int q = 0; q < 25; ++q) {
+        factorial *= q + 1;  // (q + 1)!
+        // theta^(q+1)/(q+1)! <= tol  <=>  theta <= (tol (q+1)!)^(1/(q+1)),
+        // rounded down one unit so that the test is not looser than the
+        // loop's.
+        limit[q] = std::nextafter(
+            S(std::pow(tolerance * factorial, 1.0 / (q + 1))), S(0));
+      }
+    }
+  };
+  static const Table table;
+  int q = 0;
+  while (q < 24 && theta > table.limit[q]) ++q;
+  return q;
 }
 
 // Row-major n-by-n matrices as plain arrays: the Horner step below works on
@@ -189,6 +252,183 @@ void companion_propagate(const S* phi, const S* gamma, S* z, S v) {
 }
 
 }  // namespace detail
+
+// The ZOH advance of one state without forming Phi and Gamma (the frozen
+// model of YH, whose denominator changes at every sample and whose Phi would
+// be applied to a single state):
+//
+//   z <- exp([F e_n; 0 0] h) [z; v]   (first n entries; App. A.1, eq. A.6).
+//
+// n = 1: the closed form Phi = e^x, Gamma = (1 - e^x) / d1 with x = -d1 h,
+// written without cancellation as Phi = exp(x), Gamma = h expm1(x)/x
+// (Gamma = h at x = 0).
+// n >= 2: the truncated Taylor series of the action of the augmented
+// matrix on one vector, O(n) per term by the companion structure:
+//   - a similarity by T = diag(1, rho, .., rho^(n-1)), rho = 2^p (exact in
+//     floating point), turns F into rho times the companion matrix of
+//     a_k = d_k / rho^k, k = 1..n, and z, v into zh_i = z_i / rho^i,
+//     vh = v / rho^n; p is the smallest integer with |a_k| < 1 for every k
+//     (so that the 1-norm is of the order of the largest pole, not of
+//     d_n h: no squarings where the matrix kernel above needs them);
+//   - with tau = rho h, the i-th entry of (tau M)^j [zh; vh] / j! is
+//     g_(i+j) tau^j / j!, where g_0..g_(n-1) = zh, g_n = vh - sum_k a_k
+//     g_(n-k) and g_j = -sum_k a_k g_(j-k) beyond (the derivatives of the
+//     first state of the ODE at the start of the interval), so that
+//     zh_i(tau) = sum_(j=0..q) g_(i+j) tau^j / j!.
+// The degree q is n plus the first with theta^(q+1)/(q+1)! below a quarter
+// of the unit roundoff (the criterion of companion_zoh above), theta = 2 tau, a
+// bound of the 1-norm of tau [A e_n] in the scaled coordinates (its column
+// sums are |a_k| + 1 < 2 and the input column's 1); when theta > 1 the
+// interval is split into 2^s equal steps (at most kMaxSubsteps). These
+// depend on tau only and are kept from one call to the next while tau is
+// the same.
+// prepare() returns false where this does not apply (a coefficient or h not
+// finite, rho outside 2^(+-kMaxScaleExponent / n), more substeps; n = 1:
+// |x| > 32): the caller then takes the matrix kernels, which behave as
+// before there.
+template <int N, typename S>
+class CompanionZohAdvance {
+ public:
+  static constexpr int kMaxTerms = 24 + N;
+  static constexpr int kMaxSubsteps = 8;
+  // The scaling factors rho^(+-i), i <= n, stay within 2^(+-this).
+  static constexpr int kMaxScaleExponent =
+      std::numeric_limits<S>::max_exponent / 4;
+
+  // Prepares the interval h of D(p) = p^n + d1 p^(n-1) + .. + dn.
+  bool prepare(const S* d, S h) {
+    if constexpr (N == 1) {
+      const S x = -d[0] * h;
+      if (!(std::abs(x) <= S(32))) return false;  // NaN too
+      // Phi = exp(x) itself: 1 + expm1(x) would cancel where e^x << 1
+      // (found by the test at x = -8: 1e-12 relative in Phi).
+      const S em1 = std::expm1(x);
+      phi_ = std::exp(x);
+      gamma_ = x == S(0) ? h : h * (em1 / x);
+      return true;
+    } else {
+      if (!std::isfinite(h)) return false;
+      // The smallest p with 2^(p k) > |d_k| for every k, from the binary
+      // exponent of each coefficient: |d_k| < 2^e_k.
+      int p = -kMaxScaleExponent / N;
+      for (int k = 1; k <= N; ++k) {
+        int e = 0;
+        if (!detail::exponent_bound(d[k - 1], e)) return false;
+        const int pk = e >= 0 ? (e + k - 1) / k : -((-e) / k);
+        p = std::max(p, pk);
+      }
+      if (p * N > kMaxScaleExponent) return false;
+      const S rho = detail::power_of_two<S>(p);
+      const S inv_rho = detail::power_of_two<S>(-p);
+      S power = 1;
+      for (int k = 1; k <= N; ++k) {
+        power *= inv_rho;  // rho^-k, exact
+        minus_a_[k - 1] = -(d[k - 1] * power);
+      }
+      input_scale_ = power;  // rho^-n
+      S scale = 1;
+      S inverse = 1;
+      for (int i = 0; i < N; ++i) {
+        scale_[i] = scale;
+        inv_scale_[i] = inverse;
+        scale *= rho;
+        inverse *= inv_rho;
+      }
+      // The substeps, the degree and tau^j/j! depend on tau = rho h only
+      // (theta bounded by 2 tau): kept while tau stays the same (rho is a
+      // power of two, so it changes only when a coefficient crosses one).
+      const S tau = h * rho;
+      if (!(tau == tau_)) {
+        S step = tau;
+        int substeps = 1;
+        while (2 * step > S(1)) {
+          if (substeps == kMaxSubsteps) return false;
+          substeps *= 2;
+          step *= S(0.5);
+        }
+        tau_ = tau;
+        substeps_ = substeps;
+        // n more terms than the criterion asks: it bounds the error in
+        // the scaled 1-norm, which mixes the components, and the unscaling
+        // (rho^i) magnifies what it neglects; the state of component l
+        // (and v) first enters component i at the power l - i (n - i), so
+        // that each of these paths keeps the criterion's degree beyond its
+        // first term (found by the test of the integrator chain d = 0,
+        // where rho is the lower clamp and rho h ~ 1e-7 gave degree 2).
+        terms_ = detail::taylor_degree<S>(2 * step) + N;
+        S c = 1;
+        coefficient_[0] = 1;
+        for (int j = 1; j <= terms_; ++j) {
+          c *= step * detail::reciprocal<S>(j);
+          coefficient_[j] = c;
+        }
+      }
+      return true;
+    }
+  }
+
+  // z <- Phi z + Gamma v for the prepared interval.
+  void advance(S* z, S v) const {
+    if constexpr (N == 1) {
+      z[0] = phi_ * z[0] + gamma_ * v;
+    } else {
+      S x[N];
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) x[i] = z[i] * inv_scale_[i];
+      const S vh = v * input_scale_;
+      const int q = terms_;
+      for (int step = 0; step < substeps_; ++step) {
+        // The last n derivatives in a window, g[N - 1] the newest, and
+        // the sums accumulated as each derivative appears (ascending
+        // powers, so that the sums do not wait for the last derivative).
+        S g[N], sum[N];
+#pragma GCC unroll 4
+        for (int i = 0; i < N; ++i) g[i] = x[i];
+#pragma GCC unroll 4
+        for (int i = 0; i < N; ++i) {
+          sum[i] = x[i];
+#pragma GCC unroll 4
+          for (int l = i + 1; l < N; ++l) {
+            if (l - i <= q) sum[i] += coefficient_[l - i] * x[l];
+          }
+        }
+        for (int j = N; j < N + q; ++j) {
+          // g_j, the newest derivative added last: the chain from one
+          // derivative to the next is one multiply and one add.
+          S next = j == N ? vh : S(0);
+#pragma GCC unroll 4
+          for (int k = N; k >= 1; --k) next += minus_a_[k - 1] * g[N - k];
+#pragma GCC unroll 4
+          for (int i = 0; i + 1 < N; ++i) g[i] = g[i + 1];
+          g[N - 1] = next;
+          // g_j enters sum_i with tau^(j-i)/(j-i)!, for j - i <= q.
+#pragma GCC unroll 4
+          for (int i = 0; i < N; ++i) {
+            if (j - i <= q) sum[i] += coefficient_[j - i] * next;
+          }
+        }
+#pragma GCC unroll 4
+        for (int i = 0; i < N; ++i) x[i] = sum[i];
+      }
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) z[i] = x[i] * scale_[i];
+    }
+  }
+
+ private:
+  // n = 1
+  S phi_ = 1;
+  S gamma_ = 0;
+  // n >= 2
+  S minus_a_[N] = {};
+  S scale_[N] = {};
+  S inv_scale_[N] = {};
+  S input_scale_ = 1;
+  S coefficient_[kMaxTerms + 1] = {};
+  S tau_ = std::numeric_limits<S>::quiet_NaN();  // of the cached terms
+  int terms_ = 0;
+  int substeps_ = 1;
+};
 
 // The kernels of order n (nullptr when n is outside 1..kMaxFixedOrder).
 template <typename S>

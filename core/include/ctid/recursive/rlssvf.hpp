@@ -32,6 +32,7 @@
 
 #include "ctid/adaptation/adaptation.hpp"
 #include "ctid/filters/auxiliary_model.hpp"
+#include "ctid/filters/frozen_model.hpp"
 #include "ctid/adaptation/lmr.hpp"
 #include "ctid/adaptation/potter.hpp"
 #include "ctid/base/record.hpp"
@@ -512,7 +513,7 @@ Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
   const Eigen::Index n = record.num_samples;
   const Eigen::Index np = orders.num_parameters();
   const Eigen::Index nu = record.num_inputs;
-  AuxiliaryModel<S> frozen_model;
+  FrozenModel<S> frozen_model;
   if (out.yh != nullptr) frozen_model.configure(orders, u_rule, kernels);
   Vector<S> u_k(nu);
   for (Eigen::Index k = 0; k < n; ++k) {
