@@ -616,11 +616,15 @@ struct IvRunner {
 // 3.7e-12 to 4.8e-12 relative to the column's largest magnitude (RSRIVC-KF
 // and RIVSVF-KF na = 4, samples 3-8, up to 4.9e-10 absolute on estimates
 // of 7-130), 2.5e-12 in YH (sample 24), 1.3e-12 for LMR na = 4 (sample 50);
-// the test prints the largest such difference of each case. YH is compared
-// from 2 kSettle on: the frozen model's state carries the differences of
-// the settling window forward and forgets them only as fast as its slowest
-// pole (real part -0.6 for na = 4): measured 4.8e-12 relative at sample 200
-// (RSRIVC-KF and RIVSVF-KF, na = 4), when the estimates already agree.
+// the test prints the largest such difference of each case. Since the IV
+// step has its own fixed-size path (update_fixed_iv), the window's largest
+// differences are 2.0e-11 (RSRIVC-KF, RIVSVF-KF na = 4), 1.6e-11 (their FF
+// forms) and 7.9e-12 (RLSSVF-FF na = 4); after it the tolerance holds. YH
+// is compared from 2 kSettle on: the frozen model's state carries the
+// differences of the settling window forward and forgets them only as fast
+// as its slowest pole (real part -0.6 for na = 4): measured 4.8e-12
+// relative at sample 200 (RSRIVC-KF and RIVSVF-KF, na = 4), when the
+// estimates already agree.
 constexpr Eigen::Index kSettle = 200;
 template <typename S, typename Config, typename Runner>
 void expect_paths_agree(const TestRecord& data, double ts, const Config& config,

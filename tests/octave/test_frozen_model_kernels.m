@@ -1,12 +1,15 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_frozen_model_kernels ()
-## YH of @code{[thm, yh] = rlssvf (...)} (the frozen model's output,
+## YH of @code{[thm, yh] = rlssvf (...)} and of
+## @code{[thm, yh] = rsrivc (...)} (the frozen model's output,
 ## eq. 1.60) on the fixed-size path (the series of CompanionZohAdvance,
 ## companion_kernels.hpp) against the gateway's dynamic-size reference
 ## (option kernels = "dynamic": a matrix exponential per sample) and against
 ## a plain-Octave simulation of the frozen models from THM (expm of the
 ## augmented matrix per sample), na = 1..4: one input on a record with a
-## gap (irregular intervals), two inputs (one delayed) uniformly sampled.
+## gap (irregular intervals), two inputs (one delayed) uniformly sampled;
+## RSRIVC (riv_mex, the same FrozenModel behind the IV estimators) on the
+## one-input record with the gap.
 ## Errors on the first failure:
 ## @example
 ## octave --no-gui -q --eval \
@@ -69,8 +72,39 @@ function test_frozen_model_kernels ()
       assert (e_dyn <= 1e-12, "%s: yh fixed vs dynamic %.1e", what, e_dyn);
       printf (["%s: |yh - plain Octave| %.1e (dynamic path: %.1e), ", ...
                "|yh - dynamic| %.1e\n"], what, e_plain, e_plain_d, e_dyn);
+      if (nu == 1)
+        check_rsrivc (y, u, t, na, [theta(1:na), theta(end)]);
+      endif
     endfor
   endfor
+endfunction
+
+## RSRIVC through riv_mex: YH on each path against plain Octave on that
+## path's THM, and the paths against each other after tsiv's settling.
+function check_rsrivc (y, u, t, na, theta)
+  p = contsid_riv_args ("rsrivc", "rsrivc", y, u, t, [1 na 0],
+                        "lambda_svf", 3, "adm", "kf",
+                        "adg", 1e-4 * eye (na + 1), "tsiv", 20);
+  opts = p.opts;
+  opts.kernels = "fixed";
+  [thm, yh] = riv_mex ("rsrivc", p.data{:}, opts);
+  opts.kernels = "dynamic";
+  [thm_d, yh_d] = riv_mex ("rsrivc", p.data{:}, opts);
+  what = sprintf ("rsrivc na = %d", na);
+  ## the estimates track the true system (the record is informative)
+  assert (thm(end, :), theta, 0.05 * max (abs (theta)));
+  yo = frozen_model_output (thm, u, t, na, 1, 0);
+  e_plain = max (abs (yh - yo)) / max (abs (yo));
+  assert (e_plain <= 1e-12, "%s: yh vs plain Octave %.1e", what, e_plain);
+  yo_d = frozen_model_output (thm_d, u, t, na, 1, 0);
+  e_plain_d = max (abs (yh_d - yo_d)) / max (abs (yo_d));
+  assert (e_plain_d <= 1e-12, "%s: dynamic yh vs plain Octave %.1e", what,
+          e_plain_d);
+  late = t >= t(1) + 40;  # 20 s after tsiv
+  e_dyn = max (abs (yh(late) - yh_d(late))) / max (abs (yh_d));
+  assert (e_dyn <= 1e-12, "%s: yh fixed vs dynamic %.1e", what, e_dyn);
+  printf (["%s: |yh - plain Octave| %.1e (dynamic path: %.1e), ", ...
+           "|yh - dynamic| %.1e\n"], what, e_plain, e_plain_d, e_dyn);
 endfunction
 
 ## x(t_k) of the frozen model theta(t_k) advanced over (t_(k-1), t_k] from
