@@ -294,20 +294,7 @@ class ParameterUpdate {
       phi[i] = phi_data[i];
       theta[i] = theta_.data()[i];
     }
-    const S* P_in = P_.data();
-#pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
-    }
-    if (kalman_) {  // P- = P + Qn
-      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
-#pragma GCC unroll 8
-      for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
-      }
-    }
+    load_fixed<N>(p);
     S prediction = 0;
 #pragma GCC unroll 8
     for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
@@ -347,28 +334,7 @@ class ParameterUpdate {
 #pragma GCC unroll 8
       for (int i = 0; i < j; ++i) p[j][i] = p[i][j];
     }
-    const S scale = scale_;  // read once: the stores below may alias it
-    if (scale != S(1)) {
-#pragma GCC unroll 8
-      for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) p[j][i] *= scale;
-      }
-    }
-    S* P_data = P_.data();
-#pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) P_data[j * N + i] = p[j][i];
-    }
-    S* theta_data = theta_.data();
-    S* gain_data = gain_.data();
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      theta_data[i] = theta[i];
-      gain_data[i] = gain[i];
-    }
-    Eigen::Map<Eigen::Matrix<S, N, N>> P(P_data);
+    Eigen::Map<Eigen::Matrix<S, N, N>> P(store_fixed<N>(p, theta, gain));
     guard_.template apply_symmetric<N>(p, P);
     return error;
   }
@@ -389,20 +355,7 @@ class ParameterUpdate {
       zeta[i] = zeta_data[i];
       theta[i] = theta_.data()[i];
     }
-    const S* P_in = P_.data();
-#pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
-    }
-    if (kalman_) {  // P- = P + Qn
-      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
-#pragma GCC unroll 8
-      for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
-      }
-    }
+    load_fixed<N>(p);
     S prediction = 0;
 #pragma GCC unroll 8
     for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
@@ -438,6 +391,33 @@ class ParameterUpdate {
 #pragma GCC unroll 8
       for (int i = 0; i < N; ++i) p[j][i] -= gain[i] * ptphi[j];
     }
+    Eigen::Map<Eigen::Matrix<S, N, N>> P(store_fixed<N>(p, theta, gain));
+    guard_.template apply_unrolled<N>(p, P);
+    return error;
+  }
+
+  // The fixed-size steps' local copies: P (plus Qn for the Kalman filter,
+  // P- = P + Qn) read once, and P scaled (the forgetting factor), theta and
+  // the gain written back once; returns P's storage for the guard.
+  template <int N>
+  void load_fixed(S (&p)[N][N]) const {
+    const S* P_in = P_.data();
+#pragma GCC unroll 8
+    for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
+    }
+    if (kalman_) {  // P- = P + Qn
+      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
+#pragma GCC unroll 8
+      for (int j = 0; j < N; ++j) {
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
+      }
+    }
+  }
+  template <int N>
+  S* store_fixed(S (&p)[N][N], const S (&theta)[N], const S (&gain)[N]) {
     const S scale = scale_;  // read once: the stores below may alias it
     if (scale != S(1)) {
 #pragma GCC unroll 8
@@ -459,9 +439,7 @@ class ParameterUpdate {
       theta_data[i] = theta[i];
       gain_data[i] = gain[i];
     }
-    Eigen::Map<Eigen::Matrix<S, N, N>> P(P_data);
-    guard_.template apply_unrolled<N>(p, P);
-    return error;
+    return P_data;
   }
 
   void predict() {
