@@ -136,7 +136,13 @@
 ## @strong{Levels.} A record in raw units (option @code{levels}:
 ## @qcode{"auto"}, the default, decides it when the model has no
 ## integrator and the mean of the input or of the output lies more than
-## three standard deviations from zero; @qcode{"estimate"}, @qcode{"none"})
+## three standard deviations from zero, or the output starts at rest away
+## from zero and keeps that sign: its first five samples within 5 % of
+## its range of each other, their median beyond 5 % of the range from
+## zero (as @code{srivc}'s rule for an output offset) and 99 % of the
+## samples of the same sign, a record whose zero is not its operating
+## point, e.g. a temperature in degC starting at ambient;
+## @qcode{"estimate"}, @qcode{"none"})
 ## has the estimation record's first input sample removed from both
 ## records (the record is taken to start at rest there; otherwise see
 ## 'initial_state') and an output offset estimated with the model, and
@@ -1078,11 +1084,24 @@ function L = level_plan (D, Mst, mode)
       mu = mean (D.u, 1); su = std (D.u, 0, 1);
       raw_u = any (abs (mu) > 3 * su);
       raw_y = abs (mean (D.y)) > 3 * std (D.y);
-      if (! (raw_u || raw_y))
+      ## an output at rest at its first samples, away from zero, that
+      ## never comes back to zero (issue 9's blind heated block: 22 degC
+      ## at 0 W, its mean only 2.7 standard deviations from zero)
+      m = min (5, numel (D.y));
+      y1 = D.y(1:m);
+      span = max (D.y) - min (D.y);
+      at_level = span > 0 && max (y1) - min (y1) <= 0.05 * span ...
+                 && abs (median (y1)) > 0.05 * span ...
+                 && mean (sign (D.y) == sign (median (y1))) >= 0.99;
+      if (raw_u || raw_y)
+        L.why = "the record is in raw units (means far from zero)";
+      elseif (at_level)
+        L.why = sprintf (["the output starts at rest at %.4g and keeps ", ...
+                          "its sign"], median (y1));
+      else
         return;
       endif
       L.estimate = true;
-      L.why = "the record is in raw units (means far from zero)";
   endswitch
   L.u0 = D.u(1, :);               # the record starts at rest at its first input
 endfunction
@@ -1342,6 +1361,45 @@ endfunction
 %! ys = simc (Ms, uv - lv.InputOffset, Ts) + lv.OutputOffset;
 %! assert (R.rmse_given, sqrt (mean ((yv - ys) .^ 2)), 1e-9);
 %! assert (R.rmse_given < 0.06);       # the noise level (0.05)
+
+%!test  # an output that starts at rest at its ambient level: levels
+%! ## handled although the output's mean is within 3 sd of zero (issue 9's
+%! ## blind heated block: 22 degC at 0 W, mean 2.7 sd from zero)
+%! randn ("state", 18);
+%! t = (0:N-1)' * Ts;                      # 0 / 50 W, from 0 W
+%! ue = 50 * (sin (2 * pi * t / 20 - 0.2) > 0);
+%! uve = 50 * (sin (2 * pi * t / 27 - 0.2) > 0);
+%! y = 22 + simc (G, ue, Ts) + 0.05 * randn (N, 1);
+%! yv = 22 + simc (G, uve, Ts) + 0.05 * randn (N, 1);
+%! assert (abs (mean (y)) < 3 * std (y));   # the mean rule does not fire
+%! R = residtrace (iddata (y, ue, Ts), idctm (2, [1 1.2 1]),
+%!                 "validation", iddata (yv, uve, Ts),
+%!                 "effects", {"offset", "initial_state"});
+%! assert (R.levels.estimated);
+%! assert (! isempty (strfind (R.levels.text, "starts at rest at 22")));
+%! assert (R.levels.y0, 22, 0.1);
+%! assert (R.effect, "none");
+%! assert (R.rmse_before < 0.07);          # the noise level (0.05)
+
+%!test  # a line slower than two cycles of the record is not a sinusoid
+%! ## (issue 9's blind check: 0.00014 Hz, under one cycle, was named)
+%! randn ("state", 17);
+%! T = N * Ts;
+%! slow = @(t) 0.3 * sin (2 * pi * t / (0.8 * T) + 0.5);   # 1.25 cycles
+%! t = (0:N-1)' * Ts;
+%! y = x + slow (t) + 0.02 * randn (N, 1);
+%! yv = xv + slow (t) + 0.02 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), G, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"sinusoid"}, "iterate", 1);
+%! r = R.ranking(1);
+%! assert (! r.applicable || r.evidence.freq_hz * T >= 2 - 1e-9);
+%! ## a line of three cycles is still one
+%! y = x + 0.3 * sin (2 * pi * 3 * t / T) + 0.02 * randn (N, 1);
+%! yv = xv + 0.3 * sin (2 * pi * 3 * t / T + 1) + 0.02 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), G, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"sinusoid"}, "iterate", 1);
+%! assert (R.effect, "sinusoid");
+%! assert (R.ranking(1).evidence.freq_hz * T, 3, 0.2);   # a fifth of a bin
 
 %!test  # an output that saturates: level estimated
 %! randn ("state", 16);
