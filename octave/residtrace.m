@@ -213,8 +213,9 @@
 ## validation RMSE of the output simulated from the input: of M as given
 ## (with the output and input offsets it carries, as @code{srivc} returns
 ## them on a raw record in @code{M.Report.DataUsed.OutputOffset} and
-## @code{InputOffset}), of M re-estimated in its own structure (the baseline every effect is
-## scored against), and of the model with the top effect added. Every
+## @code{InputOffset}), of M re-estimated in its own structure (the
+## baseline every effect is scored against), and of the model with the top
+## effect added. Every
 ## RMSE field is a simulation from the input (plus an estimated initial
 ## state once 'initial_state' is added) unless its name says otherwise:
 ## when the top effect is drift or coloured noise, @code{rmse_after}
