@@ -70,7 +70,10 @@
 ## an additive sinusoid at the strongest line of the residual periodogram
 ## not shared with the input (Fisher's g test); on the validation record
 ## its amplitude and phase are unknown, so they are fitted on one half and
-## applied to the other (two-fold cross-fitting).
+## applied to the other (two-fold cross-fitting). Only periods the
+## records resolve are looked at: at least two cycles in the estimation
+## record and one in each half of the validation record (a slower line is
+## a level or a drift, not a sinusoid).
 ## @item 'drift'
 ## random-walk parameters tracked by the Kalman-filter IV update (thesis
 ## eq. 2.29), Qn by maximum likelihood (sec. 3.3); evidence from SRIVC
@@ -133,7 +136,13 @@
 ## @strong{Levels.} A record in raw units (option @code{levels}:
 ## @qcode{"auto"}, the default, decides it when the model has no
 ## integrator and the mean of the input or of the output lies more than
-## three standard deviations from zero; @qcode{"estimate"}, @qcode{"none"})
+## three standard deviations from zero, or the output starts at rest away
+## from zero and keeps that sign: its first five samples within 5 % of
+## its range of each other, their median beyond 5 % of the range from
+## zero (as @code{srivc}'s rule for an output offset) and 99 % of the
+## samples of the same sign, a record whose zero is not its operating
+## point, e.g. a temperature in degC starting at ambient;
+## @qcode{"estimate"}, @qcode{"none"})
 ## has the estimation record's first input sample removed from both
 ## records (the record is taken to start at rest there; otherwise see
 ## 'initial_state') and an output offset estimated with the model, and
@@ -201,9 +210,12 @@
 ## that fit's correction was far from significant, p >= 0.2; see Speed),
 ## seconds (time spent on the candidate).
 ## @item rmse_given, rmse_before, rmse_after
-## validation RMSE of the output simulated from the input: of M as given,
-## of M re-estimated in its own structure (the baseline every effect is
-## scored against), and of the model with the top effect added. Every
+## validation RMSE of the output simulated from the input: of M as given
+## (with the output and input offsets it carries, as @code{srivc} returns
+## them on a raw record in @code{M.Report.DataUsed.OutputOffset} and
+## @code{InputOffset}), of M re-estimated in its own structure (the
+## baseline every effect is scored against), and of the model with the top
+## effect added. Every
 ## RMSE field is a simulation from the input (plus an estimated initial
 ## state once 'initial_state' is added) unless its name says otherwise:
 ## when the top effect is drift or coloured noise, @code{rmse_after}
@@ -367,8 +379,17 @@ function [R, varargout] = residtrace (varargin)
 
   ## M as given, and M re-estimated by SRIVC in its own structure.
   base.np = np;
+  ## M as the user has it: with the levels it was estimated with (srivc on
+  ## a raw record: Report.DataUsed.OutputOffset and InputOffset, the
+  ## offsets removed from the data), as comparec on data with them removed
+  [c_given, u_given] = carried_levels (M, columns (d.u));
+  Vg = Vraw;
+  Vg.u -= u_given;
+  if (! isempty (Vg.pre))
+    Vg.pre.u -= u_given;
+  endif
   try
-    e_given = residtrace_valerror (base, Vraw, ctx);
+    e_given = residtrace_valerror (base, Vg, ctx) - c_given;
   catch
     e_given = Inf (size (V.y));        # M as given diverges
   end_try_catch
@@ -605,7 +626,7 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   if (any (strcmp (simset, "initial_state")))
     ## first the record's initial state: when significant (at the level
     ## of a full pass) it is added and the pass run again
-    c = residtrace_cand_x0 (cur, ctx);
+    c = guarded ("initial_state", @() residtrace_cand_x0 (cur, ctx));
     row = score (c, cur, ctx, e0);
     row.significant = row.applicable && row.p < opts.alpha / numel (simset) ...
                       && row.score >= opts.minscore;
@@ -629,7 +650,7 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   vrows = [];
   if (any (strcmp (opts.effects, "drift")))
     t0 = tic ();
-    c = residtrace_cand_drift (cur, ctx);
+    c = guarded ("drift", @() residtrace_cand_drift (cur, ctx));
     row = score (c, cur, ctx, e0);
     row.seconds = toc (t0);
     vrows = [vrows; row];
@@ -637,7 +658,7 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   ## coloured noise: only when nothing deterministic is significant and
   ## the residual is independent of the input but not white
   if (any (strcmp (opts.effects, "colored_noise")))
-    c = residtrace_cand_colored (cur, ctx);
+    c = guarded ("colored_noise", @() residtrace_cand_colored (cur, ctx));
     det_sig = any ([rows_.significant]);
     if (! isempty (vrows))
       vr = significance (vrows, opts);
@@ -704,7 +725,7 @@ function row = screened_row_ (effect, cur, ctx, e0)
   endif
   if (ctx.maxiter > 3)
     [q, qcur] = screening_context (ctx, cur);
-    c = feval (fn, qcur, q);
+    c = guarded (effect, @() feval (fn, qcur, q));
     row = score (c, cur, ctx, e0);
     row.screened = true;
     if (row.applicable && row.p >= 0.2
@@ -723,7 +744,7 @@ function row = screened_row_ (effect, cur, ctx, e0)
       return;                  # not applicable for a structural reason
     endif
   endif
-  c = feval (fn, cur, ctx);
+  c = guarded (effect, @() feval (fn, cur, ctx));
   row = score (c, cur, ctx, e0);
   row.screened = false;
 endfunction
@@ -785,14 +806,15 @@ function row = score (c, cur, ctx, e0)
                 "group", ifelse_ (strcmp (c.kind, "simulation"),
                                   "simulated from the input",
                                   "uses the validation output"));
+  row.evidence = unknown_std (row.evidence);
   if (! c.applicable)
     return;
   endif
   try
-    e1 = residtrace_valerror (c.model, ctx.V, ctx);
+    e1 = guarded ("", @() residtrace_valerror (c.model, ctx.V, ctx));
   catch err
     row.applicable = false;
-    row.reason = ["validation failed: " err.message];
+    row.reason = ["cannot test: validation failed: " err.message];
     return;
   end_try_catch
   if (any (! isfinite (e1)))
@@ -818,6 +840,66 @@ function row = score (c, cur, ctx, e0)
   endswitch
   row.model = c.model;
   row.e1 = e1;
+endfunction
+
+## A standard deviation of exactly 0 in a candidate's evidence is not an
+## estimate (a fit whose covariance was not computed, issue 9's blind
+## check): it becomes NaN, in evidence.std and in its text, and the text
+## says why. Never a silent 0.
+function ev = unknown_std (ev)
+  if (! isstruct (ev) || ! isfield (ev, "std") || ! isnumeric (ev.std)
+      || ! any (ev.std(:) == 0))
+    return;
+  endif
+  ev.std(ev.std == 0) = NaN;
+  if (isfield (ev, "text") && ischar (ev.text))
+    t = regexprep (ev.text, '\+- -?0(?![\d.eE])', "+- NaN");
+    do                                 # +- [0 0] -> +- [NaN NaN]
+      t0 = t;
+      t = regexprep (t, '(\+- \[(NaN )*)0(?=[ \]])', "$1NaN", "once");
+    until (strcmp (t, t0))
+    ev.text = [t "; standard deviation not available (the fit gave no " ...
+               "covariance for it)"];
+  endif
+endfunction
+
+## The numerical warnings that mean a result is not to be trusted (a
+## solve with a singular matrix): raised as errors inside a candidate.
+function ids = numerical_warnings ()
+  ids = {"Octave:singular-matrix", "Octave:nearly-singular-matrix"};
+endfunction
+
+## f () (a candidate, or a validation simulation) with the numerical
+## warnings raised as errors: a fit inside that catches its errors treats
+## the solve as failed; one that reaches here gives, for a candidate
+## (effect not empty), an explicit verdict "cannot test: ..." (issue 9's
+## blind check: the drift candidate printed "matrix singular to machine
+## precision" six times on the pendulum record); with effect "" the error
+## is passed on (the caller says what failed). Never a raw warning.
+function out = guarded (effect, f)
+  ids = numerical_warnings ();
+  state = warning ();
+  unwind_protect
+    for i = 1:numel (ids)
+      warning ("error", ids{i});
+    endfor
+    try
+      out = f ();
+    catch err
+      if (isempty (effect) || ! any (strcmp (err.identifier, ids)))
+        rethrow (err);
+      endif
+      where = "";
+      if (! isempty (err.stack))
+        where = [" in " err.stack(1).name];
+      endif
+      out = residtrace_cand (effect);
+      out.reason = sprintf ("cannot test: numerical failure%s (%s)", where,
+                            err.message);
+    end_try_catch
+  unwind_protect_cleanup
+    warning (state);
+  end_unwind_protect
 endfunction
 
 ## Significant first by score; a simpler candidate that is not
@@ -1003,11 +1085,24 @@ function L = level_plan (D, Mst, mode)
       mu = mean (D.u, 1); su = std (D.u, 0, 1);
       raw_u = any (abs (mu) > 3 * su);
       raw_y = abs (mean (D.y)) > 3 * std (D.y);
-      if (! (raw_u || raw_y))
+      ## an output at rest at its first samples, away from zero, that
+      ## never comes back to zero (issue 9's blind heated block: 22 degC
+      ## at 0 W, its mean only 2.7 standard deviations from zero)
+      m = min (5, numel (D.y));
+      y1 = D.y(1:m);
+      span = max (D.y) - min (D.y);
+      at_level = span > 0 && max (y1) - min (y1) <= 0.05 * span ...
+                 && abs (median (y1)) > 0.05 * span ...
+                 && mean (sign (D.y) == sign (median (y1))) >= 0.99;
+      if (raw_u || raw_y)
+        L.why = "the record is in raw units (means far from zero)";
+      elseif (at_level)
+        L.why = sprintf (["the output starts at rest at %.4g and keeps ", ...
+                          "its sign"], median (y1));
+      else
         return;
       endif
       L.estimate = true;
-      L.why = "the record is in raw units (means far from zero)";
   endswitch
   L.u0 = D.u(1, :);               # the record starts at rest at its first input
 endfunction
@@ -1063,6 +1158,27 @@ function m = refresh_cov (base, cur)
   m.cov = NaN (numel (cur.theta));
   if (isequal (size (cur.theta), size (base.theta)) || isempty (base.theta))
     m.cov = cur.cov;
+  endif
+endfunction
+
+## The output offset c and input offsets d (1-by-nu) that M carries in
+## Report.DataUsed (srivc's estimated levels; MATLAB's convention: y - c =
+## M (u - d)); zeros for a model without them.
+function [c, d] = carried_levels (M, nu)
+  c = 0;
+  d = zeros (1, nu);
+  try
+    lev = get (M, "Report").DataUsed;
+  catch
+    return;                            # a model class without a Report
+  end_try_catch
+  if (isfield (lev, "OutputOffset") && isscalar (lev.OutputOffset)
+      && isfinite (lev.OutputOffset))
+    c = double (lev.OutputOffset);
+  endif
+  if (isfield (lev, "InputOffset") && numel (lev.InputOffset) == nu
+      && all (isfinite (lev.InputOffset(:))))
+    d = double (lev.InputOffset(:).');
   endif
 endfunction
 
@@ -1234,6 +1350,57 @@ endfunction
 %! assert (R.effect, "none");
 %! assert (R.rmse_before < 0.07);      # the noise level, levels handled
 %! assert (R.rmse_given > 1);          # M as given ignores the levels
+%! ## srivc's model carries the levels it estimated: its figure is that of
+%! ## the model with them (issue 9's blind check: 180 deg off before)
+%! y = 20 + simc (G, u, Ts) + 0.05 * randn (N, 1);
+%! yv = 20 + simc (G, uv, Ts) + 0.05 * randn (N, 1);
+%! Ms = srivc (iddata (y, u, Ts), [1 2 0]);
+%! lv = get (Ms, "Report").DataUsed;
+%! assert (lv.OutputOffset, 20, 0.05);
+%! R = residtrace (iddata (y, u, Ts), Ms, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset"});
+%! ys = simc (Ms, uv - lv.InputOffset, Ts) + lv.OutputOffset;
+%! assert (R.rmse_given, sqrt (mean ((yv - ys) .^ 2)), 1e-9);
+%! assert (R.rmse_given < 0.06);       # the noise level (0.05)
+
+%!test  # an output that starts at rest at its ambient level: levels
+%! ## handled although the output's mean is within 3 sd of zero (issue 9's
+%! ## blind heated block: 22 degC at 0 W, mean 2.7 sd from zero)
+%! randn ("state", 18);
+%! t = (0:N-1)' * Ts;                      # 0 / 50 W, from 0 W
+%! ue = 50 * (sin (2 * pi * t / 20 - 0.2) > 0);
+%! uve = 50 * (sin (2 * pi * t / 27 - 0.2) > 0);
+%! y = 22 + simc (G, ue, Ts) + 0.05 * randn (N, 1);
+%! yv = 22 + simc (G, uve, Ts) + 0.05 * randn (N, 1);
+%! assert (abs (mean (y)) < 3 * std (y));   # the mean rule does not fire
+%! R = residtrace (iddata (y, ue, Ts), idctm (2, [1 1.2 1]),
+%!                 "validation", iddata (yv, uve, Ts),
+%!                 "effects", {"offset", "initial_state"});
+%! assert (R.levels.estimated);
+%! assert (! isempty (strfind (R.levels.text, "starts at rest at 22")));
+%! assert (R.levels.y0, 22, 0.1);
+%! assert (R.effect, "none");
+%! assert (R.rmse_before < 0.07);          # the noise level (0.05)
+
+%!test  # a line slower than two cycles of the record is not a sinusoid
+%! ## (issue 9's blind check: 0.00014 Hz, under one cycle, was named)
+%! randn ("state", 17);
+%! T = N * Ts;
+%! slow = @(t) 0.3 * sin (2 * pi * t / (0.8 * T) + 0.5);   # 1.25 cycles
+%! t = (0:N-1)' * Ts;
+%! y = x + slow (t) + 0.02 * randn (N, 1);
+%! yv = xv + slow (t) + 0.02 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), G, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"sinusoid"}, "iterate", 1);
+%! r = R.ranking(1);
+%! assert (! r.applicable || r.evidence.freq_hz * T >= 2 - 1e-9);
+%! ## a line of three cycles is still one
+%! y = x + 0.3 * sin (2 * pi * 3 * t / T) + 0.02 * randn (N, 1);
+%! yv = xv + 0.3 * sin (2 * pi * 3 * t / T + 1) + 0.02 * randn (N, 1);
+%! R = residtrace (iddata (y, u, Ts), G, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"sinusoid"}, "iterate", 1);
+%! assert (R.effect, "sinusoid");
+%! assert (R.ranking(1).evidence.freq_hz * T, 3, 0.2);   # a fifth of a bin
 
 %!test  # an output that saturates: level estimated
 %! randn ("state", 16);

@@ -50,7 +50,9 @@
 ## does not start at rest (the median of its first samples exceeds 5 % of
 ## the output's range: raw units, an operating point) and says so in
 ## @var{info}.reason and @var{info}.output_offset; @var{M} itself is the
-## dynamic model without c.
+## dynamic model without c, and carries the levels it was estimated with
+## in @code{M.Report.DataUsed.OutputOffset} (c) and @code{InputOffset}
+## (-d_j), MATLAB's offsets removed from the data (y - c = M (u + d)).
 ## @item TimeScale
 ## @qcode{"auto"} (default): the iterations run in a time t' = s t with s
 ## the model's characteristic frequency |F(0)|^(1/nf), which keeps

@@ -27,7 +27,9 @@
 ## used. A structure whose fit failed has RT2 = YIC = NaN. @var{info}:
 ## per structure @code{models} (cell), @code{converged}, @code{stable},
 ## @code{fit} (validation fit in per cent, 100 (1 - |y - y_sim| /
-## |y - mean y|)).
+## |y - mean y|)). y_sim is the model as estimated: with the output and
+## input offsets that @code{srivc} estimated on a raw record (in the
+## model's @code{Report.DataUsed.OutputOffset} and @code{InputOffset}).
 ##
 ## Missing samples (NaN in y or u) of ZE are bridged by @code{srivc}; its
 ## criteria then use the present samples (N counts them).  ZV is
@@ -136,7 +138,10 @@ function [V, info, varargout] = srivcstruc (varargin)
       y = ye(used_e);
       ys = est.simulated(used_e(present_e));
     else
-      ys = simc (M, uv, get (ZV, "Ts"));
+      ## the model as estimated: with the levels it carries (srivc on a
+      ## raw record, Report.DataUsed.OutputOffset and InputOffset)
+      [c, d] = carried_levels (M);
+      ys = simc (M, uv - d, get (ZV, "Ts")) + c;
       y = yv(n0v:end);
       ys = ys(n0v:end);
     endif
@@ -147,6 +152,18 @@ function [V, info, varargout] = srivcstruc (varargin)
     V(k, end-1) = log10 (est.condition);
     V(k, end) = numel (y);
   endfor
+endfunction
+
+## The output and input offsets M was estimated with (0 when it has none).
+function [c, d] = carried_levels (M)
+  lev = M.Report.DataUsed;
+  c = 0; d = 0;
+  if (isfield (lev, "OutputOffset") && ! isempty (lev.OutputOffset))
+    c = lev.OutputOffset;
+  endif
+  if (isfield (lev, "InputOffset") && ! isempty (lev.InputOffset))
+    d = lev.InputOffset(:).';
+  endif
 endfunction
 
 function [M, RT2, YIC, info] = quiet_srivc (ZE, nn, pass)
@@ -240,6 +257,22 @@ endfunction
 %!                 [1 2 0], "NN", "list");
 %! assert (all (isfinite (V(1, :))));
 %! assert (V(1, end), numel (yg) - 6);
+%!test  # raw units: the fit (%) is that of the model with its levels
+%! ## (issue 9's blind check: -24 % at a validation R_T^2 of 0.99)
+%! y0 = 20;                               # an operating point, 20 units
+%! ye = get (ZE, "OutputData") + y0; yv = get (ZV, "OutputData") + y0;
+%! ZEr = iddata (ye, get (ZE, "InputData"), get (ZE, "Ts"));
+%! ZVr = iddata (yv, get (ZV, "InputData"), get (ZV, "Ts"));
+%! [V, info] = srivcstruc (ZEr, ZVr, [1 2 0], "NN", "list");
+%! M = info.models{1};
+%! assert (M.Report.DataUsed.OutputOffset, y0, 0.5);
+%! ys = simc (M, get (ZVr, "InputData") - M.Report.DataUsed.InputOffset,
+%!            get (ZVr, "Ts")) + M.Report.DataUsed.OutputOffset;
+%! assert (info.fit(1), 100 * (1 - norm (yv - ys) / norm (yv - mean (yv))),
+%!         1e-9);
+%! assert (V(1, 1) > 0.9);
+%! ## with a zero-mean error, fit = 100 (1 - sqrt (1 - RT2))
+%! assert (info.fit(1), 100 * (1 - sqrt (1 - V(1, 1))), 2);
 %!error id=srivcstruc:badInput srivcstruc (ZE, ZN, [1 2 0])
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e", 0)
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e")

@@ -241,6 +241,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
               "or start"], fname);
   endif
   M = make_model (fname, e, theta, cov, info, d, nu);
+  M = carried_levels (M, info, nu);
   M = simulation_fit (M, d, np, info.simulated);
   ## The samples missing from the record (NaN in y or u), bridged by
   ## contsid_recursive_args: per-sample outputs (info.simulated) hold the
@@ -561,16 +562,45 @@ function r = fit_report (y, s2, n, np)
   r.DataUsed = struct ("Length", n);
 endfunction
 
+## The levels the model was estimated with, in MATLAB's
+## Report.DataUsed.OutputOffset and InputOffset (the offsets removed from
+## the data: y - OutputOffset = M (u - InputOffset)), so that the model as
+## estimated can be simulated on raw data (issue 9's blind check: residtrace
+## and srivcstruc simulated a raw-record model 180 degrees off):
+## OutputOffset = c, InputOffset = -d (the engine's u + d).
+function M = carried_levels (M, info, nu)
+  c = 0;
+  if (isfield (info, "output_offset") && info.output_offset
+      && isfield (info, "offset"))
+    c = info.offset;
+  endif
+  din = zeros (1, nu);
+  if (isfield (info, "input_offset") && numel (info.input_offset) == nu)
+    din = info.input_offset(:).';
+  endif
+  r = M.Report;
+  r.DataUsed.OutputOffset = c;
+  r.DataUsed.InputOffset = -din;
+  M.Report = r;
+endfunction
+
 ## Report.Fit as the SITB defines it: the fit of the model's simulation
-## (from rest, the data's input and hold) to the estimation output, the
-## numbers comparec reports on the same data. Where comparec's simulator
+## (from rest, the data's input and hold, plus the levels it was estimated
+## with) to the estimation output, the numbers comparec reports on the
+## same data with those levels removed. Where comparec's simulator
 ## fails (simc on stiff high-order models, e.g. coefficients ~1e11), the
 ## engine's own simulation of the model (exact ZOH/FOH filters) is used.
 function M = simulation_fit (M, d, np, simulated)
+  lev = M.Report.DataUsed;
+  yl = d.y - lev.OutputOffset;
+  ul = d.u;
+  if (any (lev.InputOffset))
+    ul = d.u - lev.InputOffset;
+  endif
   if (d.uniform)
-    data = iddata (d.y, d.u, d.Ts, "InterSample", d.intersample);
+    data = iddata (yl, ul, d.Ts, "InterSample", d.intersample);
   else
-    data = iddata (d.y, d.u, "SamplingInstants", d.t,
+    data = iddata (yl, ul, "SamplingInstants", d.t,
                    "InterSample", d.intersample);
   endif
   try

@@ -94,9 +94,18 @@ function c = residtrace_cand_drift (cur, ctx)
   slope = zeros (1, np); tval = zeros (1, np);
   for i = 1:np
     v = squeeze (P(i, i, :));
+    if (! all (v > 0 & isfinite (v)))
+      slope(i) = NaN; tval(i) = NaN;   # a segment without a variance
+      continue;
+    endif
     X = [ones(Kk, 1), tmid(:)] ./ sqrt (v);
-    b = X \ (th(:, i) ./ sqrt (v));
-    Cb = inv (X' * X);
+    [~, Rx] = qr (X, 0);
+    if (rcond (Rx) < eps)
+      slope(i) = NaN; tval(i) = NaN;
+      continue;
+    endif
+    b = Rx \ (Rx' \ (X' * (th(:, i) ./ sqrt (v))));
+    Cb = Rx \ (Rx' \ eye (2));
     slope(i) = b(2); tval(i) = b(2) / sqrt (Cb(2, 2));
   endfor
   ## Qn: shape from the segment increments, scale by ML

@@ -11,6 +11,13 @@
 ## with the model by alternation. Evidence: frequency, amplitude with its
 ## standard deviation, g and its p-value.
 ##
+## Only periods the records resolve are candidates: at least two cycles in
+## the estimation record (of duration T_e) and one in each half of the
+## validation record (T_v), w >= 4 pi / min (T_e, T_v), for the search and
+## for the refined frequency alike. Over a cycle or less a sinusoid cannot
+## be told from a level or a drift (issue 9's blind check: a "sinusoid" at
+## 0.00014 Hz, under one cycle of the heated block's record).
+##
 ## The phase of the disturbance on another record is unknown:
 ## @code{residtrace} keeps w, and fits a and b on each half of the
 ## validation residual to predict the other half (two-fold cross-fitting,
@@ -36,6 +43,18 @@ function c = residtrace_cand_sinusoid (cur, ctx)
     loc = movmedian_ (Iu, 21);
     keep &= ! (Iu > 20 * loc);
   endfor
+  ## periods the records resolve (see above)
+  Tv = numel (ctx.V.y) * Ts;
+  wmin = 4 * pi / min (N * Ts, Tv);
+  wk = 2 * pi * (1:m)' / (N * Ts);
+  resolved = wk >= wmin;
+  if (! any (resolved))
+    c.reason = sprintf (["the records are too short for a sinusoid (at ", ...
+                         "least two cycles: a period of at most %.4g s)"],
+                        2 * pi / wmin);
+    return;
+  endif
+  keep &= resolved;
   if (! any (keep))
     c.reason = "every frequency carries input power";
     return;
@@ -50,7 +69,7 @@ function c = residtrace_cand_sinusoid (cur, ctx)
   t = (0:N-1)' * Ts;
   w0 = 2 * pi * k / (N * Ts);
   dw = 2 * pi / (N * Ts);
-  grid = linspace (w0 - dw, w0 + dw, 41);
+  grid = linspace (max (w0 - dw, wmin), w0 + dw, 41);
   amp = arrayfun (@(w) abs (sum (e .* exp (-1i * w * t))), grid);
   [~, i] = max (amp);
   w = grid(i);

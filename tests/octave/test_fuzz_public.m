@@ -21,6 +21,9 @@
 ## are then finite); the @code{iddata} class, a container, is exempt, as
 ## it holds what it is given.
 ## @end itemize
+## The children run in a temporary working directory, removed at the end;
+## a call that leaves a new file in the test or source folders is a
+## failure.
 ## The number of calls is @env{CTID_FUZZ_CALLS} (default 10000) and the
 ## seed @env{CTID_FUZZ_SEED} (default 12).  @env{CTID_FUZZ_ONLY}, a
 ## comma-separated list of names (functions, classes or gateways), limits
@@ -74,6 +77,18 @@ function test_fuzz_public ()
   printf ("test_fuzz_public: %d targets, %d calls, seed %d\n",
           numel (targets), ncalls, seed);
 
+  ## The children run in a working directory of their own inside tmp
+  ## (removed at the end): a call that writes a file under a name it was
+  ## given (residtrace's 'table' option) writes it there, never into the
+  ## source tree (issue 9: a file tests/octave/InterSample). The folders
+  ## the children used to run in and the sources' are listed before and
+  ## after, and a new file there is a failure.
+  here = fileparts (mfilename ("fullpath"));
+  work = fullfile (tmp, "work");
+  mkdir (work);
+  watched = {here, fullfile(root, "octave")};
+  before = cellfun (@(d) {dir(d).name}, watched, "UniformOutput", false);
+
   nbatch = 8;
   per = ceil (ncalls / nbatch);
   batch_timeout = 600;
@@ -95,9 +110,10 @@ function test_fuzz_public ()
       endif
       cmd = sprintf (["cd %s && timeout -s KILL %d octave-cli -q ", ...
                       "--no-gui --no-window-system --eval ", ...
-                      "\"fuzz_public_child ('%s')\" > %s 2>&1"],
-                     fileparts (mfilename ("fullpath")), batch_timeout,
-                     specfile, fullfile (tmp, "child.out"));
+                      "\"addpath ('%s'); fuzz_public_child ('%s')\" ", ...
+                      "> %s 2>&1"],
+                     work, batch_timeout, here, specfile,
+                     fullfile (tmp, "child.out"));
       rc = system (cmd);
       [r, started] = read_log (log);
       res = [res, r];
@@ -122,6 +138,13 @@ function test_fuzz_public ()
     endwhile
   endfor
   elapsed = time () - t0;
+  for w = 1:numel (watched)
+    added = setdiff ({dir(watched{w}).name}, before{w});
+    if (! isempty (added))
+      failures{end+1} = sprintf ("the calls wrote %s into %s",
+                                 strjoin (added, ", "), watched{w});
+    endif
+  endfor
 
   ## Check the outcome of every call.
   nok = 0; nid = 0;

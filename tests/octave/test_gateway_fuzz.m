@@ -26,6 +26,13 @@ function test_gateway_fuzz ()
     copyfile (fullfile (priv, [gateways{i} ".mex"]), tmp);
   endfor
   addpath (tmp);
+  ## the calls run in a working directory of their own (removed with tmp),
+  ## so that nothing they might write lands in the source tree
+  here = pwd ();
+  work = fullfile (tmp, "work");
+  mkdir (work);
+  cd (work);
+  back = onCleanup (@() cd (here));
 
   ## CTID_FUZZ_SEED (default 42) seeds the data and the random argument
   ## lists, CTID_FUZZ_CALLS (default 300) is the number of random argument

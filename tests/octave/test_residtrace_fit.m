@@ -67,5 +67,43 @@ function check ()
       assert (max (abs (roots (m.F))), p, 0.1 * p);
     endif
   endfor
+  check_initial_state_cov ();
   printf ("test_residtrace_fit: passed\n");
+endfunction
+
+## Issue 9's blind check: with the record's initial state estimated, a fit
+## that the engine found stationary at its first iteration came back with
+## a covariance of zeros (standard deviations of exactly 0). A first-order
+## record with a known free response: the fit with the initial state
+## estimated must give the standard deviations of the fit, on the same
+## noise, of the record with that free response removed exactly and no
+## initial state (the same model; the free response adds one nuisance
+## parameter of 2000 samples' worth, so within 25 %).
+function check_initial_state_cov ()
+  randn ("seed", 1);
+  Ts = 0.05; N = 2000;
+  u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+  F = [1 0.5]; B = 2;
+  t = (0:N-1)' * Ts;
+  a = exp (-0.5 * Ts);
+  x = filter ([0 4 * (1 - a)], [1 -a], u);     # 2/(s+0.5), ZOH
+  v = 0.02 * randn (N, 1);
+  free = 3 * exp (-0.5 * t);
+  ctx = struct ("maxiter", 30, "opts", struct ("substeps", 10),
+                "keep_order", true);
+  tmpl = residtrace_base (struct ("B", B, "F", F, "nk", 0),
+                          struct ("intersample", "zoh", "Ts", Ts));
+  sd = {};
+  for with_x0 = [true false]
+    y = x + v + with_x0 * free;
+    D = struct ("y", y, "u", u, "Ts", Ts, "intersample", "zoh", "loop", [],
+                "vhat", zeros (N, 2), "ysm", y, "initial_state", with_x0);
+    m = residtrace_fit (tmpl, D, ctx, {[]});     # the engine's start
+    assert (m.ok);
+    sd{end+1} = sqrt (diag (m.cov));
+    printf ("initial state %d: theta %s +- %s\n", with_x0,
+            mat2str (m.theta(:).', 5), mat2str (sd{end}.', 3));
+  endfor
+  assert (all (sd{1} > 0));
+  assert (sd{1} ./ sd{2} > 0.95 & sd{1} ./ sd{2} < 1.25);
 endfunction

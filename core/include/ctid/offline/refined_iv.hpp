@@ -1543,6 +1543,7 @@ class Estimator {
           // step raised the loss 500-fold and the iterates cycled).
           const int clips = run.clipped_iterations;
           run = previous;
+          covariance_at(run);
           run.iterations = it;
           run.clipped = false;
           run.clipped_iterations = clips;
@@ -1561,6 +1562,7 @@ class Estimator {
           // with input offsets: 0.0059 -> 1.62 var(y)) and start a cycle.
           const int clips = run.clipped_iterations;
           run = previous;
+          covariance_at(run);
           run.iterations = it;
           run.clipped = false;
           run.clipped_iterations = clips;
@@ -1873,6 +1875,30 @@ class Estimator {
       }
     }
     return rate[n - 1] <= S(0.9) * rate[n - kCreepWindow];
+  }
+
+  // The refined-IV covariance (eq. 2.13, before the sigma^2 scaling) at
+  // run.theta itself: prefilters and instruments from that iterate. For
+  // an iterate returned without an update of its own (the previous one,
+  // when no step from it lowers the loss), whose stored covariance is that
+  // of the step before it, or zero when it is the start (issue 9's blind
+  // check: a record with its initial state estimated, stationary at the
+  // first iteration, reported standard deviations of exactly 0).
+  void covariance_at(Run<S>& run) const {
+    evaluate(run);
+    Matrix<S> cov;
+    std::vector<int> index;
+    S condition = run.condition;
+    for (int g = 0; g < p_.num_groups(); ++g) {
+      Run<S> probe = run;
+      const Vector<S> d = e_.prefilter(run.theta, g, integrator_pole());
+      if (!update_group(probe, g, d, S(1), true, true, cov, index, condition)
+               .ok()) {
+        run.covariance.setConstant(std::numeric_limits<S>::quiet_NaN());
+        return;
+      }
+      store(run, cov, index);
+    }
   }
 
   void store(Run<S>& run, const Matrix<S>& cov,
