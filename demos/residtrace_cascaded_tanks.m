@@ -1,6 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{S} =} residtrace_cascaded_tanks ()
-## @deftypefnx {} {@var{S} =} residtrace_cascaded_tanks (@var{outdir}, @var{draws}, @var{greybox})
+## @deftypefnx {} {@var{S} =} residtrace_cascaded_tanks (@var{outdir}, @var{draws}, @var{greybox}, @var{rule}, @var{variant})
 ## Issue 9's two-tank bar on a replica of the Cascaded Tanks benchmark
 ## (@code{cascaded_tanks_sim}): does the linear model plus what
 ## @code{residtrace} traces reach a validation simulation RMSE well below
@@ -30,10 +30,18 @@
 ## table, and per draw the structure table, residtrace's ranking of each
 ## pass (every candidate: score, p, variant, RMSE, reason) and its
 ## warnings. @var{draws}: vector of draw numbers (default 1:4).
+## @var{rule}: the user's choice of structure, "simplest" (default, as
+## above) or "best" (the best validation R_T^2, @code{selcstruc (V,
+## "c2sort", "RT2")}: the sensitivity of the figures to that choice; the
+## report is then cascaded_tanks_best.md). @var{variant}: the replica's
+## excitation, "nominal" (default) or "strong" (see
+## @code{cascaded_tanks_sim}; reports cascaded_tanks_strong*.md).
+## @var{greybox} may also be a vector of the draws that get the grey-box
+## fit.
 ## @var{S}: struct array of the figures.
 ## @end deftypefn
 
-function S = residtrace_cascaded_tanks (outdir, draws, greybox)
+function S = residtrace_cascaded_tanks (outdir, draws, greybox, rule, variant)
   if (nargin < 1 || isempty (outdir))
     outdir = "results";
   endif
@@ -43,6 +51,16 @@ function S = residtrace_cascaded_tanks (outdir, draws, greybox)
   if (nargin < 3 || isempty (greybox))
     greybox = true;
   endif
+  if (nargin < 4 || isempty (rule))
+    rule = "simplest";
+  endif
+  if (nargin < 5 || isempty (variant))
+    variant = "nominal";
+  endif
+  if (! any (strcmp (rule, {"simplest", "best"})))
+    error ("residtrace_cascaded_tanks:badOption",
+           "residtrace_cascaded_tanks: rule '%s'", rule);
+  endif
   here = fileparts (mfilename ("fullpath"));
   addpath (fullfile (here, "..", "octave"));
   addpath (here);
@@ -51,7 +69,12 @@ function S = residtrace_cascaded_tanks (outdir, draws, greybox)
   NN = [1 1 0; 1 2 0; 2 2 0; 1 3 0; 2 3 0; 3 3 0; 1 1 1; 1 2 1];
   S = struct ([]);
   for d = draws(:).'
-    s = run_draw (d, NN, greybox);
+    if (islogical (greybox))
+      g = greybox;
+    else
+      g = any (greybox == d);
+    endif
+    s = run_draw (d, NN, g, rule, variant);
     printf (["draw %d [%s]: BLA %.3f V (rest) %.3f V (x0); residtrace ", ...
              "{%s} given %.3f before %.3f final %.3f V; grey-box %.3f V; ", ...
              "%.0f s wall, %.0f s CPU\n"], d, num2str (s.nn),
@@ -68,11 +91,19 @@ function S = residtrace_cascaded_tanks (outdir, draws, greybox)
   if (! exist (outdir, "dir"))
     mkdir (outdir);
   endif
-  write_report (S, NN, fullfile (outdir, "cascaded_tanks.md"));
+  name = "cascaded_tanks";
+  if (strcmp (variant, "strong"))
+    name = [name, "_strong"];
+  endif
+  if (strcmp (rule, "best"))
+    name = [name, "_best"];
+  endif
+  name = [name, ".md"];
+  write_report (S, NN, fullfile (outdir, name), rule, variant);
 endfunction
 
-function s = run_draw (d, NN, greybox)
-  [de, dv, truth] = cascaded_tanks_sim ("records", d);
+function s = run_draw (d, NN, greybox, rule, variant)
+  [de, dv, truth] = cascaded_tanks_sim ("records", d, variant);
   s.draw = d;
   s.overflow = [sum(truth.top1e), sum(truth.top2e), sum(truth.top1v), ...
                 sum(truth.top2v)];
@@ -86,7 +117,11 @@ function s = run_draw (d, NN, greybox)
   [V, vinfo] = srivcstruc (de, dv, NN, "NN", "list");
   warning (ws);
   s.V = V;
-  s.nn = parsimonious (V);
+  if (strcmp (rule, "best"))
+    s.nn = selcstruc (V, "c2sort", "RT2")(1,:);
+  else
+    s.nn = parsimonious (V);
+  endif
   lastwarn ("");
   [M, ~, ~, info] = srivc (de, s.nn);
   [~, id] = lastwarn ();
@@ -311,7 +346,36 @@ function t = pass_tables (R)
                       num (r, "rmse"), num (r, "screened"), num (r, "seconds"),
                       strrep (fld (r, "reason"), "|", "/"))];
     endfor
+    ## each candidate's variants (BIC on the estimation record) and evidence
+    t = [t, "\nVariants (BIC, estimation record) and evidence:\n\n"];
+    for j = 1:numel (rk)
+      r = rk(j);
+      v = "";
+      if (isfield (r, "variants") && isstruct (r.variants))
+        for k = 1:numel (r.variants)
+          v = [v, sprintf("%s: %.1f%s; ", r.variants(k).variant,
+                          r.variants(k).bic,
+                          ifelse_ (r.variants(k).converged, "", " (screened)"))];
+        endfor
+      endif
+      ev = "";
+      if (isfield (r, "evidence") && isstruct (r.evidence)
+          && isfield (r.evidence, "text"))
+        ev = strrep (r.evidence(1).text, "\n", " ");
+      endif
+      if (! isempty (v) || ! isempty (ev))
+        t = [t, sprintf("- %s: %s%s\n", fld (r, "effect"), v, ev)];
+      endif
+    endfor
   endfor
+endfunction
+
+function s = ifelse_ (c, a, b)
+  if (c)
+    s = a;
+  else
+    s = b;
+  endif
 endfunction
 
 function v = fld (r, f)
@@ -329,27 +393,32 @@ function v = num (r, f)
   endif
 endfunction
 
-function write_report (S, NN, file)
+function write_report (S, NN, file, rule, variant)
   fid = fopen (file, "w");
   if (fid < 0)
     error ("residtrace_cascaded_tanks:badInput",
            "residtrace_cascaded_tanks: cannot write %s", file);
   endif
   p = cascaded_tanks_sim ("params");
-  fprintf (fid, "# residtrace on a Cascaded Tanks benchmark replica\n\n");
+  if (strcmp (variant, "strong"))
+    p.urms = 2.2;
+  endif
+  fprintf (fid, "# residtrace on a Cascaded Tanks benchmark replica (%s)\n\n",
+           variant);
   fprintf (fid, ["Records: demos/cascaded_tanks_sim.m (k1 = %g, k2 = %g, ", ...
                  "k3 = %g, k4 = %g, frac = %g, rims %g V and %g V, x0 = ", ...
                  "[%g %g] V, sensor noise %g V rms, %g-V quantisation, ", ...
                  "multisine %g +- %g V rms up to %g Hz, %d samples at ", ...
                  "Ts = %g s). Linear model: srivc with the structure of ", ...
-                 "the rule of residtrace_blind among %d structures; then ", ...
+                 "rule '%s' (simplest: as residtrace_blind; best: the best ", ...
+                 "validation R_T^2) among %d structures; then ", ...
                  "residtrace (de, M, \"validation\", dv) with defaults. ", ...
                  "Every RMSE is a validation simulation in V. Overflow: ", ...
                  "samples with the upper (u) / lower (l) tank at its rim, ", ...
                  "estimation / validation record.\n\n"],
            p.k1, p.k2, p.k3, p.k4, p.frac, p.x1max, p.x2max, p.x0(1),
            p.x0(2), p.sigma, p.q, p.umean, p.urms, p.fmax, p.N, p.Ts,
-           rows (NN));
+           rule, rows (NN));
   fprintf (fid, ["| draw | overflow u/l est, u/l val | structure | BLA ", ...
                  "from rest | BLA x0 est. | effects named (in order) | ", ...
                  "R.rmse_given | R.rmse_before | R.rmse_final | final / ", ...
