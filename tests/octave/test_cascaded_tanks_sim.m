@@ -39,6 +39,25 @@ function test_cascaded_tanks_sim ()
   check_water_balance ();
   check_pump_and_substeps ();
   check_records ();
+  check_errors ();
+endfunction
+
+function check_errors ()
+  ids = {};
+  calls = {@() cascaded_tanks_sim ("records", 1, "bogus"), ...
+           @() cascaded_tanks_sim ("bogus"), ...
+           @() cascaded_tanks_sim ([1 2 3], -4, struct ()), ...
+           @() cascaded_tanks_sim ("multisine", 16, 4)};
+  want = {"cascaded_tanks_sim:badOption", "cascaded_tanks_sim:badOption", ...
+          "cascaded_tanks_sim:badInput", "cascaded_tanks_sim:badInput"};
+  for k = 1:numel (calls)
+    try
+      calls{k} ();
+      error ("test_cascaded_tanks_sim: call %d did not fail", k);
+    catch err
+      assert (err.identifier, want{k});
+    end_try_catch
+  endfor
 endfunction
 
 function p = clean_params ()
