@@ -101,7 +101,7 @@ endfunction
 ## limited too, the output in volts. Chosen here (before any
 ## identification was run on the replica): every number below.
 function p = tank_params ()
-  p.k1 = 0.055;      # upper outflow, V^0.5/s: tau1 = 2 sqrt(x1)/k1 = 89 s at 6 V
+  p.k1 = 0.055;      # upper outflow, V^0.5/s: tau1 = 2 sqrt(x1)/k1, 89 s at 6 V
   p.k2 = 0.060;      # inflow to the lower tank (k2/k1: area and sensor ratio)
   p.k3 = 0.058;      # lower outflow: tau2 = 91 s at 6.2 V
   p.k4 = 0.029;      # pump gain, V/s per V: x1 = 6.95 V at rest at u = 5 V
