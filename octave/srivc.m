@@ -215,6 +215,14 @@ endfunction
 %! assert (info.offset, 3, 1e-6);
 %! assert (info.simulated, y, 1e-6);
 
+%!test  # raw units with an input of nonzero mean: the output offset
+%! ## and the gain are nearly collinear (session 7: not converged, c = 18.6)
+%! y = 20 + simc (struct ("B", 4, "F", [1 2.4 4]), 5 + 3 * u, Ts);
+%! [M, ~, ~, info] = srivc (iddata (y, 5 + 3 * u, Ts), [1 2 0]);
+%! assert (info.converged);
+%! assert (info.offset, 20, 1e-6);
+%! assert (M.theta, [2.4 4 4], 1e-6);
+
 %!test  # raw units: a record that does not start at rest gets an offset
 %! [M, ~, ~, info] = srivc (iddata (x + 5, u, Ts), [1 2 0], "Tol", 1e-10);
 %! assert (info.output_offset);
