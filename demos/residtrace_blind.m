@@ -91,7 +91,7 @@ function s = run_rig (rig, nonlinear, rule)
   if (strcmp (rule, "best"))
     s.nn = s.nn_best;
   else
-    s.nn = parsimonious (V);
+    s.nn = parsimonious_structure (V);
   endif
   s.rule = rule;
   lastwarn ("");
@@ -148,48 +148,6 @@ function s = run_rig (rig, nonlinear, rule)
     else
       s.verdict = "right";
     endif
-  endif
-endfunction
-
-## The user's rule: of the structures whose validation residual variance
-## (1 - R_T^2) is within 10 % of the smallest, the one with the fewest
-## parameters (then the best R_T^2).  The plain best R_T^2 can be a
-## structure with a spurious pole (on the conveyor, a time constant of
-## 3e-10 s); srivcstruc's fit (%) is no guide on raw records (it is
-## computed without the output offset: -24 % to -670 % here).
-function nn = parsimonious (V)
-  r = 1 - V(:,1);
-  ok = isfinite (r) & r <= 1.1 * min (r);
-  npar = sum (V(:,3:4), 2);
-  npar(! ok) = Inf;
-  cand = find (npar == min (npar));
-  [~, j] = min (r(cand));
-  nn = V(cand(j), 3:end-2);
-endfunction
-
-## R.effects as a cell of names, whatever its form.
-function c = effect_names (e)
-  if (iscellstr (e))
-    c = e(:).';
-  elseif (ischar (e))
-    c = {e};
-  elseif (isstruct (e) && isfield (e, "effect"))
-    c = {e.effect};
-  elseif (iscell (e))
-    c = cellfun (@(x) disp_name (x), e, "UniformOutput", false);
-    c = c(:).';
-  else
-    c = {};
-  endif
-endfunction
-
-function n = disp_name (x)
-  if (ischar (x))
-    n = x;
-  elseif (isstruct (x) && isfield (x, "effect"))
-    n = x.effect;
-  else
-    n = "?";
   endif
 endfunction
 

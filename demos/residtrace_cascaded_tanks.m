@@ -120,7 +120,7 @@ function s = run_draw (d, NN, greybox, rule, variant)
   if (strcmp (rule, "best"))
     s.nn = selcstruc (V, "c2sort", "RT2")(1,:);
   else
-    s.nn = parsimonious (V);
+    s.nn = parsimonious_structure (V);
   endif
   lastwarn ("");
   [M, ~, ~, info] = srivc (de, s.nn);
@@ -278,44 +278,6 @@ endfunction
 
 function r = rms_ (e)
   r = sqrt (mean (e(:) .^ 2));
-endfunction
-
-## The user's rule of residtrace_blind: of the structures whose validation
-## residual variance (1 - R_T^2) is within 10 % of the smallest, the one
-## with the fewest parameters (then the best R_T^2).
-function nn = parsimonious (V)
-  r = 1 - V(:,1);
-  ok = isfinite (r) & r <= 1.1 * min (r);
-  npar = sum (V(:,3:4), 2);
-  npar(! ok) = Inf;
-  cand = find (npar == min (npar));
-  [~, j] = min (r(cand));
-  nn = V(cand(j), 3:end-2);
-endfunction
-
-function c = effect_names (e)
-  if (iscellstr (e))
-    c = e(:).';
-  elseif (ischar (e))
-    c = {e};
-  elseif (isstruct (e) && isfield (e, "effect"))
-    c = {e.effect};
-  elseif (iscell (e))
-    c = cellfun (@(x) disp_name (x), e, "UniformOutput", false);
-    c = c(:).';
-  else
-    c = {};
-  endif
-endfunction
-
-function n = disp_name (x)
-  if (ischar (x))
-    n = x;
-  elseif (isstruct (x) && isfield (x, "effect"))
-    n = x.effect;
-  else
-    n = "?";
-  endif
 endfunction
 
 ## Every candidate of every pass: effect, group, variant, score, p,
