@@ -370,7 +370,7 @@ function [R, varargout] = residtrace (varargin)
   ## the record's levels (raw units): the input level is removed from
   ## both records, an output offset joins the re-estimated model
   Vraw = V;
-  [c_given, u_given] = carried_levels (M, columns (d.u));
+  [c_given, u_given] = contsid_carried_levels (M, columns (d.u));
   lev = level_plan (D, Mst, opts.levels, u_given);
   D.u -= lev.u0; V.u -= lev.u0;
   if (! isempty (V.pre))
@@ -1095,17 +1095,16 @@ function L = level_plan (D, Mst, mode, u_carried)
       ## an output at rest at its first samples, away from zero, that
       ## never comes back to zero (issue 9's blind heated block: 22 degC
       ## at 0 W, its mean only 2.7 standard deviations from zero)
-      m = min (5, numel (D.y));
-      y1 = D.y(1:m);
+      [away, level] = contsid_start_level (D.y);
+      y1 = D.y(1:min (5, numel (D.y)));
       span = max (D.y) - min (D.y);
-      at_level = span > 0 && max (y1) - min (y1) <= 0.05 * span ...
-                 && abs (median (y1)) > 0.05 * span ...
-                 && mean (sign (D.y) == sign (median (y1))) >= 0.99;
+      at_level = span > 0 && max (y1) - min (y1) <= 0.05 * span && away ...
+                 && mean (sign (D.y) == sign (level)) >= 0.99;
       if (raw_u || raw_y)
         L.why = "the record is in raw units (means far from zero)";
       elseif (at_level)
         L.why = sprintf (["the output starts at rest at %.4g and keeps ", ...
-                          "its sign"], median (y1));
+                          "its sign"], level);
       else
         return;
       endif
@@ -1170,27 +1169,6 @@ function m = refresh_cov (base, cur)
   m.cov = NaN (numel (cur.theta));
   if (isequal (size (cur.theta), size (base.theta)) || isempty (base.theta))
     m.cov = cur.cov;
-  endif
-endfunction
-
-## The output offset c and input offsets d (1-by-nu) that M carries in
-## Report.DataUsed (srivc's estimated levels; MATLAB's convention: y - c =
-## M (u - d)); zeros for a model without them.
-function [c, d] = carried_levels (M, nu)
-  c = 0;
-  d = zeros (1, nu);
-  try
-    lev = get (M, "Report").DataUsed;
-  catch
-    return;                            # a model class without a Report
-  end_try_catch
-  if (isfield (lev, "OutputOffset") && isscalar (lev.OutputOffset)
-      && isfinite (lev.OutputOffset))
-    c = double (lev.OutputOffset);
-  endif
-  if (isfield (lev, "InputOffset") && numel (lev.InputOffset) == nu
-      && all (isfinite (lev.InputOffset(:))))
-    d = double (lev.InputOffset(:).');
   endif
 endfunction
 

@@ -140,7 +140,7 @@ function [V, info, varargout] = srivcstruc (varargin)
     else
       ## the model as estimated: with the levels it carries (srivc on a
       ## raw record, Report.DataUsed.OutputOffset and InputOffset)
-      [c, d] = carried_levels (M);
+      [c, d] = contsid_carried_levels (M, columns (uv));
       ys = simc (M, uv - d, get (ZV, "Ts")) + c;
       y = yv(n0v:end);
       ys = ys(n0v:end);
@@ -152,18 +152,6 @@ function [V, info, varargout] = srivcstruc (varargin)
     V(k, end-1) = log10 (est.condition);
     V(k, end) = numel (y);
   endfor
-endfunction
-
-## The output and input offsets M was estimated with (0 when it has none).
-function [c, d] = carried_levels (M)
-  lev = M.Report.DataUsed;
-  c = 0; d = 0;
-  if (isfield (lev, "OutputOffset") && ! isempty (lev.OutputOffset))
-    c = lev.OutputOffset;
-  endif
-  if (isfield (lev, "InputOffset") && ! isempty (lev.InputOffset))
-    d = lev.InputOffset(:).';
-  endif
 endfunction
 
 function [M, RT2, YIC, info] = quiet_srivc (ZE, nn, pass)

@@ -282,9 +282,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     if (ischar (opts.OutputOffset) && strcmpi (opts.OutputOffset, "auto"))
       ## A record that does not start at rest (raw units, an operating
       ## point) gets an output offset; one that starts at rest does not.
-      m = min (5, n);
-      e.output_offset = abs (median (d.y(1:m))) ...
-                        > 0.05 * (max (d.y) - min (d.y));
+      e.output_offset = contsid_start_level (d.y);
     else
       e.output_offset = logical_option (opts.OutputOffset, "OutputOffset", 1);
     endif
