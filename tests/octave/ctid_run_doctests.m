@@ -3,10 +3,7 @@
 ##
 ## ctid_run_doctests ("rlssvf.m") -- path relative to <root>/octave.
 function ctid_run_doctests (file)
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   target = fullfile (root, "octave", file);
   [n, nmax] = test (target, "quiet", stdout);

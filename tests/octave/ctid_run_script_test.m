@@ -1,10 +1,7 @@
 ## Runs the script test tests/octave/<name>.m with the toolbox on the path;
 ## the script signals failure by raising an error.
 function ctid_run_script_test (name)
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "tests", "octave"));
   feval (name);

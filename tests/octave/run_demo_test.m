@@ -3,10 +3,7 @@
 ## temporary output folder `out` (root: the repository), and removes the
 ## folder afterwards, also when a check fails.
 function run_demo_test (check)
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "demos"));
   out = tempname ();
   unwind_protect

@@ -27,10 +27,7 @@
 ## @end deftypefn
 
 function test_blind_rigs ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
   pkg load control;

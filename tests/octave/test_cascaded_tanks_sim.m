@@ -25,10 +25,7 @@
 ## @end deftypefn
 
 function test_cascaded_tanks_sim ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
   pkg load control;

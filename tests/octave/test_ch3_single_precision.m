@@ -17,10 +17,7 @@
 ## deviations are 0.02-0.3 % (a margin of about 3). A scaled recursion
 ## that lost definiteness or drifted would fail.
 function test_ch3_single_precision ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "demos"));
   est = ch3_bandpass_record (1, 0, 1);
   train = ch3_bandpass_record (4, pi / 2, 1);

@@ -2,7 +2,7 @@
 ## and table, and both routes track (MSE after the start-up well below the
 ## variance of the parameters themselves).
 function test_demo_ch1_indirect ()
-  root = getenv ("CTID_ROOT");
+  root = ctid_test_root ();
   addpath (fullfile (root, "demos"));
   out = tempname ();
   demo_ch1_indirect (out, 2);

@@ -1,7 +1,7 @@
 ## The main demo (the README's first command) runs and writes its figure
 ## and results table; two noise seeds keep it short.
 function test_demo_rlssvf_ltv ()
-  root = getenv ("CTID_ROOT");
+  root = ctid_test_root ();
   addpath (fullfile (root, "demos"));
   out = tempname ();
   demo_rlssvf_ltv (out, 2);

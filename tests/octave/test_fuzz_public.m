@@ -41,10 +41,7 @@
 ## @end deftypefn
 
 function test_fuzz_public ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   root = canonicalize_file_name (root);
   ncalls = env_number ("CTID_FUZZ_CALLS", 10000);
   seed = env_number ("CTID_FUZZ_SEED", 12);

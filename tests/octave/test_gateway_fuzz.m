@@ -13,7 +13,7 @@
 ## call here, or the test fails (the list stays complete as gateways are
 ## added).
 function test_gateway_fuzz ()
-  root = getenv ("CTID_ROOT");
+  root = ctid_test_root ();
   priv = fullfile (root, "octave", "private");
   tmp = tempname ();
   mkdir (tmp);

@@ -23,10 +23,7 @@
 ## @end deftypefn
 
 function test_issue12_silent_cases ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   warning ("off", "all");
   randn ("state", 3);

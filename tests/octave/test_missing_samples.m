@@ -24,10 +24,7 @@
 ## @end deftypefn
 
 function test_missing_samples ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fullfile (fileparts (mfilename ("fullpath")), "..", "..");
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   pkg load control
   warning ("off", "all");

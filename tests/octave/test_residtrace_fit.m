@@ -15,10 +15,7 @@
 ## ms): the third order is kept and the pole estimated within 10 %.
 ## @end itemize
 function test_residtrace_fit ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   here = pwd ();
   unwind_protect
     cd (fullfile (root, "octave", "private"));   # the private functions

@@ -22,10 +22,7 @@
 ## @end deftypefn
 
 function test_residtrace_loud ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
   rig = blind_rigs ("pendulum", 1, 0);

@@ -22,10 +22,7 @@
 ## @end deftypefn
 
 function test_residtrace_physical ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "demos"));
   priv = fullfile (root, "octave", "private");
   here = pwd ();

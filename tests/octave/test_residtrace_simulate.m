@@ -21,10 +21,7 @@
 ## @end deftypefn
 
 function test_residtrace_simulate ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   pkg load control
   tmp = tempname ();
   mkdir (tmp);

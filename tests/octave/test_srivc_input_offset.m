@@ -15,10 +15,7 @@
 ## @end deftypefn
 
 function test_srivc_input_offset ()
-  root = getenv ("CTID_ROOT");
-  if (isempty (root))
-    root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
-  endif
+  root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   f = fullfile (root, "..", "shared", "data", "emps", "DATA_EMPS.mat");
   if (! exist (f, "file"))
