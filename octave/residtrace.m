@@ -211,7 +211,13 @@
 ## rmse_prediction (second group), kind, applicable, reason, evidence,
 ## screened (true: its fits stopped after three SRIVC iterations, because
 ## that fit's correction was far from significant, p >= 0.2; see Speed),
-## seconds (time spent on the candidate).
+## seconds (time spent on the candidate), failed (it applies to the
+## model but its estimation failed: not tested).
+## @item untested
+## cell of the effects that could not be estimated in the pass that
+## ended the search (found nothing): they were not tested, and the
+## verdict names them ("not tested ..., their estimation failed"; when
+## no candidate could be tested at all it begins "cannot tell").
 ## @item rmse_given, rmse_before, rmse_after
 ## validation RMSE of the output simulated from the input: of M as given
 ## (with the output and input offsets it carries, as @code{srivc} returns
@@ -444,6 +450,7 @@ function [R, varargout] = residtrace (varargin)
   endif
   R.effect = "none";
   R.ranking = struct ([]);
+  R.untested = {};
   R.rmse_after = R.rmse_before;
   R.rmse_after_kind = "simulation";
   R.rmse_after_tracked = NaN;
@@ -592,6 +599,13 @@ function [R, varargout] = residtrace (varargin)
     R.evidence = x0row.evidence;
   endif
   R.effects = cur.effects;
+  if (! isempty (history) && strcmp (history(end).effect, "none")
+      && ! isempty (history(end).ranking))
+    ## the pass that ended the search: a candidate that could not be
+    ## estimated there was never tested against the residual it left
+    r = history(end).ranking;
+    R.untested = {r([r.failed]).effect};
+  endif
   R.verdict = verdict_text (R, history);
   R.final_model = export_model (cur, D.Ts);
   R.rmse_final = rms_ (e_sim);
@@ -673,9 +687,14 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
     elseif (c.applicable && ! (tests.white_p < opts.alpha
                                && tests.indep_p > opts.alpha))
       c.applicable = false;
-      c.reason = sprintf (["the residual is white (p = %.2g) or depends ", ...
-                           "on the input (p = %.2g)"], tests.white_p,
-                          tests.indep_p);
+      if (tests.white_p >= opts.alpha)
+        c.reason = sprintf ("the residual is white (p = %.2g >= alpha)",
+                            tests.white_p);
+      else
+        c.reason = sprintf (["the residual depends on the input (p = ", ...
+                             "%.2g < alpha): a noise model cannot ", ...
+                             "explain it"], tests.indep_p);
+      endif
     endif
     row = score (c, cur, ctx, e0);
     vrows = [vrows; row];
@@ -805,7 +824,7 @@ function row = score (c, cur, ctx, e0)
                 "rmse", NaN, "kind", c.kind, "applicable", c.applicable,
                 "reason", c.reason, "evidence", c.evidence, "model", [],
                 "e1", [], "rmse_tracked", NaN, "rmse_prediction", NaN,
-                "screened", false, "seconds", NaN,
+                "screened", false, "seconds", NaN, "failed", c.failed,
                 "group", ifelse_ (strcmp (c.kind, "simulation"),
                                   "simulated from the input",
                                   "uses the validation output"));
@@ -817,6 +836,7 @@ function row = score (c, cur, ctx, e0)
     e1 = guarded ("", @() residtrace_valerror (c.model, ctx.V, ctx));
   catch err
     row.applicable = false;
+    row.failed = true;
     row.reason = ["cannot test: validation failed: " err.message];
     return;
   end_try_catch
@@ -897,6 +917,7 @@ function out = guarded (effect, f)
         where = [" in " err.stack(1).name];
       endif
       out = residtrace_cand (effect);
+      out.failed = true;
       out.reason = sprintf ("cannot test: numerical failure%s (%s)", where,
                             err.message);
     end_try_catch
@@ -1154,10 +1175,21 @@ function [ok, why] = excitation (D, V, np)
 endfunction
 
 function s = verdict_text (R, history)
-  if (isempty (R.effects))
+  if (isempty (R.effects) && ! isempty (R.untested)
+      && ! any (isfinite ([history(end).ranking.score])))
+    s = "cannot tell: no candidate of the library could be tested";
+  elseif (isempty (R.effects))
     s = "no effect of the library explains the residual";
+    if (! isempty (R.untested))
+      s = [s " among the candidates tested"];
+    endif
   else
     s = ["found: " strjoin(R.effects, ", ")];
+  endif
+  if (! isempty (R.untested))
+    s = sprintf ("%s; not tested%s, their estimation failed: %s", s,
+                 ifelse_ (isempty (R.effects), "", " in the last pass"),
+                 strjoin (R.untested, ", "));
   endif
   if (! isempty (R.levels.text))
     s = [s "; " R.levels.text];

@@ -64,6 +64,7 @@ function c = residtrace_cand_coulomb (cur, ctx)
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   s = sigs{strcmp (names, m.variant_)};

@@ -34,6 +34,7 @@ function c = residtrace_cand_delay (cur, ctx)
   endfor
   if (isempty (trials))
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   [~, order] = sort (trials(:, 3));
@@ -48,6 +49,7 @@ function c = residtrace_cand_delay (cur, ctx)
   endfor
   if (isempty (best))
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   c.applicable = true;

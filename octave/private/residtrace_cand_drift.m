@@ -64,6 +64,7 @@ function c = residtrace_cand_drift (cur, ctx)
   endfor
   if (sum (ok) < 3)
     c.reason = "the segment fits failed";
+    c.failed = true;
     return;
   endif
   th = th(ok, :); P = P(:, :, ok); Kk = sum (ok);

@@ -61,6 +61,7 @@ function c = residtrace_cand_order (cur, ctx)
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   c.applicable = true;

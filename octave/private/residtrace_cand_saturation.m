@@ -101,6 +101,7 @@ function c = residtrace_cand_saturation (cur, ctx)
   [m, c.variants] = residtrace_select (tmpls, names, D, ctx, starts);
   if (isempty (m))
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   for it = 1:3 * isempty (m.phys)   # the levels and the model, alternately

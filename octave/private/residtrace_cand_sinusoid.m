@@ -79,6 +79,7 @@ function c = residtrace_cand_sinusoid (cur, ctx)
   mdl = residtrace_fit (tm, ctx.D, ctx, {cur.F});
   if (! mdl.ok)
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   c.applicable = true;

@@ -78,6 +78,7 @@ function c = residtrace_cand_state (cur, ctx)
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   nadd = m.np - cur.np;

@@ -86,6 +86,7 @@ function c = residtrace_cand_static (cur, ctx)
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
   if (isempty (m))
     c.reason = [why "the estimation failed"];
+    c.failed = true;
     return;
   endif
   if (strcmp (m.channels(end).type, "clip"))

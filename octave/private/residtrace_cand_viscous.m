@@ -25,6 +25,7 @@ function c = residtrace_cand_viscous (cur, ctx)
   m = residtrace_fit (t, ctx.D, ctx, starts);
   if (! m.ok)
     c.reason = "the estimation failed";
+    c.failed = true;
     return;
   endif
   c.applicable = true;

@@ -122,6 +122,9 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
     endfor
     if (isempty (best))
       model.ok = false;
+      if (round == 1 && ! (isfield (ctx, "keep_order") && ctx.keep_order))
+        model = refit_without_fast_poles (tmpl, D, ctx, model);
+      endif
       return;
     endif
     if (! isempty (k_lev))
@@ -263,14 +266,20 @@ endfunction
 ## held-out two tanks; bringing the pole back to p Ts = 1000 instead of
 ## removing it was tried too: on the Silverbox the fits from there chose
 ## y^3 and an output offset, 0.0069 V after three effects against 0.0063).
-function red = residualised (model, Ts)
+##
+## With @var{limit} and @var{trim} (the retry of a fit that failed from
+## every start, see @code{refit_without_fast_poles}): the poles with p Ts
+## > @var{limit}, and a numerator that would no longer be strictly proper
+## is cut to its nn lowest-order coefficients (the in-band part: its
+## static gain and low-frequency terms; the fit re-estimates them all).
+function red = residualised (model, Ts, limit = 1000, trim = false)
   red = [];
   F = model.F / model.F(1);
   n = numel (F) - 1;
   z = roots (F);
-  fast = imag (z) == 0 & -real (z) * Ts > 1000;
+  fast = imag (z) == 0 & -real (z) * Ts > limit;
   nn = n - sum (fast);
-  if (! any (fast) || nn < 1 || any ([model.channels.nb] > nn))
+  if (! any (fast) || nn < 1 || (! trim && any ([model.channels.nb] > nn)))
     return;
   endif
   r = 0;
@@ -287,8 +296,32 @@ function red = residualised (model, Ts)
   red.fixed(nn-r+1:nn) = true;
   g = prod (-real (z(fast)));
   for j = 1:numel (red.channels)
-    red.channels(j).B /= g;
+    B = red.channels(j).B / g;
+    if (numel (B) > nn)
+      B = B(end-nn+1:end);
+      red.channels(j).nb = nn;
+    endif
+    red.channels(j).B = B;
   endfor
+endfunction
+
+## Every start of a fit failed: typically the engine found its
+## instruments rank deficient because a pole of the start lies far beyond
+## what the samples resolve (its filtered regressors vanish; issue 9's
+## Cascaded Tanks replica: a user's [3 3 0] model with a pole at p Ts =
+## 68 made every candidate's fit fail, and residtrace could test none).
+## The template with its real poles beyond the Nyquist frequency (p Ts >
+## pi) residualised is fitted instead: the candidate is then tested in
+## the order the samples determine. @var{model} (failed) is returned when
+## there is no such pole or that fit fails too.
+function model = refit_without_fast_poles (tmpl, D, ctx, model)
+  red = residualised (tmpl, D.Ts, pi, true);
+  if (! isempty (red))
+    m = residtrace_fit (red, D, ctx, {red.F});
+    if (m.ok)
+      model = m;
+    endif
+  endif
 endfunction
 
 ## F stable apart from its structural zeros at the origin (integrators);
