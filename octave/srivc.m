@@ -44,7 +44,12 @@
 ## axis drives the estimate toward an unstable pole) or does not converge
 ## on raw units (an input whose mean is not zero), fits again with them
 ## and keeps that fit when it converges to a stable model with a smaller
-## loss (said in @var{info}.reason; not with a given initial estimate). Reported in @var{info}.offset and
+## loss; and at an operating point (the output offset estimated and an
+## input whose mean lies more than 5 % of its range from zero: a record
+## at rest at u0, y0) it tries them after a converged fit too and keeps
+## them when the loss falls by more than BIC's price, n log (V / V2) >
+## nu log (n) (said in @var{info}.reason; not with a given initial
+## estimate). Reported in @var{info}.offset and
 ## @var{info}.input_offset. The
 ## default of OutputOffset, @qcode{"auto"}, estimates c when the record
 ## does not start at rest (the median of its first samples exceeds 5 % of
@@ -237,6 +242,36 @@ endfunction
 %! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "InputOffset", true, "Tol", 1e-10);
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.input_offset, 0.5, 1e-6);
+
+%!test  # at an operating point: at rest at u0 = 5, y0 = 13 (raw units)
+%! ## simulated independently (control's ZOH c2d and lsim, after a
+%! ## run-in at u0); the default 'auto' levels must find the input level
+%! ## too (before: a converged fit without it, RMSE 0.57 against noise
+%! ## 0.05, gain 1.36)
+%! pkg load control
+%! randn ("state", 3); rand ("state", 3);
+%! Ts = 0.05; N = 4000;
+%! u = 5 + idinput (N, "prbs", [0 0.05]);
+%! pre = 5 * ones (2000, 1);
+%! G = c2d (tf (2, [1 1.2 1]), Ts);
+%! x = lsim (G, [pre; u])(2001:end);
+%! y = x + 3 + 0.05 * randn (N, 1);
+%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0]);
+%! assert (info.converged && info.stable && info.output_offset);
+%! assert (info.input_offset, -5, 0.1);
+%! assert (! isempty (strfind (info.reason, "input offset(s)")));
+%! lev = get (M, "Report").DataUsed;
+%! ys = lsim (c2d (tf (M.B, M.F), Ts), u - lev.InputOffset);
+%! assert (sqrt (mean ((y - ys - lev.OutputOffset) .^ 2)) < 0.06);
+%! assert (M.B(end) / M.F(end), 2, 0.02);
+%! ## the same input from rest at u = 0 (y = 3 + G u): no input level to
+%! ## find, and BIC keeps the fit without one
+%! x = lsim (G, u);
+%! [M, ~, ~, info] = srivc (iddata (x + 3 + 0.05 * randn (N, 1), u, Ts),
+%!                          [1 2 0]);
+%! assert (info.converged && info.output_offset);
+%! assert (! any (info.input_offset));
+%! assert (M.B(end) / M.F(end), 2, 0.02);
 
 %!test  # info.clipped: a stable fit is not pulled back; an unstable plant is
 %! [~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0], "lambda", 3);
