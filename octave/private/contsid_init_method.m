@@ -81,6 +81,11 @@ function start = read_start (fname, init, layout, refused = {}, why = "")
     endif
     return;
   endif
+  if (! isnumeric (init) && ! isa (init, "idpoly") && ! isa (init, "idtf"))
+    error ([fname ":badOption"],
+           ["%s: InitMethod must be 'sriv' ('srivc'), 'ivgpmf' ('ivsvf'), ", ...
+            "'lssvf', an idpoly or [f b]"], fname);
+  endif
   if (any (strcmp ("model", refused)))
     error ([fname ":notSupported"],
            "%s: an initial model is not supported: %s", fname, why);
