@@ -301,3 +301,20 @@ endfunction
 %! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
 %! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0])
 %! Ms = srivc (iddata (x + v, u, Ts), [2 2 0])
+
+%!demo
+%! ## The start methods (InitMethod): one RIVC iteration from each start,
+%! ## then the converged estimates (the same fixed point)
+%! pkg load control
+%! Ts = 0.05; N = 3000; u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u);
+%! z = iddata (x + filter ([1 0.5], [1 -0.9], 0.1 * randn (N, 1)), u, Ts);
+%! warning ("off", "rivc:notConverged", "local");
+%! for init = {"sriv", "ivgpmf", "lssvf"}
+%!   M1 = rivc (z, [2 1 1 2 0], "InitMethod", init{1}, "MaxIter", 1);
+%!   M = rivc (z, [2 1 1 2 0], "InitMethod", init{1});
+%!   s = M1.Report.Parameters.InitMethod;
+%!   printf ("%-7s lambda %-6.3g start %-32s 1 iteration %-32s converged %s\n",
+%!           init{1}, s.Lambda, mat2str (s.Theta, 4), mat2str (M1.theta, 4),
+%!           mat2str (M.theta, 5));
+%! endfor
