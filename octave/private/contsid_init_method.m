@@ -76,8 +76,8 @@ function start = read_start (fname, init, layout, refused = {}, why = "")
     start.Method = canonical{k};
     start.Requested = names{k};
     if (any (strcmp (start.Method, refused)))
-      error ([fname ":notSupported"], "%s: InitMethod '%s' is not supported: %s",
-             fname, init, why);
+      error ([fname ":notSupported"],
+             "%s: InitMethod '%s' is not supported: %s", fname, init, why);
     endif
     return;
   endif

@@ -166,9 +166,9 @@ function [M, info, d] = run_cl2srivc (args)
   endif
   ## one method starts both stages (a model could start only one of them)
   start = contsid_init_method (fname, init,
-                               struct ("nf", nol(2), "nb", nol(1)),
-                               {"model"}, ["init_method names the start of ", ...
-                               "both stages: 'sriv', 'ivgpmf' or 'lssvf'"]);
+                               struct ("nf", nol(2), "nb", nol(1)), {"model"},
+                               ["init_method names the start of both ", ...
+                                "stages: 'sriv', 'ivgpmf' or 'lssvf'"]);
   opts = struct ("lambda", [], "Tol", 1e-6, "MaxIter", 30, "ArmaMaxIter", 50);
   if (numel (rest) >= 7 && ! isempty (rest{7}))
     opts.Tol = rest{7};
@@ -569,8 +569,9 @@ function [e, start] = plant_start (fname, start, e, d, W, rule = [])
   endif
 endfunction
 
-## Report.Parameters.InitMethod: the start used (Method, Requested, Lambda, Theta,
-## Stabilised); the engine's own start reports the SRIVC model it found.
+## Report.Parameters.InitMethod: the start used (Method, Requested,
+## Lambda, Theta, Stabilised); the engine's own start reports the SRIVC
+## model it found.
 function r = start_report (start, info)
   r = start;
   if (strcmp (start.Method, "sriv") && isfield (info, "start_theta"))

@@ -5,7 +5,8 @@
 ## inline tests covers @file{octave/*.m} only). Errors on a failure, so
 ## that CTest can run it:
 ## @example
-## octave --no-gui -q --eval "addpath octave tests/octave; test_contsid_init_method"
+## octave --no-gui -q --eval \
+##   "addpath octave tests/octave; test_contsid_init_method"
 ## @end example
 ## The private folder is put on the path for the duration of the test.
 ## @end deftypefn
