@@ -7,7 +7,9 @@
 // nonlinearity (u, u.^2, ..); t a scalar Ts or the N sampling instants.
 // opts fields: model ('hsrivc' | 'hrivc' | 'hwsrivc'), nb, nf, nk, nc, nd
 // (ARMA noise of hrivc), nw (terms of the output polynomial of hwsrivc),
-// intersample (0 zoh, 1 foh), y_intersample, tol, maxiter, cutoffs.
+// intersample (0 zoh, 1 foh), y_intersample, tol, maxiter, cutoffs,
+// theta_init (the first pass's start [f; B_1; ..; B_l], empty: the
+// engine's), arma_method ('pem' | 'ivarma', hrivc's noise model).
 // sep = [f; b; alpha(2:l); beta(2:nw)], cov its covariance; info: f, b,
 // alpha, beta, c, d, theta_miso, cov_miso, noise_variance, condition,
 // iterations, converged, reason, simulated.
@@ -67,6 +69,12 @@ void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   settings.max_iterations = opt.integer("maxiter", 30);
   const Eigen::MatrixXd cutoffs = opt.matrix("cutoffs");
   settings.cutoffs.assign(cutoffs.data(), cutoffs.data() + cutoffs.size());
+  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
+  if (theta_init.size() > 0) settings.theta_init = theta_init.reshaped();
+  settings.arma_method = opt.choice<ctid::ArmaMethod>(
+      "arma_method",
+      {{"pem", ctid::ArmaMethod::kPem}, {"ivarma", ctid::ArmaMethod::kIvarma}},
+      ctid::ArmaMethod::kPem);
   opt.finish();
 
   ctid::BlockResult<double> result;

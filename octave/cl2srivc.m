@@ -19,8 +19,23 @@
 ## (u, r, Ts)} or r (N-by-1, held between samples). u_hat is the output
 ## of a continuous model and is filtered as linear between samples (FOH).
 ## @var{model} must be [] (no initial model), @var{T0} 1 (the whole
-## record), @var{init_method} 'srivc'; @var{tol} (1e-6), @var{maxiter}
-## (30).
+## record); @var{tol} (1e-6), @var{maxiter} (30; each stage's SRIVC runs
+## at least 30 iterations, as its engine does). @var{init_method} names
+## the start of both stages: @qcode{"sriv"} (= @qcode{"srivc"}, default:
+## the engine's, IVSVF at 12 cut-offs log-spaced between 5/T and
+## 0.5 pi/Ts, SRIVC from the best), @qcode{"ivgpmf"} (= @qcode{"ivsvf"}:
+## one IVSVF estimate, thesis eqs. 2.4-2.7, whose state-variable filter
+## (lambda/(p + lambda))^n is CONTSID's Poisson-moment-functional filter)
+## or @qcode{"lssvf"} (one LSSVF estimate, eq. 1.32), computed by the
+## core (as @code{lssvf}, @code{ivsvf}) at the one of those cut-offs
+## whose estimate has the smallest simulation error: stage 1 from that
+## estimate of u on r, stage 2 from that estimate of y on u_hat (u_hat
+## the simulation of stage 1's SRIVC model). An unstable start has its
+## right-half-plane poles reflected (p -> -conj (p)) with the warning
+## @code{cl2srivc:unstableStart}. A model cannot start both stages
+## (@code{cl2srivc:notSupported}); other names: @code{cl2srivc:badOption}.
+## @code{M_G.Report.Parameters.InitMethod} says which start was used
+## (@code{Theta}: stage 2's, @code{Stage1Theta}: stage 1's).
 ##
 ## @var{M_G}: the plant, a continuous-time @code{idpoly} with the
 ## covariance of the two-stage estimator (derived from the closed-loop IV
@@ -84,6 +99,40 @@ endfunction
 %! assert (MT.F, den(k:end) / den(k), 1e-6 * norm (den));
 %! assert (uh, u, 1e-8 * norm (u));
 
+%!test  # noise-free: every start method gives the exact system; the
+%! # starts are lssvf's (ivsvf's) estimates of u on r and of y on u_hat
+%! for init = {"sriv", "srivc", "ivgpmf", "ivsvf", "lssvf"}
+%!   [M, MT, uh] = cl2srivc (iddata (y, u, Ts), iddata (u, r, Ts), ...
+%!                           [1 2 0], [4 4 0], [], 1, init{1});
+%!   assert (M.theta, [2 3 3], 1e-3);
+%!   assert (uh, u, 1e-8 * norm (u));
+%!   s = M.Report.Parameters.InitMethod;
+%!   assert (s.Requested, init{1});
+%!   if (any (strcmp (s.Method, {"lssvf", "ivgpmf"})))
+%!     f = merge (strcmp (s.Method, "lssvf"), @lssvf, @ivsvf);
+%!     M1 = f (iddata (u, r, Ts), [4 4 0], s.Lambda);
+%!     assert (s.Stage1Theta, M1.theta, 1e-12);
+%!     M2 = f (iddata (y, uh, Ts, "InterSample", "foh"), [2 1 0], s.Lambda);
+%!     assert (s.Theta, M2.theta, 1e-12);
+%!   endif
+%! endfor
+
+%!test  # the start is used: with a loose tol the LSSVF start's result
+%! # differs from the engine's start's
+%! randn ("state", 4);
+%! v = 0.2 * randn (N, 1);
+%! yn = y + lsim (c2d (feedback (1, G * Mc), Ts), v);
+%! un = u - lsim (c2d (feedback (Mc, G), Ts), v);
+%! M0 = cl2srivc (iddata (yn, un, Ts), r, [1 2 0], [4 4 0], [], 1, "sriv",
+%!                1e-2);
+%! M1 = cl2srivc (iddata (yn, un, Ts), r, [1 2 0], [4 4 0], [], 1, "lssvf",
+%!                1e-2);
+%! assert (norm (M1.theta - M0.theta) > 1e-5 * norm (M0.theta));
+
+%!error id=cl2srivc:badOption cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "magic")
+%!error id=cl2srivc:badOption cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, {"lssvf"})
+%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, [3 2 3])
+
 %!test  # noise on y and u through the loop: consistent (within 4 sd)
 %! randn ("state", 4);
 %! v = 0.02 * randn (N, 1);
@@ -119,7 +168,6 @@ endfunction
 %!error id=cl2srivc:dimensionMismatch cl2srivc (iddata (y, u, Ts), r(1:5), [1 2 0], [4 4 0])
 %!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], idpoly (1, 1, 1, 1, [1 1], 0, 0))
 %!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 3)
-%!error id=cl2srivc:notSupported cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "lssvf")
 %!error id=cl2srivc:badOption cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", -1)
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [1 2 0], [4 4 0], [], 1, "srivc", 1e-6, 30, 1)
 %!error id=cl2srivc:badInput cl2srivc (iddata (y, u, Ts), r, [4 2 0], [4 4 0])

@@ -1,7 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} clrivc (@var{data_yu}, @var{data_yr}, [@var{nb} @var{nc} @var{nd} @var{nf} @var{nk}], @var{Mc})
 ## @deftypefnx {} {@var{M} =} clrivc (@dots{}, @var{Mc}, @var{T0}, @var{tol}, @var{maxiter})
-## @deftypefnx {} {@var{M} =} clrivc (@dots{}, "ReferenceAt", @var{at})
+## @deftypefnx {} {@var{M} =} clrivc (@dots{}, "ReferenceAt", @var{at}, "InitMethod", @var{init})
 ## @deftypefnx {} {[@var{M}, @var{C}, @var{D}] =} clrivc (@dots{})
 ## Closed-loop refined IV (CLRIVC) of the hybrid Box-Jenkins model
 ## @example
@@ -15,7 +15,19 @@
 ## (thesis eqs. 2.48-2.49b with a continuous controller), prefiltered by
 ## 1/F(p) and then D/C; the regressors use the measured y and u, and the
 ## noise model is fitted to y - B/F u. The start is CLSRIVC with the same
-## controller.
+## controller, or the one the trailing option @code{InitMethod} names:
+## @qcode{"sriv"} (= @qcode{"srivc"}, default: CLSRIVC),
+## @qcode{"ivgpmf"} (= @qcode{"ivsvf"}: one IVSVF estimate, thesis eqs.
+## 2.4-2.7, whose state-variable filter (lambda/(p + lambda))^n is
+## CONTSID's Poisson-moment-functional filter), @qcode{"lssvf"} (one LSSVF
+## estimate, eq. 1.32), an @code{idpoly} or [f b]. The one-step starts
+## are the open-loop estimates of y on the measured u (biased by the
+## loop's noise, they only start the iterations), computed by the core
+## (as @code{lssvf}, @code{ivsvf}) at the one of 12 cut-offs log-spaced
+## between 5/T and 0.5 pi/Ts whose estimate has the smallest simulation
+## error; an unstable one has its right-half-plane poles reflected
+## (p -> -conj (p)) with the warning @code{clrivc:unstableStart}.
+## @code{M.Report.Parameters.InitMethod} says which start was used.
 ##
 ## @var{data_yu}: @code{iddata (y, u, Ts)} (regular sampling; u is
 ## filtered by its InterSample rule, 'foh' suits a continuous controller
@@ -51,7 +63,7 @@
 ## @end deftypefn
 
 function [M, C, varargout] = clrivc (varargin)
-  contsid_nargchk ("clrivc", nargin, nargout, [4 9], 3);
+  contsid_nargchk ("clrivc", nargin, nargout, [4 11], 3);
   [M, info] = contsid_rivc ("clrivc", varargin);
   C = info.C;
   varargout = {info.D}(1:max (nargout - 2, 0));
@@ -111,6 +123,39 @@ endfunction
 %! assert (all (abs (M.theta - [2 3 3]) < 4 * sd + 2e-3));
 %! assert (D(2), -0.95, 0.05);
 
+%!test  # every start method: the same noise-free estimate (exact up to
+%! # the FOH rule on u, see above; the starts' fixed points agree to 1e-6)
+%! z = iddata (y, u, Ts, "InterSample", "foh");
+%! M0 = clrivc (z, r, [1 1 1 2 0], Mc, 1, 1e-10, 30, "ReferenceAt", "setpoint");
+%! for init = {"sriv", "ivgpmf", "lssvf", [2 3 3]}
+%!   M = clrivc (z, r, [1 1 1 2 0], Mc, 1, 1e-10, 30,
+%!               "ReferenceAt", "setpoint", "InitMethod", init{1});
+%!   assert (M.theta, M0.theta, 1e-6);
+%!   assert (M.theta, [2 3 3], 1e-3);
+%! endfor
+
+%!test  # the start is lssvf's open-loop estimate (y on u) and is used
+%! randn ("state", 4);
+%! v = filter ([1 0.3], [1 -0.95], 0.005 * randn (N, 1));
+%! yn = y + lsim (c2d (feedback (1, G * Mc), Ts), v);
+%! un = u - lsim (c2d (feedback (Mc, G), Ts), v);
+%! z = iddata (yn, un, Ts, "InterSample", "foh");
+%! warning ("off", "clrivc:notConverged", "local");
+%! M1 = clrivc (z, r, [1 1 1 2 0], Mc, 1, 1e-6, 1, "ReferenceAt",
+%!              "setpoint", "InitMethod", "lssvf");
+%! M1m = clrivc (z, r, [1 1 1 2 0], Mc, 1, 1e-6, 1, "ReferenceAt",
+%!               "setpoint", "InitMethod",
+%!               M1.Report.Parameters.InitMethod.Theta);
+%! assert (M1.theta, M1m.theta, 1e-12 * norm (M1.theta));
+%! s = M1.Report.Parameters.InitMethod;
+%! Ml = lssvf (z, [2 1 0], s.Lambda);
+%! assert (s.Theta, Ml.theta, 1e-12);
+%! M0 = clrivc (z, r, [1 1 1 2 0], Mc, 1, 1e-6, 1, "ReferenceAt",
+%!              "setpoint");
+%! assert (norm (M1.theta - M0.theta) > 1e-6 * norm (M0.theta));
+
+%!error id=clrivc:badOption clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, "InitMethod", "magic")
+%!error id=clrivc:badOption clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, "InitMethod", [1 2])
 %!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0])
 %!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2 0], Mc, 1, 1e-6, 30, 4)
 %!error id=clrivc:badInput clrivc (iddata (y, u, Ts), r, [1 1 1 2], Mc)

@@ -16,7 +16,11 @@
 ## q^-1), or @code{kp}, @code{ki}, @code{kd} (backward-Euler PID, thesis
 ## eq. 2.55), or a discrete control-package tf (ZOH data). Options and
 ## outputs as for @code{srivc}; the start is the closed-loop IVSVF (eq.
-## 2.44).
+## 2.44), or the one @code{InitMethod} names (as @code{srivc}:
+## @qcode{"sriv"} the default, @qcode{"ivgpmf"}/@qcode{"ivsvf"},
+## @qcode{"lssvf"}, a model); the one-step starts are the open-loop
+## IVSVF/LSSVF of y on the measured u, biased by the loop's noise but
+## only the start of the closed-loop iterations.
 ##
 ## CONTSID's form: @var{Mc} a @strong{continuous-time} control-package
 ## @code{tf} C(p) = Nc/Dc (nk = 0). The auxiliary model is then the
@@ -55,6 +59,19 @@ endfunction
 %!test  # noise-free closed loop: exact
 %! M = clsrivc (iddata (x, u, Ts), r1, [1 2 0], C, "lambda", 16);
 %! assert (M.theta, [10 160 200], 1e-7);
+
+%!test  # noise-free: every start method gives the exact system; the
+%! # LSSVF start is lssvf's open-loop estimate of y on u
+%! for init = {"sriv", "ivgpmf", "lssvf"}
+%!   M = clsrivc (iddata (x, u, Ts), r1, [1 2 0], C, "lambda", 16,
+%!                "InitMethod", init{1});
+%!   assert (M.theta, [10 160 200], 1e-7);
+%! endfor
+%! s = M.Report.Parameters.InitMethod;
+%! Ml = lssvf (iddata (x, u, Ts), [2 1 0], 16);
+%! assert (s.Theta, Ml.theta, 1e-12);
+
+%!error id=clsrivc:badOption clsrivc (iddata (x, u, Ts), r1, [1 2 0], C, "InitMethod", "pem")
 
 %!test  # controller given as num/den and as a discrete tf
 %! Cd = struct ("num", [0.5 + 2 * Ts, -0.5], "den", [1 -1]);

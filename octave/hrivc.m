@@ -19,8 +19,16 @@
 ## unit disc (the ARMA estimator of @code{rivc}), and the next refined-IV
 ## steps run on the data prefiltered by D/C (exact at the samples for ZOH
 ## inputs: the discrete filter commutes with the sampled B/F), until the
-## separated plant parameters stop changing. Options as @code{hsrivc};
-## @var{arma_method} is accepted and ignored. The covariance is that of
+## separated plant parameters stop changing. Options as @code{hsrivc}
+## (@var{initMethod} / @code{"InitMethod"}: @qcode{"sriv"} default,
+## @qcode{"ivgpmf"} = @qcode{"ivsvf"}, the IVSVF start whose filter
+## (lambda/(p + lambda))^n is CONTSID's Poisson-moment functionals,
+## @qcode{"lssvf"}, or a MISO model; the start used in
+## @code{Infos.InitMethod}); @var{arma_method} / @code{"ArmaMethod"}
+## chooses the ARMA estimator as in @code{rivc}: @qcode{"pem"} (default,
+## Hannan-Rissanen then Gauss-Newton prediction-error steps) or
+## @qcode{"ivarma"} (Young's IVARMA), said in @code{Infos.ArmaMethod};
+## other names raise @code{hrivc:badOption}. The covariance is that of
 ## the last refined-IV step on prefiltered data.
 ##
 ## Outputs as @code{hsrivc}; @code{Infos.Noisemodel} is the discrete-time
@@ -56,6 +64,49 @@ endfunction
 %! assert (I.Noisemodel.D, [1 -0.85], 0.05);
 %! assert (I.Noisemodel.C, [1 0.5], 0.1);
 
+%!test  # noise-free: every start method reaches the exact system
+%! for init = {"sriv", "srivc", "ivgpmf", "ivsvf", "lssvf"}
+%!   [~, Infos] = hrivc (iddata (ydet, udata, Ts), [2 1 1 2 0], [], 0,
+%!                       init{1});
+%!   assert (Infos.theta, [1 5 10 30 0.5 0.25]', 1e-6);
+%!   assert (Infos.InitMethod.Requested, init{1});
+%! endfor
+
+%!test  # the start is lssvf's MISO estimate and is used
+%! randn ("state", 7);
+%! v = filter ([1 0.5], [1 -0.85], 0.6 * randn (N, 1));
+%! z = iddata (ydet + v, udata, Ts);
+%! warning ("off", "hrivc:notConverged", "local");
+%! [~, I1] = hrivc (z, [2 1 1 2 0], 1, 0, "lssvf", [], 1);
+%! Ml = lssvf (z, [2 2 2 2 0 0 0], 1);
+%! assert (I1.InitMethod.Theta, Ml.theta, 1e-12);
+%! [~, I1m] = hrivc (z, [2 1 1 2 0], 1, 0, Ml.theta, [], 1);
+%! assert (I1.theta, I1m.theta, 1e-12 * norm (I1.theta));
+%! [~, I0] = hrivc (z, [2 1 1 2 0], 1, 0, "sriv", [], 1);
+%! assert (norm (I1.theta - I0.theta) > 1e-3 * norm (I0.theta));
+
+%!test  # ArmaMethod 'ivarma' as rivc's: on a linear record (one basis
+%! # column u, the Hammerstein of a degree-1 polynomial) hrivc is rivc;
+%! # an ARMA(2,2) for ARMA(1,1) noise (near pole-zero cancellation) makes
+%! # the two ARMA estimators' fixed points differ, so the choice shows
+%! pkg load control
+%! Tl = 0.05; Nl = 3000; randn ("state", 11);
+%! ul = kron (sign (randn (Nl / 10, 1)), ones (10, 1));
+%! xl = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Tl), ul);
+%! randn ("state", 13);
+%! zl = iddata (xl + filter ([1 0.5], [1 -0.9], 0.05 * randn (Nl, 1)), ul, Tl);
+%! [Mr, C, D] = rivc (zl, [2 2 2 2 0], "Tol", 1e-10, "ArmaMethod", "ivarma");
+%! [~, I] = hrivc (zl, [2 2 2 2 0], "Tol", 1e-10, "ArmaMethod", "ivarma");
+%! assert (I.ArmaMethod, "ivarma");
+%! assert (I.theta.', Mr.theta, 1e-8 * norm (Mr.theta));
+%! assert ([I.Noisemodel.C, I.Noisemodel.D], [C, D], 1e-8);
+%! [~, Ip] = hrivc (zl, [2 2 2 2 0], "Tol", 1e-10, "ArmaMethod", "pem");
+%! assert (norm ([Ip.Noisemodel.C, Ip.Noisemodel.D] - [C, D]) > 0.1);
+
+%!error id=hrivc:badOption hrivc (iddata (ydet, udata, Ts), [2 1 1 2 0], [], 0, [], [], [], "ls")
+%!error id=hrivc:badOption hrivc (iddata (ydet, udata, Ts), [2 1 1 2 0], "ArmaMethod", {"pem"})
+%!error id=hrivc:badOption hrivc (iddata (ydet, udata, Ts), [2 1 1 2 0], "InitMethod", "nonsense")
+%!error id=hrivc:badOption hrivc (iddata (ydet, udata, Ts), [2 1 1 2 0], [], 0, {"lssvf"})
 %!error id=hrivc:badInput hrivc (iddata (ydet, udata, Ts), [2 2 0])
 %!error id=hrivc:badInput hrivc (iddata (ydet, udata, Ts), [2 1 1 0 0])
 %!error id=hrivc:badInput hrivc (iddata (ydet, udata, Ts), [2 1 1 2 0.5])

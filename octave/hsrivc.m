@@ -1,6 +1,6 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{model}, @var{Infos}] =} hsrivc (@var{data}, [@var{nb} @var{nf} @var{nk}])
-## @deftypefnx {} {[@dots{}] =} hsrivc (@var{data}, @var{nn}, @var{lambda0}, @var{t0}, @var{init_method}, @var{tol}, @var{maxiter})
+## @deftypefnx {} {[@dots{}] =} hsrivc (@var{data}, @var{nn}, @var{lambda0}, @var{t0}, @var{init_method}, @var{tol}, @var{maxiter}, @var{arma_method})
 ## @deftypefnx {} {[@dots{}] =} hsrivc (@var{data}, @var{nn}, @var{name}, @var{value}, @dots{})
 ## Continuous-time Hammerstein model by simplified refined IV (HSRIVC,
 ## Laurain, Gilson, Garnier and Young, CDC 2008):
@@ -26,10 +26,27 @@
 ## parameters.
 ##
 ## Options (positional as CONTSID, [] for a default, or name-value):
-## @var{lambda0} / @code{"lambda"} the SVF cut-off of the IVSVF start
-## (default: the engine's grid of cut-offs); @var{t0} must be 0;
-## @var{init_method} is accepted and ignored (the start is IVSVF);
-## @var{tol} / @code{"Tol"}, @var{maxiter} / @code{"MaxIter"}.
+## @var{lambda0} / @code{"lambda"} the SVF cut-off of the start
+## (default: see below); @var{t0} must be 0;
+## @var{init_method} / @code{"InitMethod"} the start of the first
+## refined-IV pass, the MISO model [f B_1 .. B_l] of the basis channels:
+## @qcode{"sriv"} or @qcode{"srivc"} (default: the engine's, IVSVF at
+## @var{lambda0} or at 12 cut-offs log-spaced between 5/T and 0.5 pi/Ts,
+## then SRIVC), @qcode{"ivgpmf"} (= @qcode{"ivsvf"}: one IVSVF estimate,
+## thesis eqs. 2.4-2.7; CONTSID's IV with Poisson-moment-functional
+## filtering is this state-variable filter (lambda/(p + lambda))^n),
+## @qcode{"lssvf"} (one LSSVF estimate, eq. 1.32), or a model (a MISO
+## @code{idpoly} such as @var{model}, or [f B_1 .. B_l]). The one-step
+## starts are the core's (as @code{lssvf}, @code{ivsvf} on the basis
+## data) at @var{lambda0}, or without it at the one of those cut-offs
+## whose estimate has the smallest simulation error; an unstable one has
+## its right-half-plane poles reflected (p -> -conj (p)) with the warning
+## @code{hsrivc:unstableStart}. @code{Infos.InitMethod} (and
+## @code{model.Report.Parameters.InitMethod}) says which start was used.
+## @var{tol} / @code{"Tol"}, @var{maxiter} / @code{"MaxIter"};
+## @var{arma_method} / @code{"ArmaMethod"}: only @qcode{"pem"} (the
+## noise is white here, there is no noise model to fit: @qcode{"ivarma"}
+## raises @code{hsrivc:notSupported}; see @code{hrivc}).
 ##
 ## Outputs: @var{model}, the MISO @code{idpoly} B_i = alpha_i B over the
 ## common F (for @code{present}, @code{simc}, @code{comparec} on the basis
@@ -82,6 +99,41 @@ endfunction
 %! assert (all (abs (I.theta - truth) < 4 * I.sd(:)));
 %! assert (all (I.sd > 0));
 
+%!test  # noise-free: every start method reaches the exact system
+%! for init = {"sriv", "srivc", "ivgpmf", "ivsvf", "lssvf"}
+%!   [~, Infos] = hsrivc (iddata (ydet, udata, Ts), [2 2 0], [], 0, init{1});
+%!   assert (Infos.theta, [1 5 10 30 0.5 0.25]', 1e-6);
+%!   assert (Infos.InitMethod.Requested, init{1});
+%! endfor
+
+%!test  # the start is lssvf's MISO estimate and is used: one iteration
+%! # from it is one iteration from that model, not from the engine's start
+%! randn ("state", 5);
+%! z = iddata (ydet + 0.3 * std (ydet) * randn (size (ydet)), udata, Ts);
+%! warning ("off", "hsrivc:notConverged", "local");
+%! [~, I1] = hsrivc (z, [2 2 0], 1, 0, "lssvf", [], 1);
+%! Ml = lssvf (z, [2 2 2 2 0 0 0], 1);
+%! assert (I1.InitMethod.Theta, Ml.theta, 1e-12);
+%! assert (I1.InitMethod.Lambda, 1);
+%! [~, I1m] = hsrivc (z, [2 2 0], 1, 0, Ml.theta, [], 1);
+%! assert (I1.theta, I1m.theta, 1e-12 * norm (I1.theta));
+%! [~, I0] = hsrivc (z, [2 2 0], 1, 0, "sriv", [], 1);
+%! assert (norm (I1.theta - I0.theta) > 1e-3 * norm (I0.theta));
+%! [~, I2] = hsrivc (z, [2 2 0], "lambda", 1, "InitMethod", "ivgpmf",
+%!                   "MaxIter", 1);
+%! Mv = ivsvf (z, [2 2 2 2 0 0 0], 1);
+%! assert (I2.InitMethod.Theta, Mv.theta, 1e-12);
+%! ## the MISO model restarts the iterations
+%! [M, I] = hsrivc (z, [2 2 0]);
+%! [~, I3] = hsrivc (z, [2 2 0], "InitMethod", M);
+%! assert (I3.theta, I.theta, 1e-6 * norm (I.theta));
+
+%!error id=hsrivc:badOption hsrivc (iddata (ydet, udata, Ts), [2 2 0], [], 0, "nonsense")
+%!error id=hsrivc:badOption hsrivc (iddata (ydet, udata, Ts), [2 2 0], "InitMethod", [1 2])
+%!error id=hsrivc:badInput hsrivc (iddata (ydet, udata, Ts), [2 2 0], "InitMethod", [-1 5 10 30 5 15 2.5 7.5])
+%!error id=hsrivc:notSupported hsrivc (iddata (ydet, udata, Ts), [2 2 0], [], 0, [], [], [], "ivarma")
+%!error id=hsrivc:badOption hsrivc (iddata (ydet, udata, Ts), [2 2 0], "ArmaMethod", "ls")
+%!error id=hsrivc:badOption hsrivc (iddata (ydet, udata, Ts), [2 2 0], "ArmaMethod", 1)
 %!error id=hsrivc:badInput hsrivc (iddata (ydet, udata, Ts))
 %!error id=hsrivc:badInput hsrivc (iddata (ydet, udata, Ts), [2 2])
 %!error id=hsrivc:badInput hsrivc (iddata (ydet, udata, Ts), [2 -2 0])

@@ -25,7 +25,13 @@
 ## previous sample), y in the first pass; iterated until the separated
 ## parameters stop changing; the Wiener step is halved (the noise makes the
 ## plain fixed-point iteration overshoot). Options @code{"Tol"} (1e-6),
-## @code{"MaxIter"} (100), @code{"lambda"}.
+## @code{"MaxIter"} (100), @code{"lambda"}; @code{"InitMethod"} only
+## @qcode{"sriv"} (the engine's start, default): the first pass regresses
+## on powers of the measured y, which a one-step LSSVF/IVSVF estimate or
+## a model of the linear part cannot start, so @qcode{"ivgpmf"},
+## @qcode{"lssvf"} and models raise @code{hwsrivc:notSupported};
+## @code{"ArmaMethod"} only @qcode{"pem"} (the noise is white, there is no
+## noise model: @qcode{"ivarma"} raises @code{hwsrivc:notSupported}).
 ##
 ## Outputs: @var{model}, the linear part B/F (@code{idpoly}, covariance of
 ## [f b], @code{Report.Fit} of @var{yhat}); @var{Infos} with @code{NL_H}
@@ -77,6 +83,12 @@ endfunction
 %! truth = [2 1 -2 0.8 1.5 1]';
 %! assert (all (abs (I.theta - truth) < 4 * I.sd(:)));
 
+%!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", "lssvf")
+%!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", "ivgpmf")
+%!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", [2 1 1 1])
+%!error id=hwsrivc:badOption hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", "nonsense")
+%!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "ArmaMethod", "ivarma")
+%!error id=hwsrivc:badOption hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "ArmaMethod", "x")
 %!error id=hwsrivc:badInput hwsrivc (iddata (y0, u, Ts), [1 2])
 %!error id=hwsrivc:badInput hwsrivc (iddata (y0, u, Ts), [1 1 0 3 3])
 %!error id=hwsrivc:badInput hwsrivc (iddata (y0, u, Ts), [1 2 0 0 3])

@@ -35,9 +35,25 @@
 ## @var{Mi}: an @code{idpoly} whose B, C, D, F give the orders and whose
 ## B, F start the iterations.
 ##
-## Options: @code{lambda} (SVF cut-off of the SRIVC start, rad/s),
+## Options: @code{lambda} (SVF cut-off of the start, rad/s),
 ## @code{Tol} (1e-6, relative parameter change), @code{MaxIter} (30),
-## @code{InitMethod} ('srivc', an @code{idpoly} or [f b]),
+## @code{InitMethod}, the model the iterations start from:
+## @qcode{"sriv"} or @qcode{"srivc"} (default: SRIVC, from IVSVF starts
+## at @code{lambda} or at 12 cut-offs log-spaced between 5/T and
+## 0.5 pi/Ts), @qcode{"ivgpmf"} (one IVSVF estimate, thesis eqs.
+## 2.4-2.7: CONTSID's IV with Poisson-moment-functional filtering is this
+## state-variable filter (lambda/(p + lambda))^n; @qcode{"ivsvf"} is the
+## same), @qcode{"lssvf"} (one LSSVF estimate, eq. 1.32), an
+## @code{idpoly} or [f b]. The one-step starts are computed by the core's
+## LSSVF/IVSVF (as @code{lssvf}, @code{ivsvf}) at @code{lambda}, or
+## without it at the one of the 12 cut-offs above whose estimate has the
+## smallest simulation error; an unstable one-step start has its
+## right-half-plane poles reflected (p -> -conj (p)) with the warning
+## @code{rivc:unstableStart} (a given model must be stable:
+## @code{rivc:badInput}). @code{M.Report.Parameters.InitMethod} says which
+## start was used (@code{Method}, @code{Requested}, @code{Lambda},
+## @code{Theta} = its [f b], @code{Stabilised}). Unknown names:
+## @code{rivc:badOption}.
 ## @code{ArmaMethod} (the noise model's estimator: 'pem', prediction
 ## error by Gauss-Newton from Hannan-Rissanen, or 'ivarma', Young's IVARMA:
 ## the ARMA model's pseudo-linear regression solved iteratively by IV with
@@ -189,7 +205,46 @@ endfunction
 %! assert ([Ci Di], [Cp Dp], 1e-5);
 %! assert (Mi.theta, Mp.theta, 1e-6 * norm (Mp.theta));
 %! assert (getcov (Mi), getcov (Mp), 1e-3 * norm (getcov (Mp)));
-%!error id=rivc:notSupported rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", "lssvf")
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", "nonsense")
+%!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", {"lssvf"})
+
+%!test  # noise-free: every start method reaches the exact system
+%! for init = {"sriv", "srivc", "ivgpmf", "ivsvf", "lssvf"}
+%!   M = rivc (iddata (x, u, Ts), [2 1 2 2 0], "Tol", 1e-10,
+%!             "InitMethod", init{1});
+%!   assert (M.theta, [1.2 4 1.5 4], 1e-8);
+%!   assert (M.Report.Parameters.InitMethod.Requested, init{1});
+%! endfor
+
+%!test  # the start is used: it is lssvf's (ivsvf's) own estimate, one
+%! # iteration from it is one iteration from that model given as start,
+%! # and differs from one iteration from the SRIVC start
+%! randn ("state", 21);
+%! y = x + filter ([1 0.5], [1 -0.9], 0.1 * randn (N, 1));
+%! z = iddata (y, u, Ts);
+%! warning ("off", "rivc:notConverged", "local");
+%! Ml = lssvf (z, [2 2 0], 3);
+%! Mv = ivsvf (z, [2 2 0], 3);
+%! M1 = rivc (z, [2 1 1 2 0], "InitMethod", "lssvf", "lambda", 3,
+%!            "MaxIter", 1);
+%! s = M1.Report.Parameters.InitMethod;
+%! assert ({s.Method, s.Lambda, s.Stabilised}, {"lssvf", 3, false});
+%! assert (s.Theta, Ml.theta, 1e-12);
+%! M1m = rivc (z, [2 1 1 2 0], "InitMethod", Ml.theta, "MaxIter", 1);
+%! assert (M1.theta, M1m.theta, 1e-12 * norm (M1.theta));
+%! M2 = rivc (z, [2 1 1 2 0], "InitMethod", "ivgpmf", "lambda", 3,
+%!            "MaxIter", 1);
+%! assert (M2.Report.Parameters.InitMethod.Theta, Mv.theta, 1e-12);
+%! M0 = rivc (z, [2 1 1 2 0], "InitMethod", "sriv", "lambda", 3,
+%!            "MaxIter", 1);
+%! assert (M0.Report.Parameters.InitMethod.Method, "sriv");
+%! assert (norm (M1.theta - M0.theta) > 1e-4 * norm (M0.theta));
+%! assert (norm (M2.theta - M0.theta) > 1e-6 * norm (M0.theta));
+%! ## without lambda: the engine's automatic cut-off, reported
+%! M3 = rivc (z, [2 1 1 2 0], "InitMethod", "lssvf", "MaxIter", 1);
+%! lam = M3.Report.Parameters.InitMethod.Lambda;
+%! Ml3 = lssvf (z, [2 2 0], lam);
+%! assert (M3.Report.Parameters.InitMethod.Theta, Ml3.theta, 1e-12);
 %!error id=rivc:badOption rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [1 2])
 %!error id=rivc:badInput rivc (iddata (x, u, Ts), [2 1 1 2 0], "InitMethod", [-1 4 1 1])
 %!test  # two inputs, one denominator each (CONTSID's MISO nn): exact
@@ -246,3 +301,20 @@ endfunction
 %! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
 %! [M, C, D] = rivc (iddata (x + v, u, Ts), [2 1 1 2 0])
 %! Ms = srivc (iddata (x + v, u, Ts), [2 2 0])
+
+%!demo
+%! ## The start methods (InitMethod): one RIVC iteration from each start,
+%! ## then the converged estimates (the same fixed point)
+%! pkg load control
+%! Ts = 0.05; N = 3000; u = kron (sign (randn (N / 10, 1)), ones (10, 1));
+%! x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u);
+%! z = iddata (x + filter ([1 0.5], [1 -0.9], 0.1 * randn (N, 1)), u, Ts);
+%! warning ("off", "rivc:notConverged", "local");
+%! for init = {"sriv", "ivgpmf", "lssvf"}
+%!   M1 = rivc (z, [2 1 1 2 0], "InitMethod", init{1}, "MaxIter", 1);
+%!   M = rivc (z, [2 1 1 2 0], "InitMethod", init{1});
+%!   s = M1.Report.Parameters.InitMethod;
+%!   printf ("%-7s lambda %-6.3g start %-32s 1 iteration %-32s converged %s\n",
+%!           init{1}, s.Lambda, mat2str (s.Theta, 4), mat2str (M1.theta, 4),
+%!           mat2str (M.theta, 5));
+%! endfor

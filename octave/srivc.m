@@ -28,8 +28,25 @@
 ## error of the start model; SRIVC runs from the best @code{MaxStarts}
 ## (default 3) starts and keeps the best stable, converged model.
 ## @item InitMethod
-## @qcode{"ivsvf"} (default), or a stable initial model (an @code{idctm}
-## or its [f1 .. f_nf, b ..] values).
+## the start of the SRIVC iterations: @qcode{"sriv"} or @qcode{"srivc"}
+## (default: the engine's, IVSVF at @code{lambda} or at the grid of
+## cut-offs above, SRIVC from the best @code{MaxStarts}),
+## @qcode{"ivgpmf"} or @qcode{"ivsvf"} (one IVSVF estimate, eqs. 2.4-2.7:
+## CONTSID's IV with Poisson-moment-functional filtering is this
+## state-variable filter (lambda/(p + lambda))^n), @qcode{"lssvf"} (one
+## LSSVF estimate, eq. 1.32), or a stable initial model (an @code{idctm}
+## or its [f1 .. f_nf, b ..] values; unstable: @code{srivc:badInput}).
+## The one-step starts are the core's (as @code{lssvf}, @code{ivsvf},
+## with the output offset when one is estimated) at @code{lambda}, or
+## without it at the grid cut-off whose estimate has the smallest
+## simulation error; an unstable one has its right-half-plane poles
+## reflected (p -> -conj (p)) with the warning @code{srivc:unstableStart}.
+## A start other than the engine's turns off the automatic InputOffset
+## refit. @code{M.Report.Parameters.InitMethod} (and @var{info}.start)
+## says which start was used (@code{Method}, @code{Requested},
+## @code{Lambda}, @code{Theta}, @code{Stabilised}). Unknown names:
+## @code{srivc:badOption}. (Until this version @qcode{"ivsvf"} named the
+## engine's start, now @qcode{"sriv"}.)
 ## @item InitialState
 ## @qcode{"zero"} (default) or @qcode{"estimate"}: the free response of an
 ## unknown initial state is estimated with the model (linear least squares
@@ -189,6 +206,42 @@ endfunction
 %! assert (RT2 > 0.5);
 %! assert (isfinite (YIC));
 %! assert (all (sqrt (diag (M.covariance)) < 0.2));
+
+%!test  # noise-free: every start method reaches the exact system
+%! for init = {"sriv", "srivc", "ivgpmf", "ivsvf", "lssvf"}
+%!   M = srivc (iddata (x, u, Ts), [1 2 0], "InitMethod", init{1},
+%!              "Tol", 1e-12);
+%!   assert (M.F, [1 2.4 4], 1e-9);
+%!   assert (M.B, 4, 1e-9);
+%!   assert (M.Report.Parameters.InitMethod.Requested, init{1});
+%! endfor
+
+%!test  # the start is lssvf's (ivsvf's) estimate and is used: one
+%! # iteration from it is one iteration from lssvf's model, not from the
+%! # engine's start (no output offset, which lssvf does not estimate)
+%! randn ("state", 3);
+%! z = iddata (x + 0.3 * randn (N, 1), u, Ts);
+%! o = {"MaxIter", 1, "OutputOffset", false, "lambda", 3};
+%! warning ("off", "srivc:notConverged", "local");
+%! warning ("off", "srivc:overParameterised", "local");
+%! M1 = srivc (z, [1 2 0], "InitMethod", "lssvf", o{:});
+%! Ml = lssvf (z, [2 1 0], 3);
+%! s = M1.Report.Parameters.InitMethod;
+%! assert ({s.Method, s.Lambda, s.Stabilised}, {"lssvf", 3, false});
+%! assert (s.Theta, Ml.theta, 1e-12);
+%! M1m = srivc (z, [1 2 0], "InitMethod", Ml, o{:});
+%! assert (M1.theta, M1m.theta, 1e-12 * norm (M1.theta));
+%! M0 = srivc (z, [1 2 0], "InitMethod", "sriv", o{:});
+%! assert (norm (M1.theta - M0.theta) > 1e-4 * norm (M0.theta));
+%! M2 = srivc (z, [1 2 0], "InitMethod", "ivgpmf", o{:});
+%! Mv = ivsvf (z, [2 1 0], 3);
+%! assert (M2.Report.Parameters.InitMethod.Theta, Mv.theta, 1e-12);
+
+%!warning id=srivc:unstableStart
+%! ## LSSVF of this noisy record at lambda = 10 is unstable
+%! randn ("state", 3);
+%! srivc (iddata (x + 0.3 * randn (N, 1), u, Ts), [1 2 0],
+%!        "InitMethod", "lssvf", "lambda", 10);
 
 %!test  # an initial model; tf conversion; simc of the result
 %! M = srivc (iddata (x, u, Ts), [1 2 0], "InitMethod", idctm (3, [1 2 3]), "Tol", 1e-12);

@@ -19,7 +19,19 @@
 ## by the same engine); all others (@code{FixTd}, @code{TdMin},
 ## @code{TdMax}, @code{NumTd}, @code{Lambda}, @code{MaxIter},
 ## @code{TolPar}, ...) go to @code{tfsrivc} (MaxIter and TolPar also
-## stop the RIVC iterations).
+## stop the RIVC iterations), except @code{InitMethod}, the start of the
+## RIVC iterations: @qcode{"sriv"} (default: tfsrivc's SRIVC model),
+## @qcode{"ivgpmf"} (= @qcode{"ivsvf"}: one IVSVF estimate, thesis eqs.
+## 2.4-2.7, the state-variable filter (lambda/(p + lambda))^n that is
+## CONTSID's Poisson-moment-functional filter), @qcode{"lssvf"} (one
+## LSSVF estimate, eq. 1.32), an @code{idpoly}/@code{idtf} or [f b]; the
+## one-step starts are computed by the core (as @code{lssvf},
+## @code{ivsvf}) with tfsrivc's delay td, at @code{Lambda} when given,
+## else at the one of 12 cut-offs log-spaced between 5/T and 0.5 pi/Ts
+## whose estimate has the smallest simulation error; an unstable one
+## has its right-half-plane poles reflected (p -> -conj (p)) with the
+## warning @code{tfrivc:unstableStart}. @code{sys.Report.Parameters.InitMethod}
+## says which start was used.
 ##
 ## @var{sys}: an @code{idtf} with IODelay = td, the covariance of [b; f]
 ## (sigma_e^2 (sum zeta_f zeta_f')^-1, eq. 2.13; td counted as known),
@@ -71,6 +83,36 @@ endfunction
 %! assert (MN.F(2), -0.9, 0.05);
 %! assert (MN.B(2), 0.5, 0.1);
 
+%!test  # noise-free: every start method reaches the exact system
+%! for init = {"sriv", "ivgpmf", "lssvf"}
+%!   MP = tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", ...
+%!                "NN", [1 1], "InitMethod", init{1});
+%!   assert ([MP.num{1}, MP.den{1}], [4 1 1.2 4], 1e-7);
+%!   assert (MP.Report.Parameters.InitMethod.Method, init{1});
+%! endfor
+
+%!test  # the start is lssvf's estimate at the delay (7 samples), used:
+%! # one iteration from it is not one iteration from tfsrivc's model
+%! xd = simc (idtf (4, [1 1.2 4], "IODelay", 7 * Ts),
+%!            iddata ([], u, Ts, "InterSample", "zoh"));
+%! randn ("state", 4);
+%! z = iddata (xd + filter ([1 0.5], [1 -0.9], 0.1 * randn (N, 1)), u, Ts);
+%! warning ("off", "tfrivc:notConverged", "local");
+%! M1 = tfrivc (z, 2, 0, 7 * Ts, "FixTd", "on", "NN", [1 1],
+%!              "InitMethod", "lssvf", "Lambda", 3, "MaxIter", 1);
+%! Ml = lssvf (z, [2 1 7], 3);
+%! s = M1.Report.Parameters.InitMethod;
+%! assert (s.Theta, Ml.theta, 1e-12);
+%! assert (s.Lambda, 3);
+%! M0 = tfrivc (z, 2, 0, 7 * Ts, "FixTd", "on", "NN", [1 1],
+%!              "Lambda", 3, "MaxIter", 1);
+%! assert (M0.Report.Parameters.InitMethod.Method, "sriv");
+%! p1 = [M1.num{1}, M1.den{1}];
+%! p0 = [M0.num{1}, M0.den{1}];
+%! assert (norm (p1 - p0) > 1e-4 * norm (p0));
+
+%!error id=tfrivc:badOption tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", "InitMethod", "bogus")
+%!error id=tfrivc:badOption tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", "InitMethod", [1 2])
 %!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2)
 %!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 0, 0, "NN", [1 1])
 %!error id=tfrivc:badInput tfrivc (iddata (x, u, Ts), 2, 3, "NN", [1 1])

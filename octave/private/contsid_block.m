@@ -7,7 +7,10 @@
 ## identifier; @var{args} is its argument list: data (an @code{iddata} or
 ## y, u, Ts), @var{nn}, then CONTSID's positional options (lambda0, t0,
 ## init_method, tol, maxiter, arma_method; [] for a default) or name-value
-## pairs (@code{Tol}, @code{MaxIter}, @code{lambda}).
+## pairs (@code{Tol}, @code{MaxIter}, @code{lambda}, @code{InitMethod},
+## @code{ArmaMethod}). The start method is read by
+## @code{contsid_init_method}; @code{Infos.InitMethod} and
+## @code{Report.Parameters.InitMethod} say which start was used.
 ## @end deftypefn
 
 function [M, Infos, yhat] = contsid_block (fname, args)
@@ -67,11 +70,39 @@ function [M, Infos, yhat] = contsid_block (fname, args)
     o.maxiter = 100;      # the damped Wiener fixed point converges slowly
   endif
   o.intersample = double (strcmpi (d.intersample, "foh"));
+  init = [];
+  arma = "pem";
   read_options ();
   if (d.uniform)
     t = d.Ts;
   else
     t = d.t;
+  endif
+  ## The start of the first refined-IV pass: the MISO [f B_1 .. B_l] of
+  ## the basis channels (contsid_init_method: the engine's, LSSVF, IVSVF
+  ## or a model, e.g. a previous MISO model).
+  l = columns (W);
+  L = struct ("nf", o.nf, "nb", repmat (o.nb, 1, l),
+              "nk", repmat (o.nk, 1, l),
+              "intersample", merge (o.intersample == 1, "foh", "zoh"));
+  if (isfield (o, "cutoffs"))
+    L.cutoffs = o.cutoffs;
+  endif
+  if (strcmp (fname, "hwsrivc"))
+    start = contsid_init_method (fname, init, L,
+                                 {"ivgpmf", "lssvf", "model"},
+                                 ["the first pass regresses on powers of ", ...
+                                  "the measured y, which a one-step SVF ", ...
+                                  "estimate cannot start; 'sriv' only"]);
+  else
+    start = contsid_init_method (fname, init, L);
+  endif
+  [theta0, start] = contsid_init_method (fname, start, L, d.y, W, t);
+  if (! isempty (theta0))
+    o.theta_init = theta0(:);
+  endif
+  if (strcmp (fname, "hrivc"))
+    o.arma_method = arma;
   endif
   [sep, cov, info] = hammerstein_mex (fname, d.y, W, t, o);
   if (! info.converged)
@@ -95,6 +126,7 @@ function [M, Infos, yhat] = contsid_block (fname, args)
   yh = info.simulated;
   report = fit_report (d.y, yh, np);
   report.Method = fname;
+  report.Parameters.InitMethod = start;
   ilin = 1:(nf + nb);
   Mlin = idctm (struct ("B", b, "F", F, "nk", o.nk, "Ts", Ts,
                         "InterSample", d.intersample,
@@ -113,7 +145,8 @@ function [M, Infos, yhat] = contsid_block (fname, args)
                   struct ("RT2", RT2, "YIC", YIC, "AIC", AIC),
                   "Cond_IPM", info.condition, "iternum", info.iterations,
                   "converged", info.converged, "reason", info.reason,
-                  "theta", sep, "covariance", cov, "sd", sd);
+                  "theta", sep, "covariance", cov, "sd", sd,
+                  "InitMethod", start, "ArmaMethod", arma);
   if (strcmp (fname, "hwsrivc"))
     Infos.NL_H = alpha(:);
     Infos.NL_W = info.beta(:);
@@ -206,13 +239,20 @@ function [M, Infos, yhat] = contsid_block (fname, args)
           error ([fname ":notSupported"], ...
                  "%s: only t0 = 0 (the whole record) is supported", fname);
         endif
-      case {"initmethod", "armamethod"}
-        if (! ischar (v))
-          error ([fname ":badOption"], "%s: %s must be a string", fname,
-                 name);
+      case "initmethod"
+        init = v;           # read by contsid_init_method
+      case "armamethod"
+        if (! ischar (v) || ! any (strcmpi (v, {"pem", "ivarma"})))
+          error ([fname ":badOption"],
+                 "%s: ArmaMethod must be 'pem' or 'ivarma'", fname);
         endif
-        ## The start is always the engine's (IVSVF over a grid of cut-offs)
-        ## and the ARMA fit arma_estimate's; the names are accepted.
+        arma = lower (v);
+        if (! strcmp (fname, "hrivc") && strcmp (arma, "ivarma"))
+          error ([fname ":notSupported"],
+                 ["%s: ArmaMethod 'ivarma' is not supported: the noise ", ...
+                  "is white here, there is no ARMA model to fit (hrivc ", ...
+                  "has one)"], fname);
+        endif
       otherwise
         error ([fname ":badOption"], "%s: unknown option '%s'", fname, name);
     endswitch

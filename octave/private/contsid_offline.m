@@ -32,7 +32,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   if (refined)
     form = "f";
     defaults = struct ("lambda_svf", [], "lambda", [], "Tol", 1e-6,
-                       "MaxIter", 30, "InitMethod", "ivsvf",
+                       "MaxIter", 30, "InitMethod", [],
                        "svf", "normalised", "InitialState", "zero",
                        "OutputOffset", "auto", "InputOffset", "auto",
                        "TimeScale", "auto", "MaxStarts", 3);
@@ -98,8 +98,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
 
   auto_input_offset = false;
+  start = [];
   if (refined)
     read_refined_options ();
+    [theta0, start] = contsid_init_method (fname, start, e, d.y, d.u, t);
+    if (! isempty (theta0))
+      e.theta_init = theta0(:);
+      auto_input_offset = false;
+    endif
   endif
   [theta, cov, info] = contsid_refined_iv (fname, d.y, d.u, t, e);
   ## info.clipped: the returned iterate had to be pulled back into the
@@ -261,6 +267,13 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
               "or start"], fname);
   endif
   M = make_model (fname, e, theta, cov, info, d, nu);
+  if (refined)
+    if (strcmp (start.Method, "sriv"))
+      start.Lambda = info.cutoff;   # the SVF cut-off of the start kept
+    endif
+    M.Report.Parameters.InitMethod = start;
+    info.start = start;
+  endif
   M = carried_levels (M, info, nu);
   M = simulation_fit (M, d, np, info.simulated);
   ## The samples missing from the record (NaN in y or u), bridged by
@@ -293,7 +306,8 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     endif
     e.tol = tol;
     e.maxiter = maxiter;
-    e.theta_init = init_estimate (fname, opts.InitMethod, e, np);
+    start = contsid_init_method (fname, opts.InitMethod, e);
+    e.theta_init = start.Theta(:);
     if (! any (strcmpi (opts.InitialState, {"zero", "estimate", "e", "z"})))
       error ([fname ":badOption"],
              "%s: InitialState must be 'zero' or 'estimate'", fname);
@@ -635,31 +649,6 @@ function M = simulation_fit (M, d, np, simulated)
   r.Fit = struct ("MSE", mse, "LossFcn", mse, "FitPercent", fit,
                   "FPE", mse * (1 + np / n) / (1 - np / n));
   M.Report = r;
-endfunction
-
-function theta = init_estimate (fname, init, e, np)
-  theta = [];
-  if (ischar (init) && strcmpi (init, "ivsvf"))
-    return;
-  endif
-  if (isa (init, "idpoly"))
-    init = init.theta;
-  endif
-  if (! isnumeric (init) || ! isreal (init) || numel (init) != np
-      || any (! isfinite (init)))
-    error ([fname ":badOption"], ...
-           "%s: InitMethod must be 'ivsvf', an idpoly or %d values [f b]",
-           fname, np);
-  endif
-  theta = double (init(:));
-  off = 0;
-  for k = 1:numel (e.nf)
-    if (any (real (roots ([1; theta(off + (1:e.nf(k)))])) >= 0))
-      error ([fname ":badInput"], "%s: the initial model must be stable",
-             fname);
-    endif
-    off += e.nf(k);
-  endfor
 endfunction
 
 ## [r1 r2] from datacl: N-by-2 [r1 r2], or one signal r placed by `at`

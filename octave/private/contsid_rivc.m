@@ -64,13 +64,19 @@ function [M, info, d] = run_rivc (args)
   opts = read_options (fname, rest(2:end),
                        {"lambda", "Tol", "MaxIter", "InitMethod", ...
                         "ArmaMethod", "ArmaMaxIter"}, ...
-                       {[], 1e-6, 30, "srivc", "pem", 50});
+                       {[], 1e-6, 30, [], "pem", 50});
   e = engine_options (fname, opts, d);
   [e.nb, e.nc, e.nd, e.nf, e.nk] = nn{:};
-  e = init_option (fname, opts.InitMethod, e, theta_init);
+  init = opts.InitMethod;
+  if (isempty (init) && ! isempty (theta_init))
+    init = theta_init;      # rivc (data, Mi): Mi starts the iterations
+  endif
+  start = contsid_init_method (fname, init, e);
+  [e, start] = plant_start (fname, start, e, d, d.u);
   [theta, cov, info] = call_mex (fname, d, [], e);
   info = derived (info, d, theta, cov);
   M = plant_model (fname, theta, cov, info, d, e);
+  M.Report.Parameters.InitMethod = start_report (start, info);
 endfunction
 
 ## clrivc (data_yu, data_yr, [nb nc nd nf nk], Mc[, T0, tol, maxiter]
@@ -85,9 +91,12 @@ function [M, info, d] = run_clrivc (args)
   ## a trailing name-value pair after the positional arguments
   named = find (cellfun (@ischar, rest(4:end)), 1);
   at = "input";
+  init = [];
   if (! isempty (named))
-    o = read_options (fname, rest(3+named:end), {"ReferenceAt"}, {at});
+    o = read_options (fname, rest(3+named:end), {"ReferenceAt", ...
+                      "InitMethod"}, {at, []});
     at = o.ReferenceAt;
+    init = o.InitMethod;
     rest = rest(1:2+named);
     if (! ischar (at) || ! any (strcmpi (at, {"input", "setpoint"})))
       error ("clrivc:badOption",
@@ -116,9 +125,14 @@ function [M, info, d] = run_clrivc (args)
   endif
   e.controller_num = num;
   e.controller_den = den;
+  ## 'lssvf'/'ivgpmf': the open-loop estimate of y on the measured u
+  ## (biased by the loop's noise, but only the start of the iterations)
+  start = contsid_init_method (fname, init, e);
+  [e, start] = plant_start (fname, start, e, d, d.u);
   [theta, cov, info] = call_mex (fname, d, r, e);
   info = derived (info, d, theta, cov);
   M = plant_model (fname, theta, cov, info, d, e);
+  M.Report.Parameters.InitMethod = start_report (start, info);
 endfunction
 
 ## cl2srivc (data_yu, data_ur, nn_ol, nn_cl[, model, T0, init, tol, maxiter])
@@ -146,11 +160,15 @@ function [M, info, d] = run_cl2srivc (args)
            "cl2srivc: an initial model is not supported; pass []");
   endif
   positional (fname, rest(5:min (end, 5)), {"T0"});
-  if (numel (rest) >= 6 && ! isempty (rest{6})
-      && ! (ischar (rest{6}) && any (strcmpi (rest{6}, {"srivc", "sriv"}))))
-    error ("cl2srivc:notSupported",
-           "cl2srivc: init_method must be 'srivc' (the engine's start)");
+  init = [];
+  if (numel (rest) >= 6)
+    init = rest{6};
   endif
+  ## one method starts both stages (a model could start only one of them)
+  start = contsid_init_method (fname, init,
+                               struct ("nf", nol(2), "nb", nol(1)), {"model"},
+                               ["init_method names the start of both ", ...
+                                "stages: 'sriv', 'ivgpmf' or 'lssvf'"]);
   opts = struct ("lambda", [], "Tol", 1e-6, "MaxIter", 30, "ArmaMaxIter", 50);
   if (numel (rest) >= 7 && ! isempty (rest{7}))
     opts.Tol = rest{7};
@@ -164,9 +182,11 @@ function [M, info, d] = run_cl2srivc (args)
   e.cl_nb = ncl(1); e.cl_nf = ncl(2); e.cl_nk = ncl(3);
   ## u_hat is the output of a continuous model: smooth between samples.
   e.intersample = 1;
+  [e, start] = two_stage_start (fname, start, e, d, r);
   [theta, cov, info] = call_mex (fname, d, r, e);
   info = derived (info, d, theta, cov);
   M = plant_model (fname, theta, cov, info, d, e);
+  M.Report.Parameters.InitMethod = start;
   ## cov is the two-stage estimator's; stage 2's own SRIVC covariance
   ## (white noise, u_hat exact) for comparison.
   M.Report.Parameters.Stage2Covariance = info.stage2_covariance;
@@ -202,6 +222,8 @@ function [M, info, d] = run_tfrivc (args)
   endif
   tol = 1e-6;
   maxiter = 30;
+  init = [];
+  lambda = [];
   for i = 1:2:numel (rest)
     name = rest{i};
     if (! ischar (name))
@@ -209,15 +231,21 @@ function [M, info, d] = run_tfrivc (args)
     endif
     if (strcmpi (name, "NN"))
       NN = read_orders (fname, rest{i+1}, 2, "NN = [nd nc]");
+    elseif (strcmpi (name, "InitMethod"))
+      init = rest{i+1};
     else
       pass(end+1:end+2) = rest(i:i+1);
       if (strcmpi (name, "MaxIter"))
         maxiter = rest{i+1};
       elseif (strcmpi (name, "TolPar"))
         tol = rest{i+1};
+      elseif (strcmpi (name, "Lambda"))
+        lambda = rest{i+1};
       endif
     endif
   endfor
+  start = contsid_init_method (fname, init,
+                               struct ("nf", np, "nb", nz + 1));
   data = iddata (d.y, d.u, d.Ts, "InterSample", d.intersample);
   if (isempty (td))
     targs = {data, np, nz, pass{:}};
@@ -246,6 +274,17 @@ function [M, info, d] = run_tfrivc (args)
   e.nk = floor (tdel / d.Ts + 1e-9);
   e.delay = max (tdel - e.nk * d.Ts, 0);
   e.theta_init = [den(2:end) / den(1), num / den(1)];
+  ## 'sriv': tfsrivc's model; otherwise the named start at tfsrivc's delay
+  ## (tfsrivc's Lambda, when given, is the start's cut-off)
+  if (! isempty (lambda))
+    e.cutoffs = lambda;
+  endif
+  if (! strcmp (start.Method, "sriv"))
+    [e, start] = plant_start (fname, start, e, d, d.u);
+  else
+    start.Theta = e.theta_init;
+  endif
+  e = rmfield (e, intersect (fieldnames (e), {"cutoffs"}));
   [theta, cov, info] = call_mex (fname, d, [], e);
   info.start = Ms;
   f = theta(1:np).';
@@ -264,6 +303,7 @@ function [M, info, d] = run_tfrivc (args)
                                  "Reason", info.reason);
   M.Report.Parameters.NoiseModel = struct ("C", info.C, "D", info.D,
                                 "NoiseVariance", info.noise_variance);
+  M.Report.Parameters.InitMethod = start;
 endfunction
 
 function [d, rest] = read_data (fname, args, multi = false)
@@ -478,35 +518,65 @@ function e = engine_options (fname, opts, d)
   e.intersample = double (strcmpi (d.intersample, "foh"));
 endfunction
 
-function e = init_option (fname, init, e, theta_init)
-  if (! isempty (theta_init))
-    e.theta_init = theta_init;
-  endif
-  if (ischar (init))
-    if (! any (strcmpi (init, {"srivc", "sriv"})))
-      error ([fname ":notSupported"],
-             ["%s: InitMethod '%s' is not supported ('srivc', an ", ...
-              "idpoly or [f b])"], fname, init);
-    endif
+## cl2srivc's starts: stage 1 (u on r) from the named start of u on r;
+## stage 2 (y on u_hat) from the named start of y on u_hat, u_hat the
+## simulation of stage 1's SRIVC run from its start, as the gateway runs
+## it (cl2srivc of refined_iv_bj.hpp: the same settings, at least 30
+## iterations). start.Stage1Theta reports stage 1's start.
+function [e, start] = two_stage_start (fname, start, e, d, r)
+  start.Stage1Theta = [];
+  if (strcmp (start.Method, "sriv"))
     return;
   endif
-  if (isa (init, "idpoly"))
-    F = init.F;
-    B = init.B;
-    if (iscell (F) || iscell (B) || numel (e.nf) > 1)
-      error ([fname ":badOption"], "%s: InitMethod: one input only", fname);
-    endif
-    init = [F(2:end) / F(1), B / F(1)];
+  e1 = struct ("nf", e.cl_nf, "nb", e.cl_nb, "nk", e.cl_nk,
+               "intersample", 0);
+  if (isfield (e, "cutoffs"))
+    e1.cutoffs = e.cutoffs;
   endif
-  np = sum (e.nf) + sum (e.nb);
-  if (! isnumeric (init) || ! isreal (init) || numel (init) != np
-      || any (! isfinite (init(:))))
-    error ([fname ":badOption"],
-           ["%s: InitMethod must be 'srivc', an idpoly or %d values ", ...
-            "[f b] ([f_1 .. f_m b_1 .. b_m] for m inputs)"],
-           fname, np);
+  [e1, start1] = plant_start (fname, start, e1,
+                              struct ("y", d.u, "Ts", d.Ts), r);
+  e.cl_theta_init = e1.theta_init;
+  o = struct ("nf", e.cl_nf, "nb", e.cl_nb, "nk", e.cl_nk,
+              "theta_init", e1.theta_init, "tol", e.tol,
+              "maxiter", max (e.maxiter, 30));
+  [~, ~, i1] = contsid_refined_iv (fname, d.u, r, d.Ts, o);
+  [e, start] = plant_start (fname, start, e, d, i1.simulated);
+  start.Stage1Theta = start1.Theta;
+  start.Stabilised = start.Stabilised || start1.Stabilised;
+endfunction
+
+## The start of the plant iterations named by start (contsid_init_method)
+## on the record d with the input(s) W: e.theta_init, empty for the
+## engine's own SRIVC (CLSRIVC) start.
+function [e, start] = plant_start (fname, start, e, d, W, rule = [])
+  L = struct ("nf", e.nf, "nb", e.nb, "nk", e.nk);
+  if (numel (e.nf) > 1)
+    L.group = 1:numel (e.nf);
   endif
-  e.theta_init = double (init(:).');
+  if (isempty (rule))
+    rule = e.intersample;
+  endif
+  L.intersample = merge (rule == 1, "foh", "zoh");
+  if (isfield (e, "cutoffs"))
+    L.cutoffs = e.cutoffs;
+  endif
+  if (isfield (e, "delay"))
+    L.delay = e.delay;
+  endif
+  [theta0, start] = contsid_init_method (fname, start, L, d.y, W, d.Ts);
+  if (! isempty (theta0))
+    e.theta_init = theta0;
+  endif
+endfunction
+
+## Report.Parameters.InitMethod: the start used (Method, Requested,
+## Lambda, Theta, Stabilised); the engine's own start reports the SRIVC
+## model it found.
+function r = start_report (start, info)
+  r = start;
+  if (strcmp (start.Method, "sriv") && isfield (info, "start_theta"))
+    r.Theta = info.start_theta(:).';
+  endif
 endfunction
 
 function [theta, cov, info] = call_mex (fname, d, r, e)

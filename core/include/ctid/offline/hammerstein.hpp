@@ -72,6 +72,12 @@ struct BlockSettings {
   InterSample u_rule = InterSample::kZoh;
   InterSample y_rule = InterSample::kFoh;
   std::vector<S> cutoffs;  // SVF start cut-offs (empty: the engine's grid)
+  // The start of the first refined-IV pass in the engine's MISO layout
+  // [f; B_1; ..; B_l] (HWSRIVC: then the nf + 1 coefficients of each
+  // output-polynomial channel), original time, stable f; empty: the
+  // engine's automatic start (IVSVF at the cut-offs, then SRIVC).
+  Vector<S> theta_init;
+  ArmaMethod arma_method = ArmaMethod::kPem;  // HRIVC's noise model
 };
 
 template <typename S>
@@ -347,6 +353,11 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
   problem.y_rule = settings.y_rule;
   const int np = problem.num_parameters();
   if (n < 2 * np + 10) return bad_input("too few samples for the model");
+  if (settings.theta_init.size() != 0 &&
+      (settings.theta_init.size() != np || !settings.theta_init.allFinite())) {
+    return bad_input("theta_init needs " + std::to_string(np) +
+                     " finite entries [f; B_1; ..; B_l]");
+  }
 
   const Eigen::Map<const Vector<S>> y(data.y, n);
   const Eigen::Map<const Matrix<S>> basis(data.w, n, l);
@@ -458,7 +469,8 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
     RivData<S> view = data;
     view.y = yf.data();
     view.w = w.data();
-    riv.theta_init = sep.size() > 0 ? reconstruct(ow, l, sep) : Vector<S>();
+    riv.theta_init =
+        sep.size() > 0 ? reconstruct(ow, l, sep) : settings.theta_init;
     // Hammerstein: one refined-IV step from the structured model; the
     // Wiener pass changes the regressors, so the engine converges on them.
     riv.max_iterations = (it == 1 || wiener) ? settings.max_iterations : 1;
@@ -488,8 +500,10 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
     if (arma) {
       const Vector<S> residual = y - x;
       ArmaResult<S> noise;
-      status = arma_estimate<S>(residual.data(), n, o.nd, o.nc,
-                                ArmaSettings<S>(), &noise);
+      ArmaSettings<S> arma_settings;
+      arma_settings.method = settings.arma_method;
+      status = arma_estimate<S>(residual.data(), n, o.nd, o.nc, arma_settings,
+                                &noise);
       if (!status.ok()) return status;
       c = noise.c;
       d = noise.d;
