@@ -21,35 +21,7 @@ namespace ctid {
 namespace {
 
 using test::relative_error;
-
-// num(p)/den(p) (descending powers, strictly proper) driven by v held
-// over each step h, output at every sample (at rest at t = 0).
-std::vector<double> simulate_zoh(const Eigen::VectorXd& num,
-                                 const Eigen::VectorXd& den,
-                                 const std::vector<double>& v, double h) {
-  const int n = static_cast<int>(den.size()) - 1;
-  const Eigen::VectorXd a = den / den(0);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-  b.tail(num.size()) = num / den(0);
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
-  for (int i = 0; i + 1 < n; ++i) A(i, i + 1) = 1;
-  for (int j = 0; j < n; ++j) A(n - 1, j) = -a(n - j);
-  Eigen::RowVectorXd c(n);
-  for (int i = 0; i < n; ++i) c(i) = b(n - 1 - i);
-  Eigen::MatrixXd big = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  big.topLeftCorner(n, n) = A * h;
-  big(n - 1, n) = h;
-  const Eigen::MatrixXd e = big.exp();
-  const Eigen::MatrixXd Phi = e.topLeftCorner(n, n);
-  const Eigen::VectorXd G = e.topRightCorner(n, 1);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  std::vector<double> y(v.size());
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    y[k] = c * x;
-    x = Phi * x + G * v[k];
-  }
-  return y;
-}
+using test::simulate_zoh;
 
 // CONTSID's Hammerstein demo: ubar = u + 0.5 u^2 + 0.25 u^3 into
 // (10 p + 30)/(p^2 + p + 5), u uniform on [-2, 2], Ts = 0.5.

@@ -10,9 +10,44 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
 namespace ctid::test {
+
+// num(p)/den(p) (descending powers, proper) driven by v held over each
+// step h, output at every sample (the system at rest at t = 0): the exact
+// ZOH response through the matrix exponential of the controllable form.
+inline std::vector<double> simulate_zoh(const Eigen::VectorXd& num,
+                                        const Eigen::VectorXd& den,
+                                        const std::vector<double>& v,
+                                        double h) {
+  const int n = static_cast<int>(den.size()) - 1;
+  const double lead = den(0);
+  Eigen::VectorXd a = den / lead;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n + 1);
+  b.tail(num.size()) = num / lead;
+  // x' = A x + B v, x = [w .. w^(n-1)], y = sum c_i w^(i) + d v.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i + 1 < n; ++i) A(i, i + 1) = 1;
+  for (int j = 0; j < n; ++j) A(n - 1, j) = -a(n - j);
+  const double d = b(0);
+  Eigen::RowVectorXd c(n);
+  for (int i = 0; i < n; ++i) c(i) = b(n - i) - d * a(n - i);
+  Eigen::MatrixXd big = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  big.topLeftCorner(n, n) = A * h;
+  big(n - 1, n) = h;
+  const Eigen::MatrixXd e = big.exp();
+  const Eigen::MatrixXd Phi = e.topLeftCorner(n, n);
+  const Eigen::VectorXd G = e.topRightCorner(n, 1);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  std::vector<double> y(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    y[k] = c * x + d * v[k];
+    x = Phi * x + G * v[k];
+  }
+  return y;
+}
 
 // |a - b| <= tol * max(1, max|b|) entry by entry.
 template <typename A, typename B>
