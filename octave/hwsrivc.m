@@ -1,6 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{model}, @var{Infos}, @var{yhat}] =} hwsrivc (@var{data}, [@var{nb} @var{nf}+1 @var{nk} @var{lenH} @var{lenW}])
 ## @deftypefnx {} {[@dots{}] =} hwsrivc (@var{data}, [@var{nb} @var{nf}+1 @var{nk}])
+## @deftypefnx {} {[@dots{}] =} hwsrivc (@var{data}, @var{nn}, @var{model}, @var{tol}, @var{maxiter})
 ## @deftypefnx {} {[@dots{}] =} hwsrivc (@dots{}, @var{name}, @var{value})
 ## Continuous-time Hammerstein-Wiener model by simplified refined IV
 ## (HWSRIVC, Ni, Garnier and Gilson, IET CTA 7(9), 2013):
@@ -32,6 +33,10 @@
 ## @qcode{"lssvf"} and models raise @code{hwsrivc:notSupported};
 ## @code{"ArmaMethod"} only @qcode{"pem"} (the noise is white, there is no
 ## noise model: @qcode{"ivarma"} raises @code{hwsrivc:notSupported}).
+## CONTSID's positional form (@var{model}, @var{tol}, @var{maxiter}) is
+## the same as @code{"InitMethod"}, @code{"Tol"}, @code{"MaxIter"}; an
+## empty argument keeps the default (so @var{model} = [] is the
+## engine's start, and a model raises @code{hwsrivc:notSupported}).
 ##
 ## Outputs: @var{model}, the linear part B/F (@code{idpoly}, covariance of
 ## [f b], @code{Report.Fit} of @var{yhat}); @var{Infos} with @code{NL_H}
@@ -83,6 +88,18 @@ endfunction
 %! truth = [2 1 -2 0.8 1.5 1]';
 %! assert (all (abs (I.theta - truth) < 4 * I.sd(:)));
 
+%!test  # CONTSID's positional (model, tol, maxiter) = the named options
+%! d = iddata (y0, u, Ts);
+%! warning ("off", "hwsrivc:notConverged", "local");
+%! [~, I0] = hwsrivc (d, [1 2 0 3 3]);
+%! assert (I0.iternum > 1);
+%! [m1, I1] = hwsrivc (d, [1 2 0 3 3], [], 1e-3, 1);
+%! [m2, I2] = hwsrivc (d, [1 2 0 3 3], "Tol", 1e-3, "MaxIter", 1);
+%! assert (I1.theta, I2.theta, 0);
+%! assert (I1.iternum, 1);      # the positional maxiter was used
+
+%!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], [2 1 1 1], 1e-6, 10)
+%!error id=hwsrivc:badInput hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], [], 1e-6, 10, 1)
 %!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", "lssvf")
 %!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", "ivgpmf")
 %!error id=hwsrivc:notSupported hwsrivc (iddata (y0, u, Ts), [1 2 0 3 3], "InitMethod", [2 1 1 1])

@@ -201,7 +201,14 @@ function [M, Infos, yhat] = contsid_block (fname, args)
       endfor
       return;
     endif
-    names = {"lambda", "t0", "initmethod", "tol", "maxiter", "armamethod"};
+    ## CONTSID's positional forms: hsrivc/hrivc (data, nn, lambda0, t0,
+    ## init_method, tol, maxiter, arma_method); hwsrivc (data, nn, model,
+    ## tol, maxiter), whose model is its start (init_method)
+    if (strcmp (fname, "hwsrivc"))
+      names = {"initmethod", "tol", "maxiter"};
+    else
+      names = {"lambda", "t0", "initmethod", "tol", "maxiter", "armamethod"};
+    endif
     if (numel (rest) > numel (names))
       error ([fname ":badInput"], "%s: too many arguments", fname);
     endif
