@@ -17,8 +17,15 @@
 ## srivc's automatic start), @code{n0e} and @code{n0v} (first sample
 ## of ZE and ZV used to compute the criteria, default 1: the transient at
 ## the start can be left out), @code{NN} (@qcode{"auto"}, @qcode{"range"}
-## or @qcode{"list"}), and any @code{srivc} option (e.g. @code{Tol},
-## @code{MaxIter}, @code{InitialState}).
+## or @qcode{"list"}), @code{InitialCondition} (@qcode{"z"}, the
+## default as CONTSID: the criteria simulate each model from rest;
+## @qcode{"e"}, as MATLAB's @code{compare}: each model's initial state is
+## estimated on the data it is judged on, ZV or ZE, by least squares on
+## its free responses as @code{comparec (..., "InitialCondition", "e")},
+## so that a record that does not start at rest does not rank the
+## structures by their transient from rest), and any @code{srivc} option
+## (e.g. @code{Tol}, @code{MaxIter}, @code{InitialState}, which concerns
+## the estimation).
 ##
 ## @var{V}: one row per structure, [RT2 YIC NN log(cond) N]: RT2 = 1 -
 ## var(y - y_sim)/var(y) on ZV (on ZE without ZV), YIC the Young
@@ -27,9 +34,14 @@
 ## used. A structure whose fit failed has RT2 = YIC = NaN. @var{info}:
 ## per structure @code{models} (cell), @code{converged}, @code{stable},
 ## @code{fit} (validation fit in per cent, 100 (1 - |y - y_sim| /
-## |y - mean y|)). y_sim is the model as estimated: with the output and
-## input offsets that @code{srivc} estimated on a raw record (in the
-## model's @code{Report.DataUsed.OutputOffset} and @code{InputOffset}).
+## |y - mean y|)), @code{x0} (cell: the initial state estimated with
+## @code{"InitialCondition", "e"}, as @code{comparec}'s
+## @code{estInfo.x0}; empty without it, and for a model whose state
+## cannot be estimated, an unstable one, which is then judged from rest). y_sim is the model as estimated:
+## with the output and input offsets that @code{srivc} estimated on a raw
+## record (in the model's @code{Report.DataUsed.OutputOffset} and
+## @code{InputOffset}), plus its free response from the estimated initial
+## state with @code{"InitialCondition", "e"}.
 ##
 ## Missing samples (NaN in y or u) of ZE are bridged by @code{srivc}; its
 ## criteria then use the present samples (N counts them).  ZV is
@@ -69,7 +81,7 @@ function [V, info, varargout] = srivcstruc (varargin)
     error ("srivcstruc:badOption",
            "srivcstruc: options come as name-value pairs");
   endif
-  n0e = 1; n0v = 1; form = "auto";
+  n0e = 1; n0v = 1; form = "auto"; ic = "z";
   pass = {};
   for i = 1:2:numel (rest)
     name = rest{i};
@@ -83,6 +95,14 @@ function [V, info, varargout] = srivcstruc (varargin)
         n0v = rest{i+1};
       case "nn"
         form = rest{i+1};
+      case "initialcondition"
+        ic = rest{i+1};
+        if (! ischar (ic)
+            || ! any (strcmpi (ic, {"e", "z", "estimate", "zero"})))
+          error ("srivcstruc:badOption", ["srivcstruc: InitialCondition ", ...
+                 "must be 'e' (estimate) or 'z' (from rest)"]);
+        endif
+        ic = lower (ic(1));
       otherwise
         pass(end+1:end+2) = rest(i:i+1);
     endswitch
@@ -117,7 +137,8 @@ function [V, info, varargout] = srivcstruc (varargin)
   ns = rows (structures);
   V = NaN (ns, 2 + columns (structures) + 2);
   info = struct ("models", {cell(ns, 1)}, "converged", false (ns, 1),
-                 "stable", false (ns, 1), "fit", NaN (ns, 1));
+                 "stable", false (ns, 1), "fit", NaN (ns, 1),
+                 "x0", {cell(ns, 1)});
   for k = 1:ns
     nn = structures(k, :);
     V(k, 3:2+numel (nn)) = nn;
@@ -135,13 +156,21 @@ function [V, info, varargout] = srivcstruc (varargin)
     info.converged(k) = est.converged;
     info.stable(k) = est.stable;
     if (isempty (ZV))
+      ys = est.simulated;
+      if (ic == "e")
+        [ys, info.x0{k}] = free_response (M, ye(present_e), ys,
+                                          sampling (ZE, present_e));
+      endif
       y = ye(used_e);
-      ys = est.simulated(used_e(present_e));
+      ys = ys(used_e(present_e));
     else
       ## the model as estimated: with the levels it carries (srivc on a
       ## raw record, Report.DataUsed.OutputOffset and InputOffset)
       [c, d] = contsid_carried_levels (M, columns (uv));
       ys = simc (M, uv - d, get (ZV, "Ts")) + c;
+      if (ic == "e")
+        [ys, info.x0{k}] = free_response (M, yv, ys, get (ZV, "Ts"));
+      endif
       y = yv(n0v:end);
       ys = ys(n0v:end);
     endif
@@ -163,6 +192,29 @@ function [M, RT2, YIC, info] = quiet_srivc (ZE, nn, pass)
     warning (state);
     warning (state2);
   end_unwind_protect
+endfunction
+
+## The model's output plus its free response fitted to y (comparec's
+## InitialCondition 'e'); a model whose initial state cannot be
+## estimated (unstable, static) keeps its output from rest, x0 = [].
+function [ys, x0] = free_response (M, y, ys, t)
+  x0 = [];
+  try
+    [ys, x0] = contsid_initial_state ("srivcstruc", M, y, ys, t);
+  catch err
+    if (! strcmp (err.identifier, "srivcstruc:badInput"))
+      rethrow (err);
+    endif
+  end_try_catch
+endfunction
+
+## The sampling interval of Z, or the instants of the samples kept.
+function t = sampling (Z, keep)
+  [d, ~] = contsid_getdata ("srivcstruc", Z);
+  t = d.Ts;
+  if (! d.uniform || ! all (keep))
+    t = d.t(keep);
+  endif
 endfunction
 
 function check_start (n0, n, name)
@@ -261,6 +313,49 @@ endfunction
 %! assert (V(1, 1) > 0.9);
 %! ## with a zero-mean error, fit = 100 (1 - sqrt (1 - RT2))
 %! assert (info.fit(1), 100 * (1 - sqrt (1 - V(1, 1))), 2);
+%!test  # InitialCondition 'e': a validation record that does not start
+%! ## at rest is judged with each model's initial state estimated; checked
+%! ## against an independent least-squares fit of the free responses
+%! ## (matrix exponential of the model's companion form, state [y; y'])
+%! Ts = get (ZV, "Ts"); uv = get (ZV, "InputData"); N = numel (uv);
+%! A0 = [0 1; -4 -2.4]; t = (0:N-1)' * Ts;
+%! yfree = arrayfun (@(tk) [1 0] * expm (A0 * tk) * [3; -2], t);
+%! ZVx = iddata (get (ZV, "OutputData") + yfree, uv, Ts);
+%! V0 = srivcstruc (ZE, ZVx, [1 2 0], "NN", "list");
+%! [V, info] = srivcstruc (ZE, ZVx, [1 2 0], "NN", "list",
+%!                         "InitialCondition", "e");
+%! M = info.models{1};
+%! ys0 = simc (M, uv - M.Report.DataUsed.InputOffset, Ts) ...
+%!       + M.Report.DataUsed.OutputOffset;
+%! F = M.F / M.F(1);
+%! A = [0 1; -F(3) -F(2)];
+%! Phi = [arrayfun(@(tk) [1 0] * expm (A * tk) * [1; 0], t), ...
+%!        arrayfun(@(tk) [1 0] * expm (A * tk) * [0; 1], t)];
+%! yv = get (ZVx, "OutputData");
+%! x0 = Phi \ (yv - ys0);
+%! ys = ys0 + Phi * x0;
+%! assert (info.x0{1}(:), x0, 1e-6 * norm (x0));
+%! assert (V(1, 1), 1 - var (yv - ys, 1) / var (yv, 1), 1e-9);
+%! assert (V0(1, 1), 1 - var (yv - ys0, 1) / var (yv, 1), 1e-9);
+%! assert (V(1, 1) > 0.9 && V0(1, 1) < V(1, 1) - 0.05);
+%! ## the state the record started in: [3; -2] plus that of the noise-free
+%! ## system at the split (ZOH steps of its companion form)
+%! ue = get (ZE, "InputData");
+%! Md = expm ([A0, [0; 4]; 0 0 0] * Ts);
+%! xs = [0; 0];
+%! for k = 1:numel (ue)
+%!   xs = Md(1:2, 1:2) * xs + Md(1:2, 3) * ue(k);
+%! endfor
+%! sd = 0.1 * sqrt (diag (inv (Phi' * Phi)));    # the noise's sd is 0.1
+%! assert (abs (x0 - (xs + [3; -2])) < 4 * sd);
+%!test  # without ZV, 'e' judges on ZE with the state estimated there
+%! [V, info] = srivcstruc (ZE, [], [1 2 0; 1 1 0], "NN", "list",
+%!                         "InitialCondition", "e");
+%! Vz = srivcstruc (ZE, [], [1 2 0; 1 1 0], "NN", "list");
+%! assert (! isempty (info.x0{1}) && ! isempty (info.x0{2}));
+%! assert (all (V(:, 1) >= Vz(:, 1) - 1e-12));
+%!error id=srivcstruc:badOption
+%! srivcstruc (ZE, [], [1 2 0], "InitialCondition", "x")
 %!error id=srivcstruc:badInput srivcstruc (ZE, ZN, [1 2 0])
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e", 0)
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e")

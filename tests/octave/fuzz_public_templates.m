@@ -104,7 +104,9 @@ function tpl = fuzz_public_templates ()
   tpl.sineresp = {{M, 1, (0:n-1)' * Ts}};
   tpl.spafdr = {{data}, {data, 20, w}};
   tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, {data, [1 2 0], "lambda", 3}};
-  tpl.srivcstruc = {{data, data, [1 2 0; 2 2 0]}, {data, [], [1 1 0; 2 2 0]}};
+  tpl.srivcstruc = {{data, data, [1 2 0; 2 2 0]}, {data, [], [1 1 0; 2 2 0]}, ...
+                    {data, data, [1 2 0], "NN", "list", ...
+                     "InitialCondition", "e"}};
   tpl.stepplot = {{M}, {M, "r", P}};
   tpl.svfcutoff = {{long, [1 2 0]}};
   tpl.svfscaling = {{data, [2 1 0], "lambda_svf", 3}};
