@@ -133,6 +133,9 @@ function [V, info, varargout] = srivcstruc (varargin)
   used_e = present_e;
   used_e(1:n0e-1) = false;
   structures = expand (NN, nu, form);
+  if (! isempty (ZV))
+    tv = sampling (ZV, true (rows (yv), 1));   # Ts, or irregular instants
+  endif
 
   ns = rows (structures);
   V = NaN (ns, 2 + columns (structures) + 2);
@@ -167,9 +170,10 @@ function [V, info, varargout] = srivcstruc (varargin)
       ## the model as estimated: with the levels it carries (srivc on a
       ## raw record, Report.DataUsed.OutputOffset and InputOffset)
       [c, d] = contsid_carried_levels (M, columns (uv));
-      ys = simc (M, uv - d, get (ZV, "Ts")) + c;
+      ## on ZV's own sampling and InterSample (ZOH/FOH, irregular instants)
+      ys = simc (M, set (ZV, "InputData", uv - d)) + c;
       if (ic == "e")
-        [ys, info.x0{k}] = free_response (M, yv, ys, get (ZV, "Ts"));
+        [ys, info.x0{k}] = free_response (M, yv, ys, tv);
       endif
       y = yv(n0v:end);
       ys = ys(n0v:end);
@@ -356,6 +360,31 @@ endfunction
 %! assert (all (V(:, 1) >= Vz(:, 1) - 1e-12));
 %!error id=srivcstruc:badOption
 %! srivcstruc (ZE, [], [1 2 0], "InitialCondition", "x")
+%!test  # ZV is simulated on its own sampling: irregular instants, FOH;
+%! ## R_T^2 equals comparec's on ZV (another path to the simulation; a
+%! ## constant output level leaves R_T^2 unchanged)
+%! randn ("state", 5); rand ("state", 5);
+%! M0 = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
+%! N = 600; t = cumsum (0.04 + 0.02 * rand (N, 1));
+%! u = sign (sin (0.7 * t) + 0.3 * randn (N, 1));
+%! y = simc (M0, iddata ([], u, "SamplingInstants", t)) + 0.02 * randn (N, 1);
+%! Z = iddata (y, u, "SamplingInstants", t);
+%! Ts = 0.05; uf = prbs (9, 8); Nf = numel (uf); h = floor (Nf / 2);
+%! yf = simc (M0, iddata ([], uf, Ts, "InterSample", "foh"));
+%! ZF = iddata (yf + 0.02 * randn (Nf, 1), uf, Ts, "InterSample", "foh");
+%! for c = {{Z(1:300), Z(301:600)}, {ZF(1:h), ZF(h+1:Nf)}}
+%!   [ze, zv] = deal (c{1}{:});
+%!   for ic = {"z", "e"}
+%!     [V, info] = srivcstruc (ze, zv, [1 2 0], "NN", "list",
+%!                             "InitialCondition", ic{1});
+%!     M = info.models{1};
+%!     zvu = set (zv, "InputData",
+%!                get (zv, "InputData") - M.Report.DataUsed.InputOffset);
+%!     [~, ci] = comparec (zvu, M, "InitialCondition", ic{1});
+%!     assert (V(1, 1), ci.RT2, 1e-9);
+%!     assert (V(1, 1) > 0.9);
+%!   endfor
+%! endfor
 %!error id=srivcstruc:badInput srivcstruc (ZE, ZN, [1 2 0])
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e", 0)
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e")
