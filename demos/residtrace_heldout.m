@@ -35,9 +35,10 @@
 ## friction only (rpm); documented: no nonlinear effect.
 ## @end table
 ##
-## Writes @var{outdir}/residtrace_heldout.md (default "results") and
+## Writes @var{outdir}/residtrace_heldout.md (default "results": the
+## table, then residtrace's verdict on each record) and
 ## returns the table as a struct array (record, documented, found,
-## rmse_before, rmse_after, elapsed, and the ranking of each pass).
+## rmse_before, rmse_after, elapsed, the ranking of each pass, verdict).
 ## @var{which}: a cell of record names to run (default all eight; each
 ## record keeps its own seed).
 ## @end deftypefn
@@ -49,7 +50,7 @@ function T = residtrace_heldout (outdir = "results", which = {})
          {"state_nonlinearity"}, {"saturation"}, {}, {}, {}};
   T = struct ("record", {}, "documented", {}, "found", {}, "all", {},
               "rmse_before", {}, "rmse_after", {}, "elapsed", {},
-              "levels", {}, "passes", {});
+              "levels", {}, "passes", {}, "verdict", {});
   for k = 1:numel (recs)
     if (! isempty (which) && ! any (strcmp (which, recs{k})))
       continue;
@@ -65,11 +66,12 @@ function T = residtrace_heldout (outdir = "results", which = {})
                        "rmse_before", R.rmse_before,
                        "rmse_after", R.rmse_final, "elapsed", el,
                        "levels", R.levels.estimated,
-                       "passes", {passes(R)});
+                       "passes", {passes(R)}, "verdict", R.verdict);
     printf (["%-6s documented %-30s found %-20s (%s) RMSE %.4g -> %.4g, ", ...
              "%.0f s\n"],
             recs{k}, T(end).documented, R.effect, T(end).all,
             R.rmse_before, R.rmse_final, el);
+    printf ("       verdict: %s\n", R.verdict);
     fflush (stdout);
   endfor
   fid = fopen (fullfile (outdir, "residtrace_heldout.md"), "w");
@@ -84,6 +86,10 @@ function T = residtrace_heldout (outdir = "results", which = {})
                                t.documented), t.found, t.all,
              ifelse (t.levels, "yes", "no"), t.rmse_before, t.rmse_after,
              t.elapsed);
+  endfor
+  fprintf (fid, "\nVerdicts:\n\n");
+  for k = 1:numel (T)
+    fprintf (fid, "- %s: %s\n", T(k).record, T(k).verdict);
   endfor
   fclose (fid);
 endfunction

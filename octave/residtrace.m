@@ -236,6 +236,16 @@
 ## is declared before the first effect, @code{rmse_before} includes it.
 ## @item levels
 ## what was done about the record's levels (estimated, u0, y0, text).
+## @item rivals
+## the candidates the data do not tell from an effect that was found: for
+## each pass's winner, the other significant candidates of its group
+## whose validation error the winner's correction does not significantly
+## improve on (the encompassing test residtrace ranks nested candidates
+## by, and a share of at least @code{minscore}); struct array with
+## fields @code{found} (the winner), @code{effect}, @code{variant},
+## @code{score}, @code{p}; empty when every winner was told apart. The
+## verdict names them ("...; not told apart by these data: saturation
+## from static_nonlinearity").
 ## @item verdict
 ## one line: what was found, or why nothing could be tested.
 ## @item model
@@ -256,7 +266,8 @@
 ## @code{final} (a prediction or a tracked simulation where the effect's
 ## kind says so), @code{final_simulation}.
 ## @item history
-## one entry per pass: effect, rmse, fit, white_p, indep_p, ranking.
+## one entry per pass: effect, rmse, fit, white_p, indep_p, ranking,
+## rivals.
 ## @item table, tests_before, tests_after, testable, reason
 ## the Markdown before/after table (see @code{residtrace_table}), the
 ## residual tests, and whether the residual could be tested at all.
@@ -435,7 +446,7 @@ function [R, varargout] = residtrace (varargin)
 
   history = struct ("effect", {}, "rmse", {}, "fit", {}, "white_p", {},
                     "indep_p", {}, "ranking", {}, "model", {},
-                    "kind", {}, "evidence", {});
+                    "kind", {}, "evidence", {}, "rivals", {});
   [e0, ~] = residtrace_valerror (cur, V, ctx);
   R.rmse_before = rms_ (e0);
   R.fit_before = fit_ (V.y, e0);
@@ -451,6 +462,8 @@ function [R, varargout] = residtrace (varargin)
   R.effect = "none";
   R.ranking = struct ([]);
   R.untested = {};
+  R.rivals = struct ("found", {}, "effect", {}, "variant", {}, "score", {},
+                     "p", {});
   R.rmse_after = R.rmse_before;
   R.rmse_after_kind = "simulation";
   R.rmse_after_tracked = NaN;
@@ -543,7 +556,7 @@ function [R, varargout] = residtrace (varargin)
     h = struct ("effect", "none", "rmse", rms_ (e0), "fit", fit_ (V.y, e0),
                 "white_p", tests.white_p, "indep_p", tests.indep_p,
                 "ranking", ranking, "model", [], "kind", "simulation",
-                "evidence", []);
+                "evidence", [], "rivals", []);
     if (pass == 1)
       R.ranking = ranking;
     endif
@@ -555,7 +568,13 @@ function [R, varargout] = residtrace (varargin)
     h.model = winner.model;
     h.kind = winner.kind;
     h.evidence = winner.evidence;
+    h.rivals = winner.rivals;
     history(end+1) = h;
+    for v = winner.rivals(:).'
+      R.rivals(end+1) = struct ("found", winner.effect, "effect", v.effect,
+                                "variant", v.variant, "score", v.score,
+                                "p", v.p);
+    endfor
     next = winner.model;
     next.effects = [cur.effects, {winner.effect}];
     cur = next;
@@ -705,8 +724,10 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   ranking = [r1; r2];
   if (! isempty (r1) && r1(1).significant)
     winner = r1(1);
+    winner.rivals = residtrace_rivals (winner, r1, opts);
   elseif (! isempty (r2) && r2(1).significant)
     winner = r2(1);
+    winner.rivals = residtrace_rivals (winner, r2, opts);
   endif
 endfunction
 
@@ -1185,6 +1206,16 @@ function s = verdict_text (R, history)
     endif
   else
     s = ["found: " strjoin(R.effects, ", ")];
+    if (! isempty (R.rivals))
+      parts = {};
+      for f = unique ({R.rivals.found}, "stable")
+        k = strcmp ({R.rivals.found}, f{1});
+        parts{end+1} = sprintf ("%s from %s", f{1},
+                                strjoin ({R.rivals(k).effect}, ", "));
+      endfor
+      s = sprintf ("%s; not told apart by these data: %s", s,
+                   strjoin (parts, "; "));
+    endif
   endif
   if (! isempty (R.untested))
     s = sprintf ("%s; not tested%s, their estimation failed: %s", s,
