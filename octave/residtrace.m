@@ -212,7 +212,9 @@
 ## screened (true: its fits stopped after three SRIVC iterations, because
 ## that fit's correction was far from significant, p >= 0.2; see Speed),
 ## seconds (time spent on the candidate), failed (it applies to the
-## model but its estimation failed: not tested).
+## model but its estimation failed: not tested), variants (the variants
+## fitted on the estimation record, with their BIC, from which
+## @code{variant} was chosen; empty for a candidate of one form).
 ## @item untested
 ## cell of the effects that could not be estimated in the pass that
 ## ended the search (found nothing): they were not tested, and the
@@ -848,7 +850,8 @@ function row = score (c, cur, ctx, e0)
                 "screened", false, "seconds", NaN, "failed", c.failed,
                 "group", ifelse_ (strcmp (c.kind, "simulation"),
                                   "simulated from the input",
-                                  "uses the validation output"));
+                                  "uses the validation output"),
+                "variants", {c.variants});
   row.evidence = unknown_std (row.evidence);
   if (! c.applicable)
     return;
