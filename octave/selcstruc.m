@@ -19,6 +19,11 @@
 ## @item RTeb, YICb
 ## bounds on RT2 and YIC.
 ## @end table
+## CONTSID's FPEb, AICb and RTvb bound criteria that srivcstruc's V does
+## not hold: error @code{selcstruc:notSupported} (with a validation set,
+## RT2 is the validation figure: bound it with RTeb). @var{NN}'s columns
+## may be those of one common denominator (2m + 1 for m inputs) or of one
+## denominator per input (3m).
 ## Without output arguments the table is displayed, best first:
 ## structure, RT2, YIC, log10 cond. With outputs: @var{NN} the structures,
 ## best first (rows [nb nf nk]), and @var{Vcrit} their rows of @var{V}.
@@ -36,8 +41,10 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
   if (nargin < 1)
     error ("selcstruc:badInput", "selcstruc: expected the matrix V");
   endif
+  ## NN: 2m + 1 columns (a common denominator) or 3m (one per input)
+  w = columns (V) - 4;
   if (! isnumeric (V) || ! isreal (V) || ndims (V) > 2 || isempty (V)
-      || columns (V) < 7 || mod (columns (V) - 5, 2) != 0)
+      || w < 3 || (mod (w, 2) != 1 && mod (w, 3) != 0))
     error ("selcstruc:badInput",
            "selcstruc: V must be the matrix of srivcstruc, rows [RT2 YIC NN log(cond) N]");
   endif
@@ -70,6 +77,13 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
         rteb = bound (value, "RTeb");
       case "yicb"
         yicb = bound (value, "YICb");
+      case {"fpeb", "aicb", "rtvb"}
+        ## CONTSID's bounds on criteria that srivcstruc's V does not hold
+        error ("selcstruc:notSupported",
+               ["selcstruc: '%s' bounds a criterion that srivcstruc's V ", ...
+                "does not hold (its columns: RT2, YIC, NN, log10 cond, N; ", ...
+                "RT2 is the validation figure when ZV is given: use RTeb)"],
+               name);
       otherwise
         error ("selcstruc:badOption", "selcstruc: unknown option '%s'", name);
     endswitch
@@ -133,12 +147,20 @@ endfunction
 %! assert (isempty (strfind (out, "[2 3 0]")));
 
 %!error id=selcstruc:badInput selcstruc ()
+%!test  # two inputs, one denominator each: NN of 3m = 6 columns
+%! W = [0.95 -8 1 2 2 1 0 0 2.1 500; 0.80 -6 1 1 1 1 0 0 1.2 500];
+%! [NN, Vc] = selcstruc (W, "c2sort", "RT2");
+%! assert (NN, [1 2 2 1 0 0; 1 1 1 1 0 0]);
+%! assert (Vc(:, 1), [0.95; 0.80]);
 %!error id=selcstruc:badInput selcstruc ([1 2 3])
+%!error id=selcstruc:badInput selcstruc ([0.9 -8 1 2 0 0 1 500])
 %!error id=selcstruc:badOption selcstruc (V, "NberOfModels")
 %!error id=selcstruc:badOption selcstruc (V, "NberOfModels", 0)
 %!error id=selcstruc:badOption selcstruc (V, "c2sort", "AIC")
 %!error id=selcstruc:badOption selcstruc (V, "RTeb", "x")
 %!error id=selcstruc:badOption selcstruc (V, "bogus", 1)
+%!error id=selcstruc:notSupported selcstruc (V, "FPEb", 1)
+%!error id=selcstruc:notSupported selcstruc (V, "RTvb", 0.5)
 
 %!demo
 %! V = [0.95 -8.1 1 2 0 2.1 500; 0.80 -6.0 1 1 0 1.2 500];

@@ -8,22 +8,29 @@
 ##
 ## @var{ZE}: estimation data (@code{iddata}); @var{ZV}: validation data of
 ## the same inputs, or [] to judge on @var{ZE}. @var{NN}: the structures,
-## one row [nb nf nk] each (nb, nk one entry per input); a two-row
-## @var{NN} is read as the range [nb nf nk min; max] and expanded to every
-## structure in it with 1 <= nb <= nf + 1 (unless the option
-## @code{"NN", "list"} says the rows are structures).
+## one row [nb nf nk] each, as @code{srivc} reads them: with m inputs
+## [nb_1..nb_m nf nk_1..nk_m] (2m + 1 columns: one common denominator) or
+## [nb_1..nb_m nf_1..nf_m nk_1..nk_m] (3m columns: one denominator per
+## input, CONTSID 7.3's 'Different' denominators); a two-row @var{NN} is
+## read as the range [min; max] and expanded to every structure in it
+## with nf >= 1, nb <= nf + 1 per input and at least one numerator
+## parameter (unless the option @code{"NN", "list"} says the rows are
+## structures).
 ##
 ## Options: @code{lambda} (the SVF cut-off of the start, default
 ## srivc's automatic start), @code{n0e} and @code{n0v} (first sample
 ## of ZE and ZV used to compute the criteria, default 1: the transient at
 ## the start can be left out), @code{NN} (@qcode{"auto"}, @qcode{"range"}
-## or @qcode{"list"}), @code{InitialCondition} (@qcode{"z"}, the
-## default as CONTSID: the criteria simulate each model from rest;
-## @qcode{"e"}, as MATLAB's @code{compare}: each model's initial state is
-## estimated on the data it is judged on, ZV or ZE, by least squares on
-## its free responses as @code{comparec (..., "InitialCondition", "e")},
-## so that a record that does not start at rest does not rank the
-## structures by their transient from rest), and any @code{srivc} option
+## or @qcode{"list"}), @code{Denominator} (@qcode{"Common"} or
+## @qcode{"Different"}, CONTSID's option: checked against the number of
+## columns of @var{NN}, which decides without it), @code{InitialCondition}
+## (@qcode{"z"}, the default as CONTSID: the criteria simulate each model
+## from rest; @qcode{"e"}, as MATLAB's @code{compare}: each model's
+## initial state is estimated on the data it is judged on, ZV or ZE, by
+## least squares on its free responses as @code{comparec (...,
+## "InitialCondition", "e")}, so that a record that does not start at
+## rest does not rank the structures by their transient from rest), and
+## any @code{srivc} option
 ## (e.g. @code{Tol}, @code{MaxIter}, @code{InitialState}, which concerns
 ## the estimation).
 ##
@@ -81,7 +88,7 @@ function [V, info, varargout] = srivcstruc (varargin)
     error ("srivcstruc:badOption",
            "srivcstruc: options come as name-value pairs");
   endif
-  n0e = 1; n0v = 1; form = "auto"; ic = "z";
+  n0e = 1; n0v = 1; form = "auto"; ic = "z"; den = "auto";
   pass = {};
   for i = 1:2:numel (rest)
     name = rest{i};
@@ -95,6 +102,13 @@ function [V, info, varargout] = srivcstruc (varargin)
         n0v = rest{i+1};
       case "nn"
         form = rest{i+1};
+      case "denominator"
+        den = rest{i+1};
+        if (! ischar (den) || ! any (strcmpi (den, {"common", "different"})))
+          error ("srivcstruc:badOption", ["srivcstruc: Denominator must ", ...
+                 "be 'Common' or 'Different'"]);
+        endif
+        den = lower (den);
       case "initialcondition"
         ic = rest{i+1};
         if (! ischar (ic)
@@ -132,7 +146,7 @@ function [V, info, varargout] = srivcstruc (varargin)
   present_e = ! (isnan (ye) | any (isnan (ue), 2));
   used_e = present_e;
   used_e(1:n0e-1) = false;
-  structures = expand (NN, nu, form);
+  structures = expand (NN, nu, form, den);
   if (! isempty (ZV))
     tv = sampling (ZV, true (rows (yv), 1));   # Ts, or irregular instants
   endif
@@ -230,14 +244,27 @@ function check_start (n0, n, name)
 endfunction
 
 ## The list of structures [nb nf nk] from NN.
-function S = expand (NN, nu, form)
-  width = 1 + 2 * nu;
+function S = expand (NN, nu, form, den)
+  ## the row layout: [nb_1..nb_m nf nk_1..nk_m] (one common denominator)
+  ## or [nb_1..nb_m nf_1..nf_m nk_1..nk_m] (one per input); the same for
+  ## one input
+  wc = 1 + 2 * nu;
+  wd = 3 * nu;
+  w = columns (NN);
   if (! isnumeric (NN) || ! isreal (NN) || isempty (NN) || ndims (NN) > 2
-      || columns (NN) != width || any (! isfinite (NN(:)))
+      || ! any (w == [wc wd]) || any (! isfinite (NN(:)))
       || any (NN(:) != fix (NN(:))) || any (NN(:) < 0))
     error ("srivcstruc:badInput",
-           "srivcstruc: NN must have rows [nb nf nk] of %d non-negative integers",
-           width);
+           ["srivcstruc: NN must have rows of non-negative integers, ", ...
+            "[nb nf nk] with one nb and nk per input: %d columns (a common ", ...
+            "denominator) or %d (one denominator per input)"], wc, wd);
+  endif
+  different = w == wd && nu > 1;
+  if (strcmp (den, "common") && different
+      || strcmp (den, "different") && nu > 1 && w != wd)
+    error ("srivcstruc:badInput",
+           ["srivcstruc: Denominator '%s' needs rows of %d columns ", ...
+            "(NN has %d)"], den, ifelse_ (different, wc, wd), w);
   endif
   if (! ischar (form) || ! any (strcmpi (form, {"auto", "range", "list"})))
     error ("srivcstruc:badOption",
@@ -251,15 +278,24 @@ function S = expand (NN, nu, form)
   lo = min (NN, [], 1);
   hi = max (NN, [], 1);
   axes = arrayfun (@(a, b) a:b, lo, hi, "UniformOutput", false);
-  grids = cell (1, width);
+  grids = cell (1, w);
   [grids{:}] = ndgrid (axes{:});
   S = cell2mat (cellfun (@(g) g(:), grids, "UniformOutput", false));
   nb = S(:, 1:nu);
-  nf = S(:, nu + 1);
-  ok = nf >= 1 & all (nb <= nf + 1, 2) & sum (nb, 2) >= 1;
-  S = sortrows (S(ok, :), [nu + 1, 1:nu, nu + 2:width]);
+  kf = nu + (1:(w - 2 * nu));           # the denominator column(s)
+  nf = S(:, kf);
+  ok = all (nf >= 1, 2) & all (nb <= nf + 1, 2) & sum (nb, 2) >= 1;
+  S = sortrows (S(ok, :), [kf, 1:nu, kf(end) + 1:w]);
   if (isempty (S))
     error ("srivcstruc:badInput", "srivcstruc: NN holds no valid structure");
+  endif
+endfunction
+
+function v = ifelse_ (c, a, b)
+  if (c)
+    v = a;
+  else
+    v = b;
   endif
 endfunction
 
@@ -385,6 +421,37 @@ endfunction
 %!     assert (V(1, 1) > 0.9);
 %!   endfor
 %! endfor
+%!test  # two inputs, one denominator each (3m columns, CONTSID's
+%! ## 'Different'): the true structure is recognised, R_T^2 equals
+%! ## comparec's, the range expands per input
+%! randn ("state", 11);
+%! Ts = 0.05; u1 = prbs (10, 6); N = numel (u1); u2 = prbs (10, 9)(1:N);
+%! M0 = idpoly (1, {4, [1 2]}, 1, 1, {[1 2.4 4], [1 3]}, "Ts", 0);
+%! y = simc (M0, iddata ([], [u1 u2], Ts)) + 0.05 * randn (N, 1);
+%! h = floor (N / 2);
+%! Z1 = iddata (y(1:h), [u1(1:h) u2(1:h)], Ts);
+%! Z2 = iddata (y(h+1:end), [u1(h+1:end) u2(h+1:end)], Ts);
+%! [V, info] = srivcstruc (Z1, Z2, [1 2 2 1 0 0; 1 1 1 1 0 0], "NN", "list",
+%!                         "Denominator", "Different");
+%! assert (columns (V), 10);
+%! assert (V(:, 3:8), [1 2 2 1 0 0; 1 1 1 1 0 0]);
+%! assert (V(1, 1) > 0.99 && V(1, 1) > V(2, 1));
+%! M = info.models{1};
+%! [~, ci] = comparec (set (Z2, "InputData", get (Z2, "InputData")
+%!                     - M.Report.DataUsed.InputOffset), M);
+%! assert (V(1, 1), ci.RT2, 1e-9);
+%! S = srivcstruc (Z1, [], [1 1 1 1 0 0; 1 2 2 2 0 0]);
+%! assert (S(:, 3:8), [1 1 1 1 0 0; 1 2 1 1 0 0; 1 1 1 2 0 0;
+%!                     1 2 1 2 0 0; 1 1 2 1 0 0; 1 2 2 1 0 0;
+%!                     1 1 2 2 0 0; 1 2 2 2 0 0]);
+%!error id=srivcstruc:badInput
+%! Z = iddata (randn (200, 1), randn (200, 2), 0.1);
+%! srivcstruc (Z, [], [1 1 2 2 0 0], "Denominator", "Common");
+%!error id=srivcstruc:badInput
+%! Z = iddata (randn (200, 1), randn (200, 2), 0.1);
+%! srivcstruc (Z, [], [1 1 2 0 0], "Denominator", "Different");
+%!error id=srivcstruc:badOption
+%! srivcstruc (ZE, [], [1 2 0], "Denominator", "Same")
 %!error id=srivcstruc:badInput srivcstruc (ZE, ZN, [1 2 0])
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e", 0)
 %!error id=srivcstruc:badOption srivcstruc (ZE, [], [1 2 0], "n0e")

@@ -97,7 +97,8 @@ function tpl = fuzz_public_templates ()
                      {data, [2 1 0], "lambda_svf", 3, "nblocks", 3}};
   tpl.rlssvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}};
   tpl.rsrivc = {{data, [1 2 0], "lambda_svf", 3}, {gap, [1 2 0], 3}};
-  tpl.selcstruc = {{[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1]}};
+  tpl.selcstruc = {{[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1]}, ...
+                   {[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1], "c2sort", "RT2"}};
   tpl.shadedplot = {{(1:n)' * Ts, y, y + 0.1}};
   tpl.simc = {{M, data}, {M, u, Ts}, {thm, [2 1 0], data}};
   tpl.simc_hw = {{hw, data}};
@@ -106,7 +107,8 @@ function tpl = fuzz_public_templates ()
   tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, {data, [1 2 0], "lambda", 3}};
   tpl.srivcstruc = {{data, data, [1 2 0; 2 2 0]}, {data, [], [1 1 0; 2 2 0]}, ...
                     {data, data, [1 2 0], "NN", "list", ...
-                     "InitialCondition", "e"}};
+                     "InitialCondition", "e"}, ...
+                    {data, [], [1 2 0], "Denominator", "Different"}};
   tpl.stepplot = {{M}, {M, "r", P}};
   tpl.svfcutoff = {{long, [1 2 0]}};
   tpl.svfscaling = {{data, [2 1 0], "lambda_svf", 3}};
