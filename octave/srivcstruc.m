@@ -44,11 +44,12 @@
 ## |y - mean y|)), @code{x0} (cell: the initial state estimated with
 ## @code{"InitialCondition", "e"}, as @code{comparec}'s
 ## @code{estInfo.x0}; empty without it, and for a model whose state
-## cannot be estimated, an unstable one, which is then judged from rest). y_sim is the model as estimated:
-## with the output and input offsets that @code{srivc} estimated on a raw
-## record (in the model's @code{Report.DataUsed.OutputOffset} and
-## @code{InputOffset}), plus its free response from the estimated initial
-## state with @code{"InitialCondition", "e"}.
+## cannot be estimated, an unstable one, which is then judged from
+## rest). y_sim is the model as estimated: with the output and input
+## offsets that @code{srivc} estimated on a raw record (in the model's
+## @code{Report.DataUsed.OutputOffset} and @code{InputOffset}), plus its
+## free response from the estimated initial state with
+## @code{"InitialCondition", "e"}.
 ##
 ## Missing samples (NaN in y or u) of ZE are bridged by @code{srivc}; its
 ## criteria then use the present samples (N counts them).  ZV is
@@ -256,8 +257,9 @@ function S = expand (NN, nu, form, den)
       || any (NN(:) != fix (NN(:))) || any (NN(:) < 0))
     error ("srivcstruc:badInput",
            ["srivcstruc: NN must have rows of non-negative integers, ", ...
-            "[nb nf nk] with one nb and nk per input: %d columns (a common ", ...
-            "denominator) or %d (one denominator per input)"], wc, wd);
+            "[nb nf nk] with one nb and nk per input: %d columns ", ...
+            "(a common denominator) or %d (one denominator per input)"],
+           wc, wd);
   endif
   different = w == wd && nu > 1;
   if (strcmp (den, "common") && different
