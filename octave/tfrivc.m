@@ -31,7 +31,13 @@
 ## whose estimate has the smallest simulation error; an unstable one
 ## has its right-half-plane poles reflected (p -> -conj (p)) with the
 ## warning @code{tfrivc:unstableStart}. @code{sys.Report.Parameters.InitMethod}
-## says which start was used.
+## says which start was used. @code{Focus} (CONTSID's cut-off fc, or a
+## band, as in @code{tfsrivc}; order @code{FocusOrder}, default 5)
+## prefilters the data of the RIVC iterations too, so the noise model is
+## that of the filtered data. @code{Integration} 'on' (CONTSID's
+## enforced integrator) is @code{tfrivc:notSupported}: the RIVC
+## iterations cannot hold a coefficient fixed (@code{tfsrivc} and
+## @code{tfcoe} can).
 ##
 ## @var{sys}: an @code{idtf} with IODelay = td, the covariance of [b; f]
 ## (sigma_e^2 (sum zeta_f zeta_f')^-1, eq. 2.13; td counted as known),
@@ -83,6 +89,23 @@ endfunction
 %! assert (MN.F(2), -0.9, 0.05);
 %! assert (MN.B(2), 0.5, 0.1);
 
+%!test  # Focus: the RIVC iterations run on the prefiltered data (= tfrivc
+%! ## of data filtered by contsid's filter with Focus Inf, i.e. none)
+%! randn ("state", 8);
+%! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
+%! [MP1, MN1] = tfrivc (iddata (x + v, u, Ts), 2, 0, 0.37, "FixTd", "on",
+%!                      "NN", [1 1], "Focus", 8, "FocusOrder", 3);
+%! c3 = [1 2 2 1];                       # 3rd-order Butterworth
+%! L = c2d (tf (8 ^ 3, c3 .* 8 .^ (0:3)), Ts, "prewarp", 8);
+%! [bL, aL] = tfdata (L, "vector");
+%! df = iddata (filter (bL, aL, x + v), filter (bL, aL, u), Ts);
+%! [MP2, MN2] = tfrivc (df, 2, 0, 0.37, "FixTd", "on", "NN", [1 1]);
+%! assert (getpvec (MP1), getpvec (MP2), 1e-6 * norm (getpvec (MP2)));
+%! assert ([MN1.B MN1.F], [MN2.B MN2.F], 1e-6);
+%!error id=tfrivc:notSupported
+%! tfrivc (iddata (x, u, Ts), 2, 0, "Integration", "on")
+%!error id=tfrivc:badOption
+%! tfrivc (iddata (x, u, Ts), 2, 0, "Integration", "maybe")
 %!test  # noise-free: every start method reaches the exact system
 %! for init = {"sriv", "ivgpmf", "lssvf"}
 %!   MP = tfrivc (iddata (x, u, Ts), 2, 0, 0.37, "FixTd", "on", ...

@@ -21,7 +21,8 @@
 ## @code{idtf} whose orders, coefficients (the start; NaN: automatic) and
 ## IODelay are used (the model-in form).
 ##
-## Options (name-value pairs, case-insensitive):
+## Options (name-value pairs, case-insensitive; CONTSID 7.3's names and,
+## unless said, its defaults):
 ## @table @code
 ## @item FixTd
 ## 'on': keep the delay (default 'off').
@@ -30,27 +31,35 @@
 ## TdMax from the input-output cross-correlation as CONTSID: the lag of
 ## the largest |r_yu| up to half the record plus 10 samples, at least the
 ## smaller of a tenth of the record and 50 sampling intervals (irregular
-## data: the latter); 30 points).
+## data: the latter); 50 points).
 ## @item Lambda
-## the SVF cut-off (rad/s) of the start (default: the engine's grid).
+## the SVF cut-off (rad/s) of the start (default: the engine's grid of
+## cut-offs; CONTSID: 1/50 of the Nyquist frequency).
 ## @item MaxIter
-## maximum SRIVC iterations, and of Gauss-Newton steps on td (30).
+## maximum SRIVC iterations, and of Gauss-Newton steps on td (100).
 ## @item TolPar, TolFun
 ## stop when the relative parameter change (SRIVC) and the delay step
 ## (in sampling intervals) fall below TolPar (1e-5), or the relative loss
-## decrease below TolFun (1e-8).
+## decrease below TolFun (1e-8); CONTSID's defaults are 1e-4 both.
 ## @item StepMax, StepReduction
 ## largest delay step (default one grid spacing, at least one sampling
-## interval) and the factor that shortens a step that does not decrease
-## the loss (0.5).
+## interval; CONTSID: inf) and the factor that shortens a step that does
+## not decrease the loss: r > 1 divides it (CONTSID's convention, default
+## 2), r in (0, 1) multiplies it.
+## @item Integration
+## 'on': an integrator is enforced (the denominator's last coefficient
+## fixed at 0, a pole at s = 0); default 'off'. Not with a Focus filter
+## (as CONTSID documents: @code{tfsrivc:badOption}).
 ## @item Focus, FocusOrder
-## 'simulation' (default; what SRIVC minimises; 'prediction' is the same
-## for this output-error model) or a passband [w1 w2] (rad/s, 0 <= w1 <
-## w2): as the SITB's Focus band, the output and input are prefiltered by
-## a Butterworth band-pass of order FocusOrder (default 4; a low-pass of
-## cut-off w2 for w1 = 0), discretised by the prewarped Tustin map, so that
-## the simulation error is weighted by the filter's squared gain; needs
-## regularly sampled data. Report.Fit is that of the filtered data.
+## CONTSID's cut-off frequency fc (rad/s) of a Butterworth low-pass
+## prefilter of order FocusOrder (default 5) applied to the output and
+## input (default Inf: no filter); also a passband [w1 w2] (rad/s, 0 <=
+## w1 < w2, the SITB's Focus band: a high-pass of cut-off w1 too) or
+## 'simulation'/'prediction' (no filter: what SRIVC minimises, the same
+## for this output-error model). The filter is discretised by the
+## prewarped Tustin map, so that the simulation error is weighted by its
+## squared gain; it needs regularly sampled data. Report.Fit is that of
+## the filtered data.
 ## @end table
 ##
 ## @var{M}: an @code{idtf} with IODelay = td, the covariance of [b; f]
@@ -186,11 +195,44 @@ endfunction
 %!   [bL, aL] = tfdata (L, "vector");
 %!   df = iddata (filter (bL, aL, y), filter (bL, aL, u), Ts,
 %!                "InterSample", "zoh");
-%!   Mf = tfsrivc (d, 2, 1, 0.37, "FixTd", "on", "Focus", w);
+%!   Mf = tfsrivc (d, 2, 1, 0.37, "FixTd", "on", "Focus", w,
+%!                 "FocusOrder", 4);
 %!   Mr = tfsrivc (df, 2, 1, 0.37, "FixTd", "on");
 %!   assert (getpvec (Mf), getpvec (Mr), 1e-6 * norm (getpvec (Mr)));
 %!   assert (getpvec (Mf), getpvec (M0), 0.05 * norm (getpvec (M0)));
 %! endfor
+%! ## CONTSID's form: a cut-off fc, Butterworth of order 5 by default
+%! c5 = [1 3.2360679774997896 5.2360679774997896 5.2360679774997896 ...
+%!       3.2360679774997896 1];
+%! L = c2d (tf (6 ^ 5, c5 .* 6 .^ (0:5)), Ts, "prewarp", 6);
+%! [bL, aL] = tfdata (L, "vector");
+%! df = iddata (filter (bL, aL, y), filter (bL, aL, u), Ts,
+%!              "InterSample", "zoh");
+%! Mf = tfsrivc (d, 2, 1, 0.37, "FixTd", "on", "Focus", 6);
+%! Mr = tfsrivc (df, 2, 1, 0.37, "FixTd", "on");
+%! assert (getpvec (Mf), getpvec (Mr), 1e-6 * norm (getpvec (Mr)));
+%! ## Focus Inf is CONTSID's default, no filter
+%! assert (getpvec (tfsrivc (d, 2, 1, 0.37, "FixTd", "on", "Focus", Inf)),
+%!         getpvec (tfsrivc (d, 2, 1, 0.37, "FixTd", "on")));
+
+%!test  # StepReduction: CONTSID's divisor r > 1 is the multiplier 1 / r
+%! M1 = tfsrivc (data_n, 2, 1, 0.3, "StepReduction", 4);
+%! M2 = tfsrivc (data_n, 2, 1, 0.3, "StepReduction", 0.25);
+%! assert (M1.IODelay, M2.IODelay);
+%! assert (getpvec (M1), getpvec (M2));
+
+%!test  # Integration 'on': a pole at s = 0 enforced, exact on noise-free
+%! ## data of an integrating plant with a delay
+%! Gi = idtf (2, [1 3 0], "IODelay", 0.23);
+%! ui = prbs (9, 6); ui = ui - mean (ui);
+%! yi = simc (Gi, iddata ([], ui, Ts, "InterSample", "zoh"));
+%! Mi = tfsrivc (iddata (yi, ui, Ts, "InterSample", "zoh"), 2, 0, 0.2,
+%!               "Integration", "on");
+%! assert (Mi.den{1}(end), 0);
+%! assert ([Mi.num{1}(end), Mi.den{1}], [2 1 3 0], 1e-6);
+%! assert (Mi.IODelay, 0.23, 1e-6);
+%! sd = sqrt (diag (getcov (Mi)));
+%! assert (sd(end-1), 0);                 # the fixed coefficient
 
 %!error id=tfsrivc:badInput tfsrivc (data)
 %!error id=tfsrivc:badInput tfsrivc (data, 2, 3)
@@ -204,6 +246,11 @@ endfunction
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Focus", [5 1])
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Focus", "bogus")
 %!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "FocusOrder", 0)
+%!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Focus", 0)
+%!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "StepReduction", 1)
+%!error id=tfsrivc:badOption tfsrivc (data, 2, 1, "Integration", "yes")
+%!error id=tfsrivc:badOption
+%! tfsrivc (data, 2, 1, "Integration", "on", "Focus", 5)
 %!error id=tfsrivc:notSupported
 %! tfsrivc (iddata ([1:50]', randn (50, 1), [], "SamplingInstants",
 %!                  cumsum (0.1 + rand (50, 1) / 10)), 1, 0, "Focus", [0 5])

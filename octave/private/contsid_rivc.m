@@ -224,6 +224,8 @@ function [M, info, d] = run_tfrivc (args)
   maxiter = 30;
   init = [];
   lambda = [];
+  focus = Inf;
+  focus_order = 5;
   for i = 1:2:numel (rest)
     name = rest{i};
     if (! ischar (name))
@@ -233,6 +235,16 @@ function [M, info, d] = run_tfrivc (args)
       NN = read_orders (fname, rest{i+1}, 2, "NN = [nd nc]");
     elseif (strcmpi (name, "InitMethod"))
       init = rest{i+1};
+    elseif (strcmpi (name, "Integration"))
+      v = rest{i+1};
+      if ((ischar (v) && strcmpi (v, "off")) || isequal (v, 0))
+        continue;
+      elseif ((ischar (v) && strcmpi (v, "on")) || isequal (v, 1))
+        error ("tfrivc:notSupported", ["tfrivc: Integration 'on' is not ", ...
+               "supported (the RIVC iterations cannot hold a coefficient ", ...
+               "fixed); tfsrivc and tfcoe enforce an integrator"]);
+      endif
+      error ("tfrivc:badOption", "tfrivc: Integration must be 'on' or 'off'");
     else
       pass(end+1:end+2) = rest(i:i+1);
       if (strcmpi (name, "MaxIter"))
@@ -241,6 +253,10 @@ function [M, info, d] = run_tfrivc (args)
         tol = rest{i+1};
       elseif (strcmpi (name, "Lambda"))
         lambda = rest{i+1};
+      elseif (strcmpi (name, "Focus"))
+        focus = rest{i+1};
+      elseif (strcmpi (name, "FocusOrder"))
+        focus_order = rest{i+1};
       endif
     endif
   endfor
@@ -267,6 +283,11 @@ function [M, info, d] = run_tfrivc (args)
   [num, den] = tfdata (Ms, "vector");
   num = num(end - nz:end);
   tdel = Ms.IODelay;
+  ## a Focus filter (read and checked by tfsrivc above) prefilters the data
+  ## of the RIVC iterations too: the noise model is then that of the
+  ## filtered data
+  d = contsid_focus_filter (fname, d, contsid_focus_option (fname, focus),
+                            focus_order);
   opts = struct ("lambda", [], "Tol", tol, "MaxIter", maxiter,
                  "ArmaMaxIter", 50);
   e = engine_options (fname, opts, d);

@@ -80,11 +80,17 @@ function M = contsid_tf_front (fname, args)
   if (! d.uniform)
     h = median (diff (d.t));
   endif
-  o = struct ("fixtd", "off", "tdmin", 0, "tdmax", contsid_default_tdmax (d.t, d.y, d.u),
-              "numtd", 30,
-              "lambda", [], "maxiter", 30, "tolpar", 1e-5, "tolfun", 1e-8,
-              "stepmax", [], "stepreduction", 0.5, "focus", "simulation",
-              "focusorder", 4);
+  ## CONTSID 7.3's documented defaults (NumTd 50, MaxIter 100, StepMax
+  ## inf, StepReduction 2, FocusOrder 5, Focus inf, Integration 'off'),
+  ## except the tolerances, tighter here (CONTSID: 1e-4 both) and StepMax,
+  ## one grid spacing here (a Gauss-Newton step on td never jumps over the
+  ## grid's minimum).
+  o = struct ("fixtd", "off", "tdmin", 0,
+              "tdmax", contsid_default_tdmax (d.t, d.y, d.u),
+              "numtd", 50,
+              "lambda", [], "maxiter", 100, "tolpar", 1e-5, "tolfun", 1e-8,
+              "stepmax", [], "stepreduction", 2, "focus", Inf,
+              "focusorder", 5, "integration", "off");
   if (mod (numel (rest), 2) != 0)
     error ([fname ":badOption"], "%s: options come in name-value pairs",
            fname);
@@ -95,7 +101,7 @@ function M = contsid_tf_front (fname, args)
       error ([fname ":badOption"], "%s: option names must be strings", fname);
     endif
     key = lower (name);
-    init_keys = {"tdmin", "tdmax", "lambda", "numtd"};
+    init_keys = {"tdmin", "tdmax", "lambda", "numtd", "integration"};
     if (! isfield (o, key) || init && ! any (strcmp (key, init_keys)))
       error ([fname ":badOption"], "%s: unknown option '%s'", fname, name);
     endif
@@ -108,15 +114,19 @@ function M = contsid_tf_front (fname, args)
     error ([fname ":badOption"], "%s: FixTd must be 'on' or 'off'", fname);
   endif
   o.fixtd = logical (o.fixtd);
-  band = [];
-  if (isnumeric (o.focus) && isreal (o.focus) && numel (o.focus) == 2
-      && all (isfinite (o.focus)) && o.focus(1) >= 0
-      && o.focus(2) > o.focus(1))
-    band = o.focus(:).';
-  elseif (! (ischar (o.focus)
-             && any (strcmpi (o.focus, {"simulation", "prediction"}))))
-    error ([fname ":badOption"], ["%s: Focus must be 'simulation', ", ...
-           "'prediction' or a band [w1 w2] (rad/s, 0 <= w1 < w2)"], fname);
+  band = contsid_focus_option (fname, o.focus);
+  if (ischar (o.integration)
+      && any (strcmpi (o.integration, {"on", "off"})))
+    o.integration = strcmpi (o.integration, "on");
+  elseif (! (isscalar (o.integration)
+             && (islogical (o.integration) || isnumeric (o.integration))))
+    error ([fname ":badOption"], "%s: Integration must be 'on' or 'off'",
+           fname);
+  endif
+  o.integration = logical (o.integration);
+  if (o.integration && ! isempty (band))
+    error ([fname ":badOption"], ["%s: Integration is not applicable with ", ...
+           "a Focus filter (as CONTSID documents)"], fname);
   endif
   if (! isnumeric (o.focusorder) || ! isscalar (o.focusorder)
       || ! isreal (o.focusorder) || o.focusorder != fix (o.focusorder)
@@ -146,10 +156,15 @@ function M = contsid_tf_front (fname, args)
     error ([fname ":badOption"], "%s: TolPar > 0 and TolFun >= 0 needed",
            fname);
   endif
+  ## CONTSID's factor r > 1 divides the step; a factor in (0, 1)
+  ## multiplies it (the toolbox's older convention)
   if (! scal (o.stepreduction) || o.stepreduction <= 0
-      || o.stepreduction >= 1)
-    error ([fname ":badOption"], "%s: StepReduction must be in (0, 1)",
-           fname);
+      || o.stepreduction == 1)
+    error ([fname ":badOption"], ["%s: StepReduction must be > 1 (the ", ...
+           "delay step is divided by it) or in (0, 1) (multiplied)"], fname);
+  endif
+  if (o.stepreduction > 1)
+    o.stepreduction = 1 / o.stepreduction;
   endif
   if (isempty (o.stepmax))
     o.stepmax = max ((o.tdmax - o.tdmin) / max (o.numtd - 1, 1), h);
@@ -178,6 +193,16 @@ function M = contsid_tf_front (fname, args)
   o.theta0 = theta0;
   o.fixed = [];
   o.fixed_values = [];
+  if (o.integration)
+    ## an integrator enforced: f_np = 0, the pole at s = 0
+    o.fixed = false (np + nz + 1, 1);
+    o.fixed(np) = true;
+    o.fixed_values = zeros (np + nz + 1, 1);
+    if (! isempty (theta0))
+      theta0(np) = 0;
+    endif
+    o.theta0 = theta0;
+  endif
   o.search_only = init;
 
   [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o);

@@ -106,7 +106,8 @@ function tfsrivc_demo ()
   check_sd ("TFSRIVC", p(1:4), [num den(2:3)], sd(1:4), 5);
 endfunction
 
-## TDSRIVC: a start delay with Lambda, then with a Focus band as well.
+## TDSRIVC: a start delay with Lambda, then with a Focus filter as well
+## (CONTSID's form: the cut-off fc, a scalar).
 function tdsrivc_demo ()
   randn ("state", 22);
   iodelay = 1.5; num = 2; den = [1 1.2 1];
@@ -119,7 +120,7 @@ function tdsrivc_demo ()
   np = 2; nz = 0; td0 = 1.2; lambda = 1.5;
   M = tfsrivc (data, np, nz)
   M1 = tfsrivc (data, np, nz, td0, "Lambda", lambda)
-  fc = [0 5];
+  fc = 5;
   M2 = tfsrivc (data, np, nz, td0, "Lambda", lambda, "Focus", fc)
   present (M1);
   figure; step (M0, "b", M1, "r", M2, "g");
