@@ -13,15 +13,21 @@
 ## failed fits (NaN) come last and are not shown. Options:
 ## @table @code
 ## @item NberOfModels
-## how many to display (default 10).
-## @item c2sort (or c)
-## @qcode{"YIC"} or @qcode{"RT2"}.
+## how many to display (default 5, as CONTSID; @qcode{"all"}).
+## @item c2sort
+## @qcode{"YIC"}, @qcode{"RT2"} (also CONTSID's @qcode{"RTe"} and
+## @qcode{"RTv"}: V holds one R_T^2, on ZV when srivcstruc was given one,
+## else on ZE) or @qcode{"np"} (fewest parameters first, then YIC).
+## @item c
+## CONTSID's further criteria to display (a name or a cell): the R_T^2 of
+## V is always shown.
 ## @item RTeb, YICb
 ## bounds on RT2 and YIC.
 ## @end table
-## CONTSID's FPEb, AICb and RTvb bound criteria that srivcstruc's V does
-## not hold: error @code{selcstruc:notSupported} (with a validation set,
-## RT2 is the validation figure: bound it with RTeb). @var{NN}'s columns
+## CONTSID's FPE and AIC (in c2sort, c, FPEb, AICb) and RTvb are criteria
+## that srivcstruc's V does not hold: error @code{selcstruc:notSupported}
+## (with a validation set, RT2 is the validation figure: bound it with
+## RTeb). @var{NN}'s columns
 ## may be those of one common denominator (2m + 1 for m inputs) or of one
 ## denominator per input (3m).
 ## Without output arguments the table is displayed, best first:
@@ -52,7 +58,7 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
     error ("selcstruc:badOption",
            "selcstruc: options come as name-value pairs");
   endif
-  count = 10; crit = "YIC"; rteb = -Inf; yicb = Inf;
+  count = 5; crit = "YIC"; rteb = -Inf; yicb = Inf;
   for i = 1:2:numel (varargin)
     name = varargin{i};
     value = varargin{i+1};
@@ -61,18 +67,28 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
     endif
     switch (lower (name))
       case "nberofmodels"
-        if (! isnumeric (value) || ! isscalar (value) || value < 1
-            || value != fix (value))
+        if (ischar (value) && strcmpi (value, "all"))
+          value = Inf;
+        elseif (! isnumeric (value) || ! isscalar (value) || value < 1
+                || value != fix (value))
           error ("selcstruc:badOption",
-                 "selcstruc: NberOfModels must be an integer >= 1");
+                 "selcstruc: NberOfModels must be an integer >= 1 or 'all'");
         endif
         count = value;
-      case {"c2sort", "c"}
-        if (! ischar (value) || ! any (strcmpi (value, {"YIC", "RT2"})))
-          error ("selcstruc:badOption",
-                 "selcstruc: c2sort must be 'YIC' or 'RT2'");
+      case "c2sort"
+        crit = criterion (value, {"YIC", "RT2", "RTE", "RTV", "NP"});
+        if (any (strcmp (crit, {"RTE", "RTV"})))
+          crit = "RT2";                    # the one R_T^2 that V holds
         endif
-        crit = upper (value);
+      case "c"
+        ## CONTSID: further criteria to display; V holds R_T^2 (shown)
+        cs = value;
+        if (! iscell (cs))
+          cs = {cs};
+        endif
+        for k = 1:numel (cs)
+          criterion (cs{k}, {"RTE", "RTV", "RT2", "YIC"});
+        endfor
       case "rteb"
         rteb = bound (value, "RTeb");
       case "yicb"
@@ -92,11 +108,19 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
   ok = isfinite (V(:, 1)) & isfinite (V(:, 2)) & V(:, 1) >= rteb ...
        & V(:, 2) <= yicb;
   rows_ok = find (ok);
-  if (strcmp (crit, "YIC"))
-    [~, order] = sortrows ([V(rows_ok, 2), -V(rows_ok, 1)]);
-  else
-    [~, order] = sortrows ([-V(rows_ok, 1), V(rows_ok, 2)]);
-  endif
+  switch (crit)
+    case "YIC"
+      [~, order] = sortrows ([V(rows_ok, 2), -V(rows_ok, 1)]);
+    case "RT2"
+      [~, order] = sortrows ([-V(rows_ok, 1), V(rows_ok, 2)]);
+    case "NP"
+      ## the number of parameters: the nb and nf entries, not the m delays
+      ## (2m + 1 columns for a common denominator, else 3m; 9 columns are
+      ## read as the former)
+      m = ifelse_ (mod (width, 2) == 1, (width - 1) / 2, width / 3);
+      np = sum (V(rows_ok, 3:2+width-m), 2);
+      [~, order] = sortrows ([np, V(rows_ok, 2)]);
+  endswitch
   best = rows_ok(order);
   Vcrit = V(best, :);
   NN = Vcrit(:, 3:2+width);
@@ -115,6 +139,32 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
               rows (V) - rows (Vcrit));
     endif
     clear NN Vcrit
+  endif
+endfunction
+
+## A criterion name of CONTSID's selcstruc, upper case; those V does not
+## hold (FPE, AIC) are selcstruc:notSupported.
+function c = criterion (v, allowed)
+  if (! ischar (v))
+    error ("selcstruc:badOption", "selcstruc: a criterion is a name");
+  endif
+  c = upper (v);
+  if (any (strcmp (c, {"FPE", "AIC"})))
+    error ("selcstruc:notSupported",
+           ["selcstruc: %s is not a column of srivcstruc's V (RT2, YIC, ", ...
+            "NN, log10 cond, N)"], v);
+  endif
+  if (! any (strcmp (c, allowed)))
+    error ("selcstruc:badOption", "selcstruc: criterion '%s' (one of %s)",
+           v, strjoin (allowed, ", "));
+  endif
+endfunction
+
+function v = ifelse_ (c, a, b)
+  if (c)
+    v = a;
+  else
+    v = b;
   endif
 endfunction
 
@@ -156,10 +206,23 @@ endfunction
 %!error id=selcstruc:badInput selcstruc ([0.9 -8 1 2 0 0 1 500])
 %!error id=selcstruc:badOption selcstruc (V, "NberOfModels")
 %!error id=selcstruc:badOption selcstruc (V, "NberOfModels", 0)
-%!error id=selcstruc:badOption selcstruc (V, "c2sort", "AIC")
 %!error id=selcstruc:badOption selcstruc (V, "RTeb", "x")
 %!error id=selcstruc:badOption selcstruc (V, "bogus", 1)
 %!error id=selcstruc:notSupported selcstruc (V, "FPEb", 1)
+%!error id=selcstruc:notSupported selcstruc (V, "c2sort", "AIC")
+%!error id=selcstruc:notSupported selcstruc (V, "c", {"RTv", "FPE"})
+%!error id=selcstruc:badOption selcstruc (V, "c2sort", "bogus")
+%!error id=selcstruc:badOption selcstruc (V, "NberOfModels", "some")
+%!test  # c2sort 'np': fewest parameters first (nb + nf), then YIC; RTe
+%! ## and RTv sort by V's R_T^2; 'c' RTv and NberOfModels 'all' accepted
+%! NN = selcstruc (V, "c2sort", "np");
+%! np = sum (NN(:, 1:2), 2);
+%! assert (issorted (np));
+%! assert (selcstruc (V, "c2sort", "RTv"), selcstruc (V, "c2sort", "RT2"));
+%! assert (selcstruc (V, "c2sort", "RTe"), selcstruc (V, "c2sort", "RT2"));
+%! assert (selcstruc (V, "c", "RTv", "NberOfModels", "all"), selcstruc (V));
+%! W = [0.95 -8 1 2 2 1 0 0 2.1 500; 0.80 -6 1 1 1 1 0 0 1.2 500];
+%! assert (selcstruc (W, "c2sort", "np"), [1 1 1 1 0 0; 1 2 2 1 0 0]);
 %!error id=selcstruc:notSupported selcstruc (V, "RTvb", 0.5)
 
 %!demo
