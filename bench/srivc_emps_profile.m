@@ -30,7 +30,7 @@ function srivc_emps_profile (rec)
   vy = sumsq (y - mean (y));
   state = warning ("off", "all");
   cleanup = onCleanup (@() warning (state));
-  [M, RT2, ~, info] = srivc (iddata (y, u, Ts, "InterSample", "zoh"),
+  [M, RT2, ~, ~, ~, info] = srivc (iddata (y, u, Ts, "InterSample", "zoh"),
                              [2 3 0]);
   printf ("%s [2 3 0]: RT2 %.5f converged %d: %s\n", rec, RT2,
           info.converged, info.reason);

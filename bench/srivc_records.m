@@ -71,7 +71,7 @@ function R = srivc_records (root, only)
       for k = 1:rows (NN)
         tic;
         try
-          [M, RT2, ~, info] = srivc (d, NN(k, :));
+          [M, RT2, ~, ~, ~, info] = srivc (d, NN(k, :));
           ok = [info.stable, info.converged];
           it = info.iterations;
           extra = [info.clipped, sum(info.integrators), info.determined];

@@ -95,7 +95,7 @@ function s = run_rig (rig, nonlinear, rule)
   endif
   s.rule = rule;
   lastwarn ("");
-  [M, ~, ~, info] = srivc (rig.de, s.nn);
+  [M, ~, ~, ~, ~, info] = srivc (rig.de, s.nn);
   [msg, id] = lastwarn ();
   s.srivc_warning = id;
   s.srivc_reason = info.reason;

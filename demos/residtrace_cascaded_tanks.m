@@ -123,7 +123,7 @@ function s = run_draw (d, NN, greybox, rule, variant)
     s.nn = parsimonious_structure (V);
   endif
   lastwarn ("");
-  [M, ~, ~, info] = srivc (de, s.nn);
+  [M, ~, ~, ~, ~, info] = srivc (de, s.nn);
   [~, id] = lastwarn ();
   s.srivc_warning = id;
   s.srivc_reason = info.reason;

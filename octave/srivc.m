@@ -2,7 +2,7 @@
 ## @deftypefn  {} {@var{M} =} srivc (@var{data}, [@var{nb} @var{nf} @var{nk}])
 ## @deftypefnx {} {@var{M} =} srivc (@var{data}, [@var{nb1} @dots{} @var{nbm} @var{nf1} @dots{} @var{nfm} @var{nk1} @dots{} @var{nkm}])
 ## @deftypefnx {} {@var{M} =} srivc (@dots{}, @var{name}, @var{value})
-## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} srivc (@dots{})
+## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}, @var{Cond_IPM}, @var{AIC}, @var{info}] =} srivc (@dots{})
 ## Simplified refined instrumental variable estimate of a continuous-time
 ## transfer function B(p)/F(p) (SRIVC, thesis eqs. 2.8-2.13), optimal for
 ## output-error models with white noise.
@@ -16,7 +16,7 @@
 ## On frequency data (an @code{idfrd} with Ts = 0, or frequency-domain
 ## @code{iddata} [Y U] with Ts = 0), @var{nn} = [nb nf] and SRIVC runs in
 ## the frequency domain (prefilter 1/F(jw), see @code{tffsrivc});
-## @var{RT2} and @var{YIC} are then empty.
+## @var{RT2}, @var{YIC}, @var{Cond_IPM} and @var{AIC} are then empty.
 ## Options:
 ## @table @code
 ## @item Tol, MaxIter
@@ -137,7 +137,11 @@
 ## Outputs: the @code{idctm} model @var{M} (with covariance, noise variance,
 ## iterations and converged), @var{RT2} = 1 - var(e)/var(y) of the
 ## simulation error e, the Young information criterion @var{YIC} =
-## log(var(e)/var(y)) + log(mean(P_ii / theta_i^2)), and @var{info}
+## log(var(e)/var(y)) + log(mean(P_ii / theta_i^2)), @var{Cond_IPM} (the
+## condition number of the instrumental product matrix, as
+## @var{info}.condition) and @var{AIC} = log(sigma^2) + 2 (free
+## parameters) / N, the outputs CONTSID documents (as @code{rivc}'s),
+## and @var{info}
 ## (converged, stable, iterations, reason, noise_variance, lambda,
 ## time_scale, starts, condition, x0, offset, input_offset, simulated,
 ## determined, clipped, clipped_iterations, integrators,
@@ -157,15 +161,70 @@
 ## @seealso{clsrivc, ivsvf, srivcstruc, rsrivc, comparec}
 ## @end deftypefn
 
-function [M, RT2, YIC, info, varargout] = srivc (varargin)
-  contsid_nargchk ("srivc", nargin, nargout, [0 Inf], 4);
+function [M, RT2, YIC, Cond_IPM, AIC, info, varargout] = srivc (varargin)
+  contsid_nargchk ("srivc", nargin, nargout, [0 Inf], 6);
   if (nargin > 0 && (isa (varargin{1}, "idfrd") || (isa (varargin{1},
       "iddata") && strcmp (get (varargin{1}, "Domain"), "Frequency"))))
     [M, info] = contsid_freq ("srivc", varargin);   # frequency domain
-    [RT2, YIC] = deal ([]);
+    [RT2, YIC, Cond_IPM, AIC] = deal ([]);
     return;
   endif
-  [M, RT2, YIC, info] = contsid_offline ("srivc", varargin);
+  args = varargin;
+  if (numel (args) >= 2 && isa (args{1}, "iddata")
+      && (isa (args{2}, "idpoly") || isa (args{2}, "idtf")))
+    args = model_in (args);
+  endif
+  [M, RT2, YIC, info] = contsid_offline ("srivc", args);
+  Cond_IPM = info.condition;
+  AIC = [];
+  if (isfield (info, "AIC"))
+    AIC = info.AIC;
+  endif
+endfunction
+
+## CONTSID's srivc (Z, Mi[, Name, Value]): the structure [nb nf nk] (one
+## per input) read from the continuous-time model Mi, which starts the
+## iterations (InitMethod Mi); "neither lambda nor InitMethod can be used"
+## (CONTSID's help) then.
+function args = model_in (args)
+  Mi = args{2};
+  rest = args(3:end);
+  names = rest(1:2:end);
+  if (any (cellfun (@(n) ischar (n) && any (strcmpi (n, {"lambda",
+                                                          "InitMethod"})),
+                    names)))
+    error ("srivc:badOption", ["srivc: with a model Mi neither lambda ", ...
+           "nor InitMethod can be given (Mi starts the iterations)"]);
+  endif
+  if (isa (Mi, "idtf"))
+    Mi = idpoly (Mi);
+  endif
+  if (get (Mi, "Ts") != 0)
+    error ("srivc:notSupported", ["srivc: the model Mi must be ", ...
+           "continuous-time (Ts = 0)"]);
+  endif
+  B = get (Mi, "B");
+  F = get (Mi, "F");
+  if (! iscell (B))
+    B = {B};
+    F = {F};
+  endif
+  nu = numel (B);
+  Ts = get (args{1}, "Ts");
+  del = get (Mi, "InputDelay");
+  if (isempty (del))
+    del = 0;
+  endif
+  del = del(:).' .* ones (1, nu);
+  nk = round (del / Ts);
+  if (any (abs (nk * Ts - del) > 1e-9 * max (1, abs (del))))
+    error ("srivc:badInput", ["srivc: the model's input delay must be ", ...
+           "a whole number of sampling intervals (nk); tfsrivc estimates ", ...
+           "a delay of any length"]);
+  endif
+  nb = cellfun (@(b) numel (b) - max ([0, find(b != 0, 1) - 1]), B);
+  nf = cellfun (@(f) numel (f) - 1, F);
+  args = [args(1), {[nb, nf, nk], "InitMethod", Mi}, rest];
 endfunction
 
 %!shared u, Ts, x, N
@@ -186,7 +245,7 @@ endfunction
 %! Tg = 0.05; ug = sign (randn (600, 1));
 %! yg = simc (idctm (2, [1 3 2]), ug, Tg) + 0.01 * randn (600, 1);
 %! yg(200:210) = NaN;
-%! [Mg, ~, ~, info] = srivc (iddata (yg, ug, Tg), [1 2 0]);
+%! [Mg, ~, ~, ~, ~, info] = srivc (iddata (yg, ug, Tg), [1 2 0]);
 %! assert (all (isfinite (getpvec (Mg))));
 %! f = fieldnames (info);
 %! for k = 1:numel (f)
@@ -198,6 +257,26 @@ endfunction
 %! if (isempty (info.lowest_theta))
 %!   assert (isempty (info.lowest_noise_variance));
 %! endif
+%!test  # CONTSID's model-in form srivc (Z, Mi): Mi's structure and start
+%! Mi = idpoly (1, 3.5, 1, 1, [1 2 3.5], "Ts", 0);
+%! M1 = srivc (iddata (x, u, Ts), Mi, "Tol", 1e-12);
+%! M2 = srivc (iddata (x, u, Ts), [1 2 0], "InitMethod", Mi, "Tol", 1e-12);
+%! assert (M1.F, M2.F);
+%! assert (M1.F, [1 2.4 4], 1e-9);
+%! assert (M1.Report.Parameters.InitMethod.Method, "model");
+%! M3 = srivc (iddata (x, u, Ts), idtf (3.5, [1 2 3.5]), "Tol", 1e-12);
+%! assert (M3.F, M1.F, 1e-12);
+%!error id=srivc:badOption
+%! srivc (iddata (x, u, Ts), idpoly (1, 3.5, 1, 1, [1 2 3.5], "Ts", 0),
+%!        "lambda", 3)
+%!error id=srivc:notSupported
+%! srivc (iddata (x, u, Ts), idpoly (1, [0 0.1], 1, 1, [1 -0.9], "Ts", 0.05))
+%!test  # CONTSID's outputs [M, RT2, YIC, Cond_IPM, AIC]
+%! randn ("state", 4);
+%! y = x + 0.2 * randn (N, 1);
+%! [M, RT2, YIC, Cond_IPM, AIC, info] = srivc (iddata (y, u, Ts), [1 2 0]);
+%! assert (Cond_IPM, info.condition);
+%! assert (AIC, log (info.noise_variance) + 2 * 3 / N, 1e-12);
 %!test  # default start (grid of cut-offs), noisy data: close and converged
 %! randn ("state", 4);
 %! y = x + 0.2 * randn (N, 1);
@@ -256,7 +335,7 @@ endfunction
 %! randn ("state", 5);
 %! u2 = kron (sign (randn (ceil (N / 7), 1)), ones (7, 1))(1:N);
 %! x2 = simc (idctm ([1 2], [1 5 4]), u2, Ts);
-%! [M, ~, ~, info] = srivc (iddata (x + x2, [u u2], Ts), [1 2 2 2 0 0], "Tol", 1e-10);
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (x + x2, [u u2], Ts), [1 2 2 2 0 0], "Tol", 1e-10);
 %! assert (info.converged && info.stable);
 %! yh = simc (idctm (info.B{1}, info.F{1}), u, Ts) + simc (idctm (info.B{2}, info.F{2}), u2, Ts);
 %! assert (simc (M, [u u2], Ts), yh, 1e-8);
@@ -268,7 +347,7 @@ endfunction
 %! t = (0:N-1)' * Ts;
 %! yfree = arrayfun (@(tk) c * expm (a * tk) * [2; 1], t);
 %! y = x + yfree + 3;
-%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "OutputOffset", true, "InitialState", "estimate", "Tol", 1e-10);
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "OutputOffset", true, "InitialState", "estimate", "Tol", 1e-10);
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.offset, 3, 1e-6);
 %! assert (info.simulated, y, 1e-6);
@@ -276,23 +355,23 @@ endfunction
 %!test  # raw units with an input of nonzero mean: the output offset
 %! ## and the gain are nearly collinear (session 7: not converged, c = 18.6)
 %! y = 20 + simc (struct ("B", 4, "F", [1 2.4 4]), 5 + 3 * u, Ts);
-%! [M, ~, ~, info] = srivc (iddata (y, 5 + 3 * u, Ts), [1 2 0]);
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (y, 5 + 3 * u, Ts), [1 2 0]);
 %! assert (info.converged);
 %! assert (info.offset, 20, 1e-6);
 %! assert (M.theta, [2.4 4 4], 1e-6);
 
 %!test  # raw units: a record that does not start at rest gets an offset
-%! [M, ~, ~, info] = srivc (iddata (x + 5, u, Ts), [1 2 0], "Tol", 1e-10);
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (x + 5, u, Ts), [1 2 0], "Tol", 1e-10);
 %! assert (info.output_offset);
 %! assert (info.offset, 5, 1e-6);
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (! isempty (strfind (info.reason, "does not start at rest")));
-%! [~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0]);
+%! [~, ~, ~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0]);
 %! assert (! info.output_offset);
 
 %!test  # an input offset d: the model sees u + d
 %! y = simc (idctm (4, [1 2.4 4]), u + 0.5, Ts);
-%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "InputOffset", true, "Tol", 1e-10);
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0], "InputOffset", true, "Tol", 1e-10);
 %! assert (M.theta, [2.4 4 4], 1e-6);
 %! assert (info.input_offset, 0.5, 1e-6);
 
@@ -309,7 +388,7 @@ endfunction
 %! G = c2d (tf (2, [1 1.2 1]), Ts);
 %! x = lsim (G, [pre; u])(2001:end);
 %! y = x + 3 + 0.05 * randn (N, 1);
-%! [M, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0]);
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (y, u, Ts), [1 2 0]);
 %! assert (info.converged && info.stable && info.output_offset);
 %! assert (info.input_offset, -5, 0.1);
 %! assert (! isempty (strfind (info.reason, "input offset(s)")));
@@ -320,20 +399,20 @@ endfunction
 %! ## the same input from rest at u = 0 (y = 3 + G u): no input level to
 %! ## find, and BIC keeps the fit without one
 %! x = lsim (G, u);
-%! [M, ~, ~, info] = srivc (iddata (x + 3 + 0.05 * randn (N, 1), u, Ts),
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (x + 3 + 0.05 * randn (N, 1), u, Ts),
 %!                          [1 2 0]);
 %! assert (info.converged && info.output_offset);
 %! assert (! any (info.input_offset));
 %! assert (M.B(end) / M.F(end), 2, 0.02);
 
 %!test  # info.clipped: a stable fit is not pulled back; an unstable plant is
-%! [~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0], "lambda", 3);
+%! [~, ~, ~, ~, ~, info] = srivc (iddata (x, u, Ts), [1 2 0], "lambda", 3);
 %! assert (! info.clipped && info.clipped_iterations == 0);
 %! assert (numel (info.loss_history), info.iterations);
 %! pkg load control
 %! xu = lsim (c2d (tf (1, [1 -0.5]), Ts), u(1:200));
 %! warning ("off", "srivc:notConverged", "local");
-%! [M, ~, ~, info] = srivc (iddata (xu, u(1:200), Ts), [1 1 0], "lambda", 3,
+%! [M, ~, ~, ~, ~, info] = srivc (iddata (xu, u(1:200), Ts), [1 1 0], "lambda", 3,
 %!                          "MaxIter", 3, "InputOffset", false);
 %! assert (info.clipped && ! info.converged && info.stable);
 %! assert (info.clipped_iterations >= 1);
@@ -348,12 +427,12 @@ endfunction
 %! y = x + 0.02 * std (x) * randn (N, 1);
 %! data = iddata (y, u, Ts, "InterSample", "zoh");
 %! ## the declared structure without the pole at 0 converges as it is
-%! [M, ~, ~, info] = srivc (data, [1 2 0]);
+%! [M, ~, ~, ~, ~, info] = srivc (data, [1 2 0]);
 %! assert (info.converged && info.stable && ! any (info.integrators));
 %! ## b / (p + a): the loss falls as a -> 0 (the iterates are pulled back
 %! ## from a < 0); refitted with a = 0 declared, with the warning
 %! [w, id] = lastwarn ("");
-%! [M, RT2, ~, info] = srivc (data, [1 1 0]);
+%! [M, RT2, ~, ~, ~, info] = srivc (data, [1 1 0]);
 %! [w, id] = lastwarn ();
 %! assert (id, "srivc:integratorDetected");
 %! assert (info.integrators, 1);
@@ -404,7 +483,7 @@ endfunction
 %!   randn ("state", seed);
 %!   y1 = simc (idctm (2, [1 0.5]), v, h) + 0.02 * randn (2000, 1);
 %!   warning ("off", "srivc:overParameterised", "local");
-%!   [~, ~, ~, inf1] = srivc (iddata (y1, v, h), [1 2 0]);
+%!   [~, ~, ~, ~, ~, inf1] = srivc (iddata (y1, v, h), [1 2 0]);
 %!   assert (inf1.determined, false);
 %!   assert (regexp (inf1.reason, "\\|p\\| Ts = |standard error"));
 %!   warning ("on", "srivc:overParameterised", "local");

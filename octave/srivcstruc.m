@@ -206,7 +206,7 @@ function [M, RT2, YIC, info] = quiet_srivc (ZE, nn, pass)
   state = warning ("off", "srivc:notConverged");
   state2 = warning ("off", "srivc:unstable");
   unwind_protect
-    [M, RT2, YIC, info] = srivc (ZE, nn, pass{:});
+    [M, RT2, YIC, ~, ~, info] = srivc (ZE, nn, pass{:});
   unwind_protect_cleanup
     warning (state);
     warning (state2);

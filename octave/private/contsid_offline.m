@@ -291,6 +291,8 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     th = theta(1:np);
     free = th != 0 | diag (cov(1:np, 1:np)) > 0;   # the declared p = 0 poles
     YIC = log (s2 / vy) + log (mean (diag (cov(free, free)) ./ th(free) .^ 2));
+    ## Akaike's criterion as rivc's: log(sigma^2) + 2 (free parameters) / N
+    info.AIC = log (max (s2, eps * vy)) + 2 * sum (free) / n;
   endif
 
   ## The refined-method options into the engine's struct e.

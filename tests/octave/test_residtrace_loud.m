@@ -26,7 +26,7 @@ function test_residtrace_loud ()
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
   rig = blind_rigs ("pendulum", 1, 0);
-  [M, ~, ~, info] = srivc (rig.de, [1 2 0]);
+  [M, ~, ~, ~, ~, info] = srivc (rig.de, [1 2 0]);
   assert (info.output_offset);
   R = [];
   out = evalc ("R = residtrace (rig.de, M, 'validation', rig.dv);");

@@ -45,7 +45,7 @@ function test_srivc_flexible ()
     x = simulate (B, F, u, Ts, rule{1});
     y = x + 0.1 * std (x) * randn (N, 1);
     data = iddata (y, u, Ts, "InterSample", rule{1});
-    [M, RT2, ~, info] = srivc (data, [6 6 0]);
+    [M, RT2, ~, ~, ~, info] = srivc (data, [6 6 0]);
     assert (info.converged, true, rule{1});
     assert (info.stable, true);
     xv = simulate (B, F, uv, Ts, rule{1});

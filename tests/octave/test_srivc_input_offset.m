@@ -28,7 +28,7 @@ function test_srivc_input_offset ()
   ## R_T^2 < 0.01 also raises srivc:noFit after srivc:notConverged; the
   ## latter is the one checked here.
   state = warning ("off", "srivc:noFit");
-  [~, RT2a, ~, ia] = srivc (d, [1 2 0], "InputOffset", false);
+  [~, RT2a, ~, ~, ~, ia] = srivc (d, [1 2 0], "InputOffset", false);
   warning (state);
   [~, id] = lastwarn ();
   printf ("InputOffset false: converged %d, stable %d, R_T^2 %.4f (%s)\n",
@@ -40,7 +40,7 @@ function test_srivc_input_offset ()
     assert (strcmp (id, "srivc:notConverged"));
   endif
   assert (RT2a < 0.5);
-  [~, RT2, ~, info] = srivc (d, [1 2 0]);
+  [~, RT2, ~, ~, ~, info] = srivc (d, [1 2 0]);
   printf ("InputOffset auto: converged %d, stable %d, R_T^2 %.4f (%s)\n",
           info.converged, info.stable, RT2, info.reason);
   assert (info.converged && info.stable);
