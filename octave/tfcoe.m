@@ -14,22 +14,70 @@
 ## sensitivity filters p^i u / F and p^j B u / F^2).  For a strictly
 ## proper model (@var{nz} < @var{np}) the delay is estimated too, by the
 ## delay search of @code{tfsrivc} (the same code): over its grid of
-## delays in [0, TdMax], then its Gauss-Newton refinement of the SRIVC
+## delays in [TdMin, TdMax], then its Gauss-Newton refinement of the SRIVC
 ## loss, and with @var{td} also that refinement started at @var{td}.  Each
 ## delay and SRIVC model found starts the output-error iteration, in which
-## the delay is a parameter kept in [0, TdMax]; the lowest loss wins (on a
-## ZOH input the loss has a kink at every whole number of samples of
-## delay, where a gradient method can stop short of the delay).  For @var{nz} = @var{np}
-## the model has the delay @var{td} (default 0), not estimated.
+## the delay is a parameter kept in [TdMin, TdMax]; the lowest loss wins
+## (on a ZOH input the loss has a kink at every whole number of samples of
+## delay, where a gradient method can stop short of the delay).  For
+## @var{nz} = @var{np} the model has the delay 0, not estimated.
 ##
-## Options: @code{Lambda} (SVF cut-off of the SRIVC start, rad/s; default
-## a grid), @code{MaxIter} (default 100), @code{Tol} (relative step and
-## loss decrease, default 1e-8), @code{TdMax} (default: tfsrivc's, from the
-## input-output cross-correlation, at least twice @var{td}, at most half
-## the record), @code{Focus} (@qcode{"simulation"}, or a passband [w1 w2]
-## in rad/s: the data are prefiltered as in @code{tfsrivc}'s Focus, a
-## fourth-order Butterworth band), @code{OverPar} (@qcode{"off"} or
-## @qcode{"on"}, below).
+## Options (name-value pairs; CONTSID 7.3's documented set, with its
+## meaning; where this toolbox's default differs, it says so):
+## @table @code
+## @item TdMin
+## Lower bound of the delay (s, default 0): the delay grid and its
+## refinement, and the output-error iteration, keep td in [TdMin, TdMax]
+## (a run that would leave below TdMin ends at the minimum over the
+## coefficients with td = TdMin, the bound active).  Only for an estimated
+## delay (@var{nz} < @var{np}).
+## @item TdMax
+## Upper bound of the delay (s; default: tfsrivc's, from the input-output
+## cross-correlation, at least twice @var{td} and twice TdMin, at most
+## half the record, extended while the grid's best delay lies at its upper
+## end).
+## @item NumTd
+## The number of delays of the grid in [TdMin, TdMax] (default 50; the
+## grid is searched with or without @var{td}; its delays and losses are in
+## @code{Report.Termination.DelaySearch}).
+## @item StepMax
+## Largest delay step of the Gauss-Newton refinement (s).  Default: the
+## grid step (TdMax - TdMin) / (NumTd - 1), at least one sample; CONTSID's
+## default is Inf.
+## @item StepReduction
+## The factor r that reduces a delay step that does not lower the loss: r
+## > 1 divides the step (CONTSID's convention, default 2); a value in (0,
+## 1) multiplies it (this toolbox's former convention: 0.5 = 2).
+## @item MaxIter
+## Maximum output-error iterations (default 100).
+## @item TolPar
+## Tolerance of the stop test (also @code{Tol}): the relative parameter
+## step and, with it, the relative loss decrease (one tolerance for both,
+## the core's test).  Default 1e-8, tighter than CONTSID's 1e-4.
+## @item TolFun
+## Not supported (@code{tfcoe:notSupported}): the core has no separate
+## loss-decrease tolerance (see TolPar).
+## @item Integration
+## @qcode{"on"} (or true) enforces an integrator: the last denominator
+## coefficient is 0 (a pole at p = 0) in the SRIVC start and the output
+## error, which fits B(p)/F'(p) to the integral of the input (exact for a
+## ZOH input, the integral then being piecewise linear).  Default
+## @qcode{"off"}.  Not applicable with a Focus filter
+## (@code{tfcoe:badOption}, as CONTSID); needs a ZOH input, @var{np} >= 2,
+## @var{nz} <= @var{np} - 2 and OverPar @qcode{"off"} (otherwise
+## @code{tfcoe:notSupported}).
+## @item Focus
+## CONTSID's cut-off frequency fc (rad/s) of a Butterworth low-pass
+## prefilter of the data (the band [0 fc]); Inf (CONTSID's default) or
+## @qcode{"simulation"}: no filter (this toolbox's default); also a
+## passband [w1 w2] (low-pass times high-pass, as @code{tfsrivc}'s Focus).
+## @item FocusOrder
+## The order of that filter, an integer 1..10 (default 5).
+## @item OverPar
+## @qcode{"off"} (default) or @qcode{"on"}, below.
+## @item Lambda
+## SVF cut-off of the SRIVC start (rad/s; default a grid).
+## @end table
 ##
 ## @strong{OverPar.}  CONTSID's documentation of this option was not
 ## available to this implementation; its meaning here: @qcode{"on"} adds
@@ -151,6 +199,78 @@ endfunction
 %! ## minimum is not the SRIVC start, one iteration does not reach it
 %! tfcoe (iddata (x + 0.1 * sin (0.05 * (1:N))', u, Ts), 2, 1, 0.1,
 %!        "MaxIter", 1, "Tol", 1e-15);
+
+%!test  # Focus: a scalar cut-off is the band [0 fc]; Inf is no filter
+%! randn ("state", 5);
+%! dn = iddata (x(1:1000) + 0.05 * randn (1000, 1), u(1:1000), Ts);
+%! Mb = tfcoe (dn, 2, 1, 0, "Focus", [0 8], "TdMax", 0.2);
+%! Mf = tfcoe (dn, 2, 1, 0, "Focus", 8, "TdMax", 0.2);
+%! assert (getpvec (Mf), getpvec (Mb));
+%! M0 = tfcoe (dn, 2, 1, 0, "TdMax", 0.2);
+%! Mi = tfcoe (dn, 2, 1, 0, "Focus", Inf, "TdMax", 0.2);
+%! assert (getpvec (Mi), getpvec (M0));
+%! ## FocusOrder reaches the filter (default 5)
+%! M5 = tfcoe (dn, 2, 1, 0, "Focus", 8, "TdMax", 0.2, "FocusOrder", 5);
+%! M2 = tfcoe (dn, 2, 1, 0, "Focus", 8, "TdMax", 0.2, "FocusOrder", 2);
+%! assert (getpvec (M5), getpvec (Mf));
+%! assert (! isequal (getpvec (M2), getpvec (Mf)));
+
+%!test  # StepReduction: r > 1 divides the step, so 2 is 0.5; NumTd grid
+%! randn ("state", 7);
+%! xd = simc (idtf ([1.5 4], [1 2.4 4], "IODelay", 0.37), u(1:1000), Ts);
+%! dn = iddata (xd + 0.1 * randn (1000, 1), u(1:1000), Ts);
+%! Md = tfcoe (dn, 2, 1, 0.1, "StepReduction", 2, "NumTd", 12);
+%! Mm = tfcoe (dn, 2, 1, 0.1, "StepReduction", 0.5, "NumTd", 12);
+%! assert (getpvec (Mm), getpvec (Md));
+%! assert (get (Mm, "IODelay"), get (Md, "IODelay"));
+%! M = tfcoe (dn, 2, 1, "NumTd", 7, "TdMax", 1);
+%! assert (numel (M.Report.Termination.DelaySearch.Grid), 7);
+%! assert (M.Report.Termination.DelaySearch.Grid([1 end]), [0 1]);
+
+%!test  # TdMin excludes the true delay 0.37 s below it
+%! xd = simc (idtf ([1.5 4], [1 2.4 4], "IODelay", 0.37), u(1:1000), Ts);
+%! M = tfcoe (iddata (xd, u(1:1000), Ts), 2, 1, "TdMin", 0.5);
+%! assert (get (M, "IODelay") >= 0.5);
+%! assert (M.Report.Termination.DelaySearch.Grid(1), 0.5);
+%! M = tfcoe (iddata (xd, u(1:1000), Ts), 2, 1, "TdMin", 0.2);
+%! assert (get (M, "IODelay"), 0.37, 1e-6);
+
+%!test  # Integration 'on': 2/(p (p + 3)) e^(-0.37 p) recovered exactly
+%! M0 = idtf (2, [1 3 0], "IODelay", 0.37);
+%! us = u(1:1000);
+%! y = simc (M0, iddata ([], us, Ts, "InterSample", "zoh"));
+%! M = tfcoe (iddata (y, us, Ts), 2, 0, "Integration", "on");
+%! [num, den] = tfdata (M, "vector");
+%! assert (den(end), 0);
+%! assert (den, [1 3 0], 1e-6);
+%! assert (num(end), 2, 1e-6);
+%! assert (get (M, "IODelay"), 0.37, 1e-6);
+%! M = tfcoe (iddata (y, us, Ts), 2, 0, "Integration", true);
+%! assert (tfdata (M, "vector")(end), 2, 1e-6);
+
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 0, "Integration", "yes")
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 0, "Integration", 2)
+%!error id=tfcoe:badOption
+%! tfcoe (iddata (x, u, Ts), 2, 0, "Integration", "on", "Focus", 8);
+%!error id=tfcoe:notSupported
+%! tfcoe (iddata (x, u, Ts), 2, 1, "Integration", "on");
+%!error id=tfcoe:notSupported
+%! tfcoe (iddata (x, u, Ts), 2, 0, "Integration", "on", "OverPar", "on");
+%!error id=tfcoe:notSupported tfcoe (iddata (x, u, Ts), 2, 1, "TolFun", 1e-4)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "TolPar", 0)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "TdMin", -1)
+%!error id=tfcoe:badOption
+%! tfcoe (iddata (x, u, Ts), 2, 1, "TdMin", 0.5, "TdMax", 0.4);
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 2, "TdMin", 0.5)
+%!error id=tfcoe:badInput tfcoe (iddata (x, u, Ts), 2, 1, 0.1, "TdMin", 0.5)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "NumTd", 1)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "NumTd", 2.5)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "StepMax", 0)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "StepReduction", 1)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "StepReduction", 0)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "FocusOrder", 11)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "FocusOrder", 2.5)
+%!error id=tfcoe:badOption tfcoe (iddata (x, u, Ts), 2, 1, "Focus", 0)
 
 %!demo
 %! u = prbs (10, 8); Ts = 0.05; N = numel (u);

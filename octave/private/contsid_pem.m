@@ -60,13 +60,16 @@ function ok = isorder (v)
        && all (v(:) == fix (v(:))) && all (v(:) >= 0);
 endfunction
 
-## Name-value pairs or an options struct of oeOptions/tfestOptions.
+## Name-value pairs or an options struct of oeOptions/tfestOptions.  The
+## keys are those of oe/tfest (SITB) and tfcoe (CONTSID); TolPar and the
+## delay-search, FocusOrder, Integration and TolFun keys are tfcoe's
+## only (unknown options elsewhere).  o.band: the Focus passband or [].
 function o = read_options (fname, rest, o)
   if (numel (rest) == 1 && isstruct (rest{1}))
     s = rest{1};
     if (! isfield (s, "OptionSet"))
-      error ([fname ":badOption"], ["%s: the options struct must come from ", ...
-              "oeOptions or tfestOptions"], fname);
+      error ([fname ":badOption"], ["%s: the options struct must come ", ...
+              "from oeOptions or tfestOptions"], fname);
     endif
     o.focus = s.Focus;
     o.maxiter = s.SearchOptions.MaxIterations;
@@ -76,6 +79,9 @@ function o = read_options (fname, rest, o)
   if (mod (numel (rest), 2) != 0)
     error ([fname ":badOption"], "%s: options come in name-value pairs", fname);
   endif
+  tfcoe_keys = {"tdmin", "numtd", "stepmax", "stepreduction", "focusorder", ...
+                "integration", "tolfun"};
+  is_tfcoe = strcmp (fname, "tfcoe");
   for i = 1:2:numel (rest)
     if (! ischar (rest{i}))
       error ([fname ":badOption"], "%s: option names must be strings", fname);
@@ -89,8 +95,14 @@ function o = read_options (fname, rest, o)
       case "tolerance"
         o.tol = rest{i+1};
       otherwise
-        error ([fname ":badOption"], "%s: unknown option '%s'", fname,
-               rest{i});
+        if (is_tfcoe && strcmp (key, "tolpar"))
+          o.tol = rest{i+1};
+        elseif (is_tfcoe && any (strcmp (key, tfcoe_keys)))
+          o.(key) = rest{i+1};
+        else
+          error ([fname ":badOption"], "%s: unknown option '%s'", fname,
+                 rest{i});
+        endif
     endswitch
   endfor
   scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
@@ -100,19 +112,55 @@ function o = read_options (fname, rest, o)
   if (! scal (o.tol) || o.tol <= 0)
     error ([fname ":badOption"], "%s: Tol must be a scalar > 0", fname);
   endif
-  o.band = [];
-  if (ischar (o.focus))
-    if (! any (strcmpi (o.focus, {"simulation", "prediction"})))
-      error ([fname ":badOption"], ["%s: Focus must be 'simulation', ", ...
-             "'prediction' or a band [w1 w2] (rad/s)"], fname);
-    endif
-  elseif (isnumeric (o.focus) && isreal (o.focus) && numel (o.focus) == 2
-          && all (isfinite (o.focus)) && o.focus(1) >= 0
-          && o.focus(2) > o.focus(1))
-    o.band = o.focus(:).';
+  o.band = contsid_focus_option (fname, o.focus);
+endfunction
+
+## tfcoe's CONTSID options, checked, with the StepReduction factor as the
+## multiplier in (0, 1) that contsid_tfsrivc applies (o.srmult) and
+## Integration as a flag (o.integ).
+function o = check_tfcoe_options (fname, o, T)
+  bad = @(msg) error ([fname ":badOption"], ["%s: " msg], fname);
+  scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && ! isnan (v);
+  if (! isempty (o.tolfun))
+    error ([fname ":notSupported"], ["%s: TolFun cannot be honoured: the ", ...
+           "output-error iteration (pem_mex) stops on one tolerance, met ", ...
+           "by the relative step and the relative loss decrease together ", ...
+           "(TolPar)"], fname);
+  endif
+  if (! scal (o.tdmin) || ! isfinite (o.tdmin) || o.tdmin < 0)
+    bad ("TdMin must be a scalar >= 0 (s)");
+  endif
+  if (o.tdmin >= T / 2)
+    bad ("TdMin must lie below half the record");
+  endif
+  if (! scal (o.numtd) || ! isfinite (o.numtd) || o.numtd != fix (o.numtd)
+      || o.numtd < 2)
+    bad ("NumTd must be an integer >= 2");
+  endif
+  if (! isempty (o.stepmax) && ! (scal (o.stepmax) && o.stepmax > 0))
+    bad ("StepMax must be a scalar > 0 (s; Inf: unbounded)");
+  endif
+  r = o.stepreduction;
+  if (! scal (r) || ! isfinite (r) || r <= 0 || r == 1)
+    bad (["StepReduction must be a factor > 1 (the step is divided by ", ...
+          "it) or in (0, 1) (multiplied)"]);
+  endif
+  o.srmult = r;
+  if (r > 1)
+    o.srmult = 1 / r;
+  endif
+  f = o.focusorder;
+  if (! scal (f) || f != fix (f) || f < 1 || f > 10)
+    bad ("FocusOrder must be an integer in 1..10");
+  endif
+  v = o.integration;
+  if (ischar (v) && any (strcmpi (v, {"on", "off"})))
+    o.integ = strcmpi (v, "on");
+  elseif ((islogical (v) || isnumeric (v)) && isscalar (v)
+          && any (v == [0 1]))
+    o.integ = logical (v);
   else
-    error ([fname ":badOption"], ["%s: Focus must be 'simulation', ", ...
-           "'prediction' or a band [w1 w2] (rad/s)"], fname);
+    bad ("Integration must be 'on' or 'off' (or true/false)");
   endif
 endfunction
 
@@ -327,12 +375,27 @@ function [M, info] = tf_model (fname, d, rest)
     td = per_input (fname, td, nu, "IODelay");
   endif
   T = d.t(end) - d.t(1);
-  o = read_options (fname, rest,
-                    struct ("focus", "simulation", "maxiter", 100,
-                            "tol", 1e-8, "lambda", [], "overpar", "off",
-                            "tdmax", []));
-  if (strcmp (fname, "tfest"))
+  dflt = struct ("focus", "simulation", "maxiter", 100, "tol", 1e-8,
+                 "lambda", [], "overpar", "off", "tdmax", []);
+  is_tfcoe = strcmp (fname, "tfcoe");
+  if (is_tfcoe)
+    dflt.tdmin = 0;
+    dflt.numtd = 50;
+    dflt.stepmax = [];
+    dflt.stepreduction = 2;
+    dflt.focusorder = 5;
+    dflt.integration = "off";
+    dflt.tolfun = [];
+  endif
+  o = read_options (fname, rest, dflt);
+  if (is_tfcoe)
+    o = check_tfcoe_options (fname, o, T);
+    forder = o.focusorder;
+  else
     check_unused (fname, o, {"lambda", "overpar", "tdmax"});
+    o.tdmin = 0;
+    o.integ = false;
+    forder = 4;
   endif
   if (! (ischar (o.overpar) && any (strcmpi (o.overpar, {"on", "off"}))))
     error ([fname ":badOption"], "%s: OverPar must be 'on' or 'off'", fname);
@@ -353,6 +416,13 @@ function [M, info] = tf_model (fname, d, rest)
              && isfinite (o.tdmax)))
     error ([fname ":badOption"], "%s: TdMax must be a scalar >= 0", fname);
   endif
+  if (o.tdmin > o.tdmax)
+    error ([fname ":badOption"], "%s: TdMin must not exceed TdMax", fname);
+  endif
+  if (o.tdmin > 0 && nz >= np)
+    error ([fname ":badOption"], ["%s: TdMin applies to an estimated ", ...
+           "delay (nz < np)"], fname);
+  endif
   if (isempty (td))
     td = zeros (1, nu);
   endif
@@ -360,13 +430,30 @@ function [M, info] = tf_model (fname, d, rest)
     error ([fname ":badInput"], "%s: the delay %g exceeds %g s", fname,
            max (td), min (T / 2, o.tdmax));
   endif
+  if (estimate && td < o.tdmin)
+    error ([fname ":badInput"], "%s: the delay %g lies below TdMin = %g s",
+           fname, td, o.tdmin);
+  endif
   if (estimate && nz >= np)
     error ([fname ":badInput"],
            "%s: estimating the delay needs nz < np (strictly proper)", fname);
   endif
-  df = contsid_focus_filter (fname, d, o.band, 4);
-  rule = double (strcmpi (d.intersample, "foh"));
-  opts = struct ("model", "oe_ct", "nf", np, "nb", nz + 1, "nk", 0 * np,
+  if (o.integ)
+    check_integration (fname, d, np, nz, o);
+  endif
+  df = contsid_focus_filter (fname, d, o.band, forder);
+  dg = df;                              # the data the gateway fits
+  npg = np;                             # its denominator order
+  if (o.integ)
+    ## B(p)/(p F'(p)) u = B(p)/F'(p) v with v the integral of u: of a ZOH
+    ## input an exact FOH signal on the same instants (check_integration),
+    ## so the pole at 0 is fixed exactly and F' is estimated.
+    dg.u = [0; cumsum(d.u(1:end-1) .* diff (d.t))];
+    dg.intersample = "foh";
+    npg = np - 1;
+  endif
+  rule = double (strcmpi (dg.intersample, "foh"));
+  opts = struct ("model", "oe_ct", "nf", npg, "nb", nz + 1, "nk", 0 * np,
                  "delay", td, "intersample", rule, "maxiter", o.maxiter,
                  "tol", o.tol, "estimate_delay", estimate,
                  "delay_max", o.tdmax, "cutoff", 0);
@@ -381,20 +468,25 @@ function [M, info] = tf_model (fname, d, rest)
     ## kink at every whole number of samples of delay, where a local
     ## minimum can hold a gradient method: from td alone the TFCOE demo
     ## stays at 7.4994 s for a true 8 s.)
-    [starts, o.tdmax] = srivc_delay_start (fname, df, np, nz, td_given,
-                                           o, tdmax_given);
+    [starts, o.tdmax, search] = srivc_delay_start (fname, df, np, nz,
+                                                   td_given, o, tdmax_given);
     if (overpar)
       starts{end+1} = overpar_start (fname, d, np, nz, td_given, o);
       starts = starts(! cellfun ("isempty", starts));
+    endif
+    if (o.integ)
+      ## the starts' f_np is 0 (fixed in SRIVC): the gateway's [f'; b; td]
+      starts = cellfun (@(th) th([1:np-1, np+1:end]), starts,
+                        "UniformOutput", false);
     endif
     estimate = true;
     opts.estimate_delay = true;
     opts.delay_max = o.tdmax;
     best = Inf;
     for k = 1:numel (starts)
-      opts.delay = starts{k}(end);
-      opts.theta_init = starts{k};
-      [th, Pk, ik] = call_gateway (fname, df, opts);
+      st = starts{k};
+      st(end) = min (max (st(end), o.tdmin), o.tdmax);
+      [th, Pk, ik] = oe_from (fname, dg, opts, st, o.tdmin);
       if (k == 1 || ik.loss < best)
         best = ik.loss;
         theta = th;
@@ -402,15 +494,15 @@ function [M, info] = tf_model (fname, d, rest)
         info = ik;
       endif
     endfor
-    if (theta(end) <= 1e-6 * median (diff (d.t)))
-      ## At its bound 0 (to 1e-6 samples) the delay is no free parameter (an
-      ## active constraint): the minimum over the coefficients with td = 0.
+    if (theta(end) <= o.tdmin + 1e-6 * median (diff (d.t)))
+      ## At its bound TdMin (to 1e-6 samples) the delay is no free parameter
+      ## (an active constraint): the minimum over the coefficients at TdMin.
       estimate = false;
       opts.estimate_delay = false;
-      opts.delay = 0;
+      opts.delay = o.tdmin;
       opts.theta_init = theta(1:end-1);
-      [theta, P, info] = call_gateway (fname, df, opts);
-      td = 0;
+      [theta, P, info] = call_gateway (fname, dg, opts);
+      td = o.tdmin;
     endif
   else
     [theta, P, info] = call_gateway (fname, df, opts);
@@ -425,6 +517,17 @@ function [M, info] = tf_model (fname, d, rest)
         [theta, P, info] = deal (th, Pk, ik);
       endif
     endif
+  endif
+  npar = numel (theta);
+  if (o.integ)
+    ## back to [f; b (; td)] with f_np = 0 fixed (zero covariance)
+    keep = [1:np-1, np+1:numel(theta)+1];
+    full = zeros (numel (theta) + 1, 1);
+    full(keep) = theta;
+    Pf = zeros (numel (full));
+    Pf(keep, keep) = P;
+    theta = full;
+    P = Pf;
   endif
   if (nu > 1)
     M = tf_multi (theta, P, np, nz, td);
@@ -442,9 +545,12 @@ function [M, info] = tf_model (fname, d, rest)
     M = set_cov (M, P(perm, perm), theta(perm));
   endif
   e = df.y - info.simulated;
-  M = set_report (M, fname, d, e, numel (theta), info.iterations,
+  M = set_report (M, fname, d, e, npar, info.iterations,
                   info.converged, info.reason, rows (d.y));
   r = get (M, "Report");
+  if (is_tfcoe && nz < np)
+    r.Termination.DelaySearch = search;
+  endif
   r.Parameters.IODelay = td;
   r.Parameters.IODelaySD = NaN;
   if (estimate)
@@ -492,29 +598,38 @@ function M = tf_multi (theta, P, np, nz, td)
 endfunction
 
 ## tfcoe's starts [f; b; td]: SRIVC at the delay of tfsrivc's search
-## (contsid_tfsrivc): over its grid of delays in [0, TdMax] (TdMax by
-## default from the input-output cross-correlation, as tfsrivc, at least
-## 2 td0) then refined by Gauss-Newton, and, when td0 is given, refined
-## from td0.
-function [starts, tdmax] = srivc_delay_start (fname, d, np, nz, td0, o,
-                                              tdmax_given)
+## (contsid_tfsrivc): over its grid of NumTd delays in [TdMin, TdMax]
+## (TdMax by default from the input-output cross-correlation, as tfsrivc,
+## at least 2 td0 and 2 TdMin) then refined by Gauss-Newton (steps bounded
+## by StepMax, reduced by StepReduction), and, when td0 is given, refined
+## from td0.  Integration 'on': f_np fixed at 0.  search: the grid and its
+## losses (Report.Termination.DelaySearch).
+function [starts, tdmax, search] = srivc_delay_start (fname, d, np, nz, td0,
+                                                      o, tdmax_given)
   tdmax = o.tdmax;
   if (! tdmax_given)
-    tdmax = contsid_default_tdmax (d.t, d.y, d.u);
+    tdmax = max (contsid_default_tdmax (d.t, d.y, d.u), 2 * o.tdmin);
     if (! isempty (td0))
       tdmax = max (tdmax, 2 * td0);
     endif
     tdmax = min (tdmax, o.tdmax);
   endif
   h = median (diff (d.t));
-  numtd = 30;
-  s = struct ("td0", [], "fixtd", false, "tdmin", 0, "tdmax", tdmax,
-              "numtd", numtd, "lambda", o.lambda, "maxiter", 30,
-              "tolpar", 1e-5, "tolfun", 1e-8,
-              "stepmax", max (tdmax / (numtd - 1), h),
-              "stepreduction", 0.5, "theta0", [], "fixed", [],
+  stepmax = o.stepmax;
+  if (isempty (stepmax))
+    stepmax = max ((tdmax - o.tdmin) / (o.numtd - 1), h);
+  endif
+  s = struct ("td0", [], "fixtd", false, "tdmin", o.tdmin, "tdmax", tdmax,
+              "numtd", o.numtd, "lambda", o.lambda, "maxiter", 30,
+              "tolpar", 1e-5, "tolfun", 1e-8, "stepmax", stepmax,
+              "stepreduction", o.srmult, "theta0", [], "fixed", [],
               "fixed_values", [], "search_only", false,
               "tdmax_auto", ! tdmax_given);
+  if (o.integ)
+    s.fixed = false (np + nz + 1, 1);
+    s.fixed(np) = true;                 # f_np = 0: the pole at p = 0
+    s.fixed_values = zeros (np + nz + 1, 1);
+  endif
   starts = {};
   td0s = {[]};
   if (! isempty (td0))
@@ -525,7 +640,64 @@ function [starts, tdmax] = srivc_delay_start (fname, d, np, nz, td0, o,
     [num, den, td, ~, si] = contsid_tfsrivc (fname, d, np, nz, s);
     starts{end+1} = [den(2:end), num, td].';
     tdmax = max (tdmax, si.tdmax);
+    if (k == 1)
+      search = struct ("Grid", si.grid, "GridLoss", si.grid_loss,
+                       "Reason", si.reason);
+    endif
   endfor
+endfunction
+
+## The output-error iteration from st = [f; b; td] with the delay kept in
+## [tdmin, delay_max].  The gateway keeps it in [0, delay_max]; a run that
+## ends below tdmin is replaced by the minimum over the coefficients at td
+## = tdmin (the bound active), or by the free run from that point when it
+## ends within the range with a lower loss (the loss decreasing into the
+## range from the bound).  tdmin = 0: the gateway's run alone.
+function [theta, P, info] = oe_from (fname, d, opts, st, tdmin)
+  opts.delay = st(end);
+  opts.theta_init = st;
+  [theta, P, info] = call_gateway (fname, d, opts);
+  if (theta(end) >= tdmin)
+    return;
+  endif
+  fx = opts;
+  fx.estimate_delay = false;
+  fx.delay = tdmin;
+  fx.theta_init = theta(1:end-1);
+  [th, Pf, info] = call_gateway (fname, d, fx);
+  theta = [th; tdmin];
+  P = blkdiag (Pf, 0);
+  opts.delay = tdmin;
+  opts.theta_init = theta;
+  [th, Pk, ik] = call_gateway (fname, d, opts);
+  if (th(end) >= tdmin && ik.loss < info.loss)
+    [theta, P, info] = deal (th, Pk, ik);
+  endif
+endfunction
+
+## Integration 'on' (tfcoe): the model B(p)/(p F'(p)) e^(-td p) is fitted
+## as B/F' on the integral v of the input; v is then an exact FOH signal
+## (piecewise linear) only for a ZOH input, and B/F' must be strictly
+## proper for the delay estimate (the gateway's d y/d td = -p y).
+function check_integration (fname, d, np, nz, o)
+  if (! isempty (o.band))
+    error ([fname ":badOption"], ["%s: Integration 'on' is not applicable ", ...
+           "with a Focus filter (as in CONTSID)"], fname);
+  endif
+  if (strcmpi (o.overpar, "on"))
+    error ([fname ":notSupported"], ["%s: Integration 'on' with OverPar ", ...
+           "'on' is not supported (the over-parametrised start has no ", ...
+           "integrator)"], fname);
+  endif
+  if (! strcmpi (d.intersample, "zoh"))
+    error ([fname ":notSupported"], ["%s: Integration 'on' needs a ZOH ", ...
+           "input (the integral of a FOH input is not FOH)"], fname);
+  endif
+  if (np < 2 || nz > np - 2)
+    error ([fname ":notSupported"], ["%s: Integration 'on' needs np >= 2 ", ...
+           "and nz <= np - 2 (B/F' of the integrated input, F' of order ", ...
+           "np - 1, must be strictly proper for the delay estimate)"], fname);
+  endif
 endfunction
 
 ## oe (data, [nb nf (0)][, opt]) and tfest (data, np, nz[, iodelay][, opt])
@@ -617,7 +789,12 @@ function th = overpar_start (fname, d, np, nz, td, o)
   if (! isempty (td))
     args{end+1} = td;
   endif
-  args = [args, {"MaxIter", o.maxiter, "Tol", o.tol, "TdMax", o.tdmax}];
+  args = [args, {"MaxIter", o.maxiter, "Tol", o.tol, "TdMax", o.tdmax, ...
+                 "TdMin", o.tdmin, "NumTd", o.numtd, ...
+                 "StepReduction", o.srmult, "FocusOrder", o.focusorder}];
+  if (! isempty (o.stepmax))
+    args = [args, {"StepMax", o.stepmax}];
+  endif
   if (! isempty (o.lambda))
     args = [args, {"Lambda", o.lambda}];
   endif

@@ -112,7 +112,9 @@ function tpl = fuzz_public_templates ()
   tpl.stepplot = {{M}, {M, "r", P}};
   tpl.svfcutoff = {{long, [1 2 0]}};
   tpl.svfscaling = {{data, [2 1 0], "lambda_svf", 3}};
-  tpl.tfcoe = {{data, 2, 1}, {data, 2, 0, 0.1}};
+  tpl.tfcoe = {{data, 2, 1}, {data, 2, 0, 0.1}, ...
+               {data, 2, 1, "TdMin", 0.05, "NumTd", 8, "StepReduction", 3}, ...
+               {data, 2, 0, "Integration", "on", "FocusOrder", 3}};
   tpl.tfest = {{data, 2}, {data, 2, 1}, {frd, 2, 0}};
   tpl.tfestOptions = {{}, {"InitialCondition", "zero"}};
   tpl.tffcoe = {{frd, 2, 0}, {frd, M}};
