@@ -104,7 +104,8 @@ function tpl = fuzz_public_templates ()
   tpl.simc_hw = {{hw, data}};
   tpl.sineresp = {{M, 1, (0:n-1)' * Ts}};
   tpl.spafdr = {{data}, {data, 20, w}};
-  tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, {data, [1 2 0], "lambda", 3}};
+  tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, {data, [1 2 0], "lambda", 3}, ...
+               {data, idpoly(1, 4, 1, 1, [1 2 4], "Ts", 0)}};
   tpl.srivcstruc = {{data, data, [1 2 0; 2 2 0]}, {data, [], [1 1 0; 2 2 0]}, ...
                     {data, data, [1 2 0], "NN", "list", ...
                      "InitialCondition", "e"}, ...
@@ -120,7 +121,8 @@ function tpl = fuzz_public_templates ()
   tpl.tffcoe = {{frd, 2, 0}, {frd, M}};
   tpl.tffsrivc = {{frd, 2, 0}, {frd, M}};
   tpl.tfrivc = {{data, 2, 1}, {data, 2, 0, "NN", [1 1]}};
-  tpl.tfsrivc = {{data, 2, 1}, {data, M}};
+  tpl.tfsrivc = {{data, 2, 1}, {data, M}, {data, 2, 1, "Focus", 5}, ...
+                 {data, 2, 0, "Integration", "on"}};
   tpl.tfsrivc_init = {{data, 2, 1}};
   ts = throttlesim ("duration", 1, "noisevar", 0);
   tpl.throttleid = {{ts, "clrsrivc", "tsiv", 0.5}};
