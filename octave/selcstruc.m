@@ -117,7 +117,7 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
       ## the number of parameters: the nb and nf entries, not the m delays
       ## (2m + 1 columns for a common denominator, else 3m; 9 columns are
       ## read as the former)
-      m = ifelse_ (mod (width, 2) == 1, (width - 1) / 2, width / 3);
+      m = merge (mod (width, 2) == 1, (width - 1) / 2, width / 3);
       np = sum (V(rows_ok, 3:2+width-m), 2);
       [~, order] = sortrows ([np, V(rows_ok, 2)]);
   endswitch
@@ -157,14 +157,6 @@ function c = criterion (v, allowed)
   if (! any (strcmp (c, allowed)))
     error ("selcstruc:badOption", "selcstruc: criterion '%s' (one of %s)",
            v, strjoin (allowed, ", "));
-  endif
-endfunction
-
-function v = ifelse_ (c, a, b)
-  if (c)
-    v = a;
-  else
-    v = b;
   endif
 endfunction
 

@@ -266,7 +266,7 @@ function S = expand (NN, nu, form, den)
       || strcmp (den, "different") && nu > 1 && w != wd)
     error ("srivcstruc:badInput",
            ["srivcstruc: Denominator '%s' needs rows of %d columns ", ...
-            "(NN has %d)"], den, ifelse_ (different, wc, wd), w);
+            "(NN has %d)"], den, merge (different, wc, wd), w);
   endif
   if (! ischar (form) || ! any (strcmpi (form, {"auto", "range", "list"})))
     error ("srivcstruc:badOption",
@@ -290,14 +290,6 @@ function S = expand (NN, nu, form, den)
   S = sortrows (S(ok, :), [kf, 1:nu, kf(end) + 1:w]);
   if (isempty (S))
     error ("srivcstruc:badInput", "srivcstruc: NN holds no valid structure");
-  endif
-endfunction
-
-function v = ifelse_ (c, a, b)
-  if (c)
-    v = a;
-  else
-    v = b;
   endif
 endfunction
 
