@@ -64,7 +64,7 @@ function test_missing_samples ()
   bridged = {
     "lssvf",       @(d, varargin) lssvf (d, [2 1 0], 3, varargin{:}), 1, 1, 0
     "ivsvf",       @(d, varargin) ivsvf (d, [2 1 0], 3, varargin{:}), 1, 1, 0
-    "srivc",       @(d, varargin) srivc (d, [1 2 0], varargin{:}), 4, 1, 4
+    "srivc",       @(d, varargin) srivc (d, [1 2 0], varargin{:}), 6, 1, 6
     "clsrivc",     @(d, varargin) clsrivc (d, rs(d), [1 2 0], C,
                                            varargin{:}), 4, 1, 4
     "svfscaling",  @(d, varargin) svfscaling (d, [2 1 0], 3,
