@@ -8,8 +8,10 @@
 ## @var{data}: an @code{iddata} (one output, one input, regular or
 ## irregular). @var{np}, @var{nz}: orders (0 <= nz <= np). Options:
 ## @code{TdMin}, @code{TdMax} (the delay range, default 0 and, as in
-## @code{tfsrivc}, from the input-output cross-correlation), @code{NumTd} (grid size, default 30),
-## @code{Lambda} (SVF cut-off of the start).
+## @code{tfsrivc}, from the input-output cross-correlation),
+## @code{NumTd} (grid size, default 50 as CONTSID), @code{Lambda} (SVF
+## cut-off of the start), @code{Integration} ('on': a pole at s = 0, as
+## in @code{tfsrivc}).
 ##
 ## @var{M}: an @code{idtf} with IODelay the best grid delay, its SRIVC
 ## coefficients and covariance (delay fixed), and
