@@ -21,7 +21,14 @@
 ## @table @code
 ## @item Tol, MaxIter
 ## stop when the relative change of the parameters falls below Tol
-## (default 1e-6), or after MaxIter iterations (default 30).
+## (default 1e-6), or after MaxIter iterations (default 30). (CONTSID's
+## help gives Tol in per cent, default 1e-2 %, and MaxIter 50.)
+## @item Denominator
+## CONTSID's 'Common' or 'Different' (its default): checked against
+## @var{nn}, whose layout decides (2m + 1 entries: common; 3m: one per
+## input). CONTSID's 'Integration' and 'T0' are @code{srivc:notSupported}
+## (srivc detects a pole at p = 0 itself; start the record at its first
+## sample instead of T0).
 ## @item lambda
 ## cut-off (rad/s) of the SVF of the IVSVF start. Default: IVSVF at 12
 ## cut-offs log-spaced over the record's band, ranked by the simulation
@@ -271,6 +278,18 @@ endfunction
 %!        "lambda", 3)
 %!error id=srivc:notSupported
 %! srivc (iddata (x, u, Ts), idpoly (1, [0 0.1], 1, 1, [1 -0.9], "Ts", 0.05))
+%!test  # CONTSID's Denominator: checked against nn's layout
+%! M1 = srivc (iddata (x, u, Ts), [1 2 0], "Denominator", "Common",
+%!             "Tol", 1e-12);
+%! assert (M1.F, [1 2.4 4], 1e-9);
+%!error id=srivc:badInput
+%! srivc (iddata (x, [u u], Ts), [1 1 2 2 0 0], "Denominator", "Common")
+%!error id=srivc:badInput
+%! srivc (iddata (x, [u u], Ts), [1 1 2 0 0], "Denominator", "Different")
+%!error id=srivc:badOption srivc (iddata (x, u, Ts), [1 2 0], "Denominator", 1)
+%!error id=srivc:notSupported
+%! srivc (iddata (x, u, Ts), [1 2 0], "Integration", "on")
+%!error id=srivc:notSupported srivc (iddata (x, u, Ts), [1 2 0], "T0", 10)
 %!test  # CONTSID's outputs [M, RT2, YIC, Cond_IPM, AIC]
 %! randn ("state", 4);
 %! y = x + 0.2 * randn (N, 1);

@@ -47,8 +47,17 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     ## C (0 - y), CONTSID's closedloop demos) or "setpoint" (u = C (r - y))
     defaults.ReferenceAt = "input";
   endif
+  if (refined && ! closed)
+    ## CONTSID's srivc options that are checked or refused here
+    defaults.Denominator = [];
+    defaults.Integration = [];
+    defaults.T0 = [];
+  endif
   [args, nf_each] = different_denominators (fname, refined, args);
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults, args{:});
+  if (refined && ! closed)
+    contsid_srivc_only_options (fname, opts, nf_each, columns (d.u));
+  endif
   n = rows (d.y);
   nu = columns (d.u);
   na = orders.na;
@@ -456,6 +465,36 @@ function [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
     info2.reason = info.reason;
     info = info2;
   endfor
+endfunction
+
+## CONTSID's Denominator ('Common' or 'Different'), checked against the
+## layout of nn (2m + 1 entries: common; 3m: one per input, CONTSID's
+## default), and its Integration and T0, which srivc does not take.
+function contsid_srivc_only_options (fname, opts, nf_each, nu)
+  if (! isempty (opts.Denominator))
+    v = opts.Denominator;
+    if (! ischar (v) || ! any (strcmpi (v, {"common", "different"})))
+      error ([fname ":badOption"],
+             "%s: Denominator must be 'Common' or 'Different'", fname);
+    endif
+    diff = strcmpi (v, "different");
+    if (nu > 1 && diff == isempty (nf_each))
+      layout = merge (diff, "[nb_1..nb_m nf_1..nf_m nk_1..nk_m]",
+                      "[nb_1..nb_m nf nk_1..nk_m]");
+      error ([fname ":badInput"], "%s: Denominator '%s' needs nn = %s",
+             fname, v, layout);
+    endif
+  endif
+  if (! isempty (opts.Integration) && ! isequal (opts.Integration, "off")
+      && ! isequal (opts.Integration, 0) && ! isequal (opts.Integration, false))
+    error ([fname ":notSupported"], ["%s: 'Integration' is not taken: ", ...
+           "srivc detects a pole at p = 0 itself and refits with it ", ...
+           "declared (info.integrators); tfsrivc and tfcoe take it"], fname);
+  endif
+  if (! isempty (opts.T0))
+    error ([fname ":notSupported"], ["%s: 'T0' is not taken: give the ", ...
+           "record from its starting sample, data(n0:end)"], fname);
+  endif
 endfunction
 
 function [args, nf_each] = different_denominators (fname, refined, args)
