@@ -48,9 +48,9 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
     error ("selcstruc:badInput", "selcstruc: expected the matrix V");
   endif
   ## NN: 2m + 1 columns (a common denominator) or 3m (one per input)
-  w = columns (V) - 4;
+  width = columns (V) - 4;               # the NN columns
   if (! isnumeric (V) || ! isreal (V) || ndims (V) > 2 || isempty (V)
-      || w < 3 || (mod (w, 2) != 1 && mod (w, 3) != 0))
+      || width < 3 || (mod (width, 2) != 1 && mod (width, 3) != 0))
     error ("selcstruc:badInput",
            "selcstruc: V must be the matrix of srivcstruc, rows [RT2 YIC NN log(cond) N]");
   endif
@@ -104,7 +104,6 @@ function [NN, Vcrit, varargout] = selcstruc (V, varargin)
         error ("selcstruc:badOption", "selcstruc: unknown option '%s'", name);
     endswitch
   endfor
-  width = columns (V) - 4;               # the NN columns
   ok = isfinite (V(:, 1)) & isfinite (V(:, 2)) & V(:, 1) >= rteb ...
        & V(:, 2) <= yicb;
   rows_ok = find (ok);

@@ -148,8 +148,11 @@ function [V, info, varargout] = srivcstruc (varargin)
   used_e = present_e;
   used_e(1:n0e-1) = false;
   structures = expand (NN, nu, form, den);
+  ## the sampling the initial state is fitted on: Ts, or the instants
   if (! isempty (ZV))
-    tv = sampling (ZV, true (rows (yv), 1));   # Ts, or irregular instants
+    tv = sampling (ZV, true (rows (yv), 1));
+  elseif (ic == "e")
+    te = sampling (ZE, present_e);       # the samples srivc simulates
   endif
 
   ns = rows (structures);
@@ -176,8 +179,7 @@ function [V, info, varargout] = srivcstruc (varargin)
     if (isempty (ZV))
       ys = est.simulated;
       if (ic == "e")
-        [ys, info.x0{k}] = free_response (M, ye(present_e), ys,
-                                          sampling (ZE, present_e));
+        [ys, info.x0{k}] = free_response (M, ye(present_e), ys, te);
       endif
       y = ye(used_e);
       ys = ys(used_e(present_e));

@@ -485,8 +485,8 @@ function contsid_srivc_only_options (fname, opts, nf_each, nu)
              fname, v, layout);
     endif
   endif
-  if (! isempty (opts.Integration) && ! isequal (opts.Integration, "off")
-      && ! isequal (opts.Integration, 0) && ! isequal (opts.Integration, false))
+  if (! isempty (opts.Integration)
+      && contsid_on_off (fname, "Integration", opts.Integration))
     error ([fname ":notSupported"], ["%s: 'Integration' is not taken: ", ...
            "srivc detects a pole at p = 0 itself and refits with it ", ...
            "declared (info.integrators); tfsrivc and tfcoe take it"], fname);

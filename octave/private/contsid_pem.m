@@ -140,28 +140,12 @@ function o = check_tfcoe_options (fname, o, T)
   if (! isempty (o.stepmax) && ! (scal (o.stepmax) && o.stepmax > 0))
     bad ("StepMax must be a scalar > 0 (s; Inf: unbounded)");
   endif
-  r = o.stepreduction;
-  if (! scal (r) || ! isfinite (r) || r <= 0 || r == 1)
-    bad (["StepReduction must be a factor > 1 (the step is divided by ", ...
-          "it) or in (0, 1) (multiplied)"]);
-  endif
-  o.srmult = r;
-  if (r > 1)
-    o.srmult = 1 / r;
-  endif
+  o.srmult = contsid_step_reduction (fname, o.stepreduction);
   f = o.focusorder;
   if (! scal (f) || f != fix (f) || f < 1 || f > 10)
     bad ("FocusOrder must be an integer in 1..10");
   endif
-  v = o.integration;
-  if (ischar (v) && any (strcmpi (v, {"on", "off"})))
-    o.integ = strcmpi (v, "on");
-  elseif ((islogical (v) || isnumeric (v)) && isscalar (v)
-          && any (v == [0 1]))
-    o.integ = logical (v);
-  else
-    bad ("Integration must be 'on' or 'off' (or true/false)");
-  endif
+  o.integ = contsid_on_off (fname, "Integration", o.integration);
 endfunction
 
 function [theta, P, info] = call_gateway (fname, d, opts)

@@ -236,15 +236,11 @@ function [M, info, d] = run_tfrivc (args)
     elseif (strcmpi (name, "InitMethod"))
       init = rest{i+1};
     elseif (strcmpi (name, "Integration"))
-      v = rest{i+1};
-      if ((ischar (v) && strcmpi (v, "off")) || isequal (v, 0))
-        continue;
-      elseif ((ischar (v) && strcmpi (v, "on")) || isequal (v, 1))
+      if (contsid_on_off (fname, "Integration", rest{i+1}))
         error ("tfrivc:notSupported", ["tfrivc: Integration 'on' is not ", ...
                "supported (the RIVC iterations cannot hold a coefficient ", ...
                "fixed); tfsrivc and tfcoe enforce an integrator"]);
       endif
-      error ("tfrivc:badOption", "tfrivc: Integration must be 'on' or 'off'");
     else
       pass(end+1:end+2) = rest(i:i+1);
       if (strcmpi (name, "MaxIter"))

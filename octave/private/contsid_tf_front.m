@@ -115,15 +115,7 @@ function M = contsid_tf_front (fname, args)
   endif
   o.fixtd = logical (o.fixtd);
   band = contsid_focus_option (fname, o.focus);
-  if (ischar (o.integration)
-      && any (strcmpi (o.integration, {"on", "off"})))
-    o.integration = strcmpi (o.integration, "on");
-  elseif (! (isscalar (o.integration)
-             && (islogical (o.integration) || isnumeric (o.integration))))
-    error ([fname ":badOption"], "%s: Integration must be 'on' or 'off'",
-           fname);
-  endif
-  o.integration = logical (o.integration);
+  o.integration = contsid_on_off (fname, "Integration", o.integration);
   if (o.integration && ! isempty (band))
     error ([fname ":badOption"], ["%s: Integration is not applicable with ", ...
            "a Focus filter (as CONTSID documents)"], fname);
@@ -156,16 +148,7 @@ function M = contsid_tf_front (fname, args)
     error ([fname ":badOption"], "%s: TolPar > 0 and TolFun >= 0 needed",
            fname);
   endif
-  ## CONTSID's factor r > 1 divides the step; a factor in (0, 1)
-  ## multiplies it (the toolbox's older convention)
-  if (! scal (o.stepreduction) || o.stepreduction <= 0
-      || o.stepreduction == 1)
-    error ([fname ":badOption"], ["%s: StepReduction must be > 1 (the ", ...
-           "delay step is divided by it) or in (0, 1) (multiplied)"], fname);
-  endif
-  if (o.stepreduction > 1)
-    o.stepreduction = 1 / o.stepreduction;
-  endif
+  o.stepreduction = contsid_step_reduction (fname, o.stepreduction);
   if (isempty (o.stepmax))
     o.stepmax = max ((o.tdmax - o.tdmin) / max (o.numtd - 1, 1), h);
   elseif (! scal (o.stepmax) || o.stepmax <= 0)

@@ -1,0 +1,14 @@
+## -*- texinfo -*-
+## @deftypefn {} {} test_contsid_option_readers ()
+## Runs the inline tests of the private readers of the CONTSID options
+## that several estimators share: @file{contsid_focus_option.m} (Focus:
+## CONTSID's cut-off fc and Inf, the SITB's band and names),
+## @file{contsid_on_off.m} (Integration) and
+## @file{contsid_step_reduction.m} (StepReduction).
+## @end deftypefn
+
+function test_contsid_option_readers ()
+  ctid_run_private_tests ("contsid_focus_option.m");
+  ctid_run_private_tests ("contsid_on_off.m");
+  ctid_run_private_tests ("contsid_step_reduction.m");
+endfunction
