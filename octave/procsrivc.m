@@ -87,12 +87,15 @@ function [M, varargout] = procsrivc (varargin)
     error ("procsrivc:badOption", ["procsrivc: options come in name-value ", ...
            "pairs"]);
   endif
+  known = {"numtd", "lambda", "maxiter", "tolpar", "tolfun"};
   for i = 1:2:numel (rest)
+    if (! ischar (rest{i}))
+      error ("procsrivc:badOption", "procsrivc: option names are strings");
+    endif
     key = lower (rest{i});
-    known = {"numtd", "lambda", "maxiter", "tolpar", "tolfun"};
-    if (! ischar (rest{i}) || ! any (strcmp (key, known)))
+    if (! any (strcmp (key, known)))
       error ("procsrivc:badOption", "procsrivc: unknown option '%s'",
-             num2str (rest{i}));
+             rest{i});
     endif
     o.(key) = rest{i+1};
   endfor
@@ -309,6 +312,7 @@ endfunction
 %!error id=procsrivc:badInput procsrivc (data, idtf (1, [1 1]))
 %!error id=procsrivc:badInput procsrivc (data, "Q2")
 %!error id=procsrivc:notSupported procsrivc (data, "P0")
+%!error id=procsrivc:badOption procsrivc (data, "P1D", {1}, 2)
 %!error id=procsrivc:badOption procsrivc (data, "P1D", "FixTd", "on")
 %!error <outside> procsrivc (data, set (idproc ("P1D"), "Td", 30))
 %!error id=procsrivc:numericalFailure procsrivc (data, "P2D")
