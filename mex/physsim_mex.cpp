@@ -12,7 +12,11 @@
 // levels of x1; absent or []: none). For "cascade": ts, g ("sqrt" or
 // "lin"), b (m-by-K, one column per parameter set), d, alpha, gamma, c
 // (1-by-K each), hi (1-by-K upper levels of the inner state; absent or []:
-// none), substeps. y, z: N-by-K.
+// none), ho (1-by-K upper levels of the outer state h; absent or []:
+// none), spill (1-by-K shares in [0, 1] of the inner overflow that fall
+// into h; absent or []: 0), substeps, z0 and h0 (1-by-K initial states
+// of z and h; both absent or []: at rest for the first sample's inflow).
+// y, z: N-by-K.
 #include "ctid/simulation/physical_realisations.hpp"
 #include "options_reader.hpp"
 
@@ -67,7 +71,25 @@ void physsim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   c.hi = hi.size() > 0 ? row(hi)
                        : Eigen::VectorXd::Constant(
                              K, std::numeric_limits<double>::infinity());
+  const Eigen::MatrixXd ho = opt.matrix("ho", 1, K);
+  if (ho.size() > 0) c.ho = row(ho);
+  const Eigen::MatrixXd spill = opt.matrix("spill", 1, K);
+  if (spill.size() > 0) {
+    if ((spill.array() < 0).any() || (spill.array() > 1).any()) {
+      g.fail("badInput", "spill must lie in [0, 1]");
+    }
+    c.spill = row(spill);
+  }
   c.substeps = opt.integer("substeps", 1);
+  const Eigen::MatrixXd z0 = opt.matrix("z0", 1, K);
+  const Eigen::MatrixXd h0 = opt.matrix("h0", 1, K);
+  if (z0.size() != h0.size()) {
+    g.fail("badInput", "z0 and h0 are given together");
+  }
+  if (z0.size() > 0) {
+    c.z0 = row(z0);
+    c.h0 = row(h0);
+  }
   opt.finish();
   plhs[0] = ctid::mex::make_output_matrix(n, K);
   double* z = nullptr;

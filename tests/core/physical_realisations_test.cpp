@@ -3,8 +3,9 @@
 // solution for inputs held over each sample (exponentials written out, no
 // matrix exponential), the end stop far from its levels against the linear
 // model's exact ZOH response by partial fractions (first-order modes), a
-// double integrator hitting and leaving a stop against t^2/2, and the
-// square-root cascade's rest and overflow levels.
+// double integrator hitting and leaving a stop against t^2/2, the
+// square-root cascade's rest and overflow levels, and the steady state of a
+// cascade whose overflow partly falls into its outer section.
 #include "ctid/simulation/physical_realisations.hpp"
 
 #include <gtest/gtest.h>
@@ -131,6 +132,88 @@ TEST(Cascade, SquareRootRestAndOverflow) {
   }
   EXPECT_LT(err[0], 2e-3 * h_top);
   EXPECT_GT(err[0] / err[1], 4.0);
+}
+
+TEST(Cascade, GivenInitialLevelsAndOuterLevel) {
+  // the linear cascade from given initial levels (not at rest) against its
+  // closed form; an outer level above the trajectory changes nothing, one
+  // below it holds h there
+  const double al = 0.3, ga = 0.12, b = 0.8, d = 0.05, c = 1.5, ts = 1;
+  const long n = 800;
+  const std::vector<double> u = staircase(n, 60, 0, 5, 11);
+  double z = 9.0, h = 2.0;
+  std::vector<double> exact(n);
+  double top = -INFINITY;
+  for (long k = 0; k < n; ++k) {
+    exact[k] = h + c;
+    top = std::max(top, h);
+    linear_cascade_step(al, ga, b * u[k] + d, ts, z, h);
+  }
+  CascadeConfig<double> cfg =
+      cascade(false, b, d, al, ga, INFINITY, c, ts, 20);
+  cfg.z0 = Eigen::VectorXd::Constant(1, 9.0);
+  cfg.h0 = Eigen::VectorXd::Constant(1, 2.0);
+  std::vector<double> y(n), y2(n), y3(n);
+  ASSERT_TRUE(
+      simulate_cascade<double>(cfg, u.data(), n, y.data(), nullptr).ok());
+  for (long k = 0; k < n; ++k) ASSERT_NEAR(y[k], exact[k], 1e-6 * top);
+  cfg.ho = Eigen::VectorXd::Constant(1, 2 * top);
+  ASSERT_TRUE(
+      simulate_cascade<double>(cfg, u.data(), n, y2.data(), nullptr).ok());
+  for (long k = 0; k < n; ++k) ASSERT_EQ(y2[k], y[k]);
+  const double lid = 0.5 * top;
+  cfg.ho(0) = lid;
+  ASSERT_TRUE(
+      simulate_cascade<double>(cfg, u.data(), n, y3.data(), nullptr).ok());
+  long held = 0;
+  for (long k = 0; k < n; ++k) {
+    ASSERT_LE(y3[k], lid + c);
+    held += y3[k] == lid + c;
+  }
+  EXPECT_GT(held, 0);
+  // one set given, one not: refused
+  cfg.z0.resize(0);
+  EXPECT_EQ(simulate_cascade<double>(cfg, u.data(), n, y.data(), nullptr)
+                .code(),
+            ErrorCode::kDimensionMismatch);
+}
+
+TEST(Cascade, SpilledShareReachesTheOuterState) {
+  // z held at its level by a constant inflow q > alpha hi: the water over
+  // the level, (q - alpha hi) per unit time, is lost but for the share s
+  // that enters h in h's units (1/alpha), so that h' = hi - gamma h +
+  // s (q - alpha hi) / alpha tends to its steady state; the error of the
+  // projection is O(sub-step)
+  const double al = 0.3, ga = 0.12, q = 3, top = 4, s = 0.6, ts = 1;
+  const long n = 400;  // 48 time constants of h
+  const std::vector<double> u(n, 1.0);
+  const double h_ss = (top + s * (q - al * top) / al) / ga;
+  CascadeConfig<double> cfg = cascade(false, q, 0, al, ga, top, 0, ts, 8);
+  cfg.spill = Eigen::VectorXd::Constant(1, s);
+  std::vector<double> y(n), z(n), y0(n);
+  double err[2];
+  const int steps[2] = {8, 64};
+  for (int i = 0; i < 2; ++i) {
+    cfg.substeps = steps[i];
+    ASSERT_TRUE(
+        simulate_cascade<double>(cfg, u.data(), n, y.data(), z.data()).ok());
+    EXPECT_DOUBLE_EQ(z[n - 1], top);
+    err[i] = std::abs(y[n - 1] - h_ss);
+  }
+  EXPECT_LT(err[1], 1e-2 * h_ss);
+  EXPECT_GT(err[0] / err[1], 4.0);
+  // a share of 0 is no spill at all
+  cfg.spill(0) = 0;
+  ASSERT_TRUE(
+      simulate_cascade<double>(cfg, u.data(), n, y.data(), nullptr).ok());
+  cfg.spill.resize(0);
+  ASSERT_TRUE(
+      simulate_cascade<double>(cfg, u.data(), n, y0.data(), nullptr).ok());
+  for (long k = 0; k < n; ++k) ASSERT_EQ(y[k], y0[k]);
+  cfg.spill = Eigen::VectorXd::Constant(1, 1.5);
+  EXPECT_EQ(simulate_cascade<double>(cfg, u.data(), n, y.data(), nullptr)
+                .code(),
+            ErrorCode::kBadInput);
 }
 
 TEST(Cascade, SideBySideEqualsAlone) {

@@ -19,11 +19,17 @@
 // Cascade ("cascade"): two first-order sections with the nonlinearity at
 // the inner node,
 //   z' = q - alpha g(z),  0 <= z <= hi,   h' = g(z) - gamma g(h),
-//   y = c + h,  q = sum_j b_j w_j + d,
+//   h <= ho,  y = c + h,  q = sum_j b_j w_j + d,
 // g = sqrt (two tanks with Torricelli outflows; z and h kept >= 0) or
-// g(s) = s (a linear cascade; z limited above only). Classical Runge-Kutta
+// g(s) = s (a linear cascade; z and h limited above only). An upper
+// level of h is a lower tank that overflows: the water above is lost.
+// The water that a projection of z onto hi removes in a sub-step (an
+// upper tank that overflows) is lost but for a share `spill` in [0, 1]
+// that falls into the lower section (added to h, converted by 1/alpha:
+// z's outflow alpha g(z) is h's inflow g(z)). Classical Runge-Kutta
 // in `substeps` sub-steps per sample, the states projected onto their
-// bounds after each; starts at rest for the first sample's inflow
+// bounds after each; starts at the given levels z0, h0 (projected onto
+// their bounds) or, without them, at rest for the first sample's inflow
 // (max(q_1, 0)). Several parameter sets of one structure are simulated side
 // by side (one column each), in one pass over the samples.
 #pragma once
@@ -162,7 +168,12 @@ struct CascadeConfig {
   Vector<S> alpha;         // K inner outflow coefficients
   Vector<S> gamma;         // K outflow coefficients
   Vector<S> hi;            // K upper levels of z (+inf: none)
+  Vector<S> ho;            // K upper levels of h (empty or +inf: none)
+  Vector<S> spill;         // K shares in [0, 1] of z's overflow that
+                           // fall into h (empty: 0, all lost)
   Vector<S> c;             // K output levels
+  Vector<S> z0;            // K initial inner states (empty: at rest)
+  Vector<S> h0;            // K initial states of h (empty: at rest)
   S ts = 1;
   int substeps = 1;
 };
@@ -180,6 +191,20 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
   if (c.d.size() != K || c.alpha.size() != K || c.gamma.size() != K ||
       c.hi.size() != K || c.c.size() != K) {
     return dimension_mismatch("d, alpha, gamma, hi, c need one entry per set");
+  }
+  if (c.ho.size() != 0 && c.ho.size() != K) {
+    return dimension_mismatch("ho: empty or one entry per set");
+  }
+  if (c.spill.size() != 0 && c.spill.size() != K) {
+    return dimension_mismatch("spill: empty or one entry per set");
+  }
+  for (Eigen::Index i = 0; i < c.spill.size(); ++i) {
+    if (!(c.spill(i) >= 0 && c.spill(i) <= 1)) {
+      return bad_input("spill must lie in [0, 1]");
+    }
+  }
+  if (c.z0.size() != c.h0.size() || (c.z0.size() != 0 && c.z0.size() != K)) {
+    return dimension_mismatch("z0 and h0: both empty or one entry per set");
   }
   if (num_samples < 0 || (num_samples > 0 && m > 0 && W == nullptr)) {
     return bad_input("channel signals missing");
@@ -201,7 +226,15 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
     }
   };
   inflow(0);
-  for (Eigen::Index i = 0; i < K; ++i) {
+  const bool given = c.z0.size() == K;
+  for (Eigen::Index i = 0; given && i < K; ++i) {
+    const S lo = c.sqrt_nodes ? S(0) : -std::numeric_limits<S>::infinity();
+    z(i) = std::fmin(std::fmax(c.z0(i), lo), c.hi(i));
+    hh(i) = c.sqrt_nodes ? std::fmax(c.h0(i), S(0)) : c.h0(i);
+  }
+  const S inf = std::numeric_limits<S>::infinity();
+  auto outer_top = [&](Eigen::Index i) { return c.ho.size() ? c.ho(i) : inf; };
+  for (Eigen::Index i = 0; !given && i < K; ++i) {
     const S q1 = std::fmax(q(i), S(0));
     if (c.sqrt_nodes) {
       const S a = q1 / c.alpha(i);
@@ -212,6 +245,9 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
       z(i) = std::fmin(q1 / c.alpha(i), c.hi(i));
       hh(i) = z(i) / c.gamma(i);
     }
+  }
+  for (Eigen::Index i = 0; i < K; ++i) {
+    hh(i) = std::fmin(hh(i), outer_top(i));
   }
   auto pos = [](S v) { return std::sqrt(std::fmax(v, S(0))); };
   for (long k = 0; k < N; ++k) {
@@ -225,6 +261,10 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
       const S al = c.alpha(i);
       const S ga = c.gamma(i);
       const S top = c.hi(i);
+      const S otop = outer_top(i);
+      // share of the water over the inner level that reaches h, in h's
+      // units (z's outflow alpha g(z) is h's inflow g(z))
+      const S spill = c.spill.size() ? c.spill(i) / al : S(0);
       S zi = z(i);
       S hi_ = hh(i);
       if (c.sqrt_nodes) {
@@ -247,9 +287,12 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
           const S o4 = pos(za);
           const S a4 = qk - al * o4;
           const S b4 = o4 - ga * pos(ha);
-          zi = std::fmin(std::fmax(zi + h6 * (a1 + 2 * a2 + 2 * a3 + a4), S(0)),
-                         top);
-          hi_ = std::fmax(hi_ + h6 * (b1 + 2 * b2 + 2 * b3 + b4), S(0));
+          const S zn = std::fmax(zi + h6 * (a1 + 2 * a2 + 2 * a3 + a4), S(0));
+          zi = std::fmin(zn, top);
+          hi_ = std::fmin(std::fmax(hi_ + h6 * (b1 + 2 * b2 + 2 * b3 + b4) +
+                                        spill * (zn - zi),
+                                    S(0)),
+                          otop);
         }
       } else {
         for (int s = 0; s < c.substeps; ++s) {
@@ -267,8 +310,11 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
           ha = hi_ + h * b3;
           const S a4 = qk - al * za;
           const S b4 = za - ga * ha;
-          zi = std::fmin(zi + h6 * (a1 + 2 * a2 + 2 * a3 + a4), top);
-          hi_ += h6 * (b1 + 2 * b2 + 2 * b3 + b4);
+          const S zn = zi + h6 * (a1 + 2 * a2 + 2 * a3 + a4);
+          zi = std::fmin(zn, top);
+          hi_ = std::fmin(hi_ + h6 * (b1 + 2 * b2 + 2 * b3 + b4) +
+                              spill * (zn - zi),
+                          otop);
         }
       }
       z(i) = zi;
