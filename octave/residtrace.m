@@ -46,7 +46,10 @@
 ## velocity reset (the velocity a state of the observable canonical form
 ## when every channel's relative degree is at least two), or the inner
 ## state of a cascade of two first-order sections with square-root or
-## linear outflows that overflows (two tanks). These two are simulated
+## linear outflows that overflows (two tanks; a share of the overflow,
+## estimated, falls into the lower one), alone or with the outer state
+## (the output) overflowing too. The cascade's initial level is one of its
+## parameters. These two are simulated
 ## in sub-steps and fitted on their simulation error, levels included
 ## (Levenberg-Marquardt; the refined-IV engine has no regression form for
 ## a nonlinearity of an unmeasured state), and compete with the other

@@ -36,12 +36,17 @@
 ## into the stop (@code{residtrace_physsim}, kind "stop").
 ## @item An inner state of a two-section cascade that overflows (a tank
 ## cascade): z' = b u + d - alpha g(z), z <= h, y = c + x with x' = g(z)
-## - gamma g(x), g a square root (Torricelli) or linear
+## - gamma g(x), g a square root (Torricelli) or linear, a share of the
+## overflow falling into the outer section; and the same with the outer
+## state limited too (y <= yhi: both tanks overflow)
 ## (@code{residtrace_physcascade}).
 ## @end itemize
 ## These two are fitted on their simulation error, all their parameters
 ## and levels together (@code{residtrace_physfit}), and compared with the
-## other variants by the same BIC.
+## other variants by the same BIC. A cascade whose inner state sits at its
+## level on more than half of the estimation samples is dropped: that is
+## not an overflow but another structure (the inner section held full
+## and its spill feeding the outer one: a single tank).
 ## @end deftypefn
 
 function c = residtrace_cand_saturation (cur, ctx)
@@ -81,14 +86,30 @@ function c = residtrace_cand_saturation (cur, ctx)
     ph{end+1} = t; pn{end+1} = nm;
   endif
   for g = {"sqrt", "lin"}
-    t = residtrace_physcascade (cur, ctx, g{1}, true);
-    if (! isempty (t))
-      ph{end+1} = t;
-      pn{end+1} = sprintf ("inner state of a %s cascade, upper level", g{1});
-    endif
+    for clip = 1:2
+      t = residtrace_physcascade (cur, ctx, g{1}, clip);
+      if (! isempty (t))
+        ph{end+1} = t;
+        if (clip == 1)
+          pn{end+1} = sprintf ("inner state of a %s cascade, upper level",
+                               g{1});
+        else
+          pn{end+1} = sprintf (["inner and outer states of a %s ", ...
+                                "cascade, upper levels"], g{1});
+        endif
+      endif
+    endfor
   endfor
   for k = 1:numel (ph)
     m = residtrace_physfit (ph{k}, D, ctx);
+    if (m.ok && strcmp (m.phys.kind, "cascade"))
+      ## an inner state at its level on most samples does not overflow:
+      ## the level and the spilled share then stand for another structure
+      ## (a single tank fed through the spill, on the held-out record
+      ## "tank"), which is not a saturation
+      [~, z] = residtrace_physsim (m, D.u, D.Ts);
+      m.ok = mean (z >= m.phys.hi - 1e-9 * abs (m.phys.hi)) <= 0.5;
+    endif
     if (m.ok)
       m.fitted = true;
       tmpls{end+1} = m; names{end+1} = pn{k}; starts{end+1} = {};
@@ -126,11 +147,16 @@ function c = residtrace_cand_saturation (cur, ctx)
       what = sprintf ("inner state of the %s cascade limited to", P.g);
     endif
     share = mean (z >= lv(2) - 1e-9 * abs (lv(2)) | z <= lv(1));
+    txt = sprintf ("%s [%.4g, %.4g] (%.1f %% of the estimation samples)",
+                   what, lv(1), lv(2), 100 * share);
+    if (isfield (P, "yhi"))              # the outer state (the output)
+      yo = y - m.e_est;
+      so = mean (yo >= P.yhi - 1e-9 * abs (P.yhi));
+      txt = sprintf ("%s; output limited to %.4g (%.1f %%)", txt, P.yhi,
+                     100 * so);
+    endif
     c.evidence = struct ("term", "levels [lo hi]", "value", lv,
-                         "std", NaN, "share", share,
-                         "text", sprintf (["%s [%.4g, %.4g] (%.1f %% of ", ...
-                                           "the estimation samples)"],
-                                          what, lv(1), lv(2), 100 * share));
+                         "std", NaN, "share", share, "text", txt);
   elseif (any (strcmp ({m.out.type}, "sat")))
     lv = m.out(strcmp ({m.out.type}, "sat")).c;
     xo = y - m.e_est;

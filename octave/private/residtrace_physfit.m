@@ -12,13 +12,21 @@
 ## Parameters: for "stop", the free coefficients of F, every channel's
 ## numerator, the output offset (when the model has one) and the finite
 ## levels; for "cascade", every channel's gain, the constant inflow d,
-## log alpha, log gamma, the output level c (square-root nodes) and the
-## inner level (when finite). With @code{D.initial_state} the free
+## log alpha, log gamma, the output level c (square-root nodes), the
+## inner level (when finite), the outer level @code{yhi} and the share
+## @code{spill} of the inner overflow (when present) and the initial
+## level @code{h0} (when present; with @code{D.initial_state} the inner
+## one @code{z0} too, else at rest with h0: the cascade's initial state,
+## so no free response is added). A share is kept in [0, 1] by
+## projecting each step onto it (a step rejected at the bound would stall
+## the others). With @code{D.initial_state} the free
 ## response of the model's (linearised) F is fitted on the error by least
-## squares, as for every other model. At most min(@code{ctx.maxiter}, 8)
-## iterations (three while residtrace screens), on at most the first
-## 6000 samples; the residual variance, BIC and @code{e_est} are those of the
-## whole record. @code{phys.theta}, @code{phys.cov}: the parameters above
+## squares, as for every other model. At most @code{ctx.maxiter}
+## iterations (three while residtrace screens) and at most max(8, 48 000 /
+## n) on the n <= 6000 samples fitted (the first ones; a budget for speed:
+## until session 11 eight whatever n, which left the cascades' fits short
+## of their minimum on records of a few thousand samples); the residual
+## variance, BIC and @code{e_est} are those of the whole record. @code{phys.theta}, @code{phys.cov}: the parameters above
 ## and their Gauss-Newton covariance; @code{theta}, @code{cov}: those of
 ## the linear part (for a cascade, its linearisation, without covariance).
 ## @end deftypefn
@@ -30,7 +38,18 @@ function model = residtrace_physfit (tmpl, D, ctx)
   model.ok = false;
   y = D.y;
   N = numel (y);
+  ## a cascade's initial state is its level h0, a parameter: no free
+  ## response on top
   x0 = isfield (D, "initial_state") && D.initial_state;
+  if (x0 && isfield (tmpl.phys, "h0") && ! isempty (tmpl.phys.h0))
+    ## the cascade's initial state, both levels, are parameters: no free
+    ## response on top
+    x0 = false;
+    if (! isfield (tmpl.phys, "z0") || isempty (tmpl.phys.z0))
+      [~, z] = residtrace_physsim (tmpl, D.u, D.Ts);
+      tmpl.phys.z0 = z(1);
+    endif
+  endif
   nfit = min (N, 6000);
   Df = D;
   Df.y = D.y(1:nfit); Df.u = D.u(1:nfit, :);
@@ -42,7 +61,8 @@ function model = residtrace_physfit (tmpl, D, ctx)
   if (! isfinite (sse))
     return;
   endif
-  maxit = min (max (ctx.maxiter, 1), 8);
+  ## a budget of samples times iterations (8 on 6000 samples, 30 on 1600)
+  maxit = min (max (ctx.maxiter, 1), max (8, floor (48000 / nfit)));
   mu = [];
   np = numel (th);
   for it = 1:maxit
@@ -60,7 +80,7 @@ function model = residtrace_physfit (tmpl, D, ctx)
     improved = false;
     for tries = 1:6
       step = -(H + mu * diag (dH)) \ g;
-      t = th + step;
+      t = project (tmpl, th + step);
       if (! valid (tmpl, t))
         mu *= 10;
         continue;
@@ -115,6 +135,12 @@ function J = jacobian (tmpl, th, scale, r, D, x0, res)
   np = numel (th);
   J = zeros (numel (r), np);
   h = 1e-5 * max (abs (th), scale);
+  for i = 1:np                          # a bounded parameter at its bound
+    t = th; t(i) += h(i);               # (a share of 1): backward
+    if (! valid (tmpl, t))
+      h(i) = -h(i);
+    endif
+  endfor
   if (strcmp (tmpl.phys.kind, "cascade"))
     ms = cell (1, np);
     for i = 1:np
@@ -187,6 +213,18 @@ function [th, scale] = pack (m)
       if (isfinite (P.hi))
         th(end+1) = P.hi; scale(end+1) = max (abs (P.hi), 1e-6);
       endif
+      if (isfield (P, "yhi"))
+        th(end+1) = P.yhi; scale(end+1) = ys;
+      endif
+      if (isfield (P, "spill"))
+        th(end+1) = P.spill; scale(end+1) = 1;
+      endif
+      if (isfield (P, "h0") && ! isempty (P.h0))
+        th(end+1) = P.h0; scale(end+1) = ys;
+      endif
+      if (isfield (P, "z0") && ! isempty (P.z0))
+        th(end+1) = P.z0; scale(end+1) = max (abs (P.z0), 1e-6);
+      endif
   endswitch
 endfunction
 
@@ -230,8 +268,31 @@ function m = unpack (m, th)
       if (isfinite (P.hi))
         off++; m.phys.hi = th(off);
       endif
+      if (isfield (P, "yhi"))
+        off++; m.phys.yhi = th(off);
+      endif
+      if (isfield (P, "spill"))
+        off++; m.phys.spill = th(off);
+      endif
+      if (isfield (P, "h0") && ! isempty (P.h0))
+        off++; m.phys.h0 = th(off);
+      endif
+      if (isfield (P, "z0") && ! isempty (P.z0))
+        off++; m.phys.z0 = th(off);
+      endif
       m.F = residtrace_physlin (m);
   endswitch
+endfunction
+
+## A step onto the bounds of a bounded parameter (a share in [0, 1]), so
+## that the others still move when it sits at a bound (projected
+## Levenberg-Marquardt; a rejected step would stall there).
+function th = project (m, th)
+  if (strcmp (m.phys.kind, "cascade") && isfield (m.phys, "spill"))
+    m = unpack (m, th);
+    m.phys.spill = min (max (m.phys.spill, 0), 1);
+    th = pack (m);
+  endif
 endfunction
 
 function ok = valid (m, th)
@@ -245,5 +306,8 @@ function ok = valid (m, th)
     ok = all (real (z) <= 1e-9 * max (abs (z))) && m.phys.lo < m.phys.hi;
   else
     ok = m.phys.alpha < 1e8 && m.phys.gamma < 1e8;
+    if (isfield (m.phys, "spill"))
+      ok = ok && m.phys.spill >= 0 && m.phys.spill <= 1;
+    endif
   endif
 endfunction

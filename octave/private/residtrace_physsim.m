@@ -20,12 +20,15 @@
 ## @item "cascade" (two first-order sections with the nonlinearity at the
 ## inner node)
 ## z' = sum_j b_j w_j + d - alpha g(z), 0 <= z <= phys.hi (an inner state
-## that overflows), and h' = g(z) - gamma g(h), y = c + h, g = sqrt (two
+## that overflows), and h' = g(z) - gamma g(h), y = c + h <= phys.yhi
+## (when present: an outer state that overflows; the share phys.spill of
+## the water over phys.hi falls into h), g = sqrt (two
 ## tanks with Torricelli outflows; phys.g = "sqrt") or g(s) = s (a linear
 ## cascade, phys.g = "lin"). Classical Runge-Kutta in
 ## @code{phys.substeps} sub-steps per sample, the states projected onto
-## their bounds after each; starts at rest for the first sample's
-## channels (the record is taken to start at rest there).
+## their bounds after each; starts at the level @code{phys.h0} when
+## given, the inner state at @code{phys.z0} or else at rest with it, and
+## without h0 at rest for the first sample's channels.
 ## @end table
 ## @var{z}: the inner state ("cascade") or the position x + c ("stop").
 ## A cell of "cascade" models of one structure (channels, nonlinearity)
@@ -105,7 +108,7 @@ function [y, z] = sim_cascade (models, W, Ts)
   K = numel (models);
   m = columns (W);
   b = zeros (m, K);
-  d = al = ga = top = c = zeros (1, K);
+  d = al = ga = top = c = z0 = h0 = ho = sp = zeros (1, K);
   S = 1;
   for i = 1:K
     Mi = models{i};
@@ -115,18 +118,52 @@ function [y, z] = sim_cascade (models, W, Ts)
     P = Mi.phys;
     d(i) = P.d; al(i) = P.alpha; ga(i) = P.gamma; top(i) = P.hi;
     c(i) = P.c;
+    ho(i) = Inf;
+    if (isfield (P, "yhi"))
+      ho(i) = P.yhi - P.c;               # the output's level, of h
+    endif
+    sp(i) = NaN;
+    if (isfield (P, "spill"))
+      sp(i) = P.spill;
+    endif
+    z0(i) = h0(i) = NaN;
+    if (isfield (P, "h0") && ! isempty (P.h0))
+      h0(i) = min (P.h0, ho(i));
+      if (isfield (P, "z0") && ! isempty (P.z0))
+        z0(i) = P.z0;
+      elseif (strcmp (P.g, "sqrt"))      # at rest at that level
+        z0(i) = min (P.gamma ^ 2 * max (h0(i), 0), P.hi);
+      else
+        z0(i) = min (P.gamma * h0(i), P.hi);
+      endif
+    endif
     S = max (S, P.substeps);
   endfor
+  ## the simulator takes a level (an initial state) for all sets or none:
+  ## sets that differ in that are simulated in separate passes
+  key = [isfinite(z0); isfinite(top); isfinite(ho); isfinite(sp)];
+  [~, ~, grp] = unique (key.', "rows");
+  if (any (grp != grp(1)))
+    y = z = zeros (rows (W), K);
+    for g = unique (grp).'
+      i = grp == g;
+      [y(:, i), z(:, i)] = sim_cascade (models(i), W, Ts);
+    endfor
+    return;
+  endif
   o = struct ("kind", "cascade", "ts", Ts, "g", models{1}.phys.g, "b", b,
               "d", d, "alpha", al, "gamma", ga, "c", c, "substeps", S);
-  fin = isfinite (top);
-  if (all (fin))
+  if (key(1, 1))
+    o.z0 = z0; o.h0 = h0;
+  endif
+  if (key(2, 1))
     o.hi = top;
-  elseif (any (fin))                     # levels and none: two passes
-    y = z = zeros (rows (W), K);
-    [y(:, fin), z(:, fin)] = sim_cascade (models(fin), W, Ts);
-    [y(:, ! fin), z(:, ! fin)] = sim_cascade (models(! fin), W, Ts);
-    return;
+  endif
+  if (key(3, 1))
+    o.ho = ho;
+  endif
+  if (key(4, 1))
+    o.spill = sp;
   endif
   [y, z] = physsim_mex ("residtrace", W, o);
 endfunction

@@ -15,7 +15,10 @@
 ## (see @code{residtrace_cand_drift}), one sample behind.
 ## @item With an unknown initial state (@code{model.x0}), the model's free
 ## response (@code{residtrace_free}) is fitted on V's error by least
-## squares and added to the output, as MATLAB's @code{compare} does.
+## squares and added to the output, as MATLAB's @code{compare} does; a
+## cascade realisation's initial levels (@code{phys.h0}, @code{phys.z0})
+## are fitted on V instead. Without, a cascade starts at the levels
+## fitted on the estimation record.
 ## @item Sinusoidal output terms keep their frequencies; their amplitudes
 ## and phases, unknown on another record, are fitted on each half of the
 ## residual and applied to the other half (two-fold cross-fitting).
@@ -53,7 +56,10 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
   endif
   yh = yh(npre+1:end);
   e = V.y - yh;
-  if (isfield (m, "x0") && m.x0 && all (isfinite (e)))
+  if (isfield (m, "x0") && m.x0 && all (isfinite (e)) && cascade_h0 (m)
+      && isempty (m.ltv) && isempty (V.pre))
+    [e, yh] = refit_h0 (m, V, ctx);
+  elseif (isfield (m, "x0") && m.x0 && all (isfinite (e)))
     X = residtrace_free (m.F, N, V.Ts);
     f = X * (X \ e);
     yh += f;
@@ -75,6 +81,52 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
     yh += e - p;
     e = p;
   endif
+endfunction
+
+function ok = cascade_h0 (m)
+  ok = ! isempty (m.phys) && strcmp (m.phys.kind, "cascade") ...
+       && isfield (m.phys, "h0") && ! isempty (m.phys.h0);
+endfunction
+
+## A cascade's initial state is its two levels (h0, and z0 at rest with
+## it unless given): with the initial state estimated both are fitted on
+## the record's error by Nelder-Mead, from the best of three starts: the
+## estimation record's levels, at rest at the record's first sample, and
+## at rest for its first input (as a linear model's free response is
+## fitted).
+function [e, yh] = refit_h0 (m, V, ctx)
+  y = V.y;
+  P = m.phys;
+  starts = zeros (2, 3);
+  if (! isfield (P, "z0") || isempty (P.z0))
+    [~, z] = residtrace_physsim (m, V.u, V.Ts);
+    P.z0 = z(1);
+  endif
+  starts(:, 1) = [P.h0; P.z0];
+  r = m; r.phys.z0 = [];
+  r.phys.h0 = y(1) - P.c;
+  [~, z] = residtrace_physsim (r, V.u, V.Ts);
+  starts(:, 2) = [r.phys.h0; z(1)];
+  r.phys.h0 = [];
+  [yr, z] = residtrace_physsim (r, V.u, V.Ts);
+  starts(:, 3) = [yr(1) - P.c; z(1)];
+  f = @(x) sum ((y - sim_x0 (m, x, V, ctx)) .^ 2);
+  fs = arrayfun (@(k) f (starts(:, k)), 1:3);
+  [~, k] = min (fs);
+  x = starts(:, k);
+  [xb, fb] = fminsearch (f, x, optimset ("MaxFunEvals", 200,
+                                         "TolX", 1e-8, "TolFun", 1e-10));
+  if (! (fb < fs(k)))
+    xb = x;
+  endif
+  yh = sim_x0 (m, xb, V, ctx);
+  e = y - yh;
+endfunction
+
+function yh = sim_x0 (m, x, V, ctx)
+  m.phys.h0 = x(1);
+  m.phys.z0 = max (x(2), 0);
+  yh = residtrace_simulate (m, V.u, V.Ts, V.loop, ctx.opts.substeps);
 endfunction
 
 ## RSRIVC-KF on the record (from the start of a split record, or from
