@@ -86,29 +86,41 @@ function c = residtrace_cand_saturation (cur, ctx)
     ph{end+1} = t; pn{end+1} = nm;
   endif
   for g = {"sqrt", "lin"}
-    for clip = 1:2
-      t = residtrace_physcascade (cur, ctx, g{1}, clip);
-      if (! isempty (t))
-        ph{end+1} = t;
-        if (clip == 1)
-          pn{end+1} = sprintf ("inner state of a %s cascade, upper level",
-                               g{1});
-        else
-          pn{end+1} = sprintf (["inner and outer states of a %s ", ...
-                                "cascade, upper levels"], g{1});
-        endif
-      endif
-    endfor
+    t = residtrace_physcascade (cur, ctx, g{1}, 1);
+    if (! isempty (t))
+      ph{end+1} = t;
+      pn{end+1} = sprintf ("inner state of a %s cascade, upper level", g{1});
+    endif
   endfor
   for k = 1:numel (ph)
     m = residtrace_physfit (ph{k}, D, ctx);
     if (m.ok && strcmp (m.phys.kind, "cascade"))
-      ## an inner state at its level on most samples does not overflow:
-      ## the level and the spilled share then stand for another structure
-      ## (a single tank fed through the spill, on the held-out record
-      ## "tank"), which is not a saturation
-      [~, z] = residtrace_physsim (m, D.u, D.Ts);
-      m.ok = mean (z >= m.phys.hi - 1e-9 * abs (m.phys.hi)) <= 0.5;
+      ## a cascade's fit from the linearisation often ends on its
+      ## iteration budget: restarted once from where it ended
+      m2 = residtrace_physfit (m, D, ctx);
+      if (m2.ok && m2.bic < m.bic)
+        m = m2;
+      endif
+    endif
+    m = overflowing (m, D);
+    if (m.ok && strcmp (m.phys.kind, "cascade"))
+      ## the lower tank's rim too, started from this fit with the rim at
+      ## the highest sample (a fit of its own from the linearisation
+      ## stalls where the clipped output hides the other parameters); a
+      ## rim the fitted output never reaches is not estimated: dropped
+      t = m;
+      t.phys.yhi = max (y);
+      mo = overflowing (residtrace_physfit (t, D, ctx), D);
+      if (mo.ok)
+        yo = y - mo.e_est;
+        mo.ok = any (yo >= mo.phys.yhi - 1e-9 * abs (mo.phys.yhi));
+      endif
+      if (mo.ok)
+        mo.fitted = true;
+        tmpls{end+1} = mo; starts{end+1} = {};
+        names{end+1} = sprintf (["inner and outer states of a %s ", ...
+                                 "cascade, upper levels"], m.phys.g);
+      endif
     endif
     if (m.ok)
       m.fitted = true;
@@ -442,4 +454,15 @@ function [t, name] = stop_template (cur, ctx, y, x)
                    "substeps", 20, "yscale", std (y));
   name = sprintf (["output (a position) at an end stop, velocity ", ...
                    "reset, %s level"], sb);
+endfunction
+
+## A cascade whose inner state sits at its level on most samples does not
+## overflow: the level and the spilled share then stand for another
+## structure (a single tank fed through the spill, on the held-out record
+## "tank"), which is not a saturation.
+function m = overflowing (m, D)
+  if (m.ok && strcmp (m.phys.kind, "cascade"))
+    [~, z] = residtrace_physsim (m, D.u, D.Ts);
+    m.ok = mean (z >= m.phys.hi - 1e-9 * abs (m.phys.hi)) <= 0.5;
+  endif
 endfunction

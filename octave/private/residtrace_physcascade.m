@@ -4,12 +4,12 @@
 ## @code{residtrace} model @var{cur}, fitted on the estimation record
 ## (@code{residtrace_physfit}): two first-order sections, the nonlinearity
 ## @var{g} ("sqrt": square-root outflows, two tanks by Torricelli's law;
-## "lin": linear) at both nodes. @var{clip}: 0, none; 1, the inner state
-## limited above (an upper tank that overflows, its level estimated) with
-## the share of its overflow that falls into the outer section estimated
-## (@code{phys.spill} in [0, 1], started at 0.5); 2, also the outer state
-## limited above (a lower tank that overflows: the output's level
-## @code{phys.yhi}, started at the record's highest sample).
+## "lin": linear) at both nodes. With @var{clip}, the inner state limited
+## above (an upper tank that overflows, its level estimated) and the share
+## of its overflow that falls into the outer section estimated
+## (@code{phys.spill} in [0, 1], started at 0: all of it lost). (The
+## outer state's level, @code{phys.yhi}, is added by
+## @code{residtrace_cand_saturation} to a fitted cascade.)
 ##
 ## Started at the model's linearisation: the current model's two slowest
 ## poles (the faster one upstream; a first-order model: its pole
@@ -114,10 +114,7 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
                    "wbar", wbar, "yscale", std (y), "h0", y(1) - c0);
   t.F = residtrace_physlin (t);
   if (clip)
-    t.phys.spill = 0.5;                  # share of the overflow kept
-  endif
-  if (clip > 1)
-    t.phys.yhi = max (y);                # the outer tank's rim
+    t.phys.spill = 0;                    # share of the overflow kept
   endif
   if (clip)
     [~, z] = residtrace_physsim (t, D.u, D.Ts);

@@ -138,8 +138,13 @@ function J = jacobian (tmpl, th, scale, r, D, x0, res)
   for i = 1:np                          # a bounded parameter at its bound
     t = th; t(i) += h(i);               # (a share of 1): backward
     if (! valid (tmpl, t))
-      h(i) = -h(i);
+      t(i) = th(i) - h(i);
+      if (valid (tmpl, t))
+        h(i) = -h(i);
+      endif
     endif
+    t = th; t(i) += h(i);               # never past a bound
+    h(i) = project (tmpl, t)(i) - th(i);   # 0: no step, a zero column
   endfor
   if (strcmp (tmpl.phys.kind, "cascade"))
     ms = cell (1, np);
@@ -154,13 +159,17 @@ function J = jacobian (tmpl, th, scale, r, D, x0, res)
         X = residtrace_free (ms{i}.F, numel (e), D.Ts);
         e -= X * (X \ e);
       endif
-      J(:, i) = (e - r) / h(i);
+      if (h(i) != 0)
+        J(:, i) = (e - r) / h(i);
+      endif
     endfor
     return;
   endif
   for i = 1:np
     t = th; t(i) += h(i);
-    J(:, i) = (res (t) - r) / h(i);
+    if (h(i) != 0)
+      J(:, i) = (res (t) - r) / h(i);
+    endif
   endfor
 endfunction
 

@@ -115,7 +115,8 @@ function [e, yh] = refit_h0 (m, V, ctx)
   [~, k] = min (fs);
   x = starts(:, k);
   [xb, fb] = fminsearch (f, x, optimset ("MaxFunEvals", 200,
-                                         "TolX", 1e-8, "TolFun", 1e-10));
+                                         "TolX", 1e-8, "TolFun", 1e-10,
+                                         "Display", "off"));
   if (! (fb < fs(k)))
     xb = x;
   endif

@@ -149,12 +149,11 @@ function check_template ()
   cur = struct ("F", poly ([-0.01 -0.02 -1.8e7]), "fixed", false (1, 3),
                 "channels", ch, "out", out);
   ctx.D = struct ("loop", [], "u", u, "y", y, "Ts", Ts);
-  for clip = 0:2
+  for clip = [false true]
     [t, why] = residtrace_physcascade (cur, ctx, "sqrt", clip);
     assert (! isempty (t), why);
     assert (t.phys.h0, y(1) - t.phys.c);
-    assert (isfield (t.phys, "spill"), clip > 0);
-    assert (isfield (t.phys, "yhi"), clip > 1);
+    assert (isfield (t.phys, "spill"), clip);
   endfor
   ## fitted with its initial state declared and a delayed channel (the
   ## inner level's start is the rest for the first, delayed, input: a
