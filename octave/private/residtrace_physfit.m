@@ -26,8 +26,9 @@
 ## n) on the n <= 6000 samples fitted (the first ones; a budget for speed:
 ## until session 11 eight whatever n, which left the cascades' fits short
 ## of their minimum on records of a few thousand samples); the residual
-## variance, BIC and @code{e_est} are those of the whole record. @code{phys.theta}, @code{phys.cov}: the parameters above
-## and their Gauss-Newton covariance; @code{theta}, @code{cov}: those of
+## variance, BIC and @code{e_est} are those of the whole record.
+## @code{phys.theta}, @code{phys.cov}: the parameters above and their
+## Gauss-Newton covariance; @code{theta}, @code{cov}: those of
 ## the linear part (for a cascade, its linearisation, without covariance).
 ## @end deftypefn
 
