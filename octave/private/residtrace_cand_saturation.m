@@ -86,7 +86,7 @@ function c = residtrace_cand_saturation (cur, ctx)
     ph{end+1} = t; pn{end+1} = nm;
   endif
   for g = {"sqrt", "lin"}
-    t = residtrace_physcascade (cur, ctx, g{1}, 1);
+    t = residtrace_physcascade (cur, ctx, g{1}, true);
     if (! isempty (t))
       ph{end+1} = t;
       pn{end+1} = sprintf ("inner state of a %s cascade, upper level", g{1});

@@ -115,8 +115,6 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
   t.F = residtrace_physlin (t);
   if (clip)
     t.phys.spill = 0;                    # share of the overflow kept
-  endif
-  if (clip)
     [~, z] = residtrace_physsim (t, D.u, D.Ts);
     best = Inf;
     for q = [0.7 0.8 0.9 0.95 0.99]

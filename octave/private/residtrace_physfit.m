@@ -39,17 +39,12 @@ function model = residtrace_physfit (tmpl, D, ctx)
   model.ok = false;
   y = D.y;
   N = numel (y);
-  ## a cascade's initial state is its level h0, a parameter: no free
-  ## response on top
   x0 = isfield (D, "initial_state") && D.initial_state;
   if (x0 && isfield (tmpl.phys, "h0") && ! isempty (tmpl.phys.h0))
     ## the cascade's initial state, both levels, are parameters: no free
-    ## response on top
+    ## response on top; the inner one starts at rest with h0
     x0 = false;
-    if (! isfield (tmpl.phys, "z0") || isempty (tmpl.phys.z0))
-      [~, z] = residtrace_physsim (tmpl, D.u, D.Ts);
-      tmpl.phys.z0 = z(1);
-    endif
+    tmpl.phys.z0 = residtrace_cascade_levels (tmpl.phys);
   endif
   nfit = min (N, 6000);
   Df = D;

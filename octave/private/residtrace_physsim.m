@@ -126,17 +126,7 @@ function [y, z] = sim_cascade (models, W, Ts)
     if (isfield (P, "spill"))
       sp(i) = P.spill;
     endif
-    z0(i) = h0(i) = NaN;
-    if (isfield (P, "h0") && ! isempty (P.h0))
-      h0(i) = min (P.h0, ho(i));
-      if (isfield (P, "z0") && ! isempty (P.z0))
-        z0(i) = P.z0;
-      elseif (strcmp (P.g, "sqrt"))      # at rest at that level
-        z0(i) = min (P.gamma ^ 2 * max (h0(i), 0), P.hi);
-      else
-        z0(i) = min (P.gamma * h0(i), P.hi);
-      endif
-    endif
+    [z0(i), h0(i)] = residtrace_cascade_levels (P);
     S = max (S, P.substeps);
   endfor
   ## the simulator takes a level (an initial state) for all sets or none:

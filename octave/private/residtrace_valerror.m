@@ -56,9 +56,9 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
   endif
   yh = yh(npre+1:end);
   e = V.y - yh;
-  if (isfield (m, "x0") && m.x0 && all (isfinite (e)) && cascade_h0 (m)
+  if (isfield (m, "x0") && m.x0 && all (isfinite (e)) && has_levels (m)
       && isempty (m.ltv) && isempty (V.pre))
-    [e, yh] = refit_h0 (m, V, ctx);
+    [e, yh] = refit_levels (m, V, ctx);
   elseif (isfield (m, "x0") && m.x0 && all (isfinite (e)))
     X = residtrace_free (m.F, N, V.Ts);
     f = X * (X \ e);
@@ -83,7 +83,7 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
   endif
 endfunction
 
-function ok = cascade_h0 (m)
+function ok = has_levels (m)
   ok = ! isempty (m.phys) && strcmp (m.phys.kind, "cascade") ...
        && isfield (m.phys, "h0") && ! isempty (m.phys.h0);
 endfunction
@@ -94,20 +94,15 @@ endfunction
 ## estimation record's levels, at rest at the record's first sample, and
 ## at rest for its first input (as a linear model's free response is
 ## fitted).
-function [e, yh] = refit_h0 (m, V, ctx)
+function [e, yh] = refit_levels (m, V, ctx)
   y = V.y;
   P = m.phys;
   starts = zeros (2, 3);
-  if (! isfield (P, "z0") || isempty (P.z0))
-    [~, z] = residtrace_physsim (m, V.u, V.Ts);
-    P.z0 = z(1);
-  endif
-  starts(:, 1) = [P.h0; P.z0];
+  starts(:, 1) = [P.h0; residtrace_cascade_levels(P)];
   r = m; r.phys.z0 = [];
   r.phys.h0 = y(1) - P.c;
-  [~, z] = residtrace_physsim (r, V.u, V.Ts);
-  starts(:, 2) = [r.phys.h0; z(1)];
-  r.phys.h0 = [];
+  starts(:, 2) = [r.phys.h0; residtrace_cascade_levels(r.phys)];
+  r.phys.h0 = [];                        # at rest for the first input
   [yr, z] = residtrace_physsim (r, V.u, V.Ts);
   starts(:, 3) = [yr(1) - P.c; z(1)];
   f = @(x) sum ((y - sim_x0 (m, x, V, ctx)) .^ 2);
