@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Side by side, in one run, for model orders na = 1..4: the fixed-size
 ## adaptation steps (issue 14: the IV step of adaptation.hpp, PotterSVF of
 ## potter.hpp, LMR-RLSSVF of lmr.hpp, with the fixed-size filter kernels)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Cost of the Chapter 3 variants relative to the plain Kalman-filter
 // RLSSVF and RSRIVC, measured side by side in one run:
 //

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} closed_loop_mc (@var{R}, @var{cases})
 ## Monte Carlo of the closed-loop refined IV estimators' reported standard

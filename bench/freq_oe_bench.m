@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} freq_oe_bench (@var{K}, @var{R})
 ## Speed of the frequency-domain output error (@code{oe}/@code{tfest} on an

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{T} =} hammerstein_bench ()
 ## Side-by-side timing (issue 11 bar: at least 50 times faster) of

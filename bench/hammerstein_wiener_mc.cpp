@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Monte Carlo of HWSRIVC's reported standard deviations on the core
 // directly (faster than bench/hammerstein_mc.m on a loaded machine): the
 // system of that script (CONTSID's Hammerstein-Wiener demo, f = u - 2u^2 +

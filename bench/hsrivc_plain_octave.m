@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{f}, @var{b}, @var{alpha}, @var{iter}] =} hsrivc_plain_octave (@var{y}, @var{W}, @var{Ts}, @var{nb}, @var{nf}, @var{lambda}, @var{maxiter}, @var{tol})
 ## The HSRIVC iteration of @code{hsrivc} written in plain Octave: the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Benchmark arguments shared by rlssvf_bench.cpp and rsrivc_bench.cpp:
 // orders 1-4, each with the fixed-size kernels and the dynamic reference
 // next to each other.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Long run of every recursive estimator under poor excitation (the
 // scenario of tests/core/long_run_scenario.hpp: binary input for the first
 // 10 % of the record, then constant), in double and single precision:

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{r} =} mc_sd_ratio (@var{name}, @var{runs}, @var{fun})
 ## The Monte Carlo loop of the sd checks (@code{freq_mc},

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} oe_miso_mc (@var{runs})
 ## Monte Carlo check of the standard deviations reported by the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Speed of the prediction-error estimators (tfcoe/tfest in continuous
 ## time, oe in discrete time) against the same Levenberg-Marquardt
 ## iteration written in plain Octave (bench/pem_plain_octave.m), on 10 000

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{theta}, @var{iters}] =} pem_plain_octave (@var{y}, @var{u}, @var{Ts}, @var{nf}, @var{nb}, @var{theta0}, @var{kind}, @var{maxiter})
 ## The baseline of bench/pem_octave_bench.m: the iteration of

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Side by side, in one run, for model orders na = 1..4: RSRIVC-KF and
 ## RLSSVF-KF with the fixed-size filter kernels (companion_kernels.hpp, the
 ## default) against the dynamic-size reference, in the core (bench_rsrivc,

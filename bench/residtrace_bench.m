@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## residtrace speed, side by side in one run (issue 9): the residtrace of
 ## this tree against the one of a reference commit (default e5c0877, before
 ## issue 9), on a plain LTI system (SRIVC [1 2 0] of a second-order

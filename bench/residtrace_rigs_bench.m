@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## residtrace's time on the grey-box rigs of demo_greybox at a given length
 ## (issue 9's bar: never above 10 s on records of 20 000 samples): the
 ## two-tank cascade with overflow (iterate 3, as the demo) and the axis

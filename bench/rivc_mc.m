@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} rivc_mc (@var{R}, @var{part})
 ## Monte Carlo of the Box-Jenkins refined IV estimators (issue 11 bars):

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{T} =} rivc_octave_bench ()
 ## Side-by-side timing on 10 000 samples (issue 11 bar: at least 50 times

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{theta}, @var{P}, @var{C}, @var{D}] =} rivc_plain_octave (@var{y}, @var{u}, @var{Ts}, @var{nn}, @var{theta}, @var{iters}, @var{r}, @var{cnum}, @var{cden})
 ## The RIVC / CLRIVC iteration of core/include/ctid/offline/refined_iv_bj.hpp

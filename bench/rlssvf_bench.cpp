@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Throughput of RLSSVF in the core, in samples per second, on one core,
 // for na = 1..4 (nb = 1, nk = 0), each with the fixed-size filter kernels
 // (companion_kernels.hpp, dynamic:0, the default) and the dynamic-size

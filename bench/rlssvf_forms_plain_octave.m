@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{thm} =} rlssvf_forms_plain_octave (@var{y}, @var{u}, @var{Ts}, @var{lambda_svf}, @var{na}, @var{form}, @var{param})
 ## RLSSVF in its square-root (PotterSVF) or regularised (LMR-RLSSVF) form

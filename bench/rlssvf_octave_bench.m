@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Throughput of rlssvf end to end in Octave (front-end, argument checks,
 ## gateway, core), next to the compiled core benchmark measured in the same
 ## run, so that the ratio core/Octave is not spoilt by the load of a shared

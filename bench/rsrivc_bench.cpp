@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Throughput of the recursive IV estimators of the core (RecursiveIv), in
 // samples per second, on one core, for model orders na = 1..4 (nb = 1,
 // nk = 0), each with the fixed-size filter kernels (companion_kernels.hpp,

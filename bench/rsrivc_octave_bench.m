@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Throughput of RSRIVC-KF in Octave: the compiled front-end rsrivc end to
 ## end (options, checks, gateway, core) and the plain-Octave baseline
 ## bench/rsrivc_plain_octave.m (the same algorithm written as a user would

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{thm} =} rsrivc_plain_octave (@var{y}, @var{u}, @var{Ts}, @var{lambda_svf}, @var{Qn}, @var{tsiv})
 ## RSRIVC with the IV Kalman filter written in plain Octave: the baseline a

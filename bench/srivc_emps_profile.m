@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} srivc_emps_profile (@var{rec})
 ## Is the mean-removed EMPS force -> position [2 3 0] fit of @code{srivc}

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} srivc_records ()
 ## @deftypefnx {} {@var{R} =} srivc_records (@var{root})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## srivc speed, side by side in one run (issue 9 bar: srivc with its
 ## automatic start on 100 000 samples at least 5 times faster than the tree
 ## before issue 9, commit e5c0877, which took 4.2 s). Run from the

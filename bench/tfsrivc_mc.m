@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Monte Carlo of tfsrivc (delay estimated): spread of the estimates
 ## against the reported standard deviations. Run from the repository
 ## root: octave-cli --eval "addpath octave; run bench/tfsrivc_mc.m"

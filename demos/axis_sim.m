@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{y} =} axis_sim (@var{r}, @var{Ts}, @var{p})
 ## A positioning axis with end stops: a drive with its position loop

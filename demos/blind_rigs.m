@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{names} =} blind_rigs ()
 ## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{X} =} blind_rk4 (@var{f}, @var{x0}, @var{u}, @var{Ts}, @var{nsub})
 ## @deftypefnx {} {@var{X} =} blind_rk4 (@dots{}, @var{delay})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{y}, @var{X}, @var{info}] =} cascaded_tanks_sim (@var{u}, @var{Ts}, @var{p})
 ## @deftypefnx {} {@var{p} =} cascaded_tanks_sim ("params")

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{Ts}, @var{t}, @var{theta}, @var{u}] =} ch2_example_235 ()
 ## The LTV system of thesis eqs. (1.61)-(1.63) (sec. 1.3.4, example 2.3.5,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{rej0} =} ch2_iv_phase_rejections (@var{estfun}, @var{data}, @var{M})
 ## Helper of the Chapter 2 demos: the stability rejections of methods

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} ch2_md_error_table (@var{fid}, @var{names}, @var{E}, @var{E0}, @var{yard}, @var{winname}, @var{nruns}, @var{figs})
 ## Helper of the Chapter 2 demos: writes to @var{fid} the Markdown table of

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{better} =} ch2_md_paired_table (@var{fid}, @var{E}, @var{n2}, @var{n3}, @var{nruns})
 ## Helper of the Chapter 2 demos: writes to @var{fid} the Markdown table of

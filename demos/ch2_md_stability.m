@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} ch2_md_stability (@var{fid}, @var{names}, @var{rej}, @var{rej0}, @var{tsiv})
 ## Helper of the Chapter 2 demos: writes to @var{fid} the paragraph on the

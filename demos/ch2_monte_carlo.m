@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{R}, @var{S}, @var{stats}, @var{thm1}, @var{rej}, @var{data1}, @var{runinfo}, @var{tmain}, @var{textra}] =} ch2_monte_carlo (@var{theta}, @var{nruns}, @var{M}, @var{main}, @var{simrun}, @var{estfun}, @var{statfun})
 ## Helper of the Chapter 2 demos: the Monte Carlo loop over @var{nruns}

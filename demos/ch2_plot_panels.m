@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} ch2_plot_panels (@var{file}, @var{t}, @var{step}, @var{cols})
 ## Helper of the Chapter 2 demos: writes a PNG with one row per parameter

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{r} =} ch3_bandpass_record (@var{seed}, @var{phase}, @var{nper}, @var{w0})
 ## Helper of demo_ch3_bandpass and of the single-precision test: a

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} ch3_plot_panels (@var{file}, @var{panels}, @var{ncol})
 ## Helper of the Chapter 3 demos: writes a PNG with one panel per element

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} demo_ch1_indirect (@var{outdir}, @var{nseeds})
 ## Thesis section 1.3.4, indirect versus direct (Fig. 1.9): the LTV system

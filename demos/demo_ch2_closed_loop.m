@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} demo_ch2_closed_loop (@var{outdir}, @var{nruns})
 ## Thesis section 2.4.6: closed-loop recursive IV methods on the LTV plant

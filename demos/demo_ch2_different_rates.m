@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} demo_ch2_different_rates (@var{outdir}, @var{nruns})
 ## Thesis section 2.3.6: recursive IV methods on a second-order LTV system

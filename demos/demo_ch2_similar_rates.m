@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} demo_ch2_similar_rates (@var{outdir}, @var{nruns})
 ## Thesis section 2.3.5: recursive IV methods on the LTV system of eqs.

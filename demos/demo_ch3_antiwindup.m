@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{res} =} demo_ch3_antiwindup (@var{outdir}, @var{nruns})
 ## Thesis section 3.6.4: estimator windup under poor excitation on the LTV

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{res} =} demo_ch3_bandpass (@var{outdir}, @var{full})
 ## Thesis sections 4.1.2-4.1.3 and 3.5 on a simulated LTV band-pass filter

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{res} =} demo_ch3_hyperparameters (@var{outdir}, @var{nruns}, @var{segs}, @var{sweep})
 ## Thesis secs. 3.1.2 and 3.2.1: choosing lambda_svf from local SRIVC

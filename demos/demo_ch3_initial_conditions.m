@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{res} =} demo_ch3_initial_conditions (@var{outdir})
 ## Thesis section 3.4.3: RLSSVF with and without initial-condition

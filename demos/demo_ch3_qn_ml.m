@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{res} =} demo_ch3_qn_ml (@var{outdir}, @var{nseeds}, @var{nsens})
 ## Thesis section 3.3.3: maximum-likelihood estimate of Qn (eq. 3.23) with

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} demo_emps (@var{outdir}, @var{reduced})
 ## Closing the loop on measured data: the EMPS (electro-mechanical

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{out} =} demo_greybox (@var{outdir}, @var{reduced})
 ## A physical grey-box demo beyond the thesis: @code{residtrace} on two

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{here} =} demo_prepare (@var{outdir})
 ## The prologue every demo shares: puts the toolbox (<repo>/octave) on the

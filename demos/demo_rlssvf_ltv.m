@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} demo_rlssvf_ltv (@var{outdir}, @var{nseeds})
 ## Main demo: thesis section 1.3.4, direct approach. RLSSVF-KF tracks the

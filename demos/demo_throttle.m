@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} demo_throttle (@var{outdir}, @var{nruns})
 ## Thesis section 4.2: recursive estimation of the electrical submodel of

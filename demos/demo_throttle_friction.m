@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{res} =} demo_throttle_friction (@var{outdir})
 ## @deftypefnx {} {@var{res} =} demo_throttle_friction (@var{outdir}, @

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} effect_names (@var{e})
 ## @code{R.effects} of @code{residtrace} as a row cell of names, whatever

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{u}, @var{y}, @var{spill}] =} greybox_record ("tanks", @var{N}, @var{Ts}, @var{p})
 ## @deftypefnx {} {[@var{u}, @var{y}] =} greybox_record ("axis", @var{N}, @var{Ts}, @var{p})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{nn} =} parsimonious_structure (@var{V})
 ## The structure rule of the residtrace studies (@code{residtrace_blind},

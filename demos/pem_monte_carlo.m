@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Monte Carlo check of the covariance reported by tfcoe (continuous-time
 ## output error, SRIVC start + Levenberg-Marquardt) and oe (discrete
 ## time): the spread of the estimates over R noise realisations against

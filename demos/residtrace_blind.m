@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} residtrace_blind ()
 ## @deftypefnx {} {@var{S} =} residtrace_blind (@var{outdir}, @var{rigs}, @var{rule}, @var{draw})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{S} =} residtrace_cascaded_tanks ()
 ## @deftypefnx {} {@var{S} =} residtrace_cascaded_tanks (@var{outdir}, @var{draws}, @var{greybox}, @var{rule}, @var{variant})

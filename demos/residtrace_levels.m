@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{u} =} residtrace_levels (@var{N}, @var{Ts}, @var{tmin}, @var{tmax}, @var{lo}, @var{hi})
 ## A staircase input of @var{N} samples (sampling interval @var{Ts}):

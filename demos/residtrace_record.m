@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{R}, @var{M}] =} residtrace_record (@var{y}, @var{u}, @var{yv}, @var{uv}, @var{Ts}, @var{nn}, @dots{})
 ## residtrace on a record as a user would run it: the model @var{M} is

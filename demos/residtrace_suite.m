@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{T} =} residtrace_suite (@var{set})
 ## @deftypefnx {} {@var{T} =} residtrace_suite (@var{set}, @var{outdir})

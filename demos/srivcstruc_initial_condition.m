@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## srivcstruc_initial_condition: the structure chosen on the Cascaded Tanks
 ## replica's 8 record pairs (4 draws, nominal and strong excitation) by
 ## srivcstruc's validation R_T^2 from rest ("InitialCondition", "z", the

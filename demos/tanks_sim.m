@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{h2}, @var{h1}, @var{spill}] =} tanks_sim (@var{u}, @var{Ts}, @var{p})
 ## Two tanks in cascade (a coupled-tanks rig): the pump voltage @var{u}

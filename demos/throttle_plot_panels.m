@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} throttle_plot_panels (@var{file}, @var{t}, @var{step}, @
 ##   @var{panels}, @var{ncol})

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the effect-model simulator (core/include/ctid/
 // effect_simulator.hpp), used by octave/private/residtrace_simulate.m:
 //

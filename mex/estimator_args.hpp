@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // The options structs of the recursive gateways (rlssvf_mex, riv_mex) and
 // what qnml_mex reuses of them: reading a whole estimator configuration by
 // field name, running it in double or single precision, and building the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the frequency-domain estimators (core/include/ctid/
 // freq_srivc.hpp), called by octave/private/contsid_freq.m (srivc,
 // tffsrivc, tffcoe; oe and tfest on frequency data):

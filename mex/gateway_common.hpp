@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Reading what several gateways share: the record (y, u and the sampling,
 // positional data arrays) and, from the options struct (options_reader.hpp),
 // the model orders, the SVF settings, the adaptation and the initial

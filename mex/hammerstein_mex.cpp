@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the block-oriented refined-IV estimators (core/include/
 // ctid/offline/hammerstein.hpp), called by octave/private/contsid_block.m:
 //

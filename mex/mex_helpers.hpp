@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Argument conversion shared by every MEX gateway (Octave and MATLAB).
 //
 // Gateways validate every argument here before touching its memory (class,

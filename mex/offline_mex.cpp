@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the offline estimators lssvf, ivsvf, srivc and clsrivc
 // (octave/private/contsid_offline.m):
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // The gateways' options convention: every gateway takes its data arrays
 // positionally and then ONE struct of named options (libigl's parse_rhs
 // reads its arguments by name in the same way). OptionsReader reads that

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the prediction-error estimators (core/include/ctid/
 // output_error.hpp), called by octave/private/contsid_pem.m:
 //

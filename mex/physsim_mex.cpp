@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of residtrace's physical realisations (core/include/ctid/
 // simulation/physical_realisations.hpp), used by
 // octave/private/residtrace_physsim.m:

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of qnml (octave/qnml.m): maximum-likelihood estimation of the
 // diagonal of Qn, thesis sec. 3.3 (core: qn_ml.hpp; minimiser: NLopt).
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the recursive DT ARX estimator and its ZOH conversion to
 // continuous time (octave/rarx.m, octave/rarxc.m): converts the record and
 // one options struct, runs ctid::run_recursive_arx.

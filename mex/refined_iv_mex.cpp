@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the offline refined-IV engine (core/include/ctid/
 // refined_iv.hpp), called by octave/private/contsid_refined_iv.m:
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the recursive IV estimators rivsvf, rsrivc, clrivsvf and
 // clrsrivc (octave/private/contsid_riv.m): reads the record and the options
 // struct, runs ctid::run_recursive_iv and returns THM, YH, PSET and INFO.

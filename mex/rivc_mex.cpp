@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the Box-Jenkins refined IV (core/include/ctid/
 // refined_iv_bj.hpp), called by rivc.m, tfrivc.m, clrivc.m, cl2srivc.m:
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of rlssvf (octave/rlssvf.m): reads the record and the options
 // struct, runs ctid::run_rlssvf and returns THM, YH, PSET and INFO.
 //

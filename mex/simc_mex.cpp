@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the LTV simulator (octave/simc.m):
 //
 //   [x, y, u] = simc_mex (fname, u, t, theta, options)

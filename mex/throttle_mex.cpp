@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // MEX gateway of the electronic throttle of thesis sec. 4.2 (octave/
 // throttlesim.m and octave/throttleid.m):
 //

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{ubar} =} Ham (@var{u})
 ## @deftypefnx {} {@var{NL_H} =} Ham ()

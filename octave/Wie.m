@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{x} =} Wie (@var{xbar})
 ## @deftypefnx {} {@var{NL_W} =} Wie ()

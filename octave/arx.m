@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} arx (@var{data}, [@var{na} @var{nb} @var{nk}])
 ## @deftypefnx {} {@var{M} =} arx (@var{data}, [@var{na} @var{nb1} @dots{} @var{nbm} @var{nk1} @dots{} @var{nkm}])

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{wb} =} bandwidthc (@var{M})
 ## @deftypefnx {} {@var{wb} =} bandwidthc (@var{B}, @var{F})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} bode4frozensys (@var{THM}, @var{nn})
 ## @deftypefnx {} {} bode4frozensys (@var{THM}, @var{nn}, "w", @var{w}, @dots{})

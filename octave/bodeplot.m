@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} bodeplot (@var{sys})
 ## @deftypefnx {} {} bodeplot (@var{sys1}, @var{style1}, @var{sys2}, @

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{x} =} chisqr (@var{M}, @var{N}, @var{V})
 ## An @var{M}-by-@var{N} matrix of independent chi-square random deviates

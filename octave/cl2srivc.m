@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M_G} =} cl2srivc (@var{data_yu}, @var{data_ur}, @var{nn_ol}, @var{nn_cl})
 ## @deftypefnx {} {[@var{M_G}, @var{M_T}, @var{uhat}] =} cl2srivc (@dots{}, @var{model}, @var{T0}, @var{init_method}, @var{tol}, @var{maxiter})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} clrivc (@var{data_yu}, @var{data_yr}, [@var{nb} @var{nc} @var{nd} @var{nf} @var{nk}], @var{Mc})
 ## @deftypefnx {} {@var{M} =} clrivc (@dots{}, @var{Mc}, @var{T0}, @var{tol}, @var{maxiter})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} clrsrivc (@var{data}, @var{nn}, "lambda_svf", @var{lam}, "controller", @var{C}, "r1", @var{r1}, "r2", @var{r2}, @dots{})
 ## @deftypefnx {} {[@var{thm}, @var{yh}, @var{pset}, @var{info}] =} clrsrivc (@dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} clsrivc (@var{data}, @var{datacl}, [@var{nb} @var{nf} @var{nk}], @var{Mc})
 ## @deftypefnx {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} clsrivc (@dots{}, @var{name}, @var{value})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} comparec (@var{data}, @var{M})
 ## @deftypefnx {} {} comparec (@var{data}, @var{M}, @var{INT})

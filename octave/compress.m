@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{zc}, @var{tc}] =} compress (@var{z}, @var{Ts}, @var{Dy})
 ## @deftypefnx {} {[@var{zc}, @var{tc}, @var{index}] =} compress (@dots{})

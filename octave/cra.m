@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{ir} =} cra (@var{data})
 ## @deftypefnx {} {@var{ir} =} cra (@var{data}, @var{M}, @var{na}, @var{plot})

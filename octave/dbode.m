@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} dbode (@var{num}, @var{den}, @var{Ts})
 ## @deftypefnx {} {} dbode (@var{num}, @var{den}, @var{Ts}, @var{w})

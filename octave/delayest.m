@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{nk} =} delayest (@var{data})
 ## @deftypefnx {} {@var{nk} =} delayest (@var{data}, @var{na}, @var{nb}, @var{nkmin}, @var{nkmax})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{h} =} freqs (@var{b}, @var{a}, @var{w})
 ## @deftypefnx {} {[@var{h}, @var{w}] =} freqs (@var{b}, @var{a})

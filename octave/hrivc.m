@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{model}, @var{Infos}] =} hrivc (@var{data}, [@var{nb} @var{nc} @var{nd} @var{nf} @var{nk}])
 ## @deftypefnx {} {[@dots{}] =} hrivc (@var{data}, @var{nn}, @var{lambda0}, @var{t0}, @var{initMethod}, @var{tol}, @var{maxiter}, @var{arma_method})

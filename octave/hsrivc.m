@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{model}, @var{Infos}] =} hsrivc (@var{data}, [@var{nb} @var{nf} @var{nk}])
 ## @deftypefnx {} {[@dots{}] =} hsrivc (@var{data}, @var{nn}, @var{lambda0}, @var{t0}, @var{init_method}, @var{tol}, @var{maxiter}, @var{arma_method})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{model}, @var{Infos}, @var{yhat}] =} hwsrivc (@var{data}, [@var{nb} @var{nf}+1 @var{nk} @var{lenH} @var{lenW}])
 ## @deftypefnx {} {[@dots{}] =} hwsrivc (@var{data}, [@var{nb} @var{nf}+1 @var{nk}])

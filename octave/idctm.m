@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} idctm (@var{B}, @var{F})
 ## @deftypefnx {} {@var{M} =} idctm (@var{B}, @var{F}, @var{name}, @var{value}, @dots{})

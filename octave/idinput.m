@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{u} =} idinput (@var{N})
 ## @deftypefnx {} {@var{u} =} idinput (@var{N}, @var{type})

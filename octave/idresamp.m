@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{datar} =} idresamp (@var{data}, @var{R})
 ## @deftypefnx {} {@var{datar} =} idresamp (@var{data}, @var{R}, @var{order})

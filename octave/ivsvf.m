@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} ivsvf (@var{data}, [@var{na} @var{nb} @var{nk}], @var{lambda})
 ## @deftypefnx {} {@var{M} =} ivsvf (@var{data}, @var{nn}, "lambda_svf", @var{lambda}, @dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} oe (@var{data}, [@var{nb} @var{nf} @var{nk}])
 ## @deftypefnx {} {@var{M} =} oe (@dots{}, @var{name}, @var{value})

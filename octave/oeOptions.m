@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{opt} =} oeOptions ()
 ## @deftypefnx {} {@var{opt} =} oeOptions (@var{name}, @var{value}, @dots{})

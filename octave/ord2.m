@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{num}, @var{den}] =} ord2 (@var{wn}, @var{z})
 ## @deftypefnx {} {[@var{a}, @var{b}, @var{c}, @var{d}] =} ord2 (@var{wn}, @

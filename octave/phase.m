@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{phi} =} phase (@var{G})
 ## Phase, in radians, of the complex frequency response @var{G} (a vector,

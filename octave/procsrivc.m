@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} procsrivc (@var{data}, @var{init_sys})
 ## @deftypefnx {} {@var{M} =} procsrivc (@var{data}, @var{type})

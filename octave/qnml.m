@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{Qn} =} qnml (@var{data}, @var{nn}, "lambda_svf", @var{lam}, @dots{})
 ## @deftypefnx {} {[@var{Qn}, @var{V}, @var{info}] =} qnml (@dots{})

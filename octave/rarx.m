@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} rarx (@var{z}, [@var{na} @var{nb} @var{nk}], @var{adm}, @var{adg})
 ## @deftypefnx {} {[@var{thm}, @var{yhat}, @var{P}] =} rarx (@var{z}, @var{nn}, @var{adm}, @var{adg}, @var{th0}, @var{P0})

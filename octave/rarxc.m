@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{THM} =} rarxc (@var{data}, [@var{na} @var{nb} @var{nk}], @var{name}, @var{value}, @dots{})
 ## @deftypefnx {} {[@var{THM}, @var{YH}, @var{info}] =} rarxc (@dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{data} =} relay (@var{num}, @var{den}, @var{Ts})
 ## @deftypefnx {} {@var{data} =} relay (@var{num}, @var{den}, @var{Ts}, @var{name}, @var{value}, @dots{})

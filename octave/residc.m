@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} residc (@var{data}, @var{M})
 ## @deftypefnx {} {} residc (@var{data}, @var{THM}, @var{nn})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{R} =} residtrace (@var{data}, @var{M})
 ## @deftypefnx {} {@var{R} =} residtrace (@var{data}, @var{M}, "validation", @var{datav}, @dots{})

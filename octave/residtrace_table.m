@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{md} =} residtrace_table (@var{R})
 ## @deftypefnx {} {@var{md} =} residtrace_table (@var{R}, @var{file})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{M}, @var{C}, @var{D}] =} rivc (@var{data}, [@var{nb} @var{nc} @var{nd} @var{nf} @var{nk}])
 ## @deftypefnx {} {[@var{M}, @var{C}, @var{D}, @var{RT2}, @var{YIC}, @var{Cond_IPM}, @var{AIC}] =} rivc (@dots{})

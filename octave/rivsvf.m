@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} rivsvf (@var{data}, @var{nn}, "lambda_svf", @var{lam}, @dots{})
 ## @deftypefnx {} {@var{thm} =} rivsvf (@var{data}, @var{nn}, @var{lam}, @dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{tsiv} =} rlsconverge (@var{data}, @var{nn}, "lambda_svf", @var{lam}, @dots{})
 ## @deftypefnx {} {[@var{tsiv}, @var{info}, @var{thm}, @var{yh}] =} rlsconverge (@dots{})

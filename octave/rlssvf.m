@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} rlssvf (@var{data}, @var{nn}, "lambda_svf", @var{lam})
 ## @deftypefnx {} {@var{thm} =} rlssvf (@dots{}, @var{name}, @var{value})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} rsrivc (@var{data}, @var{nn}, "lambda_svf", @var{lam}, @dots{})
 ## @deftypefnx {} {@var{thm} =} rsrivc (@var{data}, @var{nn}, "A", @var{A}, @dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} selcstruc (@var{V})
 ## @deftypefnx {} {} selcstruc (@var{V}, @var{name}, @var{value}, @dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} shadedplot (@var{t}, @var{y}, @var{ys})
 ## @deftypefnx {} {[@var{hfill}, @var{hy}, @var{hys}] =} shadedplot (@dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{yout} =} simc_hw (@var{hwmodel}, @var{data})
 ## @deftypefnx {} {[@dots{}] =} simc_hw (@var{hwmodel}, @var{data}, @var{Cc0}, @var{t_y}, @var{state0})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{y}, @var{u}] =} sineresp (@var{M}, @var{w}, @var{t})
 ## Exact steady-state response of a stable continuous-time model to the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{G} =} spafdr (@var{data})
 ## @deftypefnx {} {@var{G} =} spafdr (@var{data}, @var{R}, @var{w})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} srivc (@var{data}, [@var{nb} @var{nf} @var{nk}])
 ## @deftypefnx {} {@var{M} =} srivc (@var{data}, [@var{nb1} @dots{} @var{nbm} @var{nf1} @dots{} @var{nfm} @var{nk1} @dots{} @var{nkm}])

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{V} =} srivcstruc (@var{ZE}, @var{ZV}, @var{NN})
 ## @deftypefnx {} {@var{V} =} srivcstruc (@var{ZE}, @var{ZV}, @var{NN}, @var{name}, @var{value}, @dots{})

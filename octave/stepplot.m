@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} stepplot (@var{sys})
 ## @deftypefnx {} {} stepplot (@var{sys1}, @var{style1}, @var{sys2}, @

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{lambda} =} svfcutoff (@var{data}, [@var{nb} @var{nf} @var{nk}])
 ## @deftypefnx {} {@var{lambda} =} svfcutoff (@dots{}, @var{name}, @var{value})

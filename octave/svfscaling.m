@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{m} =} svfscaling (@var{data}, @var{nn}, "lambda_svf", @var{lam})
 ## @deftypefnx {} {@var{m} =} svfscaling (@dots{}, "svf", @var{form}, "order", @var{order})

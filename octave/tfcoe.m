@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} tfcoe (@var{data}, @var{np}, @var{nz})
 ## @deftypefnx {} {@var{M} =} tfcoe (@var{data}, @var{np}, @var{nz}, @var{td})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{sys} =} tffsrivc (@var{data}, @var{np}, @var{nz})
 ## @deftypefnx {} {@var{sys} =} tffsrivc (@var{data}, @var{np}, @var{nz}, @var{IODelay})

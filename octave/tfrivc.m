@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{sys}, @var{sysN}] =} tfrivc (@var{data}, @var{np}, @var{nz}, 'NN', [@var{nd} @var{nc}])
 ## @deftypefnx {} {[@var{sys}, @var{sysN}] =} tfrivc (@var{data}, @var{np}, @var{nz}, @var{IODelay}, @dots{})

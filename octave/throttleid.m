@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{thm} =} throttleid (@var{data}, @var{method})
 ## @deftypefnx {} {@var{thm} =} throttleid (@dots{}, @var{name}, @var{value})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{sim} =} throttlesim ()
 ## @deftypefnx {} {@var{sim} =} throttlesim (@var{phi_d}, @var{Ts})

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (C) the ctid authors
 # Installs what is missing (Debian packages), then configures and builds
 # everything into build/. Sourced by scripts/run-demo and scripts/run-tests.
 set -euo pipefail

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // ctid_stream: online RLSSVF-KF (thesis eqs. 1.53-1.55 with the Kalman-filter
 // update of eq. 1.59) on samples arriving one by one on stdin, printing the
 // estimates after each one. An example of the installed C++ core used from

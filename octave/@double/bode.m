@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} bode (@var{num}, @var{den})
 ## @deftypefnx {} {} bode (@var{num}, @var{den}, @var{w})

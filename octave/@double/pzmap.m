@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} pzmap (@var{num}, @var{den})
 ## @deftypefnx {} {} pzmap (@var{a}, @var{b}, @var{c}, @var{d})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} step (@var{num}, @var{den})
 ## @deftypefnx {} {} step (@var{num}, @var{den}, @var{t})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{data} =} cat (@var{dim}, @var{d1}, @var{d2}, @dots{})
 ## Join @code{iddata} sets: @var{dim} = 1 appends the samples

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{d} =} detrend (@var{data})
 ## @deftypefnx {} {@var{d} =} detrend (@var{data}, @var{type})

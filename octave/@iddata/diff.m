@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{d} =} diff (@var{data})
 ## @deftypefnx {} {@var{d} =} diff (@var{data}, @var{k})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} display (@var{data})
 ## Print a summary of an @code{iddata} set: domain, numbers of channels,

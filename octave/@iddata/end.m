@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{k} =} end (@var{data}, @var{pos}, @var{nidx})
 ## Last index for @code{data(@dots{}, end, @dots{})}: the number of samples

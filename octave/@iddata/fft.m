@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{dataf} =} fft (@var{data})
 ## @deftypefnx {} {@var{dataf} =} fft (@var{data}, @var{n})

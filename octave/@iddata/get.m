@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{val} =} get (@var{data}, @var{name})
 ## @deftypefnx {} {[@var{v1}, @var{v2}, @dots{}] =} get (@var{data}, @

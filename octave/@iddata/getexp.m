@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{d} =} getexp (@var{data}, @var{k})
 ## Experiments @var{k} (indices or names) of a multi-experiment

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{data} =} iddata (@var{y}, @var{u}, @var{Ts})
 ## @deftypefnx {} {@var{data} =} iddata (@var{y}, @var{u}, @var{t})

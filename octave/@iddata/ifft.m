@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{data} =} ifft (@var{dataf})
 ## Time-domain set of a frequency-domain @code{iddata} set built by

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{data} =} merge (@var{d1}, @var{d2}, @dots{})
 ## A multi-experiment set with the experiments of @var{d1}, @var{d2},

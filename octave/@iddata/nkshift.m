@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{d} =} nkshift (@var{data}, @var{nk})
 ## @deftypefnx {} {@var{d} =} nkshift (@var{data}, @var{nk}, "append")

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{n} =} numel (@var{data})
 ## @deftypefnx {} {@var{n} =} numel (@var{data}, @var{idx1}, @dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} plot (@var{data})
 ## @deftypefnx {} {} plot (@var{d1}, @var{style1}, @var{d2}, @var{style2}, @

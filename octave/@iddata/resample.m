@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{d} =} resample (@var{data}, @var{p}, @var{q})
 ## Resample a regularly sampled @code{iddata} set at @var{p}/@var{q} times

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{info} =} samplinginfo (@var{dat})
 ## Sampling of each experiment of the time-domain @code{iddata} set

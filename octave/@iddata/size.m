@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{sz} =} size (@var{data})
 ## @deftypefnx {} {[@var{n}, @var{ny}, @var{nu}, @var{ne}] =} size (@var{data})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{data} =} subsasgn (@var{data}, @var{s}, @var{val})
 ## Write to an @code{iddata} set: @code{data.Name = val}, also into part of

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{val} =} subsref (@var{data}, @var{s})
 ## Read from an @code{iddata} set: @code{data.Name} and

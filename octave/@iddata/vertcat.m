@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{data} =} vertcat (@var{d1}, @var{d2}, @dots{})
 ## @code{[d1; d2; @dots{}]}: the samples of @var{d2} after those of

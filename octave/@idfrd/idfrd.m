@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{G} =} idfrd (@var{response}, @var{w}, @var{Ts})
 ## @deftypefnx {} {@var{G} =} idfrd (@var{response}, @var{w}, @var{name}, @var{value}, @dots{})

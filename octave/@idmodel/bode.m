@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} bode (@var{M})
 ## @deftypefnx {} {} bode (@var{M1}, @var{style1}, @var{M2}, @var{style2}, @dots{}, @var{w})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{Md} =} c2d (@var{M}, @var{Ts})
 ## @deftypefnx {} {@var{Md} =} c2d (@var{M}, @var{Ts}, @var{method})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{Mc} =} d2c (@var{M})
 ## @deftypefnx {} {@var{Mc} =} d2c (@var{M}, @var{method})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} damp (@var{M})
 ## @deftypefnx {} {[@var{wn}, @var{zeta}, @var{p}] =} damp (@var{M})

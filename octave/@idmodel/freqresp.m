@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{H} =} freqresp (@var{M}, @var{w})
 ## Frequency response of a model at the frequencies @var{w} (rad/s):

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} get (@var{M})
 ## @deftypefnx {} {@var{v} =} get (@var{M}, @var{name})

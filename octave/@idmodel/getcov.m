@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{P} =} getcov (@var{M})
 ## Covariance of the parameters (order of @code{getpvec}); @code{[]} for

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{p} =} getpvec (@var{M})
 ## @deftypefnx {} {[@var{p}, @var{sd}] =} getpvec (@var{M})

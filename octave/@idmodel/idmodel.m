@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} idmodel (@var{kind}, @var{par}, @var{ny}, @var{nu})
 ## The common parent of the System Identification Toolbox model classes

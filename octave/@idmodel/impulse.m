@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} impulse (@var{M})
 ## @deftypefnx {} {} impulse (@var{M1}, @var{style1}, @var{M2}, @var{style2}, @dots{}, @var{t})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} nyquist (@var{M1}, @var{style1}, @dots{}, @var{w})
 ## @deftypefnx {} {[@var{re}, @var{im}, @var{w}] =} nyquist (@var{M}, @var{w})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{p} =} pole (@var{M})
 ## Poles of a model (the control package's @code{pole} of @code{tf (M)},

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{A}, @var{B}, @var{C}, @var{D}, @var{F}] =} polydata (@var{M})
 ## @deftypefnx {} {[@var{A}, @var{B}, @var{C}, @var{D}, @var{F}, @var{dA}, @var{dB}, @var{dC}, @var{dD}, @var{dF}] =} polydata (@var{M})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} present (@var{M})
 ## @deftypefnx {} {@var{txt} =} present (@var{M})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} pzmap (@var{M1}, @var{style1}, @var{M2}, @dots{})
 ## @deftypefnx {} {[@var{p}, @var{z}] =} pzmap (@var{M})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} set (@var{M}, @var{name}, @var{value}, @dots{})
 ## @deftypefnx {} {} set (@var{M})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} setcov (@var{M}, @var{C})
 ## Sets the covariance of the parameters (order of @code{getpvec}):

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} setpvec (@var{M}, @var{p})
 ## Sets the parameters of a model from a vector in the order of

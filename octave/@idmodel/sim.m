@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{y} =} sim (@var{M}, @var{data})
 ## @deftypefnx {} {@var{y} =} sim (@var{M}, @var{u})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{sz} =} size (@var{M})
 ## @deftypefnx {} {[@var{ny}, @var{nu}] =} size (@var{M})

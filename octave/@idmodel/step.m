@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} step (@var{M})
 ## @deftypefnx {} {} step (@var{M1}, @var{style1}, @var{M2}, @var{style2}, @dots{}, @var{t})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} subsasgn (@var{M}, @var{s}, @var{v})
 ## @code{M.Property = value} sets a property of a model, with the checks

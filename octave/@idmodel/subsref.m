@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{v} =} subsref (@var{M}, @var{s})
 ## @deftypefnx {} {@var{Ms} =} M(@var{i}, @var{j})

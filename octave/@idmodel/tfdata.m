@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{num}, @var{den}] =} tfdata (@var{M})
 ## @deftypefnx {} {[@var{num}, @var{den}, @var{Ts}] =} tfdata (@var{M}, "v")

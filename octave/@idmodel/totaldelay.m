@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{d} =} totaldelay (@var{M})
 ## Total delay of each input-output pair of a model (ny-by-nu): input

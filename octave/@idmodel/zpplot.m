@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} zpplot (@var{M1}, @var{M2}, @dots{})
 ## @deftypefnx {} {} zpplot (@dots{}, "sd", @var{k})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} idpoly (@var{A}, @var{B}, @var{C}, @var{D}, @var{F}, @var{NoiseVariance}, @var{Ts})
 ## @deftypefnx {} {@var{M} =} idpoly (@var{A}, @var{B}, @dots{}, @var{name}, @var{value}, @dots{})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} idproc (@var{type})
 ## @deftypefnx {} {@var{M} =} idproc (@var{type}, @var{name}, @var{value}, @dots{})

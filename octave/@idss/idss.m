@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} idss (@var{A}, @var{B}, @var{C}, @var{D})
 ## @deftypefnx {} {@var{M} =} idss (@var{A}, @var{B}, @var{C}, @var{D}, @var{K}, @var{x0}, @var{Ts})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{M} =} idtf (@var{num}, @var{den})
 ## @deftypefnx {} {@var{M} =} idtf (@var{num}, @var{den}, @var{Ts})

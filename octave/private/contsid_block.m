@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{Infos}, @var{yhat}] =} contsid_block (@var{fname}, @var{args})
 ## The shared back-end of @code{hsrivc}, @code{hrivc} and @code{hwsrivc}

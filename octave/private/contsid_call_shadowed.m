@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@dots{}] =} contsid_call_shadowed (@var{dir}, @var{name}, @var{nout}, @var{args})
 ## Calls the function @var{name} defined in the folder @var{dir} (a

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{c}, @var{d}] =} contsid_carried_levels (@var{M}, @var{nu})
 ## The output offset @var{c} and the input offsets @var{d} (1-by-@var{nu})

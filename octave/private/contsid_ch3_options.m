@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{o} =} contsid_ch3_options (@var{fname}, @var{opts}, @var{orders}, @var{d}, @var{o})
 ## Checks the Chapter 3 options shared by the recursive routines and adds

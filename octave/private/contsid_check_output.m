@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} contsid_check_output (@var{fname}, @var{y})
 ## The check every estimator makes of the output it read (after

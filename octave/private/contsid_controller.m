@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{num}, @var{den}] =} contsid_controller (@var{fname}, @var{C}, @var{Ts})
 ## The discrete controller C(q^-1) = num(q^-1) / den(q^-1) of a closed loop

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{tsiv}, @var{info}, @var{thm}, @var{yh}] =} contsid_converge (@var{fname}, @var{d}, @var{nn}, @var{rls}, @var{det}, @var{strict})
 ## Back-end of @code{rlsconverge} and of @code{"tsiv", "auto"} in the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{tdmax} =} contsid_default_tdmax (@var{t}, @var{y}, @var{u})
 ## Default upper bound of a delay search (tfsrivc, tfsrivc_init,

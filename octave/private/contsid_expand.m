@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{outs} =} contsid_expand (@var{outs}, @var{d})
 ## Bring the per-sample outputs of an estimator run on the present samples

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{d} =} contsid_focus_filter (@var{fname}, @var{d}, @var{band}, @var{order})
 ## The @code{Focus} passband [w1 w2] (rad/s) of tfsrivc, tfcoe, tfest and

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{band} =} contsid_focus_option (@var{fname}, @var{focus})
 ## The @code{Focus} option of the time-domain estimators (tfsrivc,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{info}] =} contsid_freq (@var{fname}, @var{args})
 ## The shared back-end of the frequency-domain estimators (core

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{d} =} contsid_getdata (@var{fname}, @var{data}, @dots{})
 ## @deftypefnx {} {[@var{d}, @var{missing}] =} contsid_getdata (@dots{})

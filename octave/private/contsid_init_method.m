@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{start} =} contsid_init_method (@var{fname}, @var{init}, @var{layout})
 ## @deftypefnx {} {@var{start} =} contsid_init_method (@var{fname}, @var{init}, @var{layout}, @var{refused}, @var{why})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{yhat}, @var{x0}] =} contsid_initial_state (@var{fname}, @var{M}, @var{y}, @var{yforced}, @var{t})
 ## The model output with its initial state estimated on measured data (as

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{m} =} contsid_model (@var{fname}, @var{M})
 ## @deftypefnx {} {@var{m} =} contsid_model (@var{fname}, @var{M}, @var{Ts})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{d}, @var{yhat}, @var{rest}] =} contsid_model_output (@var{fname}, @var{args})
 ## Shared by comparec and residc: reads the data and a model and simulates

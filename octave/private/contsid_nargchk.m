@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} contsid_nargchk (@var{fname}, @var{nin}, @var{nout}, @
 ##   @var{inrange}, @var{maxout})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{RT2}, @var{YIC}, @var{info}] =} contsid_offline (@var{fname}, @var{args})
 ## Shared back-end of lssvf, ivsvf, srivc and clsrivc: parses the data,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{tf} =} contsid_on_off (@var{fname}, @var{name}, @var{v})
 ## A CONTSID on/off option (@code{Integration} of tfsrivc, tfsrivc_init,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{info}] =} contsid_pem (@var{fname}, @var{args})
 ## Back-end of the prediction-error estimators @code{tfcoe}, @code{tfest},

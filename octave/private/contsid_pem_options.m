@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{opt} =} contsid_pem_options (@var{fname}, @var{args})
 ## The option set of @code{oeOptions} and @code{tfestOptions}: defaults,

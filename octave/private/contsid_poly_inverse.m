@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{x} =} contsid_poly_inverse (@var{fname}, @var{beta}, @var{v})
 ## Invert the static polynomial of a Wiener block, sample by sample:

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{thm}, @var{yhat}, @var{thmc}, @var{failed}, @var{P}] =} contsid_rarx (@var{fname}, @var{d}, @var{nn}, @var{o})
 ## Back-end of @code{rarx} and @code{rarxc}: checks the orders and options

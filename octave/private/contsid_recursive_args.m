@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{d}, @var{orders}, @var{opts}] =} contsid_recursive_args (@var{fname}, @var{form}, @var{defaults}, @dots{})
 ## Shared argument parsing of the estimators (rlssvf, rivsvf, rsrivc,

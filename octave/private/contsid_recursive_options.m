@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{o} =} contsid_recursive_options (@var{fname}, @var{opts}, @var{np})
 ## Checks and normalises the options shared by the recursive routines for a

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{theta}, @var{cov}, @var{info}] =} contsid_refined_iv (@var{fname}, @var{y}, @var{W}, @var{t}, @var{opts})
 ## The Octave entry point of the offline refined-IV engine

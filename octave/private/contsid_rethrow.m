@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} contsid_rethrow (@var{err})
 ## Re-raises an error from a compiled gateway without the

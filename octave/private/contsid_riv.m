@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{thm}, @var{yh}, @var{pset}, @var{info}] =} contsid_riv (@var{fname}, @var{nout}, @dots{})
 ## Shared back-end of rivsvf, rsrivc, clrivsvf and clrsrivc: parses the

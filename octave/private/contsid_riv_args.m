@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{p} =} contsid_riv_args (@var{fname}, @var{routine}, @dots{})
 ## Argument preparation shared by rivsvf, rsrivc, clrivsvf and clrsrivc

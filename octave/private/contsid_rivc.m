@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{info}, @var{d}] =} contsid_rivc (@var{fname}, @var{args})
 ## Back-end of rivc, tfrivc, clrivc and cl2srivc: parses the arguments of

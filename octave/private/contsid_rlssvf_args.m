@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{p} =} contsid_rlssvf_args (@var{fname}, @dots{})
 ## Argument preparation of rlssvf, shared with qnml: parses the data,

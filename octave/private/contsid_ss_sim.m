@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{y} =} contsid_ss_sim (@var{a}, @var{b}, @var{c}, @var{d}, @var{u}, @var{t}, @var{intersample}, @var{nk})
 ## Output of the continuous-time state-space model x' = a x + b u,

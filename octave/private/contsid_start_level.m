@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{away}, @var{level}] =} contsid_start_level (@var{y})
 ## Where the output @var{y} (a column) starts: @var{level} is the median

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{m} =} contsid_step_reduction (@var{fname}, @var{r})
 ## The @code{StepReduction} option of the delay search (tfsrivc,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} contsid_tf_front (@var{fname}, @var{args})
 ## Argument parsing and model building of tfsrivc and tfsrivc_init:

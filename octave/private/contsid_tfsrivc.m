@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{num}, @var{den}, @var{td}, @var{P}, @var{info}] =} contsid_tfsrivc (@var{fname}, @var{d}, @var{np}, @var{nz}, @var{o})
 ## Shared back-end of tfsrivc, tfsrivc_init and procsrivc: SRIVC on the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{systems}, @var{styles}, @var{range}, @var{opt}] =} @
 ##   ltiplot_args (@var{who}, @var{args})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{ax} =} ltiplot_axes (@var{nrow}, @var{ncol})
 ## The @var{nrow}-by-@var{ncol} grid of axes of @code{bodeplot} and

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{model} =} residtrace_base (@var{M}, @var{d})
 ## The @code{residtrace} model of @var{M} (a struct with B, F, nk as

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_colored (@var{cur}, @var{ctx})
 ## Coloured-noise candidate of @code{residtrace}: an AR noise model

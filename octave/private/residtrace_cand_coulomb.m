@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_coulomb (@var{cur}, @var{ctx})
 ## Coulomb-friction candidate of @code{residtrace}: the extra regressor

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_delay (@var{cur}, @var{ctx})
 ## Input-delay candidate of @code{residtrace}: the delay nk of an input

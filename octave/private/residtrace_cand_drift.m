@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_drift (@var{cur}, @var{ctx})
 ## Parameter-drift candidate of @code{residtrace}: time variation that a

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_offset (@var{cur}, @var{ctx})
 ## Offset candidate of @code{residtrace}: a constant entering with the

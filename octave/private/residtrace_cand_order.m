@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_order (@var{cur}, @var{ctx})
 ## Order candidate of @code{residtrace}: a missing pole or zero. The

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_saturation (@var{cur}, @var{ctx})
 ## Saturation candidate of @code{residtrace}: a level that a signal of the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_state (@var{cur}, @var{ctx})
 ## State-dependent-dynamics candidate of @code{residtrace}: a function of

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_static (@var{cur}, @var{ctx})
 ## Static-nonlinearity candidate of @code{residtrace}. Variants:

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_viscous (@var{cur}, @var{ctx})
 ## Missing-viscous-friction candidate of @code{residtrace}: applicable

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_cand_x0 (@var{cur}, @var{ctx})
 ## Unknown-initial-state candidate of @code{residtrace}: the record did

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{z0}, @var{h0}] =} residtrace_cascade_levels (@var{P})
 ## The initial levels of a "cascade" realisation (@code{residtrace_physsim})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{c} =} residtrace_chan (@var{type}, @var{col}, @var{param}, @var{nb}, @var{nk}, @var{name})
 ## One channel of a @code{residtrace} model (see @code{residtrace_channels}

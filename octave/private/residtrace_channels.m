@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{W} =} residtrace_channels (@var{chans}, @var{u}, @var{v}, @var{y})
 ## The signals that drive the channels of a @code{residtrace} model, one

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{ch} =} residtrace_chdata (@var{model}, @var{D})
 ## The channels of a @code{residtrace} model on the record @var{D} in the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{t} =} residtrace_dmtest (@var{e0}, @var{e1})
 ## Does the error @var{e1} have a smaller mean square than @var{e0} on the

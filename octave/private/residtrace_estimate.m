@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{est} =} residtrace_estimate (@var{y}, @var{ch}, @var{Ts}, @var{spec}, @var{opts})
 ## The one place where @code{residtrace} estimates a model: SRIVC (thesis

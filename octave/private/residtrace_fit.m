@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{model} =} residtrace_fit (@var{tmpl}, @var{D}, @var{ctx}, @var{starts})
 ## Estimates the parameters of the @code{residtrace} model structure

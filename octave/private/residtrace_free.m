@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{X} =} residtrace_free (@var{F}, @var{N}, @var{Ts})
 ## Free responses of the model 1/F(p) in observable canonical form (x1 =

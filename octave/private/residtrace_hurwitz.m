@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{ok} =} residtrace_hurwitz (@var{F})
 ## True when the polynomial @var{F} = [1 f1 .. fn] has all its roots in

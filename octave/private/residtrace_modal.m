@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{D} =} residtrace_modal (@var{F}, @var{x}, @var{Ts}, @var{rule})
 ## Filtered time-derivatives of a sampled signal: column i+1 of @var{D}

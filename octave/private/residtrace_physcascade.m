@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{t}, @var{why}] =} residtrace_physcascade (@var{cur}, @var{ctx}, @var{g}, @var{clip})
 ## A "cascade" realisation (@code{residtrace_physsim}) of the current

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{model} =} residtrace_physfit (@var{tmpl}, @var{D}, @var{ctx})
 ## Fits a @code{residtrace} model with a physical realisation

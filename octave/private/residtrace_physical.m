@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{p} =} residtrace_physical (@var{model}, @var{Ts})
 ## Physical reading of a @code{residtrace} model, a struct array with

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{F} =} residtrace_physlin (@var{model})
 ## The denominator of a "cascade" realisation (@code{residtrace_physsim})

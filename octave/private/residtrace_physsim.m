@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{y}, @var{z}] =} residtrace_physsim (@var{model}, @var{u}, @var{Ts})
 ## Output of a @code{residtrace} model with a physical realisation

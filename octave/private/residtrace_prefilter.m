@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{Fp} =} residtrace_prefilter (@var{F}, @var{wlo})
 ## A stable denominator with well separated roots for the prefilter 1/Fp(p)

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{rivals} =} residtrace_rivals (@var{winner}, @var{rows}, @var{opts})
 ## The candidates of a pass that the data do not tell from its

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{best}, @var{table}] =} residtrace_select (@var{tmpls}, @var{names}, @var{D}, @var{ctx}, @var{starts})
 ## Fits each model structure of the cell @var{tmpls} on the estimation

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{y}, @var{x}, @var{uc}] =} residtrace_simulate (@var{model}, @var{u}, @var{Ts}, @var{loop}, @var{substeps})
 ## @deftypefnx {} {[@dots{}] =} residtrace_simulate (@dots{}, @var{thm})

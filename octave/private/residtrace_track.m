@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{thm}, @var{V}, @var{P}] =} residtrace_track (@var{model}, @var{D}, @var{ctx}, @var{Qn}, @var{th0}, @var{P0}, @var{k0})
 ## Tracks the dynamic parameters of a @code{residtrace} model (its free

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{model} =} residtrace_unpack (@var{model}, @var{theta})
 ## Puts the dynamic parameters @var{theta} (free f's, then each channel's

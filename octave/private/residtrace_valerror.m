@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{e}, @var{yh}] =} residtrace_valerror (@var{model}, @var{V}, @var{ctx})
 ## The error of a @code{residtrace} model on the record @var{V} (not used

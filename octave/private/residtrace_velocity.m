@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{v} =} residtrace_velocity (@var{y}, @var{Ts}, @var{lambda}, @var{is_y})
 ## The velocity of the measured output for the Coulomb-friction regressor

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{w} =} residtrace_whiteness (@var{e}, @var{u}, @var{maxlag}, @var{yscale})
 ## Residual tests of @code{residtrace}: is @var{e} white, and independent

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{gw}, @var{p}, @var{loop}] =} @
 ##   throttle_args (@var{fname}, @var{params}, @var{loop})

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/adaptation/adaptation.hpp: the recursive updates against
 // their batch (information-form) solutions.
 #include "ctid/adaptation/adaptation.hpp"

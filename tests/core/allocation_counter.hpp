@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Counts heap allocations so that a test can check that a per-sample path
 // allocates nothing. Replaces the global operator new/delete: include it in
 // exactly one translation unit of a test program.

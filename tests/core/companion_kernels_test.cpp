@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // The fixed-size filter kernels (companion_kernels.hpp) against independent
 // computations: ZOH against Eigen's MatrixExponential of the augmented
 // matrix (discretization.hpp), the trapezoidal rule against the dynamic LU;

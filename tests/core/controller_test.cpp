@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/simulation/controller.hpp: the backward-Euler PID against
 // its definition, run sample by sample.
 #include "ctid/simulation/controller.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/adaptation/covariance_guard.hpp: P left alone bit for
 // bit while its symmetric part is positive definite, however badly scaled;
 // an indefinite symmetric part repaired in correlation form with the

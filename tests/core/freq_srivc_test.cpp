@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/offline/freq_srivc.hpp: SRIVC and the
 // frequency-domain output error (the Levenberg-Marquardt of
 // output_error.hpp on Y - G U) recover a known transfer function exactly

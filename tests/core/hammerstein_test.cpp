@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/offline/hammerstein.hpp: HSRIVC recovers a
 // Hammerstein system exactly from a noise-free record (simulated
 // independently: controllable canonical state space, exact ZOH step by

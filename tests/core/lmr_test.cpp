@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/adaptation/lmr.hpp: LMR-RLSSVF, eq. (3.82), against the
 // covariance-form least squares it generalises, its bounded information
 // under poor excitation (sec. 3.6.3), its square-root information form in

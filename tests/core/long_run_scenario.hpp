@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Long run under poor excitation (issue 12), shared by
 // covariance_guard_test.cpp (10^6 samples in CI) and
 // bench/long_run_bench.cpp (10^8 samples): the system

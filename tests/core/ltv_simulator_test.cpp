@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/simulation/ltv_simulator.hpp against analytic responses
 // and an independently discretised closed loop.
 #include "ctid/simulation/ltv_simulator.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/offline/offline_iv.hpp: identities of the QR-based
 // IV solution, recovery of noise-free LTI systems (open and closed loop),
 // consistency and covariance of SRIVC against a Monte Carlo run, and input

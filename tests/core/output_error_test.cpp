@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/offline/output_error.hpp: exact recovery from
 // noise-free records (continuous time ZOH/FOH and with a fractional delay,
 // discrete time), the exact Jacobian against central differences of the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/simulation/physical_realisations.hpp against
 // independent computations: the linear cascade against its closed-form
 // solution for inputs held over each sample (exponentials written out, no

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/adaptation/potter.hpp (and condition_number in
 // adaptation.hpp): the square-root filter PotterSVF, eq. (3.73), against the
 // standard normalised Kalman filter, eq. (1.59); its behaviour in single

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/adaptation/qn_ml.hpp and nlopt_minimizer.hpp: the cost
 // (3.23) with sigma_e^2 concentrated out against its definition, the
 // search's checks, and the ML estimate of Qn recovering the random-walk

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of recursive_arx.hpp: the indirect route (DT ARX + ZOH conversion).
 #include "ctid/recursive/recursive_arx.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/recursive/recursive_iv.hpp: RLSSVF before t_s_iv,
 // recovery of noise-free systems in open and closed loop, reduced bias
 // under noise, the stability policies and the configuration checks.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/offline/refined_iv_bj.hpp: the ARMA estimator against
 // known ARMA processes (estimate within its reported standard errors; the
 // pure AR case equals the least-squares solution), the discrete filter

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/offline/refined_iv.hpp's continuous channel delay:
 // a delay of whole samples equals the nk shift, and noise-free records of
 // a system with a delay that is not a multiple of Ts (ZOH, FOH, irregular

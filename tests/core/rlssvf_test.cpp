@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/recursive/rlssvf.hpp (and least_squares.hpp,
 // auxiliary_model.hpp): recursive vs batch identities, exact recovery of
 // noise-free systems, no allocation per sample, validation.

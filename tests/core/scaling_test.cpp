@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/recursive/scaling.hpp: M_s of eq. (3.54), its checks,
 // the claim of sec. 3.5.2 that it improves the conditioning of the normal
 // equations, and the identity behind eqs. (3.66)/(3.74): the scaled

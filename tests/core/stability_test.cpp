@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/base/stability.hpp: the Routh test against the
 // roots computed by an eigenvalue solver, and the reflection of roots.
 #include "ctid/base/stability.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/filters/svf.hpp and discretization.hpp against
 // independent computations: analytic step responses, fine-step Runge-Kutta
 // integration, the closed-form Tustin recursion and the balanced

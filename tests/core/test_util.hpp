@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Shared assertions for the core tests: matrix comparison with a relative
 // tolerance that reports the first failing entry.
 #pragma once

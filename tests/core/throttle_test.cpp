@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Tests of core/include/ctid/apps/throttle.hpp: the plate's integration against
 // closed forms and an independent matrix-exponential solution of the
 // piecewise-linear modes, the loop against its definitions, and the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{txt} =} check_demo_outputs (@var{outdir}, @var{figs}, @var{table}, @var{strings})
 ## Helper of the demo script tests: asserts that each PNG of the cell

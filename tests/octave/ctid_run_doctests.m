@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Runs the %!test / %!assert / %!error blocks of one toolbox file and fails
 ## (non-zero exit through error) unless every block passes.
 ##

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} ctid_run_private_tests (@var{file})
 ## Runs the inline tests of @file{octave/private/@var{file}} (the CTest

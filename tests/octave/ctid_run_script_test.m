@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Runs the script test tests/octave/<name>.m with the toolbox on the path;
 ## the script signals failure by raising an error.
 function ctid_run_script_test (name)

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} fuzz_public_child (@var{specfile})
 ## The child process of @file{test_fuzz_public.m}: makes the seeded random

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{tpl} =} fuzz_public_templates ()
 ## Well-formed calls of every public function of @file{octave/*.m} for the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{cases} =} residtrace_cases (@var{set})
 ## Undeclared-effect datasets for @code{residtrace} (issue 5, sec. 5): one

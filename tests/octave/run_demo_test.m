@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## run_demo_test (check): the scaffolding every demo script test shares.
 ## Puts <root>/demos on the path, calls check (out, root) with a fresh
 ## temporary output folder `out` (root: the repository), and removes the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {} run_inline_tests ()
 ## @deftypefnx {} {} run_inline_tests (@var{files})

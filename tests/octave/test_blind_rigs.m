@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_blind_rigs ()
 ## The simulators of the blind held-out check (@code{demos/blind_rigs.m},

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_cascaded_tanks_sim ()
 ## The Cascaded Tanks replica (@code{demos/cascaded_tanks_sim.m}, issue 9)

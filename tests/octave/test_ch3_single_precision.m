@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Single precision on the simulated band-pass filter (issue 4, sec. 5;
 ## thesis secs. 3.5, 4.1.3): float RLSSVF without scaling loses positive
 ## definiteness of P, the scaled and Potter forms keep it and track within

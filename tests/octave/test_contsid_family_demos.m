@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The call sequences of CONTSID 7.3's demos on the refined-IV family
 ## (contsid-surface.md, issue 11), replayed on simulated data of each
 ## demo's kind with the demos' own call forms, through to their plots,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_contsid_getdata ()
 ## Tests of @file{octave/private/contsid_getdata.m}, the data reader of

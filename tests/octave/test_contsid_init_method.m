@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_contsid_init_method ()
 ## Runs the inline tests of @file{octave/private/contsid_init_method.m},

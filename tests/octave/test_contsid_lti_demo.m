@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The RLSSVF step of CONTSID's LTI demo, as its users write it, runs
 ## unchanged on data from our simc: an iddata object with InterSample 'zoh'
 ## and rlssvf (data, [2 1 0], 'lambda_svf', 2). On noise-free data of a

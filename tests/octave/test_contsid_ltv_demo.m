@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The estimation steps of CONTSID's recursive LTI/LTV demos, written as
 ## its users write them (iddata with InterSample 'zoh', the 7.2/7.3 and the
 ## 7.0/7.1 syntax), run unchanged on data from our simc, and the IV methods

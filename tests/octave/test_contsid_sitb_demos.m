@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The call sequences of CONTSID 7.3's demos that need the SITB model
 ## objects (contsid-surface.md), replayed on simulated data: the SRIVC
 ## tutorials, the recursive LTI demo, the canning (three inputs) and

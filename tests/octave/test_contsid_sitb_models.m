@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The SITB model objects (idpoly, idtf, idproc, idss, idfrd) against
 ## independent computations: simulation, step and Bode of an idpoly/idtf
 ## equal the control package's on the same tf (lsim of the exact ZOH

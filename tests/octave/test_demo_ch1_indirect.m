@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The indirect-vs-direct demo (thesis sec. 1.3.4) runs, writes its figure
 ## and table, and both routes track (MSE after the start-up well below the
 ## variance of the parameters themselves).

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The Chapter 2 demos (thesis sec. 2.3.5, 2.3.6 and 2.4.6) run and write
 ## their figures and results tables; two noise runs each keep it short
 ## (about 20 s in all on a 2-core machine).

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## demo_ch3_antiwindup (thesis sec. 3.6.4) runs on one noise run and its
 ## claims hold:
 ## - RSRIVC with conditional updating (gamma = 300) is held from shortly

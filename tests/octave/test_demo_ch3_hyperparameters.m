@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The Chapter 3 hyperparameter demo (thesis secs. 3.1.2, 3.2.1) in
 ## reduced form: one noise run, ten segments, no tsiv sweep. It writes its
 ## figures and table, and

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## demo_ch3_initial_conditions (thesis sec. 3.4.3, Table 3.1) runs and
 ## writes its figures and table; the overshoots keep the thesis' ordering.
 ##

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## demo_ch3_qn_ml (thesis sec. 3.3.3) runs in reduced form (3 noise runs,
 ## 2 per alternative PRBS clock) and its results hold:
 ## - every ML q lies within the bounds [1e-6, 1e-4];

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## The main demo (the README's first command) runs and writes its figure
 ## and results table; two noise seeds keep it short.
 function test_demo_rlssvf_ltv ()

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_freq_delay_scan ()
 ## The delay search of @code{tffsrivc} and of @code{tffcoe} against an

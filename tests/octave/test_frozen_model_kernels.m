@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_frozen_model_kernels ()
 ## YH of @code{[thm, yh] = rlssvf (...)} and of

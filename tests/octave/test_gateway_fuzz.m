@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Calls the compiled gateways directly with arbitrary arguments: every call
 ## must either succeed or raise an error with an identifier
 ## <public name>:<reason>; none may crash Octave (a crash ends this process

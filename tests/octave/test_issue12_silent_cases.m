@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_issue12_silent_cases ()
 ## The "silently wrong answers" of issue 12, each re-checked in one place:

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_pem_monte_carlo ()
 ## A small Monte Carlo check of the covariances reported by tfcoe

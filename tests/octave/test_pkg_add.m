@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_pkg_add ()
 ## Tests of @file{octave/PKG_ADD}: adding the toolbox with @code{addpath}

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## Undeclared-effect suite of residtrace (issue 5, sec. 5): on each dataset
 ## of residtrace_cases (1) the single effect present must rank first and
 ## cut the validation RMSE, the clean control must give 'none', and the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_fastpole ()
 ## Issue 9, "make every failure loud", on the Cascaded Tanks replica

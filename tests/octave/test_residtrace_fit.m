@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## residtrace_fit (private, issue 9's Silverbox regression): a real pole
 ## that a fit leaves beyond what the samples can see (p Ts > 1000) is
 ## residualised and the model fitted again in the lower order (not in the

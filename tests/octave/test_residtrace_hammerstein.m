@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_hammerstein ()
 ## residtrace's static-nonlinearity candidate fits the polynomial of the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_simulate ()
 ## The core's effect-model simulator (core/include/ctid/simulation/effect_simulator.hpp,

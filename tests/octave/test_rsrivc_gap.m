@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## RSRIVC with a gap of missing samples tracks as without the gap, within
 ## the noise (issue 12). The system of thesis sec. 2.3.5,
 ## 4 / (p^2 + 2.4 p + 4), Ts = 0.05 s, N = 20000 samples (1000 s), a

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_run_contsid_demos ()
 ## @file{scripts/run-contsid-demos} on demos written here (CONTSID's own are

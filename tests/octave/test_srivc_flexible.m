@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_srivc_flexible ()
 ## srivc (data, [6 6 0]) on a sixth-order lightly damped flexible

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} check_installed_package (@var{prefix}, @var{src})
 ## Run by test_octave_package.sh in a fresh Octave session after

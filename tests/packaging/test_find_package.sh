@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (C) the ctid authors
 # The installed C++ core used from a separate project: installs the build
 # tree <build> into a temporary prefix, configures and builds
 # examples/streaming against it with find_package(ctid) (no package

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Copyright (C) the ctid authors
 # The Octave package from a clean tree: scripts/dist builds the tarball,
 # `pkg install -local` installs it into a fresh temporary prefix (HOME, the
 # package prefix and the local package list all in a temporary folder, so

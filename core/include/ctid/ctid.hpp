@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // ctid: every layer of the numerical core in one include, for users of the
 // installed C++ API who do not want to pick headers (see the README, "Layout").
 // The NLopt-based minimiser (adaptation/nlopt_minimizer.hpp) is left out so

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{sys}, @var{iu}, @var{extra}] =} pre_lti_args @
 ##   (@var{who}, @var{args})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{dat} =} apply_sampling (@var{dat}, @var{val}, @
 ##   @var{key}, @var{who})

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{dat} =} assign_property (@var{dat}, @var{name}, @
 ##   @var{val}, @var{key}, @var{who})

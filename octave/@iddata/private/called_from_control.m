@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{tf} =} called_from_control (@var{name})
 ## True when the property @var{name} is read in the control package's

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} check_dataset (@var{dat}, @var{who})
 ## Check that the fields of @var{dat} agree with each other: the same number

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{dat} =} concat_sets (@var{dim}, @var{sets}, @var{who})
 ## Join the @code{iddata} sets in the cell @var{sets}: along the samples

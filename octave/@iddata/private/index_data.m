@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{dat} =} index_data (@var{dat}, @var{idx})
 ## @code{dat(samples, outputs, inputs, experiments)}: select samples and

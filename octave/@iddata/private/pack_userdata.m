@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{stored} =} pack_userdata (@var{user}, @var{intersample})
 ## Store the inter-sample behaviour of an @code{iddata} set together with

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{name} =} property_name (@var{key}, @var{who})
 ## @deftypefnx {} {@var{names} =} property_name ()

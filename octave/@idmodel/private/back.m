@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} back (@var{P}, @var{G}, @var{delay})
 ## A control-package model @var{G} (the result of c2d or d2c on the model

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {} check_subs (@var{s}, @var{cls})
 ## Checks the index structure @var{s} that @code{subsref}/@code{subsasgn}

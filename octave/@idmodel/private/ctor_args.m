@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{pos}, @var{pairs}, @var{Ts}] =} @
 ##   ctor_args (@var{cls}, @var{args}, @var{npos})

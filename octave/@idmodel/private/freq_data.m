@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{H}, @var{w}, @var{sdmag}, @var{sdph}] =} freq_data (@var{sys}, @var{w}, @var{fname})
 ## Frequency response (ny-by-nu-by-N) of a model of this toolbox or the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{v} =} get_prop (@var{M}, @var{name})
 ## The value of the property @var{name} (canonical spelling) of @var{M}.

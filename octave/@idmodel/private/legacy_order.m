@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{T} =} legacy_order (@var{P})
 ## The map from CONTSID's theta to the idpoly parameter vector (order A,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{G}, @var{delay}] =} lti_of (@var{P}, @var{form}, @var{fname})
 ## The control package's @code{tf} (@var{form} "tf") or @code{ss} ("ss")

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{name} =} match_prop (@var{M}, @var{key}, @var{fname})
 ## The canonical property name of @var{M} that @var{key} names: an exact

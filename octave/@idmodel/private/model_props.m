@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{names}, @var{readonly}] =} model_props (@var{kind})
 ## The property names of a model of class @var{kind} (canonical spelling),

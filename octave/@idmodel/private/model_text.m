@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{txt} =} model_text (@var{P}, @var{sd})
 ## The text that @code{display} (@var{sd} false) and @code{present}

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{sys}, @var{styles}, @var{x}, @var{opt}] =} parse_sys_args (@var{fname}, @var{args})
 ## Reads the arguments of the plotting methods (bode, step, impulse,

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{names}, @var{np}, @var{flags}] =} proc_names (@var{type})
 ## The parameters of the process model @var{type} (e.g. "P2DU", "P1D",

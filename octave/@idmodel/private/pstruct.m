@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{P} =} pstruct (@var{M})
 ## The plain struct behind a model object (its idmodel part), for the

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{p}, @var{names}] =} pvec_of (@var{M})
 ## The parameter vector of @var{M} in the SITB order (idpoly: A, B, C, D,

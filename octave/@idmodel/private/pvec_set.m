@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{P} =} pvec_set (@var{P}, @var{p})
 ## The model struct @var{P} with the parameters @var{p} (column, order of

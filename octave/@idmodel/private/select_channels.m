@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{Ms} =} select_channels (@var{M}, @var{P}, @var{subs})
 ## @code{M(i, j)}: the model from the inputs @var{j} to the outputs

@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{M} =} set_prop (@var{M}, @var{name}, @var{v}, @var{fname})
 ## Sets the property @var{name} (canonical spelling) of @var{M} to @var{v}

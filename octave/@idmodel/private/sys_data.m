@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{a}, @var{b}, @var{c}, @var{d}, @var{Ts}, @var{delay}, @var{P}] =} sys_data (@var{sys}, @var{fname})
 ## The delay-free state-space matrices (from the control package's

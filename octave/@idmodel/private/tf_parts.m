@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{num}, @var{den}] =} tf_parts (@var{M})
 ## The ny-by-nu cells of numerators and denominators of the input-output

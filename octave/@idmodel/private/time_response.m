@@ -1,3 +1,6 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{y}, @var{t}] =} time_response (@var{kind}, @var{fname}, @var{args})
 ## Step or impulse responses (@var{kind} "step" / "impulse") of the models

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Adaptation mechanisms for the time-varying parameters, as
 // interchangeable parts of every recursive estimator:
 //

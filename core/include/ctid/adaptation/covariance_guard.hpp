@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Protection of the covariance P of the standard-form recursions (RLSSVF,
 // eqs. 1.57/1.59, and the IV updates of RIVSVF/RSRIVC/CLRIVSVF/CLRSRIVC,
 // eqs. 2.29/2.30) over long runs of poor excitation, as one step after

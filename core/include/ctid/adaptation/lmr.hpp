@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Levenberg-Marquardt regularised least squares, LMR-RLSSVF, thesis
 // eq. (3.82) (sec. 3.6.3, [Waterschoot et al., 2008]): the minimiser of
 //

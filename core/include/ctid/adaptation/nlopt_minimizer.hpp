@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // NLopt as the bounded minimiser of the Qn search (qn_ml.hpp). A separate
 // header so that the numerical core needs no optimisation library: include
 // it where NLopt is linked (the CMake target ctid::nlopt, the qnml gateway).

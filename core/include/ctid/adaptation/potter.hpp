@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Square-root (Potter) form of the normalised Kalman filter for the
 // least-squares regression, PotterSVF, thesis eq. (3.73).
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Maximum-likelihood estimation of the diagonal of the normalised
 // covariance matrix Qn of the Kalman-filter based estimators, thesis
 // sec. 3.3 (eqs. 3.21-3.25, Suggested procedure 3.6).

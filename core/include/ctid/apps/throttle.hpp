@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Electronic throttle body (ETB) of thesis sec. 4.2: the plant, its closed
 // loop, and the recursive estimation of the electrical submodel.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Fixed-length delay of a sampled signal by nk samples (zero before the
 // record starts), without allocation per sample.
 #pragma once

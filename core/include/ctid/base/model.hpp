@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Continuous-time model structure of the thesis, eqs. (1.2)-(1.3), (1.28)
 // and (2.22), in the CONTSID ordering:
 //

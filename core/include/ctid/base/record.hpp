@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // A sampled input-output record as the batch functions read it, without
 // copying: y (N samples), u (N-by-nu, column-major) and either a constant
 // sampling interval or the N sampling instants (irregular sampling).

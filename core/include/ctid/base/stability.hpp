@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Stability test of the estimates that feed the auxiliary model and the
 // adaptive prefilter, thesis eqs. (3.9)-(3.10): A(p) must have all roots in
 // the open left half plane. The test is the Routh array (no eigenvalues,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Status values returned by the core instead of throwing or aborting.
 //
 // The core never raises on bad input or numerical trouble: every fallible

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Eigen aliases shared by the core. Every numerical class is a template on
 // the scalar type so that the same code runs in double and in float.
 #pragma once

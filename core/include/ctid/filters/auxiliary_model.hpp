@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Simulated output of a model whose parameters change from sample to
 // sample: A(p, theta) x = sum_j B_j(p, theta) u_j, realised per input as
 // A(p) w_j = u_j in controllable canonical form (the StateVariableFilter

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Fixed-size (order n = 1..4, known at compile time) kernels of the filters
 // refreshed at every sample: the discretisation of the companion system
 //

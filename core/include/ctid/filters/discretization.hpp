@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Digital implementation of continuous-time filtering operations
 // x' = F x + G s (thesis Appendix A).
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Simulated output of the frozen model, eq. (1.60): at every sample t_k the
 // current estimate theta(t_k) = [a_1 .. a_na, b's] is taken as the model
 // A(p) x = sum_j B_j(p) u_j over the interval (t_(k-1), t_k], the states

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // State-variable filters: for a sampled signal s they produce the
 // prefiltered time derivatives p^i F(p) s, i = 0..n, with
 //

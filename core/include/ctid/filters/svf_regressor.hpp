@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // The filtered linear regression of the SVF methods, eqs. (1.24)-(1.27):
 //
 //   y_f^(na)(t_k) = phi_f^T(t_k) theta + v_f(t_k)

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Continuous-time transfer functions (with a time delay) from frequency
 // data: SRIVC in the frequency domain and output-error refinement.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Block-oriented nonlinear continuous-time models by refined IV, on the
 // offline engine of refined_iv.hpp (thesis eqs. 2.8-2.13):
 //

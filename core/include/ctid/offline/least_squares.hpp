@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Batch least squares on the filtered SVF regression: LSSVF, eq. (1.32),
 // solved with a column-pivoting Householder QR of the regressor matrix
 // instead of the normal equations.

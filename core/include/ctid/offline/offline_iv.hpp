@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Off-line (batch) estimators of continuous-time LTI models:
 //
 //   LSSVF    least squares on the SVF regression, thesis eq. (1.32);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Prediction-error minimisation for the output-error structure (thesis
 // sec. 1.3.3, the criterion of eq. 1.16 with the noise model H = 1):
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // The offline refined instrumental-variable engine: one implementation of
 // LSSVF (thesis eq. 1.32), IVSVF (eqs. 2.4-2.7), SRIVC (eqs. 2.8-2.13) and
 // CLSRIVC (eqs. 2.47-2.50) for the generalised output-error structure

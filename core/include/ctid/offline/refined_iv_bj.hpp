@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Refined IV for the hybrid Box-Jenkins model (RIVC of Young and Garnier)
 //
 //   y(t_k) = B(p) / F(p) u(t_k - tau) + xi(t_k),

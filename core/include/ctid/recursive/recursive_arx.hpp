@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Indirect recursive identification of a continuous-time model (thesis
 // secs. 1.2.2 and 1.3.3, Fig. 1.3 left; the example of sec. 1.3.4 and
 // Fig. 1.9a): a discrete-time ARX model is estimated recursively and

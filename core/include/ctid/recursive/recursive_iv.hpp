@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Recursive instrumental-variable estimators of CT models with
 // time-varying parameters (thesis Chapter 2 and sec. 3.2):
 //

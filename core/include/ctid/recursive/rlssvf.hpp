@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Recursive least squares state-variable filter (RLSSVF): the filtered
 // regression of eq. (1.53) updated with a forgetting factor, eq. (1.57)
 // (RLSSVF-FF), or a Kalman filter with random-walk parameters, eq. (1.59)

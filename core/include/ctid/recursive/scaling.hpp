@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Signal scaling of the recursive estimators, thesis sec. 3.5.2-3.5.5.
 //
 // The estimators propagate theta_s = M_s^-1 theta and P_s = M_s^-1 P M_s^-1

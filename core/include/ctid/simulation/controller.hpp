@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Discrete controllers for closed-loop simulation,
 // u(t_k) = r1(t_k) + C(q^-1) (r2(t_k) - y(t_k)), thesis eq. (2.39).
 //

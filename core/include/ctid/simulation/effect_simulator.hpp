@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Simulation of an LTI model with effect terms fed by its own output, the
 // model structures of residtrace (issue 9):
 //

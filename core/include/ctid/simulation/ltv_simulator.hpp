@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
 // Simulation of the continuous-time LTV system of eq. (1.49),
 //
 //   x^(na) + a1(t) x^(na-1) + .. + a_na(t) x = sum_j B_j(p, t) u_j(t - nk_j Ts)
