@@ -199,10 +199,15 @@ function [cats, problems] = read_index (file, funcs, classes)
     return;
   endif
   L = strsplit (fileread (file), "\n");
+  head = find (! cellfun ("isempty", strfind (L, ">>")), 1);
+  if (isempty (head))
+    problems{end+1} = "INDEX: no 'ctid >> ...' header line";
+    head = 0;
+  endif
   listed = {};
-  for k = 1:numel (L)
+  for k = head+1:numel (L)
     l = L{k};
-    if (isempty (strtrim (l)) || k == 1 && ! isempty (strfind (l, ">>")))
+    if (isempty (strtrim (l)) || l(1) == "#")
       continue;
     elseif (any (l(1) == " \t"))
       if (isempty (cats))
@@ -444,6 +449,11 @@ function [md, summary] = texi2md (txt, pages, anchors)
     if (isempty (l))
       [out, paragraph] = flush (out, paragraph, stack);
       out{end+1} = "";
+    elseif (strncmp (l, "@strong{", 8) && isempty (stack))
+      ## a bold lead-in starts a paragraph of its own
+      [out, paragraph] = flush (out, paragraph, stack);
+      out{end+1} = "";
+      paragraph{end+1} = inline_md (l, false);
     else
       paragraph{end+1} = inline_md (l, false);
     endif
