@@ -31,15 +31,15 @@ function [theta, P, C, D] = rivc_plain_octave (y, u, Ts, nn, theta, iters,
   for it = 1:iters
     F = [1, theta(1:nf).'];
     b = theta(nf+1:end);
-    Uf = derivs (F, u, Ts);
-    U2 = derivs (conv (F, F), u, Ts);
+    Uf = plain_zoh_derivatives (F, u, Ts);
+    U2 = plain_zoh_derivatives (conv (F, F), u, Ts);
     xh = Uf(:, nb:-1:1) * b;
     Xf = zeros (N, nf + 1);
     for i = 0:nf
       Xf(:, i+1) = U2(:, (nb-1:-1:0) + i + 1) * b;
     endfor
     xi = y - xh;
-    Yf = Xf + derivs (F, xi, Ts);
+    Yf = Xf + plain_zoh_derivatives (F, xi, Ts);
     Zx = Xf;
     Zu = Uf;
     if (closed)
@@ -48,7 +48,7 @@ function [theta, P, C, D] = rivc_plain_octave (y, u, Ts, nn, theta, iters,
       acl(end-numel (bnc)+1:end) += bnc;
       lead = acl(1);
       acl /= lead;
-      R = derivs (conv (acl, F), r(:), Ts) / lead;
+      R = plain_zoh_derivatives (conv (acl, F), r(:), Ts) / lead;
       fnc = conv (F, cnum);
       Zx = apply_num (bnc, nf + 1, R);
       Zu = apply_num (fnc, nb, R);
@@ -67,27 +67,6 @@ function [theta, P, C, D] = rivc_plain_octave (y, u, Ts, nn, theta, iters,
     endif
   endfor
   P = s2 * inv (Z' * Z);
-endfunction
-
-## p^i s / F(p), i = 0..n (columns), exact for s held between samples:
-## the ZOH-sampled state z(k+1) = Phi z(k) + g s(k) of 1/F, each state
-## as a discrete transfer function run by the built-in filter (vectorised;
-## numerators by the matrix determinant lemma, c (zI - Phi)^-1 g =
-## (det (zI - Phi + g c) - det (zI - Phi)) / det (zI - Phi)).
-function out = derivs (F, s, Ts)
-  n = numel (F) - 1;
-  d = F(2:end) / F(1);
-  A = [zeros(n - 1, 1), eye(n - 1); -fliplr(d)];
-  E = expm ([A, [zeros(n - 1, 1); 1]; zeros(1, n + 1)] * Ts);
-  Phi = E(1:n, 1:n);
-  g = E(1:n, n+1);
-  den = poly (Phi);
-  out = zeros (numel (s), n + 1);
-  for i = 1:n
-    num = poly (Phi - g * ((1:n) == i)) - den;
-    out(:, i) = filter ([0, num(2:end)], den, s);
-  endfor
-  out(:, n+1) = s - out(:, 1:n) * fliplr(d).';
 endfunction
 
 function out = apply_num (num, count, R)

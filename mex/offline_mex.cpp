@@ -19,6 +19,11 @@
 //                                               "scaling"
 // returns instead the diagonal of the scaling matrix M_s of eq. (3.54) for
 // the SVF regression of this record (svfscaling, rlssvf/rsrivc 'scaling').
+//
+// method 'tocls' | 'tocils' (errors-in-variables, cumulant_eiv.hpp): the
+// options lags (M), and for tocils maxiter and tol; cov and sigma2 are then
+// empty (no covariance is computed).
+#include "ctid/offline/cumulant_eiv.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/recursive/scaling.hpp"
 #include "gateway_common.hpp"
@@ -27,7 +32,15 @@ namespace {
 
 using ctid::mex::Gateway;
 
-enum class Method { kScaling, kLssvf, kIvsvf, kSrivc, kClsrivc };
+enum class Method {
+  kScaling,
+  kLssvf,
+  kIvsvf,
+  kSrivc,
+  kClsrivc,
+  kTocls,
+  kTocils
+};
 
 void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                      const mxArray* prhs[]) {
@@ -49,7 +62,9 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                                             {"lssvf", Method::kLssvf},
                                             {"ivsvf", Method::kIvsvf},
                                             {"srivc", Method::kSrivc},
-                                            {"clsrivc", Method::kClsrivc}},
+                                            {"clsrivc", Method::kClsrivc},
+                                            {"tocls", Method::kTocls},
+                                            {"tocils", Method::kTocils}},
                                            Method::kSrivc);
   if (!opt.has("method")) g.fail("badOption", "option 'method' is missing");
   if (method == Method::kScaling) {
@@ -62,6 +77,27 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     return;
   }
   const long np = orders.num_parameters();
+  if (method == Method::kTocls || method == Method::kTocils) {
+    ctid::CumulantEivSettings<double> eiv;
+    eiv.lags = opt.integer("lags", eiv.lags);
+    if (method == Method::kTocils) {
+      eiv.max_iterations = opt.integer("maxiter", eiv.max_iterations);
+      eiv.tolerance = opt.scalar("tol", eiv.tolerance);
+    }
+    opt.finish();
+    ctid::CumulantEivEstimate<double> estimate;
+    g.check(method == Method::kTocls
+                ? ctid::tocls(orders, svf, record, eiv, &estimate)
+                : ctid::tocils(orders, svf, record, eiv, &estimate));
+    plhs[0] = ctid::mex::make_output_matrix(np, 1);
+    std::copy(estimate.theta.data(), estimate.theta.data() + np,
+              mxGetPr(plhs[0]));
+    if (nlhs >= 2) plhs[1] = ctid::mex::make_output_matrix(0, 0);
+    if (nlhs >= 3) plhs[2] = ctid::mex::make_output_matrix(0, 0);
+    if (nlhs >= 4) plhs[3] = mxCreateDoubleScalar(estimate.iterations);
+    if (nlhs >= 5) plhs[4] = mxCreateLogicalScalar(estimate.converged);
+    return;
+  }
   ctid::SrivcSettings<double> settings;
   const bool iterative = method == Method::kSrivc || method == Method::kClsrivc;
   if (iterative) {
@@ -100,6 +136,8 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       status = ctid::srivc(orders, svf, settings, record, &estimate);
       break;
     case Method::kScaling:  // returned above
+    case Method::kTocls:
+    case Method::kTocils:
       break;
     case Method::kClsrivc:
       status = ctid::clsrivc(orders, svf, settings, record, r1, r2, controller,
@@ -129,7 +167,7 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway("srivc",
-                         {"lssvf", "ivsvf", "srivc", "clsrivc", "svfscaling",
+                         {"lssvf", "ivsvf", "srivc", "clsrivc", "svfscaling", "tocls", "tocils",
                           "rlssvf", "rivsvf", "rsrivc", "clrivsvf", "clrsrivc"},
                          nrhs, prhs, [&](const Gateway& g) {
                            offline_gateway(g, nlhs, plhs, nrhs, prhs);
