@@ -2,16 +2,34 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{th}, @var{infos}, @var{ysim}, @var{c}, @var{d}] =} lpv_estimate (@var{fname}, @var{nn}, @var{args})
+## @deftypefn {} {[@var{th}, @var{infos}, @var{ysim}, @var{c}, @var{d}] =} lpv_estimate (@var{fname}, @var{nnlen}, @var{args})
 ## Shared argument handling of @code{lpvsrivc} and @code{lpvrivc}:
-## @var{args} = @{data, nn, DepA, DepB [, tol, maxiter, Ainit, Binit]@},
-## @var{nn} = [nb na] or [nb na nc nd] already read by the caller.  Calls
+## @var{args} = @{data, nn, DepA, DepB [, tol, maxiter, Ainit, Binit]@}
+## (data: an iddata object or y, u, Ts), @var{nn} = [nb na] (@var{nnlen}
+## 2) or [nb na nc nd] (@var{nnlen} 4).  Calls
 ## the gateway @code{lpv_mex} and builds the @var{infos} struct
 ## (J, Iteration, converged, Arivc, Brivc).
 ## @end deftypefn
 
-function [th, infos, ysim, c, d] = lpv_estimate (fname, nn, args)
-  data = contsid_getdata (fname, args{1});
+function [th, infos, ysim, c, d] = lpv_estimate (fname, nnlen, args)
+  data = contsid_getdata (fname, args{:});
+  args = args(data.nconsumed:end);
+  if (numel (args) < 4 || numel (args) > 8)
+    error ([fname ":badInput"],
+           "%s: expected data, nn, DepA, DepB [, tol, maxiter, Ainit, Binit]",
+           fname);
+  endif
+  nn = args{2};
+  if (! (isnumeric (nn) && isreal (nn) && numel (nn) == nnlen
+         && all (nn == fix (nn)) && all (nn(1:2) >= 1) && all (nn >= 0)))
+    if (nnlen == 2)
+      error ([fname ":badInput"], "%s: nn must be [nb na], positive integers",
+             fname);
+    else
+      error ([fname ":badInput"],
+             "%s: nn must be [nb na nc nd], integers with nb, na >= 1", fname);
+    endif
+  endif
   if (columns (data.u) != 1)
     error ([fname ":notSupported"],
            "%s: one input only (the data have %d)", fname, columns (data.u));
