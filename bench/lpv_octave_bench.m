@@ -44,8 +44,9 @@ function T = lpv_octave_bench ()
     randn ("seed", 2); y = ydet + 0.1 * std (ydet) * randn (N, 1);
     A0 = A .* [1 1 1; 1.1 0.9 1.1; 0.9 1.1 1]; B0 = B * 1.1;
     fa = reshape (DepA, 3, []); fb = reshape (DepB, 2, []);
-    core = @() lpv_mex ("lpvsrivc", "estimate", y, u, Ts, fa, [3 2 N],
-                        fb, [2 2 N], [0 0], 1e-300, K, A0, B0);
+    opts = struct ("Ts", Ts, "dims_a", [3 2 N], "dims_b", [2 2 N],
+                   "tol", 1e-300, "maxiter", K, "Ainit", A0, "Binit", B0);
+    core = @() lpv_mex ("lpvsrivc", y, u, fa, fb, opts);
     plain = @() lpv_plain_octave (y, u, Ts, DepA, DepB, K, A0, B0);
     tc = zeros (1, 3); tp = zeros (1, 3);
     for rep = 1:3

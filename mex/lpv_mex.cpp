@@ -2,27 +2,35 @@
 // Copyright (C) the ctid authors
 // MEX gateway of the LPV family (octave/simulLPVCT.m, lpvsrivc.m, lpvrivc.m):
 //
-//   y = lpv_mex (fname, "simulate", u, Ts, A, depA, dimsA, B, depB, dimsB)
+//   y = lpv_mex ("simulLPVCT", u, depA, depB, options)
 //   [theta, A, B, c, d, J, iterations, converged, ysim] =
-//       lpv_mex (fname, "estimate", y, u, Ts, depA, dimsA, depB, dimsB,
-//                [nc nd], tol, maxiter, Ainit, Binit)
+//       lpv_mex (fname, y, u, depA, depB, options)      (lpvsrivc, lpvrivc)
 //
 // depA, depB: the dependency arrays reshaped to n_dep-by-(n_coef*N) (the
-// column-major storage of CONTSID's n_dep x n_coef x N arrays), dims their
-// three sizes [n_dep n_coef N]. Ainit, Binit: [] or the initial model.
+// column-major storage of CONTSID's n_dep x n_coef x N arrays).
+// Options of both: Ts, dims_a, dims_b (the three sizes [n_dep n_coef N] of
+// each dependency array), all required. Simulation: A, B (required).
+// Estimation: nc, nd (default 0), tol (1e-4), maxiter (50), Ainit, Binit
+// (absent or [], or the initial model).
+#include <string>
+#include <vector>
+
 #include "ctid/offline/lpv_refined_iv.hpp"
 #include "mex_helpers.hpp"
+#include "options_reader.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
 
-ctid::LpvBasis<double> read_basis(const Gateway& g, const mxArray* values,
-                                  const mxArray* dims, const char* what) {
-  const std::vector<int> d =
-      g.integer_vector(dims, std::string("the size of ") + what);
+ctid::LpvBasis<double> read_basis(const Gateway& g, OptionsReader& opt,
+                                  const mxArray* values, const char* dims,
+                                  const char* what) {
+  const std::vector<int> d = opt.integer_vector(dims);
   if (d.size() != 3 || d[0] < 1 || d[1] < 1 || d[2] < 1) {
-    g.fail("badInput", std::string(what) + " must be n_dep-by-n-by-N");
+    g.fail("badOption", std::string("option '") + dims +
+                            "' must be [n_dep n N], positive integers");
   }
   ctid::LpvBasis<double> basis;
   basis.num_functions = d[0];
@@ -32,23 +40,26 @@ ctid::LpvBasis<double> read_basis(const Gateway& g, const mxArray* values,
   return basis;
 }
 
-Eigen::MatrixXd optional_matrix(const Gateway& g, const mxArray* a,
-                                const char* what) {
-  if (mxIsEmpty(a)) return Eigen::MatrixXd();
-  return g.eigen_matrix(a, what);
-}
-
 void simulate(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
               const mxArray* prhs[]) {
-  if (nrhs != 10) g.fail("badInput", "simulate takes 10 arguments");
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the gateway takes 5 arguments (fname, u, depA, depB, options)");
+  }
   if (nlhs > 1) g.fail("badInput", "one output");
-  const long n = static_cast<long>(mxGetM(prhs[2]));
-  const double* u = g.matrix(prhs[2], "u", n, 1);
-  const double ts = g.scalar(prhs[3], "Ts");
-  const Eigen::MatrixXd a = g.eigen_matrix(prhs[4], "A");
-  const ctid::LpvBasis<double> dep_a = read_basis(g, prhs[5], prhs[6], "DepA");
-  const Eigen::MatrixXd b = g.eigen_matrix(prhs[7], "B");
-  const ctid::LpvBasis<double> dep_b = read_basis(g, prhs[8], prhs[9], "DepB");
+  g.require_real_double(prhs[1], "u");
+  const long n = static_cast<long>(mxGetM(prhs[1]));
+  if (n < 1) g.fail("badInput", "u must not be empty");
+  const double* u = g.matrix(prhs[1], "u", n, 1);
+  OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("Ts");
+  const Eigen::MatrixXd a = opt.required_matrix("A");
+  const Eigen::MatrixXd b = opt.required_matrix("B");
+  const ctid::LpvBasis<double> dep_a =
+      read_basis(g, opt, prhs[2], "dims_a", "DepA");
+  const ctid::LpvBasis<double> dep_b =
+      read_basis(g, opt, prhs[3], "dims_b", "DepB");
+  opt.finish();
   plhs[0] = ctid::mex::make_output_matrix(n, 1);
   g.check(ctid::simulate_lpv<double>(u, n, ts, a, dep_a, b, dep_b,
                                      mxGetPr(plhs[0])));
@@ -56,27 +67,36 @@ void simulate(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 
 void estimate(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
               const mxArray* prhs[]) {
-  if (nrhs != 14) g.fail("badInput", "estimate takes 14 arguments");
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "the gateway takes 6 arguments (fname, y, u, depA, depB, "
+           "options)");
+  }
   if (nlhs > 9) g.fail("badInput", "at most 9 outputs");
   ctid::LpvProblem<double> problem;
-  const long n = static_cast<long>(mxGetM(prhs[2]));
+  g.require_real_double(prhs[1], "y");
+  const long n = static_cast<long>(mxGetM(prhs[1]));
+  if (n < 1) g.fail("badInput", "y must not be empty");
   problem.num_samples = n;
-  problem.y = g.matrix(prhs[2], "y", n, 1);
-  problem.u = g.matrix(prhs[3], "u", n, 1);
-  problem.ts = g.scalar(prhs[4], "Ts");
-  problem.dep_a = read_basis(g, prhs[5], prhs[6], "DepA");
-  problem.dep_b = read_basis(g, prhs[7], prhs[8], "DepB");
-  const std::vector<int> noise = g.integer_vector(prhs[9], "[nc nd]");
-  if (noise.size() != 2) g.fail("badInput", "[nc nd] must have 2 entries");
-  problem.nc = noise[0];
-  problem.nd = noise[1];
+  problem.y = g.matrix(prhs[1], "y", n, 1);
+  problem.u = g.matrix(prhs[2], "u", n, 1);
+  OptionsReader opt(g, prhs[5]);
+  problem.ts = opt.scalar("Ts");
+  problem.dep_a = read_basis(g, opt, prhs[3], "dims_a", "DepA");
+  problem.dep_b = read_basis(g, opt, prhs[4], "dims_b", "DepB");
+  problem.nc = opt.integer("nc", 0);
+  problem.nd = opt.integer("nd", 0);
   ctid::LpvSettings<double> settings;
-  settings.tolerance = g.scalar(prhs[10], "tol");
-  settings.max_iterations =
-      static_cast<int>(g.integer_vector(prhs[11], "maxiter").at(0));
-  settings.a_init = optional_matrix(g, prhs[12], "Ainit");
-  settings.b_init = optional_matrix(g, prhs[13], "Binit");
-  if (settings.a_init.size() == 0 && settings.b_init.size() != 0) {
+  settings.tolerance = opt.scalar("tol", settings.tolerance);
+  settings.max_iterations = opt.integer("maxiter", settings.max_iterations);
+  if (!(settings.tolerance > 0) || settings.max_iterations < 1 ||
+      settings.max_iterations > 10000) {
+    g.fail("badOption", "tol must be > 0 and maxiter in 1..10000");
+  }
+  settings.a_init = opt.matrix("Ainit");
+  settings.b_init = opt.matrix("Binit");
+  opt.finish();
+  if ((settings.a_init.size() == 0) != (settings.b_init.size() == 0)) {
     g.fail("badInput", "Ainit and Binit go together");
   }
   ctid::LpvResult<double> result;
@@ -104,14 +124,10 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway(
       "simulLPVCT", {"simulLPVCT", "lpvsrivc", "lpvrivc"}, nrhs, prhs,
       [&](const Gateway& g) {
-        if (nrhs < 2) g.fail("badInput", "expected a function name and mode");
-        const std::string mode = g.text(prhs[1], "the mode");
-        if (mode == "simulate") {
+        if (g.name() == "simulLPVCT") {
           simulate(g, nlhs, plhs, nrhs, prhs);
-        } else if (mode == "estimate") {
-          estimate(g, nlhs, plhs, nrhs, prhs);
         } else {
-          g.fail("badInput", "unknown mode " + mode);
+          estimate(g, nlhs, plhs, nrhs, prhs);
         }
       });
 }

@@ -76,9 +76,9 @@ function varargout = simulLPVCT (varargin)
            "simulLPVCT: DepA and DepB must have one page per sample of u (%d), got %d and %d",
            numel (u), dims_a(3), dims_b(3));
   endif
-  varargout{1} = lpv_mex (fname, "simulate", double (u(:)), double (Ts),
-                          double (A), dep_a, dims_a, double (B), dep_b,
-                          dims_b);
+  opts = struct ("Ts", double (Ts), "A", double (A), "B", double (B),
+                 "dims_a", dims_a, "dims_b", dims_b);
+  varargout{1} = lpv_mex (fname, double (u(:)), dep_a, dep_b, opts);
 endfunction
 
 %!shared Ts, t, p, u, A, B, DepA, DepB

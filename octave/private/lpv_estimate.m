@@ -57,10 +57,10 @@ function [th, infos, ysim, c, d] = lpv_estimate (fname, nnlen, args)
   endif
   if (numel (args) >= 6 && ! isempty (args{6}))
     maxiter = args{6};
-    if (! (isnumeric (maxiter) && isscalar (maxiter) && maxiter >= 1
-           && maxiter == fix (maxiter)))
-      error ([fname ":badOption"], "%s: maxiter must be a positive integer",
-             fname);
+    if (! (isnumeric (maxiter) && isreal (maxiter) && isscalar (maxiter)
+           && maxiter >= 1 && maxiter <= 10000 && maxiter == fix (maxiter)))
+      error ([fname ":badOption"],
+             "%s: maxiter must be an integer in 1..10000", fname);
     endif
   endif
   if (numel (args) >= 7)
@@ -69,6 +69,13 @@ function [th, infos, ysim, c, d] = lpv_estimate (fname, nnlen, args)
   if (numel (args) >= 8)
     b_init = args{8};
   endif
+  for [m, name] = struct ("Ainit", a_init, "Binit", b_init)
+    if (! isempty (m) && ! (isnumeric (m) && isreal (m) && ismatrix (m)
+                            && all (isfinite (m(:)))))
+      error ([fname ":badInput"], "%s: %s must be a finite real matrix",
+             fname, name);
+    endif
+  endfor
   if (isempty (a_init) != isempty (b_init))
     error ([fname ":badInput"], "%s: give Ainit and Binit together", fname);
   endif
@@ -76,10 +83,12 @@ function [th, infos, ysim, c, d] = lpv_estimate (fname, nnlen, args)
   if (numel (nn) == 4)
     noise = nn(3:4);
   endif
+  opts = struct ("Ts", double (data.Ts), "dims_a", dims_a, "dims_b", dims_b,
+                 "nc", noise(1), "nd", noise(2), "tol", double (tol),
+                 "maxiter", double (maxiter), "Ainit", double (a_init),
+                 "Binit", double (b_init));
   [th, A, B, c, d, J, iterations, converged, ysim] = ...
-    lpv_mex (fname, "estimate", double (data.y), double (data.u),
-             double (data.Ts), dep_a, dims_a, dep_b, dims_b, double (noise),
-             double (tol), double (maxiter), double (a_init), double (b_init));
+    lpv_mex (fname, double (data.y), double (data.u), dep_a, dep_b, opts);
   infos = struct ("J", J, "Iteration", iterations,
                   "converged", logical (converged), "Arivc", A, "Brivc", B);
 endfunction

@@ -32,6 +32,10 @@ function r = lpv_frozen_roots (fname, C, Dep, is_den)
   if (is_den)
     traj = [repmat(C(1, 1), 1, dims(3)); traj];
   endif
+  if (! all (isfinite (traj(:))))
+    error ([fname ":numericalFailure"],
+           "%s: the frozen coefficients overflow (not finite)", fname);
+  endif
   nroots = rows (traj) - 1;
   r = NaN (nroots, dims(3));
   for k = 1:dims(3)
