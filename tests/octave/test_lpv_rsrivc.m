@@ -11,10 +11,12 @@
 ## coefficients), gives a(rho) and b(rho) for every rho; rsrivc
 ## ([nb nf nk] = [1 1 0], Kalman-filter adaptation with Qn = 1e-2 I, the
 ## best of Qn = 1e-5 .. 1 for this record: RMS errors 0.17, 0.22 against
-## 0.7 for 1e-5 and 3 for 1) tracks a(t), b(t) with a lag and noise. Required: the LPV coefficients within 0.1 of the true
-## ones (RMS over the record; the Euler model's O(Ts) bias is about
-## a Ts = 0.03), and the LPV trajectories closer to the truth than
-## RSRIVC's over the second half of the record (after RSRIVC's start-up).
+## 0.7 for 1e-5 and 3 for 1) tracks a(t), b(t) with a lag and noise.
+## Required: the LPV coefficients within 0.1 of the true ones (RMS over the
+## record; the Euler model has an O(Ts) bias here: backward differences,
+## and the held input lags the u_k that the model pairs with y_k by up to
+## one sample), and the LPV trajectories closer to the truth than RSRIVC's
+## over the second half of the record (after RSRIVC's start-up).
 function test_lpv_rsrivc ()
   Ts = 0.01;
   randn ("state", 21);
