@@ -57,3 +57,11 @@ endfunction
 %!error <Invalid call|called with> extractPoles (1)
 %!error id=extractPoles:dimensionMismatch extractPoles (ones (2, 3), ones (3, 2, 4))
 %!error id=extractPoles:badInput extractPoles ("a", ones (3, 2, 4))
+
+%!demo
+%! ## Frozen poles of s^2 + (2 - 1.5 r + 2 r^2) s + 5 + 3 r, r in [-1, 1]
+%! r = -1:0.01:1; DepA = zeros (3, 2, numel (r));
+%! DepA(:,1,:) = [ones(size(r)); r; r.^2];
+%! DepA(:,2,:) = [ones(size(r)); r; zeros(size(r))];
+%! P = extractPoles ([1 0 0; 2 -1.5 2; 5 3 0], DepA);
+%! plot (real (P(:)), imag (P(:)), "."); xlabel ("real"); ylabel ("imaginary");

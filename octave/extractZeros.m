@@ -51,3 +51,11 @@ endfunction
 
 %!error id=extractZeros:dimensionMismatch extractZeros (ones (2, 3), ones (2, 2, 4))
 %!error id=extractZeros:badInput extractZeros ([1 2], ones (2, 1, 4) * NaN)
+
+%!demo
+%! ## Frozen zero of (3 + 2 cos r) p + 5 - 3 sin(2 r), r in [-1, 1]
+%! r = -1:0.01:1; DepB = zeros (2, 2, numel (r));
+%! DepB(:,1,:) = [ones(size(r)); cos(r)];
+%! DepB(:,2,:) = [ones(size(r)); sin(2*r)];
+%! Z = extractZeros ([3 2; 5 -3], DepB);
+%! plot (r, real (Z)); xlabel ("scheduling value"); ylabel ("zero");

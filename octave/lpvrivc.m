@@ -92,3 +92,19 @@ endfunction
 %!error id=lpvrivc:badInput lpvrivc (ydet, u, Ts, [2 2 -1 0], DepA, DepB)
 %!error id=lpvrivc:dimensionMismatch lpvrivc (ydet, u, Ts, [2 2 0 2], DepA, DepB(:,:,1:100))
 %!error id=lpvrivc:numericalFailure lpvrivc (ydet, 0*u, Ts, [2 2 0 2], DepA, DepB)
+
+%!demo
+%! ## LPV Box-Jenkins estimate of CONTSID's example: AR(2) noise at 20 dB
+%! Ts = 0.005; t = 0:Ts:15; N = numel (t); p = sin (2*pi/3*t);
+%! u = rand (N, 1)*2 - 1;
+%! DepA = zeros (3, 2, N); DepB = zeros (2, 2, N);
+%! DepA(:,1,:) = [ones(size(p)); p; p.^2];
+%! DepA(:,2,:) = [ones(size(p)); p; zeros(size(p))];
+%! DepB(:,1,:) = [ones(size(p)); cos(p)];
+%! DepB(:,2,:) = [ones(size(p)); sin(2*p)];
+%! ydet = simulLPVCT (u, [1 0 0; 2 -1.5 2; 5 3 0], DepA, [3 2; 5 -3], DepB, Ts);
+%! v = filter (1, [1 -1 0.2], randn (N, 1));
+%! y = ydet + v / std (v) * 0.1 * std (ydet);
+%! [model, Ces, Des, infos, ysim] = lpvrivc (iddata (y, u, Ts), [2 2 0 2], DepA, DepB)
+%! plot (t(1:1000), y(1:1000), t(1:1000), ysim(1:1000));
+%! legend ("noisy output", "simulated LPV model");

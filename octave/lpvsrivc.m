@@ -129,3 +129,23 @@ endfunction
 %!error id=lpvsrivc:numericalFailure lpvsrivc (ydet, u, Ts, [2 2], repmat (DepA(:,:,1), [1 1 N]), repmat (DepB(:,:,1), [1 1 N]))
 %!error id=lpvsrivc:badOption lpvsrivc (ydet, u, Ts, [2 2], DepA, DepB, -1)
 %!error id=lpvsrivc:badInput lpvsrivc (ydet, u, Ts, [2 2], DepA, DepB, [], [], A)
+
+%!demo
+%! ## LPV output-error estimate of CONTSID's example at 20 dB, frozen poles
+%! Ts = 0.005; t = 0:Ts:15; N = numel (t); p = sin (2*pi/3*t);
+%! u = rand (N, 1)*2 - 1;
+%! DepA = zeros (3, 2, N); DepB = zeros (2, 2, N);
+%! DepA(:,1,:) = [ones(size(p)); p; p.^2];
+%! DepA(:,2,:) = [ones(size(p)); p; zeros(size(p))];
+%! DepB(:,1,:) = [ones(size(p)); cos(p)];
+%! DepB(:,2,:) = [ones(size(p)); sin(2*p)];
+%! A = [1 0 0; 2 -1.5 2; 5 3 0]; B = [3 2; 5 -3];
+%! y = simulLPVCT (u, A, DepA, B, DepB, Ts);
+%! y = y + 0.1 * std (y) * randn (N, 1);
+%! [th, infos] = lpvsrivc (iddata (y, u, Ts), [2 2], DepA, DepB)
+%! r = -1:0.02:1; DepAN = zeros (3, 2, numel (r));
+%! DepAN(:,1,:) = [ones(size(r)); r; r.^2];
+%! DepAN(:,2,:) = [ones(size(r)); r; zeros(size(r))];
+%! P0 = extractPoles (A, DepAN); P = extractPoles (infos.Arivc, DepAN);
+%! plot (real (P0(:)), imag (P0(:)), ".k", real (P(:)), imag (P(:)), "xg");
+%! legend ("true frozen poles", "LPV-SRIVC");

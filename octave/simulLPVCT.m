@@ -132,3 +132,15 @@ endfunction
 %!error id=simulLPVCT:badInput simulLPVCT (u, A, {DepA}, B, DepB, Ts)
 ## A recursion with no solution: 1/Ts^2 - 1/Ts + 0 = 0 at Ts = 1.
 %!error id=simulLPVCT:numericalFailure simulLPVCT (ones (5, 1), [1; -1; 0], ones (1, 2, 5), 1, ones (1, 1, 5), 1)
+
+%!demo
+%! ## CONTSID's LPV example: output of the LPV system, scheduling signal
+%! Ts = 0.005; t = 0:Ts:15; p = sin (2*pi/3*t); u = rand (numel (t), 1)*2 - 1;
+%! DepA = zeros (3, 2, numel (t)); DepB = zeros (2, 2, numel (t));
+%! DepA(:,1,:) = [ones(size(p)); p; p.^2];
+%! DepA(:,2,:) = [ones(size(p)); p; zeros(size(p))];
+%! DepB(:,1,:) = [ones(size(p)); cos(p)];
+%! DepB(:,2,:) = [ones(size(p)); sin(2*p)];
+%! y = simulLPVCT (u, [1 0 0; 2 -1.5 2; 5 3 0], DepA, [3 2; 5 -3], DepB, Ts);
+%! subplot (2, 1, 1); plot (t, y); title ("noise-free output");
+%! subplot (2, 1, 2); plot (t, p); title ("scheduling variable");
