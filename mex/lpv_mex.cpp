@@ -121,13 +121,12 @@ void estimate(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway(
-      "simulLPVCT", {"simulLPVCT", "lpvsrivc", "lpvrivc"}, nrhs, prhs,
-      [&](const Gateway& g) {
-        if (g.name() == "simulLPVCT") {
-          simulate(g, nlhs, plhs, nrhs, prhs);
-        } else {
-          estimate(g, nlhs, plhs, nrhs, prhs);
-        }
-      });
+  ctid::mex::run_gateway("simulLPVCT", {"simulLPVCT", "lpvsrivc", "lpvrivc"},
+                         nrhs, prhs, [&](const Gateway& g) {
+                           if (g.name() == "simulLPVCT") {
+                             simulate(g, nlhs, plhs, nrhs, prhs);
+                           } else {
+                             estimate(g, nlhs, plhs, nrhs, prhs);
+                           }
+                         });
 }

@@ -30,8 +30,10 @@
 ## (default 1e-4), or after @var{maxiter} iterations (default 50).
 ## @item Ainit, Binit
 ## an initial model in the format of @code{infos.Arivc}, @code{infos.Brivc}
-## (default: a least-squares estimate with the prefilter
-## 1/(p + 0.1/Ts)^na).
+## (default: least squares with the prefilter 1/(p + lambda)^na for
+## lambda = 0.3/Ts, 0.1/Ts, .. (8 values, factors of 3), keeping the
+## estimate whose simulated output fits the data best).  An iterate whose
+## auxiliary model is unstable is pulled back towards the previous one.
 ## @end table
 ##
 ## Outputs: @var{th}, the used coefficients as a column (a_1j .. a_na,j row

@@ -13,7 +13,8 @@
 // Linear regression. With f_ij(rho_k) the basis functions, a_ij, b_ij the
 // parameters, the model reads at every sample
 //
-//   D^na chi + sum_ij a_ij f_ij(rho) D^(na-i) chi = sum_ij b_ij g_ij(rho) D^(nb-i) u,
+//   D^na chi + sum_ij a_ij f_ij(rho) D^(na-i) chi = sum_ij b_ij g_ij(rho)
+//   D^(nb-i) u,
 //
 // linear in the parameters, with regressors that are products of the basis
 // functions with the derivatives of chi and u (the coefficients multiply the
@@ -42,12 +43,16 @@
 // the record is used, its unstable roots reflected.
 //
 // Initialisation (no A, B given): least squares on the same regression with
-// every product built from y, prefiltered by 1/(D + lambda)^na with
-// lambda = 0.1/Ts.
+// every product built from y, prefiltered by 1/(D + lambda)^na, for lambda
+// from 0.3/Ts down by factors of 3; the start is the estimate whose
+// auxiliary model fits the data best. During the iteration an estimate
+// whose auxiliary model is unstable (output not finite or 1e4 times the
+// data's scale) is pulled back towards the previous estimate.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -91,8 +96,14 @@ struct LpvResult {
                     // innovation variance for RIVC
   int iterations = 0;
   bool converged = false;
-  Vector<S> ysim;   // noise-free output of the estimated model
+  Vector<S> ysim;  // noise-free output of the estimated model
 };
+
+// Least-squares starts tried (prefilter cut-offs 0.3/Ts, 0.1/Ts, ..) and
+// halvings of a step towards the previous estimate when the new auxiliary
+// model is unstable.
+inline constexpr int kLpvInitialCutoffs = 8;
+inline constexpr int kLpvBacktracks = 8;
 
 namespace lpv_detail {
 
@@ -178,10 +189,14 @@ Status solve_scaled(const Matrix<S>& zeta, const Matrix<S>& phi,
   for (Eigen::Index c = 0; c < np; ++c) {
     const S norm = phi.col(c).norm();
     const S znorm = zeta.col(c).norm();
-    if (!(norm > 0) || !(znorm > 0) || !std::isfinite(norm)) {
-      return numerical_failure(
-          "too little excitation: regressor " + std::to_string(c + 1) +
-          " is zero or not finite (check u and the dependency arrays)");
+    if (!std::isfinite(norm) || !std::isfinite(znorm)) {
+      return numerical_failure("regressor " + std::to_string(c + 1) +
+                               " overflows (not finite)");
+    }
+    if (!(norm > 0) || !(znorm > 0)) {
+      return numerical_failure("too little excitation: regressor " +
+                               std::to_string(c + 1) +
+                               " is zero (check u and the dependency arrays)");
     }
     scale(c) = S(1) / norm;
   }
@@ -189,8 +204,8 @@ Status solve_scaled(const Matrix<S>& zeta, const Matrix<S>& phi,
   for (Eigen::Index c = 0; c < np; ++c) zscale(c) = S(1) / zeta.col(c).norm();
   const Matrix<S> m =
       zscale.asDiagonal() * (zeta.transpose() * phi) * scale.asDiagonal();
-  const Eigen::JacobiSVD<Matrix<S>> svd(m, Eigen::ComputeFullU |
-                                               Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Matrix<S>> svd(
+      m, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const auto& sv = svd.singularValues();
   if (!(sv(np - 1) > S(1e-11) * sv(0))) {
     return numerical_failure(
@@ -202,7 +217,8 @@ Status solve_scaled(const Matrix<S>& zeta, const Matrix<S>& phi,
   }
   const Vector<S> rhs = zscale.asDiagonal() * (zeta.transpose() * target);
   *theta = scale.asDiagonal() * svd.solve(rhs);
-  if (!theta->allFinite()) return numerical_failure("the estimate is not finite");
+  if (!theta->allFinite())
+    return numerical_failure("the estimate is not finite");
   return Status::Ok();
 }
 
@@ -222,8 +238,7 @@ Status validate(const LpvProblem<S>& problem) {
       return dimension_mismatch(
           std::string(basis == &problem.dep_a ? "DepA" : "DepB") + " has " +
           std::to_string(basis->num_samples) +
-          " samples (third dimension) but the data have " +
-          std::to_string(n) +
+          " samples (third dimension) but the data have " + std::to_string(n) +
           ": the scheduling signal must have one value per sample");
     }
     const Eigen::Index total =
@@ -243,8 +258,7 @@ Status validate(const LpvProblem<S>& problem) {
   if (problem.dep_b.num_coefficients > problem.dep_a.num_coefficients + 1) {
     return bad_input("nb must be <= na + 1 (a proper model)");
   }
-  if (problem.nc < 0 || problem.nd < 0 || problem.nc > 50 ||
-      problem.nd > 50) {
+  if (problem.nc < 0 || problem.nd < 0 || problem.nc > 50 || problem.nd > 50) {
     return bad_input("the noise orders nc, nd must be in 0..50");
   }
   for (Eigen::Index k = 0; k < n; ++k) {
@@ -263,8 +277,7 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
   Status status = validate(problem);
   if (!status.ok()) return status;
   if (!(settings.tolerance > 0) || settings.max_iterations < 1) {
-    return Status(ErrorCode::kBadOption,
-                  "tol must be > 0 and maxiter >= 1");
+    return Status(ErrorCode::kBadOption, "tol must be > 0 and maxiter >= 1");
   }
   const LpvBasis<S>& dep_a = problem.dep_a;
   const LpvBasis<S>& dep_b = problem.dep_b;
@@ -316,12 +329,26 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
   auto filter_columns = [&](const Vector<S>& num, const Vector<S>& den,
                             const Matrix<S>& in, Matrix<S>& out) {
     for (Eigen::Index c = 0; c < in.cols(); ++c) {
-      bj_detail::filter_dt<S>(num, den, in.col(c).data(), n,
-                              out.col(c).data());
+      bj_detail::filter_dt<S>(num, den, in.col(c).data(), n, out.col(c).data());
     }
   };
 
-  Vector<S> theta(np);
+  Matrix<S> a_hat, b_hat;
+  const S y_scale = y.cwiseAbs().maxCoeff();
+  // The auxiliary model of theta, simulated into chi: false when it cannot
+  // be simulated or its output leaves the scale of the data by far (an
+  // unstable model).
+  auto simulate_theta = [&](const Vector<S>& th, Vector<S>& out) {
+    theta_to_matrices<S>(th, terms, dep_a, dep_b, &a_hat, &b_hat);
+    if (!simulate_lpv<S>(problem.u, n, ts, a_hat, dep_a, b_hat, dep_b,
+                         out.data())
+             .ok()) {
+      return false;
+    }
+    return out.cwiseAbs().maxCoeff() <= S(1e4) * y_scale;
+  };
+
+  Vector<S> theta(np), chi(n), trial(n);
   if (settings.a_init.size() > 0 || settings.b_init.size() > 0) {
     status = check_lpv_model(settings.a_init, dep_a, settings.b_init, dep_b);
     if (!status.ok()) return status;
@@ -332,27 +359,53 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
                          : settings.b_init(t.coefficient, t.function)) /
                  a0;
     }
-  } else {
-    // Least squares, prefilter 1/(D + lambda)^na.
-    const S lambda = S(0.1) / ts;
-    Vector<S> lti(na);
-    S binomial = 1;
-    for (int i = 1; i <= na; ++i) {
-      binomial = binomial * S(na - i + 1) / S(i);
-      lti(i - 1) = binomial * std::pow(lambda, S(i));
+    if (!simulate_theta(theta, chi)) {
+      return numerical_failure(
+          "the initial model Ainit, Binit cannot be simulated on these data "
+          "(unstable)");
     }
-    const Vector<S> den = euler_polynomial<S>(lti, ts);
+  } else {
+    // Least squares with the prefilter 1/(D + lambda)^na for lambda on a
+    // grid from 0.3/Ts down by factors of 3; the start is the estimate
+    // whose auxiliary model fits the data best.
     const Vector<S> one = Vector<S>::Ones(1);
-    filter_columns(one, den, phi_raw_y, phi);
-    bj_detail::filter_dt<S>(one, den, dy.col(na).data(), n, target.data());
-    status = solve_scaled<S>(phi, phi, target, &theta);
-    if (!status.ok()) return status;
+    S best = std::numeric_limits<S>::infinity();
+    Status last = Status::Ok();
+    for (int c = 0; c < kLpvInitialCutoffs; ++c) {
+      const S lambda = S(0.3) / ts * std::pow(S(3), -S(c));
+      Vector<S> lti(na);
+      S binomial = 1;
+      for (int i = 1; i <= na; ++i) {
+        binomial = binomial * S(na - i + 1) / S(i);
+        lti(i - 1) = binomial * std::pow(lambda, S(i));
+      }
+      const Vector<S> den = euler_polynomial<S>(lti, ts);
+      filter_columns(one, den, phi_raw_y, phi);
+      bj_detail::filter_dt<S>(one, den, dy.col(na).data(), n, target.data());
+      Vector<S> candidate;
+      last = solve_scaled<S>(phi, phi, target, &candidate);
+      if (!last.ok()) {
+        if (c == 0) return last;  // the data do not excite the model
+        continue;
+      }
+      if (!simulate_theta(candidate, trial)) continue;
+      const S fit = (y - trial).squaredNorm();
+      if (fit < best) {
+        best = fit;
+        theta = candidate;
+        chi = trial;
+      }
+    }
+    if (!std::isfinite(best)) {
+      return numerical_failure(
+          "no least-squares start gives a stable auxiliary model; give an "
+          "initial model Ainit, Binit");
+    }
   }
 
-  Matrix<S> a_hat, b_hat;
-  Vector<S> chi(n), xi(n);
-  Matrix<S> dchi(n, na);
-  Vector<S> c_poly = Vector<S>::Ones(1), d_poly = Vector<S>::Ones(1);
+  Vector<S> xi(n);
+  Matrix<S> dchi(n, na + 1);
+  dchi.col(na).setZero();
   ArmaResult<S> arma;
   const bool noise_model = problem.nc + problem.nd > 0;
   HurwitzTest<S> hurwitz(na);
@@ -360,14 +413,6 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
   int iteration = 0;
   for (iteration = 1; iteration <= settings.max_iterations; ++iteration) {
     theta_to_matrices<S>(theta, terms, dep_a, dep_b, &a_hat, &b_hat);
-    status = simulate_lpv<S>(problem.u, n, ts, a_hat, dep_a, b_hat, dep_b,
-                             chi.data());
-    if (!status.ok()) {
-      return numerical_failure(
-          "the auxiliary model of iteration " + std::to_string(iteration) +
-          " cannot be simulated (" + status.message() +
-          "); give a stable initial model Ainit, Binit");
-    }
     // LTI part A_0 of the prefilter.
     Vector<S> a_lti = Vector<S>::Zero(na);
     for (Eigen::Index p = 0; p < np; ++p) {
@@ -386,25 +431,21 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
     Vector<S> num = Vector<S>::Ones(1);
     if (noise_model) {
       xi = y - chi;
-      ArmaSettings<S> arma_settings = settings.arma;
       status = arma_estimate<S>(xi.data(), n, problem.nd, problem.nc,
-                                arma_settings, &arma);
+                                settings.arma, &arma);
       if (!status.ok()) return status;
-      c_poly = arma.c;
-      d_poly = arma.d;
-      num = d_poly;
-      den = convolve<S>(den, c_poly);
+      num = arma.d;
+      den = convolve<S>(den, arma.c);
     }
     for (int m = 0; m < na; ++m) {
       backward_difference(chi.data(), n, w[m], dchi.col(m).data());
     }
-    Matrix<S> dchi_full(n, na + 1);
-    dchi_full.leftCols(na) = dchi;
-    dchi_full.col(na).setZero();
+    // Instruments: every product from chi_hat; regressors: those of the
+    // constant basis functions from y.
     for (Eigen::Index p = 0; p < np; ++p) {
       const LpvTerm& t = terms[p];
       if (t.is_a) {
-        product(t, dchi_full, raw.col(p).data());
+        product(t, dchi, raw.col(p).data());
       } else {
         raw.col(p) = phi_raw_y.col(p);
       }
@@ -419,8 +460,17 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
     Vector<S> next;
     status = solve_scaled<S>(zeta, phi, target, &next);
     if (!status.ok()) return status;
+    // An estimate whose auxiliary model is unstable is pulled back towards
+    // the previous one; if that fails the iteration stops (not converged).
+    bool usable = false;
+    for (int h = 0; h <= kLpvBacktracks && !usable; ++h) {
+      if (h > 0) next = (theta + next) / S(2);
+      usable = simulate_theta(next, trial);
+    }
+    if (!usable) break;
     const S change = (next - theta).norm() / std::max(next.norm(), S(1e-300));
     theta = next;
+    chi = trial;
     if (change < settings.tolerance) {
       result->converged = true;
       break;
@@ -428,12 +478,6 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
   }
   result->iterations = std::min(iteration, settings.max_iterations);
   theta_to_matrices<S>(theta, terms, dep_a, dep_b, &a_hat, &b_hat);
-  status = simulate_lpv<S>(problem.u, n, ts, a_hat, dep_a, b_hat, dep_b,
-                           chi.data());
-  if (!status.ok()) {
-    return numerical_failure("the estimated model cannot be simulated (" +
-                             status.message() + ")");
-  }
   result->theta = theta;
   result->a = a_hat;
   result->b = b_hat;

@@ -11,7 +11,8 @@
 // each coefficient a linear combination of scheduling-dependent basis
 // functions known at the samples,
 //
-//   a_i(rho_k) = sum_j A(i, j) fA(j, i, k),  b_i(rho_k) = sum_j B(i, j) fB(j, i, k)
+//   a_i(rho_k) = sum_j A(i, j) fA(j, i, k),  b_i(rho_k) = sum_j B(i, j) fB(j,
+//   i, k)
 //
 // (Laurain, Toth, Gilson, Garnier, IET Control Theory Appl. 5(7), 2011).
 // The basis values are CONTSID's dependency arrays DepA (n_dep x na x N) and
@@ -141,9 +142,8 @@ Status check_lpv_model(const Matrix<S>& a, const LpvBasis<S>& dep_a,
   if (b.rows() != dep_b.num_coefficients || b.cols() != dep_b.num_functions) {
     return dimension_mismatch(
         "B must be nb-by-n_dep = " + std::to_string(dep_b.num_coefficients) +
-        "-by-" + std::to_string(dep_b.num_functions) +
-        " for this DepB, got " + std::to_string(b.rows()) + "-by-" +
-        std::to_string(b.cols()));
+        "-by-" + std::to_string(dep_b.num_functions) + " for this DepB, got " +
+        std::to_string(b.rows()) + "-by-" + std::to_string(b.cols()));
   }
   if (dep_b.num_coefficients < 1) {
     return bad_input("the model needs at least one B coefficient (nb >= 1)");
@@ -185,7 +185,8 @@ Status simulate_lpv(const S* u, Eigen::Index n, S ts, const Matrix<S>& a,
   const S a0 = a(0, 0);
   // D^m u for m = 0..nb-1.
   Matrix<S> du(n, nb);
-  for (int m = 0; m < nb; ++m) backward_difference(u, n, wb[m], du.col(m).data());
+  for (int m = 0; m < nb; ++m)
+    backward_difference(u, n, wb[m], du.col(m).data());
   for (Eigen::Index k = 0; k < n; ++k) {
     // sum_i alpha_i D^(na-i) y_k = r_k, with y_k alone on the left.
     S r = 0;
