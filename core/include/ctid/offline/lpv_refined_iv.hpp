@@ -325,7 +325,6 @@ Status lpv_refined_iv(const LpvProblem<S>& problem,
   }
   Matrix<S> phi(n, np), zeta(n, np), raw(n, np);
   Vector<S> target(n);
-  std::vector<S> column(static_cast<std::size_t>(n));
   auto filter_columns = [&](const Vector<S>& num, const Vector<S>& den,
                             const Matrix<S>& in, Matrix<S>& out) {
     for (Eigen::Index c = 0; c < in.cols(); ++c) {
