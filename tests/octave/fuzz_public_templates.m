@@ -41,11 +41,20 @@ function tpl = fuzz_public_templates ()
   long = iddata (filter ([0 0.05 0.04], [1 -1.6 0.7], ul)
                  + 0.01 * sin (kl * 2.1), ul, Ts);
   ctl = {"controller", C, "r1", r, "r2", zeros(n, 1)};
+  ## LPV basis functions of a scheduling signal (na = 2, nb = 1)
+  pl = sin (k' * 0.05);
+  depa = zeros (2, 2, n);
+  depa(:,1,:) = [ones(1, n); pl];
+  depa(:,2,:) = [ones(1, n); pl];
+  depb = ones (1, 1, n);
+  alpv = [1 0; 3 0.5; 2 0.3];
 
   tpl = struct ();
   tpl.Ham = {{u}, {}};
   tpl.Wie = {{u}, {}};
   tpl.arx = {{data, [2 2 1]}, {gap, [2 1 1]}};
+  tpl.extractPoles = {{alpv, depa}};
+  tpl.extractZeros = {{[1 2; 3 4], ones(2, 2, 5)}};
   tpl.bandwidthc = {{M}, {2, [1 3 2]}};
   tpl.bode4frozensys = {{thm, [2 1], "w", w}, {M, "w", [1 2]}};
   tpl.bodeoptions = {{}, {"cstprefs"}};
@@ -77,6 +86,10 @@ function tpl = fuzz_public_templates ()
   tpl.phase = {{G}};
   tpl.prbs = {{7}, {7, 3}};
   tpl.present = {{M}, {P}};
+  tpl.lpvrivc = {{data, [1 2 0 1], depa, depb}, ...
+                 {y, u, Ts, [1 2 1 1], depa, depb, 1e-3, 5}};
+  tpl.lpvsrivc = {{data, [1 2], depa, depb}, ...
+                  {data, [1 2], depa, depb, 1e-4, 10, alpv, 0.05}};
   tpl.procsrivc = {{data, "P2U"}, {data, "P1D"}};
   tpl.qnml = {{data, [2 1 0], "lambda_svf", 3}};
   tpl.rarx = {{data, [2 2 1], "ff", 0.98}, {[y u], [2 2 1], "kf", 1e-3}};
@@ -107,6 +120,7 @@ function tpl = fuzz_public_templates ()
   tpl.simc_hw = {{hw, data}};
   tpl.sineresp = {{M, 1, (0:n-1)' * Ts}};
   tpl.spafdr = {{data}, {data, 20, w}};
+  tpl.simulLPVCT = {{u, alpv, depa, 2, depb, Ts}};
   tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, ...
                {data, [1 2 0], "lambda", 3}, ...
                {data, idpoly(1, 4, 1, 1, [1 2 4], "Ts", 0)}};

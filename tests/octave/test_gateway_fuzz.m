@@ -198,6 +198,28 @@ function test_gateway_fuzz ()
     {"rarx_mex", {"rarx", yp, u, xopts}, {"na", "nb", "nk", "Ts"}}
   };
 
+  ## The LPV simulator and refined IV (lpv_mex): y' + (2 + 0.5 p) y =
+  ## (1 + 0.3 p) u with p a sine, 200 samples, estimated from its own
+  ## noise-free output.
+  pl = sin (0.05 * (1:200));
+  dep = [ones(1, 200); pl];
+  ul = randn (200, 1);
+  lsim = struct ("Ts", 0.1, "A", [1 0; 2 0.5], "B", [1 0.3],
+                 "dims_a", [2 1 200], "dims_b", [2 1 200]);
+  yl = lpv_mex ("simulLPVCT", ul, dep, dep, lsim);
+  yln = yl + 0.01 * randn (200, 1);
+  lest = struct ("Ts", 0.1, "dims_a", [2 1 200], "dims_b", [2 1 200],
+                 "nc", 0, "nd", 1, "tol", 1e-4, "maxiter", 5, "Ainit", [],
+                 "Binit", []);
+  calls(end+1:end+3) = {
+    {"lpv_mex", {"simulLPVCT", ul, dep, dep, lsim}, ...
+     {"Ts", "A", "B", "dims_a", "dims_b"}}
+    {"lpv_mex", {"lpvsrivc", yl, ul, dep, dep, lest}, ...
+     {"Ts", "dims_a", "dims_b"}}
+    {"lpv_mex", {"lpvrivc", yln, ul, dep, dep, lest}, ...
+     {"Ts", "dims_a", "dims_b"}}
+  };
+
   covered = cellfun (@(c) c{1}, calls, "UniformOutput", false);
   missing = setdiff (gateways, covered);
   if (! isempty (missing))
