@@ -48,6 +48,9 @@ function tpl = fuzz_public_templates ()
   depa(:,2,:) = [ones(1, n); pl];
   depb = ones (1, 1, n);
   alpv = [1 0; 3 0.5; 2 0.3];
+  ## a skewed input for the errors-in-variables estimators
+  us = exp (sin (k * 0.37 + 0.3) + 0.4 * sin (k * 0.11));
+  eiv = iddata (filter ([0 0.05 0.04], [1 -1.6 0.7], us), us, Ts);
 
   tpl = struct ();
   tpl.Ham = {{u}, {}};
@@ -91,6 +94,8 @@ function tpl = fuzz_public_templates ()
   tpl.lpvsrivc = {{data, [1 2], depa, depb}, ...
                   {data, [1 2], depa, depb, 1e-4, 10, alpv, 0.05}};
   tpl.procsrivc = {{data, "P2U"}, {data, "P1D"}};
+  tpl.tocls = {{eiv, [2 1 0], 20, 3}, {eiv, [1 0 0], 10, "Tol", 1e-4}};
+  tpl.tocils = {{eiv, [2 1 0], 20}, {eiv, [2 1 0], 20, 5, 3, 1e-4}};
   tpl.qnml = {{data, [2 1 0], "lambda_svf", 3}};
   tpl.rarx = {{data, [2 2 1], "ff", 0.98}, {[y u], [2 2 1], "kf", 1e-3}};
   tpl.rarxc = {{data, [2 1 1], "lambda_svf", 3}};
