@@ -135,7 +135,8 @@ endfunction
 %! uf = ui(cumsum (accumarray (k, 1))(1:k(end)));
 %! Mi = idtf (2, [1 2], "IODelay", 0.123);
 %! yf = simc (Mi, iddata ([], uf, hf, "InterSample", "zoh"));
-%! di = iddata (yf(k), ui, "SamplingInstants", (k - 1) * hf);
+%! di = iddata (yf(k), ui, "SamplingInstants", (k - 1) * hf,
+%!              "InterSample", "zoh");
 %! M = tfsrivc (di, 1, 0, "TdMax", 1);
 %! assert (M.IODelay, 0.123, 1e-5);
 %! assert (getpvec (M), [2; 2; M.IODelay], 1e-4);   # [b f IODelay]
