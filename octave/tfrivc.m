@@ -133,6 +133,18 @@ endfunction
 %! assert (abs (MP.IODelay - 8) < 4 * sd);
 %! assert (abs (MP.IODelay - Ms.IODelay) > 0);
 
+%!test  # a structure the data cannot determine well (two poles for a
+%! ## first-order response with a noise model): a model, with the
+%! ## covariance left out when J'J gives none that is positive semi-definite
+%! randn ("state", 1);
+%! u1 = sign (randn (200, 1));
+%! y1 = filter ([0 0.3], [1 -0.7], u1) + 0.05 * randn (200, 1);
+%! warning ("off", "tfrivc:notConverged", "local");
+%! MP = tfrivc (iddata (y1, u1, 0.1), 2, 0, "NN", [1 1]);
+%! assert (isa (MP, "idtf") && all (isfinite (getpvec (MP))));
+%! C = getcov (MP);
+%! assert (isempty (C) || min (eig ((C + C') / 2)) > -1e-10 * norm (C, 1));
+
 %!error id=tfrivc:notSupported
 %! tfrivc (iddata (x, u, Ts), 2, 0, "Integration", "on")
 %!error id=tfrivc:badOption

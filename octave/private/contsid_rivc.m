@@ -302,13 +302,21 @@ function [M, info, d] = run_tfrivc (args)
   if (tinfo.delay_estimated)
     perm(end+1) = nth + 1;
   endif
-  M = setcov (M, cov(perm, perm));
+  ## (an ill-conditioned fit, e.g. an over-parametrised one, may have no
+  ## covariance to report: NaN or not positive semi-definite)
+  C = cov(perm, perm);
+  if (all (isfinite (C(:))))
+    C = (C + C.') / 2;
+    if (min (eig (C)) >= -1e-10 * max (norm (C, 1), realmin))
+      M = setcov (M, C);
+    endif
+  endif
   info = derived (info, d, theta, cov(1:nth, 1:nth));
   M.Report.Fit = fit_struct (info, d, numel (theta));
   M.Report.Parameters.IODelay = tdel;
   tdsd = 0;
   if (tinfo.delay_estimated)
-    tdsd = sqrt (P(end, end));
+    tdsd = sqrt (max (P(end, end), 0));
   endif
   M.Report.Parameters.IODelaySD = tdsd;
   M.Report.Status = "Estimated using TFRIVC";
