@@ -234,7 +234,8 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway("srivc",
                          {"lssvf", "ivsvf", "srivc", "clsrivc", "svfcutoff",
                           "srivcstruc", "residtrace", "comparec", "simc",
-                          "tfsrivc", "tfsrivc_init", "procsrivc", "tfcoe"},
+                          "tfsrivc", "tfsrivc_init", "procsrivc", "tfcoe",
+                          "tfrivc"},
                          nrhs, prhs, [&](const Gateway& g) {
                            refined_iv_gateway(g, nlhs, plhs, nrhs, prhs);
                          });

@@ -272,7 +272,8 @@ endfunction
 %! ui = double (sin (0.09 * k) + sign (sin (0.23 * k + 1)) > 0.2);
 %! uf = ui(cumsum (accumarray (k, 1))(1:k(end)));
 %! yf = simc (M0, iddata ([], uf, 0.01, "InterSample", "zoh"));
-%! di = iddata (yf(k), ui, "SamplingInstants", (k - 1) * 0.01);
+%! di = iddata (yf(k), ui, "SamplingInstants", (k - 1) * 0.01,
+%!              "InterSample", "zoh");
 %! init = idproc ("P2UD");
 %! init.Structure.Td.Maximum = 0.6;
 %! M = procsrivc (di, init);

@@ -41,7 +41,12 @@
 ## @strong{Data}: an @code{iddata} object, input-only
 ## (@code{iddata ([], u, Ts, "InterSample", "zoh")}) or with outputs (its
 ## input, sampling and InterSample are used), or numeric @var{u}
-## (N-by-nu) and @var{Ts} (scalar) or the N sampling instants.
+## (N-by-nu) and @var{Ts} (scalar) or the N sampling instants. For
+## irregularly sampled iddata without a given InterSample, the input's
+## rule is chosen from its smoothness, as CONTSID's @code{simc} does:
+## held (ZOH) when every change is followed by a sample without change,
+## else linear between the instants (FOH).  The response is then exact for
+## that input (not a Runge-Kutta approximation).
 ##
 ## @strong{Options}
 ## @table @code
@@ -473,7 +478,7 @@ function [u, t, intersample] = input_data (fname, data)
   else
     error ("simc:badInput", "simc: the data have no sampling interval");
   endif
-  intersample = info.InterSample;
+  intersample = contsid_intersample (u, info);
 endfunction
 
 function [c_num, c_den, r2] = parse_controller (fname, opts, n, Ts)

@@ -12,7 +12,14 @@
 ## sum_k |Y_k - G(j w_k) U_k|^2 over [a b td] (core @file{freq_srivc.hpp}),
 ## started from the frequency-domain SRIVC estimate of @code{tffsrivc}
 ## (whose delay search it shares). The data, options and outputs are those
-## of @code{tffsrivc}.
+## of @code{tffsrivc}. SRIVC's fixed point is itself a stationary point of
+## this loss (at convergence its instruments are the loss's Jacobian and
+## its equation error the output error, so the IV equations are the
+## normal equations), and the delay search minimises the loss
+## concentrated on td: from @code{tffsrivc}'s estimate the iteration
+## usually stops at once, and the two models agree to the tolerance. It
+## moves when SRIVC stopped at MaxIter or at a model it had to
+## stabilise.
 ##
 ## See @code{tffsrivc} for @var{data} (relay-feedback iddata, idfrd or
 ## frequency-domain iddata), the delay search, the options (@code{TdMin},
@@ -57,6 +64,28 @@ endfunction
 %! ## grid step): both sides of the grid minimum are searched, exact delay
 %! M = tffcoe (G, 2, 1, "NumTd", 10, "TdMax", 2);
 %! assert (get (M, "IODelay"), 0.37, 1e-7);
+
+%!test  # noisy frequency response: tffcoe = tffsrivc, because SRIVC's
+%! ## fixed point is a stationary point of the output-error loss (its
+%! ## instruments are the loss's Jacobian); an independent minimiser
+%! ## (fminsearch on sum |Y - G U|^2 over [b f td]) started beside it
+%! ## returns to it and finds no lower loss
+%! randn ("state", 4);
+%! s = 1i * w(:);
+%! G0 = (0.5 * s + 4) ./ (s.^2 + 1.2 * s + 4) .* exp (-0.37 * s);
+%! Gn = G0 + 0.05 * (randn (50, 1) + 1i * randn (50, 1)) / sqrt (2);
+%! d = idfrd (Gn, w, "Ts", 0);
+%! Mc = tffcoe (d, 2, 1);
+%! Ms = tffsrivc (d, 2, 1);
+%! p = getpvec (Mc);                          # [b1 b0 f1 f2 td]
+%! assert (p, getpvec (Ms), 1e-7 * norm (p));
+%! V = @(q) sum (abs (Gn - polyval (q(1:2), s) ./ polyval ([1; q(3:4)], s)
+%!                     .* exp (-s * q(5))) .^ 2);
+%! q = fminsearch (V, p .* (1 + 0.01 * [1; -1; 1; -1; 1]),
+%!                 optimset ("TolX", 1e-12, "TolFun", 1e-14,
+%!                           "MaxFunEvals", 2e4, "MaxIter", 2e4));
+%! assert (V (q) >= V (p) * (1 - 1e-9));
+%! assert (q, p, 1e-4 * norm (p));
 
 ## The delay search against an exhaustive scan of fixed delays (one copy
 ## for tffsrivc and tffcoe): tests/octave/test_freq_delay_scan.m.

@@ -11,18 +11,22 @@
 ## y(t_k) = B(p)/F(p) u(t_k - td) + C(q^-1)/D(q^-1) e(t_k),
 ## deg F = np, deg B = nz, deg D = nd, deg C = nc,
 ## @end example
-## by refined IV: @code{tfsrivc} gives the delay td (search and
-## refinement, or fixed with 'FixTd') and the start; RIVC
-## (core/include/ctid/offline/refined_iv_bj.hpp, as @code{rivc}) then iterates
-## the plant and the noise model with td kept, the delayed input filtered
-## exactly for any fraction of a sample.
+## by refined IV: @code{tfsrivc} gives the start (delay search and
+## refinement, Focus), then the delay is estimated jointly with the plant
+## and the noise model, as CONTSID does: RIVC
+## (core/include/ctid/offline/refined_iv_bj.hpp, as @code{rivc}) at each
+## delay, the delayed input filtered exactly for any fraction of a sample,
+## and Gauss-Newton steps on td that minimise the innovation variance
+## (the output error whitened by the noise model's D/C; the coefficients
+## re-estimated by RIVC projected out); with 'FixTd' 'on' td is kept.
 ##
 ## @var{data}: @code{iddata} (regular sampling). Options: @code{'NN'},
 ## [nd nc] (default [0 0]: then the result is tfsrivc's plant re-iterated
 ## by the same engine); all others (@code{FixTd}, @code{TdMin},
 ## @code{TdMax}, @code{NumTd}, @code{Lambda}, @code{MaxIter},
-## @code{TolPar}, ...) go to @code{tfsrivc} (MaxIter and TolPar also
-## stop the RIVC iterations), except @code{InitMethod}, the start of the
+## @code{TolPar}, @code{TolFun}, @code{StepMax}, ...) are tfsrivc's, for
+## the start and for the joint refinement (MaxIter and TolPar also stop
+## the RIVC iterations), except @code{InitMethod}, the start of the
 ## RIVC iterations: @qcode{"sriv"} (default: tfsrivc's SRIVC model),
 ## @qcode{"ivgpmf"} (= @qcode{"ivsvf"}: one IVSVF estimate, thesis eqs.
 ## 2.4-2.7, the state-variable filter (lambda/(p + lambda))^n that is
@@ -35,16 +39,21 @@
 ## has its right-half-plane poles reflected (p -> -conj (p)) with the
 ## warning @code{tfrivc:unstableStart}. @code{sys.Report.Parameters.InitMethod}
 ## says which start was used. @code{Focus} (CONTSID's cut-off fc, or a
-## band, as in @code{tfsrivc}; order @code{FocusOrder}, default 5)
-## prefilters the data of the RIVC iterations too, so the noise model is
-## that of the filtered data. @code{Integration} 'on' (CONTSID's
+## band; order @code{FocusOrder}, default 5) is tfsrivc's: the start is
+## first fitted to the prefiltered data (for the convergence of the
+## delay); RIVC and the joint refinement use the data as given.
+## @code{Integration} 'on' (CONTSID's
 ## enforced integrator) is @code{tfrivc:notSupported}: the RIVC
 ## iterations cannot hold a coefficient fixed (@code{tfsrivc} and
 ## @code{tfcoe} can).
 ##
-## @var{sys}: an @code{idtf} with IODelay = td, the covariance of [b; f]
-## (sigma_e^2 (sum zeta_f zeta_f')^-1, eq. 2.13; td counted as known),
-## @code{Report.Fit}, @code{Report.Parameters.NoiseModel}.
+## @var{sys}: an @code{idtf} with IODelay = td, the covariance of [b; f;
+## td] (sigma_e^2 (J' J)^-1, J the output's sensitivities whitened by
+## D/C; with 'FixTd' 'on' that of [b; f], sigma_e^2 (sum zeta_f
+## zeta_f')^-1, eq. 2.13), @code{Report.Fit},
+## @code{Report.Parameters.IODelaySD} (0 when fixed) and @code{.NoiseModel},
+## @code{Report.Termination} (RIVC's @code{Iterations}, the
+## @code{DelayIterations} of the refinement).
 ## @var{sysN}: the noise model, a discrete @code{idpoly} C/D (B = C,
 ## F = D, CONTSID's @code{idpoly (1, C, 1, 1, D, 0, Ts)} form) with
 ## NoiseVariance sigma_e^2.
@@ -92,19 +101,50 @@ endfunction
 %! assert (MN.F(2), -0.9, 0.05);
 %! assert (MN.B(2), 0.5, 0.1);
 
-%!test  # Focus: the RIVC iterations run on the prefiltered data (= tfrivc
-%! ## of data filtered by contsid's filter with Focus Inf, i.e. none)
+%!test  # Focus serves the start only: with the delay kept, RIVC on the
+%! ## data as given (the same model as without Focus)
 %! randn ("state", 8);
 %! v = filter ([1 0.5], [1 -0.9], 0.05 * randn (N, 1));
-%! [MP1, MN1] = tfrivc (iddata (x + v, u, Ts), 2, 0, 0.37, "FixTd", "on",
-%!                      "NN", [1 1], "Focus", 8, "FocusOrder", 3);
-%! c3 = [1 2 2 1];                       # 3rd-order Butterworth
-%! L = c2d (tf (8 ^ 3, c3 .* 8 .^ (0:3)), Ts, "prewarp", 8);
-%! [bL, aL] = tfdata (L, "vector");
-%! df = iddata (filter (bL, aL, x + v), filter (bL, aL, u), Ts);
-%! [MP2, MN2] = tfrivc (df, 2, 0, 0.37, "FixTd", "on", "NN", [1 1]);
+%! MP1 = tfrivc (iddata (x + v, u, Ts), 2, 0, 0.37, "FixTd", "on",
+%!               "NN", [1 1], "Focus", 8, "FocusOrder", 3);
+%! MP2 = tfrivc (iddata (x + v, u, Ts), 2, 0, 0.37, "FixTd", "on",
+%!               "NN", [1 1]);
 %! assert (getpvec (MP1), getpvec (MP2), 1e-6 * norm (getpvec (MP2)));
-%! assert ([MN1.B MN1.F], [MN2.B MN2.F], 1e-6);
+
+%!test  # CONTSID's TFRIVC demo (4/(s^2 + 2.8 s + 4), delay 8 s, nearly
+%! ## integrated ARMA noise at 15 dB): the delay estimated with the noise
+%! ## model lowers the innovation variance below RIVC's at tfsrivc's
+%! ## delay, both computed independently (simc, then the whitening filter
+%! ## D/C of each noise model), and its reported sd covers the truth
+%! M8 = idtf (4, [1 2.8 4], "IODelay", 8);
+%! u8 = prbs (8, 5);
+%! y8 = simc (M8, iddata ([], u8, 0.1, "InterSample", "zoh"));
+%! randn ("state", 21);
+%! e8 = filter ([1 0.2679], [1 -1.98 0.9802], randn (numel (u8), 1));
+%! y8 += 10 ^ (-15 / 20) * std (y8) / std (e8) * e8;
+%! d8 = iddata (y8, u8, 0.1, "InterSample", "zoh");
+%! [MP, MN] = tfrivc (d8, 2, 0, "NN", [2 1]);
+%! Ms = tfsrivc (d8, 2, 0);
+%! [MF, MNF] = tfrivc (d8, 2, 0, Ms.IODelay, "FixTd", "on", "NN", [2 1]);
+%! innov = @(M, N) var (filter (N.F, N.B, y8 - simc (M, d8)), 1);
+%! assert (innov (MP, MN) < innov (MF, MNF));
+%! sd = MP.Report.Parameters.IODelaySD;
+%! assert (sd > 0 && sd < 1e-3);
+%! assert (abs (MP.IODelay - 8) < 4 * sd);
+%! assert (abs (MP.IODelay - Ms.IODelay) > 0);
+
+%!test  # a structure the data cannot determine well (two poles for a
+%! ## first-order response with a noise model): a model, with the
+%! ## covariance left out when J'J gives none that is positive semi-definite
+%! randn ("state", 1);
+%! u1 = sign (randn (200, 1));
+%! y1 = filter ([0 0.3], [1 -0.7], u1) + 0.05 * randn (200, 1);
+%! warning ("off", "tfrivc:notConverged", "local");
+%! MP = tfrivc (iddata (y1, u1, 0.1), 2, 0, "NN", [1 1]);
+%! assert (isa (MP, "idtf") && all (isfinite (getpvec (MP))));
+%! C = getcov (MP);
+%! assert (isempty (C) || min (eig ((C + C') / 2)) > -1e-10 * norm (C, 1));
+
 %!error id=tfrivc:notSupported
 %! tfrivc (iddata (x, u, Ts), 2, 0, "Integration", "on")
 %!error id=tfrivc:badOption

@@ -91,9 +91,11 @@
 ## @code{tsam} is -1 (unspecified) for the irregular experiments.  Control's
 ## own @code{get (data, "SamplingInstants")} returns @code{w} too.
 ## @item @code{InterSample} goes to @code{userdata}.  With the default
-## @qcode{"zoh"} the field holds the user's @code{UserData} unchanged, so
-## an object built here with @qcode{"zoh"} equals the one control builds.
-## With @qcode{"foh"} it holds the struct
+## @qcode{"zoh"} (not given) the field holds the user's @code{UserData}
+## unchanged, so an object built here without InterSample equals the one
+## control builds.  When InterSample is given (also @qcode{"zoh"}: CONTSID
+## chooses the interpolation of irregularly sampled inputs whose
+## InterSample is not given, see @code{samplinginfo}) it holds the struct
 ## @code{struct ("InterSample", "foh", "UserData", @var{userdata})};
 ## @code{data.UserData} and @code{get}/@code{set} still give and take the
 ## user's own value.
@@ -258,7 +260,14 @@ endfunction
 %! s = struct (data);
 %! assert (s.userdata, struct ("InterSample", "foh", "UserData", {{1, "a"}}));
 %! data.InterSample = "zoh";
-%! assert (struct (data).userdata, {1, "a"});
+%! assert (data.UserData, {1, "a"});
+%! assert (struct (data).userdata,
+%!         struct ("InterSample", "zoh", "UserData", {{1, "a"}}));
+%! ## the default (InterSample not given) is stored as control stores it
+%! assert (struct (iddata (y, u, 0.1, "UserData", 3)).userdata, 3);
+%! assert (! samplinginfo (iddata (y, u, 0.1)).InterSampleGiven);
+%! assert (samplinginfo (iddata (y, u, 0.1, "InterSample",
+%!                               "zoh")).InterSampleGiven);
 
 ## InterSample and irregular instants survive sample indexing
 %!test

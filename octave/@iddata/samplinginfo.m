@@ -21,6 +21,9 @@
 ## @item InterSample
 ## @qcode{"zoh"}, @qcode{"foh"} or @qcode{"bl"}: the behaviour of the
 ## inputs between samples.
+## @item InterSampleGiven
+## true when InterSample was given (set), false for the default
+## @qcode{"zoh"}.
 ## @end table
 ##
 ## It reads objects built by this toolbox and by the control package alike;
@@ -35,10 +38,11 @@ function [info, varargout] = samplinginfo (dat, varargin)
     error ("iddata:badInput",
            "iddata: samplinginfo: 'dat' is a frequency-domain data set");
   endif
-  [~, intersample] = unpack_userdata (dat.userdata);
+  [~, intersample, given] = unpack_userdata (dat.userdata);
   nexp = numel (dat.y);
   info = struct ("Ts", cell (nexp, 1), "SamplingInstants", [],
-                 "Uniform", true, "InterSample", intersample);
+                 "Uniform", true, "InterSample", intersample,
+                 "InterSampleGiven", given);
   for k = 1:nexp
     n = rows (dat.y{k});
     if (! isempty (dat.w) && ! isempty (dat.w{k}))

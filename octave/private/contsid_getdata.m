@@ -33,7 +33,9 @@
 ## to rounding (16 eps of their class relative to their magnitude) count
 ## as uniform, with @code{Ts} their mean spacing.
 ## @item intersample
-## @qcode{"zoh"} or @qcode{"foh"}, from the @code{iddata} object;
+## @qcode{"zoh"} or @qcode{"foh"}, from the @code{iddata} object (for
+## irregular instants without a given InterSample, chosen from the
+## smoothness of the inputs: @code{contsid_intersample});
 ## @qcode{"zoh"} for numeric data.
 ## @item nconsumed
 ## how many of the arguments after @var{fname} were data: 1 for an
@@ -189,7 +191,7 @@ function [y, u, timing, intersample] = read_iddata (fname, data)
            "%s: 'data' has no sampling interval; build it as iddata (y, u, Ts)",
            fname);
   endif
-  intersample = info.InterSample;
+  intersample = contsid_intersample (u, info);
 endfunction
 
 ## x as a double matrix, after checking it is a real, finite (or NaN when

@@ -92,7 +92,8 @@ function d = read_data (fname, args)
       endif
       d = struct ("y", double (y), "u", double (u),
                   "t", info.SamplingInstants(:), "Ts", info.Ts,
-                  "uniform", info.Uniform, "intersample", info.InterSample,
+                  "uniform", info.Uniform,
+                  "intersample", contsid_intersample (double (u), info),
                   "nconsumed", 1);
       if (! d.uniform)
         d.Ts = NaN;

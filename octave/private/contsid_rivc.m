@@ -196,7 +196,11 @@ function [M, info, d] = run_cl2srivc (args)
   M.Report.Parameters.CovarianceLags = info.covariance_lags;
 endfunction
 
-## tfrivc (data, np, nz[, IODelay][, Name, Value]), 'NN', [nd nc]
+## tfrivc (data, np, nz[, IODelay][, Name, Value]), 'NN', [nd nc]: the
+## start by tfsrivc's front-end (delay search, Focus), then the delay
+## refined together with RIVC's plant and noise model (contsid_tfsrivc
+## with the noise model: Gauss-Newton steps on td on the whitened
+## output error, RIVC re-estimated at every delay).
 function [M, info, d] = run_tfrivc (args)
   fname = "tfrivc";
   [d, rest] = read_data (fname, args);
@@ -217,18 +221,15 @@ function [M, info, d] = run_tfrivc (args)
     endif
     rest = rest(2:end);
   endif
-  ## 'NN' is ours; every other option goes to tfsrivc (the plant start).
+  ## 'NN' is ours; every other option goes to tfsrivc's front-end (the
+  ## plant start and the delay refinement).
   NN = [0 0];
   pass = {};
   if (mod (numel (rest), 2) != 0)
     error ("tfrivc:badInput", "tfrivc: options must be name-value pairs");
   endif
-  tol = 1e-6;
-  maxiter = 30;
   init = [];
   lambda = [];
-  focus = Inf;
-  focus_order = 5;
   for i = 1:2:numel (rest)
     name = rest{i};
     if (! ischar (name))
@@ -246,16 +247,8 @@ function [M, info, d] = run_tfrivc (args)
       endif
     else
       pass(end+1:end+2) = rest(i:i+1);
-      if (strcmpi (name, "MaxIter"))
-        maxiter = rest{i+1};
-      elseif (strcmpi (name, "TolPar"))
-        tol = rest{i+1};
-      elseif (strcmpi (name, "Lambda"))
+      if (strcmpi (name, "Lambda"))
         lambda = rest{i+1};
-      elseif (strcmpi (name, "Focus"))
-        focus = rest{i+1};
-      elseif (strcmpi (name, "FocusOrder"))
-        focus_order = rest{i+1};
       endif
     endif
   endfor
@@ -267,27 +260,11 @@ function [M, info, d] = run_tfrivc (args)
   else
     targs = {data, np, nz, td, pass{:}};
   endif
-  try
-    Ms = tfsrivc (targs{:});
-  catch err
-    id = err.identifier;
-    k = index (id, ":");
-    reason = "badInput";
-    if (k > 0)
-      reason = id(k+1:end);
-    endif
-    error (["tfrivc:" reason], "tfrivc: %s",
-           regexprep (err.message, "^tfsrivc: ", ""));
-  end_try_catch
+  [Ms, o] = contsid_tf_front (fname, targs);
   [num, den] = tfdata (Ms, "vector");
   num = num(end - nz:end);
   tdel = Ms.IODelay;
-  ## a Focus filter (read and checked by tfsrivc above) prefilters the data
-  ## of the RIVC iterations too: the noise model is then that of the
-  ## filtered data
-  d = contsid_focus_filter (fname, d, contsid_focus_option (fname, focus),
-                            focus_order);
-  opts = struct ("lambda", [], "Tol", tol, "MaxIter", maxiter,
+  opts = struct ("lambda", [], "Tol", o.tolpar, "MaxIter", o.maxiter,
                  "ArmaMaxIter", 50);
   e = engine_options (fname, opts, d);
   e.nf = np; e.nb = nz + 1; e.nd = NN(1); e.nc = NN(2);
@@ -304,26 +281,60 @@ function [M, info, d] = run_tfrivc (args)
   else
     start.Theta = e.theta_init;
   endif
-  e = rmfield (e, intersect (fieldnames (e), {"cutoffs"}));
-  [theta, cov, info] = call_mex (fname, d, [], e);
+  ## RIVC at the delay (FixTd 'on') or with the delay refined jointly
+  o.noise = NN;
+  o.td0 = tdel;
+  o.theta0 = e.theta_init(:);
+  [num, den, tdel, P, tinfo] = contsid_tfsrivc (fname, d, np, nz, o);
+  info = tinfo.engine;
   info.start = Ms;
+  theta = [den(2:end), num].';
+  nth = np + nz + 1;
+  cov = info.covariance;
+  if (tinfo.delay_estimated)
+    cov = P;                  # [f b td], the whitened output sensitivities
+  endif
   f = theta(1:np).';
   b = theta(np+1:end).';
   M = idtf (b, [1 f], "IODelay", tdel);
-  ## idtf's parameter order is [b; f].
+  ## idtf's parameter order is [b; f (; td)].
   perm = [np + (1:nz+1), 1:np];
-  M = setcov (M, cov(perm, perm));
-  info = derived (info, d, theta, cov);
+  if (tinfo.delay_estimated)
+    perm(end+1) = nth + 1;
+  endif
+  ## (an ill-conditioned fit, e.g. an over-parametrised one, may have no
+  ## covariance to report: NaN or not positive semi-definite)
+  C = cov(perm, perm);
+  if (all (isfinite (C(:))))
+    C = (C + C.') / 2;
+    if (min (eig (C)) >= -1e-10 * max (norm (C, 1), realmin))
+      M = setcov (M, C);
+    endif
+  endif
+  info = derived (info, d, theta, cov(1:nth, 1:nth));
   M.Report.Fit = fit_struct (info, d, numel (theta));
   M.Report.Parameters.IODelay = tdel;
+  tdsd = 0;
+  if (tinfo.delay_estimated)
+    tdsd = sqrt (max (P(end, end), 0));
+  endif
+  M.Report.Parameters.IODelaySD = tdsd;
   M.Report.Status = "Estimated using TFRIVC";
   M.Report.Method = "tfrivc";
+  converged = info.converged && tinfo.converged;
+  reason = sprintf ("RIVC: %s; delay: %s", info.reason, tinfo.reason);
   M.Report.Termination = struct ("Iterations", info.iterations,
-                                 "Converged", info.converged,
-                                 "Reason", info.reason);
+                                 "DelayIterations", tinfo.iterations,
+                                 "Converged", converged,
+                                 "Reason", reason);
   M.Report.Parameters.NoiseModel = struct ("C", info.C, "D", info.D,
                                 "NoiseVariance", info.noise_variance);
   M.Report.Parameters.InitMethod = start;
+  if (! converged)
+    warning ("tfrivc:notConverged",
+             "tfrivc: no convergence (%s); the last iterate is returned",
+             reason);
+  endif
 endfunction
 
 function [d, rest] = read_data (fname, args, multi = false)

@@ -17,7 +17,10 @@
 ## values of the fixed entries, e.g. a pole at 0),
 ## @code{search_only} (the grid only: tfsrivc_init), and optionally
 ## @code{tdmax_auto} (true: tdmax is a default, extended while the grid's
-## minimum lies at its upper end; @var{info}.tdmax the range used).
+## minimum lies at its upper end; @var{info}.tdmax the range used) and
+## @code{noise} (tfrivc: [nd nc], a discrete ARMA noise model C/D
+## estimated with the plant by RIVC, core refined_iv_bj.hpp through
+## rivc_mex, at every delay; regular sampling only).
 ##
 ## Delay: the loss V(td) (simulation-error variance of the SRIVC model at
 ## td) is evaluated on a grid of @code{numtd} delays in [tdmin, tdmax];
@@ -26,13 +29,20 @@
 ## re-estimated at every new td, halved (by @code{stepreduction}) while
 ## the loss does not decrease, bounded by @code{stepmax} and the range.
 ## Stops when the step is below @code{tolpar} sampling intervals or the
-## relative loss decrease below @code{tolfun}.
+## relative loss decrease below @code{tolfun}. With a noise model the
+## loss is the innovation variance of the RIVC model at td and the
+## residual and sensitivities of the step are prefiltered by D/C(q^-1)
+## (the whitening filter of the noise model, the discrete part of RIVC's
+## prefilter: thesis sec. 2.1.2, eq. 2.9 for the Box-Jenkins model), so
+## that the delay is estimated jointly with the plant and the noise model,
+## as a prediction-error estimate.
 ##
 ## @var{P}: covariance of [f; b; td] (td estimated) or [f; b] (fixed),
 ## sigma^2 (J' J)^-1 with J the sensitivities of the simulated output
-## (central differences); for [f; b] alone this is SRIVC's eq. (2.13)
-## covariance. @var{info}: loss, grid, grid_loss, iterations,
-## converged, reason, simulated, engine (the engine's info).
+## (central differences; whitened by D/C with a noise model); for [f; b]
+## alone this is SRIVC's eq. (2.13) covariance. @var{info}: loss, grid,
+## grid_loss, iterations, converged, reason, simulated, engine (the
+## engine's info).
 ## @end deftypefn
 
 function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
@@ -60,6 +70,10 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
   endif
   info = struct ("grid", [], "grid_loss", [], "iterations", 0,
                  "converged", true, "reason", "");
+  noise = [];
+  if (isfield (o, "noise"))
+    noise = o.noise;
+  endif
 
   if (! isempty (o.td0))
     tdgrid = [];
@@ -115,8 +129,8 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
       info.iterations = it;
       ## Variable-projection step: the td sensitivity with the part that
       ## the coefficients re-estimated by SRIVC absorb projected out.
-      g = sensitivity (cur, "td");
-      Jt = theta_jacobian (cur);
+      g = whiten (cur, sensitivity (cur, "td"));
+      Jt = whiten (cur, theta_jacobian (cur));
       if (columns (Jt) > 0)
         g -= Jt * (Jt \ g);
       endif
@@ -125,7 +139,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
         info.reason = "the output does not depend on the delay";
         break;
       endif
-      step = (g' * (d.y - cur.sim)) / gg;
+      step = (g' * whiten (cur, d.y - cur.sim)) / gg;
       step = sign (step) * min (abs (step), o.stepmax);
       accepted = false;
       for k = 1:10
@@ -178,6 +192,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
   if (est_td)
     J(:, end+1) = sensitivity (cur, "td");
   endif
+  J = whiten (cur, J);
   A = J' * J;
   if (rcond (A) > eps)
     C = cur.loss * inv (A);
@@ -195,8 +210,13 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
   info.engine = cur.info;
   info.delay_estimated = logical (est_td);
 
-  ## SRIVC at delay td from theta0 ([] = the engine's automatic start).
+  ## SRIVC (RIVC with a noise model) at delay td from theta0 ([] = the
+  ## engine's automatic start).
   function r = fit (td, theta0)
+    if (! isempty (noise))
+      r = fit_rivc (td, theta0);
+      return;
+    endif
     ee = e;
     ee.delay = td;
     if (! isempty (theta0))
@@ -207,6 +227,44 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
                 "sim", inf.simulated, "info", inf);
     if (! inf.stable)
       r.loss = Inf;
+    endif
+  endfunction
+
+  ## RIVC of the plant and the ARMA noise model C/D at delay td (nk whole
+  ## samples and the fraction, filtered exactly); the loss is the
+  ## innovation variance.
+  function r = fit_rivc (td, theta0)
+    ee = struct ("nf", np, "nb", nz + 1, "nd", noise(1), "nc", noise(2),
+                 "nk", floor (td / d.Ts + 1e-9), "tol", o.tolpar,
+                 "maxiter", o.maxiter, "arma_maxiter", 50,
+                 "intersample", double (strcmpi (d.intersample, "foh")));
+    ee.delay = max (td - ee.nk * d.Ts, 0);
+    if (! isempty (theta0))
+      ee.theta_init = theta0(:);
+    endif
+    if (isfield (e, "cutoffs"))
+      ee.cutoffs = e.cutoffs;
+    endif
+    try
+      [th, cv, inf] = rivc_mex (fname, double (d.y), double (d.u),
+                                double (d.Ts), [], ee);
+    catch err
+      contsid_rethrow (err);
+    end_try_catch
+    inf.stable = all (real (roots ([1; th(1:np)])) < 0);
+    inf.covariance = cv;
+    r = struct ("td", td, "theta", th, "loss", inf.noise_variance,
+                "sim", inf.simulated, "info", inf);
+    if (! inf.stable || ! isfinite (r.loss))
+      r.loss = Inf;
+    endif
+  endfunction
+
+  ## x (columns) through the noise model's whitening filter D/C(q^-1);
+  ## x itself without a noise model.
+  function x = whiten (r, x)
+    if (! isempty (noise) && ! isempty (x))
+      x = filter (r.info.D, r.info.C, x);
     endif
   endfunction
 

@@ -74,6 +74,13 @@ function test_contsid_getdata ()
   d = contsid_getdata ("rsrivc", iddata (y, u, ti));
   assert (d.t, ti);
   assert (d.uniform, false);
+  ## irregular, InterSample not given: CONTSID's rule from the inputs'
+  ## smoothness (u(:, 2) = cos (t) is smooth: linear between the instants;
+  ## a held input alone: zoh); a given InterSample is kept
+  assert (d.intersample, "foh");
+  d = contsid_getdata ("rsrivc", iddata (y, u(:, 1), ti));
+  assert (d.intersample, "zoh");
+  d = contsid_getdata ("rsrivc", iddata (y, u, ti, "InterSample", "zoh"));
   assert (d.intersample, "zoh");
   ## InterSample and instants survive indexing
   d = contsid_getdata ("rsrivc", iddata (y, u, ti, "InterSample", "foh")(5:20));

@@ -51,10 +51,10 @@ function dat = assign_property (dat, name, val, key, who)
                "%s: '%s' must be \"zoh\", \"foh\" or \"bl\"", who, key);
       endif
       userdata = unpack_userdata (dat.userdata);
-      dat.userdata = pack_userdata (userdata, lower (val));
+      dat.userdata = pack_userdata (userdata, lower (val), true);
     case "UserData"
-      [~, intersample] = unpack_userdata (dat.userdata);
-      dat.userdata = pack_userdata (val, intersample);
+      [~, intersample, given] = unpack_userdata (dat.userdata);
+      dat.userdata = pack_userdata (val, intersample, given);
     case {"TimeUnit", "Name"}
       if (! (ischar (val) && rows (val) <= 1))
         error ("iddata:badInput", "%s: '%s' must be a string", who, key);

@@ -157,7 +157,8 @@ function dat = join_sets (dim, sets, who)
               "(experiments)"], who);
   endswitch
   [user, ~] = unpack_userdata (s(1).userdata);
-  out.userdata = pack_userdata (user, intersample);
+  given = arrayfun (@(x) nthargout (3, @unpack_userdata, x.userdata), s);
+  out.userdata = pack_userdata (user, intersample, any (given));
   dat = sets{1};
   for [val, key] = out
     dat.(key) = val;

@@ -8,7 +8,8 @@
 ## the user's own value @var{user} and the inter-sample behaviour @var{is}
 ## (@qcode{"zoh"} when the field was not written by @code{pack_userdata},
 ## e.g. for objects built by the control package).  @var{packed} tells
-## whether the field was a wrapper.
+## whether the field was a wrapper, i.e. whether InterSample was given
+## (the default @qcode{"zoh"} is not wrapped).
 ## @seealso{pack_userdata}
 ## @end deftypefn
 

@@ -24,9 +24,21 @@
 // back exactly (a_i = sigma^i a'_i, b of power p: sigma^(n-p) b').
 //
 // The delay: fixed, or a grid search of the SRIVC loss over
-// [td_min, td_max] refined by golden section on each side of each of
-// the three best local minima of the grid, the lowest refined loss kept (the
-// loss is separable in td, Chen, Zhuan, Garnier & Gilson, Automatica 2018).
+// [td_min, td_max], then around each of the best local minima of the grid
+// (up to eight) a scan of the two neighbouring grid steps with a sixteenth
+// of a step, and golden section around each local minimum of that scan;
+// the lowest refined loss is kept (the loss is separable in td, Chen,
+// Zhuan, Garnier & Gilson, Automatica 2018). The loss of relay data has
+// several minima within one grid step (the harmonics' phases wrap at
+// different td); the fine scan puts the golden section in the basin of
+// the lowest of them.
+//
+// At the SRIVC fixed point the instruments are the output-error
+// Jacobian (zeta = d(G U)/d theta: X_f = B U / A^2 for the a's, U / A for
+// the b's) and A Y_f - B U_f = Y - G U, so the IV equations are the
+// normal equations J^T E = 0 of the output-error criterion: SRIVC's
+// estimate is a stationary point of sum |Y - G U|^2, and with the delay at
+// the minimum of the concentrated loss, of the joint criterion too.
 // Output error (TFFCOE; oe and tfest on frequency data): the weighted
 // nonlinear least squares sum_k |Y_k - G(j w_k) U_k|^2 over [a b (td)]
 // (the frequency-domain form of the output-error criterion, thesis eq.
@@ -567,7 +579,7 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
       }
       std::sort(minima.begin(), minima.end(),
                 [&](int i, int j) { return grid_cost[i] < grid_cost[j]; });
-      const std::size_t kept = std::min<std::size_t>(minima.size(), 3);
+      const std::size_t kept = std::min<std::size_t>(minima.size(), 8);
       for (std::size_t k = 0; k < kept; ++k)
         starts.push_back(settings.td_min + step * minima[k]);
     } else {
@@ -612,16 +624,29 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
       return loss(*at);
     };
     S best_cost = std::numeric_limits<S>::infinity();
-    // Each side of a grid minimum separately: the loss can have two minima
-    // within one grid step of it (e.g. a delay traded for a zero).
+    // The loss can have several minima within one grid step of a grid
+    // minimum (the harmonics' phases, a delay traded for a zero): a fine
+    // scan of [centre - step, centre + step], then golden section between
+    // the neighbours of each local minimum of the scan.
+    const int sub = 16;
     for (const S centre : starts) {
-      for (int side = 0; side < 2; ++side) {
-        S at = centre;
-        const S c = side == 0 ? golden(centre - step, centre, &at)
-                              : golden(centre, centre + step, &at);
-        if (c < best_cost || !std::isfinite(best_cost)) {
-          best_cost = c;
-          td = at;
+      const S h = step / sub;
+      std::vector<S> at(2 * sub + 1), c(2 * sub + 1);
+      for (int i = 0; i <= 2 * sub; ++i) {
+        at[i] = std::min(std::max(centre + (i - sub) * h, settings.td_min),
+                         settings.td_max);
+        c[i] = loss(at[i]);
+      }
+      for (int i = 0; i <= 2 * sub; ++i) {
+        if (!std::isfinite(c[i])) continue;
+        if ((i > 0 && c[i] > c[i - 1]) || (i < 2 * sub && c[i] > c[i + 1]))
+          continue;
+        S x = at[i];
+        const S cx = golden(at[i] - h, at[i] + h, &x);
+        const S cbest = std::min(cx, c[i]);
+        if (cbest < best_cost || !std::isfinite(best_cost)) {
+          best_cost = cbest;
+          td = cx <= c[i] ? x : at[i];
         }
       }
     }
