@@ -17,7 +17,10 @@
 ## as @code{rlssvf}; add @code{"order", "bf"} for @code{rsrivc}'s),
 ## simulated as the frozen model of each sample.  The model is simulated
 ## on the whole input of @var{data} (an iddata set, input-output, or
-## numeric y, u, Ts) from rest; @var{INT}, increasing sample indices,
+## numeric y, u, Ts) from rest, at the levels it carries (as
+## @code{simc}: a model @code{srivc} estimated on a raw record is compared
+## with the raw record, y = c + M (u - d); see @code{help idpoly});
+## @var{INT}, increasing sample indices,
 ## selects the samples that are compared, returned and plotted (all by
 ## default).
 ##
@@ -42,6 +45,10 @@
 ## record) and its free response added to @var{ys}; @code{estInfo.x0}
 ## holds it and the printed summary says so.  Default @qcode{"z"}: from
 ## rest (@code{estInfo.x0} empty).
+##
+## Option @code{"Levels"}: @qcode{"carried"} (default) or
+## @qcode{"ignore"}, MATLAB's @code{compare}: the model alone, without
+## the levels it carries (give data with the offsets removed).
 ##
 ## @strong{Example}
 ## @example

@@ -37,6 +37,11 @@
 ## @end table
 ## Without outputs it plots both correlations with their bounds.
 ## Option @code{"maxlag"}: the largest lag m (default 25; N must exceed it).
+## Option @code{"Levels"}: @qcode{"carried"} (default), yh is the model
+## at the levels it carries (as @code{comparec} and @code{simc}: a model
+## @code{srivc} estimated on a raw record, y - c = M (u - d); see
+## @code{help idpoly}), or @qcode{"ignore"}, the model alone (give data
+## with the offsets removed).
 ##
 ## @strong{Example}
 ## @example

@@ -61,6 +61,15 @@
 ## controllable canonical state), default at rest.
 ## @item substeps
 ## integration sub-steps per sample (default 1), for fast parameter changes.
+## @item Levels
+## @qcode{"carried"} (default): a model that carries levels (@code{srivc}
+## on a raw record stores them in @code{M.Report.DataUsed.InputOffset}
+## and @code{OutputOffset}; see @code{help idpoly}) is simulated as it
+## was estimated, y = c + M (u - d) from rest at those levels: the input
+## data are in the record's raw units and so is @var{y} (@var{x} too;
+## @var{uc} is the raw input). @qcode{"ignore"}: the model alone, as
+## MATLAB's @code{sim}; remove the offsets from the data yourself.
+## SNR is measured on the response about the levels.
 ## @item controller, r2
 ## closed loop u = r1 + C(q^-1) (r2 - y) (thesis eq. 2.39): the controller
 ## as a struct with fields @code{num} and @code{den} (coefficients of
@@ -111,8 +120,19 @@ function varargout = simc (varargin)
   endif
   defaults = struct ("SNR", [], "noisevar", [], "noise", [],
                      "InterSample", [], "x0", [], "substeps", 1,
-                     "controller", [], "r2", [], "InitialCondition", "z");
+                     "controller", [], "r2", [], "InitialCondition", "z",
+                     "Levels", "carried");
   opts = contsid_options (fname, defaults, rest);
+  ## The model's levels (docs/conventions-levels.md), applied here once
+  ## for every kind of model: y = c + M (u - d), from rest at them.
+  ny = 1;
+  if (isstruct (model))
+    ny = model.ny;
+  endif
+  [c_lev, d_lev] = contsid_carried_levels (varargin{1}, columns (u), fname,
+                                           opts.Levels, ny);
+  u_raw = u;
+  u -= d_lev;
   if (! isempty (opts.InterSample))
     intersample = check_intersample (fname, opts.InterSample);
   endif
@@ -137,7 +157,8 @@ function varargout = simc (varargin)
     endif
     x = simulate_model (model, u, t, intersample, substeps);
     e = noise (opts, x);
-    varargout = {x + e, x, u};
+    x += c_lev;
+    varargout = {x + e, x, u_raw};
     return;
   endif
 
@@ -167,14 +188,21 @@ function varargout = simc (varargin)
     endif
     ## P_x of the noise-free output (in closed loop: of the noise-free loop).
     xf = call_gateway (1, u, t, intersample, orders, theta, substeps, x0,
-                       [], c_num, c_den, r2);
+                       [], c_num, c_den, r2 - c_lev);
     e = randn (n, 1);
     e = e * sqrt (mean (xf .^ 2) / 10 ^ (snr / 10)) / sqrt (mean (e .^ 2));
   endif
-  ## The gateway returns [x, y, uc]; simc returns [y, x, uc].
+  ## The gateway returns [x, y, uc]; simc returns [y, x, uc]. In closed
+  ## loop u = r1 + C (r2 - y) with y = c + x reads u - d = (r1 - d) +
+  ## C ((r2 - c) - (y - c)): the loop about the levels.
   outs = cell (1, max (2, nargout));
   [outs{:}] = call_gateway (numel (outs), u, t, intersample, orders, theta,
-                            substeps, x0, e, c_num, c_den, r2);
+                            substeps, x0, e, c_num, c_den, r2 - c_lev);
+  outs{1} += c_lev;
+  outs{2} += c_lev;
+  if (numel (outs) > 2)
+    outs{3} += d_lev;
+  endif
   varargout = outs([2 1 3:end]);
   ic = opts.InitialCondition;
   if (! ischar (ic) || ! any (strcmpi (ic, {"z", "e", "zero", "estimate"})))

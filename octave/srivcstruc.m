@@ -187,11 +187,9 @@ function [V, info, varargout] = srivcstruc (varargin)
       y = ye(used_e);
       ys = ys(used_e(present_e));
     else
-      ## the model as estimated: with the levels it carries (srivc on a
-      ## raw record, Report.DataUsed.OutputOffset and InputOffset)
-      [c, d] = contsid_carried_levels (M, columns (uv));
-      ## on ZV's own sampling and InterSample (ZOH/FOH, irregular instants)
-      ys = simc (M, set (ZV, "InputData", uv - d)) + c;
+      ## the model as estimated: simc applies the levels it carries (srivc
+      ## on a raw record), on ZV's own sampling and InterSample
+      ys = simc (M, ZV);
       if (ic == "e")
         [ys, info.x0{k}] = free_response (M, yv, ys, tv);
       endif
@@ -346,7 +344,8 @@ endfunction
 %! M = info.models{1};
 %! assert (M.Report.DataUsed.OutputOffset, y0, 0.5);
 %! ys = simc (M, get (ZVr, "InputData") - M.Report.DataUsed.InputOffset,
-%!            get (ZVr, "Ts")) + M.Report.DataUsed.OutputOffset;
+%!            get (ZVr, "Ts"), "Levels", "ignore") ...
+%!      + M.Report.DataUsed.OutputOffset;
 %! assert (info.fit(1), 100 * (1 - norm (yv - ys) / norm (yv - mean (yv))),
 %!         1e-9);
 %! assert (V(1, 1) > 0.9);
@@ -364,7 +363,8 @@ endfunction
 %! [V, info] = srivcstruc (ZE, ZVx, [1 2 0], "NN", "list",
 %!                         "InitialCondition", "e");
 %! M = info.models{1};
-%! ys0 = simc (M, uv - M.Report.DataUsed.InputOffset, Ts) ...
+%! ys0 = simc (M, uv - M.Report.DataUsed.InputOffset, Ts, "Levels",
+%!             "ignore") ...
 %!       + M.Report.DataUsed.OutputOffset;
 %! F = M.F / M.F(1);
 %! A = [0 1; -F(3) -F(2)];
@@ -415,7 +415,8 @@ endfunction
 %!     M = info.models{1};
 %!     zvu = set (zv, "InputData",
 %!                get (zv, "InputData") - M.Report.DataUsed.InputOffset);
-%!     [~, ci] = comparec (zvu, M, "InitialCondition", ic{1});
+%!     [~, ci] = comparec (zvu, M, "InitialCondition", ic{1},
+%!                         "Levels", "ignore");
 %!     assert (V(1, 1), ci.RT2, 1e-9);
 %!     assert (V(1, 1) > 0.9);
 %!   endfor
@@ -437,7 +438,8 @@ endfunction
 %! assert (V(1, 1) > 0.99 && V(1, 1) > V(2, 1));
 %! M = info.models{1};
 %! [~, ci] = comparec (set (Z2, "InputData", get (Z2, "InputData")
-%!                     - M.Report.DataUsed.InputOffset), M);
+%!                     - M.Report.DataUsed.InputOffset), M,
+%!                     "Levels", "ignore");
 %! assert (V(1, 1), ci.RT2, 1e-9);
 %! S = srivcstruc (Z1, [], [1 1 1 1 0 0; 1 2 2 2 0 0]);
 %! assert (S(:, 3:8), [1 1 1 1 0 0; 1 2 1 1 0 0; 1 1 1 2 0 0;
