@@ -42,8 +42,13 @@
 ## information criterion on ZE, the structure, log10 of the condition
 ## number of the instrument-regressor matrix, and the number of samples
 ## used. A structure whose fit failed has RT2 = YIC = NaN. @var{info}:
-## per structure @code{models} (cell), @code{converged}, @code{stable},
-## @code{fit} (validation fit in per cent, 100 (1 - |y - y_sim| /
+## per structure @code{models} (cell), @code{status} (cell: each fit's
+## status record as @code{srivc} reports it in @var{info}.status and
+## @code{M.Report.Termination}: @code{converged}, @code{determined},
+## @code{stable}, @code{reason}, @code{text}), its flags
+## @code{converged}, @code{stable} and @code{determined} (false: srivc
+## found the structure over-parameterised), @code{fit} (validation fit in
+## per cent, 100 (1 - |y - y_sim| /
 ## |y - mean y|)), @code{x0} (cell: the initial state estimated with
 ## @code{"InitialCondition", "e"}, as @code{comparec}'s
 ## @code{estInfo.x0}; empty without it, and for a model whose state
@@ -161,7 +166,8 @@ function [V, info, varargout] = srivcstruc (varargin)
   ns = rows (structures);
   V = NaN (ns, 2 + columns (structures) + 2);
   info = struct ("models", {cell(ns, 1)}, "converged", false (ns, 1),
-                 "stable", false (ns, 1), "fit", NaN (ns, 1),
+                 "stable", false (ns, 1), "determined", false (ns, 1),
+                 "status", {cell(ns, 1)}, "fit", NaN (ns, 1),
                  "x0", {cell(ns, 1)});
   for k = 1:ns
     nn = structures(k, :);
@@ -177,8 +183,11 @@ function [V, info, varargout] = srivcstruc (varargin)
       continue;                          # this structure cannot be fitted
     end_try_catch
     info.models{k} = M;
-    info.converged(k) = est.converged;
-    info.stable(k) = est.stable;
+    ## srivc's own status record, not a second judgement
+    info.status{k} = est.status;
+    info.converged(k) = est.status.converged;
+    info.stable(k) = est.status.stable;
+    info.determined(k) = est.status.determined;
     if (isempty (ZV))
       ys = est.simulated;
       if (ic == "e")

@@ -288,6 +288,10 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   M = carried_levels (M, info, nu);
   M = simulation_fit (M, d, np, info.simulated);
+  ## the fit's status, one record for the model, info and srivcstruc
+  if (refined)
+    [info.status, M] = contsid_fit_status (info, M);
+  endif
   ## The samples missing from the record (NaN in y or u), bridged by
   ## contsid_recursive_args: per-sample outputs (info.simulated) hold the
   ## present samples only.
