@@ -93,7 +93,11 @@
 ## controllable canonical form (for nb = 1 the gain enters with the input, so
 ## x^(na) + a1(t) x^(na-1) + .. = b0(t) u is solved exactly); the input is
 ## appended to the state and each sampling interval is integrated by the
-## fourth-order Magnus method, exact for time-invariant models.
+## fourth-order Magnus method, exact for time-invariant models. Its matrix
+## exponential is taken of the balanced generator (a diagonal similarity,
+## as MATLAB's and Octave's @code{expm}), so that high-order models with
+## widely spread or lightly damped poles, whose canonical coefficients span
+## many decades, are simulated accurately.
 ##
 ## @strong{Example}
 ## @example
