@@ -199,6 +199,18 @@ endfunction
 %! out = evalc ("comparec (iddata (y, u, Ts), M, 'InitialCondition', 'e')");
 %! assert (! isempty (strfind (out, "initial state estimated")));
 
+%!test  # a model with levels on a raw record; 'ignore' on offset-free data
+%! M2 = M;
+%! M2.Report.DataUsed.InputOffset = 5;
+%! M2.Report.DataUsed.OutputOffset = 20;
+%! [yh, info] = comparec (iddata (x + 20, u + 5, Ts), M2, 1:300);
+%! assert (yh, x(1:300) + 20, 1e-12);
+%! assert (info.Fit, 100, 1e-8);
+%! [yh, info] = comparec (iddata (x, u, Ts), M2, "Levels", "ignore");
+%! assert (yh, x, 1e-12);
+
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "Levels", "raw")
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "Levels")
 %!error id=comparec:badInput comparec (ones (20, 1), ones (20, 1), 0.1)
 %!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "InitialCondition", "x")
 %!error id=comparec:badInput comparec (iddata (x, u, Ts))

@@ -644,6 +644,28 @@ endfunction
 %! y2 = simc (idproc ("P1", "Kp", 1, "Tp1", 1), t, Ts, "InterSample", "foh");
 %! assert (y2, t - 1 + exp (-t), 1e-12);
 
+%!test  # the levels a model carries: y = c + M (u - d), from rest at them
+%! u = 5 + prbs (6, 3); Ts = 0.1;
+%! M = idtf (2, [1 1.2 1]);
+%! y0 = simc (M, u - 5, Ts);
+%! M.Report.DataUsed.InputOffset = 5;
+%! M.Report.DataUsed.OutputOffset = 20;
+%! [y, x, uc] = simc (M, u, Ts);
+%! assert (y, 20 + y0, 1e-12);
+%! assert (x, y, 0);
+%! assert (uc, u, 0);
+%! assert (simc (M, u - 5, Ts, "Levels", "ignore"), y0, 0);
+%! ## several outputs (state space): one output level for all
+%! S = idss ([-1 0; 0 -2], [1; 1], eye (2), [0; 0]);
+%! S.Report.DataUsed.InputOffset = 5;
+%! S.Report.DataUsed.OutputOffset = [1 2];
+%! assert (simc (S, u, Ts), simc (S, u - 5, Ts, "Levels", "ignore") + [1 2],
+%!         1e-12);
+
+%!error id=simc:badOption simc (idtf (1, [1 1]), ones (5, 1), 0.1, "Levels", "raw")
+%!error <Report.DataUsed.InputOffset>
+%! M = idtf (1, [1 1]); M.Report.DataUsed.InputOffset = [1 2];
+%! simc (M, ones (5, 1), 0.1);
 %!error id=simc:notSupported simc (idpoly (1, [0 1], 1, 1, [1 -0.5], 1, 0.1), ones (5, 1), 0.1)
 %!error id=simc:notSupported simc (idtf (1, [1 1], "IODelay", 0.15), ones (5, 1), [0 0.1 0.2 0.4 0.5])
 %!error id=simc:dimensionMismatch simc (idtf (1, [1 1]), ones (5, 2), 0.1)

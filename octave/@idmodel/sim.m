@@ -252,6 +252,18 @@ endfunction
 %! S = idss (0.9, 1, 0.5, 0, [], [], 0.1);
 %! assert (sim (S, u), filter ([0 0.5], [1 -0.9], u), 1e-13);
 
+%!test  # the levels of a continuous-time model (help idpoly); 'ignore'
+%! M = idtf (2, [1 1.2 1]);
+%! M.Report.DataUsed.InputOffset = 5;
+%! M.Report.DataUsed.OutputOffset = 20;
+%! u = 5 + prbs (6, 3); Ts = 0.1;
+%! y0 = simc (idtf (2, [1 1.2 1]), u - 5, Ts);
+%! Y = sim (M, iddata ([], u, Ts));
+%! assert (Y.y, 20 + y0, 1e-12);
+%! assert (sim (M, u, Ts), 20 + y0, 1e-12);
+%! assert (sim (M, u - 5, Ts, "Levels", "ignore"), y0, 0);
+%!error id=idtf:badOption sim (idtf (1, [1 1]), ones (5, 1), 0.1, "Levels", "raw")
+%!error id=idtf:badOption sim (idtf (1, [1 1]), ones (5, 1), 0.1, "bogus", 1)
 %!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1), [0.1 0.2])
 %!error id=idtf:badInput sim (idtf (1, [1 1]))
 %!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1))
