@@ -655,7 +655,7 @@ endfunction
 %! assert (x, y, 0);
 %! assert (uc, u, 0);
 %! assert (simc (M, u - 5, Ts, "Levels", "ignore"), y0, 0);
-%! ## several outputs (state space): one output level for all
+%! ## several outputs (state space): one output level each
 %! S = idss ([-1 0; 0 -2], [1; 1], eye (2), [0; 0]);
 %! S.Report.DataUsed.InputOffset = 5;
 %! S.Report.DataUsed.OutputOffset = [1 2];
