@@ -29,7 +29,11 @@ function [M, info, d] = contsid_rivc (fname, args)
   endswitch
   ## the fit's status, made and reported as srivc's; stable: the plant's
   ## denominators (the noise model is discrete-time)
-  F = M.F;
+  if (isa (M, "idtf"))
+    F = M.Denominator;
+  else
+    F = M.F;
+  endif
   if (! iscell (F))
     F = {F};
   endif
