@@ -84,7 +84,10 @@
 ## @var{info}.reason and @var{info}.output_offset; @var{M} itself is the
 ## dynamic model without c, and carries the levels it was estimated with
 ## in @code{M.Report.DataUsed.OutputOffset} (c) and @code{InputOffset}
-## (-d_j), MATLAB's offsets removed from the data (y - c = M (u + d)).
+## (-d_j), MATLAB's offsets removed from the data (y - c = M (u + d));
+## @code{simc}, @code{sim}, @code{comparec}, @code{residc},
+## @code{srivcstruc} and @code{residtrace} simulate it at them, on the raw
+## record (@code{help idpoly}, option @code{"Levels", "ignore"}).
 ## @item TimeScale
 ## @qcode{"auto"} (default): the iterations run in a time t' = s t with s
 ## the model's characteristic frequency |F(0)|^(1/nf), which keeps
