@@ -17,7 +17,10 @@
 ## as @code{rlssvf}; add @code{"order", "bf"} for @code{rsrivc}'s),
 ## simulated as the frozen model of each sample.  The model is simulated
 ## on the whole input of @var{data} (an iddata set, input-output, or
-## numeric y, u, Ts) from rest; @var{INT}, increasing sample indices,
+## numeric y, u, Ts) from rest, at the levels it carries (as
+## @code{simc}: a model @code{srivc} estimated on a raw record is compared
+## with the raw record, y = c + M (u - d); see @code{help idpoly});
+## @var{INT}, increasing sample indices,
 ## selects the samples that are compared, returned and plotted (all by
 ## default).
 ##
@@ -42,6 +45,10 @@
 ## record) and its free response added to @var{ys}; @code{estInfo.x0}
 ## holds it and the printed summary says so.  Default @qcode{"z"}: from
 ## rest (@code{estInfo.x0} empty).
+##
+## Option @code{"Levels"}: @qcode{"carried"} (default) or
+## @qcode{"ignore"}, MATLAB's @code{compare}: the model alone, without
+## the levels it carries (give data with the offsets removed).
 ##
 ## @strong{Example}
 ## @example
@@ -192,6 +199,18 @@ endfunction
 %! out = evalc ("comparec (iddata (y, u, Ts), M, 'InitialCondition', 'e')");
 %! assert (! isempty (strfind (out, "initial state estimated")));
 
+%!test  # a model with levels on a raw record; 'ignore' on offset-free data
+%! M2 = M;
+%! M2.Report.DataUsed.InputOffset = 5;
+%! M2.Report.DataUsed.OutputOffset = 20;
+%! [yh, info] = comparec (iddata (x + 20, u + 5, Ts), M2, 1:300);
+%! assert (yh, x(1:300) + 20, 1e-12);
+%! assert (info.Fit, 100, 1e-8);
+%! [yh, info] = comparec (iddata (x, u, Ts), M2, "Levels", "ignore");
+%! assert (yh, x, 1e-12);
+
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "Levels", "raw")
+%!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "Levels")
 %!error id=comparec:badInput comparec (ones (20, 1), ones (20, 1), 0.1)
 %!error id=comparec:badOption comparec (iddata (x, u, Ts), M, "InitialCondition", "x")
 %!error id=comparec:badInput comparec (iddata (x, u, Ts))

@@ -197,6 +197,11 @@ function [M, varargout] = procsrivc (varargin)
   rep.Method = fname;
   rep.Status = sprintf ("Estimated using %s", upper (fname));
   M = set (M, "NoiseVariance", mse, "Report", rep);
+  ## the fit's status, made and reported as srivc's
+  st = info.engine;
+  st.converged = converged;
+  st.reason = info.reason;
+  [~, M] = contsid_fit_status (st, M);
   if (! converged)
     warning ("procsrivc:notConverged", "procsrivc: %s", info.reason);
   endif

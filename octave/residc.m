@@ -37,6 +37,11 @@
 ## @end table
 ## Without outputs it plots both correlations with their bounds.
 ## Option @code{"maxlag"}: the largest lag m (default 25; N must exceed it).
+## Option @code{"Levels"}: @qcode{"carried"} (default), yh is the model
+## at the levels it carries (as @code{comparec} and @code{simc}: a model
+## @code{srivc} estimated on a raw record, y - c = M (u - d); see
+## @code{help idpoly}), or @qcode{"ignore"}, the model alone (give data
+## with the offsets removed).
 ##
 ## @strong{Example}
 ## @example
@@ -176,6 +181,18 @@ endfunction
 %! assert (R2.e, R1.e, 1e-12);
 %! assert (R2.autocorr, R1.autocorr, 1e-10);
 
+%!test  # the model's levels: the residual of a raw record
+%! v = prbs (8, 6); h = 0.05;
+%! e = 0.1 * sin ((1:numel (v))');
+%! yr = simc (idctm (4, [1 2.4 4]), v, h) + e;
+%! M2 = idtf (4, [1 2.4 4]);
+%! M2.Report.DataUsed.InputOffset = 2;
+%! M2.Report.DataUsed.OutputOffset = 10;
+%! R = residc (iddata (yr + 10, v + 2, h), M2);
+%! assert (R.e, e, 1e-10);
+%! R0 = residc (iddata (yr, v, h), M2, "Levels", "ignore");
+%! assert (R0.e, e, 1e-10);
+%!error id=residc:badOption residc (iddata (ones (40, 1), prbs (5, 2)(1:40), 0.1), idtf (1, [1 1]), "Levels", 1)
 %!error id=residc:notSupported residc (iddata ([x x], u, Ts), idss (-1, 1, [1; 1], [0; 0]))
 %!error id=residc:numericalFailure residc (iddata (x, u, Ts), idctm (4, [1 -30 4]))
 

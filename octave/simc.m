@@ -66,6 +66,15 @@
 ## controllable canonical state), default at rest.
 ## @item substeps
 ## integration sub-steps per sample (default 1), for fast parameter changes.
+## @item Levels
+## @qcode{"carried"} (default): a model that carries levels (@code{srivc}
+## on a raw record stores them in @code{M.Report.DataUsed.InputOffset}
+## and @code{OutputOffset}; see @code{help idpoly}) is simulated as it
+## was estimated, y = c + M (u - d) from rest at those levels: the input
+## data are in the record's raw units and so is @var{y} (@var{x} too;
+## @var{uc} is the raw input). @qcode{"ignore"}: the model alone, as
+## MATLAB's @code{sim}; remove the offsets from the data yourself.
+## SNR is measured on the response about the levels.
 ## @item controller, r2
 ## closed loop u = r1 + C(q^-1) (r2 - y) (thesis eq. 2.39): the controller
 ## as a struct with fields @code{num} and @code{den} (coefficients of
@@ -89,7 +98,11 @@
 ## controllable canonical form (for nb = 1 the gain enters with the input, so
 ## x^(na) + a1(t) x^(na-1) + .. = b0(t) u is solved exactly); the input is
 ## appended to the state and each sampling interval is integrated by the
-## fourth-order Magnus method, exact for time-invariant models.
+## fourth-order Magnus method, exact for time-invariant models. Its matrix
+## exponential is taken of the balanced generator (a diagonal similarity,
+## as MATLAB's and Octave's @code{expm}), so that high-order models with
+## widely spread or lightly damped poles, whose canonical coefficients span
+## many decades, are simulated accurately.
 ##
 ## @strong{Example}
 ## @example
@@ -116,8 +129,19 @@ function varargout = simc (varargin)
   endif
   defaults = struct ("SNR", [], "noisevar", [], "noise", [],
                      "InterSample", [], "x0", [], "substeps", 1,
-                     "controller", [], "r2", [], "InitialCondition", "z");
+                     "controller", [], "r2", [], "InitialCondition", "z",
+                     "Levels", "carried");
   opts = contsid_options (fname, defaults, rest);
+  ## The model's levels (doc/manual/levels.md), applied here once
+  ## for every kind of model: y = c + M (u - d), from rest at them.
+  ny = 1;
+  if (isstruct (model))
+    ny = model.ny;
+  endif
+  [c_lev, d_lev] = contsid_carried_levels (varargin{1}, columns (u), fname,
+                                           opts.Levels, ny);
+  u_raw = u;
+  u -= d_lev;
   if (! isempty (opts.InterSample))
     intersample = check_intersample (fname, opts.InterSample);
   endif
@@ -142,7 +166,8 @@ function varargout = simc (varargin)
     endif
     x = simulate_model (model, u, t, intersample, substeps);
     e = noise (opts, x);
-    varargout = {x + e, x, u};
+    x += c_lev;
+    varargout = {x + e, x, u_raw};
     return;
   endif
 
@@ -172,14 +197,21 @@ function varargout = simc (varargin)
     endif
     ## P_x of the noise-free output (in closed loop: of the noise-free loop).
     xf = call_gateway (1, u, t, intersample, orders, theta, substeps, x0,
-                       [], c_num, c_den, r2);
+                       [], c_num, c_den, r2 - c_lev);
     e = randn (n, 1);
     e = e * sqrt (mean (xf .^ 2) / 10 ^ (snr / 10)) / sqrt (mean (e .^ 2));
   endif
-  ## The gateway returns [x, y, uc]; simc returns [y, x, uc].
+  ## The gateway returns [x, y, uc]; simc returns [y, x, uc]. In closed
+  ## loop u = r1 + C (r2 - y) with y = c + x reads u - d = (r1 - d) +
+  ## C ((r2 - c) - (y - c)): the loop about the levels.
   outs = cell (1, max (2, nargout));
   [outs{:}] = call_gateway (numel (outs), u, t, intersample, orders, theta,
-                            substeps, x0, e, c_num, c_den, r2);
+                            substeps, x0, e, c_num, c_den, r2 - c_lev);
+  outs{1} += c_lev;
+  outs{2} += c_lev;
+  if (numel (outs) > 2)
+    outs{3} += d_lev;
+  endif
   varargout = outs([2 1 3:end]);
   ic = opts.InitialCondition;
   if (! ischar (ic) || ! any (strcmpi (ic, {"z", "e", "zero", "estimate"})))
@@ -617,6 +649,28 @@ endfunction
 %! y2 = simc (idproc ("P1", "Kp", 1, "Tp1", 1), t, Ts, "InterSample", "foh");
 %! assert (y2, t - 1 + exp (-t), 1e-12);
 
+%!test  # the levels a model carries: y = c + M (u - d), from rest at them
+%! u = 5 + prbs (6, 3); Ts = 0.1;
+%! M = idtf (2, [1 1.2 1]);
+%! y0 = simc (M, u - 5, Ts);
+%! M.Report.DataUsed.InputOffset = 5;
+%! M.Report.DataUsed.OutputOffset = 20;
+%! [y, x, uc] = simc (M, u, Ts);
+%! assert (y, 20 + y0, 1e-12);
+%! assert (x, y, 0);
+%! assert (uc, u, 0);
+%! assert (simc (M, u - 5, Ts, "Levels", "ignore"), y0, 0);
+%! ## several outputs (state space): one output level each
+%! S = idss ([-1 0; 0 -2], [1; 1], eye (2), [0; 0]);
+%! S.Report.DataUsed.InputOffset = 5;
+%! S.Report.DataUsed.OutputOffset = [1 2];
+%! assert (simc (S, u, Ts), simc (S, u - 5, Ts, "Levels", "ignore") + [1 2],
+%!         1e-12);
+
+%!error id=simc:badOption simc (idtf (1, [1 1]), ones (5, 1), 0.1, "Levels", "raw")
+%!error <Report.DataUsed.InputOffset>
+%! M = idtf (1, [1 1]); M.Report.DataUsed.InputOffset = [1 2];
+%! simc (M, ones (5, 1), 0.1);
 %!error id=simc:notSupported simc (idpoly (1, [0 1], 1, 1, [1 -0.5], 1, 0.1), ones (5, 1), 0.1)
 %!error id=simc:notSupported simc (idtf (1, [1 1], "IODelay", 0.15), ones (5, 1), [0 0.1 0.2 0.4 0.5])
 %!error id=simc:dimensionMismatch simc (idtf (1, [1 1]), ones (5, 2), 0.1)

@@ -84,7 +84,10 @@
 ## @var{info}.reason and @var{info}.output_offset; @var{M} itself is the
 ## dynamic model without c, and carries the levels it was estimated with
 ## in @code{M.Report.DataUsed.OutputOffset} (c) and @code{InputOffset}
-## (-d_j), MATLAB's offsets removed from the data (y - c = M (u + d)).
+## (-d_j), MATLAB's offsets removed from the data (y - c = M (u + d));
+## @code{simc}, @code{sim}, @code{comparec}, @code{residc},
+## @code{srivcstruc} and @code{residtrace} simulate it at them, on the raw
+## record (@code{help idpoly}, option @code{"Levels", "ignore"}).
 ## @item TimeScale
 ## @qcode{"auto"} (default): the iterations run in a time t' = s t with s
 ## the model's characteristic frequency |F(0)|^(1/nf), which keeps
@@ -160,7 +163,13 @@
 ## lowest_integrator_suspected, lowest_simulated: see above; missing: the
 ## N-by-1 mask of the missing samples, NaN in y or u, which are bridged as
 ## in @code{rlssvf} unless @code{"Missing", "error"} is given; simulated
-## then holds the present samples).
+## then holds the present samples), and @var{info}.status, the fit's
+## status record (@code{converged}, @code{determined}, @code{stable},
+## @code{reason}, and @code{text}, e.g. @qcode{"converged, stable,
+## over-parameterised"}), made once from the fields above and reported
+## alike in @code{M.Report.Termination}, @code{M.Report.Status}
+## (@code{present} shows it), by @code{rivc} and the other estimators of
+## the family, and by @code{srivcstruc}.
 ##
 ## @strong{Example}
 ## @example
@@ -505,9 +514,18 @@ endfunction
 %!   randn ("state", seed);
 %!   y1 = simc (idctm (2, [1 0.5]), v, h) + 0.02 * randn (2000, 1);
 %!   warning ("off", "srivc:overParameterised", "local");
-%!   [~, ~, ~, ~, ~, inf1] = srivc (iddata (y1, v, h), [1 2 0]);
+%!   [Ms, ~, ~, ~, ~, inf1] = srivc (iddata (y1, v, h), [1 2 0]);
 %!   assert (inf1.determined, false);
 %!   assert (regexp (inf1.reason, "\\|p\\| Ts = |standard error"));
+%!   ## one status record: info, the model and srivcstruc say the same
+%!   s = inf1.status;
+%!   assert ([s.converged, s.determined], [inf1.converged, false]);
+%!   assert (s.text, "converged, stable, over-parameterised");
+%!   assert (Ms.Report.Termination.Determined, false);
+%!   assert (! isempty (strfind (Ms.Report.Status, s.text)));
+%!   [~, sinfo] = srivcstruc (iddata (y1, v, h), [], [1 2 0], "NN", "list");
+%!   assert (sinfo.status{1}, s);
+%!   assert (sinfo.determined(1), false);
 %!   warning ("on", "srivc:overParameterised", "local");
 %!   y2 = simc (idctm (4, [1 1.2 4]), v, h) + 0.05 * randn (2000, 1);
 %!   lastwarn ("");

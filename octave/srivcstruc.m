@@ -42,8 +42,13 @@
 ## information criterion on ZE, the structure, log10 of the condition
 ## number of the instrument-regressor matrix, and the number of samples
 ## used. A structure whose fit failed has RT2 = YIC = NaN. @var{info}:
-## per structure @code{models} (cell), @code{converged}, @code{stable},
-## @code{fit} (validation fit in per cent, 100 (1 - |y - y_sim| /
+## per structure @code{models} (cell), @code{status} (cell: each fit's
+## status record as @code{srivc} reports it in @var{info}.status and
+## @code{M.Report.Termination}: @code{converged}, @code{determined},
+## @code{stable}, @code{reason}, @code{text}), its flags
+## @code{converged}, @code{stable} and @code{determined} (false: srivc
+## found the structure over-parameterised), @code{fit} (validation fit in
+## per cent, 100 (1 - |y - y_sim| /
 ## |y - mean y|)), @code{x0} (cell: the initial state estimated with
 ## @code{"InitialCondition", "e"}, as @code{comparec}'s
 ## @code{estInfo.x0}; empty without it, and for a model whose state
@@ -161,7 +166,8 @@ function [V, info, varargout] = srivcstruc (varargin)
   ns = rows (structures);
   V = NaN (ns, 2 + columns (structures) + 2);
   info = struct ("models", {cell(ns, 1)}, "converged", false (ns, 1),
-                 "stable", false (ns, 1), "fit", NaN (ns, 1),
+                 "stable", false (ns, 1), "determined", false (ns, 1),
+                 "status", {cell(ns, 1)}, "fit", NaN (ns, 1),
                  "x0", {cell(ns, 1)});
   for k = 1:ns
     nn = structures(k, :);
@@ -177,8 +183,11 @@ function [V, info, varargout] = srivcstruc (varargin)
       continue;                          # this structure cannot be fitted
     end_try_catch
     info.models{k} = M;
-    info.converged(k) = est.converged;
-    info.stable(k) = est.stable;
+    ## srivc's own status record, not a second judgement
+    info.status{k} = est.status;
+    info.converged(k) = est.status.converged;
+    info.stable(k) = est.status.stable;
+    info.determined(k) = est.status.determined;
     if (isempty (ZV))
       ys = est.simulated;
       if (ic == "e")
@@ -187,11 +196,9 @@ function [V, info, varargout] = srivcstruc (varargin)
       y = ye(used_e);
       ys = ys(used_e(present_e));
     else
-      ## the model as estimated: with the levels it carries (srivc on a
-      ## raw record, Report.DataUsed.OutputOffset and InputOffset)
-      [c, d] = contsid_carried_levels (M, columns (uv));
-      ## on ZV's own sampling and InterSample (ZOH/FOH, irregular instants)
-      ys = simc (M, set (ZV, "InputData", uv - d)) + c;
+      ## the model as estimated: simc applies the levels it carries (srivc
+      ## on a raw record), on ZV's own sampling and InterSample
+      ys = simc (M, ZV);
       if (ic == "e")
         [ys, info.x0{k}] = free_response (M, yv, ys, tv);
       endif
@@ -346,7 +353,8 @@ endfunction
 %! M = info.models{1};
 %! assert (M.Report.DataUsed.OutputOffset, y0, 0.5);
 %! ys = simc (M, get (ZVr, "InputData") - M.Report.DataUsed.InputOffset,
-%!            get (ZVr, "Ts")) + M.Report.DataUsed.OutputOffset;
+%!            get (ZVr, "Ts"), "Levels", "ignore") ...
+%!      + M.Report.DataUsed.OutputOffset;
 %! assert (info.fit(1), 100 * (1 - norm (yv - ys) / norm (yv - mean (yv))),
 %!         1e-9);
 %! assert (V(1, 1) > 0.9);
@@ -364,7 +372,8 @@ endfunction
 %! [V, info] = srivcstruc (ZE, ZVx, [1 2 0], "NN", "list",
 %!                         "InitialCondition", "e");
 %! M = info.models{1};
-%! ys0 = simc (M, uv - M.Report.DataUsed.InputOffset, Ts) ...
+%! ys0 = simc (M, uv - M.Report.DataUsed.InputOffset, Ts, "Levels",
+%!             "ignore") ...
 %!       + M.Report.DataUsed.OutputOffset;
 %! F = M.F / M.F(1);
 %! A = [0 1; -F(3) -F(2)];
@@ -415,7 +424,8 @@ endfunction
 %!     M = info.models{1};
 %!     zvu = set (zv, "InputData",
 %!                get (zv, "InputData") - M.Report.DataUsed.InputOffset);
-%!     [~, ci] = comparec (zvu, M, "InitialCondition", ic{1});
+%!     [~, ci] = comparec (zvu, M, "InitialCondition", ic{1},
+%!                         "Levels", "ignore");
 %!     assert (V(1, 1), ci.RT2, 1e-9);
 %!     assert (V(1, 1) > 0.9);
 %!   endfor
@@ -437,7 +447,8 @@ endfunction
 %! assert (V(1, 1) > 0.99 && V(1, 1) > V(2, 1));
 %! M = info.models{1};
 %! [~, ci] = comparec (set (Z2, "InputData", get (Z2, "InputData")
-%!                     - M.Report.DataUsed.InputOffset), M);
+%!                     - M.Report.DataUsed.InputOffset), M,
+%!                     "Levels", "ignore");
 %! assert (V(1, 1), ci.RT2, 1e-9);
 %! S = srivcstruc (Z1, [], [1 1 1 1 0 0; 1 2 2 2 0 0]);
 %! assert (S(:, 3:8), [1 1 1 1 0 0; 1 2 1 1 0 0; 1 1 1 2 0 0;

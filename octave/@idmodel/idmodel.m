@@ -53,7 +53,9 @@ function [M, varargout] = idmodel (kind, par, ny, nu, varargin)
                      "Termination", struct ("Iterations", [],
                                             "Converged", []),
                      "DataUsed", struct ("Length", [], "Ts", [],
-                                         "InterSample", ""));
+                                         "InterSample", "",
+                                         "InputOffset", [],
+                                         "OutputOffset", []));
   s.cov = [];
   ## CONTSID idctm data that have no SITB property: theta and covariance
   ## of a model with more parameters than its polynomials (residtrace),

@@ -8,7 +8,9 @@
 ## parameter, "value (+/- sd)", sd the square root of the corresponding
 ## diagonal entry of the covariance (@code{getcov}), followed by the
 ## estimation status, fit to the estimation data (%), loss function and
-## mean square error, as the System Identification Toolbox prints it.
+## mean square error, as the System Identification Toolbox prints it,
+## and the levels the model carries (@code{Report.DataUsed.InputOffset},
+## @code{OutputOffset}; see @code{help idpoly}) when it has any.
 ## With an output, returns the text instead.
 ## @end deftypefn
 
@@ -32,6 +34,13 @@ endfunction
 %!test
 %! t = present (idtf (2, [1 3 2]));
 %! assert (isempty (strfind (t, "+/-")));
+%!test  # the levels the model carries are shown; none, no line
+%! M = idtf (2, [1 1.2 1]);
+%! assert (isempty (strfind (present (M), "Levels")));
+%! M.Report.DataUsed.InputOffset = 5;
+%! M.Report.DataUsed.OutputOffset = 20;
+%! t = present (M);
+%! assert (! isempty (strfind (t, "InputOffset = 5, OutputOffset = 20")));
 %!error id=present:badInput present (idtf (1, [1 1]), 2)
 
 %!demo

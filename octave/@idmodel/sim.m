@@ -16,13 +16,50 @@
 ## sampling interval to equal the model's.  Numeric @var{u} (N-by-nu)
 ## gives a numeric output: for a discrete-time model directly, for a
 ## continuous-time one @code{sim (M, u, Ts)}.
+##
+## A continuous-time model that carries levels (@code{srivc} on a raw
+## record stores them
+## in @code{M.Report.DataUsed.InputOffset} and @code{OutputOffset}; see
+## @code{help idpoly}) is simulated by @code{simc} as it was estimated, y = c + M (u - d)
+## from rest at those levels, on input data in the record's raw units.
+## Option @code{sim (@dots{}, "Levels", "ignore")}: the model alone, as
+## MATLAB's @code{sim} (remove the offsets from the data yourself).
+##
+## @strong{Example}
+## @example
+## M = idtf (2, [1 1.2 1]);
+## M.Report.DataUsed.InputOffset = 5;
+## M.Report.DataUsed.OutputOffset = 20;
+## u = 5 + ones (100, 1);
+## y = sim (M, iddata ([], u, 0.1));          # 20 + step response of 2
+## y0 = sim (M, u - 5, 0.1, "Levels", "ignore") + 20;   # the same
+## @end example
 ## @end deftypefn
 
-function [y, varargout] = sim (M, data, Ts, varargin)
-  contsid_nargchk ("sim", nargin, nargout, [1 3], 1);
+function [y, varargout] = sim (M, data, varargin)
+  contsid_nargchk ("sim", nargin, nargout, [1 Inf], 1);
   P = pstruct (M);
   if (nargin < 2)
     error ([P.kind ":badInput"], "%s: sim needs input data", P.kind);
+  endif
+  levels = "carried";
+  k = find (cellfun (@ischar, varargin), 1);
+  if (! isempty (k))
+    if (numel (varargin) != k + 1 || ! strcmpi (varargin{k}, "Levels"))
+      error ([P.kind ":badOption"],
+             "%s: sim takes the one option 'Levels' after M, data[, Ts]",
+             P.kind);
+    endif
+    levels = varargin{k+1};
+    varargin = varargin(1:k-1);
+  endif
+  if (numel (varargin) > 1)
+    error ([P.kind ":badInput"], "%s: sim takes M, data[, Ts] and options",
+           P.kind);
+  endif
+  has_ts = ! isempty (varargin);
+  if (has_ts)
+    Ts = varargin{1};
   endif
   if (strcmp (P.kind, "idfrd"))
     error ("idfrd:notSupported", "idfrd: frequency data cannot be simulated");
@@ -36,12 +73,12 @@ function [y, varargout] = sim (M, data, Ts, varargin)
     if (nexp > 1)                      # one simulation per experiment
       ys = cell (1, nexp);
       for k = 1:nexp
-        ys{k} = sim (M, getexp (data, k));
+        ys{k} = sim (M, getexp (data, k), "Levels", levels);
       endfor
       y = merge (ys{:});
       return;
     endif
-    if (nargin > 2)
+    if (has_ts)
       error ([P.kind ":badInput"],
              "%s: sim (M, data) takes no third argument with iddata", P.kind);
     endif
@@ -49,7 +86,7 @@ function [y, varargout] = sim (M, data, Ts, varargin)
     if (P.Ts == 0)
       ## The inputs only: the measured outputs (which may have missing
       ## samples) play no part in a simulation.
-      yv = ct_sim (M, P, data(:, [], :));
+      yv = ct_sim (M, P, levels, data(:, [], :));
     else
       yv = dt_sim (P, get (data, "InputData"), info.Ts);
     endif
@@ -70,7 +107,7 @@ function [y, varargout] = sim (M, data, Ts, varargin)
     u = u(:);
   endif
   if (P.Ts == 0)
-    if (nargin < 3)
+    if (! has_ts)
       error ([P.kind ":badInput"],
              "%s: a continuous-time model needs sim (M, u, Ts) or iddata",
              P.kind);
@@ -80,15 +117,17 @@ function [y, varargout] = sim (M, data, Ts, varargin)
       error ([P.kind ":badInput"], "%s: sim's Ts must be a finite scalar > 0",
              P.kind);
     endif
-    y = ct_sim (M, P, u, Ts);
+    y = ct_sim (M, P, levels, u, Ts);
   else
     y = dt_sim (P, u, P.Ts);
   endif
 endfunction
-## simc's errors under the model's class and sim's name.
-function y = ct_sim (M, P, varargin)
+
+## simc's errors under the model's class and sim's name; simc applies the
+## model's levels.
+function y = ct_sim (M, P, levels, varargin)
   try
-    y = simc (M, varargin{:});
+    y = simc (M, varargin{:}, "Levels", levels);
   catch err
     error ([P.kind ":" regexprep(err.identifier, '^.*:', "")], "%s",
            regexprep (err.message, '^simc:', [P.kind ": sim:"]));
@@ -213,6 +252,18 @@ endfunction
 %! S = idss (0.9, 1, 0.5, 0, [], [], 0.1);
 %! assert (sim (S, u), filter ([0 0.5], [1 -0.9], u), 1e-13);
 
+%!test  # the levels of a continuous-time model (help idpoly); 'ignore'
+%! M = idtf (2, [1 1.2 1]);
+%! M.Report.DataUsed.InputOffset = 5;
+%! M.Report.DataUsed.OutputOffset = 20;
+%! u = 5 + prbs (6, 3); Ts = 0.1;
+%! y0 = simc (idtf (2, [1 1.2 1]), u - 5, Ts);
+%! Y = sim (M, iddata ([], u, Ts));
+%! assert (Y.y, 20 + y0, 1e-12);
+%! assert (sim (M, u, Ts), 20 + y0, 1e-12);
+%! assert (sim (M, u - 5, Ts, "Levels", "ignore"), y0, 0);
+%!error id=idtf:badOption sim (idtf (1, [1 1]), ones (5, 1), 0.1, "Levels", "raw")
+%!error id=idtf:badOption sim (idtf (1, [1 1]), ones (5, 1), 0.1, "bogus", 1)
 %!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1), [0.1 0.2])
 %!error id=idtf:badInput sim (idtf (1, [1 1]))
 %!error id=idtf:badInput sim (idtf (1, [1 1]), ones (5, 1))

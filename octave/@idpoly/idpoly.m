@@ -40,6 +40,28 @@
 ## @code{getpvec}, @code{setpvec}, @code{getcov}, @code{polydata},
 ## @code{tfdata}, @code{get}, @code{set}.
 ##
+## @strong{Levels and initial state} (every model class; the toolbox's one
+## convention, also in doc/manual/levels.md).  A model carries the
+## levels it was estimated with in @code{Report.DataUsed.InputOffset}
+## (d, one per input) and @code{OutputOffset} (c, one per output): the
+## offsets removed from the data, MATLAB's convention, y - c = M (u - d).
+## @code{srivc} (and the estimators sharing its engine) sets them when it
+## estimates levels on a raw record; a model built here carries none
+## (empty: zero); @code{M.Report.DataUsed.InputOffset = 5} sets them.  A
+## model carries no initial state: it is simulated from rest at its
+## levels (u = d, y = c); the initial state of a record is estimated on
+## that record (@code{"InitialCondition", "e"} of @code{simc} and
+## @code{comparec}).  @code{simc}, @code{sim} (continuous time),
+## @code{comparec}, @code{residc}, @code{srivcstruc} and @code{residtrace}
+## simulate a model at its levels, on data in the record's raw units;
+## option @code{"Levels", "ignore"} of @code{simc}, @code{sim},
+## @code{comparec} and @code{residc} simulates the model alone (MATLAB's
+## @code{sim} and @code{compare}: remove the offsets from the data
+## yourself).  @code{step}, @code{impulse}, @code{bode} and the other
+## responses describe the dynamics M and do not use the levels;
+## @code{present} shows them.  Discrete-time models are simulated by
+## @code{sim} without levels.
+##
 ## @strong{Example}
 ## @example
 ## M0 = idpoly (1, 2, 1, 1, [1 1.2 2], "Ts", 0);     # 2/(s^2+1.2s+2)

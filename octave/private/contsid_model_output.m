@@ -10,6 +10,9 @@
 ## estimate THM with its nn (and "order", "bf" for rsrivc's [b f]),
 ## simulated as the frozen model of each sample.  The data are an iddata
 ## set (any number of outputs; one experiment) or numeric y, u, Ts.
+## The option @code{"Levels"} (@qcode{"carried"}, the default, or
+## @qcode{"ignore"}) is read here and passed on to @code{simc}: a model
+## that carries levels is simulated with them (doc/manual/levels.md).
 ## Returns the data struct (y N-by-ny, u, t, Ts, uniform, intersample),
 ## the simulated output (N-by-ny) and the remaining arguments.
 ## @end deftypefn
@@ -25,6 +28,16 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
   endif
   M = args{d.nconsumed + 1};
   rest = args(d.nconsumed + 2:end);
+  levels = "carried";
+  k = find (cellfun (@(a) ischar (a) && strcmpi (a, "Levels"), rest), 1);
+  if (! isempty (k))
+    if (k == numel (rest))
+      error ([fname ":badOption"], "%s: Levels needs a value", fname);
+    endif
+    levels = rest{k+1};
+    rest(k:k+1) = [];
+    contsid_carried_levels ([], 0, fname, levels);   # checks the value
+  endif
   if (d.uniform)
     t = d.Ts;
   else
@@ -51,7 +64,8 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
       endif
       yhat = simc (M, nn, d.u, t, "InterSample", d.intersample);
     elseif (isobject (M) || isstruct (M))
-      yhat = simc (M, d.u, t, "InterSample", d.intersample);
+      yhat = simc (M, d.u, t, "InterSample", d.intersample,
+                   "Levels", levels);
     else
       error ([fname ":badInput"], ...
              ["%s: the model must be an idpoly, idtf, idproc, idss (or ", ...

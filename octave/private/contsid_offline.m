@@ -288,6 +288,10 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   M = carried_levels (M, info, nu);
   M = simulation_fit (M, d, np, info.simulated);
+  ## the fit's status, one record for the model, info and srivcstruc
+  if (refined)
+    [info.status, M] = contsid_fit_status (info, M);
+  endif
   ## The samples missing from the record (NaN in y or u), bridged by
   ## contsid_recursive_args: per-sample outputs (info.simulated) hold the
   ## present samples only.
@@ -661,22 +665,16 @@ function M = carried_levels (M, info, nu)
 endfunction
 
 ## Report.Fit as the SITB defines it: the fit of the model's simulation
-## (from rest, the data's input and hold, plus the levels it was estimated
-## with) to the estimation output, the numbers comparec reports on the
-## same data with those levels removed. Where comparec's simulator
+## (from rest, the data's input and hold, at the levels it carries) to the
+## estimation output, the numbers comparec reports on the same data.
+## Where comparec's simulator
 ## fails (simc on stiff high-order models, e.g. coefficients ~1e11), the
 ## engine's own simulation of the model (exact ZOH/FOH filters) is used.
 function M = simulation_fit (M, d, np, simulated)
-  lev = M.Report.DataUsed;
-  yl = d.y - lev.OutputOffset;
-  ul = d.u;
-  if (any (lev.InputOffset))
-    ul = d.u - lev.InputOffset;
-  endif
   if (d.uniform)
-    data = iddata (yl, ul, d.Ts, "InterSample", d.intersample);
+    data = iddata (d.y, d.u, d.Ts, "InterSample", d.intersample);
   else
-    data = iddata (yl, ul, "SamplingInstants", d.t,
+    data = iddata (d.y, d.u, "SamplingInstants", d.t,
                    "InterSample", d.intersample);
   endif
   try

@@ -27,6 +27,18 @@ function [M, info, d] = contsid_rivc (fname, args)
       error ("contsid_rivc:badInput", "contsid_rivc: unknown caller %s",
              fname);
   endswitch
+  ## the fit's status, made and reported as srivc's; stable: the plant's
+  ## denominators (the noise model is discrete-time)
+  if (isa (M, "idtf"))
+    F = M.Denominator;
+  else
+    F = M.F;
+  endif
+  if (! iscell (F))
+    F = {F};
+  endif
+  info.stable = all (cellfun (@(f) all (real (roots (f)) < 0), F));
+  [info.status, M] = contsid_fit_status (info, M);
 endfunction
 
 ## rivc (data, [nb nc nd nf nk], Name, Value) or rivc (data, Mi, ...)

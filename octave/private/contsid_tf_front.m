@@ -265,6 +265,12 @@ function [M, o, info] = contsid_tf_front (fname, args)
   rep.Method = fname;
   rep.Status = sprintf ("Estimated using %s", upper (fname));
   M = set (M, "NoiseVariance", mse, "Report", rep);
+  ## the fit's status, made and reported as srivc's (the engine's stable and
+  ## determined at the delay kept)
+  st = info.engine;
+  st.converged = converged;
+  st.reason = reason;
+  [~, M] = contsid_fit_status (st, M);
   if (! converged && ! init)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
              fname, reason);

@@ -84,6 +84,19 @@ function txt = model_text (P, with_sd)
   if (! isempty (parts))
     L{end+1} = strjoin (parts, ", ");
   endif
+  ## The levels the model carries (help idpoly): simc, sim, comparec and
+  ## residc simulate it at them, y - c = M (u - d).
+  U = R.DataUsed;
+  lev = {};
+  for f = {"InputOffset", "OutputOffset"}
+    if (isfield (U, f{1}) && ! isempty (U.(f{1})) && any (U.(f{1})(:)))
+      lev{end+1} = sprintf ("%s = %s", f{1}, mat2str (U.(f{1})(:).', 5));
+    endif
+  endfor
+  if (! isempty (lev))
+    L{end+1} = ["Levels (y - OutputOffset = M (u - InputOffset)): ", ...
+                strjoin(lev, ", ")];
+  endif
   txt = strjoin (L, "\n");
 endfunction
 
