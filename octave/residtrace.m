@@ -9,7 +9,12 @@
 ## adds that effect, and reports the error before and after.
 ##
 ## @var{data}: the estimation record (an @code{iddata}, or @var{y},
-## @var{u}, @var{Ts}), uniformly sampled. @var{M}: an @code{idpoly} from
+## @var{u}, @var{Ts}), uniformly sampled; NaN in y or an input marks a
+## missing sample, bridged as @code{srivc} bridges it (an input held or
+## interpolated by its hold, the output interpolated linearly: see
+## @code{residtrace_bridge}) and left out of every figure (RMSE, fit,
+## residual tests: computed on the present samples; @code{R.missing}
+## holds the masks of both records). @var{M}: an @code{idpoly} from
 ## @code{srivc}, @code{lssvf}, @code{ivsvf} (or an @code{idtf},
 ## @code{idproc}, @code{idctm} built by hand). Its
 ## coefficients of F that are exactly zero are structural (integrators, a
@@ -116,8 +121,9 @@
 ## least 1 %; a friction with at least two velocity reversals. A
 ## candidate that fails it is not tested, with the reason. A biproper M
 ## (a direct feedthrough) is analysed; the effects fed back from its
-## output (Coulomb friction, state nonlinearity, drift) are then not
-## tested, with the reason; an improper M is
+## output (Coulomb friction, state nonlinearity) are then not tested,
+## with the reason (so is a candidate whose simulation the model's
+## structure does not support); an improper M is
 ## @code{residtrace:notSupported}. The
 ## candidates form two groups ranked apart: those simulated from the
 ## input, and those that use the validation output itself (drift: a
@@ -344,7 +350,8 @@ function [R, varargout] = residtrace (varargin)
     error ("residtrace:badInput", "residtrace: expected data and a model");
   endif
   try
-    d = contsid_getdata (fname, varargin{:});
+    [d, miss] = contsid_getdata (fname, varargin{:});   # NaN: missing
+    d = residtrace_bridge (d, miss);
   catch err
     rethrow_as (err);
   end_try_catch
@@ -462,6 +469,9 @@ function [R, varargout] = residtrace (varargin)
   endif
   ctx.D = D;
   ctx.V = V;
+  ## the figures leave the missing validation samples out
+  vmask (V.missing);
+  unmask = onCleanup (@() vmask ([]));
   ex = struct ("u0", lev.u0, "npre", 0, "closed", ! isempty (V.loop),
                "substeps", opts.substeps);
   if (! isempty (V.pre))
@@ -481,6 +491,7 @@ function [R, varargout] = residtrace (varargin)
   ## an unstable M as given is not simulated: its figure would be the
   ## size of its divergence, not an error (NaN, and the verdict says so)
   R = struct ();
+  R.missing = struct ("estimation", D.missing, "validation", V.missing);
   R.given_unstable = ! stable_given (Mst.F);
   e_given = NaN (size (V.y));
   if (! R.given_unstable)
@@ -767,13 +778,7 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   vrows = [];
   if (any (strcmp (opts.effects, "drift")))
     t0 = tic ();
-    if (biproper (cur))
-      c = residtrace_cand ("drift");
-      c.reason = ["not for a biproper model (direct feedthrough): the ", ...
-                  "tracked simulation needs a strictly proper model"];
-    else
-      c = guarded ("drift", @() residtrace_cand_drift (cur, ctx));
-    endif
+    c = guarded ("drift", @() residtrace_cand_drift (cur, ctx));
     row = score (c, cur, ctx, e0);
     row.seconds = toc (t0);
     vrows = [vrows; row];
@@ -894,10 +899,12 @@ function b = biproper (m)
 endfunction
 
 ## The effects simulated with the model's own output fed back (the
-## sub-step simulator, residtrace_simulate), or with parameters tracked
-## sample by sample: they need a strictly proper model.
+## sub-step simulator, residtrace_simulate): they need a strictly proper
+## model. (Drift is tracked with the model's own structure; where its
+## simulation needs the sub-step simulator, that says notSupported and
+## the candidate is reported not tested, see guarded.)
 function e = fed_back_effects ()
-  e = {"coulomb", "state_nonlinearity", "drift"};
+  e = {"coulomb", "state_nonlinearity"};
 endfunction
 
 ## The screening's context: three iterations per fit, the estimation
@@ -914,6 +921,7 @@ function [q, qcur] = screening_context (ctx, cur)
   endif
   k = 1:Nq;
   D.y = D.y(k); D.u = D.u(k, :); D.vhat = D.vhat(k, :); D.ysm = D.ysm(k);
+  D.missing = D.missing(k);
   if (! isempty (D.loop))
     D.loop.r1 = D.loop.r1(k); D.loop.r2 = D.loop.r2(k);
   endif
@@ -1050,6 +1058,14 @@ function out = guarded (effect, f)
     try
       out = f ();
     catch err
+      if (! isempty (effect)
+          && strcmp (err.identifier, "residtrace:notSupported"))
+        ## a structure the candidate cannot simulate: a verdict
+        out = residtrace_cand (effect);
+        out.reason = ["not supported: ", ...
+                      regexprep(err.message, '^residtrace: ', '')];
+        return;
+      endif
       if (isempty (effect) || ! any (strcmp (err.identifier, ids)))
         rethrow (err);
       endif
@@ -1115,14 +1131,16 @@ endfunction
 
 function [D, V] = records (d, opts)
   D = struct ("y", d.y, "u", d.u, "Ts", d.Ts, "intersample", d.intersample,
-              "loop", [], "vhat", [], "ysm", [], "pre", []);
+              "loop", [], "vhat", [], "ysm", [], "pre", [],
+              "missing", d.missing);
   if (isempty (opts.validation))
     N = numel (d.y);
     Ne = round (opts.split * N);
     V = D;
     V.y = d.y(Ne+1:end); V.u = d.u(Ne+1:end, :);
+    V.missing = d.missing(Ne+1:end);
     V.pre = true;                     # filled once the velocity is known
-    D.y = d.y(1:Ne); D.u = d.u(1:Ne, :);
+    D.y = d.y(1:Ne); D.u = d.u(1:Ne, :); D.missing = d.missing(1:Ne);
     if (! isempty (opts.controller))
       error ("residtrace:badOption",
              "residtrace: a closed loop needs a separate validation record");
@@ -1131,10 +1149,11 @@ function [D, V] = records (d, opts)
     dv = opts.validation;
     try
       if (iscell (dv))
-        dv = contsid_getdata ("residtrace", dv{:});
+        [dv, mv] = contsid_getdata ("residtrace", dv{:});
       else
-        dv = contsid_getdata ("residtrace", dv);
+        [dv, mv] = contsid_getdata ("residtrace", dv);
       endif
+      dv = residtrace_bridge (dv, mv);
     catch err
       rethrow_as (err);
     end_try_catch
@@ -1149,8 +1168,7 @@ function [D, V] = records (d, opts)
     endif
     V = struct ("y", dv.y, "u", dv.u, "Ts", dv.Ts,
                 "intersample", dv.intersample, "loop", [], "vhat", [],
-                "ysm", [],
-                "pre", []);
+                "ysm", [], "pre", [], "missing", dv.missing);
   endif
   if (! isempty (opts.controller))
     [num, den] = contsid_controller ("residtrace", opts.controller, d.Ts);
@@ -1476,11 +1494,30 @@ function s = ifelse_ (c, a, b)
   endif
 endfunction
 
+## The mask of the validation record's missing samples (bridged, see
+## residtrace_bridge), which every figure leaves out: set once per call.
+function m = vmask (set)
+  persistent mask = [];
+  if (nargin > 0)
+    mask = set;
+  endif
+  m = mask;
+endfunction
+
+function x = present_ (x)
+  m = vmask ();
+  if (numel (m) == numel (x) && any (m))
+    x = x(! m);
+  endif
+endfunction
+
 function v = rms_ (e)
+  e = present_ (e);
   v = sqrt (mean (e .^ 2));
 endfunction
 
 function f = fit_ (y, e)
+  y = present_ (y); e = present_ (e);
   f = 100 * (1 - norm (e) / norm (y - mean (y)));
 endfunction
 

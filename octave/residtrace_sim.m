@@ -34,6 +34,9 @@
 ## record when 'initial_state' was added, and the amplitudes of a
 ## sinusoid on each half of the record applied to the other, as
 ## @code{residtrace} does on a record not used to fit the model;
+## @item bridges missing samples (NaN in y or an input) as residtrace
+## does (@code{residtrace_bridge}): @var{e} is 0 there, and @var{rmse}
+## is over the present samples;
 ## @item ignores drift and a noise model (they use the measured output:
 ## their figures are @code{R.rmse_final_tracked} and
 ## @code{R.rmse_final_prediction}); @var{rmse} is then the simulation
@@ -63,7 +66,8 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
            "residtrace_sim: expected a result of residtrace and a record");
   endif
   try
-    d = contsid_getdata (fname, varargin{:});
+    [d, miss] = contsid_getdata (fname, varargin{:});
+    d = residtrace_bridge (d, miss);
   catch err
     error (struct ("message", err.message, "identifier",
                    regexprep (err.identifier, '^[^:]*:', [fname ':'])));
@@ -101,7 +105,8 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
   u = d.u - m.u0;
   z = zeros (N, 1);
   V = struct ("y", d.y, "u", u, "Ts", d.Ts, "intersample", d.intersample,
-              "loop", [], "vhat", [z z], "ysm", d.y, "pre", []);
+              "loop", [], "vhat", [z z], "ysm", d.y, "pre", [],
+              "missing", d.missing);
   npre = 0;
   if (m.npre > 0 && N > m.npre)
     npre = m.npre;
@@ -110,6 +115,7 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
                     "ysm", d.y(k));
     k = npre+1:N;
     V.y = d.y(k); V.u = u(k, :); V.vhat = [z(k) z(k)]; V.ysm = d.y(k);
+    V.missing = d.missing(k);
   endif
   ctx = struct ("opts", struct ("substeps", m.substeps));
   [e, yv] = residtrace_valerror (m, V, ctx);
@@ -119,7 +125,7 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
   else
     yh = yv;
   endif
-  rmse = sqrt (mean (e .^ 2));
+  rmse = sqrt (sum (e .^ 2) / max (nnz (! V.missing), 1));
 endfunction
 
 %!shared Ts, u, uv, G, N
