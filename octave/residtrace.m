@@ -307,8 +307,9 @@
 ## the winner's evidence (term, value, std, and what the test saw).
 ## @item effects, final_model, rmse_final
 ## all effects added by the iteration, the last model (fields as
-## @code{model}) and the RMSE of its simulation (@code{rmse_final_tracked}, @code{rmse_final_prediction}
-## when it ends with drift or coloured noise).
+## @code{model}) and the RMSE of its simulation
+## (@code{rmse_final_tracked}, @code{rmse_final_prediction} when it ends
+## with drift or coloured noise).
 ## @item sim
 ## the validation output @code{y} and the model outputs on it:
 ## @code{given} (M as given), @code{refit}, @code{before} (the refit
@@ -882,7 +883,8 @@ function row = screened_row_ (effect, cur, ctx, e0)
     if (! row.applicable
         && isempty (regexp (row.reason, ["estimation failed|not ", ...
                                           "significant on the estimation|", ...
-                                          "not determined on the estimation|", ...
+                                          "not determined on the ", ...
+                                          "estimation|", ...
                                           "validation failed|diverges"],
                             "once")))
       return;                  # not applicable for a structural reason
@@ -1315,8 +1317,8 @@ function r = level_report (L, cur)
   r = struct ("estimated", L.estimate, "u0", L.u0, "y0", 0, "label", "",
               "text", "");
   if (! L.estimate && any (L.u0 != 0))
-    r.text = sprintf ("levels handled (%s): input level %s removed from both records",
-                      L.why, mat2str (L.u0, 4));
+    r.text = sprintf (["levels handled (%s): input level %s removed ", ...
+                       "from both records"], L.why, mat2str (L.u0, 4));
   endif
   if (! L.estimate || ! cur.ok)
     return;
@@ -1538,6 +1540,15 @@ endfunction
 %! y = simc (G, u + 0.3, Ts) + 0.05 * randn (N, 1);
 %! yv = simc (G, uv + 0.3, Ts) + 0.05 * randn (N, 1);
 %! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! ## srivc has estimated the input level: M has the offset, and it is
+%! ## kept, not found again
+%! assert (get (M, "Report").DataUsed.InputOffset, -0.3, 0.02);
+%! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset", "delay", "order"});
+%! assert (R.effect, "none");
+%! assert (R.rmse_before, R.rmse_given, 0.05 * R.rmse_given);
+%! ## the same dynamics without the level: the offset is the effect
+%! M = idctm (M.B, M.F);
 %! f = [tempname() ".md"];
 %! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
 %!                 "effects", {"offset", "delay", "order"}, "table", f);

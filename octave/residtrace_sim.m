@@ -95,8 +95,8 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
   endif
   if (abs (d.Ts - m.Ts) > 1e-9 * m.Ts)
     error ("residtrace_sim:badInput",
-           "residtrace_sim: the data's sampling interval %g is not the model's %g",
-           d.Ts, m.Ts);
+           ["residtrace_sim: the data's sampling interval %g is not ", ...
+            "the model's %g"], d.Ts, m.Ts);
   endif
   ## the simulated model: drift and a noise model use the measured output
   m.ltv = [];

@@ -19,8 +19,9 @@
 ## residtrace simulates the model from the input, and dropping a known
 ## input would leave a transient after the gap. The fits replace the
 ## bridged outputs by the model's own output (@code{residtrace_estimate}),
-## so that they carry no error. residtrace keeps the record on its uniform grid (its
-## simulators, tests and candidates need one) and gives @var{d} the field
+## so that they carry no error. residtrace keeps the record on its
+## uniform grid (its simulators, tests and candidates need one) and gives
+## @var{d} the field
 ## @code{missing}: every figure residtrace reports (RMSE, fit, residual
 ## tests) leaves those samples out (a zero error there), so only the
 ## present samples are scored. A record with no present sample, or with
@@ -85,7 +86,8 @@ endfunction
 %! assert (b.u, [1 10; 2 20; 3 30; 4 40; 5 50], 1e-12);
 
 %!test  # missing at the ends: the nearest present value
-%! d = struct ("y", [NaN; 2; 3; NaN], "u", [NaN; 1; 2; NaN], "intersample", "zoh");
+%! d = struct ("y", [NaN; 2; 3; NaN], "u", [NaN; 1; 2; NaN],
+%!             "intersample", "zoh");
 %! b = residtrace_bridge (d, isnan (d.y));
 %! assert (b.y, [2; 2; 3; 3]);
 %! assert (b.u, [1; 1; 2; 2]);

@@ -103,10 +103,7 @@ function c = residtrace_cand_state (cur, ctx)
   nlin = sum (strcmp ({m.channels.type}, "ypower"));
   val = m.theta(end-nlin+1:end);
   sd = sqrt (diag (m.cov))(end-nlin+1:end);
-## a velocity (a variant for models of any order; no differentiation);
-## whether the term is determined and the velocity reverses often enough
-## is @code{residtrace_accept}'s general check (evidence @code{share},
-## the share of samples moving forward, and @code{reversals}). A  c.applicable = true;
+  c.applicable = true;
   c.model = m;
   c.variant = m.variant_;
   c.nadd = nadd;
