@@ -14,7 +14,8 @@
 ## model. The time axis starts at 0 at the validation record's first
 ## sample.
 ##
-## Without @var{file} the axes are drawn in the current figure. With
+## Without @var{file} the axes are drawn in the current figure (in a new
+## invisible one when Octave has no display). With
 ## @var{file} (a name whose extension, e.g. @file{.png}, @file{.pdf} or
 ## @file{.svg}, gives the format) the figure is drawn invisible, written
 ## there by @code{print} and closed: this works without a display.
@@ -34,9 +35,13 @@
 
 function ax = residtrace_plot (R, file)
   if (nargin < 1 || nargin > 2)
-    print_usage ();
+    error ("residtrace_plot:badInput",
+           "residtrace_plot: takes a result R and optionally a file name");
   endif
-  if (! isstruct (R) || ! isfield (R, "sim") || ! isfield (R, "model")
+  if (! isstruct (R) || ! isscalar (R) || ! isfield (R, "sim")
+      || ! isfield (R, "model") || ! isfield (R, "effects")
+      || ! isstruct (R.sim) || ! isstruct (R.model)
+      || ! isfield (R.model, "Ts")
       || ! all (isfield (R.sim, {"y", "before", "final_simulation"})))
     error ("residtrace_plot:badInput",
            "residtrace_plot: R must be the result of residtrace");
@@ -55,8 +60,15 @@ function ax = residtrace_plot (R, file)
   if (! isempty (R.effects))
     effects = ["+ " strjoin(R.effects, ", ")];
   endif
-  if (to_file)
-    fig = figure ("visible", "off");
+  n = numel (y);
+  if (! (isnumeric (lin) && isnumeric (fin) && isnumeric (y)
+         && numel (lin) == n && numel (fin) == n && n > 1
+         && isscalar (R.model.Ts) && R.model.Ts > 0 && iscellstr (R.effects)))
+    error ("residtrace_plot:badInput",
+           "residtrace_plot: R must be the result of residtrace");
+  endif
+  if (to_file || ! have_window_system ())
+    fig = figure ("visible", "off");   # without a display: drawn unseen
   else
     fig = gcf ();
     clf (fig);
@@ -77,7 +89,12 @@ function ax = residtrace_plot (R, file)
     xlabel (ax(2), "time (s) from the validation record's start");
     ylabel (ax(2), "residual");
     if (to_file)
-      print (fig, file);
+      try
+        print (fig, file);
+      catch err
+        error ("residtrace_plot:badInput",
+               "residtrace_plot: cannot write '%s' (%s)", file, err.message);
+      end_try_catch
     endif
   unwind_protect_cleanup
     if (to_file)

@@ -60,8 +60,10 @@
 
 function [yh, e, rmse] = residtrace_sim (R, varargin)
   fname = "residtrace_sim";
-  if (nargin < 2 || ! isstruct (R) || ! isfield (R, "final_model")
-      || ! isfield (R.final_model, "u0"))
+  if (nargin < 2 || ! isstruct (R) || ! isscalar (R)
+      || ! isfield (R, "final_model") || ! isfield (R, "model")
+      || ! isstruct (R.final_model) || ! isfield (R.final_model, "u0")
+      || ! isstruct (R.model) || ! isfield (R.model, "u0"))
     error ("residtrace_sim:badInput",
            "residtrace_sim: expected a result of residtrace and a record");
   endif
@@ -83,6 +85,14 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
       error ("residtrace_sim:badOption",
              "residtrace_sim: model must be 'final' or 'top'");
   endswitch
+  need = {"u0", "Ts", "npre", "substeps", "closed_loop", "F", ...
+          "channels", "out"};
+  if (! isstruct (m) || ! isscalar (m) || ! all (isfield (m, need))
+      || ! isnumeric (m.Ts) || ! isscalar (m.Ts) || ! (m.Ts > 0)
+      || ! isnumeric (m.u0) || ! isnumeric (m.npre) || ! isscalar (m.npre))
+    error ("residtrace_sim:badInput",
+           "residtrace_sim: R's model is not one residtrace returned");
+  endif
   if (m.closed_loop)
     error ("residtrace_sim:notSupported",
            "residtrace_sim: a model found in closed loop");
@@ -118,13 +128,23 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
     V.missing = d.missing(k);
   endif
   ctx = struct ("opts", struct ("substeps", m.substeps));
-  [e, yv] = residtrace_valerror (m, V, ctx);
-  if (npre > 0)
-    y0 = residtrace_simulate (m, u(1:npre, :), d.Ts, [], m.substeps);
-    yh = [y0; yv];
-  else
-    yh = yv;
-  endif
+  try
+    [e, yv] = residtrace_valerror (m, V, ctx);
+    if (npre > 0)
+      y0 = residtrace_simulate (m, u(1:npre, :), d.Ts, [], m.substeps);
+      yh = [y0; yv];
+    else
+      yh = yv;
+    endif
+  catch err
+    id = regexprep (err.identifier, '^residtrace:', 'residtrace_sim:');
+    if (! strncmp (id, "residtrace_sim:", 15))
+      id = "residtrace_sim:badInput";   # R is not a result of residtrace
+    endif
+    error (struct ("identifier", id, "message",
+                   ["residtrace_sim: " regexprep(err.message,
+                                                 '^residtrace: ', '')]));
+  end_try_catch
   rmse = sqrt (sum (e .^ 2) / max (nnz (! V.missing), 1));
 endfunction
 
