@@ -118,7 +118,7 @@
 ## value) and the terms significant there (largest z >= 3); an effect
 ## that acts on part of the record (a saturation's level, a direction of
 ## motion) active on at least 1 % of the samples and inactive on at
-## least 1 %; a friction with at least two velocity reversals. A
+## least 1 %; a friction with a velocity that reverses. A
 ## candidate that fails it is not tested, with the reason. A biproper M
 ## (a direct feedthrough) is analysed; the effects fed back from its
 ## output (Coulomb friction, state nonlinearity) are then not tested,
