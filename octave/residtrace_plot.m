@@ -33,7 +33,7 @@
 ## @seealso{residtrace, residtrace_table, residtrace_sim}
 ## @end deftypefn
 
-function ax = residtrace_plot (R, file)
+function ax = residtrace_plot (R, file, varargin)
   if (nargin < 1 || nargin > 2)
     error ("residtrace_plot:badInput",
            "residtrace_plot: takes a result R and optionally a file name");
@@ -54,18 +54,18 @@ function ax = residtrace_plot (R, file)
   y = R.sim.y;
   lin = R.sim.before;
   fin = R.sim.final_simulation;
-  t = (0:numel (y) - 1)' * R.model.Ts;
-  rms_ = @(e) sqrt (mean (e .^ 2));
-  effects = "no effect added";
-  if (! isempty (R.effects))
-    effects = ["+ " strjoin(R.effects, ", ")];
-  endif
   n = numel (y);
   if (! (isnumeric (lin) && isnumeric (fin) && isnumeric (y)
          && numel (lin) == n && numel (fin) == n && n > 1
          && isscalar (R.model.Ts) && R.model.Ts > 0 && iscellstr (R.effects)))
     error ("residtrace_plot:badInput",
            "residtrace_plot: R must be the result of residtrace");
+  endif
+  t = (0:n-1)' * R.model.Ts;
+  rms_ = @(e) sqrt (mean (e .^ 2));
+  effects = "no effect added";
+  if (! isempty (R.effects))
+    effects = ["+ " strjoin(R.effects, ", ")];
   endif
   if (to_file || ! have_window_system ())
     fig = figure ("visible", "off");   # without a display: drawn unseen

@@ -71,7 +71,8 @@ function [yh, e, rmse] = residtrace_sim (R, varargin)
     [d, miss] = contsid_getdata (fname, varargin{:});
     d = residtrace_bridge (d, miss);
   catch err
-    error (struct ("message", err.message, "identifier",
+    error (struct ("message", regexprep (err.message, '^[^:]*:', [fname ':']),
+                   "identifier",
                    regexprep (err.identifier, '^[^:]*:', [fname ':'])));
   end_try_catch
   opts = contsid_options (fname, struct ("model", "final"),
