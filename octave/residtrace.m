@@ -74,9 +74,10 @@
 ## initial state fitted on each record (declared: the simulations of such
 ## a model are "from the input plus an estimated initial state"; tested
 ## by the likelihood ratio of its least-squares fit). A property of the
-## record rather than of the system: when significant it is added first
-## and the pass is run again; it is the effect named only when nothing
-## else is found.
+## record rather than of the system: when significant it is added to
+## the baseline (as the levels are) and the pass is run again; it is
+## never counted as an effect (@code{R.initial_state} and the verdict say
+## it was estimated).
 ## @item 'sinusoid'
 ## an additive sinusoid at the strongest line of the residual periodogram
 ## not shared with the input (Fisher's g test); on the validation record
@@ -267,7 +268,10 @@
 ## validation record) or @code{rmse_after_prediction} (one-step
 ## prediction) carries that effect's figure. @code{rmse_refit} is
 ## the re-estimate's RMSE without an initial state; when 'initial_state'
-## is declared before the first effect, @code{rmse_before} includes it.
+## is declared before the first effect, @code{rmse_before} includes it
+## (and @code{rmse_after} too when nothing else is found).
+## @code{initial_state}: true when the record's initial state was
+## estimated (@code{initial_state_evidence}: what its test saw).
 ## An unstable M as given (a pole in the open right half-plane) is not
 ## simulated: @code{given_unstable} is true, @code{rmse_given} NaN, and
 ## the verdict begins "the given model is unstable".
@@ -604,11 +608,10 @@ function [R, varargout] = residtrace (varargin)
     endif
     if (! isempty (x0win))
       ## the record's initial state: a property of the record, estimated
-      ## (declared) first, then the pass is run again; named as the effect
-      ## only when nothing else is found
+      ## (declared) with the baseline, then the pass is run again; never
+      ## counted as an effect
       x0row = x0win;
       cur = x0win.model;
-      cur.effects = [cur.effects, {"initial_state"}];
       e0 = x0win.e1;
       ## from now on every fit on the estimation record estimates its
       ## initial state with the model (the engine's free responses), and
@@ -629,7 +632,7 @@ function [R, varargout] = residtrace (varargin)
         endif
       endif
       e_sim = e0;
-      R.steps(end+1) = step_row (sprintf ("+ initial_state (%s)",
+      R.steps(end+1) = step_row (sprintf ("initial state estimated (%s)",
                                           x0win.variant),
                                  e_sim, V.y,
                                  residtrace_whiteness (e0, V.u, opts.maxlag,
@@ -699,16 +702,17 @@ function [R, varargout] = residtrace (varargin)
       break;
     endif
   endwhile
-  if (strcmp (R.effect, "none") && ! isempty (x0row))
-    ## the initial state is the effect: "before" is the re-estimate
-    R.rmse_before = R.rmse_refit;
-    R.fit_before = fit_ (V.y, V.y - R.sim.refit);
-    R.sim.before = R.sim.refit;
-    R.effect = "initial_state";
+  R.initial_state = ! isempty (x0row);
+  R.initial_state_evidence = [];
+  if (R.initial_state)
+    R.initial_state_evidence = x0row.evidence;
+  endif
+  if (strcmp (R.effect, "none") && R.initial_state)
+    ## the initial state is part of the baseline, not an effect: the
+    ## model returned is the re-estimate with it
     R.rmse_after = rms_ (x0row.e1);
     R.sim.after = V.y - x0row.e1;
     R.model = export_model (x0row.model, D.Ts, ex);
-    R.evidence = x0row.evidence;
   endif
   R.effects = cur.effects;
   if (! isempty (history) && strcmp (history(end).effect, "none")
@@ -1379,6 +1383,10 @@ function s = verdict_text (R, history)
                  ifelse_ (isempty (R.effects), "", " in the last pass"),
                  strjoin (R.untested, ", "));
   endif
+  if (R.initial_state)
+    s = [s "; the record did not start at rest: its initial state is " ...
+         "estimated with the model (part of the baseline, not an effect)"];
+  endif
   if (! isempty (R.levels.text))
     s = [s "; " R.levels.text];
   endif
@@ -1768,8 +1776,13 @@ endfunction
 %! R = residtrace (iddata (y, u, Ts), idctm (2, F), "validation",
 %!                 iddata (yv, uv, Ts), "effects", {"initial_state", "delay"},
 %!                 "iterate", 1);
-%! assert (R.effect, "initial_state");
-%! assert (R.rmse_after < 0.5 * R.rmse_before);
+%! ## part of the baseline, never an effect
+%! assert (R.effect, "none");
+%! assert (R.initial_state);
+%! assert (isempty (R.effects));
+%! assert (! isempty (strfind (R.verdict, "did not start at rest")));
+%! assert (R.rmse_before < 0.5 * R.rmse_refit);
+%! assert (R.rmse_after, R.rmse_before, 1e-12);
 %! ## not down to the noise (0.03): the estimation fit has no initial state
 %! ## of its own, so the start transient biases the re-estimated model
 
