@@ -33,11 +33,8 @@
 ## @seealso{residtrace, residtrace_table, residtrace_sim}
 ## @end deftypefn
 
-function ax = residtrace_plot (R, file, varargin)
-  if (nargin < 1 || nargin > 2)
-    error ("residtrace_plot:badInput",
-           "residtrace_plot: takes a result R and optionally a file name");
-  endif
+function [ax, varargout] = residtrace_plot (R, file, varargin)
+  contsid_nargchk ("residtrace_plot", nargin, nargout, [1 2], 1);
   if (! isstruct (R) || ! isscalar (R) || ! isfield (R, "sim")
       || ! isfield (R, "model") || ! isfield (R, "effects")
       || ! isstruct (R.sim) || ! isstruct (R.model)

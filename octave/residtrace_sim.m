@@ -58,8 +58,9 @@
 ## @seealso{residtrace, residtrace_plot, residtrace_table}
 ## @end deftypefn
 
-function [yh, e, rmse] = residtrace_sim (R, varargin)
+function [yh, e, rmse, varargout] = residtrace_sim (R, varargin)
   fname = "residtrace_sim";
+  contsid_nargchk (fname, nargin, nargout, [2 Inf], 3);
   if (nargin < 2 || ! isstruct (R) || ! isscalar (R)
       || ! isfield (R, "final_model") || ! isfield (R, "model")
       || ! isstruct (R.final_model) || ! isfield (R.final_model, "u0")
