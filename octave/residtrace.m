@@ -9,7 +9,12 @@
 ## adds that effect, and reports the error before and after.
 ##
 ## @var{data}: the estimation record (an @code{iddata}, or @var{y},
-## @var{u}, @var{Ts}), uniformly sampled. @var{M}: an @code{idpoly} from
+## @var{u}, @var{Ts}), uniformly sampled; NaN in y or an input marks a
+## missing sample, bridged as @code{srivc} bridges it (an input held or
+## interpolated by its hold, the output interpolated linearly: see
+## @code{residtrace_bridge}) and left out of every figure (RMSE, fit,
+## residual tests: computed on the present samples; @code{R.missing}
+## holds the masks of both records). @var{M}: an @code{idpoly} from
 ## @code{srivc}, @code{lssvf}, @code{ivsvf} (or an @code{idtf},
 ## @code{idproc}, @code{idctm} built by hand). Its
 ## coefficients of F that are exactly zero are structural (integrators, a
@@ -69,9 +74,10 @@
 ## initial state fitted on each record (declared: the simulations of such
 ## a model are "from the input plus an estimated initial state"; tested
 ## by the likelihood ratio of its least-squares fit). A property of the
-## record rather than of the system: when significant it is added first
-## and the pass is run again; it is the effect named only when nothing
-## else is found.
+## record rather than of the system: when significant it is added to
+## the baseline (as the levels are) and the pass is run again; it is
+## never counted as an effect (@code{R.initial_state} and the verdict say
+## it was estimated).
 ## @item 'sinusoid'
 ## an additive sinusoid at the strongest line of the residual periodogram
 ## not shared with the input (Fisher's g test); on the validation record
@@ -106,7 +112,20 @@
 ## accuracy with a Newey-West variance is reported as @code{p_dm}; it
 ## is far less powerful when the residual is periodic or slow.) A
 ## candidate is significant when p < alpha / (number of candidates of
-## its group) (Bonferroni) and its score >= @code{minscore}. The
+## its group) (Bonferroni) and its score >= @code{minscore}. Before it is
+## scored every candidate passes one acceptance check
+## (@code{residtrace_accept}): each term it adds determined on the
+## estimation data (Wald z >= 2: its standard error well below its
+## value) and the terms significant there (largest z >= 3); an effect
+## that acts on part of the record (a saturation's level, a direction of
+## motion) active on at least 1 % of the samples and inactive on at
+## least 1 %; a friction with a velocity that reverses. A
+## candidate that fails it is not tested, with the reason. A biproper M
+## (a direct feedthrough) is analysed; the effects fed back from its
+## output (Coulomb friction, state nonlinearity) are then not tested,
+## with the reason (so is a candidate whose simulation the model's
+## structure does not support); an improper M is
+## @code{residtrace:notSupported}. The
 ## candidates form two groups ranked apart: those simulated from the
 ## input, and those that use the validation output itself (drift: a
 ## simulation with parameters tracked on the validation record; coloured
@@ -150,7 +169,15 @@
 ## point, e.g. a temperature in degC starting at ambient;
 ## @qcode{"estimate"}, @qcode{"none"})
 ## has an input level removed from both records and an output offset
-## estimated with the model, and @code{R.levels} says so. The input level
+## estimated with the model, and @code{R.levels} says so. A model that
+## carries the levels it was estimated with (@code{srivc} on a raw
+## record: @code{M.Report.DataUsed.InputOffset}, @code{OutputOffset}
+## nonzero) keeps them with @qcode{"auto"}: its input level is removed and
+## the output level estimated with the model, started from M's (with an
+## integrator the output level is an initial condition the fit has
+## already), so that the baseline never loses a level M has and no
+## effect is credited for putting it back. The levels and a declared
+## initial state are part of the baseline, never an effect. The input level
 ## is the one @var{M} carries when it has one (@code{srivc} on a raw
 ## record: @code{M.Report.DataUsed.InputOffset}, where its simulation
 ## starts at rest), otherwise the estimation record's first input sample
@@ -241,7 +268,13 @@
 ## validation record) or @code{rmse_after_prediction} (one-step
 ## prediction) carries that effect's figure. @code{rmse_refit} is
 ## the re-estimate's RMSE without an initial state; when 'initial_state'
-## is declared before the first effect, @code{rmse_before} includes it.
+## is declared before the first effect, @code{rmse_before} includes it
+## (and @code{rmse_after} too when nothing else is found).
+## @code{initial_state}: true when the record's initial state was
+## estimated (@code{initial_state_evidence}: what its test saw).
+## An unstable M as given (a pole in the open right half-plane) is not
+## simulated: @code{given_unstable} is true, @code{rmse_given} NaN, and
+## the verdict begins "the given model is unstable".
 ## @item levels
 ## what was done about the record's levels (estimated, u0, y0, text).
 ## @item rivals
@@ -257,16 +290,30 @@
 ## @item verdict
 ## one line: what was found, or why nothing could be tested.
 ## @item model
-## the model with the top effect: a struct (F, fixed, channels with their
-## numerators B and delays nk, output terms @code{out}, @code{ltv},
-## @code{noise}, covariance) and @code{linear}, its linear part as an
-## @code{idpoly} (one input per channel, built by @code{idctm}).
+## the model with the top effect, as residtrace simulated it: a struct
+## with @code{F}, @code{fixed}, @code{channels} (inputs and effect terms:
+## type, numerator @code{B}, delay @code{nk}, parameter), output terms
+## @code{out} (the output level, a polynomial, a sinusoid, a saturation,
+## each with its coefficients @code{c} and standard deviations
+## @code{cstd}), @code{phys} (a physical realisation: end stop, cascade),
+## @code{ltv}, @code{noise}, @code{theta} and @code{cov} (the SRIVC
+## covariance), @code{u0} (the input level removed from the records: the
+## levels are part of the model), @code{params} (its physical reading with
+## standard deviations, from @code{residtrace_physical}: gains, poles,
+## and each effect in physical units), @code{npre}, @code{substeps},
+## @code{closed_loop} (how it was simulated) and @code{linear}, its linear
+## part as an @code{idpoly} (one input per channel, built by
+## @code{idctm}). @code{residtrace_sim (R, data)} simulates it:
+## @code{R.rmse_final} (and with @code{"model", "top"},
+## @code{R.rmse_after}) is reproduced from the record; @code{residtrace_plot}
+## draws the before/after figure.
 ## @item evidence
 ## the winner's evidence (term, value, std, and what the test saw).
 ## @item effects, final_model, rmse_final
-## all effects added by the iteration, the last model and the RMSE of its
-## simulation (@code{rmse_final_tracked}, @code{rmse_final_prediction}
-## when it ends with drift or coloured noise).
+## all effects added by the iteration, the last model (fields as
+## @code{model}) and the RMSE of its simulation
+## (@code{rmse_final_tracked}, @code{rmse_final_prediction} when it ends
+## with drift or coloured noise).
 ## @item sim
 ## the validation output @code{y} and the model outputs on it:
 ## @code{given} (M as given), @code{refit}, @code{before} (the refit
@@ -298,7 +345,7 @@
 ## R = residtrace (iddata (y, u, Ts), M);
 ## R.effect, [R.rmse_before, R.rmse_after]
 ## @end example
-## @seealso{residtrace_table, residc, comparec, srivc, rsrivc}
+## @seealso{residtrace_table, residtrace_sim, residtrace_plot, residc, comparec, srivc, rsrivc}
 ## @end deftypefn
 
 function [R, varargout] = residtrace (varargin)
@@ -308,7 +355,8 @@ function [R, varargout] = residtrace (varargin)
     error ("residtrace:badInput", "residtrace: expected data and a model");
   endif
   try
-    d = contsid_getdata (fname, varargin{:});
+    [d, miss] = contsid_getdata (fname, varargin{:});   # NaN: missing
+    d = residtrace_bridge (d, miss);
   catch err
     rethrow_as (err);
   end_try_catch
@@ -349,6 +397,16 @@ function [R, varargout] = residtrace (varargin)
   endif
   [D, V] = records (d, opts);
   np = numel (Mst.theta);
+  ## a constant output tells nothing, whatever the input: said so before
+  ## any fit (the re-estimate would fail and seem to blame the input)
+  for rec = {D.y, V.y; "estimation", "validation"}
+    yr = rec{1};
+    if (all (yr == yr(1)))
+      error ("residtrace:badInput",
+             ["residtrace: the output of the %s record is constant: it ", ...
+              "carries no information on the model"], rec{2});
+    endif
+  endfor
   for rec = {D, V; "estimation", "validation"}
     Rr = rec{1};
     if (numel (Rr.y) < max (4 * opts.maxlag, 10 * np + 20))
@@ -362,6 +420,17 @@ function [R, varargout] = residtrace (varargin)
 
   ## Context shared by the candidates.
   base = residtrace_base (Mst, d);
+  n_f = numel (Mst.F) - 1;
+  if (any ([base.channels.nb] > n_f + 1))
+    error ("residtrace:notSupported",
+           ["residtrace: M is improper (a numerator of higher degree ", ...
+            "than its denominator): its simulation is not defined"]);
+  endif
+  if (any ([base.channels.nb] > n_f) && ! isempty (opts.controller))
+    error ("residtrace:notSupported",
+           ["residtrace: a biproper M (direct feedthrough) in a closed ", ...
+            "loop: the loop would be algebraic"]);
+  endif
   rts = roots (Mst.F);
   nz = abs (rts(abs (rts) > 1e-9 * max ([abs(rts); 1])));
   T = (numel (D.y) - 1) * D.Ts;
@@ -396,7 +465,7 @@ function [R, varargout] = residtrace (varargin)
   ## both records, an output offset joins the re-estimated model
   Vraw = V;
   [c_given, u_given] = contsid_carried_levels (M, columns (d.u));
-  lev = level_plan (D, Mst, opts.levels, u_given);
+  lev = level_plan (D, Mst, opts.levels, u_given, c_given);
   D.u -= lev.u0; V.u -= lev.u0;
   if (! isempty (V.pre))
     V.pre = struct ("y", D.y, "u", D.u, "vhat", D.vhat, "ysm", D.ysm);
@@ -405,6 +474,14 @@ function [R, varargout] = residtrace (varargin)
   endif
   ctx.D = D;
   ctx.V = V;
+  ## the figures leave the missing validation samples out
+  vmask (V.missing);
+  unmask = onCleanup (@() vmask ([]));
+  ex = struct ("u0", lev.u0, "npre", 0, "closed", ! isempty (V.loop),
+               "substeps", opts.substeps);
+  if (! isempty (V.pre))
+    ex.npre = numel (D.y);
+  endif
 
   ## M as given, and M re-estimated by SRIVC in its own structure.
   base.np = np;
@@ -416,12 +493,21 @@ function [R, varargout] = residtrace (varargin)
   if (! isempty (Vg.pre))
     Vg.pre.u -= u_given;
   endif
-  try
-    e_given = residtrace_valerror (base, Vg, ctx) - c_given;
-  catch
-    e_given = Inf (size (V.y));        # M as given diverges
-  end_try_catch
+  ## an unstable M as given is not simulated: its figure would be the
+  ## size of its divergence, not an error (NaN, and the verdict says so)
   R = struct ();
+  R.missing = struct ("estimation", D.missing, "validation", V.missing);
+  R.given_unstable = ! stable_given (Mst.F);
+  e_given = NaN (size (V.y));
+  if (! R.given_unstable)
+    try
+      e_given = residtrace_valerror (base, Vg, ctx) - c_given;
+    catch
+    end_try_catch
+  endif
+  if (any (! isfinite (e_given)))
+    e_given(:) = NaN;                  # M as given cannot be simulated
+  endif
   R.rmse_given = rms_ (e_given);
   R.fit_given = fit_ (V.y, e_given);
   starts = {Mst.F};
@@ -430,7 +516,8 @@ function [R, varargout] = residtrace (varargin)
   endif
   tmpl = base;
   if (lev.estimate)
-    tmpl.out(end+1) = struct ("type", "offset", "c", 0, "cstd", 0,
+    ## started at the level M carries (none: the engine's start)
+    tmpl.out(end+1) = struct ("type", "offset", "c", c_given, "cstd", 0,
                               "omega", 0);
     tmpl.levels = true;
   endif
@@ -476,13 +563,15 @@ function [R, varargout] = residtrace (varargin)
   R.rmse_after_kind = "simulation";
   R.rmse_after_tracked = NaN;
   R.rmse_after_prediction = NaN;
-  R.model = export_model (cur, D.Ts);
+  R.model = export_model (cur, D.Ts, ex);
   R.evidence = struct ("text", "no effect found");
   R.effects = {};
   R.rmse_refit = R.rmse_before;
   R.sim = struct ("y", V.y, "given", V.y - e_given, "refit", V.y - e0,
                   "before", V.y - e0, "after", V.y - e0, "final", V.y - e0);
-  steps = step_row ("M as given", e_given, V.y, R.tests_given, "simulation",
+  steps = step_row (["M as given" ifelse_(R.given_unstable,
+                                           " (unstable: not simulated)", "")],
+                    e_given, V.y, R.tests_given, "simulation",
                     R.params_before);
   steps(2) = step_row (["M re-estimated (SRIVC)" R.levels.label], e0, V.y,
                        R.tests_before, "simulation",
@@ -490,7 +579,7 @@ function [R, varargout] = residtrace (varargin)
   R.steps = steps;
   e_sim = e0;                           # the simulation error of cur
   if (! R.testable)
-    R.verdict = ["cannot test: " R.reason];
+    R.verdict = [given_text(R) "cannot test: " R.reason];
     R.tests_after = R.tests_before;
     R.final_model = R.model;
     R.rmse_final = R.rmse_after;
@@ -519,11 +608,10 @@ function [R, varargout] = residtrace (varargin)
     endif
     if (! isempty (x0win))
       ## the record's initial state: a property of the record, estimated
-      ## (declared) first, then the pass is run again; named as the effect
-      ## only when nothing else is found
+      ## (declared) with the baseline, then the pass is run again; never
+      ## counted as an effect
       x0row = x0win;
       cur = x0win.model;
-      cur.effects = [cur.effects, {"initial_state"}];
       e0 = x0win.e1;
       ## from now on every fit on the estimation record estimates its
       ## initial state with the model (the engine's free responses), and
@@ -544,7 +632,7 @@ function [R, varargout] = residtrace (varargin)
         endif
       endif
       e_sim = e0;
-      R.steps(end+1) = step_row (sprintf ("+ initial_state (%s)",
+      R.steps(end+1) = step_row (sprintf ("initial state estimated (%s)",
                                           x0win.variant),
                                  e_sim, V.y,
                                  residtrace_whiteness (e0, V.u, opts.maxlag,
@@ -607,23 +695,24 @@ function [R, varargout] = residtrace (varargin)
         R.rmse_after_prediction = rms_ (winner.e1);
       endif
       R.rmse_after_kind = kind_text (winner.kind);
-      R.model = export_model (cur, D.Ts);
+      R.model = export_model (cur, D.Ts, ex);
       R.evidence = winner.evidence;
     endif
     if (! simulated)
       break;
     endif
   endwhile
-  if (strcmp (R.effect, "none") && ! isempty (x0row))
-    ## the initial state is the effect: "before" is the re-estimate
-    R.rmse_before = R.rmse_refit;
-    R.fit_before = fit_ (V.y, V.y - R.sim.refit);
-    R.sim.before = R.sim.refit;
-    R.effect = "initial_state";
+  R.initial_state = ! isempty (x0row);
+  R.initial_state_evidence = [];
+  if (R.initial_state)
+    R.initial_state_evidence = x0row.evidence;
+  endif
+  if (strcmp (R.effect, "none") && R.initial_state)
+    ## the initial state is part of the baseline, not an effect: the
+    ## model returned is the re-estimate with it
     R.rmse_after = rms_ (x0row.e1);
     R.sim.after = V.y - x0row.e1;
-    R.model = export_model (x0row.model, D.Ts);
-    R.evidence = x0row.evidence;
+    R.model = export_model (x0row.model, D.Ts, ex);
   endif
   R.effects = cur.effects;
   if (! isempty (history) && strcmp (history(end).effect, "none")
@@ -633,8 +722,8 @@ function [R, varargout] = residtrace (varargin)
     r = history(end).ranking;
     R.untested = {r([r.failed]).effect};
   endif
-  R.verdict = verdict_text (R, history);
-  R.final_model = export_model (cur, D.Ts);
+  R.verdict = [given_text(R) verdict_text(R, history)];
+  R.final_model = export_model (cur, D.Ts, ex);
   R.rmse_final = rms_ (e_sim);
   R.rmse_final_tracked = NaN;
   R.rmse_final_prediction = NaN;
@@ -764,6 +853,14 @@ endfunction
 
 function row = screened_row_ (effect, cur, ctx, e0)
   fn = ["residtrace_cand_" cand_file(effect)];
+  if (biproper (cur) && any (strcmp (effect, fed_back_effects ())))
+    c = residtrace_cand (effect);
+    c.reason = ["not for a biproper model (direct feedthrough): the ", ...
+                "effect is fed back from the output, which the ", ...
+                "feedthrough would enter"];
+    row = score (c, cur, ctx, e0);
+    return;
+  endif
   if (isfield (cur, "phys") && ! isempty (cur.phys)
       && ! strcmp (effect, "delay"))
     ## a physical realisation (end stop, cascade) holds its own levels
@@ -783,13 +880,15 @@ function row = screened_row_ (effect, cur, ctx, e0)
         && row.score >= -5 * ctx.opts.minscore)
       return;
     endif
-    if (! row.applicable && isfield (c.evidence, "tmax")
-        && c.evidence.tmax < 1.5)
+    if (! row.applicable && isfield (row.evidence, "tmax")
+        && row.evidence.tmax < 1.5)
       return;                  # its terms are nowhere near significant
     endif
     if (! row.applicable
         && isempty (regexp (row.reason, ["estimation failed|not ", ...
                                           "significant on the estimation|", ...
+                                          "not determined on the ", ...
+                                          "estimation|", ...
                                           "validation failed|diverges"],
                             "once")))
       return;                  # not applicable for a structural reason
@@ -798,6 +897,20 @@ function row = screened_row_ (effect, cur, ctx, e0)
   c = guarded (effect, @() feval (fn, cur, ctx));
   row = score (c, cur, ctx, e0);
   row.screened = false;
+endfunction
+
+## A channel whose numerator has F's degree: a direct feedthrough.
+function b = biproper (m)
+  b = any ([m.channels.nb] > numel (m.F) - 1);
+endfunction
+
+## The effects simulated with the model's own output fed back (the
+## sub-step simulator, residtrace_simulate): they need a strictly proper
+## model. (Drift is tracked with the model's own structure; where its
+## simulation needs the sub-step simulator, that says notSupported and
+## the candidate is reported not tested, see guarded.)
+function e = fed_back_effects ()
+  e = {"coulomb", "state_nonlinearity"};
 endfunction
 
 ## The screening's context: three iterations per fit, the estimation
@@ -814,6 +927,7 @@ function [q, qcur] = screening_context (ctx, cur)
   endif
   k = 1:Nq;
   D.y = D.y(k); D.u = D.u(k, :); D.vhat = D.vhat(k, :); D.ysm = D.ysm(k);
+  D.missing = D.missing(k);
   if (! isempty (D.loop))
     D.loop.r1 = D.loop.r1(k); D.loop.r2 = D.loop.r2(k);
   endif
@@ -860,6 +974,17 @@ function row = score (c, cur, ctx, e0)
                 "variants", {c.variants});
   row.evidence = unknown_std (row.evidence);
   if (! c.applicable)
+    return;
+  endif
+  ## the one acceptance check of every candidate: its terms determined,
+  ## the effect active on part of the record and not on all of it
+  [ok, why, tmax] = residtrace_accept (c, cur, numel (ctx.D.y));
+  if (isstruct (row.evidence))
+    row.evidence.tmax = tmax;
+  endif
+  if (! ok)
+    row.applicable = false;
+    row.reason = why;
     return;
   endif
   try
@@ -939,6 +1064,14 @@ function out = guarded (effect, f)
     try
       out = f ();
     catch err
+      if (! isempty (effect)
+          && strcmp (err.identifier, "residtrace:notSupported"))
+        ## a structure the candidate cannot simulate: a verdict
+        out = residtrace_cand (effect);
+        out.reason = ["not supported: ", ...
+                      regexprep(err.message, '^residtrace: ', '')];
+        return;
+      endif
       if (isempty (effect) || ! any (strcmp (err.identifier, ids)))
         rethrow (err);
       endif
@@ -1004,14 +1137,16 @@ endfunction
 
 function [D, V] = records (d, opts)
   D = struct ("y", d.y, "u", d.u, "Ts", d.Ts, "intersample", d.intersample,
-              "loop", [], "vhat", [], "ysm", [], "pre", []);
+              "loop", [], "vhat", [], "ysm", [], "pre", [],
+              "missing", d.missing);
   if (isempty (opts.validation))
     N = numel (d.y);
     Ne = round (opts.split * N);
     V = D;
     V.y = d.y(Ne+1:end); V.u = d.u(Ne+1:end, :);
+    V.missing = d.missing(Ne+1:end);
     V.pre = true;                     # filled once the velocity is known
-    D.y = d.y(1:Ne); D.u = d.u(1:Ne, :);
+    D.y = d.y(1:Ne); D.u = d.u(1:Ne, :); D.missing = d.missing(1:Ne);
     if (! isempty (opts.controller))
       error ("residtrace:badOption",
              "residtrace: a closed loop needs a separate validation record");
@@ -1020,10 +1155,11 @@ function [D, V] = records (d, opts)
     dv = opts.validation;
     try
       if (iscell (dv))
-        dv = contsid_getdata ("residtrace", dv{:});
+        [dv, mv] = contsid_getdata ("residtrace", dv{:});
       else
-        dv = contsid_getdata ("residtrace", dv);
+        [dv, mv] = contsid_getdata ("residtrace", dv);
       endif
+      dv = residtrace_bridge (dv, mv);
     catch err
       rethrow_as (err);
     end_try_catch
@@ -1038,8 +1174,7 @@ function [D, V] = records (d, opts)
     endif
     V = struct ("y", dv.y, "u", dv.u, "Ts", dv.Ts,
                 "intersample", dv.intersample, "loop", [], "vhat", [],
-                "ysm", [],
-                "pre", []);
+                "ysm", [], "pre", [], "missing", dv.missing);
   endif
   if (! isempty (opts.controller))
     [num, den] = contsid_controller ("residtrace", opts.controller, d.Ts);
@@ -1127,9 +1262,10 @@ endfunction
 ## need not begin at rest); otherwise the estimation record's first
 ## sample (the record starts at rest there). The output offset is
 ## estimated with the model.
-function L = level_plan (D, Mst, mode, u_carried)
+function L = level_plan (D, Mst, mode, u_carried, c_carried)
   L = struct ("estimate", false, "u0", zeros (1, columns (D.u)),
               "why", "");
+  carried = any (u_carried != 0) || c_carried != 0;
   switch (mode)
     case "none"
       return;
@@ -1137,6 +1273,18 @@ function L = level_plan (D, Mst, mode, u_carried)
       L.estimate = true;
       L.why = "asked for";
     otherwise
+      if (carried)
+        ## M was estimated with levels removed (srivc on a raw record): its
+        ## input level is removed here too and its output level estimated
+        ## with the model (started from M's), so the baseline keeps what
+        ## M has; with an integrator the output level is an initial
+        ## condition the fit has already
+        L.u0 = u_carried;
+        L.estimate = Mst.F(end) != 0;
+        L.why = ["the model carries the levels it was estimated with; ", ...
+                 "the model's input level"];
+        return;
+      endif
       if (Mst.F(end) == 0)
         return;                     # an integrator: levels are initial states
       endif
@@ -1172,6 +1320,10 @@ endfunction
 function r = level_report (L, cur)
   r = struct ("estimated", L.estimate, "u0", L.u0, "y0", 0, "label", "",
               "text", "");
+  if (! L.estimate && any (L.u0 != 0))
+    r.text = sprintf (["levels handled (%s): input level %s removed ", ...
+                       "from both records"], L.why, mat2str (L.u0, 4));
+  endif
   if (! L.estimate || ! cur.ok)
     return;
   endif
@@ -1231,8 +1383,27 @@ function s = verdict_text (R, history)
                  ifelse_ (isempty (R.effects), "", " in the last pass"),
                  strjoin (R.untested, ", "));
   endif
+  if (R.initial_state)
+    s = [s "; the record did not start at rest: its initial state is " ...
+         "estimated with the model (part of the baseline, not an effect)"];
+  endif
   if (! isempty (R.levels.text))
     s = [s "; " R.levels.text];
+  endif
+endfunction
+
+## M as given is stable when no pole lies in the open right half-plane
+## (integrators and undamped pairs are allowed: they are structural).
+function ok = stable_given (F)
+  z = roots (F);
+  ok = all (real (z) <= 1e-9 * max ([abs(z); 1]));
+endfunction
+
+function s = given_text (R)
+  s = "";
+  if (R.given_unstable)
+    s = ["the given model is unstable (a pole in the right half-plane): ", ...
+         "not simulated, the analysis starts from its re-estimate; "];
   endif
 endfunction
 
@@ -1253,6 +1424,11 @@ function Mst = model_struct (M, Ts)
            ["residtrace: M must be a continuous-time model with one ", ...
             "output and one denominator"]);
   endif
+  if (m.nu < 1 || isempty (m.F) || isempty (m.B))
+    error ("residtrace:badInput",
+           ["residtrace: M has no input (a time-series model): there is ", ...
+            "nothing to simulate from the input"]);
+  endif
   B = m.B;
   if (numel (B) == 1)
     B = B{1};
@@ -1266,8 +1442,16 @@ endfunction
 
 ## The model as returned to the user: the struct plus its linear part as
 ## an idctm with one input per channel.
-function out = export_model (m, Ts)
+function out = export_model (m, Ts, ex)
   out = rmfield (m, intersect (fieldnames (m), {"e_est", "variant_"}));
+  ## what residtrace_sim needs to simulate it as residtrace scored it: the
+  ## input level removed from the records, how the validation record was
+  ## formed, a closed loop; and the physical reading with uncertainties
+  out.u0 = ex.u0;
+  out.npre = ex.npre;
+  out.closed_loop = ex.closed;
+  out.substeps = ex.substeps;
+  out.params = residtrace_physical (m, Ts);
   B = {m.channels.B};
   F = m.F;
   if (numel (B) == 1)
@@ -1320,11 +1504,30 @@ function s = ifelse_ (c, a, b)
   endif
 endfunction
 
+## The mask of the validation record's missing samples (bridged, see
+## residtrace_bridge), which every figure leaves out: set once per call.
+function m = vmask (set)
+  persistent mask = [];
+  if (nargin > 0)
+    mask = set;
+  endif
+  m = mask;
+endfunction
+
+function x = present_ (x)
+  m = vmask ();
+  if (numel (m) == numel (x) && any (m))
+    x = x(! m);
+  endif
+endfunction
+
 function v = rms_ (e)
+  e = present_ (e);
   v = sqrt (mean (e .^ 2));
 endfunction
 
 function f = fit_ (y, e)
+  y = present_ (y); e = present_ (e);
   f = 100 * (1 - norm (e) / norm (y - mean (y)));
 endfunction
 
@@ -1345,6 +1548,15 @@ endfunction
 %! y = simc (G, u + 0.3, Ts) + 0.05 * randn (N, 1);
 %! yv = simc (G, uv + 0.3, Ts) + 0.05 * randn (N, 1);
 %! M = srivc (iddata (y, u, Ts), [1 2 0]);
+%! ## srivc has estimated the input level: M has the offset, and it is
+%! ## kept, not found again
+%! assert (get (M, "Report").DataUsed.InputOffset, -0.3, 0.02);
+%! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
+%!                 "effects", {"offset", "delay", "order"});
+%! assert (R.effect, "none");
+%! assert (R.rmse_before, R.rmse_given, 0.05 * R.rmse_given);
+%! ## the same dynamics without the level: the offset is the effect
+%! M = idctm (M.B, M.F);
 %! f = [tempname() ".md"];
 %! R = residtrace (iddata (y, u, Ts), M, "validation", iddata (yv, uv, Ts),
 %!                 "effects", {"offset", "delay", "order"}, "table", f);
@@ -1387,17 +1599,19 @@ endfunction
 %! assert (! R.testable);
 %! assert (! isempty (R.reason));
 
-%!test  # an unstable model as given: its RMSE is rmse_given, refit helps
+%!test  # an unstable model as given: said so, not simulated, refit helps
 %! randn ("state", 14);
 %! y = x + 0.05 * randn (N, 1);
 %! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -0.5 1]),
 %!                 "effects", {"offset"});
-%! assert (R.rmse_given > 1e3);
+%! assert (R.given_unstable);
+%! assert (isnan (R.rmse_given));
+%! assert (strncmp (R.verdict, "the given model is unstable", 27));
 %! assert (R.rmse_before < 0.1);
 %! assert (R.rmse_refit, R.rmse_before);
 %! R = residtrace (iddata (y, u, Ts), idctm (2, [1 -30 1]),
 %!                 "effects", {"offset"});
-%! assert (R.rmse_given, Inf);
+%! assert (isnan (R.rmse_given));
 %! assert (R.rmse_before < 0.1);
 
 %!test  # raw units: levels estimated and said; the baseline is the re-fit
@@ -1563,8 +1777,13 @@ endfunction
 %! R = residtrace (iddata (y, u, Ts), idctm (2, F), "validation",
 %!                 iddata (yv, uv, Ts), "effects", {"initial_state", "delay"},
 %!                 "iterate", 1);
-%! assert (R.effect, "initial_state");
-%! assert (R.rmse_after < 0.5 * R.rmse_before);
+%! ## part of the baseline, never an effect
+%! assert (R.effect, "none");
+%! assert (R.initial_state);
+%! assert (isempty (R.effects));
+%! assert (! isempty (strfind (R.verdict, "did not start at rest")));
+%! assert (R.rmse_before < 0.5 * R.rmse_refit);
+%! assert (R.rmse_after, R.rmse_before, 1e-12);
 %! ## not down to the noise (0.03): the estimation fit has no initial state
 %! ## of its own, so the start transient biases the re-estimated model
 

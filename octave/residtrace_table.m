@@ -73,7 +73,8 @@ function md = markdown (R)
   if (isfield (R, "levels") && ! isempty (R.levels.text))
     L{end+1} = sprintf ("Levels: %s.", R.levels.text);
   endif
-  if (any (strcmp (R.effects, "initial_state")))
+  if ((isfield (R, "initial_state") && isequal (R.initial_state, true))
+      || any (strcmp (R.effects, "initial_state")))
     L{end+1} = ["Simulations after 'initial_state' include the free ", ...
                 "response from an initial state fitted on each record."];
   endif

@@ -9,7 +9,10 @@
 ## the measured output (a first-order model reads the output itself as a
 ## velocity), filtered forward and backward so that its zero crossings
 ## are not delayed (@code{ctx.D.vhat}), or the output itself when it is
-## a velocity (a variant for models of any order; no differentiation). A
+## a velocity (a variant for models of any order; no differentiation);
+## whether the term is determined and the velocity reverses often enough
+## is @code{residtrace_accept}'s general check (evidence @code{share},
+## the share of samples moving forward, and @code{reversals}). A
 ## second variant adds a constant
 ## too (Coulomb levels that differ with the direction: sign(v) and an
 ## offset); the BIC on the estimation data chooses. A fitted b_s > 0 (F
@@ -85,12 +88,6 @@ function c = residtrace_cand_coulomb (cur, ctx)
                                  "the input decides the direction"));
     return;
   endif
-  if (abs (val) < 3 * sd)
-    c.evidence.tmax = abs (val) / sd;
-    c.reason = sprintf (["the friction term is not significant on the ", ...
-                         "estimation data (b_s = %.3g +- %.2g)"], val, sd);
-    return;
-  endif
   if (val > 0)                  # F monic: friction needs b_s < 0
     c.reason = sprintf (["the fitted term %.3g sign(v) pushes along ", ...
                          "the motion: not a friction"], val);
@@ -106,7 +103,8 @@ function c = residtrace_cand_coulomb (cur, ctx)
   c.evidence = struct ("term", "b_s (gain of sign(v))", "value", val,
                        "std", sd, "physical", -val / bu,
                        "physical_std", sd / abs (bu), "corr", r,
-                       "r2_input", r2,
+                       "r2_input", r2, "share", mean (s > 0),
+                       "reversals", reversals (s),
                        "text", sprintf (["Coulomb level %.4g +- %.2g ", ...
                                          "(input units); corr(residual, ", ...
                                          "sign(v)/F) = %.2f"],
@@ -133,6 +131,12 @@ function r2 = explained (s, u)
     return;
   endif
   r2 = 1 - sum ((s - X * (X \ s)) .^ 2) / sum (sc .^ 2);
+endfunction
+
+## Sign changes of s, its zeros skipped.
+function n = reversals (s)
+  s = s(s != 0);
+  n = sum (s(2:end) != s(1:end-1));
 endfunction
 
 function t = two_level (u)

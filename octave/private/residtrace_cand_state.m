@@ -19,9 +19,9 @@
 ## y is the measured output (its noise biases the coefficients towards
 ## zero, as errors in variables do); the simulation uses the model's own
 ## output (plus its output offset), re-evaluated at each sub-step. The
-## variant with the smallest BIC on the estimation data is kept; it is
-## not tested (nor simulated) when none of its coefficients is three
-## standard deviations away from zero. With the record's levels
+## variant with the smallest BIC on the estimation data is kept; whether
+## its terms are determined is @code{residtrace_accept}'s general check.
+## With the record's levels
 ## estimated the terms come with a constant (F(0) = 0 needs one to
 ## balance B(0) u0). A further variant puts the nonlinearity at an inner
 ## node: two first-order sections with square-root outflows (two tanks,
@@ -103,13 +103,6 @@ function c = residtrace_cand_state (cur, ctx)
   nlin = sum (strcmp ({m.channels.type}, "ypower"));
   val = m.theta(end-nlin+1:end);
   sd = sqrt (diag (m.cov))(end-nlin+1:end);
-  if (all (abs (val) < 3 * sd))
-    c.evidence.tmax = max (abs (val) ./ sd);
-    c.reason = sprintf (["the output terms are not significant on the ", ...
-                         "estimation data (%s +- %s)"],
-                        mat2str (val(:).', 3), mat2str (sd(:).', 2));
-    return;
-  endif
   c.applicable = true;
   c.model = m;
   c.variant = m.variant_;

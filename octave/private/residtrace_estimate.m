@@ -16,7 +16,10 @@
 ## @var{ch}: struct array of channels with fields @code{w} (N-by-1),
 ## @code{nb}, @code{nk}, @code{rule} (@qcode{"zoh"} or @qcode{"foh"}).
 ## @var{spec}: @code{n} (order of F), @code{fixed} (1-by-n logical over
-## f1..fn), @code{fval} (their values) and optionally
+## f1..fn), @code{fval} (their values), optionally @code{missing} (the
+## N-by-1 mask of missing samples, bridged: their y is replaced by the
+## model's output and the fit repeated, twice; @code{x} equals y at the
+## missing ones) and optionally
 ## @code{initial_state} (true: its free response estimated with the
 ## model) and @code{output_offset} (true: a constant added to the output
 ## estimated with the model, returned as @code{offset}; @code{x} then
@@ -86,7 +89,24 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
   endif
   est = struct ("ok", false, "converged", false, "stable", false,
                 "iterations", 0);
+  present = true (N, 1);
+  if (isfield (spec, "missing") && any (spec.missing))
+    present = ! spec.missing(:);
+  endif
   [theta, P, info] = contsid_refined_iv ("residtrace", y, W, Ts, e);
+  for k = 1:2 * any (! present)
+    ## missing samples (y bridged by residtrace_bridge): replaced by the
+    ## model's own output and the fit repeated from where it ended, so
+    ## that they carry no error (the expectation step of an output-error
+    ## model); the inputs there are known or bridged
+    if (numel (theta) != np_all + nc || any (! isfinite (theta)))
+      break;
+    endif
+    y(! present) = info.simulated(! present);
+    e.theta_init = theta(:);
+    e.max_starts = 1;
+    [theta, P, info] = contsid_refined_iv ("residtrace", y, W, Ts, e);
+  endfor
   if (numel (theta) != np_all + nc || any (! isfinite (theta)))
     return;
   endif
@@ -108,10 +128,11 @@ function est = residtrace_estimate (y, ch, Ts, spec, opts)
   x = info.simulated(:);
   if (r > 0)
     T = ((0:N-1)' * Ts) .^ (0:r-1);
-    x += T * (T \ (y - x));
+    x(present) += T(present, :) * (T(present, :) \ (y(present) - x(present)));
   endif
+  x(! present) = y(! present);          # a missing sample: no error
   np = numel (est.theta);
-  est.s2 = sum ((y - x) .^ 2) / max (N - np - r, 1);
+  est.s2 = sum ((y - x) .^ 2) / max (nnz (present) - np - r, 1);
   est.x = x;
   est.np = np;
   est.ok = all (isfinite (x));

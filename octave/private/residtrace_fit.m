@@ -68,6 +68,11 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
                  "initial_state", isfield (D, "initial_state")
                                   && D.initial_state,
                  "output_offset", ! isempty (k_lev));
+  miss = false (N, 1);
+  if (isfield (D, "missing") && numel (D.missing) == N)
+    miss = D.missing(:);       # bridged samples: no error, no information
+    spec.missing = miss;
+  endif
   others = setdiff (1:numel (tmpl.out), k_lev);
   o = zeros (N, 1);
   o_lin = o;
@@ -137,7 +142,7 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
     if (! isempty (others))
       [o_lin, model.out(others)] = fit_out (tmpl.out(others), y - best.x,
                                             best.x - best.offset, D.Ts,
-                                            ! mask);
+                                            ! mask & ! miss);
       o = o_lin;
       if (! isempty (isat))
         lv = tmpl.out(isat).c;
@@ -155,6 +160,7 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
     model.channels(j).B = best.B{j};
   endfor
   e = y - best.x - o;
+  e(miss) = 0;
   nout = sum (arrayfun (@(m) sum (isfinite (m.c)), model.out));
   model.np = best.np + nout;
   model.s2 = sum (e .^ 2) / max (N - model.np, 1);
@@ -244,6 +250,8 @@ function [e, yh] = sim_error (model, D, ctx, x0)
   endif
   if (! all (isfinite (e)))
     e = Inf (size (D.y));
+  elseif (isfield (D, "missing") && numel (D.missing) == numel (e))
+    e(D.missing) = 0;          # bridged samples carry no error
   endif
 endfunction
 

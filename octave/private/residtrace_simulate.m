@@ -160,6 +160,16 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
   if (any (ex))
     W(:, ex) = residtrace_channels (chans(ex), u, zeros (N, 1));
   endif
+  ## the simulator's states are those of a strictly proper model: a
+  ## biproper channel (numerator of F's degree, a direct feedthrough)
+  ## would put the input into the output that the sign of the velocity,
+  ## the powers of the output or a controller read back
+  if (any ([chans.nb] > n))
+    error ("residtrace:notSupported",
+           ["residtrace: a biproper model (direct feedthrough) with an ", ...
+            "effect fed back from its output, a closed loop or drifting ", ...
+            "parameters"]);
+  endif
   b = zeros (n, m);
   for j = 1:m
     bj = chans(j).B(:);

@@ -27,6 +27,9 @@
 ## residual and applied to the other half (two-fold cross-fitting).
 ## @item A noise model A(q) (@code{model.noise}) turns e into the
 ## one-step-ahead prediction error A(q) e.
+## @item At V's missing samples (@code{V.missing}, bridged by
+## @code{residtrace_bridge}) e is 0 and yh the bridged y: they are not
+## scored.
 ## @end itemize
 ## @end deftypefn
 
@@ -83,6 +86,11 @@ function [e, yh] = residtrace_valerror (model, V, ctx)
     p = filter (m.noise, 1, e);
     yh += e - p;
     e = p;
+  endif
+  if (isfield (V, "missing") && any (V.missing))
+    ## a missing sample (bridged, residtrace_bridge) carries no error
+    e(V.missing) = 0;
+    yh(V.missing) = V.y(V.missing);
   endif
 endfunction
 

@@ -112,6 +112,8 @@ function tpl = fuzz_public_templates ()
     R = struct ("steps", struct ("label", {"a"}, "params", {[]}));
   end_try_catch
   tpl.residtrace_table = {{R}};
+  tpl.residtrace_sim = {{R, mid}, {R, mid, "model", "top"}};
+  tpl.residtrace_plot = {{R, [tempname() ".png"]}};
   tpl.rivc = {{data, [1 1 1 2 0]}, {gap, [1 0 0 2 0]}};
   tpl.rivsvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}};
   tpl.rlsconverge = {{long, [2 1 0], "lambda_svf", 3}, ...
