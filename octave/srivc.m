@@ -375,7 +375,8 @@ endfunction
 %! assert (info.simulated, y, 1e-6);
 
 %!test  # raw units with an input of nonzero mean: the output offset
-%! ## and the gain are nearly collinear (session 7: not converged, c = 18.6)
+%! ## and the gain are nearly collinear (alternating them: not converged,
+%! ## c = 18.6)
 %! y = 20 + simc (struct ("B", 4, "F", [1 2.4 4]), 5 + 3 * u, Ts);
 %! [M, ~, ~, ~, ~, info] = srivc (iddata (y, 5 + 3 * u, Ts), [1 2 0]);
 %! assert (info.converged);
