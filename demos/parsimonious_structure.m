@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{nn} =} parsimonious_structure (@var{V})
-## The structure rule of the residtrace studies (@code{residtrace_blind},
+## The structure rule of the residtrace studies (@code{residtrace_lab_rigs},
 ## @code{residtrace_cascaded_tanks}), a user's choice from the table
 ## @var{V} of @code{srivcstruc (..., "NN", "list")} (rows [RT2, YIC, nb,
 ## nf, nk, ...]): of the structures whose validation residual variance

@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_loud ()
 ## Issue 9's blind check, "make every failure loud": on the blind
-## pendulum record (@code{demos/blind_rigs.m}; torque motor V ->
+## pendulum record (@code{demos/lab_rigs.m}; torque motor V ->
 ## potentiometer angle in degrees, hanging at 180 degrees, m g l
 ## sin(theta)), with the user's model of that check (@code{srivc} [1 2 0]
 ## on the raw record) and residtrace's defaults:
@@ -21,14 +21,14 @@
 ## independently (before, 180 degrees off).
 ## @end itemize
 ## It does not check residtrace's verdict (the blind check reports those,
-## @code{demos/residtrace_blind.m}).
+## @code{demos/residtrace_lab_rigs.m}).
 ## @end deftypefn
 
 function test_residtrace_loud ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
-  rig = blind_rigs ("pendulum", 1, 0);
+  rig = lab_rigs ("pendulum", 1, 0);
   [M, ~, ~, ~, ~, info] = srivc (rig.de, [1 2 0]);
   assert (info.output_offset);
   R = [];

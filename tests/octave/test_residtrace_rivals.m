@@ -30,7 +30,7 @@ function test_residtrace_rivals ()
   private_dir = fullfile (root, "octave", "private");
   addpath (private_dir);
   cleanup = onCleanup (@() rmpath (private_dir));
-  rig = blind_rigs ("mixing_delay");
+  rig = lab_rigs ("mixing_delay");
   ws = warning ("off", "all");
   M = srivc (rig.de, [1 2 11]);
   warning (ws);

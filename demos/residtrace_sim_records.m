@@ -2,8 +2,8 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn  {} {@var{T} =} residtrace_heldout (@var{outdir})
-## @deftypefnx {} {@var{T} =} residtrace_heldout (@var{outdir}, @var{which})
+## @deftypefn  {} {@var{T} =} residtrace_sim_records (@var{outdir})
+## @deftypefnx {} {@var{T} =} residtrace_sim_records (@var{outdir}, @var{which})
 ## A held-out check of @code{residtrace} on records it was not developed
 ## on: five nonlinear and three linear simulated rigs of realistic
 ## physics, in raw units (offsets, engineering units) with measurement
@@ -38,7 +38,7 @@
 ## friction only (rpm); documented: no nonlinear effect.
 ## @end table
 ##
-## Writes @var{outdir}/residtrace_heldout.md (default "results": the
+## Writes @var{outdir}/residtrace_sim_records.md (default "results": the
 ## table, then residtrace's verdict on each record) and
 ## returns the table as a struct array (record, documented, found,
 ## rmse_before, rmse_after, elapsed, the ranking of each pass, verdict).
@@ -46,7 +46,7 @@
 ## record keeps its own seed).
 ## @end deftypefn
 
-function T = residtrace_heldout (outdir = "results", which = {})
+function T = residtrace_sim_records (outdir = "results", which = {})
   demo_prepare (outdir);
   recs = {"tanks", "axis", "motor", "tank", "valve", "lin2", "lin3", "linv"};
   doc = {{"saturation", "state_nonlinearity"}, {"saturation"}, {"coulomb"}, ...
@@ -77,7 +77,7 @@ function T = residtrace_heldout (outdir = "results", which = {})
     printf ("       verdict: %s\n", R.verdict);
     fflush (stdout);
   endfor
-  fid = fopen (fullfile (outdir, "residtrace_heldout.md"), "w");
+  fid = fopen (fullfile (outdir, "residtrace_sim_records.md"), "w");
   fprintf (fid, ["| record | documented effect | named first | all ", ...
                  "effects (2 passes) | levels estimated | validation ", ...
                  "simulation RMSE before -> after | time (s) |\n"]);
