@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{X} =} lab_rig_rk4 (@var{f}, @var{x0}, @var{u}, @var{Ts}, @var{nsub})
 ## @deftypefnx {} {@var{X} =} lab_rig_rk4 (@dots{}, @var{delay})
-## Simulator of the blind held-out rigs (@code{lab_rigs}): the state
+## Integrator of the simulated lab rigs (@code{lab_rigs}): the state
 ## equation dx/dt = f(x, u) integrated by the classical fourth-order
 ## Runge-Kutta method with @var{nsub} equal sub-steps per sampling
 ## interval, the input held constant over each interval (zero-order hold)

@@ -6,8 +6,8 @@
 ## @deftypefnx {} {@var{rig} =} lab_rigs (@var{name})
 ## @deftypefnx {} {@var{rig} =} lab_rigs (@var{name}, @var{scale})
 ## @deftypefnx {} {@var{rig} =} lab_rigs (@var{name}, @var{scale}, @var{draw})
-## The lab rigs of the blind held-out check of @code{residtrace} (issue 9,
-## session 6; @code{demos/residtrace_lab_rigs.m}): five nonlinear and three
+## Simulated lab rigs on which @code{residtrace} is checked
+## (@code{demos/residtrace_lab_rigs.m}): five nonlinear and three
 ## linear processes, each simulated from its physics (@code{lab_rig_rk4}:
 ## RK4, zero-order-hold input, sub-steps; the conveyor by its exact
 ## piecewise-exponential solution), recorded in raw units with sensor
@@ -29,7 +29,7 @@
 ## 1) shortens the records; 0 gives the rig without records (for the
 ## simulator checks of @code{tests/octave/test_lab_rigs.m}).  @var{draw}
 ## (default 0) selects another random draw of the excitations and the
-## noise (a replicate of the same rigs).
+## noise (another realisation of the same rigs).
 ##
 ## Rigs (documented effect):
 ## @table @code

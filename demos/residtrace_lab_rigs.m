@@ -4,9 +4,9 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} residtrace_lab_rigs ()
 ## @deftypefnx {} {@var{S} =} residtrace_lab_rigs (@var{outdir}, @var{rigs}, @var{rule}, @var{draw})
-## Blind held-out check of @code{residtrace} (issue 9, session 6): on the
-## records of @code{lab_rigs} (five nonlinear lab rigs, three linear
-## ones, made by a tester who read only the help texts of
+## A check of @code{residtrace} on records made apart from it: on the
+## records of @code{lab_rigs} (five nonlinear simulated lab rigs, three
+## linear ones, written from the help texts alone of
 ## @code{residtrace}, @code{residtrace_table}, @code{srivc} and
 ## @code{iddata}, not residtrace's code), does @code{residtrace} name the
 ## documented effect first, and no nonlinear effect on a linear rig?
@@ -178,7 +178,7 @@ function write_report (S, file, rule)
     error ("residtrace_lab_rigs:badInput", "residtrace_lab_rigs: cannot write %s",
            file);
   endif
-  fprintf (fid, "# Blind held-out check of residtrace (session 6)\n\n");
+  fprintf (fid, "# residtrace on simulated lab rigs\n\n");
   fprintf (fid, ["Records made by demos/lab_rigs.m (simulated lab ", ...
                  "rigs, raw units, sensor noise and quantisation); model: ", ...
                  "srivc with the structure of rule '%s' (simplest: the ", ...

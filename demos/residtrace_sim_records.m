@@ -4,15 +4,14 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{T} =} residtrace_sim_records (@var{outdir})
 ## @deftypefnx {} {@var{T} =} residtrace_sim_records (@var{outdir}, @var{which})
-## A held-out check of @code{residtrace} on records it was not developed
-## on: five nonlinear and three linear simulated rigs of realistic
-## physics, in raw units (offsets, engineering units) with measurement
-## noise, each with its own estimation and validation experiment. The
-## seeds (2026112301 + k) were fixed before the first run and not
-## changed afterwards; the rules of residtrace were not adjusted on these
-## records. The model given to residtrace is what a user would fit:
-## SRIVC of the plain linear structure on the estimation record with its
-## means removed.
+## A check of @code{residtrace} on records not used to tune it: five
+## nonlinear and three linear simulated rigs of realistic physics, in raw
+## units (offsets, engineering units) with measurement noise, each with
+## its own estimation and validation experiment. The seeds (2026112301 +
+## k) are fixed, and the rules of residtrace are not adjusted on these
+## records. The model given to residtrace is what a user would fit: SRIVC
+## of the plain linear structure on the estimation record with its means
+## removed.
 ##
 ## @table @asis
 ## @item tanks
@@ -29,8 +28,8 @@
 ## one tank, square-root outflow, level in cm from the inflow in l/min;
 ## documented: state_nonlinearity.
 ## @item valve
-## a flow loop's valve (first-order actuator) at its end stops 0 and 100
-## %, then a first-order process (temperature in degC); documented:
+## a flow loop's valve (first-order actuator) at its end stops (0 and
+## 100 %), then a first-order process (temperature in degC); documented:
 ## saturation.
 ## @item lin2, lin3, linv
 ## linear records: a linearised two-tank (level in cm), a third-order
