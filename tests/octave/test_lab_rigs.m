@@ -3,8 +3,8 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_lab_rigs ()
-## The simulators of the blind held-out check (@code{demos/lab_rigs.m},
-## @code{demos/lab_rig_rk4.m}; issue 9, session 6) against identities and
+## The simulators of the simulated lab rigs (@code{demos/lab_rigs.m},
+## @code{demos/lab_rig_rk4.m}) against identities and
 ## independent computations.  It checks only the simulators, never
 ## residtrace's verdicts (those are reported by
 ## @code{demos/residtrace_lab_rigs.m}).

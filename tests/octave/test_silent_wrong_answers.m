@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_silent_wrong_answers ()
-## The "silently wrong answers" of issue 12, each re-checked in one place:
+## Calls that could give a silently wrong answer, each checked in one place:
 ## the call must either give the right answer or raise an identified error
 ## @code{<function>:<reason>}.
 ## @itemize
