@@ -401,8 +401,8 @@ endfunction
 %!test  # at an operating point: at rest at u0 = 5, y0 = 13 (raw units)
 %! ## simulated independently (control's ZOH c2d and lsim, after a
 %! ## run-in at u0); the default 'auto' levels must find the input level
-%! ## too (before: a converged fit without it, RMSE 0.57 against noise
-%! ## 0.05, gain 1.36)
+%! ## too (without it: a converged fit, RMSE 0.57 against noise 0.05,
+%! ## gain 1.36)
 %! pkg load control
 %! randn ("state", 3); rand ("state", 3);
 %! Ts = 0.05; N = 4000;
