@@ -22,7 +22,8 @@
 
 function X = lab_rig_rk4 (f, x0, u, Ts, nsub, delay)
   if (nargin < 5)
-    error ("lab_rig_rk4:badInput", "lab_rig_rk4: f, x0, u, Ts, nsub are needed");
+    error ("lab_rig_rk4:badInput",
+           "lab_rig_rk4: f, x0, u, Ts, nsub are needed");
   endif
   if (nargin < 6)
     delay = 0;

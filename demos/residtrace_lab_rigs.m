@@ -47,7 +47,8 @@ function S = residtrace_lab_rigs (outdir, rigs, rule, draw)
     rule = "simplest";
   endif
   if (! any (strcmp (rule, {"simplest", "best"})))
-    error ("residtrace_lab_rigs:badOption", "residtrace_lab_rigs: rule '%s'", rule);
+    error ("residtrace_lab_rigs:badOption", "residtrace_lab_rigs: rule '%s'",
+           rule);
   endif
   if (nargin < 4 || isempty (draw))
     draw = 0;
@@ -175,8 +176,8 @@ endfunction
 function write_report (S, file, rule)
   fid = fopen (file, "w");
   if (fid < 0)
-    error ("residtrace_lab_rigs:badInput", "residtrace_lab_rigs: cannot write %s",
-           file);
+    error ("residtrace_lab_rigs:badInput",
+           "residtrace_lab_rigs: cannot write %s", file);
   endif
   fprintf (fid, "# residtrace on simulated lab rigs\n\n");
   fprintf (fid, ["Records made by demos/lab_rigs.m (simulated lab ", ...
