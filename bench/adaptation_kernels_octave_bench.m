@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## Side by side, in one run, for model orders na = 1..4: the fixed-size
-## adaptation steps (issue 14: the IV step of adaptation.hpp, PotterSVF of
+## adaptation steps (the IV step of adaptation.hpp, PotterSVF of
 ## potter.hpp, LMR-RLSSVF of lmr.hpp, with the fixed-size filter kernels)
 ## against the dynamic-size reference, in the core (bench_rsrivc) and end
 ## to end through the gateways (riv_mex, rlssvf_mex, option kernels =

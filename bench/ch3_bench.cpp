@@ -16,7 +16,7 @@
 // The machine is shared and noisy, so absolute times mean little: the
 // variants run interleaved, round after round, on the same record, and the
 // program prints for each the median over the rounds of its time divided
-// by that of its reference in the same round (the target: Potter
+// by that of its reference in the same round (the target: Potter
 // and scaled within 2x of the plain Kalman filter). Record: 2e5 samples of
 // the second-order system of the other benchmarks (4 / (p^2 + 2.4 p + 4),
 // Ts = 0.1 s, binary input, noise 0.05), na = 2, nb = 1.

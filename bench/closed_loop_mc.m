@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} closed_loop_mc (@var{R}, @var{cases})
 ## Monte Carlo of the closed-loop refined IV estimators' reported standard
-## deviations (issue 11 bar: spread / mean reported sd in 0.8-1.25) on
+## deviations (target: spread / mean reported sd in 0.8-1.25) on
 ## data that meet the estimators' intersample assumptions, so that the
 ## spread is not dominated by an intersample bias (as it is on the
 ## CONTSID closedloop demos' data, where u jumps with r and is continuous

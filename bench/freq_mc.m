@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} freq_mc (@var{runs})
 ## Monte Carlo check of the standard deviations reported by the
-## frequency-domain estimators (issue 11 bar: spread / mean reported sd in
+## frequency-domain estimators (target: spread / mean reported sd in
 ## 0.8-1.25): @code{srivc} on an @code{idfrd} of G = (2 s + 6)/(s^2 +
 ## 1.5 s + 9), and @code{tffsrivc}, @code{tffcoe} (delay estimated) on
 ## G = (0.5 s + 4)/(s^2 + 1.2 s + 4) e^(-0.37 s), 50 frequencies

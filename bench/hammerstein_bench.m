@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{T} =} hammerstein_bench ()
-## Side-by-side timing (issue 11 bar: at least 50 times faster) of
+## Side-by-side timing (target: at least 50 times faster) of
 ## @code{hsrivc} (core @file{hammerstein.hpp} through the gateway, options
 ## and checks included) against @file{hsrivc_plain_octave.m}, the same
 ## iteration in plain Octave (built-in @code{filter}), on 10 000 samples

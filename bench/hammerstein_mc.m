@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} hammerstein_mc (@var{runs})
 ## Monte Carlo check of the standard deviations reported by @code{hsrivc},
-## @code{hrivc} and @code{hwsrivc} (issue 11 bar: the spread of the
+## @code{hrivc} and @code{hwsrivc} (target: the spread of the
 ## estimates over @var{runs} noise realisations divided by the mean
 ## reported sd lies in 0.8-1.25). Systems: CONTSID's Hammerstein demo
 ## (ubar = u + 0.5 u^2 + 0.25 u^3, G = (10 s + 30)/(s^2 + s + 5), Ts =

@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} oe_miso_mc (@var{runs})
 ## Monte Carlo check of the standard deviations reported by the
-## multi-input output-error estimators (issue 11 bar: spread / mean
+## multi-input output-error estimators (target: spread / mean
 ## reported sd in 0.8-1.25), two inputs, each with its own denominator:
 ## @itemize
 ## @item @code{oe} (discrete time), y = (0.5 q^-2 + 0.3 q^-3)/(1 - 1.5

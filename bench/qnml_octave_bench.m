@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## Time of the Qn maximum-likelihood search (qnml) on thesis example 3.3.3,
-## against the issue's limit of 30 s, measured side by side with one
+## against a limit of 30 s, measured side by side with one
 ## estimator run on the same data (the search costs about `evaluations`
 ## such runs):
 ##

@@ -1,27 +1,27 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## residtrace speed, side by side in one run (issue 9): the residtrace of
-## this tree against the one of a reference commit (default e5c0877, before
-## issue 9), on a plain LTI system (SRIVC [1 2 0] of a second-order
-## system, PRBS input, 5 % noise) of 20 000 and 100 000 samples, the last
-## third validating. Run from the repository root:
-##   octave-cli -q bench/residtrace_bench.m [commit]
-## The reference tree is exported with git archive into a temporary folder
-## and given this tree's compiled gateways (which works only while the
-## gateways' calling conventions are those of the reference: simc_mex
-## changed after e5c0877), or given as the octave/ folder of a tree with
-## its own compiled gateways:
-##   octave-cli -q bench/residtrace_bench.m /tmp/main/octave
-## For e5c0877 (session 3): git archive e5c0877 octave into /tmp/ref, copy
-## this tree's gateways there, then compile e5c0877's own simc_mex and
-## offline_mex (mex/ and core/ of e5c0877, mkoctfile --mex -o
+## residtrace speed, side by side in one run: the residtrace of this tree
+## against the one of a reference tree given by the caller, on a plain LTI
+## system (SRIVC [1 2 0] of a second-order system, PRBS input, 5 % noise)
+## of 20 000 and 100 000 samples, the last third validating. Run from the
+## repository root:
+##   octave-cli -q bench/residtrace_bench.m COMMIT
+## The reference commit is exported with git archive into a temporary
+## folder and given this tree's compiled gateways (which works only while
+## the gateways' calling conventions are those of the reference), or the
+## reference is given as the octave/ folder of a tree with its own
+## compiled gateways:
+##   octave-cli -q bench/residtrace_bench.m /tmp/ref/octave
+## For a reference whose gateways differ: git archive COMMIT octave into
+## /tmp/ref, copy this tree's gateways there, then compile that commit's
+## own gateways (its mex/ and core/, mkoctfile --mex -o
 ## /tmp/ref/octave/private/NAME.mex) over them, and pass /tmp/ref/octave.
 args = argv ();
-ref = "e5c0877";
-if (! isempty (args))
-  ref = args{1};
+if (isempty (args))
+  error ("residtrace_bench: give a reference commit or octave/ folder");
 endif
+ref = args{1};
 root = pwd ();
 tmp = tempname ();
 mkdir (tmp);

@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## residtrace's time on the grey-box rigs of demo_greybox at a given length
-## (issue 9's bar: never above 10 s on records of 20 000 samples): the
+## (target: never above 10 s on records of 20 000 samples): the
 ## two-tank cascade with overflow (iterate 3, as the demo) and the axis
 ## with end stops (iterate 2), seed 7, an estimation and a validation
 ## record of N samples each, the start srivc [1 2 0] on the estimation

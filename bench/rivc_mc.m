@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} rivc_mc (@var{R}, @var{part})
-## Monte Carlo of the Box-Jenkins refined IV estimators (issue 11 bars):
+## Monte Carlo of the Box-Jenkins refined IV estimators:
 ## for rivc, tfrivc (delay kept), clrivc and cl2srivc, @var{R} records
 ## (default 200) with coloured noise; per parameter the bias, the Monte
 ## Carlo standard deviation, the mean reported standard deviation and
@@ -11,8 +11,8 @@
 ## to srivc (bar: rivc beats srivc on coloured noise): the MC standard
 ## deviations and RMSE of both, for low-pass ARMA(1,1) noise and for
 ## noise with a resonance above the plant's band. @var{part}: "all"
-## (default), "open" (stop after these; true as before), "closed" (the
-## closed-loop cases only) or "miso" (two inputs, one denominator each,
+## (default; also false), "open" (stop after these; also true), "closed"
+## (the closed-loop cases only) or "miso" (two inputs, one denominator each,
 ## ARMA(1,1) noise: the stacked-instrument covariance of rivc_miso).
 ## Run from the repository root:
 ## @example
@@ -38,7 +38,7 @@ function S = rivc_mc (R, part)
     ## with a resonance above the plant's band, D = 1 - 1.6 q^-1 + 0.9
     ## q^-2 (about 10 rad/s), C = 1 + 0.3 q^-1; a slow drift, D = 1 - 0.98
     ## q^-1, C = 1 (seeded on its own, so its numbers do not depend on the
-    ## cases before).
+    ## cases run before it).
     Ts = 0.05; N = 3000;
     randn ("state", 1);
     u = kron (sign (randn (N / 10, 1)), ones (10, 1));
@@ -81,7 +81,7 @@ function S = rivc_mc (R, part)
 
   ## Closed loop: clrivc and cl2srivc on the same records. For cl2srivc
   ## both its reported sd (the two-stage covariance) and stage 2's SRIVC
-  ## sd (white noise, u_hat exact: the covariance it reported before).
+  ## sd (white noise, u_hat exact: the covariance that ignores stage 1).
   Ts = 0.01; N = 6000;
   r = kron (sign (randn (N / 100, 1)), ones (100, 1));
   G = tf (3, [1 2 3]); Mc = tf ([0.5 1], [0.1 1 0]);

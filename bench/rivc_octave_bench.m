@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{T} =} rivc_octave_bench ()
-## Side-by-side timing on 10 000 samples (issue 11 bar: at least 50 times
+## Side-by-side timing on 10 000 samples (target: at least 50 times
 ## faster than plain Octave): the core estimators rivc, clrivc and
 ## cl2srivc (core/include/ctid/offline/refined_iv_bj.hpp through rivc_mex) against
 ## @file{rivc_plain_octave.m}, the same iteration in plain Octave, run for

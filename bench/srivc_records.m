@@ -6,7 +6,7 @@
 ## @deftypefnx {} {@var{R} =} srivc_records (@var{root})
 ## @deftypefnx {} {@var{R} =} srivc_records (@var{root}, @var{only})
 ## SRIVC with its automatic start over a grid of structures on the measured
-## records of ../shared/data, raw and mean-removed (issue 9: a stable,
+## records of ../shared/data, raw and mean-removed (target: a stable,
 ## converged model on >= 95 % of such fits). Not a test (it takes minutes):
 ## run it from the repository root,
 ## @example

@@ -1,17 +1,17 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## srivc speed, side by side in one run (issue 9 bar: srivc with its
-## automatic start on 100 000 samples at least 5 times faster than the tree
-## before issue 9, commit e5c0877, which took 4.2 s). Run from the
-## repository root:
+## srivc speed, side by side in one run: srivc with its automatic start
+## on 100 000 samples in this tree against a reference tree given by the
+## caller. Run from the repository root:
 ##   octave-cli -q bench/srivc_speed_bench.m REF_OCTAVE_DIR [ROUNDS]
 ## REF_OCTAVE_DIR is the octave/ folder of the reference tree WITH its own
-## gateways built (its calling conventions differ from this tree's), e.g.
-##   git worktree add --detach /tmp/ref-e5c0877 e5c0877
-##   cd /tmp/ref-e5c0877 && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+## gateways built (its calling conventions may differ from this tree's),
+## e.g.
+##   git worktree add --detach /tmp/ref COMMIT
+##   cd /tmp/ref && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 ##   cmake --build build --target octave_mex -j1
-##   octave-cli -q bench/srivc_speed_bench.m /tmp/ref-e5c0877/octave
+##   octave-cli -q bench/srivc_speed_bench.m /tmp/ref/octave
 ## The records (100 000 samples, Ts = 0.01, ZOH PRBS input, 10 % output
 ## noise): a second-order system, structure [1 2 0], and a third-order one,
 ## [2 3 0]. Each tree runs in its own octave-cli process (two trees'

@@ -7,8 +7,8 @@
 ## @deftypefnx {} {[@var{de}, @var{dv}, @var{truth}] =} cascaded_tanks_sim ("records", @var{draw})
 ## @deftypefnx {} {[@var{de}, @var{dv}, @var{truth}] =} cascaded_tanks_sim ("records", @var{draw}, @var{variant})
 ## @deftypefnx {} {@var{u} =} cascaded_tanks_sim ("multisine", @var{N}, @var{Ts}, @var{p})
-## A replica of the Cascaded Tanks benchmark (Schoukens, Mattsson, Wigren,
-## Noel; nonlinearbenchmark.org) for issue 9: two tanks in cascade, the
+## A simulator of the Cascaded Tanks benchmark (Schoukens, Mattsson,
+## Wigren, Noel; nonlinearbenchmark.org): two tanks in cascade, the
 ## pump voltage u (V) fills the upper tank, which drains through a small
 ## opening into the lower one, which drains into the reservoir; the
 ## levels are in volts of the level sensors (as the benchmark's model
@@ -43,9 +43,9 @@
 ## level units lost over the rim, cumulative), top1 and top2 (logical
 ## N-by-1: the tank at its rim at the sample), y0 (the noise-free output).
 ##
-## @code{cascaded_tanks_sim ("params")}: the replica's parameters (which
-## are documented and which chosen: see the README section "Cascaded
-## Tanks benchmark replica").
+## @code{cascaded_tanks_sim ("params")}: the simulator's parameters (which
+## are documented and which chosen: see the README section on the
+## Cascaded Tanks benchmark).
 ## @code{cascaded_tanks_sim ("records", draw)}: an estimation and a
 ## validation record (@code{iddata}, 1024 samples, Ts = 4 s) made with two
 ## realisations (random phases) of the same multisine, both from the same
@@ -55,9 +55,9 @@
 ## and the overflow masks. @var{variant}: "nominal" (default) or
 ## "strong": the same tanks driven harder (multisine 5 V +- 2.2 V rms,
 ## clipped to the pump's 0-10 V): the upper level spans 1.6-10 V and
-## both tanks overflow on 1-4 % of the samples (added after the nominal
-## replica's results showed a well-fitted linear model far below the
-## published 0.76 V; chosen on the records' statistics alone).
+## both tanks overflow on 1-4 % of the samples (on the nominal records a
+## well-fitted linear model is far below the published 0.76 V; the strong
+## excitation was chosen on the records' statistics alone).
 ## @code{cascaded_tanks_sim ("multisine", N, Ts, p)}: one random-phase
 ## multisine of period N Ts with all lines from 1/(N Ts) to p.fmax,
 ## scaled to the rms p.urms around p.umean and clipped to [0, p.umax]
@@ -97,12 +97,12 @@ function [a, b, c] = cascaded_tanks_sim (u, Ts, p, p4)
   [a, b, c] = simulate (u(:), Ts, p);
 endfunction
 
-## The replica's parameters. Documented (see the README section): the
+## The simulator's parameters. Documented (see the README section): the
 ## structure of the equations, Ts = 4 s, 1024 samples per record, the
 ## input a low-frequency random-phase multisine, the overflow of the
 ## upper tank with part of the water into the lower tank, the lower tank
-## limited too, the output in volts. Chosen here (before any
-## identification was run on the replica): every number below.
+## limited too, the output in volts. Chosen here (without looking at any
+## identification result on these records): every number below.
 function p = tank_params ()
   p.k1 = 0.055;      # upper outflow, V^0.5/s: tau1 = 2 sqrt(x1)/k1, 89 s at 6 V
   p.k2 = 0.060;      # inflow to the lower tank (k2/k1: area and sensor ratio)

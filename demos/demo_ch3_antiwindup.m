@@ -311,10 +311,10 @@ function write_table (file, g, resets, held_before, kappa_end, kappa_late,
   fprintf (fid, "(the growth slows as the noise excitation starts to balance ");
   fprintf (fid, "it). Conditional updating is armed at the first kappa_2 < ");
   fprintf (fid, "gamma after tsiv, so that the start-up of the monitor from ");
-  fprintf (fid, "P0 = 1e4 I (which crossed 300 in the first 30 s of each of ");
-  fprintf (fid, "runs 1-5 before the fix) does not reset the estimator (the ");
-  fprintf (fid, "fix of this branch; before it the test armed at the first ");
-  fprintf (fid, "sample, where kappa_2(P0) = 1).\n\n");
+  fprintf (fid, "P0 = 1e4 I (which crosses 300 in the first 30 s of each of ");
+  fprintf (fid, "runs 1-5) does not reset the estimator (a test armed at the ");
+  fprintf (fid, "first sample, where kappa_2(P0) = 1, would reset it ");
+  fprintf (fid, "there).\n\n");
   fprintf (fid, "### kappa_2(P) under poor excitation: LMR-RLSSVF vs ");
   fprintf (fid, "RLSSVF-FF and -KF\n\n");
   fprintf (fid, "| quantity (over %d runs) | RLSSVF-FF | RLSSVF-KF | LMR-RLSSVF |\n",

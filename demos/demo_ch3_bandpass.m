@@ -5,7 +5,8 @@
 ## @deftypefn {} {@var{res} =} demo_ch3_bandpass (@var{outdir}, @var{full})
 ## Thesis sections 4.1.2-4.1.3 and 3.5 on a simulated LTV band-pass filter
 ## standing in for the benchmark of sec. 4.1 (whose measured data are not
-## available here), and the single-precision claim of the issue (sec. 5).
+## available here), and the recursions in single precision (float), with
+## and without scaling.
 ##
 ## System (eq. 4.1, see ch3_bandpass_record): (p^2 + a1 p + a2(t)) x =
 ## b0 p u with a1 = b0 = 1.5e4, a2 = 2.5e9 (1 + 0.3 sin (2 pi t / T)),
@@ -333,7 +334,7 @@ function write_table (file, names, r, r2, ms, vnames, vrmse, vfit, qml,
            ch2_ifelse_str (vrmse(3) < vrmse(2), "does better than",
                            "does not do better than"));
 
-  fprintf (fid, "### Single precision (issue 4, sec. 5)\n\n");
+  fprintf (fid, "### Single precision\n\n");
   fprintf (fid, "Each method run again with 'precision', 'single' (the whole ");
   fprintf (fid, "recursion in float), from P0 = 1e4 I (the thesis' default) ");
   fprintf (fid, "and from P0 = 1e4 M_s^2, i.e. P_s(t_0) = 1e4 I in scaled ");
@@ -419,7 +420,7 @@ function write_table (file, names, r, r2, ms, vnames, vrmse, vfit, qml,
   fprintf (fid, "update: RSRIVC, whose IV stage filters with the adaptive ");
   fprintf (fid, "prefilter, stays within %.3f %%. No form ",
            100 * r2(4, 2).dev(2));
-  fprintf (fid, "diverged. The issue's claim is therefore reproduced as: ");
+  fprintf (fid, "diverged. In single precision, therefore: ");
   fprintf (fid, "float RLSSVF without scaling loses positive definiteness of ");
   fprintf (fid, "P (and, from P0 = 1e4 I, accuracy at start-up); scaled ");
   fprintf (fid, "Potter keeps tracking within 1 %% of double precision ");

@@ -4,7 +4,7 @@
 ## Monte Carlo check of the covariance reported by tfcoe (continuous-time
 ## output error, SRIVC start + Levenberg-Marquardt) and oe (discrete
 ## time): the spread of the estimates over R noise realisations against
-## the mean of the reported standard deviations (the issue's bar: ratio
+## the mean of the reported standard deviations (the target: ratio
 ## 0.8-1.25 per parameter).
 ##
 ## Usage, from the repository root:

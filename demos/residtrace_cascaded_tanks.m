@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {@var{S} =} residtrace_cascaded_tanks ()
 ## @deftypefnx {} {@var{S} =} residtrace_cascaded_tanks (@var{outdir}, @var{draws}, @var{greybox}, @var{rule}, @var{variant})
-## Issue 9's two-tank bar on a replica of the Cascaded Tanks benchmark
+## residtrace on simulated records of the Cascaded Tanks benchmark
 ## (@code{cascaded_tanks_sim}): does the linear model plus what
 ## @code{residtrace} traces reach a validation simulation RMSE well below
 ## the best linear model's (published for the real benchmark: best linear
@@ -12,7 +12,7 @@
 ##
 ## For each random draw of the records (two realisations of the
 ## multisine, 1024 samples each at Ts = 4 s, raw volts), as a user would
-## (the rule of @code{residtrace_blind}): the structures @var{NN} fitted
+## (the rule of @code{residtrace_lab_rigs}): the structures @var{NN} fitted
 ## by @code{srivcstruc} on the estimation record and judged by their
 ## validation R_T^2; of those whose validation residual variance
 ## (1 - R_T^2) is within 10 % of the smallest, the one with the fewest
@@ -36,7 +36,7 @@
 ## @var{rule}: the user's choice of structure, "simplest" (default, as
 ## above) or "best" (the best validation R_T^2, @code{selcstruc (V,
 ## "c2sort", "RT2")}: the sensitivity of the figures to that choice; the
-## report is then cascaded_tanks_best.md). @var{variant}: the replica's
+## report is then cascaded_tanks_best.md). @var{variant}: the simulator's
 ## excitation, "nominal" (default) or "strong" (see
 ## @code{cascaded_tanks_sim}; reports cascaded_tanks_strong*.md).
 ## @var{greybox} may also be a vector of the draws that get the grey-box
@@ -371,14 +371,14 @@ function write_report (S, NN, file, rule, variant)
   if (strcmp (variant, "strong"))
     p.urms = 2.2;
   endif
-  fprintf (fid, "# residtrace on a Cascaded Tanks benchmark replica (%s)\n\n",
+  fprintf (fid, "# residtrace on simulated Cascaded Tanks records (%s)\n\n",
            variant);
   fprintf (fid, ["Records: demos/cascaded_tanks_sim.m (k1 = %g, k2 = %g, ", ...
                  "k3 = %g, k4 = %g, frac = %g, rims %g V and %g V, x0 = ", ...
                  "[%g %g] V, sensor noise %g V rms, %g-V quantisation, ", ...
                  "multisine %g +- %g V rms up to %g Hz, %d samples at ", ...
                  "Ts = %g s). Linear model: srivc with the structure of ", ...
-                 "rule '%s' (simplest: as residtrace_blind; best: the ", ...
+                 "rule '%s' (simplest: as residtrace_lab_rigs; best: the ", ...
                  "best ", ...
                  "validation R_T^2) among %d structures; then ", ...
                  "residtrace (de, M, \"validation\", dv) with defaults. ", ...

@@ -7,7 +7,7 @@
 ## levels drawn uniformly in [@var{lo}, @var{hi}], each held for a
 ## duration drawn uniformly in [@var{tmin}, @var{tmax}] (at least one
 ## sample), from the generator @code{rand} (seed it first). The input of
-## the held-out records (@code{residtrace_heldout}) and of the tests of
+## the simulated records (@code{residtrace_sim_records}) and of the tests of
 ## residtrace's physical realisations.
 ## @end deftypefn
 

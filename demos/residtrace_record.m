@@ -8,7 +8,7 @@
 ## (@var{y}, @var{u}) with its means removed, then @code{residtrace} on
 ## the raw records, the validation record (@var{yv}, @var{uv}) apart,
 ## both zero-order hold; further arguments are residtrace's options. Used
-## by @code{residtrace_heldout} and by the tests of residtrace's physical
+## by @code{residtrace_sim_records} and by the tests of residtrace's physical
 ## realisations.
 ## @end deftypefn
 

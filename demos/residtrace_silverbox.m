@@ -10,9 +10,8 @@
 ## the next 20 000 as validation and @code{iterate} 4, verbose (each
 ## pass's ranking: effect, score, p), then the table's rows (validation
 ## simulation RMSE and fit of each step) and the wall and CPU time.
-## Further arguments are residtrace's options. Written to find issue 9's
-## Silverbox regression (README, session 6); about 6 min at load 8 on
-## the 2-core machine.
+## Further arguments are residtrace's options. About 6 min at load 8 on
+## a 2-core machine.
 ## @end deftypefn
 
 function R = residtrace_silverbox (varargin)

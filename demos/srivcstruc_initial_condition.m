@@ -1,8 +1,8 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## srivcstruc_initial_condition: the structure chosen on the Cascaded Tanks
-## replica's 8 record pairs (4 draws, nominal and strong excitation) by
+## srivcstruc_initial_condition: the structure chosen on 8 simulated
+## Cascaded Tanks record pairs (4 draws, nominal and strong excitation) by
 ## srivcstruc's validation R_T^2 from rest ("InitialCondition", "z", the
 ## default) and with each model's initial state estimated ("e"), under the
 ## two rules of the residtrace studies (the best R_T^2, and

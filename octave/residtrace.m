@@ -828,7 +828,7 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
   endif
 endfunction
 
-## A candidate fitted and scored in two stages (issue 9, speed): first
+## A candidate fitted and scored in two stages (for speed): first
 ## with at most three SRIVC iterations per fit, each started from the
 ## current model (the one-step estimate from a consistent start is
 ## asymptotically as good as the iterated one), on at most the first
@@ -1021,9 +1021,9 @@ function row = score (c, cur, ctx, e0)
 endfunction
 
 ## A standard deviation of exactly 0 in a candidate's evidence is not an
-## estimate (a fit whose covariance was not computed, issue 9's blind
-## check): it becomes NaN, in evidence.std and in its text, and the text
-## says why. Never a silent 0.
+## estimate (a fit whose covariance was not computed): it becomes NaN,
+## in evidence.std and in its text, and the text says why. Never a
+## silent 0.
 function ev = unknown_std (ev)
   if (! isstruct (ev) || ! isfield (ev, "std") || ! isnumeric (ev.std)
       || ! any (ev.std(:) == 0))
@@ -1050,9 +1050,10 @@ endfunction
 ## f () (a candidate, or a validation simulation) with the numerical
 ## warnings raised as errors: a fit inside that catches its errors treats
 ## the solve as failed; one that reaches here gives, for a candidate
-## (effect not empty), an explicit verdict "cannot test: ..." (issue 9's
-## blind check: the drift candidate printed "matrix singular to machine
-## precision" six times on the pendulum record); with effect "" the error
+## (effect not empty), an explicit verdict "cannot test: ..." (a raw
+## warning would print "matrix singular to machine precision" several
+## times, e.g. for the drift candidate on a pendulum record); with effect
+## "" the error
 ## is passed on (the caller says what failed). Never a raw warning.
 function out = guarded (effect, f)
   ids = numerical_warnings ();
@@ -1292,8 +1293,8 @@ function L = level_plan (D, Mst, mode, u_carried, c_carried)
       raw_u = any (abs (mu) > 3 * su);
       raw_y = abs (mean (D.y)) > 3 * std (D.y);
       ## an output at rest at its first samples, away from zero, that
-      ## never comes back to zero (issue 9's blind heated block: 22 degC
-      ## at 0 W, its mean only 2.7 standard deviations from zero)
+      ## never comes back to zero (a heated block: 22 degC at 0 W, its
+      ## mean only 2.7 standard deviations from zero)
       [away, level] = contsid_start_level (D.y);
       y1 = D.y(1:min (5, numel (D.y)));
       span = max (D.y) - min (D.y);
@@ -1627,7 +1628,7 @@ endfunction
 %! assert (R.rmse_before < 0.07);      # the noise level, levels handled
 %! assert (R.rmse_given > 1);          # M as given ignores the levels
 %! ## srivc's model carries the levels it estimated: its figure is that of
-%! ## the model with them (issue 9's blind check: 180 deg off before)
+%! ## the model with them (without them: 180 deg off)
 %! y = 20 + simc (G, u, Ts) + 0.05 * randn (N, 1);
 %! yv = 20 + simc (G, uv, Ts) + 0.05 * randn (N, 1);
 %! Ms = srivc (iddata (y, u, Ts), [1 2 0]);
@@ -1641,9 +1642,10 @@ endfunction
 %! assert (R.rmse_given < 0.06);       # the noise level (0.05)
 
 %!test  # the input level the model carries is the one removed: a record
-%! ## that does not start at rest at its first input (issue 9's Cascaded
-%! ## Tanks replica: started at rest at u(1), the re-estimate of srivc's
-%! ## model was 6 times worse than the model; here 0.55 against 0.05)
+%! ## that does not start at rest at its first input (as a simulated
+%! ## cascaded-tanks record: started at rest at u(1), the re-estimate of
+%! ## srivc's model would be 6 times worse than the model; here 0.55
+%! ## against 0.05)
 %! randn ("state", 19);
 %! y = 20 + simc (G, 3 * u, Ts) + 0.05 * randn (N, 1);  # at rest at 5
 %! yv = 20 + simc (G, 3 * uv, Ts) + 0.05 * randn (N, 1);
@@ -1662,8 +1664,8 @@ endfunction
 %! assert (R.rmse_before < 0.06);
 
 %!test  # an output that starts at rest at its ambient level: levels
-%! ## handled although the output's mean is within 3 sd of zero (issue 9's
-%! ## blind heated block: 22 degC at 0 W, mean 2.7 sd from zero)
+%! ## handled although the output's mean is within 3 sd of zero (as a
+%! ## heated block: 22 degC at 0 W, mean 2.7 sd from zero)
 %! randn ("state", 18);
 %! t = (0:N-1)' * Ts;                      # 0 / 50 W, from 0 W
 %! ue = 50 * (sin (2 * pi * t / 20 - 0.2) > 0);
@@ -1681,7 +1683,8 @@ endfunction
 %! assert (R.rmse_before < 0.07);          # the noise level (0.05)
 
 %!test  # a line slower than two cycles of the record is not a sinusoid
-%! ## (issue 9's blind check: 0.00014 Hz, under one cycle, was named)
+%! ## (0.00014 Hz, under one cycle of a heated block's record, must not
+%! ## be named)
 %! randn ("state", 17);
 %! T = N * Ts;
 %! slow = @(t) 0.3 * sin (2 * pi * t / (0.8 * T) + 0.5);   # 1.25 cycles
@@ -1726,8 +1729,8 @@ endfunction
 %!endfunction
 
 %!test  # an actuator at its end stops: an inner node's saturation
-%! ## (a node variant's numerator started at zero failed in the engine,
-%! ## and the input polynomial won: issue 9's held-out valve)
+%! ## (a node variant's numerator started at zero would fail in the
+%! ## engine, and the input polynomial would win, as on a flow-loop valve)
 %! randn ("state", 19); rand ("state", 19);
 %! Tn = 0.5;
 %! lev = @() kron (rand (75, 1) * 160 - 30, ones (40, 1));

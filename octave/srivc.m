@@ -384,7 +384,8 @@ endfunction
 %! assert (info.simulated, y, 1e-6);
 
 %!test  # raw units with an input of nonzero mean: the output offset
-%! ## and the gain are nearly collinear (session 7: not converged, c = 18.6)
+%! ## and the gain are nearly collinear (alternating them: not converged,
+%! ## c = 18.6)
 %! y = 20 + simc (struct ("B", 4, "F", [1 2.4 4]), 5 + 3 * u, Ts);
 %! [M, ~, ~, ~, ~, info] = srivc (iddata (y, 5 + 3 * u, Ts), [1 2 0]);
 %! assert (info.converged);
@@ -409,8 +410,8 @@ endfunction
 %!test  # at an operating point: at rest at u0 = 5, y0 = 13 (raw units)
 %! ## simulated independently (control's ZOH c2d and lsim, after a
 %! ## run-in at u0); the default 'auto' levels must find the input level
-%! ## too (before: a converged fit without it, RMSE 0.57 against noise
-%! ## 0.05, gain 1.36)
+%! ## too (without it: a converged fit, RMSE 0.57 against noise 0.05,
+%! ## gain 1.36)
 %! pkg load control
 %! randn ("state", 3); rand ("state", 3);
 %! Ts = 0.05; N = 4000;

@@ -344,7 +344,8 @@ endfunction
 %! assert (all (isfinite (V(1, :))));
 %! assert (V(1, end), numel (yg) - 6);
 %!test  # raw units: the fit (%) is that of the model with its levels
-%! ## (issue 9's blind check: -24 % at a validation R_T^2 of 0.99)
+%! ## (without the levels a simulated lab record showed -24 % at a
+%! ## validation R_T^2 of 0.99)
 %! y0 = 20;                               # an operating point, 20 units
 %! ye = get (ZE, "OutputData") + y0; yv = get (ZV, "OutputData") + y0;
 %! ZEr = iddata (ye, get (ZE, "InputData"), get (ZE, "Ts"));

@@ -7,8 +7,9 @@
 ## @code{contsid_getdata}): an output whose present samples (NaN marks a
 ## missing one) are all equal identifies no model, whatever the
 ## structure, so it is an error @code{@var{fname}:badInput} instead of a
-## model fitted to nothing (issue 12: a constant output gave models with
-## an infinite noise variance or a meaningless denominator).  The
+## model fitted to nothing (from a constant output the estimators would
+## give models with an infinite noise variance or a meaningless
+## denominator).  The
 ## non-parametric analyses (@code{cra}, @code{spafdr}) and the
 ## simulations (@code{simc}, @code{comparec}) do not call it.
 ## @end deftypefn

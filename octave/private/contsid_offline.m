@@ -148,8 +148,8 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     ## zero on an integrating axis) drives the estimate toward an unstable
     ## model or keeps it from converging: the fit is repeated with input
     ## offsets and kept when it converges to a stable model with a smaller
-    ## loss. (Session 6: on raw units also after a fit that does not
-    ## converge without being clipped: raw EMPS position [1 3 0], whose
+    ## loss. (On raw units also after a fit that does not converge
+    ## without being clipped: raw EMPS position [1 3 0], whose
     ## iterates cycle at R_T^2 -0.47 and which converges at 0.994 with an
     ## input offset.)
     e2 = e;
@@ -645,8 +645,8 @@ endfunction
 ## The levels the model was estimated with, in MATLAB's
 ## Report.DataUsed.OutputOffset and InputOffset (the offsets removed from
 ## the data: y - OutputOffset = M (u - InputOffset)), so that the model as
-## estimated can be simulated on raw data (issue 9's blind check: residtrace
-## and srivcstruc simulated a raw-record model 180 degrees off):
+## estimated can be simulated on raw data (without them, residtrace and
+## srivcstruc would simulate a raw-record model 180 degrees off):
 ## OutputOffset = c, InputOffset = -d (the engine's u + d).
 function M = carried_levels (M, info, nu)
   c = 0;

@@ -671,7 +671,7 @@ function F = fit_struct (info, d, np)
 endfunction
 
 ## The continuous plant as an idpoly (idctm) with the covariance of [f b]
-## (M.theta, M.covariance: CONTSID's [f b] as before); the noise model
+## (M.theta, M.covariance: in CONTSID's order [f b]); the noise model
 ## (rivc, clrivc) in M.C, M.D (q^-1 at Ts: a hybrid model, marked by
 ## Report.Parameters.NoiseModel.Ts, which present and display read) and
 ## M.NoiseVariance, with the ARMA covariance in getcov's order (b c d f).

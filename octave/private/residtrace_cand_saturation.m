@@ -32,7 +32,7 @@
 ## three rounds). Evidence: the
 ## level(s), the share of samples at a level, the node's poles.
 ## @itemize
-## @item An end stop (issue 9): the output is a position, a state of the
+## @item An end stop: the output is a position, a state of the
 ## model's realisation (observable canonical form, x1 = y, the velocity
 ## a state when every channel's relative degree is at least two), held
 ## at a level with its velocity reset to zero while the model pushes it
@@ -79,7 +79,7 @@ function c = residtrace_cand_saturation (cur, ctx)
   for k = 1:numel (nt)
     starts{end+1} = {nt{k}.F};
   endfor
-  ## physical realisations (issue 9): a state saturated with its velocity
+  ## physical realisations: a state saturated with its velocity
   ## reset (an end stop), and a two-section cascade whose inner state
   ## overflows (square-root or linear nodes); fitted here on their
   ## simulation error and only compared by residtrace_select
@@ -328,8 +328,8 @@ function [tmpls, names] = node_templates (cur, ctx, y, x)
     ## started from the current model, B/F = (B/F_a(0)) / F_b times the
     ## node's unit-gain F_a(0)/F_a: a zero numerator would leave the
     ## engine's first auxiliary model, hence its instruments, at zero
-    ## (rank deficient: the node variants of issue 9's held-out valve
-    ## record all failed so)
+    ## (rank deficient: on a simulated flow-loop valve record the node
+    ## variants all failed so)
     b0 = ch.B(:).' / cur.F(1) / Fa(end);
     nc.B = [zeros(1, max (nb - numel (b0), 0)), b0(max (end-nb+1, 1):end)];
     t.channels(ins) = nc;
@@ -406,8 +406,8 @@ function [m, better] = refine (m, cur, ctx)
     xo = residtrace_simulate (t0, D.u, D.Ts, D.loop, ctx.opts.substeps);
     ## the gain refitted with each level (as in the screening): with the
     ## fitted numerator held, a level found too wide is kept so by the
-    ## gain the fit lowered to match it (issue 9's held-out valve: levels
-    ## 109 % wide, gain 0.47 for 0.5)
+    ## gain the fit lowered to match it (on a simulated valve record:
+    ## levels 109 % wide, gain 0.47 for 0.5)
     sse = @(w) gain_sse (y - xo, simc (H, w, D.Ts, "InterSample",
                                        D.intersample));
     if (isfinite (P.hi))
@@ -461,8 +461,8 @@ endfunction
 
 ## A cascade whose inner state sits at its level on most samples does not
 ## overflow: the level and the spilled share then stand for another
-## structure (a single tank fed through the spill, on the held-out record
-## "tank"), which is not a saturation.
+## structure (a single tank fed through the spill, on the simulated
+## record "tank" of residtrace_sim_records), which is not a saturation.
 function m = overflowing (m, D)
   if (m.ok && strcmp (m.phys.kind, "cascade"))
     [~, z] = residtrace_physsim (m, D.u, D.Ts);

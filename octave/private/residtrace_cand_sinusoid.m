@@ -18,8 +18,8 @@
 ## the estimation record (of duration T_e) and one in each half of the
 ## validation record (T_v), w >= 4 pi / min (T_e, T_v), for the search and
 ## for the refined frequency alike. Over a cycle or less a sinusoid cannot
-## be told from a level or a drift (issue 9's blind check: a "sinusoid" at
-## 0.00014 Hz, under one cycle of the heated block's record).
+## be told from a level or a drift (a "sinusoid" at 0.00014 Hz, under one
+## cycle of a simulated heated block's record, would be named).
 ##
 ## The phase of the disturbance on another record is unknown:
 ## @code{residtrace} keeps w, and fits a and b on each half of the

@@ -18,7 +18,7 @@
 ## B_k = a_k B: it is estimated by @code{hsrivc} (Laurain et al., the
 ## products separated with their covariance), which uses 2 nb - 2 fewer
 ## parameters than the unconstrained channels and predicts better
-## (issue 11: validation RMSE 0.35 against 0.46, 10 of 10 runs); with
+## (validation RMSE 0.35 against 0.46, 10 of 10 simulated runs); with
 ## nb = 1 the two structures coincide and the channels are fitted as
 ## such.
 ## @item on the output (Wiener): y = x + c2 x^2 + c3 x^3 with x the model
@@ -138,7 +138,7 @@ function ok = hammerstein_plain (cur, ctx)
         && ! (isfield (ctx.D, "initial_state") && ctx.D.initial_state));
 endfunction
 
-## The Hammerstein variant fitted by hsrivc (issue 11): a model of the
+## The Hammerstein variant fitted by hsrivc: a model of the
 ## residtrace kind with the channels u, u^2, u^3 whose numerators are the
 ## products a_k B (theta: the free f's and the products, their
 ## covariance by the Jacobian of the products), @code{nlin} (a, its sd)

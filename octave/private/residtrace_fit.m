@@ -58,8 +58,8 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   ## the record's output level (raw units) is estimated jointly with the
   ## model by the engine: alternating it with SRIVC converged too slowly
   ## where the level and the static gain are nearly collinear (a slow
-  ## process; issue 9's held-out linear two-tank record: static gain
-  ## 0.36 instead of 0.8 after three rounds)
+  ## process; a simulated linear two-tank record: static gain 0.36
+  ## instead of 0.8 after three alternations)
   k_lev = [];
   if (! isempty (tmpl.out) && isfield (tmpl, "levels") && tmpl.levels)
     k_lev = find (strcmp ({tmpl.out.type}, "offset"), 1);
@@ -259,7 +259,7 @@ endfunction
 ## interval: the samples cannot tell it from an infinitely fast one (its
 ## in-band effect is a relative change of at most pi / (p Ts) < 0.3 %,
 ## which the refit absorbs). A fit whose loss is flat in that direction
-## lets such a pole run off (issue 9's Silverbox: the order candidate's
+## lets such a pole run off (Silverbox: the order candidate's
 ## pole at -2484 rad/s went to -5.8e10 when the cubic spring was added,
 ## F = [1 5.8e10 2.8e12 1.1e16]), and the companion-form realisation the
 ## simulator and the free responses use is then so ill conditioned that
@@ -273,10 +273,11 @@ endfunction
 ## reduced order and are freed. Not for the re-estimates of the current
 ## model in its own structure (ctx.keep_order, set by residtrace): its
 ## order is the user's, and a pole that the re-estimate without an
-## initial state runs off is needed back by the refit with it (issue 9's
-## held-out two tanks; bringing the pole back to p Ts = 1000 instead of
-## removing it was tried too: on the Silverbox the fits from there chose
-## y^3 and an output offset, 0.0069 V after three effects against 0.0063).
+## initial state runs off is needed back by the refit with it (a
+## simulated two-tank record). Bringing the pole back to p Ts = 1000
+## instead of removing it does worse: on the Silverbox the fits from there
+## chose y^3 and an output offset, 0.0069 V after three effects against
+## 0.0063.
 ##
 ## With @var{limit} and @var{trim} (the retry of a fit that failed from
 ## every start, see @code{refit_without_fast_poles}): the poles with p Ts
@@ -318,9 +319,10 @@ endfunction
 
 ## Every start of a fit failed: typically the engine found its
 ## instruments rank deficient because a pole of the start lies far beyond
-## what the samples resolve (its filtered regressors vanish; issue 9's
-## Cascaded Tanks replica: a user's [3 3 0] model with a pole at p Ts =
-## 68 made every candidate's fit fail, and residtrace could test none).
+## what the samples resolve (its filtered regressors vanish; on a
+## simulated cascaded-tanks record a user's [3 3 0] model with a pole at
+## p Ts = 68 made every candidate's fit fail, and residtrace could test
+## none).
 ## The template with its real poles beyond the Nyquist frequency (p Ts >
 ## pi) residualised is fitted instead: the candidate is then tested in
 ## the order the samples determine. @var{model} (failed) is returned when

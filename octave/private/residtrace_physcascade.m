@@ -25,16 +25,15 @@
 ## state is a parameter: the cascade starts at rest at the outer level
 ## @code{phys.h0} (the inner one in balance with it), started at the
 ## first sample, fitted with the others and kept for any other record (as
-## a linear model's output level is). Until session 11 the cascade
-## started at rest for the first sample's input: on a record that does
-## not start there (the Cascaded Tanks replica starts 4 V below it) the
-## fit stalled at several times the linear model's error. It competes with
-## the
+## a linear model's output level is). A cascade started at rest for the
+## first sample's input instead stalls at several times the linear
+## model's error on a record that does not start there (a simulated
+## cascaded-tanks record starts 4 V below it). It competes with the
 ## other variants of its candidate by BIC on the estimation record
-## (@code{residtrace_select}); until session 10 it was tried only when the
-## estimation residual showed a quadratic dependence on the model output
-## (a gate for speed, which kept it out of most replica runs of the
-## Cascaded Tanks benchmark; the fit costs little). Applicable in open loop,
+## (@code{residtrace_select}) whatever the estimation residual looks like
+## (the fit costs little; a gate on a quadratic dependence of the residual
+## on the model output would keep it out of most simulated records of the
+## Cascaded Tanks benchmark). Applicable in open loop,
 ## to a model of stable poles without integrators (a pole at zero on the
 ## time scale of the samples, |p| Ts < 1e-9) whose channels are
 ## inputs or static functions of them (an input constant is dropped: the

@@ -26,9 +26,9 @@
 ## response of the model's (linearised) F is fitted on the error by least
 ## squares, as for every other model. At most @code{ctx.maxiter}
 ## iterations (three while residtrace screens) and at most max(8, 48 000 /
-## n) on the n <= 6000 samples fitted (the first ones; a budget for speed:
-## until session 11 eight whatever n, which left the cascades' fits short
-## of their minimum on records of a few thousand samples); the residual
+## n) on the n <= 6000 samples fitted (the first ones; a budget for speed
+## that grows as n falls: eight whatever n would leave the cascades' fits
+## short of their minimum on records of a few thousand samples); the residual
 ## variance, BIC and @code{e_est} are those of the whole record.
 ## @code{phys.theta}, @code{phys.cov}: the parameters above and their
 ## Gauss-Newton covariance; @code{theta}, @code{cov}: those of

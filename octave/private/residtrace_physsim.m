@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{y}, @var{z}] =} residtrace_physsim (@var{model}, @var{u}, @var{Ts})
 ## Output of a @code{residtrace} model with a physical realisation
-## (@code{model.phys}, issue 9) on the input @var{u} (N-by-nu, held over
+## (@code{model.phys}) on the input @var{u} (N-by-nu, held over
 ## each sampling interval), open loop. Two kinds:
 ## @table @asis
 ## @item "stop" (a state saturated with its velocity reset)

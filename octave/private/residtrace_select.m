@@ -19,7 +19,7 @@
 ## loss reduction), and only the two with the smallest screening BIC are
 ## iterated to convergence, each from its screening estimate (the
 ## variants' loss differences are decided long before their iterations
-## end; issue 9, speed). @var{table}: the variants' names with their
+## end; for speed). @var{table}: the variants' names with their
 ## BIC and residual variance (after screening, or converged), and
 ## @code{converged} (iterated to the end). A template with the field
 ## @code{order_floor_} fails when its fit comes back with a lower order

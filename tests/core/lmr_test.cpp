@@ -132,12 +132,12 @@ TEST(LmrUpdate, UpdateDoesNotAllocate) {
   EXPECT_EQ(g_allocations.load() - before, 0);
 }
 
-// The loss of issue 12: one direction excited (a constant input), lambda
-// = 0.998, Gamma = 1e-3 I, in single precision. R summed in float had a
-// negative eigenvalue within 6 000 such samples of the long-run scenario
-// (rounding of the large excited part, ~eps |R| per step, kept for
-// 1 / (1 - lambda) steps, is as large as Gamma). The factor form must
-// keep R = L L^T close to the same recursion summed in double from the
+// The loss of R under poor excitation: one direction excited (a constant
+// input), lambda = 0.998, Gamma = 1e-3 I, in single precision. R summed in
+// float had a negative eigenvalue within 6 000 such samples of the long-run
+// scenario (rounding of the large excited part, ~eps |R| per step, kept for
+// 1 / (1 - lambda) steps, is as large as Gamma). The factor form must keep
+// R = L L^T close to the same recursion summed in double from the
 // same float regressors: its smallest eigenvalue (Gamma's level) within
 // 5 %, its largest within 1e-4, and the guard must not have been needed.
 TEST(LmrUpdate, SinglePrecisionFactorFollowsTheDoubleRecursion) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
-// Long run under poor excitation (issue 12), shared by
+// Long run under poor excitation, shared by
 // covariance_guard_test.cpp (10^6 samples in CI) and
 // bench/long_run_bench.cpp (10^8 samples): the system
 // (p^2 + 2.4 p + 4) x = 4 u of thesis sec. 2.3.5, Ts = 0.01 s, output noise

@@ -53,7 +53,7 @@ struct Agreement {
 // Runs the standard KF and PotterSVF in double on the same random
 // regression (random-walk parameters, noisy target) and records how far
 // apart they get.
-// fixed_size: both on their fixed-size steps (issue 14).
+// fixed_size: both on their fixed-size steps.
 Agreement compare_with_kalman(const Eigen::MatrixXd& Qn, int steps,
                               unsigned seed, bool fixed_size = false) {
   const Eigen::Index np = Qn.rows();

@@ -236,12 +236,12 @@ TEST(RefinedIvStatus, CleanFitIsNotClipped) {
 }
 
 // An integrating plant 2 / (p (p + 3)) fitted by b / (p + a): the loss
-// falls as a -> 0 and the unconstrained steps cross to a < 0. Until
-// session 6 the iterates were pulled back (clipped) while the pole crept
-// to p = 0; now the run stops at the last stable iterate as soon as no
-// stable step lowers the loss and the Gauss-Newton step that would moves
-// the pole through p = 0 (the stability boundary), with the pole flagged
-// and nothing clipped. With the pole declared (a fixed at 0) the fit
+// falls as a -> 0 and the unconstrained steps cross to a < 0. Rather than
+// pulling the iterates back (clipping) while the pole creeps to p = 0, the
+// run stops at the last stable iterate as soon as no stable step lowers
+// the loss and the Gauss-Newton step that would moves the pole through
+// p = 0 (the stability boundary), with the pole flagged and nothing
+// clipped. With the pole declared (a fixed at 0) the fit
 // converges to a stable model.
 TEST(RefinedIvStatus, IntegratingPlantWithoutItsIntegratorIsFlagged) {
   const double ts = 0.01;
@@ -276,8 +276,8 @@ TEST(RefinedIvStatus, IntegratingPlantWithoutItsIntegratorIsFlagged) {
   EXPECT_EQ(declared.integrator_suspected[0], 0);
 }
 
-// Raw units on an integrating plant (session 6, after the raw EMPS
-// position records): y = 2 / (p (p + 3)) (u_raw + d) + c with the input
+// Raw units on an integrating plant (as the raw EMPS position records):
+// y = 2 / (p (p + 3)) (u_raw + d) + c with the input
 // measured with an offset (u_raw = u - d, d = -0.7) and the output at a
 // level c = 5. With the integrator declared (f2 fixed at 0), the input
 // offset as a constant channel of the same group (numerator b_d = b d)
@@ -344,12 +344,12 @@ TEST(RefinedIvStatus, RawIntegratingPlantWithOffsetsIsRecovered) {
 }
 
 // Raw units on a stable plant: y = c + B/F (u_raw) from rest at u_raw = 0
-// with an input of mean 5 and an output level c = 20 (session 7, after the
-// Cascaded Tanks replica). The step response of c and the model's gain on
-// the input's mean are nearly collinear; when c was refitted only between
-// refined-IV steps, the noise-free record in the model class was not
-// converged after 60 iterations (c = 18.6). refined_iv() now repeats such
-// a run with c in the regression, which recovers the record exactly in a
+// with an input of mean 5 and an output level c = 20 (as a simulated
+// cascaded-tanks record). The step response of c and the model's gain on
+// the input's mean are nearly collinear; with c refitted only between
+// refined-IV steps, the noise-free record in the model class is not
+// converged after 60 iterations (c = 18.6). refined_iv() repeats such a
+// run with c in the regression, which recovers the record exactly in a
 // few iterations.
 TEST(RefinedIvStatus, OutputOffsetWithNonzeroMeanInputIsRecovered) {
   const double ts = 0.05, level = 20;
@@ -380,10 +380,9 @@ TEST(RefinedIvStatus, OutputOffsetWithNonzeroMeanInputIsRecovered) {
 
 // A record whose output is unrelated to the input (independent noise):
 // every start stops where the model explains nothing, with B ~ 0 and the
-// loss flat in F (a saddle whenever some model fits better; session 6,
-// after Silverbox multisine [2 3 0] was accepted there by the score
-// test). Such a stop is not reported as converged, and the reason says
-// why.
+// loss flat in F (a saddle whenever some model fits better; the score
+// test would accept Silverbox multisine [2 3 0] there). Such a stop is
+// not reported as converged, and the reason says why.
 TEST(RefinedIvStatus, ModelThatExplainsNothingIsNotConverged) {
   const double ts = 0.05;
   const std::vector<double> u = binary_input(3000, 8, 5u);

@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{cases} =} residtrace_cases (@var{set})
-## Undeclared-effect datasets for @code{residtrace} (issue 5, sec. 5): one
+## Undeclared-effect datasets for @code{residtrace}: one
 ## per effect of its library, that single effect present and not declared
 ## to the tool, plus a clean control. Each case has an estimation record
 ## @code{data}, a separate validation record @code{datav} (new input

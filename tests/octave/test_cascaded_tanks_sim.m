@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_cascaded_tanks_sim ()
-## The Cascaded Tanks replica (@code{demos/cascaded_tanks_sim.m}, issue 9)
+## The Cascaded Tanks simulator (@code{demos/cascaded_tanks_sim.m})
 ## against independent computations. It checks only the simulator, never
 ## residtrace's verdicts (those are reported by
 ## @code{demos/residtrace_cascaded_tanks.m}).

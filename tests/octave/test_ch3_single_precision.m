@@ -1,8 +1,8 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## Single precision on the simulated band-pass filter (issue 4, sec. 5;
-## thesis secs. 3.5, 4.1.3): float RLSSVF without scaling loses positive
+## Single precision on the simulated band-pass filter (thesis secs. 3.5,
+## 4.1.3): float RLSSVF without scaling loses positive
 ## definiteness of P, the scaled and Potter forms keep it and track within
 ## 1 % of the double-precision estimates. One period (15640 samples) of
 ## the record of demos/ch3_bandpass_record.m; a few seconds.

@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## The call sequences of CONTSID 7.3's demos on the refined-IV family
-## (contsid-surface.md, issue 11), replayed on simulated data of each
+## (contsid-surface.md), replayed on simulated data of each
 ## demo's kind with the demos' own call forms, through to their plots,
 ## present and comparec calls: time-delay transfer functions (TFSRIVC,
 ## TDSRIVC, TFRIVC, TFCOE), RIVC, closed loop 1-3 (without the Simulink
@@ -324,14 +324,13 @@ endfunction
 
 ## A noisy closed-loop estimate against the noise-free one.  These loops
 ## are u = r - C(p) y (r at the plant input), the default of clsrivc and
-## clrivc's "ReferenceAt" (before issue 11's fourth session they built
-## their instruments for u = C(p) (r - y) and reported sd 20-55 times
-## smaller than the spread; their covariance is now the IV sandwich, and
-## bench/closed_loop_mc.m's "demo" case checks the sd against a Monte
-## Carlo of closedloop1).  The tolerance is 3% (about 4 times the measured
-## spread), the distance in reported sd is printed and, where the reported
-## sd apply (white noise, or the noise model estimated), at most `bound'
-## (5: a normal deviate beyond 5 sd has probability 6e-7).
+## clrivc's "ReferenceAt" (instruments built for u = C(p) (r - y) would
+## report sd 20-55 times smaller than the spread; their covariance is the
+## IV sandwich, and bench/closed_loop_mc.m's "demo" case checks the sd
+## against a Monte Carlo of closedloop1).  The tolerance is 3% (about 4
+## times the measured spread), the distance in reported sd is printed and,
+## where the reported sd apply (white noise, or the noise model estimated),
+## at most `bound' (5: a normal deviate beyond 5 sd has probability 6e-7).
 function noisy_checks (name, M, pdet, bound = Inf)
   [p, sd] = getpvec (M);
   ## a hybrid BJ model (clrivc) holds [b c d f]: its plant's b and f

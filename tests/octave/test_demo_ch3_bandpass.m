@@ -1,7 +1,7 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## demo_ch3_bandpass (thesis secs. 4.1.3, 3.5; issue 4 sec. 5) runs
+## demo_ch3_bandpass (thesis secs. 4.1.3, 3.5) runs
 ## without its qnml search and 1e5 rad/s check, and its claims hold:
 ## - signal scaling lowers the median kappa_2(P) of RLSSVF and RSRIVC by
 ##   more than six orders of magnitude (measured 5e9) and that of

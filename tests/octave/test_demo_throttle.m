@@ -1,7 +1,7 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## The throttle demos (thesis sec. 4.2, issue 5 sec. 6) run and write their
+## The throttle demos (thesis sec. 4.2) run and write their
 ## figures and tables; two Monte Carlo runs keep it short (about 30 s in
 ## all on a 2-core machine).
 function test_demo_throttle ()

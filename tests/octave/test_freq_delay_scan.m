@@ -24,7 +24,7 @@ function test_freq_delay_scan ()
   Gn = idfrd (G0 + e, w, "Ts", 0);
   tdmax = pi / median (w);                 # the default TdMax (idfrd)
   ## tffsrivc's fixed-delay runs stop at MaxIter at some delays (the last
-  ## iterate is returned, as before); their warnings are not the point here
+  ## iterate is returned); their warnings are not the point here
   state = warning ("off", "tffsrivc:notConverged");
   unwind_protect
     scan_check (@tffsrivc, Gn, 0:0.01:tdmax);

@@ -82,9 +82,9 @@ function test_fuzz_public ()
   ## The children run in a working directory of their own inside tmp
   ## (removed at the end): a call that writes a file under a name it was
   ## given (residtrace's 'table' option) writes it there, never into the
-  ## source tree (issue 9: a file tests/octave/InterSample). The folders
-  ## the children used to run in and the sources' are listed before and
-  ## after, and a new file there is a failure.
+  ## source tree (e.g. a file tests/octave/InterSample). The folders the
+  ## children would otherwise run in and the sources' are listed before
+  ## and after, and a new file there is a failure.
   here = fileparts (mfilename ("fullpath"));
   work = fullfile (tmp, "work");
   mkdir (work);

@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_missing_samples ()
-## Missing samples (issue 12) across every front-end that reads a time
+## Missing samples across every front-end that reads a time
 ## record: one record with a gap of missing samples (NaN in y, and a
 ## shorter one in u), one table of calls.  Each front-end is declared
 ## either

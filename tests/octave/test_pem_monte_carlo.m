@@ -7,7 +7,7 @@
 ## (continuous-time output error) and oe (discrete time): over 150 noise
 ## realisations (N = 400), the sample standard deviation of each estimate
 ## divided by the mean reported standard deviation must lie in
-## [0.8, 1.25] (the issue's bar), and the mean estimate within three
+## [0.8, 1.25] (the target), and the mean estimate within three
 ## standard errors of the truth.  The ratio's own standard error is about
 ## 1/sqrt(2 R) = 6 % for R = 150, so the bar's bounds lie more than three
 ## of them from 1 (with R = 60 they did not: 9 %).  The full run

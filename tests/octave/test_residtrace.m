@@ -1,7 +1,7 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## Undeclared-effect suite of residtrace (issue 5, sec. 5): on each dataset
+## Undeclared-effect suite of residtrace: on each dataset
 ## of residtrace_cases (1) the single effect present must rank first and
 ## cut the validation RMSE, the clean control must give 'none', and the
 ## evidence must point at the true effect (its size within a tolerance

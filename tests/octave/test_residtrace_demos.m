@@ -1,7 +1,7 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## The measured-data demos of residtrace (issue 5, sec. 4) run on reduced
+## The measured-data demos of residtrace run on reduced
 ## settings and write their figures and tables. Sanity of what they find:
 ## on the EMPS the Coulomb friction (about 20 N in the benchmark's own
 ## identification; here within the range an independent inverse-dynamic

@@ -3,12 +3,12 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_fastpole ()
-## Issue 9, "make every failure loud", on the Cascaded Tanks replica
+## Every failure loud, on a simulated Cascaded Tanks record
 ## (@code{demos/cascaded_tanks_sim.m}, strong nonlinearity, record 1)
 ## with the user's @code{srivc} [3 3 0] model of the raw record. That
 ## model has a real pole far beyond the Nyquist frequency (p Ts of about
-## 68); before, every candidate's fit started from it failed (instrument
-## matrix rank deficient) and residtrace reported "no effect of the
+## 68); every candidate's fit started from it fails (instrument matrix
+## rank deficient), and residtrace must not report "no effect of the
 ## library explains the residual" having tested none. Checked here:
 ## @itemize
 ## @item the case is the one meant: the model has a real pole with p Ts
@@ -22,8 +22,8 @@
 ## "cannot tell" and name it, instead of "no effect explains the
 ## residual".
 ## @end itemize
-## It does not check which effect residtrace names (the replica's
-## figures are in @code{demos/residtrace_cascaded_tanks.m}).
+## It does not check which effect residtrace names (the figures on these
+## records are in @code{demos/residtrace_cascaded_tanks.m}).
 ## @end deftypefn
 
 function test_residtrace_fastpole ()

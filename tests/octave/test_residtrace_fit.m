@@ -1,7 +1,7 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## residtrace_fit (private, issue 9's Silverbox regression): a real pole
+## residtrace_fit (private): a real pole
 ## that a fit leaves beyond what the samples can see (p Ts > 1000) is
 ## residualised and the model fitted again in the lower order (not in the
 ## re-estimates of the current structure).
@@ -71,9 +71,9 @@ function check ()
   printf ("test_residtrace_fit: passed\n");
 endfunction
 
-## Issue 9's blind check: with the record's initial state estimated, a fit
-## that the engine found stationary at its first iteration came back with
-## a covariance of zeros (standard deviations of exactly 0). A first-order
+## With the record's initial state estimated, a fit that the engine finds
+## stationary at its first iteration must not come back with a covariance
+## of zeros (standard deviations of exactly 0). A first-order
 ## record with a known free response: the fit with the initial state
 ## estimated must give the standard deviations of the fit, on the same
 ## noise, of the record with that free response removed exactly and no

@@ -5,7 +5,7 @@
 ## @deftypefn {} {} test_residtrace_hammerstein ()
 ## residtrace's static-nonlinearity candidate fits the polynomial of the
 ## input of a plain model with nb >= 2 as a Hammerstein model through
-## hsrivc (issue 11 item 3). On CONTSID's Hammerstein demo system
+## hsrivc. On CONTSID's Hammerstein demo system
 ## (ubar = u + 0.5 u^2 + 0.25 u^3, G = (10 s + 30)/(s^2 + s + 5)), noise
 ## at 10 dB SNR, the linear model given (SRIVC [2 2 0]):
 ## @itemize
@@ -15,8 +15,8 @@
 ## @item the model's channels are the products a_k B (u^2 and u^3 have
 ## the numerator of u times a2 and a3);
 ## @item its validation output is closer to the noise-free output than
-## the unconstrained channels u, u^2, u^3 over F (srivc with three inputs,
-## the estimator the candidate used before) and than the linear model.
+## the unconstrained channels u, u^2, u^3 over F (srivc with three
+## inputs) and than the linear model.
 ## @end itemize
 ## @end deftypefn
 

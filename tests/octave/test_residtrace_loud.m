@@ -3,32 +3,31 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_loud ()
-## Issue 9's blind check, "make every failure loud": on the blind
-## pendulum record (@code{demos/blind_rigs.m}; torque motor V ->
-## potentiometer angle in degrees, hanging at 180 degrees, m g l
-## sin(theta)), with the user's model of that check (@code{srivc} [1 2 0]
-## on the raw record) and residtrace's defaults:
+## Every failure loud: on the simulated pendulum record
+## (@code{demos/lab_rigs.m}; torque motor V -> potentiometer angle in
+## degrees, hanging at 180 degrees, m g l sin(theta)), with a user's model
+## (@code{srivc} [1 2 0] on the raw record) and residtrace's defaults:
 ## @itemize
-## @item no raw warning reaches the user: before, the drift candidate
-## printed "matrix singular to machine precision" six times (its segment
-## fits had covariances of zeros); a candidate that cannot be estimated
-## now says "cannot test: ..." in its reason;
+## @item no raw warning reaches the user (the drift candidate's segment
+## fits are singular there, and Octave's solver would print "matrix
+## singular to machine precision"); a candidate that cannot be
+## estimated says "cannot test: ..." in its reason;
 ## @item no candidate reports a standard deviation of exactly 0, in any
 ## pass;
 ## @item @code{R.rmse_given} is the model as srivc returned it, with the
 ## output offset it estimated (180 degrees): the simulation of
 ## @code{simc} on the validation input plus that offset, computed here
-## independently (before, 180 degrees off).
+## independently (without the offset, 180 degrees off).
 ## @end itemize
-## It does not check residtrace's verdict (the blind check reports those,
-## @code{demos/residtrace_blind.m}).
+## It does not check residtrace's verdict (reported by
+## @code{demos/residtrace_lab_rigs.m}).
 ## @end deftypefn
 
 function test_residtrace_loud ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
-  rig = blind_rigs ("pendulum", 1, 0);
+  rig = lab_rigs ("pendulum", 1, 0);
   [M, ~, ~, ~, ~, info] = srivc (rig.de, [1 2 0]);
   assert (info.output_offset);
   R = [];

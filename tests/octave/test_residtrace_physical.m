@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_physical ()
-## residtrace's physical realisations (issue 9, private
+## residtrace's physical realisations (private
 ## residtrace_physsim/physfit/physcascade):
 ## @itemize
 ## @item the end-stop simulation ("stop") against the positioning axis's
@@ -12,7 +12,7 @@
 ## against the two tanks' simulator (demos/tanks_sim.m, Runge-Kutta with
 ## the same sub-steps, the upper tank overflowing) mapped by z = c1^2 h1,
 ## b = c1^2 k, alpha = c1^2, gamma = c2; the cascade with both tanks
-## spilling against the Cascaded Tanks replica's simulator, and at rest
+## spilling against the Cascaded Tanks simulator, and at rest
 ## at its initial levels (@code{residtrace_cascade_levels}, whose inline
 ## tests run here);
 ## @item the cascade's template with a far pole, and its fit with a
@@ -27,7 +27,7 @@
 ## cascade variants (the inner node); on a linear second-order record
 ## with the same input and levels no nonlinear effect is named, although
 ## the cascade variants were fitted there too (the rows' variants);
-## @item a fresh draw of the Cascaded Tanks replica: the square-root
+## @item a fresh draw of the Cascaded Tanks simulator: the square-root
 ## cascade named, the final error below half of the re-estimate's.
 ## @end itemize
 ## @end deftypefn
@@ -47,7 +47,7 @@ function test_residtrace_physical ()
   ctid_run_private_tests ("residtrace_cascade_levels.m");
   check_axis ();
   check_tanks ();
-  check_replica ();
+  check_cascaded_tanks ();
 endfunction
 
 function check_simulators ()
@@ -108,7 +108,7 @@ function check_simulators ()
 
   ## both tanks overflowing, half the upper overflow falling into the
   ## lower tank, from levels not at rest: against the Cascaded Tanks
-  ## replica's simulator (demos/cascaded_tanks_sim.m, written apart: its
+  ## simulator (demos/cascaded_tanks_sim.m, written apart: its
   ## overflow switches in each Runge-Kutta stage) mapped by z = k2^2 x1,
   ## b = k2^2 k4, alpha = k1 k2, gamma = k3, spill = frac, yhi = x2max;
   ## the projection after each sub-step is first order in the sub-step
@@ -155,9 +155,10 @@ function check_simulators ()
 endfunction
 
 ## The cascade's template: a model with a pole far beyond the samples
-## (srivc's [1 3 0] on the replica has one at -1.8e7) is no integrator
-## (until session 11 a pole 1e-9 times the fastest one was taken for an
-## integrator, and no cascade was tried); the initial level starts at the
+## (srivc's [1 3 0] on a simulated cascaded-tanks record has one at
+## -1.8e7) is no integrator (a pole 1e-9 times the fastest one must not
+## be taken for an integrator, which would leave the cascade untried);
+## the initial level starts at the
 ## first sample; a pole at zero is refused.
 function check_template ()
   Ts = 4; N = 400;
@@ -176,9 +177,9 @@ function check_template ()
     assert (isfield (t.phys, "spill"), clip);
   endfor
   ## fitted with its initial state declared and a delayed channel (the
-  ## inner level's start was simulated on one sample, which a delay
-  ## cannot index: a crash on the blind rig mixing_delay, nk = 11, found
-  ## in session 11; it is now computed from the parameters)
+  ## inner level's start is computed from the parameters, not simulated
+  ## on one sample, which a delay cannot index: as on the simulated rig
+  ## mixing_delay, nk = 11)
   t = residtrace_physcascade (cur, ctx, "sqrt", 1);
   t.channels.nk = 11;
   D = ctx.D; D.initial_state = true;
@@ -236,8 +237,8 @@ function check_tanks ()
   assert (! any (strcmp (R.effect, {"saturation", "state_nonlinearity", ...
                                      "static_nonlinearity", "coulomb"})));
   ## the cascade variants were fitted there too (they compete by BIC
-  ## whatever the residual looks like; until session 10 a gate on its
-  ## quadratic dependence on the output left them out of such records)
+  ## whatever the residual looks like; a gate on its quadratic
+  ## dependence on the output would leave them out of such records)
   sat = R.ranking(strcmp ({R.ranking.effect}, "saturation"));
   st = R.ranking(strcmp ({R.ranking.effect}, "state_nonlinearity"));
   assert (any (strcmp ({sat.variants.variant},
@@ -246,16 +247,16 @@ function check_tanks ()
                        "square-root outflows of a two-section cascade")));
 endfunction
 
-## A draw of the Cascaded Tanks replica (demos/cascaded_tanks_sim.m,
+## A draw of the Cascaded Tanks simulator (demos/cascaded_tanks_sim.m,
 ## strong excitation, draw 7: none of the draws 1-4 that the README's
 ## study looked at): records in raw volts that start 4 V below rest, both
 ## tanks overflowing, half the upper overflow falling into the lower one.
 ## The user's srivc [1 2 0], then residtrace with its defaults: the
 ## saturation of a square-root cascade is named and the final validation
-## RMSE is below half the model's. Before session 11 the cascade started at
-## rest for the first input and lost its whole overflow: its fit stalled
-## at several times the linear model's error.
-function check_replica ()
+## RMSE is below half the model's. A cascade started at rest for the
+## first input would lose its whole overflow: its fit would stall at
+## several times the linear model's error.
+function check_cascaded_tanks ()
   [de, dv, truth] = cascaded_tanks_sim ("records", 7, "strong");
   assert (sum (truth.top1e) > 0 && sum (truth.top1v) > 0);
   M = srivc (de, [1 2 0]);

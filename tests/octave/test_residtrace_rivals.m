@@ -9,7 +9,7 @@
 ## @item the private function's inline tests (the same error up to
 ## independent noise: a rival; a structured error the winner removes:
 ## not; rivals are significant, of another effect, with finite errors);
-## @item on the blind check's mixing_delay rig (a 12.4-sample transport
+## @item on the simulated mixing_delay rig (a 12.4-sample transport
 ## delay, srivc's [1 2 11]: a second pole stands in for part of the
 ## delay), the delay found is not told apart from the order candidate:
 ## @code{R.rivals} names it, the verdict says so, and the encompassing
@@ -30,7 +30,7 @@ function test_residtrace_rivals ()
   private_dir = fullfile (root, "octave", "private");
   addpath (private_dir);
   cleanup = onCleanup (@() rmpath (private_dir));
-  rig = blind_rigs ("mixing_delay");
+  rig = lab_rigs ("mixing_delay");
   ws = warning ("off", "all");
   M = srivc (rig.de, [1 2 11]);
   warning (ws);

@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## RSRIVC with a gap of missing samples tracks as without the gap, within
-## the noise (issue 12). The system of thesis sec. 2.3.5,
+## the noise. The system of thesis sec. 2.3.5,
 ## 4 / (p^2 + 2.4 p + 4), Ts = 0.05 s, N = 20000 samples (1000 s), a
 ## random binary input held 20 samples, output noise of standard deviation
 ## 0.1; RSRIVC-KF ([nb nf nk] = [1 2 0], lambda_svf = 3, Qn = 1e-7 I, so

@@ -4,18 +4,18 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_srivc_flexible ()
 ## srivc (data, [6 6 0]) on a sixth-order lightly damped flexible
-## structure sampled at 500 Hz (issue 9: the flexible-arm record on which
-## srivc reported "no cut-off frequency gave an estimate"). Three modes at
-## 3.5, 16 and 38 Hz with damping ratios 0.05, 0.02 and 0.01, numerator
-## of degree 5 (nb = 6); noise 10 % of the output's standard deviation;
-## one ZOH record (held multisine) and one FOH record (multisine, linear
-## between samples). The data are simulated here independently of the
-## toolbox (exact ZOH/FOH discretisation of a balanced state-space model
-## by the control package and expm). Checks: converged, stable, and on a
-## fresh validation input R_T^2 > 0.95 against the noise-free output (the
-## bar of CONTSID's robot-arm case study), the three natural
-## frequencies within 1 %, and comparec's simulation of the model (the
-## core's simulator) equal to the independent one.
+## structure sampled at 500 Hz (a flexible-arm record of this kind, on
+## which srivc must not report "no cut-off frequency gave an estimate").
+## Three modes at 3.5, 16 and 38 Hz with damping ratios 0.05, 0.02 and 0.01,
+## numerator of degree 5 (nb = 6); noise 10 % of the output's standard
+## deviation; one ZOH record (held multisine) and one FOH record (multisine,
+## linear between samples). The data are simulated here independently of the
+## toolbox (exact ZOH/FOH discretisation of a balanced state-space model by
+## the control package and expm). Checks: converged, stable, and on a fresh
+## validation input R_T^2 > 0.95 against the noise-free output (the bar of
+## CONTSID's robot-arm case study), the three natural frequencies within
+## 1 %, and comparec's simulation of the model (the core's simulator) equal
+## to the independent one.
 ## @end deftypefn
 
 function test_srivc_flexible ()

@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_srivc_input_offset ()
 ## srivc on a raw measured record whose input has an offset on an
-## integrating axis (issue 9): EMPS (../shared/data/emps/DATA_EMPS.mat),
+## integrating axis: EMPS (../shared/data/emps/DATA_EMPS.mat),
 ## motor force gtau*vir -> position qm, structure [1 2 0], raw units.
 ## Without input offsets the unconstrained estimate is unstable (the
 ## force's offset drives the near-integrator) and the fit is useless

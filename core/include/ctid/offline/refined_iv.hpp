@@ -1583,7 +1583,7 @@ class Estimator {
           // loss minimum of the structure lies on or beyond the boundary
           // (an integrator the structure does not declare). The previous
           // iterate is returned, not converged, with the pole flagged, instead
-          // of the full IV step (session 6: raw EMPS position, where that
+          // of the full IV step (on the raw EMPS position record that
           // step raised the loss 500-fold and the iterates cycled).
           const int clips = run.clipped_iterations;
           run = previous;
@@ -1752,10 +1752,9 @@ class Estimator {
     // No convergence by the rules above (a limit cycle of the IV step, a
     // slow drift): the simulation loss is stationary at the lowest-loss
     // iterate if its score statistic is below the number of fitted
-    // sensitivities, the threshold of the plateau test above (until
-    // session 6 this test asked for 1, one log-likelihood unit; conv4
-    // showed that a threshold that strict rejects true minima, and the
-    // two tests now agree).
+    // sensitivities, the threshold of the plateau test above, so that the
+    // two tests agree (a threshold of 1, one log-likelihood unit, rejects
+    // true minima).
     if (!run.converged && !boundary && std::isfinite(lowest.cost) &&
         !p_.closed_loop()) {
       int columns = 0;
@@ -1925,9 +1924,9 @@ class Estimator {
   // run.theta itself: prefilters and instruments from that iterate. For
   // an iterate returned without an update of its own (the previous one,
   // when no step from it lowers the loss), whose stored covariance is that
-  // of the step before it, or zero when it is the start (issue 9's blind
-  // check: a record with its initial state estimated, stationary at the
-  // first iteration, reported standard deviations of exactly 0).
+  // of the step before it, or zero when it is the start (a record with
+  // its initial state estimated, stationary at the first iteration, would
+  // report standard deviations of exactly 0).
   void covariance_at(Run<S>& run) const {
     evaluate(run);
     Matrix<S> cov;
@@ -2005,13 +2004,13 @@ Status refined_iv_run(const RivProblem<S>& problem,
 // With an output offset c estimated, c is refitted between refined-IV
 // steps. With an input of nonzero mean the step response of c and the
 // model's gain are nearly collinear and that alternation can crawl
-// (session 7, after the Cascaded Tanks replica: y = 20 + G (5 + 3 u),
-// noise-free and in the model class, not converged after 60 iterations,
+// (y = 20 + G (5 + 3 u), noise-free and in the model class, as on a
+// simulated cascaded-tanks record: not converged after 60 iterations,
 // c = 18.6). A run that does not converge is therefore repeated once with
 // c as a column of the regression (offset_in_regression), and the repeat
 // is returned when it converges. Only then: on records outside the model
 // class the two schemes stop at different points, and a fit that
-// converges as before stays as before.
+// converges by the alternation is returned as it is.
 template <typename S>
 Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
                   const RivData<S>& data, RivResult<S>* result) {

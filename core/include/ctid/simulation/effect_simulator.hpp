@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
 // Simulation of an LTI model with effect terms fed by its own output, the
-// model structures of residtrace (issue 9):
+// model structures of residtrace:
 //
 //   F(p) x(t) = sum_j B_j(p) w_j(t - nk_j Ts),   y = x + output terms,
 //

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
-// Physical realisations of residtrace models (issue 9): two nonlinear
+// Physical realisations of residtrace models: two nonlinear
 // simulators whose nonlinearity acts on a state that is not measured, so
 // that the model has no regression form and is fitted on its simulation
 // error (octave/private/residtrace_physfit.m).

@@ -2,13 +2,13 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{names} =} blind_rigs ()
-## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name})
-## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name}, @var{scale})
-## @deftypefnx {} {@var{rig} =} blind_rigs (@var{name}, @var{scale}, @var{draw})
-## The lab rigs of the blind held-out check of @code{residtrace} (issue 9,
-## session 6; @code{demos/residtrace_blind.m}): five nonlinear and three
-## linear processes, each simulated from its physics (@code{blind_rk4}:
+## @deftypefn {} {@var{names} =} lab_rigs ()
+## @deftypefnx {} {@var{rig} =} lab_rigs (@var{name})
+## @deftypefnx {} {@var{rig} =} lab_rigs (@var{name}, @var{scale})
+## @deftypefnx {} {@var{rig} =} lab_rigs (@var{name}, @var{scale}, @var{draw})
+## Simulated lab rigs on which @code{residtrace} is checked
+## (@code{demos/residtrace_lab_rigs.m}): five nonlinear and three
+## linear processes, each simulated from its physics (@code{lab_rig_rk4}:
 ## RK4, zero-order-hold input, sub-steps; the conveyor by its exact
 ## piecewise-exponential solution), recorded in raw units with sensor
 ## noise and quantisation, with an estimation and a validation record
@@ -27,9 +27,9 @@
 ## a user would try, and the records @code{de}, @code{dv} (iddata) with
 ## their noise-free outputs @code{ye0}, @code{yv0}.  @var{scale} (default
 ## 1) shortens the records; 0 gives the rig without records (for the
-## simulator checks of @code{tests/octave/test_blind_rigs.m}).  @var{draw}
+## simulator checks of @code{tests/octave/test_lab_rigs.m}).  @var{draw}
 ## (default 0) selects another random draw of the excitations and the
-## noise (a replicate of the same rigs).
+## noise (another realisation of the same rigs).
 ##
 ## Rigs (documented effect):
 ## @table @code
@@ -68,7 +68,7 @@
 ## @end table
 ## @end deftypefn
 
-function rig = blind_rigs (name, scale, draw)
+function rig = lab_rigs (name, scale, draw)
   names = {"heated_block", "conveyor", "fan_driver", "adc_clip", ...
            "pendulum", "thermal3", "beam_mode", "mixing_delay"};
   if (nargin == 0)
@@ -83,7 +83,7 @@ function rig = blind_rigs (name, scale, draw)
   endif
   k = find (strcmp (name, names));
   if (isempty (k))
-    error ("blind_rigs:badInput", "blind_rigs: unknown rig '%s'", name);
+    error ("lab_rigs:badInput", "lab_rigs: unknown rig '%s'", name);
   endif
   rig = feval (["rig_" name]);
   rig.name = name;
@@ -91,7 +91,7 @@ function rig = blind_rigs (name, scale, draw)
     Ts = rig.Ts;
     nsub = rig.nsub;
     fh = rig.f;
-    rig.sim = @(p, u, x0) blind_rk4 (fh (p), x0, u, Ts, nsub, p.delay);
+    rig.sim = @(p, u, x0) lab_rig_rk4 (fh (p), x0, u, Ts, nsub, p.delay);
   endif
   if (scale == 0)
     return;
@@ -421,7 +421,7 @@ function u = prbs_lfsr (N, n, clock)
     case 8
       taps = [8 6 5 4];
     otherwise
-      error ("blind_rigs:badInput", "blind_rigs: PRBS order %d", n);
+      error ("lab_rigs:badInput", "lab_rigs: PRBS order %d", n);
   endswitch
   L = 2^n - 1;
   reg = ones (1, n);

@@ -2,11 +2,11 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{S} =} residtrace_blind ()
-## @deftypefnx {} {@var{S} =} residtrace_blind (@var{outdir}, @var{rigs}, @var{rule}, @var{draw})
-## Blind held-out check of @code{residtrace} (issue 9, session 6): on the
-## records of @code{blind_rigs} (five nonlinear lab rigs, three linear
-## ones, made by a tester who read only the help texts of
+## @deftypefn {} {@var{S} =} residtrace_lab_rigs ()
+## @deftypefnx {} {@var{S} =} residtrace_lab_rigs (@var{outdir}, @var{rigs}, @var{rule}, @var{draw})
+## A check of @code{residtrace} on records made apart from it: on the
+## records of @code{lab_rigs} (five nonlinear simulated lab rigs, three
+## linear ones, written from the help texts alone of
 ## @code{residtrace}, @code{residtrace_table}, @code{srivc} and
 ## @code{iddata}, not residtrace's code), does @code{residtrace} name the
 ## documented effect first, and no nonlinear effect on a linear rig?
@@ -25,29 +25,30 @@
 ## "right" when neither R.effect nor R.effects holds a nonlinear effect,
 ## else "false alarm".
 ##
-## Writes @var{outdir}/blind.md (default "results"): the summary table,
+## Writes @var{outdir}/lab_rigs.md (default "results"): the summary table,
 ## each rig's structure table and residtrace's own table
 ## (@code{R.table}).  @var{rigs}: a cell of rig names (default all).
 ## @var{rule}: the user's choice of structure, "simplest" (default, as
 ## above) or "best" (the best validation R_T^2, @code{selcstruc (V,
 ## "c2sort", "RT2")}: the sensitivity of the verdicts to that choice).
 ## @var{draw}: the random draw of the records (default 0; see
-## @code{blind_rigs}).
+## @code{lab_rigs}).
 ## @var{S}: struct array of the figures.
 ## @end deftypefn
 
-function S = residtrace_blind (outdir, rigs, rule, draw)
+function S = residtrace_lab_rigs (outdir, rigs, rule, draw)
   if (nargin < 1 || isempty (outdir))
     outdir = "results";
   endif
   if (nargin < 2 || isempty (rigs))
-    rigs = blind_rigs ();
+    rigs = lab_rigs ();
   endif
   if (nargin < 3 || isempty (rule))
     rule = "simplest";
   endif
   if (! any (strcmp (rule, {"simplest", "best"})))
-    error ("residtrace_blind:badOption", "residtrace_blind: rule '%s'", rule);
+    error ("residtrace_lab_rigs:badOption", "residtrace_lab_rigs: rule '%s'",
+           rule);
   endif
   if (nargin < 4 || isempty (draw))
     draw = 0;
@@ -59,7 +60,7 @@ function S = residtrace_blind (outdir, rigs, rule, draw)
                "state_nonlinearity"};
   S = struct ([]);
   for i = 1:numel (rigs)
-    rig = blind_rigs (rigs{i}, 1, draw);
+    rig = lab_rigs (rigs{i}, 1, draw);
     s = run_rig (rig, nonlinear, rule);
     printf ("%-13s %-19s named %-19s all {%s}  %.4g -> %.4g  %.1f s  %s\n",
             s.name, s.effect, s.named, strjoin (s.all, ", "),
@@ -73,7 +74,7 @@ function S = residtrace_blind (outdir, rigs, rule, draw)
   if (! exist (outdir, "dir"))
     mkdir (outdir);
   endif
-  write_report (S, fullfile (outdir, "blind.md"), rule);
+  write_report (S, fullfile (outdir, "lab_rigs.md"), rule);
 endfunction
 
 function s = run_rig (rig, nonlinear, rule)
@@ -175,11 +176,11 @@ endfunction
 function write_report (S, file, rule)
   fid = fopen (file, "w");
   if (fid < 0)
-    error ("residtrace_blind:badInput", "residtrace_blind: cannot write %s",
-           file);
+    error ("residtrace_lab_rigs:badInput",
+           "residtrace_lab_rigs: cannot write %s", file);
   endif
-  fprintf (fid, "# Blind held-out check of residtrace (session 6)\n\n");
-  fprintf (fid, ["Records made by demos/blind_rigs.m (simulated lab ", ...
+  fprintf (fid, "# residtrace on simulated lab rigs\n\n");
+  fprintf (fid, ["Records made by demos/lab_rigs.m (simulated lab ", ...
                  "rigs, raw units, sensor noise and quantisation); model: ", ...
                  "srivc with the structure of rule '%s' (simplest: the ", ...
                  "fewest parameters among those whose validation residual ", ...

@@ -2,12 +2,12 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {} test_blind_rigs ()
-## The simulators of the blind held-out check (@code{demos/blind_rigs.m},
-## @code{demos/blind_rk4.m}; issue 9, session 6) against identities and
+## @deftypefn {} {} test_lab_rigs ()
+## The simulators of the simulated lab rigs (@code{demos/lab_rigs.m},
+## @code{demos/lab_rig_rk4.m}) against identities and
 ## independent computations.  It checks only the simulators, never
 ## residtrace's verdicts (those are reported by
-## @code{demos/residtrace_blind.m}).
+## @code{demos/residtrace_lab_rigs.m}).
 ##
 ## @itemize
 ## @item linear rigs (thermal3, beam_mode): RK4 with sub-steps against the
@@ -29,7 +29,7 @@
 ## @end itemize
 ## @end deftypefn
 
-function test_blind_rigs ()
+function test_lab_rigs ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
@@ -66,7 +66,7 @@ endfunction
 function check (name, e, tol)
   printf ("%-48s %.3g (tolerance %.3g)\n", name, e, tol);
   if (! (e <= tol))
-    error ("test_blind_rigs: %s: %.3g above %.3g", name, e, tol);
+    error ("test_lab_rigs: %s: %.3g above %.3g", name, e, tol);
   endif
 endfunction
 
@@ -86,7 +86,7 @@ endfunction
 ## rigs, so 1e-6 of the signal's range is ample and far below any
 ## modelling error a wrong sign or coefficient would cause.
 function check_thermal3 ()
-  rig = blind_rigs ("thermal3", 0);
+  rig = lab_rigs ("thermal3", 0);
   p = rig.p;
   N = 1500;
   u = steps (N, 0, 40);
@@ -107,7 +107,7 @@ function check_thermal3 ()
 endfunction
 
 function check_beam_mode ()
-  rig = blind_rigs ("beam_mode", 0);
+  rig = lab_rigs ("beam_mode", 0);
   p = rig.p;
   N = 2000;
   u = steps (N, -0.3, 0.3);
@@ -122,7 +122,7 @@ endfunction
 ## The delay (12.4 s = 62 sub-steps of 0.2 s) through lsim on the fine
 ## grid: an independent path for the delayed input.
 function check_mixing_delay ()
-  rig = blind_rigs ("mixing_delay", 0);
+  rig = lab_rigs ("mixing_delay", 0);
   p = rig.p;
   N = 600;
   u = steps (N, 2, 8);
@@ -142,12 +142,12 @@ function check_mixing_delay ()
   q.delay = 0;
   y0 = rig.out (q, rig.sim (q, u, rig.x_rest (q, u(1)))) - p.base;
   if (relerr (y0, yl) < 0.05)
-    error ("test_blind_rigs: mixing_delay: the delay has no effect");
+    error ("test_lab_rigs: mixing_delay: the delay has no effect");
   endif
 endfunction
 
 function check_heated_block ()
-  rig = blind_rigs ("heated_block", 0);
+  rig = lab_rigs ("heated_block", 0);
   p = rig.p;
   f = rig.f (p);
   ## Steady state under 60 W from ambient, 24 000 s (more than 50 time
@@ -184,7 +184,7 @@ function check_heated_block ()
 endfunction
 
 function check_conveyor ()
-  rig = blind_rigs ("conveyor", 0);
+  rig = lab_rigs ("conveyor", 0);
   p = rig.p;
   Ts = rig.Ts;
   N = 3000;
@@ -204,7 +204,7 @@ function check_conveyor ()
   check ("conveyor: moving belt vs lsim of u - Vc",
          relerr (v, zoh_lsim (G, u - p.Vc, Ts, v0)), 1e-10);
   ## RK4 of the state equation on the same moving belt.
-  X = blind_rk4 (rig.f (p), v0, u, Ts, rig.nsub);
+  X = lab_rig_rk4 (rig.f (p), v0, u, Ts, rig.nsub);
   check ("conveyor: exact vs RK4 (no stop)", relerr (X, v), 1e-8);
   ## A stop: from v0 with u = 0 the belt slows toward -K Vc, stops at
   ## tc = tau log (1 + v0 / (K Vc)) and stays stuck.
@@ -225,7 +225,7 @@ function check_conveyor ()
 endfunction
 
 function check_fan_driver ()
-  rig = blind_rigs ("fan_driver", 0);
+  rig = lab_rigs ("fan_driver", 0);
   p = rig.p;
   N = 2000;
   sys = ss ([-1 / p.tau_f, 0; 1 / p.tau_a, -1 / p.tau_a], ...
@@ -243,7 +243,7 @@ function check_fan_driver ()
 endfunction
 
 function check_adc_clip ()
-  rig = blind_rigs ("adc_clip", 0);
+  rig = lab_rigs ("adc_clip", 0);
   p = rig.p;
   N = 2000;
   sys = ss ([-1 / p.tau_m, 0; p.kg / p.tau_t, -1 / p.tau_t], ...
@@ -268,7 +268,7 @@ function check_adc_clip ()
 endfunction
 
 function check_pendulum ()
-  rig = blind_rigs ("pendulum", 0);
+  rig = lab_rigs ("pendulum", 0);
   p = rig.p;
   ## Energy without damping and input, from 60 degrees, 10 s.
   q = p;
@@ -280,7 +280,7 @@ function check_pendulum ()
          max (abs (E - E(1))) / E(1), 1e-8);
   ## The angle swings through the bottom (the check is not vacuous).
   if (min (X(:,1)) > -pi / 4)
-    error ("test_blind_rigs: pendulum: the undamped swing is too small");
+    error ("test_lab_rigs: pendulum: the undamped swing is too small");
   endif
   ## Small swings (0.01 rad): the linearisation J s^2 + b s + m g l; the
   ## neglected theta^3 / 6 is 2e-5 of theta.
@@ -292,24 +292,24 @@ function check_pendulum ()
   check ("pendulum: small swings vs lsim of the linearisation",
          relerr (X(:,1), yl), 1e-4);
   if (max (abs (yl)) > 0.02)
-    error ("test_blind_rigs: pendulum: the small swing is not small");
+    error ("test_lab_rigs: pendulum: the small swing is not small");
   endif
 endfunction
 
 function check_records ()
-  a = blind_rigs ("conveyor", 0.1);
-  b = blind_rigs ("conveyor", 0.1);
+  a = lab_rigs ("conveyor", 0.1);
+  b = lab_rigs ("conveyor", 0.1);
   check ("records: reproducible", max (abs (a.de.y - b.de.y)), 0);
   if (numel (a.de.y) != 600 || numel (a.dv.y) != 400)
-    error ("test_blind_rigs: records: lengths %d, %d", numel (a.de.y),
+    error ("test_lab_rigs: records: lengths %d, %d", numel (a.de.y),
            numel (a.dv.y));
   endif
-  c = blind_rigs ("conveyor", 0.1, 1);
+  c = lab_rigs ("conveyor", 0.1, 1);
   if (isequal (c.de.u, a.de.u))
-    error ("test_blind_rigs: records: draw 1 repeats draw 0");
+    error ("test_lab_rigs: records: draw 1 repeats draw 0");
   endif
   if (isequal (a.de.u(1:400), a.dv.u))
-    error ("test_blind_rigs: records: validation input = estimation input");
+    error ("test_lab_rigs: records: validation input = estimation input");
   endif
   ## Noise of the stated size on the noise-free output (quantisation
   ## adds q^2 / 12).
@@ -317,7 +317,7 @@ function check_records ()
   want = sqrt (a.p.noise^2 + a.p.q^2 / 12);
   check ("records: conveyor noise std (relative)", abs (s / want - 1), 0.15);
   ## Raw levels: the conductivity starts at its rest level.
-  c = blind_rigs ("mixing_delay", 0.05);
+  c = lab_rigs ("mixing_delay", 0.05);
   check ("records: mixing_delay starts at its rest level",
          abs (c.ye0(1) - (c.p.base + c.p.K * c.u_rest)), 1e-12);
 endfunction

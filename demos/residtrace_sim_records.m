@@ -2,17 +2,16 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn  {} {@var{T} =} residtrace_heldout (@var{outdir})
-## @deftypefnx {} {@var{T} =} residtrace_heldout (@var{outdir}, @var{which})
-## A held-out check of @code{residtrace} on records it was not developed
-## on: five nonlinear and three linear simulated rigs of realistic
-## physics, in raw units (offsets, engineering units) with measurement
-## noise, each with its own estimation and validation experiment. The
-## seeds (2026112301 + k) were fixed before the first run and not
-## changed afterwards; the rules of residtrace were not adjusted on these
-## records. The model given to residtrace is what a user would fit:
-## SRIVC of the plain linear structure on the estimation record with its
-## means removed.
+## @deftypefn  {} {@var{T} =} residtrace_sim_records (@var{outdir})
+## @deftypefnx {} {@var{T} =} residtrace_sim_records (@var{outdir}, @var{which})
+## A check of @code{residtrace} on records not used to tune it: five
+## nonlinear and three linear simulated rigs of realistic physics, in raw
+## units (offsets, engineering units) with measurement noise, each with
+## its own estimation and validation experiment. The seeds (2026112301 +
+## k) are fixed, and the rules of residtrace are not adjusted on these
+## records. The model given to residtrace is what a user would fit: SRIVC
+## of the plain linear structure on the estimation record with its means
+## removed.
 ##
 ## @table @asis
 ## @item tanks
@@ -29,8 +28,8 @@
 ## one tank, square-root outflow, level in cm from the inflow in l/min;
 ## documented: state_nonlinearity.
 ## @item valve
-## a flow loop's valve (first-order actuator) at its end stops 0 and 100
-## %, then a first-order process (temperature in degC); documented:
+## a flow loop's valve (first-order actuator) at its end stops (0 and
+## 100 %), then a first-order process (temperature in degC); documented:
 ## saturation.
 ## @item lin2, lin3, linv
 ## linear records: a linearised two-tank (level in cm), a third-order
@@ -38,7 +37,7 @@
 ## friction only (rpm); documented: no nonlinear effect.
 ## @end table
 ##
-## Writes @var{outdir}/residtrace_heldout.md (default "results": the
+## Writes @var{outdir}/residtrace_sim_records.md (default "results": the
 ## table, then residtrace's verdict on each record) and
 ## returns the table as a struct array (record, documented, found,
 ## rmse_before, rmse_after, elapsed, the ranking of each pass, verdict).
@@ -46,7 +45,7 @@
 ## record keeps its own seed).
 ## @end deftypefn
 
-function T = residtrace_heldout (outdir = "results", which = {})
+function T = residtrace_sim_records (outdir = "results", which = {})
   demo_prepare (outdir);
   recs = {"tanks", "axis", "motor", "tank", "valve", "lin2", "lin3", "linv"};
   doc = {{"saturation", "state_nonlinearity"}, {"saturation"}, {"coulomb"}, ...
@@ -77,7 +76,7 @@ function T = residtrace_heldout (outdir = "results", which = {})
     printf ("       verdict: %s\n", R.verdict);
     fflush (stdout);
   endfor
-  fid = fopen (fullfile (outdir, "residtrace_heldout.md"), "w");
+  fid = fopen (fullfile (outdir, "residtrace_sim_records.md"), "w");
   fprintf (fid, ["| record | documented effect | named first | all ", ...
                  "effects (2 passes) | levels estimated | validation ", ...
                  "simulation RMSE before -> after | time (s) |\n"]);

@@ -2,9 +2,9 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{X} =} blind_rk4 (@var{f}, @var{x0}, @var{u}, @var{Ts}, @var{nsub})
-## @deftypefnx {} {@var{X} =} blind_rk4 (@dots{}, @var{delay})
-## Simulator of the blind held-out rigs (@code{blind_rigs}): the state
+## @deftypefn {} {@var{X} =} lab_rig_rk4 (@var{f}, @var{x0}, @var{u}, @var{Ts}, @var{nsub})
+## @deftypefnx {} {@var{X} =} lab_rig_rk4 (@dots{}, @var{delay})
+## Integrator of the simulated lab rigs (@code{lab_rigs}): the state
 ## equation dx/dt = f(x, u) integrated by the classical fourth-order
 ## Runge-Kutta method with @var{nsub} equal sub-steps per sampling
 ## interval, the input held constant over each interval (zero-order hold)
@@ -20,9 +20,10 @@
 ## between input switches RK4 has its local error O(h^5).
 ## @end deftypefn
 
-function X = blind_rk4 (f, x0, u, Ts, nsub, delay)
+function X = lab_rig_rk4 (f, x0, u, Ts, nsub, delay)
   if (nargin < 5)
-    error ("blind_rk4:badInput", "blind_rk4: f, x0, u, Ts, nsub are needed");
+    error ("lab_rig_rk4:badInput",
+           "lab_rig_rk4: f, x0, u, Ts, nsub are needed");
   endif
   if (nargin < 6)
     delay = 0;

@@ -2,8 +2,8 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {} test_issue12_silent_cases ()
-## The "silently wrong answers" of issue 12, each re-checked in one place:
+## @deftypefn {} {} test_silent_wrong_answers ()
+## Calls that could give a silently wrong answer, each checked in one place:
 ## the call must either give the right answer or raise an identified error
 ## @code{<function>:<reason>}.
 ## @itemize
@@ -25,7 +25,7 @@
 ## @end itemize
 ## @end deftypefn
 
-function test_issue12_silent_cases ()
+function test_silent_wrong_answers ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   warning ("off", "all");
@@ -153,9 +153,9 @@ function test_issue12_silent_cases ()
     endif
   endfor
   if (nfail > 0)
-    error ("test_issue12_silent_cases: %d failures", nfail);
+    error ("test_silent_wrong_answers: %d failures", nfail);
   endif
-  printf ("test_issue12_silent_cases: every case right or identified\n");
+  printf ("test_silent_wrong_answers: every case right or identified\n");
 endfunction
 
 function n = check (ok, what)
