@@ -6,17 +6,18 @@
 //
 //   y  = pde_mex ("sim_heat", theta, t, x, u, ic)
 //   yf = pde_mex ("local_filter3", num, den, x)
-//   th = pde_mex ("pdelssvf4heatdiffusion", t, x, y, u, rule, lambda)
-//   [th, ni, conv] = pde_mex ("pdesrivc4heatdiffusion", t, x, y, u, ic,
-//                             tol, maxiter)
+//   th = pde_mex ("pdelssvf4heatdiffusion", t, x, y, u, options)
+//   [th, ni, conv] = pde_mex ("pdesrivc4heatdiffusion", t, x, y, u, options)
 //   [th, ni, conv, ct, dt, cs, ds] = pde_mex ("pderivc4heatdiffusion", t, x,
-//                             y, u, ic, tol, maxiter, orders)
+//                                             y, u, options)
 //
-// theta = [a b]; t, x vectors; y, u numel(t)-by-numel(x); ic numel(x)
-// values; rule 0 bilinear, 1 Euler; lambda = [lambda_t lambda_x]; orders =
+// theta = [a b]; t, x vectors; y, u numel(t)-by-numel(x). options: for
+// LSSVF, rule ("bili" or "euler") and lambda = [lambda_t lambda_x]; for
+// SRIVC and RIVC, ic (numel(x) values), tol, maxiter, and for RIVC nn =
 // [ndt nct nds ncs]. th is 2-by-1; the noise polynomials are rows.
 #include "ctid/offline/pde_heat.hpp"
 #include "gateway_common.hpp"
+#include "options_reader.hpp"
 
 namespace {
 
@@ -66,37 +67,40 @@ void pde_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     plhs[0] = ctid::mex::to_output(y);
     return;
   }
+  nargs(6);
   const Eigen::VectorXd t = vec(g, prhs[1], "Data2.t");
   const Eigen::VectorXd x = vec(g, prhs[2], "Data2.x");
   const Eigen::MatrixXd y = g.eigen_matrix(prhs[3], "Data1.Output");
   const Eigen::MatrixXd u = g.eigen_matrix(prhs[4], "Data1.Input");
+  ctid::mex::OptionsReader opt(g, prhs[5]);
   if (f == "pdelssvf4heatdiffusion") {
-    nargs(7);
-    const int rule = g.integer(prhs[5], "rule");
-    const Eigen::VectorXd lambda = vec(g, prhs[6], "Filter.BF");
-    if (lambda.size() != 2) g.fail("badOption", "Filter.BF must be [lambda_t lambda_x]");
+    const ctid::HeatRule rule = opt.choice<ctid::HeatRule>(
+        "rule", {{"bili", ctid::HeatRule::kBilinear},
+                 {"euler", ctid::HeatRule::kEuler}},
+        ctid::HeatRule::kBilinear);
+    const Eigen::MatrixXd lambda = opt.required_matrix("lambda", 1, 2);
+    opt.finish();
     Eigen::Vector2d theta;
-    g.check(ctid::heat_lssvf(t, x, y, u,
-                             rule == 1 ? ctid::HeatRule::kEuler
-                                       : ctid::HeatRule::kBilinear,
-                             lambda[0], lambda[1], &theta));
+    g.check(ctid::heat_lssvf(t, x, y, u, rule, lambda(0, 0), lambda(0, 1),
+                             &theta));
     plhs[0] = ctid::mex::to_output(theta);
     return;
   }
   const bool refined = f == "pderivc4heatdiffusion";
-  nargs(refined ? 9 : 8);
-  const Eigen::VectorXd ic = vec(g, prhs[5], "the initial condition");
-  ctid::HeatIvOptions opt;
-  opt.tol = g.scalar(prhs[6], "tol");
-  opt.maxiter = g.integer(prhs[7], "maxiter");
+  const Eigen::MatrixXd icm = opt.required_matrix("ic", 1, x.size());
+  const Eigen::VectorXd ic = icm.row(0).transpose();
+  ctid::HeatIvOptions iv;
+  iv.tol = opt.scalar("tol", iv.tol);
+  iv.maxiter = opt.integer("maxiter", iv.maxiter);
   if (refined) {
-    const std::vector<int> nn = g.integer_vector(prhs[8], "nn");
+    const std::vector<int> nn = opt.integer_vector("nn");
     if (nn.size() != 4) g.fail("badInput", "nn must be [ndet ncet ndes nces]");
-    for (int i = 0; i < 4; ++i) opt.orders[i] = nn[i];
+    for (int i = 0; i < 4; ++i) iv.orders[i] = nn[i];
   }
+  opt.finish();
   ctid::HeatIvResult res;
-  g.check(refined ? ctid::heat_rivc(t, x, y, u, ic, opt, &res)
-                  : ctid::heat_srivc(t, x, y, u, ic, opt, &res));
+  g.check(refined ? ctid::heat_rivc(t, x, y, u, ic, iv, &res)
+                  : ctid::heat_srivc(t, x, y, u, ic, iv, &res));
   plhs[0] = ctid::mex::to_output(res.theta);
   if (nlhs > 1) plhs[1] = mxCreateDoubleScalar(res.iterations);
   if (nlhs > 2) plhs[2] = mxCreateDoubleScalar(res.converged ? 1.0 : 0.0);

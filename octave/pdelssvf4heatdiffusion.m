@@ -53,7 +53,7 @@ function [theta, varargout] = pdelssvf4heatdiffusion (varargin)
     error ([fname ":badOption"],
            "%s: Filter must be a struct with the field BF (and Str)", fname);
   endif
-  rule = 0;
+  rule = "bili";
   if (isfield (Filter, "Str"))
     if (! ischar (Filter.Str))
       error ([fname ":badOption"], "%s: Filter.Str must be 'Bili' or 'Euler'",
@@ -61,9 +61,9 @@ function [theta, varargout] = pdelssvf4heatdiffusion (varargin)
     endif
     switch (lower (Filter.Str))
       case "bili"
-        rule = 0;
+        rule = "bili";
       case "euler"
-        rule = 1;
+        rule = "euler";
       otherwise
         error ([fname ":badOption"],
                "%s: Filter.Str must be 'Bili' or 'Euler', got '%s'", fname,
@@ -81,7 +81,7 @@ function [theta, varargout] = pdelssvf4heatdiffusion (varargin)
   if (isscalar (bf))
     bf = [bf bf];
   endif
-  theta = pde_mex (fname, t, x, y, u, rule, bf);
+  theta = pde_mex (fname, t, x, y, u, struct ("rule", rule, "lambda", bf));
 endfunction
 
 %!shared D1, D2, th0

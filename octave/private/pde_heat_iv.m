@@ -36,16 +36,14 @@ function [theta, ni, noise] = pde_heat_iv (fname, args, nn)
              fname);
     endif
   endif
-  ic = double (IC(:).');
+  opts = struct ("ic", double (IC(:).'), "tol", double (tol),
+                 "maxiter", double (maxiter));
   if (isempty (nn))
-    [theta, ni, conv] = pde_mex (fname, t, x, y, u, ic, double (tol),
-                                 double (maxiter));
+    [theta, ni, conv] = pde_mex (fname, t, x, y, u, opts);
     noise = {};
   else
-    [theta, ni, conv, ct, dt, cs, ds] = pde_mex (fname, t, x, y, u, ic,
-                                                 double (tol),
-                                                 double (maxiter),
-                                                 double (nn(:).'));
+    opts.nn = double (nn(:).');
+    [theta, ni, conv, ct, dt, cs, ds] = pde_mex (fname, t, x, y, u, opts);
     noise = {ct, dt, cs, ds};
   endif
   if (! conv)

@@ -44,6 +44,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -375,12 +376,17 @@ inline Status simulate_heat(double a, double b, const Eigen::VectorXd& t,
   Eigen::MatrixXd z(n, nt);
   z.col(0) = ic.segment(1, n);
   Eigen::VectorXd w(n);
+  std::unique_ptr<pde_detail::CrankNicolson> cn;
+  double h_factorised = 0.0;
   for (long k = 1; k < nt; ++k) {
     const double h = t[k] - t[k - 1];
-    // constant steps reuse the factorisation; a new step refactorises.
-    const pde_detail::CrankNicolson cn(l, a, h);
+    // equal steps reuse the factorisation; a new step refactorises.
+    if (!cn || h != h_factorised) {
+      cn = std::make_unique<pde_detail::CrankNicolson>(l, a, h);
+      h_factorised = h;
+    }
     w = 0.5 * b * (ui.col(k) + ui.col(k - 1));
-    cn.step(z.col(k - 1).data(), w.data(), z.col(k).data());
+    cn->step(z.col(k - 1).data(), w.data(), z.col(k).data());
   }
   y->setZero(nt, nx);
   y->middleCols(1, n) = z.transpose();
