@@ -101,3 +101,8 @@ endfunction
 %!error id=local_filter3:badInput local_filter3 (1, 1, {1})
 %!error id=local_filter3:badInput local_filter3 (1, 1)
 %!error id=local_filter3:numericalFailure local_filter3 (1, [1 -1e200], ones (50, 3))
+
+%!demo
+%! e = local_filter3 (1, [1 -1.2 0.4]' * [1 -0.3], randn (400, 60));
+%! imagesc (e'); xlabel ("time index"); ylabel ("space index");
+%! title ("noise coloured along time and space");

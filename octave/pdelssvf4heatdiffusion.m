@@ -119,11 +119,31 @@ endfunction
 %! assert (e1 < 0.05);
 %! assert (e1 / e2 > 1.6 && e1 / e2 < 2.4);
 
-%!error id=pdelssvf4heatdiffusion:badOption pdelssvf4heatdiffusion (D1, D2, struct ("Str", "Tustin", "BF", 1))
-%!error id=pdelssvf4heatdiffusion:badOption pdelssvf4heatdiffusion (D1, D2, struct ("BF", [1 -1]))
-%!error id=pdelssvf4heatdiffusion:badOption pdelssvf4heatdiffusion (D1, D2, struct ("Str", "Bili"))
-%!error id=pdelssvf4heatdiffusion:dimensionMismatch pdelssvf4heatdiffusion (struct ("Input", D1.Input, "Output", D1.Output(2:end, :)), D2, struct ("BF", 1))
-%!error id=pdelssvf4heatdiffusion:badInput pdelssvf4heatdiffusion (struct ("Input", D1.Input), D2, struct ("BF", 1))
-%!error id=pdelssvf4heatdiffusion:badInput pdelssvf4heatdiffusion (D1, struct ("t", D2.t, "x", [0 0.1 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1 1.1 1.2 1.3 1.4 1.5 1.6 1.7 1.8 1.9 2 2.1]), struct ("BF", 1))
-%!error id=pdelssvf4heatdiffusion:numericalFailure pdelssvf4heatdiffusion (struct ("Input", 0 * D1.Input, "Output", D1.Output), D2, struct ("BF", 1))
+%!error id=pdelssvf4heatdiffusion:badOption
+%! pdelssvf4heatdiffusion (D1, D2, struct ("Str", "Tustin", "BF", 1))
+%!error id=pdelssvf4heatdiffusion:badOption
+%! pdelssvf4heatdiffusion (D1, D2, struct ("BF", [1 -1]))
+%!error id=pdelssvf4heatdiffusion:badOption
+%! pdelssvf4heatdiffusion (D1, D2, struct ("Str", "Bili"))
+%!error id=pdelssvf4heatdiffusion:dimensionMismatch
+%! D = D1;  D.Output(end, :) = [];
+%! pdelssvf4heatdiffusion (D, D2, struct ("BF", 1))
+%!error id=pdelssvf4heatdiffusion:badInput
+%! pdelssvf4heatdiffusion (struct ("Input", D1.Input), D2, struct ("BF", 1))
+%!error id=pdelssvf4heatdiffusion:badInput
+%! D = D2;  D.x(3) += 0.01;              # a non-uniform space grid
+%! pdelssvf4heatdiffusion (D1, D, struct ("BF", 1))
+%!error id=pdelssvf4heatdiffusion:numericalFailure
+%! D = D1;  D.Input(:) = 0;
+%! pdelssvf4heatdiffusion (D, D2, struct ("BF", 1))
 %!error id=pdelssvf4heatdiffusion:badInput pdelssvf4heatdiffusion (D1, D2)
+
+%!demo
+%! Data2.x = 0:0.02:1;  Data2.t = 0:1:900;
+%! Data1.Input = zeros (numel (Data2.t), numel (Data2.x));
+%! Data1.Input(mod (Data2.t, 300) < 150, 26) = 0.01;
+%! theta = [8.4e-5 1];
+%! Data1.Output = sim_heat (theta, Data1, Data2, zeros (size (Data2.x)));
+%! Filter.Str = "Bili";  Filter.BF = [1 1];
+%! printf ("true [%g %g], LSSVF [%g %g]\n", theta,
+%!         pdelssvf4heatdiffusion (Data1, Data2, Filter));

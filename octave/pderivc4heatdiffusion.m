@@ -86,8 +86,27 @@ endfunction
 %! assert (th, th0, 0.05 * abs (th0));
 %! assert ([Det Cet], [1 -0.8 1 0.5], 0.05);
 
-%!error id=pderivc4heatdiffusion:badInput pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)), [2 0 1])
-%!error id=pderivc4heatdiffusion:badInput pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)), [2 0 -1 0])
-%!error id=pderivc4heatdiffusion:badOption pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)), [2 0 30 0])
-%!error id=pderivc4heatdiffusion:dimensionMismatch pderivc4heatdiffusion (D1, D2, [0 0], [1 0 0 0])
-%!error id=pderivc4heatdiffusion:badInput pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)))
+%!error id=pderivc4heatdiffusion:badInput
+%! pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)), [2 0 1])
+%!error id=pderivc4heatdiffusion:badInput
+%! pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)), [2 0 -1 0])
+%!error id=pderivc4heatdiffusion:badOption
+%! pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)), [2 0 30 0])
+%!error id=pderivc4heatdiffusion:dimensionMismatch
+%! pderivc4heatdiffusion (D1, D2, [0 0], [1 0 0 0])
+%!error id=pderivc4heatdiffusion:badInput
+%! pderivc4heatdiffusion (D1, D2, zeros (size (D2.x)))
+
+%!demo
+%! Data2.x = 0:0.02:1;  Data2.t = 0:1:900;
+%! Data1.Input = zeros (numel (Data2.t), numel (Data2.x));
+%! Data1.Input(mod (Data2.t, 300) < 150, 26) = 0.01;
+%! theta = [8.4e-5 1];  IC = zeros (size (Data2.x));
+%! ydet = sim_heat (theta, Data1, Data2, IC);
+%! e = local_filter3 (1, [1 -1.2 0.4]' * [1 -0.3], randn (size (ydet)));
+%! Data1.Output = ydet + std (ydet(:)) / sqrt (10) * e / std (e(:));
+%! [th, Cet, Det, Ces, Des, ni] = ...
+%!   pderivc4heatdiffusion (Data1, Data2, IC, [2 0 1 0]);
+%! printf ("true [%g %g], RIVC [%g %g] in %d iterations\n", theta, th, ni);
+%! printf ("Det = [%s] (true [1 -1.2 0.4]), Des = [%s] (true [1 -0.3])\n",
+%!         num2str (Det, 3), num2str (Des, 3));

@@ -83,8 +83,25 @@ endfunction
 %! D = D1;  D.Output = ydet + 0.01 * std (ydet(:)) * randn (size (ydet));
 %! pdesrivc4heatdiffusion (D, D2, zeros (size (D2.x)), 1e-15, 1);
 
-%!error id=pdesrivc4heatdiffusion:dimensionMismatch pdesrivc4heatdiffusion (D1, D2, [0 0])
-%!error id=pdesrivc4heatdiffusion:badOption pdesrivc4heatdiffusion (D1, D2, zeros (size (D2.x)), -1)
-%!error id=pdesrivc4heatdiffusion:badOption pdesrivc4heatdiffusion (D1, D2, zeros (size (D2.x)), 1e-6, 0)
-%!error id=pdesrivc4heatdiffusion:badInput pdesrivc4heatdiffusion (D1, struct ("t", D2.t), zeros (size (D2.x)))
+%!error id=pdesrivc4heatdiffusion:dimensionMismatch
+%! pdesrivc4heatdiffusion (D1, D2, [0 0])
+%!error id=pdesrivc4heatdiffusion:badOption
+%! pdesrivc4heatdiffusion (D1, D2, zeros (size (D2.x)), -1)
+%!error id=pdesrivc4heatdiffusion:badOption
+%! pdesrivc4heatdiffusion (D1, D2, zeros (size (D2.x)), 1e-6, 0)
+%!error id=pdesrivc4heatdiffusion:badInput
+%! pdesrivc4heatdiffusion (D1, struct ("t", D2.t), zeros (size (D2.x)))
 %!error id=pdesrivc4heatdiffusion:badInput pdesrivc4heatdiffusion (D1, D2)
+
+%!demo
+%! Data2.x = 0:0.02:1;  Data2.t = 0:1:900;
+%! Data1.Input = zeros (numel (Data2.t), numel (Data2.x));
+%! Data1.Input(mod (Data2.t, 300) < 150, 26) = 0.01;
+%! theta = [8.4e-5 1];  IC = zeros (size (Data2.x));
+%! ydet = sim_heat (theta, Data1, Data2, IC);
+%! Data1.Output = ydet + std (ydet(:)) / sqrt (10) * randn (size (ydet));
+%! [th, ni] = pdesrivc4heatdiffusion (Data1, Data2, IC);
+%! printf ("true [%g %g], SRIVC [%g %g] in %d iterations\n", theta, th, ni);
+%! y = sim_heat (th, Data1, Data2, IC);
+%! plot (Data2.t, Data1.Output(:, 26), ".", Data2.t, y(:, 26), "r");
+%! legend ("noisy temperature at x = 0.5", "SRIVC model output");

@@ -104,14 +104,20 @@ endfunction
 %! y = sim_heat ([0 2], D1, D2, zeros (1, 5));
 %! assert (y(:, 3), D2.t(:).^2, 1e-12);
 
-%!error id=sim_heat:badInput sim_heat ([1 2 3], struct ("Input", 0), struct ("t", [0 1], "x", [0 1 2]), [0 0 0])
-%!error id=sim_heat:badInput sim_heat ([-1 1], struct ("Input", zeros (2, 3)), struct ("t", [0 1], "x", [0 1 2]), [0 0 0])
-%!error id=sim_heat:badInput sim_heat ([1 1], struct ("Input", zeros (2, 3)), struct ("t", [1 0], "x", [0 1 2]), [0 0 0])
-%!error id=sim_heat:badInput sim_heat ([1 1], struct ("Input", zeros (2, 3)), struct ("t", [0 1]), [0 0 0])
-%!error id=sim_heat:badInput sim_heat ([1 1], struct ("Input", [0 NaN 0; 0 0 0]), struct ("t", [0 1], "x", [0 1 2]), [0 0 0])
-%!error id=sim_heat:dimensionMismatch sim_heat ([1 1], struct ("Input", zeros (3, 3)), struct ("t", [0 1], "x", [0 1 2]), [0 0 0])
-%!error id=sim_heat:dimensionMismatch sim_heat ([1 1], struct ("Input", zeros (2, 3)), struct ("t", [0 1], "x", [0 1 2]), [0 0])
-%!error id=sim_heat:badInput sim_heat ([1 1], struct ("Input", zeros (2, 3)))
+%!shared g, z
+%! g = struct ("t", [0 1], "x", [0 1 2]);
+%! z = struct ("Input", zeros (2, 3));
+%!error id=sim_heat:badInput sim_heat ([1 2 3], z, g, [0 0 0])
+%!error id=sim_heat:badInput sim_heat ([-1 1], z, g, [0 0 0])
+%!error id=sim_heat:badInput
+%! sim_heat ([1 1], z, struct ("t", [1 0], "x", [0 1 2]), [0 0 0])
+%!error id=sim_heat:badInput sim_heat ([1 1], z, struct ("t", [0 1]), [0 0 0])
+%!error id=sim_heat:badInput
+%! sim_heat ([1 1], struct ("Input", [0 NaN 0; 0 0 0]), g, [0 0 0])
+%!error id=sim_heat:dimensionMismatch
+%! sim_heat ([1 1], struct ("Input", zeros (3, 3)), g, [0 0 0])
+%!error id=sim_heat:dimensionMismatch sim_heat ([1 1], z, g, [0 0])
+%!error id=sim_heat:badInput sim_heat ([1 1], z)
 
 %!demo
 %! Data2.x = 0:0.02:1;  Data2.t = 0:1:600;
