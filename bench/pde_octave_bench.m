@@ -40,8 +40,8 @@ function T = pde_octave_bench ()
     ydet = sim_heat ([8.418e-5 1], D1, D2, ic);
     randn ("seed", 2);
     y = ydet + std (ydet(:)) / sqrt (10) * randn (size (ydet));
-    opts = struct ("ic", ic, "tol", 1e-300, "maxiter", K);
-    core = @() pde_mex ("pdesrivc4heatdiffusion", t, x, y, D1.Input, opts);
+    opts = struct ("t", t, "x", x, "ic", ic, "tol", 1e-300, "maxiter", K);
+    core = @() pde_mex ("pdesrivc4heatdiffusion", y, D1.Input, opts);
     plain = @() pde_plain_octave (t, x, y, D1.Input, ic, K);
     tc = zeros (1, 3);  tp = zeros (1, 3);
     for rep = 1:3

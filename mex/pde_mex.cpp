@@ -2,19 +2,22 @@
 // Copyright (C) the ctid authors
 // MEX gateway of the heat-equation routines (core/include/ctid/offline/
 // pde_heat.hpp). The first argument names the public function and chooses
-// the routine:
+// the routine; the data arrays come positionally, the rest in one options
+// struct:
 //
-//   y  = pde_mex ("sim_heat", theta, t, x, u, ic)
-//   yf = pde_mex ("local_filter3", num, den, x)
-//   th = pde_mex ("pdelssvf4heatdiffusion", t, x, y, u, options)
-//   [th, ni, conv] = pde_mex ("pdesrivc4heatdiffusion", t, x, y, u, options)
-//   [th, ni, conv, ct, dt, cs, ds] = pde_mex ("pderivc4heatdiffusion", t, x,
-//                                             y, u, options)
+//   y  = pde_mex ("sim_heat", u, options)          theta, t, x, ic
+//   yf = pde_mex ("local_filter3", x, options)     num, den
+//   th = pde_mex ("pdelssvf4heatdiffusion", y, u, options)
+//                                                  t, x, lambda[, rule]
+//   [th, ni, conv] = pde_mex ("pdesrivc4heatdiffusion", y, u, options)
+//                                                  t, x, ic[, tol, maxiter]
+//   [th, ni, conv, ct, dt, cs, ds] = pde_mex ("pderivc4heatdiffusion", y, u,
+//                                             options)   the same and nn
 //
-// theta = [a b]; t, x vectors; y, u numel(t)-by-numel(x). options: for
-// LSSVF, rule ("bili" or "euler") and lambda = [lambda_t lambda_x]; for
-// SRIVC and RIVC, ic (numel(x) values), tol, maxiter, and for RIVC nn =
-// [ndt nct nds ncs]. th is 2-by-1; the noise polynomials are rows.
+// theta = [a b]; t, x vectors (time and space grids); y, u
+// numel(t)-by-numel(x); ic numel(x) values; lambda = [lambda_t lambda_x];
+// rule "bili" (default) or "euler"; nn = [ndt nct nds ncs]. th is 2-by-1;
+// the noise polynomials are rows.
 #include "ctid/offline/pde_heat.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
@@ -22,11 +25,15 @@
 namespace {
 
 using ctid::mex::Gateway;
+using ctid::mex::OptionsReader;
 
-Eigen::VectorXd vec(const Gateway& g, const mxArray* a, const char* what) {
-  g.require_real_double(a, what);
-  if (mxGetM(a) > 1 && mxGetN(a) > 1) g.fail("badInput", std::string(what) + " must be a vector");
-  const Eigen::Map<const Eigen::MatrixXd> m = g.eigen_matrix(a, what);
+// A required vector option (a row or a column).
+Eigen::VectorXd vector_option(const Gateway& g, OptionsReader& opt,
+                              const char* name) {
+  const Eigen::MatrixXd m = opt.required_matrix(name);
+  if (m.rows() > 1 && m.cols() > 1) {
+    g.fail("badOption", std::string("option '") + name + "' must be a vector");
+  }
   return Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
 }
 
@@ -39,41 +46,50 @@ mxArray* row_out(const Eigen::VectorXd& v) {
 void pde_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
   const std::string& f = g.name();
-  const auto nargs = [&](int n) {
-    if (nrhs != n) {
-      g.fail("badInput", "the gateway takes " + std::to_string(n) +
+  const auto counts = [&](int nin, int nout) {
+    if (nrhs != nin) {
+      g.fail("badInput", "the gateway takes " + std::to_string(nin) +
                              " arguments, got " + std::to_string(nrhs));
+    }
+    if (nlhs > nout) {
+      g.fail("badInput", "at most " + std::to_string(nout) + " outputs");
     }
   };
   if (f == "sim_heat") {
-    nargs(6);
-    const Eigen::VectorXd theta = vec(g, prhs[1], "theta");
-    if (theta.size() != 2) g.fail("badInput", "theta must be [a b]");
-    const Eigen::VectorXd t = vec(g, prhs[2], "t"), x = vec(g, prhs[3], "x");
-    const Eigen::MatrixXd u = g.eigen_matrix(prhs[4], "the input field");
-    const Eigen::VectorXd ic = vec(g, prhs[5], "the initial condition");
+    counts(3, 1);
+    const Eigen::MatrixXd u = g.eigen_matrix(prhs[1], "the input field");
+    OptionsReader opt(g, prhs[2]);
+    const Eigen::MatrixXd theta = opt.required_matrix("theta", 1, 2);
+    const Eigen::VectorXd t = vector_option(g, opt, "t");
+    const Eigen::VectorXd x = vector_option(g, opt, "x");
+    const Eigen::VectorXd ic = vector_option(g, opt, "ic");
+    opt.finish();
     Eigen::MatrixXd y;
-    g.check(ctid::simulate_heat(theta[0], theta[1], t, x, u, ic, &y));
+    g.check(ctid::simulate_heat(theta(0, 0), theta(0, 1), t, x, u, ic, &y));
     plhs[0] = ctid::mex::to_output(y);
     return;
   }
   if (f == "local_filter3") {
-    nargs(4);
-    const Eigen::MatrixXd num = g.eigen_matrix(prhs[1], "the numerator");
-    const Eigen::MatrixXd den = g.eigen_matrix(prhs[2], "the denominator");
-    const Eigen::MatrixXd x = g.eigen_matrix(prhs[3], "the data");
+    counts(3, 1);
+    const Eigen::MatrixXd x = g.eigen_matrix(prhs[1], "the data");
+    OptionsReader opt(g, prhs[2]);
+    const Eigen::MatrixXd num = opt.required_matrix("num");
+    const Eigen::MatrixXd den = opt.required_matrix("den");
+    opt.finish();
     Eigen::MatrixXd y;
     g.check(ctid::filter_2d(num, den, x, &y));
     plhs[0] = ctid::mex::to_output(y);
     return;
   }
-  nargs(6);
-  const Eigen::VectorXd t = vec(g, prhs[1], "Data2.t");
-  const Eigen::VectorXd x = vec(g, prhs[2], "Data2.x");
-  const Eigen::MatrixXd y = g.eigen_matrix(prhs[3], "Data1.Output");
-  const Eigen::MatrixXd u = g.eigen_matrix(prhs[4], "Data1.Input");
-  ctid::mex::OptionsReader opt(g, prhs[5]);
-  if (f == "pdelssvf4heatdiffusion") {
+  const bool lssvf = f == "pdelssvf4heatdiffusion";
+  const bool refined = f == "pderivc4heatdiffusion";
+  counts(4, lssvf ? 1 : (refined ? 7 : 3));
+  const Eigen::MatrixXd y = g.eigen_matrix(prhs[1], "Data1.Output");
+  const Eigen::MatrixXd u = g.eigen_matrix(prhs[2], "Data1.Input");
+  OptionsReader opt(g, prhs[3]);
+  const Eigen::VectorXd t = vector_option(g, opt, "t");
+  const Eigen::VectorXd x = vector_option(g, opt, "x");
+  if (lssvf) {
     const ctid::HeatRule rule = opt.choice<ctid::HeatRule>(
         "rule", {{"bili", ctid::HeatRule::kBilinear},
                  {"euler", ctid::HeatRule::kEuler}},
@@ -86,15 +102,13 @@ void pde_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     plhs[0] = ctid::mex::to_output(theta);
     return;
   }
-  const bool refined = f == "pderivc4heatdiffusion";
-  const Eigen::MatrixXd icm = opt.required_matrix("ic", 1, x.size());
-  const Eigen::VectorXd ic = icm.row(0).transpose();
+  const Eigen::VectorXd ic = vector_option(g, opt, "ic");
   ctid::HeatIvOptions iv;
   iv.tol = opt.scalar("tol", iv.tol);
   iv.maxiter = opt.integer("maxiter", iv.maxiter);
   if (refined) {
     const std::vector<int> nn = opt.integer_vector("nn");
-    if (nn.size() != 4) g.fail("badInput", "nn must be [ndet ncet ndes nces]");
+    if (nn.size() != 4) g.fail("badOption", "nn must be [ndet ncet ndes nces]");
     for (int i = 0; i < 4; ++i) iv.orders[i] = nn[i];
   }
   opt.finish();

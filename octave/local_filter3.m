@@ -49,8 +49,8 @@ function [y, varargout] = local_filter3 (varargin)
     error ("local_filter3:badInput",
            "local_filter3: the leading coefficient A(1,1) must be nonzero");
   endif
-  y = pde_mex ("local_filter3", full (double (B)), full (double (A)),
-               full (double (x)));
+  y = pde_mex ("local_filter3", full (double (x)),
+               struct ("num", full (double (B)), "den", full (double (A))));
 endfunction
 
 %!test

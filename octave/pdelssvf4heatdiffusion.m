@@ -81,7 +81,8 @@ function [theta, varargout] = pdelssvf4heatdiffusion (varargin)
   if (isscalar (bf))
     bf = [bf bf];
   endif
-  theta = pde_mex (fname, t, x, y, u, struct ("rule", rule, "lambda", bf));
+  theta = pde_mex (fname, y, u, struct ("t", t, "x", x, "rule", rule,
+                                       "lambda", bf));
 endfunction
 
 %!shared D1, D2, th0

@@ -56,7 +56,8 @@ function [y, varargout] = sim_heat (varargin)
     error ("sim_heat:dimensionMismatch",
            "sim_heat: IC must have numel(Data2.x) = %d values", numel (x));
   endif
-  y = pde_mex ("sim_heat", double (theta(:).'), t, x, u, double (IC(:).'));
+  y = pde_mex ("sim_heat", u, struct ("theta", double (theta(:).'), "t", t,
+                                     "x", x, "ic", double (IC(:).')));
 endfunction
 
 %!test

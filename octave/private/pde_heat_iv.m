@@ -36,14 +36,14 @@ function [theta, ni, noise] = pde_heat_iv (fname, args, nn)
              fname);
     endif
   endif
-  opts = struct ("ic", double (IC(:).'), "tol", double (tol),
+  opts = struct ("t", t, "x", x, "ic", double (IC(:).'), "tol", double (tol),
                  "maxiter", double (maxiter));
   if (isempty (nn))
-    [theta, ni, conv] = pde_mex (fname, t, x, y, u, opts);
+    [theta, ni, conv] = pde_mex (fname, y, u, opts);
     noise = {};
   else
     opts.nn = double (nn(:).');
-    [theta, ni, conv, ct, dt, cs, ds] = pde_mex (fname, t, x, y, u, opts);
+    [theta, ni, conv, ct, dt, cs, ds] = pde_mex (fname, y, u, opts);
     noise = {ct, dt, cs, ds};
   endif
   if (! conv)

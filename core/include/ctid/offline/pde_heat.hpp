@@ -391,6 +391,10 @@ inline Status simulate_heat(double a, double b, const Eigen::VectorXd& t,
   y->setZero(nt, nx);
   y->middleCols(1, n) = z.transpose();
   y->row(0) = ic.transpose();
+  if (!y->allFinite()) {
+    return numerical_failure("the simulated field is not finite (theta or "
+                             "the source too large)");
+  }
   return Status::Ok();
 }
 
