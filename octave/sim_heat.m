@@ -18,7 +18,8 @@
 ## gain).  @var{Data2}.t is the time grid (Nt instants) and @var{Data2}.x
 ## the space grid (Nx nodes, boundaries included), both strictly increasing;
 ## the steps may vary.  @var{Data1}.Input is the source u, Nt-by-Nx (one row
-## per instant, one column per node).  @var{IC} holds the Nx values of the
+## per instant, one column per node; the boundary columns do not enter, the
+boundary values being fixed).  @var{IC} holds the Nx values of the
 ## initial field.  @var{y} is Nt-by-Nx: its first row is @var{IC}, its
 ## boundary columns are zero afterwards.
 ##

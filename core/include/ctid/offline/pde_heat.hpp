@@ -520,15 +520,6 @@ inline Status pooled_arma(const Eigen::MatrixXd& v, int na, int nc,
   return Status::Ok();
 }
 
-// Filters the columns of m (one record each) by num/den along the rows.
-inline Eigen::MatrixXd filter_rows_dim(const Eigen::VectorXd& num,
-                                       const Eigen::VectorXd& den,
-                                       const Eigen::MatrixXd& m) {
-  Eigen::MatrixXd out;
-  filter_2d(num, den, m, &out);
-  return out;
-}
-
 inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
                       const Eigen::MatrixXd& y, const Eigen::MatrixXd& u,
                       const Eigen::VectorXd& ic, const HeatIvOptions& opt,
@@ -559,9 +550,9 @@ inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
   const Laplacian l = make_laplacian(x);
   const Eigen::MatrixXd yi = interior(y), ui = interior(u);
   const Differenced d = difference(l, h, yi, ui, true);
-  // Initial estimate: LSSVF with cut-offs at a tenth of the grids' Nyquist
-  // bands scaled to the record (one decade above the slowest resolvable
-  // variation), then the SRIVC iterations.
+  // Initial estimate: LSSVF with the cut-offs 20/span of the record in time
+  // and in space (about three cycles over the record: above its slowest
+  // variations, far below the grids' Nyquist bands).
   Eigen::Vector2d theta;
   const double span_t = t[nt - 1] - t[0], span_x = x[x.size() - 1] - x[0];
   s = heat_lssvf(t, x, y, u, HeatRule::kBilinear, 20.0 / span_t,
@@ -572,7 +563,6 @@ inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
         "the initial least-squares estimate of a is not positive");
   }
   HeatIvResult r;
-  const bool with_noise = refined;
   for (int it = 1; it <= opt.maxiter; ++it) {
     const double a = theta[0];
     Eigen::MatrixXd xs;
@@ -583,14 +573,15 @@ inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
     Eigen::MatrixXd fb = model_filter(l, a, h, d.B);
     Eigen::MatrixXd fc = model_filter(l, a, h, d.C);
     Eigen::MatrixXd fz = model_filter(l, a, h, apply_ml(l, xi, true));
-    if (with_noise) {
+    if (refined) {
       // residual field of the auxiliary model: time records are the rows
       // of the (space-by-time) interior arrays.
       const Eigen::MatrixXd v = (yi - xi).transpose();  // time-by-space
       Eigen::VectorXd dtp, ctp, dsp, csp;
       s = pooled_arma(v, opt.orders[0], opt.orders[1], &dtp, &ctp);
       if (!s.ok()) return s;
-      const Eigen::MatrixXd w = filter_rows_dim(dtp, ctp, v);  // white in time
+      Eigen::MatrixXd w;  // white in time
+      if (!(s = filter_2d(dtp, ctp, v, &w)).ok()) return s;
       s = pooled_arma(w.transpose(), opt.orders[2], opt.orders[3], &dsp, &csp);
       if (!s.ok()) return s;
       r.dt = dtp;
