@@ -19,7 +19,7 @@
 ## the space grid (Nx nodes, boundaries included), both strictly increasing;
 ## the steps may vary.  @var{Data1}.Input is the source u, Nt-by-Nx (one row
 ## per instant, one column per node; the boundary columns do not enter, the
-boundary values being fixed).  @var{IC} holds the Nx values of the
+## boundary values being fixed).  @var{IC} holds the Nx values of the
 ## initial field.  @var{y} is Nt-by-Nx: its first row is @var{IC}, its
 ## boundary columns are zero afterwards.
 ##
