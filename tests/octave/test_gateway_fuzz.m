@@ -220,6 +220,27 @@ function test_gateway_fuzz ()
      {"Ts", "dims_a", "dims_b"}}
   };
 
+  ## The heat equation (pde_mex): a 1 m bar on 11 nodes, 40 instants, a
+  ## source at the middle node, estimated from its own noise-free field.
+  th = struct ("t", 0:39, "x", 0:0.1:1);
+  uh = zeros (40, 11);
+  uh(:, 6) = 0.01 * (mod (0:39, 10) < 5);
+  hsim = struct ("theta", [1e-3 1], "t", th.t, "x", th.x, "ic", zeros (1, 11));
+  yh = pde_mex ("sim_heat", uh, hsim);
+  hls = struct ("t", th.t, "x", th.x, "rule", "euler", "lambda", [0.1 5]);
+  hiv = struct ("t", th.t, "x", th.x, "ic", zeros (1, 11), "tol", 1e-6,
+                "maxiter", 5);
+  hriv = hiv;
+  hriv.nn = [1 0 0 0];
+  calls(end+1:end+5) = {
+    {"pde_mex", {"sim_heat", uh, hsim}, {"theta", "t", "x", "ic"}}
+    {"pde_mex", {"local_filter3", uh, struct("num", [1 2], "den", [1; -0.5])}, ...
+     {"num", "den"}}
+    {"pde_mex", {"pdelssvf4heatdiffusion", yh, uh, hls}, {"t", "x", "lambda"}}
+    {"pde_mex", {"pdesrivc4heatdiffusion", yh, uh, hiv}, {"t", "x", "ic"}}
+    {"pde_mex", {"pderivc4heatdiffusion", yh, uh, hriv}, {"t", "x", "ic", "nn"}}
+  };
+
   covered = cellfun (@(c) c{1}, calls, "UniformOutput", false);
   missing = setdiff (gateways, covered);
   if (! isempty (missing))
