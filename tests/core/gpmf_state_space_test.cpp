@@ -203,4 +203,36 @@ TEST(GpmfStateSpace, ReportsBadInput) {
             ctid::ErrorCode::kNumericalFailure);
 }
 
+// The subspace method on the same noise-free record: the frequency
+// response (state basis free) is the true one up to the filtering error,
+// and the order is found at the gap of the singular values.
+TEST(GpmfStateSpace, SubspaceRecoversFrequencyResponse) {
+  const CanonicalSystem system;
+  const double h = 0.01;
+  const Eigen::MatrixXd u = binary_inputs(6000);
+  const Eigen::MatrixXd y = simulate_zoh(system, u, h);
+  ctid::SubspaceGpmfSettings settings;
+  settings.block_rows = 3;
+  settings.filter_order = 3;
+  settings.lambda = 3;
+  ctid::SubspaceGpmfEstimate<double> estimate;
+  const ctid::Status status = ctid::sid_gpmf(view(y, u, h), settings, &estimate);
+  ASSERT_TRUE(status.ok()) << status.message();
+  ASSERT_EQ(estimate.model.A.rows(), 3);
+  for (double w : {0.1, 1.0, 10.0}) {
+    const CMatrix H0 = frequency_response(system.A, system.B, system.C, w);
+    const CMatrix H = frequency_response(estimate.model.A, estimate.model.B,
+                                         estimate.model.C, w) +
+                      estimate.model.D.cast<Complex>();
+    EXPECT_LT((H - H0).norm() / H0.norm(), 1e-3) << "w = " << w;
+  }
+  settings.order = 5;  // > (i - 1) p = 4
+  EXPECT_EQ(ctid::sid_gpmf(view(y, u, h), settings, &estimate).code(),
+            ctid::ErrorCode::kBadInput);
+  settings.order = 3;
+  settings.block_rows = 1;
+  EXPECT_EQ(ctid::sid_gpmf(view(y, u, h), settings, &estimate).code(),
+            ctid::ErrorCode::kBadInput);
+}
+
 }  // namespace

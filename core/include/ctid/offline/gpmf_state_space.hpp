@@ -28,6 +28,19 @@
 // by the triangular change of coordinates beta = T(alpha) b (see
 // coefficient_map below).
 //
+// sid_gpmf is the GPMF-based subspace method (sidgpmf; Bastogne, Garnier,
+// Sibille, Int. J. Control 74(2), 2001): the GPMF of order j of the time
+// derivatives p^k y, p^k u, k = 0 .. i-1, obey the data equation of the
+// discrete 4SID methods with derivatives in place of shifts,
+//
+//   Y_i = Gamma_i (F x) + H_i U_i,   Gamma_i = [C; C A; ..; C A^(i-1)],
+//
+// H_i the block Toeplitz matrix of D, C B, C A B, ..; the MOESP projection
+// of Y_i onto the complement of U_i (LQ factorisation) spans Gamma_i, whose
+// shift invariance gives A and whose first block gives C; B and D then
+// solve a least-squares fit of the measured outputs by the exact
+// simulation of (A, I, C) for each input.
+//
 // As in the SVF estimators (svf_regressor.hpp), the inputs are filtered
 // with the data's intersample rule and the outputs, never piecewise
 // constant, with the trapezoidal rule.
@@ -35,6 +48,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -402,6 +416,164 @@ Status ss_iv_gpmf(const MultiRecordView<S>& record,
   return gpmf_detail::canonical_model(settings.observability_indices,
                                       static_cast<int>(record.num_inputs),
                                       theta, estimate);
+}
+
+struct SubspaceGpmfSettings {
+  int block_rows = 3;    // i: derivatives 0 .. i-1
+  int filter_order = 3;  // j: the Poisson filter (lambda/(p+lambda))^(j+1)
+  double lambda = 1;
+  int order = 0;  // n; 0: chosen at the largest gap of the singular values
+  Eigen::Index first_sample = 0;
+};
+
+template <typename S>
+struct SubspaceGpmfEstimate {
+  StateSpaceEstimate<S> model;
+  Vector<S> singular_values;  // of the projected GPMF data, i p of them
+};
+
+// GPMF 4SID (sidgpmf); see the header comment.
+template <typename S>
+Status sid_gpmf(const MultiRecordView<S>& record,
+                const SubspaceGpmfSettings& settings,
+                SubspaceGpmfEstimate<S>* estimate) {
+  const int p = static_cast<int>(record.num_outputs);
+  const int m = static_cast<int>(record.num_inputs);
+  const int i = settings.block_rows;
+  const int j = settings.filter_order;
+  if (i < 2 || j < i - 1 || j > 20) {
+    return bad_input("i must be >= 2 and j an integer in i-1 .. 20");
+  }
+  if (settings.order < 0 || settings.order > (i - 1) * p) {
+    return bad_input("the order n must be in 1 .. (i-1) p = " +
+                     std::to_string((i - 1) * p));
+  }
+  GpmfSettings<S> check;
+  check.observability_indices.assign(p, 1);
+  check.lambda.assign(p, static_cast<S>(settings.lambda));
+  check.first_sample = settings.first_sample;
+  Status status = gpmf_detail::validate(record, check);
+  if (!status.ok()) return status;
+  const Eigen::Index count = record.num_samples;
+  const Eigen::Index used = count - settings.first_sample;
+  const Eigen::Index rows_u = i * m, rows_y = i * p;
+  if (used < 2 * (rows_u + rows_y)) {
+    return bad_input("the data from sample n0 on have fewer than " +
+                     std::to_string(2 * (rows_u + rows_y)) +
+                     " samples, twice the rows of the GPMF data matrix");
+  }
+  // The GPMF data matrix, one column per sample: [U_i; Y_i], block k of
+  // each holding p^k F of every input or output.
+  const int order = j + 1;
+  const S lambda = static_cast<S>(settings.lambda);
+  const Vector<S> d = svf_denominator(order, lambda);
+  const S gain = svf_gain(order, lambda, true);
+  FilterDiscretization<S> y_disc, u_disc;
+  y_disc.configure(order, InterSample::kFoh);
+  y_disc.set_denominator(d);
+  u_disc.configure(order, record.u_intersample);
+  u_disc.set_denominator(d);
+  std::vector<FilterChannel<S>> y_channels(p), u_channels(m);
+  for (auto& c : y_channels) c.configure(order), c.set_rest_at_first_sample(true);
+  for (auto& c : u_channels) c.configure(order), c.set_rest_at_first_sample(true);
+  Matrix<S> data(used, rows_u + rows_y);  // transposed: samples in rows
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const S h = record.interval(k);
+    y_disc.ensure(h);
+    u_disc.ensure(h);
+    for (int q = 0; q < p; ++q) y_channels[q].step(y_disc, gain, record.y_at(k, q));
+    for (int l = 0; l < m; ++l) u_channels[l].step(u_disc, gain, record.u_at(k, l));
+    if (k < settings.first_sample) continue;
+    const Eigen::Index row = k - settings.first_sample;
+    for (int r = 0; r < i; ++r) {
+      for (int l = 0; l < m; ++l) data(row, r * m + l) = u_channels[l].outputs()(r);
+      for (int q = 0; q < p; ++q) {
+        data(row, rows_u + r * p + q) = y_channels[q].outputs()(r);
+      }
+    }
+  }
+  // LQ of [U; Y] as the QR of its transpose: R22' is Y projected onto the
+  // orthogonal complement of the rows of U.
+  Eigen::HouseholderQR<Matrix<S>> qr(data);
+  const Matrix<S> R = qr.matrixQR()
+                          .topRows(rows_u + rows_y)
+                          .template triangularView<Eigen::Upper>();
+  const Matrix<S> L22 = R.bottomRightCorner(rows_y, rows_y).transpose();
+  Eigen::JacobiSVD<Matrix<S>> svd(L22, Eigen::ComputeFullU);
+  estimate->singular_values = svd.singularValues();
+  const Vector<S>& sv = svd.singularValues();
+  int n = settings.order;
+  if (n == 0) {
+    S best = -1;
+    const S floor = sv(0) * std::numeric_limits<S>::epsilon();
+    for (int r = 1; r <= (i - 1) * p; ++r) {
+      const S ratio = sv(r - 1) / std::max(sv(r), floor);
+      if (ratio > best) best = ratio, n = r;
+    }
+  }
+  if (!(sv(n - 1) > sv(0) * 1e3 * std::numeric_limits<S>::epsilon())) {
+    return numerical_failure("the GPMF data have rank below the order n = " +
+                             std::to_string(n) +
+                             " (input not exciting enough, or n too large)");
+  }
+  const Matrix<S> gamma =
+      svd.matrixU().leftCols(n) * sv.head(n).cwiseSqrt().asDiagonal();
+  Matrix<S> A = gamma.topRows(rows_y - p)
+                    .completeOrthogonalDecomposition()
+                    .solve(gamma.bottomRows(rows_y - p));
+  const Matrix<S> C = gamma.topRows(p);
+  // B and D: y(t_k) = sum_(r,l) B(r,l) C x_(r,l)(t_k) + D u(t_k), with
+  // x_(r,l)' = A x_(r,l) + e_r u_l from rest, one least-squares fit of all
+  // outputs.
+  const Eigen::Index columns = n * m + p * m;
+  Matrix<S> phi(used * p, columns);
+  Vector<S> target(used * p);
+  for (int q = 0; q < p; ++q) {
+    for (Eigen::Index k = 0; k < used; ++k) {
+      target(q * used + k) = record.y_at(k + settings.first_sample, q);
+    }
+  }
+  for (int l = 0; l < m; ++l) {
+    MultiRecordView<S> single = record;
+    single.u = record.u + l * count;
+    single.num_inputs = 1;
+    for (int r = 0; r < n; ++r) {
+      Matrix<S> response;
+      status = gpmf_detail::simulate_state_space(
+          A, Matrix<S>(Matrix<S>::Identity(n, n).col(r)), C, single, &response);
+      if (!status.ok()) {
+        return numerical_failure("the estimated A gives a diverging response: "
+                                 "no B and D (try another n, i or lambda)");
+      }
+      for (int q = 0; q < p; ++q) {
+        phi.col(l * n + r).segment(q * used, used) =
+            response.col(q).tail(used);
+      }
+    }
+    for (int q = 0; q < p; ++q) {
+      phi.col(n * m + l * p + q).setZero();
+      for (Eigen::Index k = 0; k < used; ++k) {
+        phi(q * used + k, n * m + l * p + q) =
+            record.u_at(k + settings.first_sample, l);
+      }
+    }
+  }
+  Eigen::ColPivHouseholderQR<Matrix<S>> fit(phi);
+  if (fit.rank() < columns) {
+    return numerical_failure("the least-squares fit of B and D is singular");
+  }
+  const Vector<S> bd = fit.solve(target);
+  StateSpaceEstimate<S>& model = estimate->model;
+  model.A = A;
+  model.C = C;
+  model.B.resize(n, m);
+  model.D.resize(p, m);
+  for (int l = 0; l < m; ++l) {
+    model.B.col(l) = bd.segment(l * n, n);
+    model.D.col(l) = bd.segment(n * m + l * p, p);
+  }
+  model.theta.resize(0);
+  return Status::Ok();
 }
 
 }  // namespace ctid
