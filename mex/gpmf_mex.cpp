@@ -47,7 +47,8 @@ void gpmf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::mex::OptionsReader opt(g, prhs[4]);
   enum class Method { kLs, kIv, kSid };
   const Method method = opt.choice<Method>(
-      "method", {{"ls", Method::kLs}, {"iv", Method::kIv}, {"sid", Method::kSid}},
+      "method",
+      {{"ls", Method::kLs}, {"iv", Method::kIv}, {"sid", Method::kSid}},
       Method::kLs);
   if (!opt.has("method")) g.fail("badOption", "option 'method' is missing");
   record.u_intersample =
@@ -89,8 +90,7 @@ void gpmf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("sslsgpmf", {"sslsgpmf", "ssivgpmf", "sidgpmf"}, nrhs, prhs,
-                         [&](const Gateway& g) {
-                           gpmf_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "sslsgpmf", {"sslsgpmf", "ssivgpmf", "sidgpmf"}, nrhs, prhs,
+      [&](const Gateway& g) { gpmf_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

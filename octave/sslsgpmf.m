@@ -92,6 +92,18 @@ endfunction
 %! assert (M.A, T * A0 / T, 1e-2);
 %! assert (M.B, T * B0, 1e-2);
 
+## Indices [1 2]: a system given in that canonical form (y1' depends on
+## y1 and y2 only) is recovered parameter by parameter.
+%!test
+%! pkg load control;
+%! A1 = [-2 1 0; 0 0 1; 0.5 -2 -2];
+%! C1 = [1 0 0; 0 1 0];
+%! y = lsim (c2d (ss (A1, B0, C1, zeros (2)), Ts, "zoh"), u);
+%! M = sslsgpmf (iddata (y, u, Ts), [1 2], [3; 3]);
+%! assert (M.C, C1);
+%! assert (M.A, A1, 1e-2);
+%! assert (M.B, B0, 1e-2);
+
 ## FOH data: control's lsim of the continuous-time system interpolates the
 ## input linearly between samples.
 %!test

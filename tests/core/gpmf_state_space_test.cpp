@@ -28,8 +28,8 @@ struct CanonicalSystem {
 CMatrix frequency_response(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
                            const Eigen::MatrixXd& C, double w) {
   const Eigen::Index n = A.rows();
-  CMatrix resolvent = Complex(0, w) * CMatrix::Identity(n, n) -
-                      A.cast<Complex>();
+  CMatrix resolvent =
+      Complex(0, w) * CMatrix::Identity(n, n) - A.cast<Complex>();
   return C.cast<Complex>() * resolvent.lu().solve(B.cast<Complex>());
 }
 
@@ -46,7 +46,8 @@ Eigen::MatrixXd simulate_zoh(const CanonicalSystem& s, const Eigen::MatrixXd& u,
   Eigen::MatrixXd y(u.rows(), s.C.rows());
   for (Eigen::Index k = 0; k < u.rows(); ++k) {
     y.row(k) = (s.C * x).transpose();
-    x = E.topLeftCorner(n, n) * x + E.topRightCorner(n, m) * u.row(k).transpose();
+    x = E.topLeftCorner(n, n) * x +
+        E.topRightCorner(n, m) * u.row(k).transpose();
   }
   return y;
 }
@@ -55,7 +56,10 @@ Eigen::MatrixXd binary_inputs(int n) {
   const std::vector<double> u1 = ctid::test::binary_input(n, 50, 3);
   const std::vector<double> u2 = ctid::test::binary_input(n, 70, 5);
   Eigen::MatrixXd u(n, 2);
-  for (int k = 0; k < n; ++k) u(k, 0) = u1[k], u(k, 1) = u2[k];
+  for (int k = 0; k < n; ++k) {
+    u(k, 0) = u1[k];
+    u(k, 1) = u2[k];
+  }
   return u;
 }
 
@@ -113,8 +117,7 @@ TEST(GpmfStateSpace, RealisationMatchesInputOutputEquations) {
     }
     const CMatrix expected = P.lu().solve(Q);
     const CMatrix H = frequency_response(model.A, model.B, model.C, w);
-    EXPECT_LT((H - expected).norm() / expected.norm(), 1e-12)
-        << "w = " << w;
+    EXPECT_LT((H - expected).norm() / expected.norm(), 1e-12) << "w = " << w;
   }
 }
 
@@ -133,9 +136,11 @@ TEST(GpmfStateSpace, RecoversCanonicalSystemFromNoiseFreeData) {
            : ctid::ss_ls_gpmf(record, settings_21(), &estimate);
     ASSERT_TRUE(status.ok()) << status.message();
     EXPECT_LT((estimate.A - system.A).norm() / system.A.norm(), 1e-3)
-        << (iv ? "IV" : "LS") << "\n" << estimate.A;
+        << (iv ? "IV" : "LS") << "\n"
+        << estimate.A;
     EXPECT_LT((estimate.B - system.B).norm() / system.B.norm(), 1e-3)
-        << (iv ? "IV" : "LS") << "\n" << estimate.B;
+        << (iv ? "IV" : "LS") << "\n"
+        << estimate.B;
     EXPECT_EQ(estimate.C, system.C);
     EXPECT_TRUE(estimate.D.isZero());
   }
@@ -194,13 +199,13 @@ TEST(GpmfStateSpace, ReportsBadInput) {
             ctid::ErrorCode::kBadInput);
   Eigen::MatrixXd bad = y;
   bad(7, 1) = std::nan("");
-  EXPECT_EQ(ctid::ss_iv_gpmf(view(bad, u, 0.01), settings_21(), &estimate)
-                .code(),
-            ctid::ErrorCode::kBadInput);
+  EXPECT_EQ(
+      ctid::ss_iv_gpmf(view(bad, u, 0.01), settings_21(), &estimate).code(),
+      ctid::ErrorCode::kBadInput);
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(500, 2);
-  EXPECT_EQ(ctid::ss_ls_gpmf(view(y, zero, 0.01), settings_21(), &estimate)
-                .code(),
-            ctid::ErrorCode::kNumericalFailure);
+  EXPECT_EQ(
+      ctid::ss_ls_gpmf(view(y, zero, 0.01), settings_21(), &estimate).code(),
+      ctid::ErrorCode::kNumericalFailure);
 }
 
 // The subspace method on the same noise-free record: the frequency
@@ -216,7 +221,8 @@ TEST(GpmfStateSpace, SubspaceRecoversFrequencyResponse) {
   settings.filter_order = 3;
   settings.lambda = 3;
   ctid::SubspaceGpmfEstimate<double> estimate;
-  const ctid::Status status = ctid::sid_gpmf(view(y, u, h), settings, &estimate);
+  const ctid::Status status =
+      ctid::sid_gpmf(view(y, u, h), settings, &estimate);
   ASSERT_TRUE(status.ok()) << status.message();
   ASSERT_EQ(estimate.model.A.rows(), 3);
   for (double w : {0.1, 1.0, 10.0}) {

@@ -50,9 +50,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <vector>
-
 #include <unsupported/Eigen/MatrixFunctions>
+#include <vector>
 
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
@@ -137,8 +136,7 @@ Status validate(const MultiRecordView<S>& record,
                               std::to_string(record.num_outputs) + "), got " +
                               std::to_string(n.size()));
   }
-  if (static_cast<Eigen::Index>(settings.lambda.size()) !=
-      record.num_outputs) {
+  if (static_cast<Eigen::Index>(settings.lambda.size()) != record.num_outputs) {
     return dimension_mismatch("param must have one entry per output (" +
                               std::to_string(record.num_outputs) + "), got " +
                               std::to_string(settings.lambda.size()));
@@ -279,7 +277,8 @@ Status canonical_model(const std::vector<int>& n, int num_inputs,
   }
   Eigen::FullPivLU<Matrix<S>> lu(T);
   if (!lu.isInvertible()) {
-    return numerical_failure("the estimated model has no canonical realisation");
+    return numerical_failure(
+        "the estimated model has no canonical realisation");
   }
   model->A = A;
   model->B = lu.solve(beta);
@@ -474,19 +473,26 @@ Status sid_gpmf(const MultiRecordView<S>& record,
   u_disc.configure(order, record.u_intersample);
   u_disc.set_denominator(d);
   std::vector<FilterChannel<S>> y_channels(p), u_channels(m);
-  for (auto& c : y_channels) c.configure(order), c.set_rest_at_first_sample(true);
-  for (auto& c : u_channels) c.configure(order), c.set_rest_at_first_sample(true);
+  for (auto* channels : {&y_channels, &u_channels}) {
+    for (auto& c : *channels) {
+      c.configure(order);
+      c.set_rest_at_first_sample(true);
+    }
+  }
   Matrix<S> data(used, rows_u + rows_y);  // transposed: samples in rows
   for (Eigen::Index k = 0; k < count; ++k) {
     const S h = record.interval(k);
     y_disc.ensure(h);
     u_disc.ensure(h);
-    for (int q = 0; q < p; ++q) y_channels[q].step(y_disc, gain, record.y_at(k, q));
-    for (int l = 0; l < m; ++l) u_channels[l].step(u_disc, gain, record.u_at(k, l));
+    for (int q = 0; q < p; ++q)
+      y_channels[q].step(y_disc, gain, record.y_at(k, q));
+    for (int l = 0; l < m; ++l)
+      u_channels[l].step(u_disc, gain, record.u_at(k, l));
     if (k < settings.first_sample) continue;
     const Eigen::Index row = k - settings.first_sample;
     for (int r = 0; r < i; ++r) {
-      for (int l = 0; l < m; ++l) data(row, r * m + l) = u_channels[l].outputs()(r);
+      for (int l = 0; l < m; ++l)
+        data(row, r * m + l) = u_channels[l].outputs()(r);
       for (int q = 0; q < p; ++q) {
         data(row, rows_u + r * p + q) = y_channels[q].outputs()(r);
       }
@@ -508,13 +514,16 @@ Status sid_gpmf(const MultiRecordView<S>& record,
     const S floor = sv(0) * std::numeric_limits<S>::epsilon();
     for (int r = 1; r <= (i - 1) * p; ++r) {
       const S ratio = sv(r - 1) / std::max(sv(r), floor);
-      if (ratio > best) best = ratio, n = r;
+      if (ratio > best) {
+        best = ratio;
+        n = r;
+      }
     }
   }
   if (!(sv(n - 1) > sv(0) * 1e3 * std::numeric_limits<S>::epsilon())) {
-    return numerical_failure("the GPMF data have rank below the order n = " +
-                             std::to_string(n) +
-                             " (input not exciting enough, or n too large)");
+    return numerical_failure(
+        "the GPMF data have rank below the order n = " + std::to_string(n) +
+        " (input not exciting enough, or n too large)");
   }
   const Matrix<S> gamma =
       svd.matrixU().leftCols(n) * sv.head(n).cwiseSqrt().asDiagonal();
@@ -542,12 +551,12 @@ Status sid_gpmf(const MultiRecordView<S>& record,
       status = gpmf_detail::simulate_state_space(
           A, Matrix<S>(Matrix<S>::Identity(n, n).col(r)), C, single, &response);
       if (!status.ok()) {
-        return numerical_failure("the estimated A gives a diverging response: "
-                                 "no B and D (try another n, i or lambda)");
+        return numerical_failure(
+            "the estimated A gives a diverging response: "
+            "no B and D (try another n, i or lambda)");
       }
       for (int q = 0; q < p; ++q) {
-        phi.col(l * n + r).segment(q * used, used) =
-            response.col(q).tail(used);
+        phi.col(l * n + r).segment(q * used, used) = response.col(q).tail(used);
       }
     }
     for (int q = 0; q < p; ++q) {
