@@ -48,7 +48,7 @@
 ## @seealso{sslsgpmf, ssivgpmf, idss}
 ## @end deftypefn
 
-function [M, sv] = sidgpmf (varargin)
+function [M, sv, varargout] = sidgpmf (varargin)
   contsid_nargchk ("sidgpmf", nargin, nargout, [4 6], 2);
   [M, sv] = contsid_gpmf ("sidgpmf", varargin);
 endfunction

@@ -34,7 +34,7 @@
 ## @seealso{sslsgpmf, idss, comparec}
 ## @end deftypefn
 
-function M = ssivgpmf (varargin)
+function [M, varargout] = ssivgpmf (varargin)
   contsid_nargchk ("ssivgpmf", nargin, nargout, [3 4], 1);
   M = contsid_gpmf ("ssivgpmf", varargin);
 endfunction

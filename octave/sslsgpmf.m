@@ -43,7 +43,7 @@
 ## @seealso{ssivgpmf, idss, comparec}
 ## @end deftypefn
 
-function M = sslsgpmf (varargin)
+function [M, varargout] = sslsgpmf (varargin)
   contsid_nargchk ("sslsgpmf", nargin, nargout, [3 4], 1);
   M = contsid_gpmf ("sslsgpmf", varargin);
 endfunction
