@@ -22,6 +22,8 @@ function tpl = fuzz_public_templates ()
   y = filter ([0 0.05 0.04], [1 -1.6 0.7], u) + 0.01 * sin (k * 2.1);
   r = u;
   data = iddata (y, u, Ts);
+  data2 = iddata ([y, filter([0 0.04], [1 -0.8], circshift (u, 17))],
+                  [u, circshift(u, 17)], Ts);
   dcl = iddata (u, r, Ts);
   yn = y;
   yn(50:55) = NaN;                  # a gap of missing samples
@@ -122,12 +124,15 @@ function tpl = fuzz_public_templates ()
   tpl.rsrivc = {{data, [1 2 0], "lambda_svf", 3}, {gap, [1 2 0], 3}};
   tpl.selcstruc = {{[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1]}, ...
                    {[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1], "c2sort", "RT2"}};
+  tpl.sidgpmf = {{data2, 3, 3, 3}, {data2, 3, 3, 3, 2, 10}};
   tpl.shadedplot = {{(1:n)' * Ts, y, y + 0.1}};
   tpl.simc = {{M, data}, {M, u, Ts}, {thm, [2 1 0], data}};
   tpl.simc_hw = {{hw, data}};
   tpl.sineresp = {{M, 1, (0:n-1)' * Ts}};
   tpl.spafdr = {{data}, {data, 20, w}};
   tpl.simulLPVCT = {{u, alpv, depa, 2, depb, Ts}};
+  tpl.ssivgpmf = {{data2, [1 1], [3; 3]}, {data2, [1 1], [2; 4], 10}};
+  tpl.sslsgpmf = {{data2, [1 1], [3; 3]}, {data, 2, 3}};
   tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, ...
                {data, [1 2 0], "lambda", 3}, ...
                {data, idpoly(1, 4, 1, 1, [1 2 4], "Ts", 0)}};

@@ -241,6 +241,23 @@ function test_gateway_fuzz ()
     {"pde_mex", {"pderivc4heatdiffusion", yh, uh, hriv}, {"t", "x", "ic", "nn"}}
   };
 
+  ## The GPMF state-space gateway (gpmf_mex): 2 outputs, 2 inputs, 300
+  ## samples of a stable system.
+  kg = (1:300)';
+  ug = [sign(sin(0.37 * kg) + 0.1), sign(cos(0.23 * kg) + 0.1)];
+  yg = [filter([0 0.05], [1 -0.9], ug(:,1) + 0.5 * ug(:,2)), ...
+        filter([0 0.04], [1 -0.8], ug(:,2))];
+  gls = struct ("method", "ls", "nni", [1 1], "lambda", [3; 3], "n0", 1,
+                "intersample", "zoh");
+  giv = setfield (gls, "method", "iv");
+  gsid = struct ("method", "sid", "i", 3, "j", 3, "lambda", 3, "n", 2);
+  calls(end+1:end+3) = {
+    {"gpmf_mex", {"sslsgpmf", yg, ug, 0.1, gls}, {"method", "nni", "lambda"}}
+    {"gpmf_mex", {"ssivgpmf", yg, ug, 0.1, giv}, {"method", "nni", "lambda"}}
+    {"gpmf_mex", {"sidgpmf", yg, ug, 0.1, gsid}, ...
+     {"method", "i", "j", "lambda"}}
+  };
+
   covered = cellfun (@(c) c{1}, calls, "UniformOutput", false);
   missing = setdiff (gateways, covered);
   if (! isempty (missing))

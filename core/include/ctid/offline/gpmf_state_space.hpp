@@ -1,0 +1,588 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
+// Multivariable continuous-time state-space identification by generalised
+// Poisson moment functionals (GPMF): least squares (sslsgpmf) and
+// instrumental variables with an auxiliary model (ssivgpmf), after Garnier,
+// Sibille and Richard, "Continuous-time canonical state-space model
+// identification via Poisson moment functionals", CDC 1995.
+//
+// Model: the observable canonical form of Guidorzi built from the
+// observability indices n_1 .. n_p (n = sum n_i). State block i holds
+// x_(i,1) = y_i and x_(i,k)' = x_(i,k+1) + b_(i,k)^T u for k < n_i; the last
+// row of block i is free: x_(i,n_i)' = sum_j sum_k a_(ij,k) x_(j,k+1) +
+// b_(i,n_i)^T u, with k = 0 .. nu_ij - 1 and
+//
+//   nu_ii = n_i,  nu_ij = min(n_i + 1, n_j) (j < i),  min(n_i, n_j) (j > i).
+//
+// Eliminating the states gives one input-output equation per output,
+//
+//   p^(n_i) y_i + sum_j sum_k alpha_(ij,k) p^k y_j
+//       = sum_l sum_(k<n_i) beta_(il,k) p^k u_l,   alpha = -a,
+//
+// linear in (alpha, beta). Its GPMF of order n_i (the Poisson filter
+// (lambda_i/(p+lambda_i))^(n_i+1), one lambda per output) is the output of
+// the normalised state-variable filter of svf.hpp (thesis eq. 3.1): the filtered
+// equation is a linear regression zeta_i = phi_i^T theta_i, solved per
+// output by least squares, or by IV with instruments built from the
+// noise-free output of the LS model (auxiliary model). B follows from beta
+// by the triangular change of coordinates beta = T(alpha) b (see
+// coefficient_map below).
+//
+// sid_gpmf is the GPMF-based subspace method (sidgpmf; Bastogne, Garnier,
+// Sibille, Int. J. Control 74(2), 2001): the GPMF of order j of the time
+// derivatives p^k y, p^k u, k = 0 .. i-1, obey the data equation of the
+// discrete 4SID methods with derivatives in place of shifts,
+//
+//   Y_i = Gamma_i (F x) + H_i U_i,   Gamma_i = [C; C A; ..; C A^(i-1)],
+//
+// H_i the block Toeplitz matrix of D, C B, C A B, ..; the MOESP projection
+// of Y_i onto the complement of U_i (LQ factorisation) spans Gamma_i, whose
+// shift invariance gives A and whose first block gives C; B and D then
+// solve a least-squares fit of the measured outputs by the exact
+// simulation of (A, I, C) for each input.
+//
+// As in the SVF estimators (svf_regressor.hpp), the inputs are filtered
+// with the data's intersample rule and the outputs, never piecewise
+// constant, with the trapezoidal rule.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <unsupported/Eigen/MatrixFunctions>
+#include <vector>
+
+#include "ctid/base/status.hpp"
+#include "ctid/base/types.hpp"
+#include "ctid/filters/discretization.hpp"
+#include "ctid/filters/svf.hpp"
+
+namespace ctid {
+
+// A multi-output record: y N-by-p and u N-by-m, column-major, and either a
+// constant sampling interval or the N sampling instants.
+template <typename S>
+struct MultiRecordView {
+  const S* y = nullptr;
+  const S* u = nullptr;
+  Eigen::Index num_samples = 0;
+  Eigen::Index num_outputs = 0;
+  Eigen::Index num_inputs = 0;
+  S ts = 0;
+  const S* instants = nullptr;
+  InterSample u_intersample = InterSample::kZoh;
+
+  S y_at(Eigen::Index k, Eigen::Index i) const {
+    return y[i * num_samples + k];
+  }
+  S u_at(Eigen::Index k, Eigen::Index l) const {
+    return u[l * num_samples + k];
+  }
+  // t_k - t_(k-1); for k = 0 the first interval of the record.
+  S interval(Eigen::Index k) const {
+    if (instants == nullptr) return ts;
+    if (num_samples < 2) return S(1);
+    if (k == 0) return instants[1] - instants[0];
+    return instants[k] - instants[k - 1];
+  }
+};
+
+template <typename S>
+struct GpmfSettings {
+  std::vector<int> observability_indices;  // n_1 .. n_p, each >= 1
+  std::vector<S> lambda;                   // Poisson filter pole per output
+  Eigen::Index first_sample = 0;           // n0 - 1: samples used from here
+};
+
+template <typename S>
+struct StateSpaceEstimate {
+  Matrix<S> A, B, C, D;
+  // Per output: [alpha_(i1,0..nu_i1-1) .. alpha_(ip,..) beta_(i1,0..n_i-1)
+  // .. beta_(im,..)], concatenated over the outputs.
+  Vector<S> theta;
+};
+
+namespace gpmf_detail {
+
+inline int coupling_degree(const std::vector<int>& n, int i, int j) {
+  if (i == j) return n[i];
+  return j < i ? std::min(n[i] + 1, n[j]) : std::min(n[i], n[j]);
+}
+
+inline int block_start(const std::vector<int>& n, int i) {
+  int start = 0;
+  for (int j = 0; j < i; ++j) start += n[j];
+  return start;
+}
+
+inline Eigen::Index num_alpha(const std::vector<int>& n, int i) {
+  Eigen::Index count = 0;
+  for (int j = 0; j < static_cast<int>(n.size()); ++j) {
+    count += coupling_degree(n, i, j);
+  }
+  return count;
+}
+
+template <typename S>
+Status validate(const MultiRecordView<S>& record,
+                const GpmfSettings<S>& settings) {
+  const auto& n = settings.observability_indices;
+  if (record.num_outputs < 1 || record.num_inputs < 1) {
+    return bad_input("the data need at least one output and one input");
+  }
+  if (static_cast<Eigen::Index>(n.size()) != record.num_outputs) {
+    return dimension_mismatch("nni must have one entry per output (" +
+                              std::to_string(record.num_outputs) + "), got " +
+                              std::to_string(n.size()));
+  }
+  if (static_cast<Eigen::Index>(settings.lambda.size()) != record.num_outputs) {
+    return dimension_mismatch("param must have one entry per output (" +
+                              std::to_string(record.num_outputs) + "), got " +
+                              std::to_string(settings.lambda.size()));
+  }
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (n[i] < 1 || n[i] > 20) {
+      return bad_input("the observability indices must be integers in 1..20");
+    }
+    if (!(settings.lambda[i] > 0) || !std::isfinite(settings.lambda[i])) {
+      return bad_input("the filter parameters must be finite and > 0");
+    }
+  }
+  Eigen::Index largest = 0;
+  for (int i = 0; i < static_cast<int>(n.size()); ++i) {
+    largest = std::max(largest, num_alpha(n, i) + n[i] * record.num_inputs);
+  }
+  if (settings.first_sample < 0 ||
+      record.num_samples - settings.first_sample < largest) {
+    return bad_input("the data from sample n0 on have fewer samples than the " +
+                     std::to_string(largest) +
+                     " parameters of an output equation");
+  }
+  const Eigen::Index count = record.num_samples;
+  for (Eigen::Index k = 0; k < count * record.num_outputs; ++k) {
+    if (!std::isfinite(record.y[k])) return bad_input("y must be finite");
+  }
+  for (Eigen::Index k = 0; k < count * record.num_inputs; ++k) {
+    if (!std::isfinite(record.u[k])) return bad_input("u must be finite");
+  }
+  if (record.instants == nullptr) {
+    if (!(record.ts > 0) || !std::isfinite(record.ts)) {
+      return bad_input("the sampling interval Ts must be finite and > 0");
+    }
+  } else {
+    for (Eigen::Index k = 0; k < count; ++k) {
+      if (!std::isfinite(record.instants[k]) ||
+          (k > 0 && !(record.instants[k] > record.instants[k - 1]))) {
+        return bad_input(
+            "the sampling instants must be finite and strictly increasing");
+      }
+    }
+  }
+  return Status::Ok();
+}
+
+// The GPMF regressors of output i over the record: row k holds
+// [-p^k F y_j (k < nu_ij), j = 1..p | p^k F u_l (k < n_i), l = 1..m] with
+// the outputs y_hat (instruments) or y, and zeta = p^(n_i) F y_i.
+template <typename S>
+void gpmf_regressors(const MultiRecordView<S>& record,
+                     const GpmfSettings<S>& settings, int i, const S* outputs,
+                     Matrix<S>* phi, Vector<S>* zeta) {
+  const auto& n = settings.observability_indices;
+  const int p = static_cast<int>(record.num_outputs);
+  const int m = static_cast<int>(record.num_inputs);
+  const int order = n[i] + 1;  // GPMF of order n_i: Poisson filter ^(n_i+1)
+  const S lambda = settings.lambda[i];
+  const Vector<S> d = svf_denominator(order, lambda);
+  const S gain = svf_gain(order, lambda, true);
+  FilterDiscretization<S> y_disc, u_disc;
+  y_disc.configure(order, InterSample::kFoh);
+  y_disc.set_denominator(d);
+  u_disc.configure(order, record.u_intersample);
+  u_disc.set_denominator(d);
+  std::vector<FilterChannel<S>> y_channels(p), u_channels(m);
+  for (auto& c : y_channels) {
+    c.configure(order);
+    c.set_rest_at_first_sample(true);
+  }
+  for (auto& c : u_channels) {
+    c.configure(order);
+    c.set_rest_at_first_sample(true);
+  }
+  const Eigen::Index count = record.num_samples;
+  const Eigen::Index first = settings.first_sample;
+  const Eigen::Index columns = num_alpha(n, i) + n[i] * m;
+  phi->resize(count - first, columns);
+  zeta->resize(count - first);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const S h = record.interval(k);
+    y_disc.ensure(h);
+    u_disc.ensure(h);
+    for (int j = 0; j < p; ++j) {
+      y_channels[j].step(y_disc, gain, outputs[j * count + k]);
+    }
+    for (int l = 0; l < m; ++l) {
+      u_channels[l].step(u_disc, gain, record.u_at(k, l));
+    }
+    if (k < first) continue;
+    const Eigen::Index row = k - first;
+    Eigen::Index col = 0;
+    for (int j = 0; j < p; ++j) {
+      for (int q = 0; q < coupling_degree(n, i, j); ++q) {
+        (*phi)(row, col++) = -y_channels[j].outputs()(q);
+      }
+    }
+    for (int l = 0; l < m; ++l) {
+      for (int q = 0; q < n[i]; ++q) {
+        (*phi)(row, col++) = u_channels[l].outputs()(q);
+      }
+    }
+    (*zeta)(row) = y_channels[i].outputs()(n[i]);
+  }
+}
+
+// The canonical (A, B, C) of the parameters theta. beta_(i,d) (the p^d
+// coefficient of row i, one input) = b_(i,n_i-d) + sum_j sum_(k>d)
+// alpha_(ij,k) b_(j,k-d): a square linear map T(alpha) from b to beta,
+// inverted column by column of B.
+template <typename S>
+Status canonical_model(const std::vector<int>& n, int num_inputs,
+                       const Vector<S>& theta, StateSpaceEstimate<S>* model) {
+  const int p = static_cast<int>(n.size());
+  const int m = num_inputs;
+  int total = 0;
+  for (int ni : n) total += ni;
+  Matrix<S> A = Matrix<S>::Zero(total, total);
+  Matrix<S> T = Matrix<S>::Zero(total, total);
+  Matrix<S> beta(total, m);
+  Eigen::Index offset = 0;
+  for (int i = 0; i < p; ++i) {
+    const int start = block_start(n, i);
+    for (int k = 0; k + 1 < n[i]; ++k) A(start + k, start + k + 1) = 1;
+    const int last = start + n[i] - 1;
+    // Row (i, d) of T and beta: index start + d.
+    for (int d = 0; d < n[i]; ++d) T(start + d, start + n[i] - 1 - d) = 1;
+    for (int j = 0; j < p; ++j) {
+      const int start_j = block_start(n, j);
+      for (int k = 0; k < coupling_degree(n, i, j); ++k) {
+        const S alpha = theta(offset++);
+        A(last, start_j + k) = -alpha;
+        for (int d = 0; d < k; ++d) T(start + d, start_j + k - d - 1) += alpha;
+      }
+    }
+    for (int l = 0; l < m; ++l) {
+      for (int d = 0; d < n[i]; ++d) beta(start + d, l) = theta(offset++);
+    }
+  }
+  Eigen::FullPivLU<Matrix<S>> lu(T);
+  if (!lu.isInvertible()) {
+    return numerical_failure(
+        "the estimated model has no canonical realisation");
+  }
+  model->A = A;
+  model->B = lu.solve(beta);
+  model->C = Matrix<S>::Zero(p, total);
+  for (int i = 0; i < p; ++i) model->C(i, block_start(n, i)) = 1;
+  model->D = Matrix<S>::Zero(p, m);
+  model->theta = theta;
+  return Status::Ok();
+}
+
+// Noise-free output of x' = A x + B u, y = C x from rest, exact for the
+// record's intersample rule (ZOH: Phi, Gamma; FOH: the augmented
+// exponential with the input's slope as a state).
+template <typename S>
+Status simulate_state_space(const Matrix<S>& A, const Matrix<S>& B,
+                            const Matrix<S>& C,
+                            const MultiRecordView<S>& record,
+                            Matrix<S>* output) {
+  const Eigen::Index n = A.rows();
+  const Eigen::Index m = B.cols();
+  const Eigen::Index count = record.num_samples;
+  const bool foh = record.u_intersample == InterSample::kFoh;
+  Matrix<S> Phi, Gamma0, Gamma1;
+  S h_last = -1;
+  Vector<S> x = Vector<S>::Zero(n);
+  Vector<S> u_prev(m), u_now(m);
+  output->resize(count, C.rows());
+  for (Eigen::Index k = 0; k < count; ++k) {
+    for (Eigen::Index l = 0; l < m; ++l) u_now(l) = record.u_at(k, l);
+    if (k > 0) {
+      const S h = record.interval(k);
+      if (h != h_last) {
+        const Eigen::Index size = n + (foh ? 2 * m : m);
+        Matrix<S> F = Matrix<S>::Zero(size, size);
+        F.topLeftCorner(n, n) = A * h;
+        F.block(0, n, n, m) = B * h;
+        if (foh) F.block(n, n + m, m, m) = Matrix<S>::Identity(m, m);
+        const Matrix<S> E = F.exp();
+        Phi = E.topLeftCorner(n, n);
+        Gamma0 = E.block(0, n, n, m);
+        if (foh) Gamma1 = E.block(0, n + m, n, m);
+        h_last = h;
+      }
+      // FOH: in the normalised time tau = s/h of the interval,
+      // u = u_(k-1) + tau (u_k - u_(k-1)); the augmented state carries u
+      // and its constant increment (the identity block above).
+      Vector<S> next = Phi * x + Gamma0 * u_prev;
+      if (foh) next += Gamma1 * (u_now - u_prev);
+      x = next;
+    }
+    output->row(k) = (C * x).transpose();
+    u_prev = u_now;
+  }
+  if (!output->allFinite()) {
+    return numerical_failure("the simulated auxiliary model diverged");
+  }
+  return Status::Ok();
+}
+
+}  // namespace gpmf_detail
+
+// Least-squares GPMF estimate of the canonical state-space model (sslsgpmf).
+template <typename S>
+Status ss_ls_gpmf(const MultiRecordView<S>& record,
+                  const GpmfSettings<S>& settings,
+                  StateSpaceEstimate<S>* estimate) {
+  Status status = gpmf_detail::validate(record, settings);
+  if (!status.ok()) return status;
+  const int p = static_cast<int>(record.num_outputs);
+  std::vector<Vector<S>> parts(p);
+  Eigen::Index total = 0;
+  for (int i = 0; i < p; ++i) {
+    Matrix<S> phi;
+    Vector<S> zeta;
+    gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta);
+    Eigen::ColPivHouseholderQR<Matrix<S>> qr(phi);
+    if (qr.rank() < phi.cols()) {
+      return numerical_failure(
+          "the GPMF regression of output " + std::to_string(i + 1) +
+          " is rank deficient (input not exciting enough, or nni too large)");
+    }
+    parts[i] = qr.solve(zeta);
+    total += parts[i].size();
+  }
+  Vector<S> theta(total);
+  Eigen::Index offset = 0;
+  for (const auto& part : parts) {
+    theta.segment(offset, part.size()) = part;
+    offset += part.size();
+  }
+  return gpmf_detail::canonical_model(settings.observability_indices,
+                                      static_cast<int>(record.num_inputs),
+                                      theta, estimate);
+}
+
+// Instrumental-variable GPMF estimate (ssivgpmf): the instruments are the
+// GPMF regressors of the noise-free output of the LS model, simulated from
+// the input alone; the LS model must therefore be stable.
+template <typename S>
+Status ss_iv_gpmf(const MultiRecordView<S>& record,
+                  const GpmfSettings<S>& settings,
+                  StateSpaceEstimate<S>* estimate) {
+  StateSpaceEstimate<S> ls;
+  Status status = ss_ls_gpmf(record, settings, &ls);
+  if (!status.ok()) return status;
+  const Eigen::EigenSolver<Matrix<S>> eig(ls.A, false);
+  if (eig.info() != Eigen::Success ||
+      (eig.eigenvalues().real().array() >= 0).any()) {
+    return numerical_failure(
+        "the least-squares auxiliary model is not stable: no instruments");
+  }
+  Matrix<S> y_hat;
+  status = gpmf_detail::simulate_state_space(ls.A, ls.B, ls.C, record, &y_hat);
+  if (!status.ok()) return status;
+  const int p = static_cast<int>(record.num_outputs);
+  Vector<S> theta(ls.theta.size());
+  Eigen::Index offset = 0;
+  for (int i = 0; i < p; ++i) {
+    Matrix<S> phi, psi;
+    Vector<S> zeta, unused;
+    gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta);
+    gpmf_detail::gpmf_regressors(record, settings, i, y_hat.data(), &psi,
+                                 &unused);
+    const Matrix<S> R = psi.transpose() * phi;
+    Eigen::FullPivLU<Matrix<S>> lu(R);
+    if (!lu.isInvertible()) {
+      return numerical_failure("the IV normal matrix of output " +
+                               std::to_string(i + 1) + " is singular");
+    }
+    const Vector<S> part = lu.solve(psi.transpose() * zeta);
+    theta.segment(offset, part.size()) = part;
+    offset += part.size();
+  }
+  return gpmf_detail::canonical_model(settings.observability_indices,
+                                      static_cast<int>(record.num_inputs),
+                                      theta, estimate);
+}
+
+struct SubspaceGpmfSettings {
+  int block_rows = 3;    // i: derivatives 0 .. i-1
+  int filter_order = 3;  // j: the Poisson filter (lambda/(p+lambda))^(j+1)
+  double lambda = 1;
+  int order = 0;  // n; 0: chosen at the largest gap of the singular values
+  Eigen::Index first_sample = 0;
+};
+
+template <typename S>
+struct SubspaceGpmfEstimate {
+  StateSpaceEstimate<S> model;
+  Vector<S> singular_values;  // of the projected GPMF data, i p of them
+};
+
+// GPMF 4SID (sidgpmf); see the header comment.
+template <typename S>
+Status sid_gpmf(const MultiRecordView<S>& record,
+                const SubspaceGpmfSettings& settings,
+                SubspaceGpmfEstimate<S>* estimate) {
+  const int p = static_cast<int>(record.num_outputs);
+  const int m = static_cast<int>(record.num_inputs);
+  const int i = settings.block_rows;
+  const int j = settings.filter_order;
+  if (i < 2 || j < i - 1 || j > 20) {
+    return bad_input("i must be >= 2 and j an integer in i-1 .. 20");
+  }
+  if (settings.order < 0 || settings.order > (i - 1) * p) {
+    return bad_input("the order n must be in 1 .. (i-1) p = " +
+                     std::to_string((i - 1) * p));
+  }
+  GpmfSettings<S> check;
+  check.observability_indices.assign(p, 1);
+  check.lambda.assign(p, static_cast<S>(settings.lambda));
+  check.first_sample = settings.first_sample;
+  Status status = gpmf_detail::validate(record, check);
+  if (!status.ok()) return status;
+  const Eigen::Index count = record.num_samples;
+  const Eigen::Index used = count - settings.first_sample;
+  const Eigen::Index rows_u = i * m, rows_y = i * p;
+  if (used < 2 * (rows_u + rows_y)) {
+    return bad_input("the data from sample n0 on have fewer than " +
+                     std::to_string(2 * (rows_u + rows_y)) +
+                     " samples, twice the rows of the GPMF data matrix");
+  }
+  // The GPMF data matrix, one column per sample: [U_i; Y_i], block k of
+  // each holding p^k F of every input or output.
+  const int order = j + 1;
+  const S lambda = static_cast<S>(settings.lambda);
+  const Vector<S> d = svf_denominator(order, lambda);
+  const S gain = svf_gain(order, lambda, true);
+  FilterDiscretization<S> y_disc, u_disc;
+  y_disc.configure(order, InterSample::kFoh);
+  y_disc.set_denominator(d);
+  u_disc.configure(order, record.u_intersample);
+  u_disc.set_denominator(d);
+  std::vector<FilterChannel<S>> y_channels(p), u_channels(m);
+  for (auto* channels : {&y_channels, &u_channels}) {
+    for (auto& c : *channels) {
+      c.configure(order);
+      c.set_rest_at_first_sample(true);
+    }
+  }
+  Matrix<S> data(used, rows_u + rows_y);  // transposed: samples in rows
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const S h = record.interval(k);
+    y_disc.ensure(h);
+    u_disc.ensure(h);
+    for (int q = 0; q < p; ++q)
+      y_channels[q].step(y_disc, gain, record.y_at(k, q));
+    for (int l = 0; l < m; ++l)
+      u_channels[l].step(u_disc, gain, record.u_at(k, l));
+    if (k < settings.first_sample) continue;
+    const Eigen::Index row = k - settings.first_sample;
+    for (int r = 0; r < i; ++r) {
+      for (int l = 0; l < m; ++l)
+        data(row, r * m + l) = u_channels[l].outputs()(r);
+      for (int q = 0; q < p; ++q) {
+        data(row, rows_u + r * p + q) = y_channels[q].outputs()(r);
+      }
+    }
+  }
+  // LQ of [U; Y] as the QR of its transpose: R22' is Y projected onto the
+  // orthogonal complement of the rows of U.
+  Eigen::HouseholderQR<Matrix<S>> qr(data);
+  const Matrix<S> R = qr.matrixQR()
+                          .topRows(rows_u + rows_y)
+                          .template triangularView<Eigen::Upper>();
+  const Matrix<S> L22 = R.bottomRightCorner(rows_y, rows_y).transpose();
+  Eigen::JacobiSVD<Matrix<S>> svd(L22, Eigen::ComputeFullU);
+  estimate->singular_values = svd.singularValues();
+  const Vector<S>& sv = svd.singularValues();
+  int n = settings.order;
+  if (n == 0) {
+    S best = -1;
+    const S floor = sv(0) * std::numeric_limits<S>::epsilon();
+    for (int r = 1; r <= (i - 1) * p; ++r) {
+      const S ratio = sv(r - 1) / std::max(sv(r), floor);
+      if (ratio > best) {
+        best = ratio;
+        n = r;
+      }
+    }
+  }
+  if (!(sv(n - 1) > sv(0) * 1e3 * std::numeric_limits<S>::epsilon())) {
+    return numerical_failure(
+        "the GPMF data have rank below the order n = " + std::to_string(n) +
+        " (input not exciting enough, or n too large)");
+  }
+  const Matrix<S> gamma =
+      svd.matrixU().leftCols(n) * sv.head(n).cwiseSqrt().asDiagonal();
+  Matrix<S> A = gamma.topRows(rows_y - p)
+                    .completeOrthogonalDecomposition()
+                    .solve(gamma.bottomRows(rows_y - p));
+  const Matrix<S> C = gamma.topRows(p);
+  // B and D: y(t_k) = sum_(r,l) B(r,l) C x_(r,l)(t_k) + D u(t_k), with
+  // x_(r,l)' = A x_(r,l) + e_r u_l from rest, one least-squares fit of all
+  // outputs.
+  const Eigen::Index columns = n * m + p * m;
+  Matrix<S> phi(used * p, columns);
+  Vector<S> target(used * p);
+  for (int q = 0; q < p; ++q) {
+    for (Eigen::Index k = 0; k < used; ++k) {
+      target(q * used + k) = record.y_at(k + settings.first_sample, q);
+    }
+  }
+  for (int l = 0; l < m; ++l) {
+    MultiRecordView<S> single = record;
+    single.u = record.u + l * count;
+    single.num_inputs = 1;
+    for (int r = 0; r < n; ++r) {
+      Matrix<S> response;
+      status = gpmf_detail::simulate_state_space(
+          A, Matrix<S>(Matrix<S>::Identity(n, n).col(r)), C, single, &response);
+      if (!status.ok()) {
+        return numerical_failure(
+            "the estimated A gives a diverging response: "
+            "no B and D (try another n, i or lambda)");
+      }
+      for (int q = 0; q < p; ++q) {
+        phi.col(l * n + r).segment(q * used, used) = response.col(q).tail(used);
+      }
+    }
+    for (int q = 0; q < p; ++q) {
+      phi.col(n * m + l * p + q).setZero();
+      for (Eigen::Index k = 0; k < used; ++k) {
+        phi(q * used + k, n * m + l * p + q) =
+            record.u_at(k + settings.first_sample, l);
+      }
+    }
+  }
+  Eigen::ColPivHouseholderQR<Matrix<S>> fit(phi);
+  if (fit.rank() < columns) {
+    return numerical_failure("the least-squares fit of B and D is singular");
+  }
+  const Vector<S> bd = fit.solve(target);
+  StateSpaceEstimate<S>& model = estimate->model;
+  model.A = A;
+  model.C = C;
+  model.B.resize(n, m);
+  model.D.resize(p, m);
+  for (int l = 0; l < m; ++l) {
+    model.B.col(l) = bd.segment(l * n, n);
+    model.D.col(l) = bd.segment(n * m + l * p, p);
+  }
+  model.theta.resize(0);
+  return Status::Ok();
+}
+
+}  // namespace ctid
