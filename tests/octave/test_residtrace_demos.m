@@ -37,8 +37,7 @@ function check (out, root)
   ## skipped, with the reason
   [data, why] = ctid_data_dir ();
   if (isempty (data))
-    ctid_test_skip ("test_residtrace_demos", why);
-    return;
+    ctid_test_skip (why);
   endif
   R = demo_emps (out, true);
   for f = {"emps.md", "fig_emps_sim.png", "fig_emps_resid.png", ...

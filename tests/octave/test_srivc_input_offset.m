@@ -23,8 +23,7 @@ function test_srivc_input_offset ()
   addpath (fullfile (root, "demos"));   # ctid_data_dir
   [data, why] = ctid_data_dir ("emps");
   if (isempty (data))
-    ctid_test_skip ("test_srivc_input_offset", why);
-    return;
+    ctid_test_skip (why);
   endif
   s = load (fullfile (data, "DATA_EMPS.mat"));
   Ts = s.t(2) - s.t(1);
