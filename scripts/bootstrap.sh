@@ -21,8 +21,11 @@ JOBS="${CTID_JOBS:-$(nproc)}"
 # fonts-freefont-otf and ghostscript: Octave's headless PNG printing needs
 # both and a --no-install-recommends install of octave brings neither.
 # libnlopt-dev: the bounded optimiser of the Qn maximum-likelihood search.
+# ccache: a rebuild, and the Octave package's `pkg install` in the tests
+# (tests/packaging), reuse the gateways already compiled.
 DEMO_PACKAGES=(g++ cmake make pkg-config octave liboctave-dev octave-control
-               libeigen3-dev libnlopt-dev fonts-freefont-otf ghostscript)
+               libeigen3-dev libnlopt-dev fonts-freefont-otf ghostscript
+               ccache)
 # ... and the test suite and benchmarks in addition.
 TEST_PACKAGES=(libgtest-dev libbenchmark-dev)
 
@@ -48,22 +51,25 @@ ctid_install_missing() {
   fi
 }
 
-ctid_bootstrap() {
-  local mode=$1 launcher=()
+ctid_launcher() {
   if command -v ccache >/dev/null 2>&1; then
-    launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
   fi
+}
+
+ctid_bootstrap() {
+  local mode=$1
   case $mode in
     demo)
       ctid_install_missing "${DEMO_PACKAGES[@]}"
       cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
-            -DCTID_BUILD_TESTS=OFF -DCTID_BUILD_BENCH=OFF "${launcher[@]}"
+            -DCTID_BUILD_TESTS=OFF -DCTID_BUILD_BENCH=OFF $(ctid_launcher)
       cmake --build "$BUILD" --target octave_mex -j"$JOBS"
       ;;
     all)
       ctid_install_missing "${DEMO_PACKAGES[@]}" "${TEST_PACKAGES[@]}"
       cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
-            -DCTID_BUILD_TESTS=ON -DCTID_BUILD_BENCH=ON "${launcher[@]}"
+            -DCTID_BUILD_TESTS=ON -DCTID_BUILD_BENCH=ON $(ctid_launcher)
       cmake --build "$BUILD" -j"$JOBS"
       ;;
     *)
