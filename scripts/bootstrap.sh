@@ -15,7 +15,8 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${CTID_BUILD_DIR:-$ROOT/build}"
-JOBS="${CTID_JOBS:-$(nproc)}"
+# (nproc without the OpenMP variables, which it would otherwise obey)
+JOBS="${CTID_JOBS:-$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)}"
 
 # Debian 12 packages the gateways and the demos need.
 # fonts-freefont-otf and ghostscript: Octave's headless PNG printing needs
