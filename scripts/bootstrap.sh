@@ -10,7 +10,8 @@
 #   ctid_bootstrap all    everything: gateways, core tests, benchmarks
 #
 # Both compile with one job per core ($(nproc), or $CTID_JOBS) and through
-# ccache when it is installed, so that a second run recompiles nothing.
+# ccache (installed with the rest), so that a second run recompiles
+# nothing and the package test's `pkg install` finds the gateways compiled.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
