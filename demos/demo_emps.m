@@ -44,10 +44,10 @@
 ## @end deftypefn
 
 function R = demo_emps (outdir = "results", reduced = false)
-  here = demo_prepare (outdir);
-  root = fullfile (here, "..", "..", "shared", "data", "emps");
-  if (! exist (root, "dir"))
-    root = fullfile ("..", "shared", "data", "emps");
+  demo_prepare (outdir);
+  [root, why] = ctid_data_dir ("emps");
+  if (isempty (root))
+    error ("demo_emps:noData", "demo_emps: %s", why);
   endif
   s = load (fullfile (root, "DATA_EMPS.mat"));
   p = load (fullfile (root, "DATA_EMPS_PULSES.mat"));

@@ -34,10 +34,10 @@
 ## @end deftypefn
 
 function R = demo_silverbox (outdir = "results", reduced = false)
-  here = demo_prepare (outdir);
-  root = fullfile (here, "..", "..", "shared", "data", "silverbox");
-  if (! exist (root, "dir"))
-    root = fullfile ("..", "shared", "data", "silverbox");
+  demo_prepare (outdir);
+  [root, why] = ctid_data_dir ("silverbox");
+  if (isempty (root))
+    error ("demo_silverbox:noData", "demo_silverbox: %s", why);
   endif
   s = load (fullfile (root, "SNLS80mV.mat"));
   u = double (s.V1(:)); y = double (s.V2(:));

@@ -17,7 +17,10 @@
 function R = residtrace_silverbox (varargin)
   here = fileparts (mfilename ("fullpath"));
   addpath (fullfile (here, "..", "octave"));
-  root = fullfile (here, "..", "..", "shared", "data", "silverbox");
+  [root, why] = ctid_data_dir ("silverbox");
+  if (isempty (root))
+    error ("residtrace_silverbox:noData", "residtrace_silverbox: %s", why);
+  endif
   s = load (fullfile (root, "SNLS80mV.mat"));
   u = double (s.V1(:)); y = double (s.V2(:));
   Ts = 2 ^ 14 / 1e7;

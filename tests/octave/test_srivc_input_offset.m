@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_srivc_input_offset ()
 ## srivc on a raw measured record whose input has an offset on an
-## integrating axis: EMPS (../shared/data/emps/DATA_EMPS.mat),
+## integrating axis: EMPS (emps/DATA_EMPS.mat of ctid_data_dir),
 ## motor force gtau*vir -> position qm, structure [1 2 0], raw units.
 ## Without input offsets the unconstrained estimate is unstable (the
 ## force's offset drives the near-integrator) and the fit is useless
@@ -20,11 +20,12 @@
 function test_srivc_input_offset ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
-  f = fullfile (root, "..", "shared", "data", "emps", "DATA_EMPS.mat");
-  if (! exist (f, "file"))
-    error ("test_srivc_input_offset: %s is missing", f);
+  addpath (fullfile (root, "demos"));   # ctid_data_dir
+  [data, why] = ctid_data_dir ("emps");
+  if (isempty (data))
+    ctid_test_skip (why);
   endif
-  s = load (f);
+  s = load (fullfile (data, "DATA_EMPS.mat"));
   Ts = s.t(2) - s.t(1);
   d = iddata (s.qm(:), s.gtau * s.vir(:), Ts, "InterSample", "zoh");
   lastwarn ("");
