@@ -54,7 +54,11 @@
 ## @seealso{residc, simc, srivc}
 ## @end deftypefn
 
-function [ys, estInfo, varargout] = comparec (varargin)
+function varargout = comparec (varargin)
+  varargout = contsid_guard ("comparec", @comparec_body, nargout, varargin);
+endfunction
+
+function [ys, estInfo, varargout] = comparec_body (varargin)
   contsid_nargchk ("comparec", nargin, nargout, [0 Inf], 2);
   [d, yhat, rest] = contsid_model_output ("comparec", varargin);
   N = rows (d.y);

@@ -71,7 +71,11 @@
 ## @seealso{prbs, iddata}
 ## @end deftypefn
 
-function [u, freqs, varargout] = idinput (N, type = "rgs", band = [0, 1],
+function varargout = idinput (varargin)
+  varargout = contsid_guard ("idinput", @idinput_body, nargout, varargin);
+endfunction
+
+function [u, freqs, varargout] = idinput_body (N, type = "rgs", band = [0, 1],
                                           levels = [-1, 1],
                                           sinedata = [10, 10, 1], varargin)
   contsid_nargchk ("idinput", nargin, nargout, [0 Inf], 2);

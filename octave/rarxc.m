@@ -51,7 +51,11 @@
 ## @seealso{rarx, rlssvf}
 ## @end deftypefn
 
-function [THM, YH, info, varargout] = rarxc (varargin)
+function varargout = rarxc (varargin)
+  varargout = contsid_guard ("rarxc", @rarxc_body, nargout, varargin);
+endfunction
+
+function [THM, YH, info, varargout] = rarxc_body (varargin)
   contsid_nargchk ("rarxc", nargin, nargout, [0 Inf], 3);
   d = contsid_getdata ("rarxc", varargin{:});
   contsid_check_output ("rarxc", d.y);

@@ -97,6 +97,10 @@
 ## @end deftypefn
 
 function varargout = rivsvf (varargin)
+  varargout = contsid_guard ("rivsvf", @rivsvf_body, nargout, varargin);
+endfunction
+
+function varargout = rivsvf_body (varargin)
   contsid_nargchk ("rivsvf", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("rivsvf", nargout, varargin{:});
 endfunction

@@ -114,7 +114,12 @@
 ## @seealso{rlssvf, rivsvf, rsrivc, svfcutoff}
 ## @end deftypefn
 
-function [tsiv, info, thm, yh, varargout] = rlsconverge (varargin)
+function varargout = rlsconverge (varargin)
+  varargout = contsid_guard ("rlsconverge", @rlsconverge_body, nargout,
+                             varargin);
+endfunction
+
+function [tsiv, info, thm, yh, varargout] = rlsconverge_body (varargin)
   contsid_nargchk ("rlsconverge", nargin, nargout, [0 Inf], 4);
   fname = "rlsconverge";
   rdef = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],

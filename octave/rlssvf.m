@@ -191,6 +191,10 @@
 ## @end deftypefn
 
 function varargout = rlssvf (varargin)
+  varargout = contsid_guard ("rlssvf", @rlssvf_body, nargout, varargin);
+endfunction
+
+function varargout = rlssvf_body (varargin)
   contsid_nargchk ("rlssvf", nargin, nargout, [0 Inf], 4);
   p = contsid_rlssvf_args ("rlssvf", varargin{:});
   ## Ask the gateway only for the outputs requested: YH costs a matrix

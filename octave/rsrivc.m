@@ -54,6 +54,10 @@
 ## @end deftypefn
 
 function varargout = rsrivc (varargin)
+  varargout = contsid_guard ("rsrivc", @rsrivc_body, nargout, varargin);
+endfunction
+
+function varargout = rsrivc_body (varargin)
   contsid_nargchk ("rsrivc", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("rsrivc", nargout, varargin{:});
 endfunction

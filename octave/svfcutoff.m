@@ -103,7 +103,11 @@
 ## @seealso{bandwidthc, srivc, rlssvf, rlsconverge}
 ## @end deftypefn
 
-function [lambda, info, varargout] = svfcutoff (varargin)
+function varargout = svfcutoff (varargin)
+  varargout = contsid_guard ("svfcutoff", @svfcutoff_body, nargout, varargin);
+endfunction
+
+function [lambda, info, varargout] = svfcutoff_body (varargin)
   contsid_nargchk ("svfcutoff", nargin, nargout, [0 Inf], 2);
   fname = "svfcutoff";
   defaults = struct ("segments", [], "seglength", [], "factor", 1.1,

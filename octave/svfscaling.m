@@ -31,7 +31,11 @@
 ## @seealso{rlssvf, rsrivc}
 ## @end deftypefn
 
-function [m, varargout] = svfscaling (varargin)
+function varargout = svfscaling (varargin)
+  varargout = contsid_guard ("svfscaling", @svfscaling_body, nargout, varargin);
+endfunction
+
+function [m, varargout] = svfscaling_body (varargin)
   contsid_nargchk ("svfscaling", nargin, nargout, [0 Inf], 1);
   fname = "svfscaling";
   if (nargin < 2)

@@ -30,7 +30,11 @@
 ## @seealso{step, bodeplot}
 ## @end deftypefn
 
-function [mag, phase, w, varargout] = bode (varargin)
+function varargout = bode (varargin)
+  varargout = contsid_guard ({"bode", "double"}, @bode_body, nargout, varargin);
+endfunction
+
+function [mag, phase, w, varargout] = bode_body (varargin)
   contsid_nargchk ("bode", nargin, nargout, [2 6], 3);
   [sys, iu, w] = pre_lti_args ("bode", varargin);
   if (isempty (iu))

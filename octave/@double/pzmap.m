@@ -17,7 +17,12 @@
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [p, z, varargout] = pzmap (varargin)
+function varargout = pzmap (varargin)
+  varargout = contsid_guard ({"pzmap", "double"}, @pzmap_body, nargout,
+                             varargin);
+endfunction
+
+function [p, z, varargout] = pzmap_body (varargin)
   contsid_nargchk ("pzmap", nargin, nargout, [2 4], 2);
   if (! any (nargin == [2, 4]))
     error ("pzmap:badInput",

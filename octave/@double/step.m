@@ -32,7 +32,11 @@
 ## @seealso{bode, ord2, stepplot}
 ## @end deftypefn
 
-function [y, x, t, varargout] = step (varargin)
+function varargout = step (varargin)
+  varargout = contsid_guard ({"step", "double"}, @step_body, nargout, varargin);
+endfunction
+
+function [y, x, t, varargout] = step_body (varargin)
   contsid_nargchk ("step", nargin, nargout, [2 6], 3);
   [sys, iu, tt] = pre_lti_args ("step", varargin);
   if (! isempty (iu))

@@ -46,7 +46,12 @@
 ## @seealso{iddata, detrend}
 ## @end deftypefn
 
-function [dat, trend, varargout] = detrend (dat, type = 0, brkp = [], varargin)
+function varargout = detrend (varargin)
+  varargout = contsid_guard ({"detrend", "iddata"}, @detrend_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, trend, varargout] = detrend_body (dat, type = 0, brkp = [], varargin)
   contsid_nargchk ("detrend", nargin, nargout, [1 Inf], 2);
   if (nargin > 3)
     error ("iddata:badInput",

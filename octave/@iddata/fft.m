@@ -22,7 +22,11 @@
 ## @seealso{ifft, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = fft (dat, n = [], varargin)
+function varargout = fft (varargin)
+  varargout = contsid_guard ({"fft", "iddata"}, @fft_body, nargout, varargin);
+endfunction
+
+function [dat, varargout] = fft_body (dat, n = [], varargin)
   contsid_nargchk ("fft", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 2)
     error ("iddata:badInput",

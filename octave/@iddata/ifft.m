@@ -16,7 +16,11 @@
 ## @seealso{fft, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = ifft (dat, varargin)
+function varargout = ifft (varargin)
+  varargout = contsid_guard ({"ifft", "iddata"}, @ifft_body, nargout, varargin);
+endfunction
+
+function [dat, varargout] = ifft_body (dat, varargin)
   contsid_nargchk ("ifft", nargin, nargout, [1 Inf], 1);
   if (nargin != 1)
     error ("iddata:badInput",

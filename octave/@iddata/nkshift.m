@@ -18,7 +18,12 @@
 ## @seealso{iddata, diff}
 ## @end deftypefn
 
-function [dat, varargout] = nkshift (dat, nk = 0, append, varargin)
+function varargout = nkshift (varargin)
+  varargout = contsid_guard ({"nkshift", "iddata"}, @nkshift_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = nkshift_body (dat, nk = 0, append, varargin)
   contsid_nargchk ("nkshift", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 3)
     error ("iddata:badInput",

@@ -15,7 +15,12 @@
 ## @seealso{idresamp, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = resample (dat, p, q, varargin)
+function varargout = resample (varargin)
+  varargout = contsid_guard ({"resample", "iddata"}, @resample_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = resample_body (dat, p, q, varargin)
   contsid_nargchk ("resample", nargin, nargout, [1 Inf], 1);
   if (nargin != 3)
     if (nargin == 4)

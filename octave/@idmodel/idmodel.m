@@ -19,7 +19,12 @@
 ## @seealso{idpoly, idtf, idproc, idss, idfrd}
 ## @end deftypefn
 
-function [M, varargout] = idmodel (kind, par, ny, nu, varargin)
+function varargout = idmodel (varargin)
+  varargout = contsid_guard ({"idmodel", "idmodel"}, @idmodel_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = idmodel_body (kind, par, ny, nu, varargin)
   contsid_nargchk ("idmodel", nargin, nargout, [0 4], 1);
   if (nargin != 4 || ! ischar (kind) || ! isstruct (par))
     error ("idmodel:badInput", "idmodel: expected kind, par, ny and nu");

@@ -9,7 +9,11 @@
 ## property names.
 ## @end deftypefn
 
-function [M, varargout] = set (M, varargin)
+function varargout = set (varargin)
+  varargout = contsid_guard ({"set", "idmodel"}, @set_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = set_body (M, varargin)
   contsid_nargchk ("set", nargin, nargout, [1 Inf], 1);
   P = pstruct (M);
   if (nargin == 1)

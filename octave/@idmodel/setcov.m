@@ -11,7 +11,12 @@
 ## Errors: @code{<class>:dimensionMismatch}, @code{<class>:badInput}.
 ## @end deftypefn
 
-function [M, varargout] = setcov (M, C, varargin)
+function varargout = setcov (varargin)
+  varargout = contsid_guard ({"setcov", "idmodel"}, @setcov_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = setcov_body (M, C, varargin)
   contsid_nargchk ("setcov", nargin, nargout, [2 2], 1);
   P = pstruct (M);
   np = numel (pvec_of (P));

@@ -8,7 +8,12 @@
 ## the covariance is kept (it describes the same parameters).  A vector of the wrong length: @code{<class>:dimensionMismatch}.
 ## @end deftypefn
 
-function [M, varargout] = setpvec (M, p, varargin)
+function varargout = setpvec (varargin)
+  varargout = contsid_guard ({"setpvec", "idmodel"}, @setpvec_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = setpvec_body (M, p, varargin)
   contsid_nargchk ("setpvec", nargin, nargout, [2 2], 1);
   P = pstruct (M);
   p0 = pvec_of (P);

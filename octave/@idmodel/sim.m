@@ -18,7 +18,11 @@
 ## continuous-time one @code{sim (M, u, Ts)}.
 ## @end deftypefn
 
-function [y, varargout] = sim (M, data, Ts, varargin)
+function varargout = sim (varargin)
+  varargout = contsid_guard ({"sim", "idmodel"}, @sim_body, nargout, varargin);
+endfunction
+
+function [y, varargout] = sim_body (M, data, Ts, varargin)
   contsid_nargchk ("sim", nargin, nargout, [1 3], 1);
   P = pstruct (M);
   if (nargin < 2)
