@@ -48,6 +48,18 @@ endfunction
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "NoiseVariance", -1)
 %!error id=idpoly:badInput set (idpoly (1, 2, 1, 1, [1 3 2], 1, 0), "nk", Inf)
 %!error id=idpoly:badInput set (idpoly (1, 2, 1, 1, [1 3 2], 1, 0), "nk", NaN)
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "theta", [4 2.4 NaN]);
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance", -eye (3));
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance", [1 2; 0 1]);
+%!error id=idproc:badInput set (idproc ("P1D", "Kp", 2), "Kp", Inf)
+%!error id=idproc:badInput idproc ("P1D", "Kp", -Inf)
+%!test
+%! M = set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance",
+%!          int8 (eye (3)));
+%! assert (getcov (M), eye (3));
 
 %!demo
 %! M = set (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), "InputDelay", 0.3)

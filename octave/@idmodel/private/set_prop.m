@@ -246,10 +246,11 @@ function M = set_theta (M, v, fname)
   endif
 endfunction
 
+## CONTSID's covariance, in the order of theta: checked as setcov checks
+## it (symmetric positive semi-definite).
 function M = set_covariance (M, v, fname)
-  if (! isnumeric (v) || ! isreal (v) || rows (v) != columns (v))
-    error ([fname ":badInput"], "%s: covariance must be a square matrix",
-           fname);
+  if (! isempty (v))
+    v = check_cov (v, fname);
   endif
   T = legacy_order (M);
   if (rows (v) == columns (T) && isempty (M.legacy.theta))
@@ -348,6 +349,11 @@ function s = check_structure (s, old, fname)
     if (! isnumeric (e.Value) || ! isscalar (e.Value) || ! isreal (e.Value))
       error ([fname ":badInput"],
              "%s: Structure.%s.Value must be a real scalar", fname, f{1});
+    endif
+    if (isinf (e.Value))
+      error ([fname ":badInput"],
+             "%s: Structure.%s.Value must be finite (NaN: not yet known)",
+             fname, f{1});
     endif
     if (! isnan (e.Value) && (e.Value < e.Minimum || e.Value > e.Maximum))
       error ([fname ":badInput"],
