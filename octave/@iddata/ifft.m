@@ -29,6 +29,11 @@ function [dat, varargout] = ifft_body (dat, varargin)
   if (dat.timedomain)
     return;
   endif
+  if (! all (cellfun (@(x) all (isfinite (x(:))), [dat.y(:); dat.u(:)])))
+    error ("iddata:notSupported",
+           ["iddata: ifft: the data hold NaN or Inf; the inverse ", ...
+            "transform would spread them over every sample"]);
+  endif
   for e = 1:numel (dat.y)
     w = dat.w{e};
     m = numel (w);
@@ -83,6 +88,8 @@ endfunction
 
 %!error id=iddata:badInput
 %! ifft (iddata ([1; 2; 3], [], 1, "Frequency", [1; 2; 3]));
+%!error id=iddata:notSupported
+%! ifft (iddata ([1; NaN; 3], [1; 2; 3], 1, "Frequency", [0; pi/2; pi]));
 %!error id=iddata:badInput
 %! ifft (iddata ([1; 2; 3], [], 1, "Frequency", [0; 1; 3]));
 %!error id=iddata:badInput ifft (fft (iddata ((1:4).', [], 1)), 2)
