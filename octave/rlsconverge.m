@@ -134,7 +134,8 @@ function [tsiv, info, thm, yh, varargout] = rlsconverge_body (varargin)
   endfor
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                               varargin{:});
-  rls = contsid_recursive_options (fname, opts, orders.np);
+  contsid_check_input (fname, d.u, orders.nb);
+  rls = contsid_recursive_options (fname, opts, orders.np, d);
   det = struct ();
   for i = 1:numel (dnames)
     det.(dnames{i}) = opts.(dnames{i});

@@ -206,14 +206,7 @@ function varargout = rlssvf_body (varargin)
     contsid_rethrow (err);
   end_try_catch
   varargout = contsid_expand (varargout, p.d);
-  if (nargout > 1 && ! all (isfinite (varargout{2}(:))))
-    ## (e.g. lambda_svf far above the Nyquist frequency pi/Ts: the frozen
-    ## models are meaningless and their output overflows)
-    error ("rlssvf:numericalFailure",
-           ["rlssvf: the frozen-model output yh is not finite from sample ", ...
-            "%d on (is lambda_svf far above pi/Ts?)"],
-           find (! isfinite (varargout{2}), 1));
-  endif
+  contsid_check_track ("rlssvf", varargout);
 endfunction
 
 %!shared Ts, u, y, data

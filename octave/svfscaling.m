@@ -52,7 +52,7 @@ function [m, varargout] = svfscaling_body (varargin)
   endif
   [~, orders] = contsid_recursive_args (fname, form, defaults, varargin{:});
   opts.adm = "ff"; opts.adg = []; opts.th0 = []; opts.P0 = [];
-  o = contsid_recursive_options (fname, opts, orders.np);
+  o = contsid_recursive_options (fname, opts, orders.np, d);
   o = contsid_ch3_options (fname, struct ("scaling", "self",
                                           "precision", "double",
                                           "antiwindup", 0,
