@@ -80,12 +80,16 @@ function [args, nout] = make_call (tgt)
     [pool, templates, names] = value_pool ();
     own = fuzz_public_templates ();
   endif
-  numeric = strcmp (tgt.cls, "double");
+  ## methods of the built-in classes: the pre-LTI step/bode/pzmap forms
+  numeric = any (strcmp (tgt.cls, {"double", "single", "int8", "int16",
+                                   "int32", "int64", "uint8", "uint16",
+                                   "uint32", "uint64", "logical", "char",
+                                   "cell", "struct", "function_handle"}));
   switch (tgt.kind)
     case "method"
       if (numeric)
-        ## A method of the built-in class double (the pre-LTI step/bode/
-        ## pzmap forms): its calls stay numeric (see mpool below).
+        ## A method of a built-in class (the pre-LTI step/bode/pzmap
+        ## forms): its calls are numeric (see mpool below).
         args = pick (numeric_templates ());
         args = args(1:randi (numel (args)));
         obj = [];
@@ -110,11 +114,11 @@ function [args, nout] = make_call (tgt)
   endswitch
   mpool = pool;
   if (numeric)
-    ## Only double (and char, which ranks below it) arguments keep the
-    ## dispatch on the class double: a cell, single, integer, logical,
-    ## struct or object argument sends the call to the control package's
-    ## function of that name instead of ours.
-    mpool = pool(cellfun (@(v) isa (v, "double") || ischar (v), pool));
+    ## No object: a call with an object goes to the control package (or
+    ## the object's class), not to these methods.  The built-in classes
+    ## other than double link to the same files (a call whose arguments
+    ## are all built-in goes to the highest of their classes).
+    mpool = pool(! cellfun ("isobject", pool));
   endif
   nmut = randi ([0 3]);                  # 0: a well-formed call
   for m = 1:nmut

@@ -210,10 +210,18 @@ function [targets, gwdir] = discover (root, tmp)
                              "function", "cls", "");
   endfor
   c = dir (fullfile (root, "octave", "@*"));
+  seen = {};
   for i = 1:numel (c)
     cls = c(i).name(2:end);
     m = dir (fullfile (root, "octave", c(i).name, "*.m"));
     for j = 1:numel (m)
+      ## a method file linked into several class folders (@double's
+      ## step, bode, pzmap) is one target
+      file = canonicalize_file_name (fullfile (m(j).folder, m(j).name));
+      if (any (strcmp (file, seen)))
+        continue;
+      endif
+      seen{end+1} = file;
       name = m(j).name(1:end-2);
       kind = "method";
       if (strcmp (name, cls))
