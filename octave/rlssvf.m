@@ -386,6 +386,10 @@ endfunction
 
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput
+%! rlssvf (iddata (y, zeros (size (u)), Ts), [2 1 0], "lambda_svf", 3);
+%!warning id=rlssvf:cutoffAboveNyquist
+%! thm = rlssvf (data, [2 1 0], "lambda_svf", 1e9);
 %!error id=rlssvf:badInput rlssvf (data, [2.5 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [2 4 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [2 0 0], "lambda_svf", 2)

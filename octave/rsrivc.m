@@ -143,6 +143,10 @@ endfunction
 %! assert (thm(end, :), [4 2.4 4], 1e-2);
 
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "A", [1 -1 4])
+%!error id=rsrivc:badInput
+%! rsrivc (iddata (x, zeros (N, 1), Ts), [1 2 0], "lambda_svf", 3);
+%!warning id=rsrivc:cutoffAboveNyquist
+%! thm = rsrivc (data, [1 2 0], "lambda_svf", 1e9, "tsiv", 5);
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", 1)
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", "on")
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", 300, "antiwindup_lambda", 1.5)
