@@ -37,6 +37,11 @@
 ## @item lambda_svf
 ## cut-off frequency (rad/s) of the state-variable filter, required. It may
 ## also be given by position after @var{nn} (CONTSID 7.0/7.1 syntax).
+## Above the Nyquist frequency @code{pi/Ts} (the median interval of
+## irregular samples) it warns, @code{rlssvf:cutoffAboveNyquist} (the
+## other SVF estimators likewise, under their names): the filter then
+## passes what the samples do not hold, and far above it the regressors
+## lose all precision and the estimates are meaningless.
 ## @item adm
 ## adaptation mechanism: @qcode{"ff"} forgetting factor (default) or
 ## @qcode{"kf"} Kalman filter with random-walk parameters (@qcode{"rw"} is
@@ -115,6 +120,13 @@
 ## single precision (on a single-precision copy of the data), as on a
 ## microcontroller; the outputs are returned as double.
 ## @end table
+##
+## An input that is zero at every sample leaves the numerator without
+## excitation: @code{rlssvf:badInput} (before any update, as the offline
+## estimators refuse it).  Estimates or a frozen-model output that are not
+## finite (a cut-off far above @code{pi/Ts}, a diverging recursion):
+## @code{rlssvf:numericalFailure}.  The other recursive estimators do the
+## same under their names.
 ##
 ## @strong{Outputs}
 ## @table @var
