@@ -46,3 +46,20 @@ function out = contsid_guard (fname, body, nout, args)
     contsid_rethrow (err, fname);
   end_try_catch
 endfunction
+
+%!test  # outputs as asked; without outputs the first becomes ans
+%! out = contsid_guard ("f", @(x) deal (x + 1, x + 2), 2, {1});
+%! assert (out, {2, 3});
+%! assert (contsid_guard ("f", @(x) x + 1, 0, {1}), {2});
+%!error id=f:badInput
+%! contsid_guard ("f", @() error ("inner:badInput", "inner: bad"), 1, {});
+%!error id=f:indexOutOfBounds contsid_guard ("f", @(x) x(3), 1, {[1 2]});
+%!test  # a method keeps its objects' classes' identifiers
+%! M = idtf (1, [1 1]);
+%! try
+%!   contsid_guard ({"m", "idmodel"},
+%!                  @(M) error ("idtf:badInput", "idtf: bad"), 1, {M});
+%! catch err
+%!   assert (err.identifier, "idtf:badInput");
+%!   assert (err.message, "idtf: bad");
+%! end_try_catch
