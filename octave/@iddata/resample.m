@@ -52,7 +52,7 @@ endfunction
 
 %!error id=iddata:badInput resample (iddata ((1:9).', [], 1), 1.5, 1)
 %!error id=iddata:notSupported resample (iddata ((1:9).', [], 1), 1, 2, 10)
-%!error id=idresamp:notSupported
+%!error id=resample:notSupported
 %! resample (iddata ((1:3).', [], [0 1 3]), 1, 2);
 %!error id=iddata:badInput resample (iddata ((1:9).', [], 1), 1)
 
