@@ -75,9 +75,9 @@ function varargout = idinput (varargin)
   varargout = contsid_guard ("idinput", @idinput_body, nargout, varargin);
 endfunction
 
-function [u, freqs, varargout] = idinput_body (N, type = "rgs", band = [0, 1],
-                                          levels = [-1, 1],
-                                          sinedata = [10, 10, 1], varargin)
+function [u, freqs, varargout] = idinput_body (N, type = "rgs",
+                                               band = [0, 1], levels = [-1, 1],
+                                               sinedata = [10, 10, 1], varargin)
   contsid_nargchk ("idinput", nargin, nargout, [0 Inf], 2);
   if (nargin < 1 || nargin > 5)
     error ("idinput:badInput",

@@ -67,8 +67,8 @@ function varargout = idresamp (varargin)
   varargout = contsid_guard ("idresamp", @idresamp_body, nargout, varargin);
 endfunction
 
-function [datar, ract, varargout] = idresamp_body (data, R, order = 10, tol = [],
-                                              varargin)
+function [datar, ract, varargout] = idresamp_body (data, R, order = 10,
+                                                   tol = [], varargin)
   contsid_nargchk ("idresamp", nargin, nargout, [0 Inf], 2);
   if (nargin < 2 || nargin > 4)
     error ("idresamp:badInput",

@@ -31,8 +31,8 @@
 ## @end deftypefn
 
 function varargout = residtrace_table (varargin)
-  varargout = contsid_guard ("residtrace_table", @residtrace_table_body, nargout,
-                             varargin);
+  varargout = contsid_guard ("residtrace_table", @residtrace_table_body,
+                             nargout, varargin);
 endfunction
 
 function [md, varargout] = residtrace_table_body (R, file, varargin)

@@ -334,7 +334,8 @@ endfunction
 %!error id=svfcutoff:badInput svfcutoff (iddata (zeros (N, 1), [u u], Ts), [1 1 2 0 0])
 %!error id=svfcutoff:badOption svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 2, "seglength", 10)
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 0)
-%!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 1e308)
+%!error id=svfcutoff:badInput
+%! svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 1e308);
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 2.5)
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", "a")
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "seglength", -1)

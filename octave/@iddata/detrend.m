@@ -53,7 +53,8 @@ function varargout = detrend (varargin)
                              varargin);
 endfunction
 
-function [dat, trend, varargout] = detrend_body (dat, type = 0, brkp = [], varargin)
+function [dat, trend, varargout] = detrend_body (dat, type = 0, brkp = [],
+                                                 varargin)
   contsid_nargchk ("detrend", nargin, nargout, [1 Inf], 2);
   if (nargin > 3)
     error ("iddata:badInput",

@@ -30,8 +30,8 @@
 ## @end deftypefn
 
 function varargout = samplinginfo (varargin)
-  varargout = contsid_guard ({"samplinginfo", "iddata"}, @samplinginfo_body, nargout,
-                             varargin);
+  varargout = contsid_guard ({"samplinginfo", "iddata"}, @samplinginfo_body,
+                             nargout, varargin);
 endfunction
 
 function [info, varargout] = samplinginfo_body (dat, varargin)

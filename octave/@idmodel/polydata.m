@@ -15,8 +15,8 @@ function varargout = polydata (varargin)
                              varargin);
 endfunction
 
-function [A, B, C, D, F, dA, dB, dC, dD, dF, varargout] = polydata_body (M,
-                                                                    varargin)
+function [A, B, C, D, F, dA, dB, dC, dD, dF, varargout] = ...
+         polydata_body (M, varargin)
   contsid_nargchk ("polydata", nargin, nargout, [1 1], 10);
   if (! isa (M, "idpoly"))
     M = idpoly (M);

@@ -9,8 +9,8 @@
 ## @end deftypefn
 
 function varargout = totaldelay (varargin)
-  varargout = contsid_guard ({"totaldelay", "idmodel"}, @totaldelay_body, nargout,
-                             varargin);
+  varargout = contsid_guard ({"totaldelay", "idmodel"}, @totaldelay_body,
+                             nargout, varargin);
 endfunction
 
 function [d, varargout] = totaldelay_body (M, varargin)

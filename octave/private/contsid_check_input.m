@@ -26,7 +26,8 @@ function contsid_check_input (fname, u, nb)
 endfunction
 
 %!error id=f:badInput contsid_check_input ("f", zeros (10, 1), 1)
-%!error id=f:badInput contsid_check_input ("f", [ones(10, 1), [NaN; zeros(9, 1)]], [1 2])
+%!error id=f:badInput
+%! contsid_check_input ("f", [ones(10, 1), [NaN; zeros(9, 1)]], [1 2]);
 %!test
 %! contsid_check_input ("f", [ones(10, 1), zeros(10, 1)], [1 0]);
 %! contsid_check_input ("f", [zeros(9, 1); 1], 2);

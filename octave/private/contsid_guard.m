@@ -2,7 +2,8 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{out} =} contsid_guard (@var{fname}, @var{body}, @var{nout}, @var{args})
+## @deftypefn {} {@var{out} =} contsid_guard (@var{fname}, @var{body}, @
+##   @var{nout}, @var{args})
 ## Runs the body @var{body} (a handle) of the public function @var{fname}
 ## with the arguments @var{args} (a cell) and @var{nout} outputs, returned
 ## in the cell @var{out}, and re-raises any error under the identifier of

@@ -2,7 +2,8 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{o} =} contsid_recursive_options (@var{fname}, @var{opts}, @var{np}, @var{d})
+## @deftypefn {} {@var{o} =} contsid_recursive_options (@var{fname}, @
+##   @var{opts}, @var{np}, @var{d})
 ## Checks and normalises the options shared by the recursive routines for a
 ## model with @var{np} parameters estimated on the record @var{d} (a
 ## struct of @code{contsid_getdata}):
