@@ -51,6 +51,8 @@ endfunction
 %!error id=idpoly:badInput
 %! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "theta", [4 2.4 NaN]);
 %!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "theta", NaN);
+%!error id=idpoly:badInput
 %! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance", -eye (3));
 %!error id=idpoly:badInput
 %! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance", [1 2; 0 1]);

@@ -229,8 +229,10 @@ endfunction
 ## CONTSID's theta [denominators, numerators]; a longer theta (a model
 ## with extra terms, residtrace) is only stored.
 function M = set_theta (M, v, fname)
-  if (! isnumeric (v) || ! isreal (v) || ! (isvector (v) || isempty (v)))
-    error ([fname ":badInput"], "%s: theta must be a real vector", fname);
+  if (! isnumeric (v) || ! isreal (v) || ! (isvector (v) || isempty (v))
+      || any (! isfinite (v)))
+    error ([fname ":badInput"], "%s: theta must be a finite real vector",
+           fname);
   endif
   T = legacy_order (M);
   if (numel (v) == columns (T))
