@@ -18,7 +18,11 @@
 ## @seealso{Wie, simc_hw, hwsrivc}
 ## @end deftypefn
 
-function [ubar, varargout] = Ham (varargin)
+function varargout = Ham (varargin)
+  varargout = contsid_guard ("Ham", @Ham_body, nargout, varargin);
+endfunction
+
+function [ubar, varargout] = Ham_body (varargin)
   contsid_nargchk ("Ham", nargin, nargout, [0 1], 1);
   NL_H = [1, -2, 0.8];
   if (nargin == 0)

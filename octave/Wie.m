@@ -23,7 +23,11 @@
 ## @seealso{Ham, simc_hw, hwsrivc}
 ## @end deftypefn
 
-function [x, varargout] = Wie (varargin)
+function varargout = Wie (varargin)
+  varargout = contsid_guard ("Wie", @Wie_body, nargout, varargin);
+endfunction
+
+function [x, varargout] = Wie_body (varargin)
   contsid_nargchk ("Wie", nargin, nargout, [0 1], 1);
   NL_W = [1, 1.5, 1];
   if (nargin == 0)

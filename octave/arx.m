@@ -32,7 +32,11 @@
 ## @seealso{oe, delayest}
 ## @end deftypefn
 
-function [M, info, varargout] = arx (varargin)
+function varargout = arx (varargin)
+  varargout = contsid_guard ("arx", @arx_body, nargout, varargin);
+endfunction
+
+function [M, info, varargout] = arx_body (varargin)
   contsid_nargchk ("arx", nargin, nargout, [2 Inf], 2);
   if (! sitb_form (varargin))
     [M, info] = control_arx (varargin, nargout);

@@ -53,7 +53,11 @@
 ## @seealso{svfcutoff, srivc, bode4frozensys}
 ## @end deftypefn
 
-function [wb, kind, gref, varargout] = bandwidthc (varargin)
+function varargout = bandwidthc (varargin)
+  varargout = contsid_guard ("bandwidthc", @bandwidthc_body, nargout, varargin);
+endfunction
+
+function [wb, kind, gref, varargout] = bandwidthc_body (varargin)
   contsid_nargchk ("bandwidthc", nargin, nargout, [0 Inf], 3);
   fname = "bandwidthc";
   if (nargin < 1)

@@ -35,7 +35,12 @@
 ## @seealso{rlssvf, rivsvf, rsrivc}
 ## @end deftypefn
 
-function [mag, phase, w, varargout] = bode4frozensys (THM, nn, varargin)
+function varargout = bode4frozensys (varargin)
+  varargout = contsid_guard ("bode4frozensys", @bode4frozensys_body, nargout,
+                             varargin);
+endfunction
+
+function [mag, phase, w, varargout] = bode4frozensys_body (THM, nn, varargin)
   contsid_nargchk ("bode4frozensys", nargin, nargout, [2 Inf], 3);
   fname = "bode4frozensys";
   if (nargin >= 1 && (isobject (THM) || isstruct (THM)))

@@ -22,7 +22,12 @@
 ## @seealso{bodeplot, stepplot}
 ## @end deftypefn
 
-function [opt, varargout] = bodeoptions (varargin)
+function varargout = bodeoptions (varargin)
+  varargout = contsid_guard ("bodeoptions", @bodeoptions_body, nargout,
+                             varargin);
+endfunction
+
+function [opt, varargout] = bodeoptions_body (varargin)
   contsid_nargchk ("bodeoptions", nargin, nargout, [0 Inf], 1);
   if (nargin > 1 || (nargin == 1 && ! strcmpi (varargin{1}, "cstprefs")))
     error ("bodeoptions:badInput",

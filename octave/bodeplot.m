@@ -37,7 +37,11 @@
 ## @seealso{bodeoptions, stepplot, bode}
 ## @end deftypefn
 
-function [h, varargout] = bodeplot (varargin)
+function varargout = bodeplot (varargin)
+  varargout = contsid_guard ("bodeplot", @bodeplot_body, nargout, varargin);
+endfunction
+
+function [h, varargout] = bodeplot_body (varargin)
   contsid_nargchk ("bodeplot", nargin, nargout, [0 Inf], 1);
   [systems, styles, range, opt] = ltiplot_args ("bodeplot", varargin);
   opt = read_options (opt);

@@ -21,7 +21,11 @@
 ## @seealso{randg, randn, prbs}
 ## @end deftypefn
 
-function [x, varargout] = chisqr (varargin)
+function varargout = chisqr (varargin)
+  varargout = contsid_guard ("chisqr", @chisqr_body, nargout, varargin);
+endfunction
+
+function [x, varargout] = chisqr_body (varargin)
   contsid_nargchk ("chisqr", nargin, nargout, [3 3], 1);
   [M, N, V] = varargin{:};
   M = count (M, "M");

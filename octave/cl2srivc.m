@@ -69,7 +69,11 @@
 ## @seealso{clrivc, clsrivc, srivc}
 ## @end deftypefn
 
-function [M, M_T, varargout] = cl2srivc (varargin)
+function varargout = cl2srivc (varargin)
+  varargout = contsid_guard ("cl2srivc", @cl2srivc_body, nargout, varargin);
+endfunction
+
+function [M, M_T, varargout] = cl2srivc_body (varargin)
   contsid_nargchk ("cl2srivc", nargin, nargout, [4 9], 3);
   [M, info, d] = contsid_rivc ("cl2srivc", varargin);
   M_T = [];

@@ -65,7 +65,11 @@
 ## @seealso{rivc, clsrivc, cl2srivc}
 ## @end deftypefn
 
-function [M, C, varargout] = clrivc (varargin)
+function varargout = clrivc (varargin)
+  varargout = contsid_guard ("clrivc", @clrivc_body, nargout, varargin);
+endfunction
+
+function [M, C, varargout] = clrivc_body (varargin)
   contsid_nargchk ("clrivc", nargin, nargout, [4 11], 3);
   [M, info] = contsid_rivc ("clrivc", varargin);
   C = info.C;

@@ -43,6 +43,10 @@
 ## @end deftypefn
 
 function varargout = clrivsvf (varargin)
+  varargout = contsid_guard ("clrivsvf", @clrivsvf_body, nargout, varargin);
+endfunction
+
+function varargout = clrivsvf_body (varargin)
   contsid_nargchk ("clrivsvf", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("clrivsvf", nargout,
                                                 varargin{:});

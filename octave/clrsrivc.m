@@ -33,6 +33,10 @@
 ## @end deftypefn
 
 function varargout = clrsrivc (varargin)
+  varargout = contsid_guard ("clrsrivc", @clrsrivc_body, nargout, varargin);
+endfunction
+
+function varargout = clrsrivc_body (varargin)
   contsid_nargchk ("clrsrivc", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("clrsrivc", nargout,
                                                 varargin{:});

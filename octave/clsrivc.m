@@ -48,7 +48,11 @@
 ## @seealso{srivc, clrsrivc}
 ## @end deftypefn
 
-function [M, RT2, YIC, info, varargout] = clsrivc (varargin)
+function varargout = clsrivc (varargin)
+  varargout = contsid_guard ("clsrivc", @clsrivc_body, nargout, varargin);
+endfunction
+
+function [M, RT2, YIC, info, varargout] = clsrivc_body (varargin)
   contsid_nargchk ("clsrivc", nargin, nargout, [0 Inf], 4);
   [M, RT2, YIC, info] = contsid_offline ("clsrivc", varargin);
 endfunction

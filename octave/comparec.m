@@ -32,6 +32,8 @@
 ## reports;
 ## @item Fit
 ## 100 (1 - ||y - ys|| / ||y - mean(y)||) in %;
+## (RT2 and Fit are NaN for an output that is constant on the compared
+## samples, with a warning @code{comparec:constantOutput});
 ## @item MSE
 ## mean((y - ys)^2);
 ## @item RMSE
@@ -61,7 +63,11 @@
 ## @seealso{residc, simc, srivc}
 ## @end deftypefn
 
-function [ys, estInfo, varargout] = comparec (varargin)
+function varargout = comparec (varargin)
+  varargout = contsid_guard ("comparec", @comparec_body, nargout, varargin);
+endfunction
+
+function [ys, estInfo, varargout] = comparec_body (varargin)
   contsid_nargchk ("comparec", nargin, nargout, [0 Inf], 2);
   [d, yhat, rest] = contsid_model_output ("comparec", varargin);
   N = rows (d.y);
@@ -110,6 +116,18 @@ function [ys, estInfo, varargout] = comparec (varargin)
   info.RT2 = 1 - var (e, 1) ./ var (y, 1);
   info.Fit = 100 * (1 - sqrt (sum (e .^ 2))
                      ./ sqrt (sum ((y - mean (y)) .^ 2)));
+  flat = var (y, 1) == 0;
+  if (any (flat))
+    ## Fit and RT2 divide by the output's variation: undefined (they
+    ## were -Inf, or NaN on an all-zero output)
+    info.RT2(flat) = NaN;
+    info.Fit(flat) = NaN;
+    warning ("comparec:constantOutput",
+             ["comparec: output %s is constant on the compared samples: ", ...
+              "Fit and RT2 are undefined (NaN); see MSE"],
+             strjoin (arrayfun (@num2str, find (flat), "UniformOutput",
+                                false), ", "));
+  endif
   info.MSE = mean (e .^ 2);
   info.RMSE = sqrt (info.MSE);
   info.x0 = x0;
@@ -160,6 +178,16 @@ endfunction
 %! assert (info.RT2, 1 - var (e) / var (y(INT)), 1e-12);
 %! [~, info2] = comparec (y, u, Ts, M, INT);
 %! assert (info2, info);
+
+%!test  # a constant output: Fit and RT2 undefined (NaN)
+%! warning ("off", "comparec:constantOutput", "local");
+%! for c = [0 2]
+%!   [~, info] = comparec (iddata (c * ones (numel (u), 1), u, Ts), M);
+%!   assert ([info.Fit, info.RT2], [NaN NaN]);
+%!   assert (info.MSE, mean ((c - x) .^ 2), 1e-12);
+%! endfor
+%!warning id=comparec:constantOutput
+%! [~, info] = comparec (iddata (zeros (numel (u), 1), u, Ts), M);
 
 %!test  # a recursive estimate (constant rows) equals the LTI model
 %! THM = repmat ([2.4 4 4], numel (u), 1);

@@ -30,7 +30,11 @@
 ## @seealso{iddata, procsrivc, srivc}
 ## @end deftypefn
 
-function [zc, tc, varargout] = compress (varargin)
+function varargout = compress (varargin)
+  varargout = contsid_guard ("compress", @compress_body, nargout, varargin);
+endfunction
+
+function [zc, tc, varargout] = compress_body (varargin)
   contsid_nargchk ("compress", nargin, nargout, [3 3], 3);
   [z, Ts, Dy] = varargin{:};
   if (! isnumeric (z) || ! isreal (z) || ndims (z) != 2 || isempty (z)

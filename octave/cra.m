@@ -25,7 +25,11 @@
 ## @seealso{delayest, arx, spafdr}
 ## @end deftypefn
 
-function [ir, R, cl, varargout] = cra (varargin)
+function varargout = cra (varargin)
+  varargout = contsid_guard ("cra", @cra_body, nargout, varargin);
+endfunction
+
+function [ir, R, cl, varargout] = cra_body (varargin)
   contsid_nargchk ("cra", nargin, nargout, [1 7], 3);
   d = contsid_getdata ("cra", varargin{:});
   rest = varargin(d.nconsumed+1:end);

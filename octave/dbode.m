@@ -21,7 +21,11 @@
 ## @seealso{bode, step}
 ## @end deftypefn
 
-function [mag, phase, w, varargout] = dbode (varargin)
+function varargout = dbode (varargin)
+  varargout = contsid_guard ("dbode", @dbode_body, nargout, varargin);
+endfunction
+
+function [mag, phase, w, varargout] = dbode_body (varargin)
   contsid_nargchk ("dbode", nargin, nargout, [0 Inf], 3);
   if (! exist ("tf"))
     error ("dbode:notSupported", "dbode: needs the control package");

@@ -22,7 +22,11 @@
 ## @seealso{arx, tfsrivc}
 ## @end deftypefn
 
-function [nk, loss, varargout] = delayest (varargin)
+function varargout = delayest (varargin)
+  varargout = contsid_guard ("delayest", @delayest_body, nargout, varargin);
+endfunction
+
+function [nk, loss, varargout] = delayest_body (varargin)
   contsid_nargchk ("delayest", nargin, nargout, [1 6], 2);
   d = contsid_getdata ("delayest", varargin{:});
   contsid_check_output ("delayest", d.y);

@@ -29,6 +29,10 @@
 ## @end deftypefn
 
 function varargout = extractPoles (varargin)
+  varargout = contsid_guard ("extractPoles", @extractPoles_body, nargout, varargin);
+endfunction
+
+function varargout = extractPoles_body (varargin)
   contsid_nargchk ("extractPoles", nargin, nargout, [2 2], 1);
   varargout{1} = lpv_frozen_roots ("extractPoles", varargin{1}, varargin{2},
                                    true);

@@ -26,6 +26,10 @@
 ## @end deftypefn
 
 function varargout = extractZeros (varargin)
+  varargout = contsid_guard ("extractZeros", @extractZeros_body, nargout, varargin);
+endfunction
+
+function varargout = extractZeros_body (varargin)
   contsid_nargchk ("extractZeros", nargin, nargout, [2 2], 1);
   varargout{1} = lpv_frozen_roots ("extractZeros", varargin{1}, varargin{2},
                                    false);

@@ -27,7 +27,11 @@
 ## @seealso{freqresp, bode, idfrd}
 ## @end deftypefn
 
-function [h, w, varargout] = freqs (varargin)
+function varargout = freqs (varargin)
+  varargout = contsid_guard ("freqs", @freqs_body, nargout, varargin);
+endfunction
+
+function [h, w, varargout] = freqs_body (varargin)
   contsid_nargchk ("freqs", nargin, nargout, [2 3], 2);
   b = coefficients (varargin{1}, "b");
   a = coefficients (varargin{2}, "a");

@@ -39,7 +39,11 @@
 ## @seealso{hsrivc, hwsrivc, srivc}
 ## @end deftypefn
 
-function [model, Infos, varargout] = hrivc (varargin)
+function varargout = hrivc (varargin)
+  varargout = contsid_guard ("hrivc", @hrivc_body, nargout, varargin);
+endfunction
+
+function [model, Infos, varargout] = hrivc_body (varargin)
   contsid_nargchk ("hrivc", nargin, nargout, [2 Inf], 2);
   [model, Infos] = contsid_block ("hrivc", varargin);
 endfunction

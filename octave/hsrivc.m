@@ -66,7 +66,11 @@
 ## @seealso{hrivc, hwsrivc, srivc}
 ## @end deftypefn
 
-function [model, Infos, varargout] = hsrivc (varargin)
+function varargout = hsrivc (varargin)
+  varargout = contsid_guard ("hsrivc", @hsrivc_body, nargout, varargin);
+endfunction
+
+function [model, Infos, varargout] = hsrivc_body (varargin)
   contsid_nargchk ("hsrivc", nargin, nargout, [2 Inf], 2);
   [model, Infos] = contsid_block ("hsrivc", varargin);
 endfunction

@@ -56,7 +56,11 @@
 ## @seealso{hsrivc, hrivc}
 ## @end deftypefn
 
-function [model, Infos, varargout] = hwsrivc (varargin)
+function varargout = hwsrivc (varargin)
+  varargout = contsid_guard ("hwsrivc", @hwsrivc_body, nargout, varargin);
+endfunction
+
+function [model, Infos, varargout] = hwsrivc_body (varargin)
   contsid_nargchk ("hwsrivc", nargin, nargout, [2 Inf], 3);
   [model, Infos, yhat] = contsid_block ("hwsrivc", varargin);
   if (nargout > 2)

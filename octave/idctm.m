@@ -34,7 +34,11 @@
 ## @seealso{idpoly, srivc, lssvf, simc, comparec}
 ## @end deftypefn
 
-function [M, varargout] = idctm (varargin)
+function varargout = idctm (varargin)
+  varargout = contsid_guard ("idctm", @idctm_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = idctm_body (varargin)
   contsid_nargchk ("idctm", nargin, nargout, [0 Inf], 1);
   fields = {"B", "F", "nk", "Ts", "InterSample", "theta", "covariance", ...
             "noise_variance", "method", "iterations", "converged", "Report"};

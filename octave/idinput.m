@@ -71,9 +71,13 @@
 ## @seealso{prbs, iddata}
 ## @end deftypefn
 
-function [u, freqs, varargout] = idinput (N, type = "rgs", band = [0, 1],
-                                          levels = [-1, 1],
-                                          sinedata = [10, 10, 1], varargin)
+function varargout = idinput (varargin)
+  varargout = contsid_guard ("idinput", @idinput_body, nargout, varargin);
+endfunction
+
+function [u, freqs, varargout] = idinput_body (N, type = "rgs",
+                                               band = [0, 1], levels = [-1, 1],
+                                               sinedata = [10, 10, 1], varargin)
   contsid_nargchk ("idinput", nargin, nargout, [0 Inf], 2);
   if (nargin < 1 || nargin > 5)
     error ("idinput:badInput",

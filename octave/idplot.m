@@ -34,8 +34,12 @@
 ## @seealso{plot, iddata}
 ## @end deftypefn
 
-function [ax, varargout] = idplot (z, int = [], Ts = [], ny = 1, pc = "",
-                                   varargin)
+function varargout = idplot (varargin)
+  varargout = contsid_guard ("idplot", @idplot_body, nargout, varargin);
+endfunction
+
+function [ax, varargout] = idplot_body (z, int = [], Ts = [], ny = 1,
+                                        pc = "", varargin)
   contsid_nargchk ("idplot", nargin, nargout, [0 Inf], 1);
   if (nargin < 1 || nargin > 5)
     error ("idplot:badInput",

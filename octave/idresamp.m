@@ -63,8 +63,12 @@
 ## @seealso{iddata, resample}
 ## @end deftypefn
 
-function [datar, ract, varargout] = idresamp (data, R, order = 10, tol = [],
-                                              varargin)
+function varargout = idresamp (varargin)
+  varargout = contsid_guard ("idresamp", @idresamp_body, nargout, varargin);
+endfunction
+
+function [datar, ract, varargout] = idresamp_body (data, R, order = 10,
+                                                   tol = [], varargin)
   contsid_nargchk ("idresamp", nargin, nargout, [0 Inf], 2);
   if (nargin < 2 || nargin > 4)
     error ("idresamp:badInput",

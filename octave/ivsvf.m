@@ -21,7 +21,11 @@
 ## @seealso{lssvf, srivc, rivsvf}
 ## @end deftypefn
 
-function [M, varargout] = ivsvf (varargin)
+function varargout = ivsvf (varargin)
+  varargout = contsid_guard ("ivsvf", @ivsvf_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = ivsvf_body (varargin)
   contsid_nargchk ("ivsvf", nargin, nargout, [0 Inf], 1);
   M = contsid_offline ("ivsvf", varargin);
 endfunction

@@ -29,7 +29,11 @@
 ## @seealso{filter, filter2, conv2, sim_heat}
 ## @end deftypefn
 
-function [y, varargout] = local_filter3 (varargin)
+function varargout = local_filter3 (varargin)
+  varargout = contsid_guard ("local_filter3", @local_filter3_body, nargout, varargin);
+endfunction
+
+function [y, varargout] = local_filter3_body (varargin)
   contsid_nargchk ("local_filter3", nargin, nargout, [3 3], 1);
   [B, A, x] = varargin{:};
   names = {"B", "A", "x"};

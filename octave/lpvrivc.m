@@ -50,6 +50,10 @@
 ## @end deftypefn
 
 function varargout = lpvrivc (varargin)
+  varargout = contsid_guard ("lpvrivc", @lpvrivc_body, nargout, varargin);
+endfunction
+
+function varargout = lpvrivc_body (varargin)
   contsid_nargchk ("lpvrivc", nargin, nargout, [4 10], 5);
   [th, infos, ysim, c, d] = lpv_estimate ("lpvrivc", 4, varargin);
   varargout = {th, c, d, infos, ysim};

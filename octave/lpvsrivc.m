@@ -71,6 +71,10 @@
 ## @end deftypefn
 
 function varargout = lpvsrivc (varargin)
+  varargout = contsid_guard ("lpvsrivc", @lpvsrivc_body, nargout, varargin);
+endfunction
+
+function varargout = lpvsrivc_body (varargin)
   contsid_nargchk ("lpvsrivc", nargin, nargout, [4 10], 3);
   [th, infos, ysim] = lpv_estimate ("lpvsrivc", 2, varargin);
   varargout = {th, infos, ysim};

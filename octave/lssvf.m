@@ -31,7 +31,11 @@
 ## @seealso{ivsvf, srivc, rlssvf, idctm}
 ## @end deftypefn
 
-function [M, varargout] = lssvf (varargin)
+function varargout = lssvf (varargin)
+  varargout = contsid_guard ("lssvf", @lssvf_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = lssvf_body (varargin)
   contsid_nargchk ("lssvf", nargin, nargout, [0 Inf], 1);
   M = contsid_offline ("lssvf", varargin);
 endfunction

@@ -71,7 +71,11 @@
 ## @seealso{oeOptions, arx, tfest, tfcoe}
 ## @end deftypefn
 
-function [M, info, varargout] = oe (varargin)
+function varargout = oe (varargin)
+  varargout = contsid_guard ("oe", @oe_body, nargout, varargin);
+endfunction
+
+function [M, info, varargout] = oe_body (varargin)
   contsid_nargchk ("oe", nargin, nargout, [2 Inf], 2);
   [M, info] = contsid_pem ("oe", varargin);
 endfunction

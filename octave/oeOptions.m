@@ -20,7 +20,11 @@
 ## @seealso{oe, tfestOptions}
 ## @end deftypefn
 
-function [opt, varargout] = oeOptions (varargin)
+function varargout = oeOptions (varargin)
+  varargout = contsid_guard ("oeOptions", @oeOptions_body, nargout, varargin);
+endfunction
+
+function [opt, varargout] = oeOptions_body (varargin)
   contsid_nargchk ("oeOptions", nargin, nargout, [0 Inf], 1);
   opt = contsid_pem_options ("oeOptions", varargin);
 endfunction

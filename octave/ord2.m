@@ -31,7 +31,11 @@
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [a, b, c, d, varargout] = ord2 (wn, z, varargin)
+function varargout = ord2 (varargin)
+  varargout = contsid_guard ("ord2", @ord2_body, nargout, varargin);
+endfunction
+
+function [a, b, c, d, varargout] = ord2_body (wn, z, varargin)
   contsid_nargchk ("ord2", nargin, nargout, [0 Inf], 4);
   if (nargin != 2)
     error ("ord2:badInput",

@@ -44,7 +44,11 @@
 ## @seealso{pdesrivc4heatdiffusion, pderivc4heatdiffusion, sim_heat}
 ## @end deftypefn
 
-function [theta, varargout] = pdelssvf4heatdiffusion (varargin)
+function varargout = pdelssvf4heatdiffusion (varargin)
+  varargout = contsid_guard ("pdelssvf4heatdiffusion", @pdelssvf4heatdiffusion_body, nargout, varargin);
+endfunction
+
+function [theta, varargout] = pdelssvf4heatdiffusion_body (varargin)
   fname = "pdelssvf4heatdiffusion";
   contsid_nargchk (fname, nargin, nargout, [3 3], 1);
   [Data1, Data2, Filter] = varargin{:};

@@ -39,7 +39,11 @@
 ## @seealso{pdesrivc4heatdiffusion, pdelssvf4heatdiffusion, local_filter3, sim_heat}
 ## @end deftypefn
 
-function [theta, Cet, Det, Ces, Des, ni, varargout] = pderivc4heatdiffusion (varargin)
+function varargout = pderivc4heatdiffusion (varargin)
+  varargout = contsid_guard ("pderivc4heatdiffusion", @pderivc4heatdiffusion_body, nargout, varargin);
+endfunction
+
+function [theta, Cet, Det, Ces, Des, ni, varargout] = pderivc4heatdiffusion_body (varargin)
   fname = "pderivc4heatdiffusion";
   contsid_nargchk (fname, nargin, nargout, [4 6], 6);
   nn = varargin{4};

@@ -41,7 +41,11 @@
 ## @seealso{pdelssvf4heatdiffusion, pderivc4heatdiffusion, sim_heat}
 ## @end deftypefn
 
-function [theta, ni, varargout] = pdesrivc4heatdiffusion (varargin)
+function varargout = pdesrivc4heatdiffusion (varargin)
+  varargout = contsid_guard ("pdesrivc4heatdiffusion", @pdesrivc4heatdiffusion_body, nargout, varargin);
+endfunction
+
+function [theta, ni, varargout] = pdesrivc4heatdiffusion_body (varargin)
   fname = "pdesrivc4heatdiffusion";
   contsid_nargchk (fname, nargin, nargout, [3 5], 2);
   [theta, ni] = pde_heat_iv (fname, varargin, []);

@@ -19,7 +19,11 @@
 ## @seealso{angle, unwrap, bode}
 ## @end deftypefn
 
-function [phi, varargout] = phase (varargin)
+function varargout = phase (varargin)
+  varargout = contsid_guard ("phase", @phase_body, nargout, varargin);
+endfunction
+
+function [phi, varargout] = phase_body (varargin)
   contsid_nargchk ("phase", nargin, nargout, [1 1], 1);
   G = varargin{1};
   if (! (isnumeric (G) && ismatrix (G)) || any (! isfinite (G(:))))

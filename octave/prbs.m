@@ -67,7 +67,11 @@
 ## @seealso{iddata}
 ## @end deftypefn
 
-function [u, taps, varargout] = prbs (varargin)
+function varargout = prbs (varargin)
+  varargout = contsid_guard ("prbs", @prbs_body, nargout, varargin);
+endfunction
+
+function [u, taps, varargout] = prbs_body (varargin)
   contsid_nargchk ("prbs", nargin, nargout, [1 Inf], 2);
   npos = find (cellfun ("ischar", varargin), 1) - 1;
   if (isempty (npos))

@@ -45,7 +45,11 @@
 ## @seealso{idproc, tfsrivc}
 ## @end deftypefn
 
-function [M, varargout] = procsrivc (varargin)
+function varargout = procsrivc (varargin)
+  varargout = contsid_guard ("procsrivc", @procsrivc_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = procsrivc_body (varargin)
   contsid_nargchk ("procsrivc", nargin, nargout, [0 Inf], 1);
   fname = "procsrivc";
   if (nargin < 2)

@@ -68,7 +68,11 @@
 ## @seealso{rsrivc, rlssvf}
 ## @end deftypefn
 
-function [Qn, V, info, varargout] = qnml (varargin)
+function varargout = qnml (varargin)
+  varargout = contsid_guard ("qnml", @qnml_body, nargout, varargin);
+endfunction
+
+function [Qn, V, info, varargout] = qnml_body (varargin)
   contsid_nargchk ("qnml", nargin, nargout, [0 Inf], 3);
   fname = "qnml";
   if (nargin < 2)

@@ -44,7 +44,12 @@
 ## @seealso{rarxc, rlssvf}
 ## @end deftypefn
 
-function [thm, yhat, P, varargout] = rarx (z, nn, adm, adg, th0, P0, varargin)
+function varargout = rarx (varargin)
+  varargout = contsid_guard ("rarx", @rarx_body, nargout, varargin);
+endfunction
+
+function [thm, yhat, P, varargout] = rarx_body (z, nn, adm, adg, th0, P0,
+                                                varargin)
   contsid_nargchk ("rarx", nargin, nargout, [0 6], 3);
   if (nargin < 4)
     error ("rarx:badInput",

@@ -51,7 +51,11 @@
 ## @seealso{rarx, rlssvf}
 ## @end deftypefn
 
-function [THM, YH, info, varargout] = rarxc (varargin)
+function varargout = rarxc (varargin)
+  varargout = contsid_guard ("rarxc", @rarxc_body, nargout, varargin);
+endfunction
+
+function [THM, YH, info, varargout] = rarxc_body (varargin)
   contsid_nargchk ("rarxc", nargin, nargout, [0 Inf], 3);
   d = contsid_getdata ("rarxc", varargin{:});
   contsid_check_output ("rarxc", d.y);
@@ -122,6 +126,7 @@ endfunction
 %! assert (THM(end, :), [2.4 4 0 4], 1e-4);
 
 %!error id=rarxc:badInput rarxc (iddata (x, u, Ts), [2 2 0])
+%!error id=rarxc:badInput rarxc (iddata (x, zeros (N, 1), Ts), [2 1 1])
 %!error id=rarxc:badInput rarxc (iddata (x, u, Ts), [2 3 1])
 %!error id=rarxc:badInput rarxc (iddata (x, u, Ts))
 %!error id=rarxc:badInput rarxc (iddata (x, u, Ts), [2 2 1], "lambda_svf", -1)

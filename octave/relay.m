@@ -27,7 +27,11 @@
 ## @seealso{tffsrivc, tffcoe}
 ## @end deftypefn
 
-function [data, varargout] = relay (varargin)
+function varargout = relay (varargin)
+  varargout = contsid_guard ("relay", @relay_body, nargout, varargin);
+endfunction
+
+function [data, varargout] = relay_body (varargin)
   contsid_nargchk ("relay", nargin, nargout, [3 Inf], 1);
   [num, den, Ts] = deal (varargin{1:3});
   if (! isnumeric (num) || ! isnumeric (den) || ! isvector (num)

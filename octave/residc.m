@@ -53,7 +53,11 @@
 ## @seealso{comparec, srivc}
 ## @end deftypefn
 
-function [R, varargout] = residc (varargin)
+function varargout = residc (varargin)
+  varargout = contsid_guard ("residc", @residc_body, nargout, varargin);
+endfunction
+
+function [R, varargout] = residc_body (varargin)
   contsid_nargchk ("residc", nargin, nargout, [0 Inf], 1);
   [d, yhat, rest] = contsid_model_output ("residc", varargin);
   if (columns (d.y) != 1)

@@ -348,7 +348,11 @@
 ## @seealso{residtrace_table, residtrace_sim, residtrace_plot, residc, comparec, srivc, rsrivc}
 ## @end deftypefn
 
-function [R, varargout] = residtrace (varargin)
+function varargout = residtrace (varargin)
+  varargout = contsid_guard ("residtrace", @residtrace_body, nargout, varargin);
+endfunction
+
+function [R, varargout] = residtrace_body (varargin)
   contsid_nargchk ("residtrace", nargin, nargout, [0 Inf], 1);
   fname = "residtrace";
   if (nargin < 2)

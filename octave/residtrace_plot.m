@@ -33,7 +33,11 @@
 ## @seealso{residtrace, residtrace_table, residtrace_sim}
 ## @end deftypefn
 
-function [ax, varargout] = residtrace_plot (R, file, varargin)
+function varargout = residtrace_plot (varargin)
+  varargout = contsid_guard ("residtrace_plot", @residtrace_plot_body, nargout, varargin);
+endfunction
+
+function [ax, varargout] = residtrace_plot_body (R, file, varargin)
   contsid_nargchk ("residtrace_plot", nargin, nargout, [1 2], 1);
   if (! isstruct (R) || ! isscalar (R) || ! isfield (R, "sim")
       || ! isfield (R, "model") || ! isfield (R, "effects")

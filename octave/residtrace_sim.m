@@ -58,7 +58,11 @@
 ## @seealso{residtrace, residtrace_plot, residtrace_table}
 ## @end deftypefn
 
-function [yh, e, rmse, varargout] = residtrace_sim (R, varargin)
+function varargout = residtrace_sim (varargin)
+  varargout = contsid_guard ("residtrace_sim", @residtrace_sim_body, nargout, varargin);
+endfunction
+
+function [yh, e, rmse, varargout] = residtrace_sim_body (R, varargin)
   fname = "residtrace_sim";
   contsid_nargchk (fname, nargin, nargout, [2 Inf], 3);
   if (nargin < 2 || ! isstruct (R) || ! isscalar (R)

@@ -30,7 +30,12 @@
 ## @seealso{residtrace}
 ## @end deftypefn
 
-function [md, varargout] = residtrace_table (R, file, varargin)
+function varargout = residtrace_table (varargin)
+  varargout = contsid_guard ("residtrace_table", @residtrace_table_body,
+                             nargout, varargin);
+endfunction
+
+function [md, varargout] = residtrace_table_body (R, file, varargin)
   contsid_nargchk ("residtrace_table", nargin, nargout, [1 2], 1);
   if (nargin < 1 || ! isstruct (R) || ! isfield (R, "steps"))
     error ("residtrace_table:badInput",

@@ -93,7 +93,11 @@
 ## @seealso{srivc, tfrivc, clrivc, cl2srivc}
 ## @end deftypefn
 
-function [M, C, varargout] = rivc (varargin)
+function varargout = rivc (varargin)
+  varargout = contsid_guard ("rivc", @rivc_body, nargout, varargin);
+endfunction
+
+function [M, C, varargout] = rivc_body (varargin)
   contsid_nargchk ("rivc", nargin, nargout, [2 Inf], 7);
   [M, info] = contsid_rivc ("rivc", varargin);
   C = info.C;

@@ -97,6 +97,10 @@
 ## @end deftypefn
 
 function varargout = rivsvf (varargin)
+  varargout = contsid_guard ("rivsvf", @rivsvf_body, nargout, varargin);
+endfunction
+
+function varargout = rivsvf_body (varargin)
   contsid_nargchk ("rivsvf", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("rivsvf", nargout, varargin{:});
 endfunction
@@ -139,6 +143,16 @@ endfunction
 %! assert (thm(end, :), [2.4 4 4], 1e-2 * 4);
 
 %!error id=rivsvf:badInput rivsvf (data, [2 1 0], "lambda_svf", 3, "tsiv", -1)
+## an input zero at every sample: no excitation
+%!error id=rivsvf:badInput
+%! rivsvf (iddata (x, zeros (N, 1), Ts), [2 1 0], "lambda_svf", 3);
+## a cut-off far above pi/Ts: a warning, and non-finite frozen outputs
+## are an error
+%!warning id=rivsvf:cutoffAboveNyquist
+%! thm = rivsvf (data, [2 1 0], "lambda_svf", 100);
+%!error id=rivsvf:numericalFailure
+%! warning ("off", "rivsvf:cutoffAboveNyquist", "local");
+%! [thm, yh] = rivsvf (data, [2 1 0], "lambda_svf", 1e9, "tsiv", 5);
 %!error id=rivsvf:badInput rivsvf (data, [2 1 0], "lambda_svf", 3, "tsiv", 1e6)
 %!error id=rivsvf:badInput rivsvf (data, [2 1 0], "lambda_svf", 3, "tsiv", "a")
 %!error id=rivsvf:badInput rivsvf (data, [2 1 0], "lambda_svf", 3, "dtupdate", Ts / 2)

@@ -114,7 +114,12 @@
 ## @seealso{rlssvf, rivsvf, rsrivc, svfcutoff}
 ## @end deftypefn
 
-function [tsiv, info, thm, yh, varargout] = rlsconverge (varargin)
+function varargout = rlsconverge (varargin)
+  varargout = contsid_guard ("rlsconverge", @rlsconverge_body, nargout,
+                             varargin);
+endfunction
+
+function [tsiv, info, thm, yh, varargout] = rlsconverge_body (varargin)
   contsid_nargchk ("rlsconverge", nargin, nargout, [0 Inf], 4);
   fname = "rlsconverge";
   rdef = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
@@ -129,7 +134,8 @@ function [tsiv, info, thm, yh, varargout] = rlsconverge (varargin)
   endfor
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                               varargin{:});
-  rls = contsid_recursive_options (fname, opts, orders.np);
+  contsid_check_input (fname, d.u, orders.nb);
+  rls = contsid_recursive_options (fname, opts, orders.np, d);
   det = struct ();
   for i = 1:numel (dnames)
     det.(dnames{i}) = opts.(dnames{i});

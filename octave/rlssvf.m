@@ -37,6 +37,11 @@
 ## @item lambda_svf
 ## cut-off frequency (rad/s) of the state-variable filter, required. It may
 ## also be given by position after @var{nn} (CONTSID 7.0/7.1 syntax).
+## Above the Nyquist frequency @code{pi/Ts} (the median interval of
+## irregular samples) it warns, @code{rlssvf:cutoffAboveNyquist} (the
+## other SVF estimators likewise, under their names): the filter then
+## passes what the samples do not hold, and far above it the regressors
+## lose all precision and the estimates are meaningless.
 ## @item adm
 ## adaptation mechanism: @qcode{"ff"} forgetting factor (default) or
 ## @qcode{"kf"} Kalman filter with random-walk parameters (@qcode{"rw"} is
@@ -116,6 +121,13 @@
 ## microcontroller; the outputs are returned as double.
 ## @end table
 ##
+## An input that is zero at every sample leaves the numerator without
+## excitation: @code{rlssvf:badInput} (before any update, as the offline
+## estimators refuse it).  Estimates or a frozen-model output that are not
+## finite (a cut-off far above @code{pi/Ts}, a diverging recursion):
+## @code{rlssvf:numericalFailure}.  The other recursive estimators do the
+## same under their names.
+##
 ## @strong{Outputs}
 ## @table @var
 ## @item thm
@@ -191,6 +203,10 @@
 ## @end deftypefn
 
 function varargout = rlssvf (varargin)
+  varargout = contsid_guard ("rlssvf", @rlssvf_body, nargout, varargin);
+endfunction
+
+function varargout = rlssvf_body (varargin)
   contsid_nargchk ("rlssvf", nargin, nargout, [0 Inf], 4);
   p = contsid_rlssvf_args ("rlssvf", varargin{:});
   ## Ask the gateway only for the outputs requested: YH costs a matrix
@@ -202,14 +218,7 @@ function varargout = rlssvf (varargin)
     contsid_rethrow (err);
   end_try_catch
   varargout = contsid_expand (varargout, p.d);
-  if (nargout > 1 && ! all (isfinite (varargout{2}(:))))
-    ## (e.g. lambda_svf far above the Nyquist frequency pi/Ts: the frozen
-    ## models are meaningless and their output overflows)
-    error ("rlssvf:numericalFailure",
-           ["rlssvf: the frozen-model output yh is not finite from sample ", ...
-            "%d on (is lambda_svf far above pi/Ts?)"],
-           find (! isfinite (varargout{2}), 1));
-  endif
+  contsid_check_track ("rlssvf", varargout);
 endfunction
 
 %!shared Ts, u, y, data
@@ -389,6 +398,10 @@ endfunction
 
 %!error <rlssvf: nn> rlssvf (data, [-1 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [-1 1 0], "lambda_svf", 2)
+%!error id=rlssvf:badInput
+%! rlssvf (iddata (y, zeros (size (u)), Ts), [2 1 0], "lambda_svf", 3);
+%!warning id=rlssvf:cutoffAboveNyquist
+%! thm = rlssvf (data, [2 1 0], "lambda_svf", 1e9);
 %!error id=rlssvf:badInput rlssvf (data, [2.5 1 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [2 4 0], "lambda_svf", 2)
 %!error id=rlssvf:badInput rlssvf (data, [2 0 0], "lambda_svf", 2)

@@ -54,6 +54,10 @@
 ## @end deftypefn
 
 function varargout = rsrivc (varargin)
+  varargout = contsid_guard ("rsrivc", @rsrivc_body, nargout, varargin);
+endfunction
+
+function varargout = rsrivc_body (varargin)
   contsid_nargchk ("rsrivc", nargin, nargout, [0 Inf], 4);
   [varargout{1:max(1, nargout)}] = contsid_riv ("rsrivc", nargout, varargin{:});
 endfunction
@@ -139,6 +143,10 @@ endfunction
 %! assert (thm(end, :), [4 2.4 4], 1e-2);
 
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "A", [1 -1 4])
+%!error id=rsrivc:badInput
+%! rsrivc (iddata (x, zeros (N, 1), Ts), [1 2 0], "lambda_svf", 3);
+%!warning id=rsrivc:cutoffAboveNyquist
+%! thm = rsrivc (data, [1 2 0], "lambda_svf", 1e9, "tsiv", 5);
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", 1)
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", "on")
 %!error id=rsrivc:badInput rsrivc (data, [1 2 0], "lambda_svf", 3, "antiwindup", 300, "antiwindup_lambda", 1.5)

@@ -45,7 +45,11 @@
 ## @seealso{srivcstruc, srivc}
 ## @end deftypefn
 
-function [NN, Vcrit, varargout] = selcstruc (V, varargin)
+function varargout = selcstruc (varargin)
+  varargout = contsid_guard ("selcstruc", @selcstruc_body, nargout, varargin);
+endfunction
+
+function [NN, Vcrit, varargout] = selcstruc_body (V, varargin)
   contsid_nargchk ("selcstruc", nargin, nargout, [0 Inf], 2);
   if (nargin < 1)
     error ("selcstruc:badInput", "selcstruc: expected the matrix V");

@@ -19,7 +19,11 @@
 ## @seealso{comparec, plot, fill}
 ## @end deftypefn
 
-function [hfill, hy, varargout] = shadedplot (varargin)
+function varargout = shadedplot (varargin)
+  varargout = contsid_guard ("shadedplot", @shadedplot_body, nargout, varargin);
+endfunction
+
+function [hfill, hy, varargout] = shadedplot_body (varargin)
   contsid_nargchk ("shadedplot", nargin, nargout, [3 3], 3);
   [t, y, ys] = varargin{:};
   t = vec_of (t, "t");

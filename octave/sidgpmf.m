@@ -48,7 +48,11 @@
 ## @seealso{sslsgpmf, ssivgpmf, idss}
 ## @end deftypefn
 
-function [M, sv, varargout] = sidgpmf (varargin)
+function varargout = sidgpmf (varargin)
+  varargout = contsid_guard ("sidgpmf", @sidgpmf_body, nargout, varargin);
+endfunction
+
+function [M, sv, varargout] = sidgpmf_body (varargin)
   contsid_nargchk ("sidgpmf", nargin, nargout, [4 6], 2);
   [M, sv] = contsid_gpmf ("sidgpmf", varargin);
 endfunction

@@ -39,7 +39,11 @@
 ## @seealso{pdelssvf4heatdiffusion, pdesrivc4heatdiffusion, pderivc4heatdiffusion, local_filter3}
 ## @end deftypefn
 
-function [y, varargout] = sim_heat (varargin)
+function varargout = sim_heat (varargin)
+  varargout = contsid_guard ("sim_heat", @sim_heat_body, nargout, varargin);
+endfunction
+
+function [y, varargout] = sim_heat_body (varargin)
   contsid_nargchk ("sim_heat", nargin, nargout, [4 4], 1);
   [theta, Data1, Data2, IC] = varargin{:};
   if (! (isnumeric (theta) && isreal (theta) && numel (theta) == 2

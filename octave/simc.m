@@ -113,6 +113,10 @@
 ## @end deftypefn
 
 function varargout = simc (varargin)
+  varargout = contsid_guard ("simc", @simc_body, nargout, varargin);
+endfunction
+
+function varargout = simc_body (varargin)
   contsid_nargchk ("simc", nargin, nargout, [0 Inf], 3);
   fname = "simc";
   if (nargin < 2)

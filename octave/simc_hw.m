@@ -81,7 +81,11 @@
 ## @seealso{simc, hwsrivc, Ham, Wie}
 ## @end deftypefn
 
-function [yout, xout, varargout] = simc_hw (varargin)
+function varargout = simc_hw (varargin)
+  varargout = contsid_guard ("simc_hw", @simc_hw_body, nargout, varargin);
+endfunction
+
+function [yout, xout, varargout] = simc_hw_body (varargin)
   contsid_nargchk ("simc_hw", nargin, nargout, [2 6], 6);
   fname = "simc_hw";
   hwmodel = varargin{1};

@@ -53,6 +53,10 @@
 ## @end deftypefn
 
 function varargout = simulLPVCT (varargin)
+  varargout = contsid_guard ("simulLPVCT", @simulLPVCT_body, nargout, varargin);
+endfunction
+
+function varargout = simulLPVCT_body (varargin)
   contsid_nargchk ("simulLPVCT", nargin, nargout, [6 6], 1);
   fname = "simulLPVCT";
   [u, A, DepA, B, DepB, Ts] = varargin{:};

@@ -28,7 +28,11 @@
 ## @seealso{simc, freqresp, idinput}
 ## @end deftypefn
 
-function [y, u, varargout] = sineresp (varargin)
+function varargout = sineresp (varargin)
+  varargout = contsid_guard ("sineresp", @sineresp_body, nargout, varargin);
+endfunction
+
+function [y, u, varargout] = sineresp_body (varargin)
   contsid_nargchk ("sineresp", nargin, nargout, [3 3], 2);
   [M, w, t] = varargin{:};
   if (isa (M, "idfrd") || isa (M, "iddata"))

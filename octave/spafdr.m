@@ -25,7 +25,11 @@
 ## @seealso{cra, idfrd, bode}
 ## @end deftypefn
 
-function [G, varargout] = spafdr (varargin)
+function varargout = spafdr (varargin)
+  varargout = contsid_guard ("spafdr", @spafdr_body, nargout, varargin);
+endfunction
+
+function [G, varargout] = spafdr_body (varargin)
   contsid_nargchk ("spafdr", nargin, nargout, [1 5], 1);
   d = contsid_getdata ("spafdr", varargin{:});
   rest = varargin(d.nconsumed+1:end);

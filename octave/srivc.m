@@ -180,7 +180,11 @@
 ## @seealso{clsrivc, ivsvf, srivcstruc, rsrivc, comparec}
 ## @end deftypefn
 
-function [M, RT2, YIC, Cond_IPM, AIC, info, varargout] = srivc (varargin)
+function varargout = srivc (varargin)
+  varargout = contsid_guard ("srivc", @srivc_body, nargout, varargin);
+endfunction
+
+function [M, RT2, YIC, Cond_IPM, AIC, info, varargout] = srivc_body (varargin)
   contsid_nargchk ("srivc", nargin, nargout, [0 Inf], 6);
   if (nargin > 0 && (isa (varargin{1}, "idfrd") || (isa (varargin{1},
       "iddata") && strcmp (get (varargin{1}, "Domain"), "Frequency"))))

@@ -76,7 +76,11 @@
 ## @seealso{selcstruc, srivc}
 ## @end deftypefn
 
-function [V, info, varargout] = srivcstruc (varargin)
+function varargout = srivcstruc (varargin)
+  varargout = contsid_guard ("srivcstruc", @srivcstruc_body, nargout, varargin);
+endfunction
+
+function [V, info, varargout] = srivcstruc_body (varargin)
   contsid_nargchk ("srivcstruc", nargin, nargout, [0 Inf], 2);
   fname = "srivcstruc";
   if (nargin < 3)

@@ -34,7 +34,11 @@
 ## @seealso{sslsgpmf, idss, comparec}
 ## @end deftypefn
 
-function [M, varargout] = ssivgpmf (varargin)
+function varargout = ssivgpmf (varargin)
+  varargout = contsid_guard ("ssivgpmf", @ssivgpmf_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = ssivgpmf_body (varargin)
   contsid_nargchk ("ssivgpmf", nargin, nargout, [3 4], 1);
   M = contsid_gpmf ("ssivgpmf", varargin);
 endfunction

@@ -43,7 +43,11 @@
 ## @seealso{ssivgpmf, idss, comparec}
 ## @end deftypefn
 
-function [M, varargout] = sslsgpmf (varargin)
+function varargout = sslsgpmf (varargin)
+  varargout = contsid_guard ("sslsgpmf", @sslsgpmf_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = sslsgpmf_body (varargin)
   contsid_nargchk ("sslsgpmf", nargin, nargout, [3 4], 1);
   M = contsid_gpmf ("sslsgpmf", varargin);
 endfunction

@@ -32,7 +32,11 @@
 ## @seealso{bodeplot, step}
 ## @end deftypefn
 
-function [h, varargout] = stepplot (varargin)
+function varargout = stepplot (varargin)
+  varargout = contsid_guard ("stepplot", @stepplot_body, nargout, varargin);
+endfunction
+
+function [h, varargout] = stepplot_body (varargin)
   contsid_nargchk ("stepplot", nargin, nargout, [0 Inf], 1);
   [systems, styles, range, opt] = ltiplot_args ("stepplot", varargin);
   if (! isempty (opt))

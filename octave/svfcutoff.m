@@ -103,7 +103,11 @@
 ## @seealso{bandwidthc, srivc, rlssvf, rlsconverge}
 ## @end deftypefn
 
-function [lambda, info, varargout] = svfcutoff (varargin)
+function varargout = svfcutoff (varargin)
+  varargout = contsid_guard ("svfcutoff", @svfcutoff_body, nargout, varargin);
+endfunction
+
+function [lambda, info, varargout] = svfcutoff_body (varargin)
   contsid_nargchk ("svfcutoff", nargin, nargout, [0 Inf], 2);
   fname = "svfcutoff";
   defaults = struct ("segments", [], "seglength", [], "factor", 1.1,
@@ -226,9 +230,10 @@ function [K, Tseg, seg] = segments (opts, t, T)
       K = 10;
     endif
     if (! isnumeric (K) || ! isreal (K) || ! isscalar (K) || K != fix (K)
-        || K < 1)
+        || K < 1 || K > numel (t))
       error ("svfcutoff:badInput",
-             "svfcutoff: segments must be an integer >= 1");
+             "svfcutoff: segments must be an integer from 1 to %d (samples)",
+             numel (t));
     endif
     K = double (K);
     Tseg = T / K;
@@ -329,6 +334,8 @@ endfunction
 %!error id=svfcutoff:badInput svfcutoff (iddata (zeros (N, 1), [u u], Ts), [1 1 2 0 0])
 %!error id=svfcutoff:badOption svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 2, "seglength", 10)
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 0)
+%!error id=svfcutoff:badInput
+%! svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 1e308);
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", 2.5)
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "segments", "a")
 %!error id=svfcutoff:badInput svfcutoff (iddata (u, u, Ts), [1 2 0], "seglength", -1)

@@ -31,7 +31,11 @@
 ## @seealso{rlssvf, rsrivc}
 ## @end deftypefn
 
-function [m, varargout] = svfscaling (varargin)
+function varargout = svfscaling (varargin)
+  varargout = contsid_guard ("svfscaling", @svfscaling_body, nargout, varargin);
+endfunction
+
+function [m, varargout] = svfscaling_body (varargin)
   contsid_nargchk ("svfscaling", nargin, nargout, [0 Inf], 1);
   fname = "svfscaling";
   if (nargin < 2)
@@ -48,7 +52,7 @@ function [m, varargout] = svfscaling (varargin)
   endif
   [~, orders] = contsid_recursive_args (fname, form, defaults, varargin{:});
   opts.adm = "ff"; opts.adg = []; opts.th0 = []; opts.P0 = [];
-  o = contsid_recursive_options (fname, opts, orders.np);
+  o = contsid_recursive_options (fname, opts, orders.np, d);
   o = contsid_ch3_options (fname, struct ("scaling", "self",
                                           "precision", "double",
                                           "antiwindup", 0,

@@ -112,7 +112,11 @@
 ## @seealso{tfsrivc, srivc, tfest, oe}
 ## @end deftypefn
 
-function [M, info, varargout] = tfcoe (varargin)
+function varargout = tfcoe (varargin)
+  varargout = contsid_guard ("tfcoe", @tfcoe_body, nargout, varargin);
+endfunction
+
+function [M, info, varargout] = tfcoe_body (varargin)
   contsid_nargchk ("tfcoe", nargin, nargout, [3 Inf], 2);
   [M, info] = contsid_pem ("tfcoe", varargin);
 endfunction

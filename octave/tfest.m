@@ -57,7 +57,11 @@
 ## @seealso{tfestOptions, tfcoe, oe, srivc}
 ## @end deftypefn
 
-function [M, info, varargout] = tfest (varargin)
+function varargout = tfest (varargin)
+  varargout = contsid_guard ("tfest", @tfest_body, nargout, varargin);
+endfunction
+
+function [M, info, varargout] = tfest_body (varargin)
   contsid_nargchk ("tfest", nargin, nargout, [2 Inf], 2);
   args = varargin;
   if (numel (args) == 2 || (numel (args) >= 3 && ! isnumeric (args{3})))

@@ -20,7 +20,12 @@
 ## @seealso{tfest, oeOptions}
 ## @end deftypefn
 
-function [opt, varargout] = tfestOptions (varargin)
+function varargout = tfestOptions (varargin)
+  varargout = contsid_guard ("tfestOptions", @tfestOptions_body, nargout,
+                             varargin);
+endfunction
+
+function [opt, varargout] = tfestOptions_body (varargin)
   contsid_nargchk ("tfestOptions", nargin, nargout, [0 Inf], 1);
   opt = contsid_pem_options ("tfestOptions", varargin);
 endfunction

@@ -29,7 +29,11 @@
 ## @seealso{tffsrivc, relay, tfsrivc, srivc}
 ## @end deftypefn
 
-function [sys, varargout] = tffcoe (varargin)
+function varargout = tffcoe (varargin)
+  varargout = contsid_guard ("tffcoe", @tffcoe_body, nargout, varargin);
+endfunction
+
+function [sys, varargout] = tffcoe_body (varargin)
   contsid_nargchk ("tffcoe", nargin, nargout, [2 Inf], 1);
   sys = contsid_freq ("tffcoe", varargin);
 endfunction

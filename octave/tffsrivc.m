@@ -41,7 +41,11 @@
 ## @seealso{tffcoe, relay, tfsrivc, srivc}
 ## @end deftypefn
 
-function [sys, varargout] = tffsrivc (varargin)
+function varargout = tffsrivc (varargin)
+  varargout = contsid_guard ("tffsrivc", @tffsrivc_body, nargout, varargin);
+endfunction
+
+function [sys, varargout] = tffsrivc_body (varargin)
   contsid_nargchk ("tffsrivc", nargin, nargout, [2 Inf], 1);
   sys = contsid_freq ("tffsrivc", varargin);
 endfunction

@@ -69,7 +69,11 @@
 ## @seealso{tfsrivc, rivc}
 ## @end deftypefn
 
-function [sys, sysN, varargout] = tfrivc (varargin)
+function varargout = tfrivc (varargin)
+  varargout = contsid_guard ("tfrivc", @tfrivc_body, nargout, varargin);
+endfunction
+
+function [sys, sysN, varargout] = tfrivc_body (varargin)
   contsid_nargchk ("tfrivc", nargin, nargout, [3 Inf], 2);
   [sys, info, d] = contsid_rivc ("tfrivc", varargin);
   sysN = [];

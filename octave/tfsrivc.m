@@ -94,7 +94,11 @@
 ## @seealso{tfsrivc_init, procsrivc, srivc, idtf}
 ## @end deftypefn
 
-function [M, varargout] = tfsrivc (varargin)
+function varargout = tfsrivc (varargin)
+  varargout = contsid_guard ("tfsrivc", @tfsrivc_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = tfsrivc_body (varargin)
   contsid_nargchk ("tfsrivc", nargin, nargout, [0 Inf], 1);
   M = contsid_tf_front ("tfsrivc", varargin);
 endfunction

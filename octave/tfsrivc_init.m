@@ -27,7 +27,12 @@
 ## @seealso{tfsrivc, procsrivc}
 ## @end deftypefn
 
-function [M, varargout] = tfsrivc_init (varargin)
+function varargout = tfsrivc_init (varargin)
+  varargout = contsid_guard ("tfsrivc_init", @tfsrivc_init_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = tfsrivc_init_body (varargin)
   contsid_nargchk ("tfsrivc_init", nargin, nargout, [0 Inf], 1);
   M = contsid_tf_front ("tfsrivc_init", varargin);
 endfunction

@@ -88,7 +88,12 @@
 ## @seealso{throttlesim, throttleparams, clrsrivc, rlssvf}
 ## @end deftypefn
 
-function [thm, R, Kv, info, varargout] = throttleid (data, method, varargin)
+function varargout = throttleid (varargin)
+  varargout = contsid_guard ("throttleid", @throttleid_body, nargout, varargin);
+endfunction
+
+function [thm, R, Kv, info, varargout] = throttleid_body (data, method,
+                                                         varargin)
   contsid_nargchk ("throttleid", nargin, nargout, [2 Inf], 4);
   fname = "throttleid";
   if (nargin < 2)

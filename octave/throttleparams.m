@@ -42,7 +42,12 @@
 ## @seealso{throttlesim, throttleid}
 ## @end deftypefn
 
-function [p, loop, varargout] = throttleparams (varargin)
+function varargout = throttleparams (varargin)
+  varargout = contsid_guard ("throttleparams", @throttleparams_body, nargout,
+                             varargin);
+endfunction
+
+function [p, loop, varargout] = throttleparams_body (varargin)
   contsid_nargchk ("throttleparams", nargin, nargout, [0 0], 2);
   deg = pi / 180;
   p = struct ("Ks1", 1.83e-3 / deg, "Ks2", 22.90e-3 / deg,

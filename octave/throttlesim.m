@@ -91,7 +91,12 @@
 ## @seealso{throttleid, throttleparams}
 ## @end deftypefn
 
-function [sim, varargout] = throttlesim (varargin)
+function varargout = throttlesim (varargin)
+  varargout = contsid_guard ("throttlesim", @throttlesim_body, nargout,
+                             varargin);
+endfunction
+
+function [sim, varargout] = throttlesim_body (varargin)
   contsid_nargchk ("throttlesim", nargin, nargout, [0 Inf], 1);
   fname = "throttlesim";
   args = varargin;

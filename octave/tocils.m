@@ -42,7 +42,11 @@
 ## @seealso{tocls, srivc, chisqr}
 ## @end deftypefn
 
-function [M, nbIter, varargout] = tocils (varargin)
+function varargout = tocils (varargin)
+  varargout = contsid_guard ("tocils", @tocils_body, nargout, varargin);
+endfunction
+
+function [M, nbIter, varargout] = tocils_body (varargin)
   contsid_nargchk ("tocils", nargin, nargout, [0 Inf], 2);
   [M, nbIter] = contsid_eiv ("tocils", varargin);
 endfunction

@@ -63,7 +63,11 @@
 ## @seealso{tocils, lssvf, ivsvf, srivc, chisqr}
 ## @end deftypefn
 
-function [M, varargout] = tocls (varargin)
+function varargout = tocls (varargin)
+  varargout = contsid_guard ("tocls", @tocls_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = tocls_body (varargin)
   contsid_nargchk ("tocls", nargin, nargout, [0 Inf], 1);
   M = contsid_eiv ("tocls", varargin);
 endfunction

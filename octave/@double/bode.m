@@ -17,6 +17,14 @@
 ## no argument is an object, i.e. for exactly the calls that the control
 ## package's @code{bode} rejects.  Calls with a model go to the control
 ## package (or the model's class) unchanged.
+## The other built-in classes (@code{single}, the integer types,
+## @code{logical}, @code{char}, @code{cell}, @code{struct},
+## @code{function_handle}) link to this file: Octave sends a call whose
+## arguments are all built-in to the method of the highest of their
+## classes, so every such call comes here (numbers of any numeric class
+## are read as double, anything else is an identified error) instead of
+## reaching the control package's function, which fails on it without an
+## identifier.
 ##
 ## @code{(num, den)} is the continuous-time @code{tf (num, den)};
 ## @code{(a, b, c, d)} the continuous-time @code{ss (a, b, c, d)}, input
@@ -30,7 +38,11 @@
 ## @seealso{step, bodeplot}
 ## @end deftypefn
 
-function [mag, phase, w, varargout] = bode (varargin)
+function varargout = bode (varargin)
+  varargout = contsid_guard ({"bode", "double"}, @bode_body, nargout, varargin);
+endfunction
+
+function [mag, phase, w, varargout] = bode_body (varargin)
   contsid_nargchk ("bode", nargin, nargout, [2 6], 3);
   [sys, iu, w] = pre_lti_args ("bode", varargin);
   if (isempty (iu))
@@ -102,6 +114,8 @@ endfunction
 %! end_unwind_protect
 
 %!error id=bode:badInput bode (1)
+%!error id=bode:badInput bode (4, [1 2.4 4], {1})
+%!error id=bode:badInput bode (4, uint8 ([1 2 4]), struct ())
 %!error id=bode:badInput bode (1, [0 0])
 %!error id=bode:badInput bode (1, [1 1], [1 Inf])
 %!error id=bode:dimensionMismatch bode (eye (2), [1; 1], [1 0 0], 0)

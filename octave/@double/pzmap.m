@@ -14,10 +14,23 @@
 ## unchanged.  @code{(num, den)} is @code{tf (num, den)}, @code{(a, b, c,
 ## d)} is @code{ss (a, b, c, d)}; the result is the control package's
 ## @code{pzmap} of that model (a plot without outputs).
+## The other built-in classes (@code{single}, the integer types,
+## @code{logical}, @code{char}, @code{cell}, @code{struct},
+## @code{function_handle}) link to this file: Octave sends a call whose
+## arguments are all built-in to the method of the highest of their
+## classes, so every such call comes here (numbers of any numeric class
+## are read as double, anything else is an identified error) instead of
+## reaching the control package's function, which fails on it without an
+## identifier.
 ## @seealso{step, bode}
 ## @end deftypefn
 
-function [p, z, varargout] = pzmap (varargin)
+function varargout = pzmap (varargin)
+  varargout = contsid_guard ({"pzmap", "double"}, @pzmap_body, nargout,
+                             varargin);
+endfunction
+
+function [p, z, varargout] = pzmap_body (varargin)
   contsid_nargchk ("pzmap", nargin, nargout, [2 4], 2);
   if (! any (nargin == [2, 4]))
     error ("pzmap:badInput",
@@ -51,6 +64,10 @@ endfunction
 %! assert ([sort(p2); z2], [sort(p); z]);
 
 %!error id=pzmap:badInput pzmap (1, 2, 3)
+%!error id=pzmap:badInput pzmap (4, [1 2.4 4], {1})
+%!test
+%! [p, z] = pzmap (true, single ([1 3 2]));
+%! assert (sort (p), [-2; -1], 1e-6);
 %!error id=pzmap:badInput pzmap (1, [0 0])
 %!error id=pzmap:dimensionMismatch pzmap (eye (2), [1; 1], [1 0 0], 0)
 %!error id=pzmap:badInput [a, b, c] = pzmap (1, [1 1])

@@ -31,7 +31,11 @@
 ## @seealso{bode, step, pzmap}
 ## @end deftypefn
 
-function [sv, w, varargout] = sigma (varargin)
+function varargout = sigma (varargin)
+  varargout = contsid_guard ({"sigma", "double"}, @sigma_body, nargout, varargin);
+endfunction
+
+function [sv, w, varargout] = sigma_body (varargin)
   contsid_nargchk ("sigma", nargin, nargout, [2 5], 2);
   args = varargin;
   if (numel (args) == 5)

@@ -18,6 +18,14 @@
 ## package's @code{step} rejects (it needs an LTI model).  Calls with a
 ## model (@code{step (sys, t)}, @code{step (M0, M)}) go to the control
 ## package (or the model's class) unchanged.
+## The other built-in classes (@code{single}, the integer types,
+## @code{logical}, @code{char}, @code{cell}, @code{struct},
+## @code{function_handle}) link to this file: Octave sends a call whose
+## arguments are all built-in to the method of the highest of their
+## classes, so every such call comes here (numbers of any numeric class
+## are read as double, anything else is an identified error) instead of
+## reaching the control package's function, which fails on it without an
+## identifier.
 ##
 ## @code{(num, den)} is the continuous-time transfer function
 ## @code{tf (num, den)}; @code{(a, b, c, d)} the continuous-time state-space
@@ -32,7 +40,11 @@
 ## @seealso{bode, ord2, stepplot}
 ## @end deftypefn
 
-function [y, x, t, varargout] = step (varargin)
+function varargout = step (varargin)
+  varargout = contsid_guard ({"step", "double"}, @step_body, nargout, varargin);
+endfunction
+
+function [y, x, t, varargout] = step_body (varargin)
   contsid_nargchk ("step", nargin, nargout, [2 6], 3);
   [sys, iu, tt] = pre_lti_args ("step", varargin);
   if (! isempty (iu))
@@ -100,6 +112,12 @@ endfunction
 %! assert (! issparse (y1));
 
 %!error id=step:badInput step (1, 2, 3, 4, 5, 6, 7)
+## all built-in arguments, a higher class than double among them
+%!error id=step:badInput step (4, [1 2.4 4], {1})
+%!error id=step:badInput step (4, struct ())
+%!error id=step:badInput step (@sin, [1 1])
+%!test
+%! assert (step (int8 (4), single ([1 3 2]), 3), step (4, [1 3 2], 3), 0);
 %!error id=step:badInput step ([1 2; 3 4], [1 2; 3 4])
 %!error id=step:badInput step (1, [0 0])
 %!error id=step:badInput step (1, [1 1], [1 NaN])

@@ -28,7 +28,11 @@
 ## @seealso{vertcat, horzcat, merge, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = cat (dim, varargin)
+function varargout = cat (varargin)
+  varargout = contsid_guard ({"cat", "iddata"}, @cat_body, nargout, varargin);
+endfunction
+
+function [dat, varargout] = cat_body (dim, varargin)
   contsid_nargchk ("cat", nargin, nargout, [1 Inf], 1);
   if (! (isnumeric (dim) && isscalar (dim) && any (dim == [1, 2, 3])))
     error ("iddata:badInput",

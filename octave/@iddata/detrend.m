@@ -43,10 +43,18 @@
 ## sampled data get the trend of the physical time (for regular sampling
 ## this is the same as fitting against the sample index).
 ## Frequency-domain data: @code{iddata:notSupported}.
+## Missing samples (NaN) stay missing: each channel's trend is fitted on
+## the samples it has.
 ## @seealso{iddata, detrend}
 ## @end deftypefn
 
-function [dat, trend, varargout] = detrend (dat, type = 0, brkp = [], varargin)
+function varargout = detrend (varargin)
+  varargout = contsid_guard ({"detrend", "iddata"}, @detrend_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, trend, varargout] = detrend_body (dat, type = 0, brkp = [],
+                                                 varargin)
   contsid_nargchk ("detrend", nargin, nargout, [1 Inf], 2);
   if (nargin > 3)
     error ("iddata:badInput",
@@ -156,8 +164,19 @@ function basis = trend_basis (tau, order, brk)
   endif
 endfunction
 
+## The trend of each channel is fitted on the samples it has: a missing
+## sample (NaN) stays missing instead of spreading over the record.
 function [x, c] = fit_out (basis, x)
-  c = basis \ x;
+  c = zeros (columns (basis), columns (x));
+  for j = 1:columns (x)
+    have = ! isnan (x(:,j));
+    if (rank (basis(have,:)) < columns (basis))
+      error ("iddata:badInput",
+             ["iddata: detrend: a channel has too few samples that are ", ...
+              "not missing (NaN) for this trend"]);
+    endif
+    c(:,j) = basis(have,:) \ x(have,j);
+  endfor
   x = x - basis * c;
 endfunction
 
@@ -252,6 +271,21 @@ endfunction
 %! assert (d.y, trend - [mean(trend(1:100)) * ones(100, 1);
 %!                       mean(trend(101:end)) * ones(100, 1)], 1e-12);
 
+%!test
+%! ## missing samples stay missing; the trend is fitted on the others
+%! tt = (0:99).' * 0.1;
+%! yy = 2 + 0.5 * tt + sin (3 * tt);
+%! yy(30:40) = NaN;
+%! uu = cos (tt);
+%! d = detrend (iddata (yy, uu, 0.1), 1);
+%! have = ! isnan (yy);
+%! p = polyfit (tt(have), yy(have), 1);
+%! assert (isnan (d.y), ! have);
+%! assert (d.y(have), yy(have) - polyval (p, tt(have)), 1e-12);
+%! assert (d.u, uu - polyval (polyfit (tt, uu, 1), tt), 1e-12);
+%! d0 = detrend (iddata (yy, uu, 0.1));
+%! assert (d0.y(have), yy(have) - mean (yy(have)), 1e-12);
+%!error id=iddata:badInput detrend (iddata ([NaN; NaN; 3], (1:3).', 1), 1)
 %!error id=iddata:badInput detrend (iddata (y, u, 0.1), "cubic")
 %!error id=iddata:badInput detrend (iddata (y, u, 0.1), -1)
 %!error id=iddata:badInput detrend (iddata (y, u, 0.1), 1, [1 300])

@@ -15,7 +15,11 @@
 ## @seealso{iddata, nkshift}
 ## @end deftypefn
 
-function [dat, varargout] = diff (dat, k = 1, varargin)
+function varargout = diff (varargin)
+  varargout = contsid_guard ({"diff", "iddata"}, @diff_body, nargout, varargin);
+endfunction
+
+function [dat, varargout] = diff_body (dat, k = 1, varargin)
   contsid_nargchk ("diff", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 2)
     error ("iddata:badInput",

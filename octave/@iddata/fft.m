@@ -17,12 +17,18 @@
 ## kept; set @code{dataf.Ts = 0} to declare the frequencies continuous-time
 ## ones.  A frequency-domain set is returned unchanged.
 ##
-## Irregularly sampled data have no DFT (@code{iddata:notSupported}); an
-## unspecified @code{Ts} counts as 1.
+## Irregularly sampled data have no DFT (@code{iddata:notSupported}), nor
+## have data with missing samples (NaN) or Inf, which the transform would
+## spread over every frequency (@code{iddata:notSupported}, as
+## @code{resample}); an unspecified @code{Ts} counts as 1.
 ## @seealso{ifft, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = fft (dat, n = [], varargin)
+function varargout = fft (varargin)
+  varargout = contsid_guard ({"fft", "iddata"}, @fft_body, nargout, varargin);
+endfunction
+
+function [dat, varargout] = fft_body (dat, n = [], varargin)
   contsid_nargchk ("fft", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 2)
     error ("iddata:badInput",
@@ -37,6 +43,12 @@ function [dat, varargout] = fft (dat, n = [], varargin)
            "iddata: fft: irregularly sampled data have no DFT; resample first");
   endif
   nexp = numel (dat.y);
+  if (! all (cellfun (@(x) all (isfinite (x(:))), [dat.y(:); dat.u(:)])))
+    error ("iddata:notSupported",
+           ["iddata: fft: the data hold missing samples (NaN) or Inf; the ", ...
+            "transform would spread them over every frequency: fill them ", ...
+            "first"]);
+  endif
   if (isempty (n))
     n = cellfun ("rows", dat.y(:));
   elseif (isnumeric (n) && isreal (n) && any (numel (n) == [1, nexp])
@@ -86,6 +98,8 @@ endfunction
 %! assert (d5.y, X(1:36, :), 1e-12);
 
 %!error id=iddata:notSupported fft (iddata ((1:3).', (1:3).', [0 1 3]))
+%!error id=iddata:notSupported fft (iddata ([1; NaN; 3], (1:3).', 1))
+%!error id=iddata:notSupported fft (iddata ((1:3).', [1; 2; Inf], 1))
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 0)
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), [2 2])
 %!error id=iddata:badInput fft (iddata ((1:3).', (1:3).', 1), 1e12)

@@ -16,7 +16,11 @@
 ## @seealso{iddata, set, subsref}
 ## @end deftypefn
 
-function varargout = get (dat, varargin)
+function varargout = get (varargin)
+  varargout = contsid_guard ({"get", "iddata"}, @get_body, nargout, varargin);
+endfunction
+
+function varargout = get_body (dat, varargin)
   contsid_nargchk ("get", nargin, nargout, [1 Inf], max (1, nargin - 1));
   if (nargin == 1)
     names = property_name ();

@@ -9,7 +9,12 @@
 ## @seealso{merge, iddata}
 ## @end deftypefn
 
-function [d, varargout] = getexp (dat, k, varargin)
+function varargout = getexp (varargin)
+  varargout = contsid_guard ({"getexp", "iddata"}, @getexp_body, nargout,
+                             varargin);
+endfunction
+
+function [d, varargout] = getexp_body (dat, k, varargin)
   contsid_nargchk ("getexp", nargin, nargout, [1 Inf], 1);
   if (nargin != 2)
     error ("iddata:badInput",

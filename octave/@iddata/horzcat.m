@@ -17,7 +17,12 @@
 ## @seealso{cat, vertcat, merge}
 ## @end deftypefn
 
-function [dat, varargout] = horzcat (varargin)
+function varargout = horzcat (varargin)
+  varargout = contsid_guard ({"horzcat", "iddata"}, @horzcat_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = horzcat_body (varargin)
   contsid_nargchk ("horzcat", nargin, nargout, [0 Inf], 1);
   dat = concat_sets (2, varargin, "iddata: horzcat");
 endfunction

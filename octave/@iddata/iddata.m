@@ -161,7 +161,12 @@
 ## idresamp, idplot}
 ## @end deftypefn
 
-function [dat, varargout] = iddata (varargin)
+function varargout = iddata (varargin)
+  varargout = contsid_guard ({"iddata", "iddata"}, @iddata_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = iddata_body (varargin)
   contsid_nargchk ("iddata", nargin, nargout, [0 Inf], 1);
   if (nargin == 1 && isa (varargin{1}, "iddata"))
     dat = varargin{1};

@@ -16,7 +16,11 @@
 ## @seealso{fft, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = ifft (dat, varargin)
+function varargout = ifft (varargin)
+  varargout = contsid_guard ({"ifft", "iddata"}, @ifft_body, nargout, varargin);
+endfunction
+
+function [dat, varargout] = ifft_body (dat, varargin)
   contsid_nargchk ("ifft", nargin, nargout, [1 Inf], 1);
   if (nargin != 1)
     error ("iddata:badInput",
@@ -24,6 +28,11 @@ function [dat, varargout] = ifft (dat, varargin)
   endif
   if (dat.timedomain)
     return;
+  endif
+  if (! all (cellfun (@(x) all (isfinite (x(:))), [dat.y(:); dat.u(:)])))
+    error ("iddata:notSupported",
+           ["iddata: ifft: the data hold NaN or Inf; the inverse ", ...
+            "transform would spread them over every sample"]);
   endif
   for e = 1:numel (dat.y)
     w = dat.w{e};
@@ -79,6 +88,8 @@ endfunction
 
 %!error id=iddata:badInput
 %! ifft (iddata ([1; 2; 3], [], 1, "Frequency", [1; 2; 3]));
+%!error id=iddata:notSupported
+%! ifft (iddata ([1; NaN; 3], [1; 2; 3], 1, "Frequency", [0; pi/2; pi]));
 %!error id=iddata:badInput
 %! ifft (iddata ([1; 2; 3], [], 1, "Frequency", [0; 1; 3]));
 %!error id=iddata:badInput ifft (fft (iddata ((1:4).', [], 1)), 2)

@@ -15,7 +15,12 @@
 ## @seealso{getexp, cat, vertcat}
 ## @end deftypefn
 
-function [dat, varargout] = merge (varargin)
+function varargout = merge (varargin)
+  varargout = contsid_guard ({"merge", "iddata"}, @merge_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = merge_body (varargin)
   contsid_nargchk ("merge", nargin, nargout, [0 Inf], 1);
   dat = concat_sets (3, varargin, "iddata: merge");
 endfunction

@@ -18,15 +18,22 @@
 ## @seealso{iddata, diff}
 ## @end deftypefn
 
-function [dat, varargout] = nkshift (dat, nk = 0, append, varargin)
+function varargout = nkshift (varargin)
+  varargout = contsid_guard ({"nkshift", "iddata"}, @nkshift_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = nkshift_body (dat, nk = 0, append, varargin)
   contsid_nargchk ("nkshift", nargin, nargout, [1 Inf], 1);
   if (nargin < 1 || nargin > 3)
     error ("iddata:badInput",
            "iddata: nkshift: takes 1 to 3 arguments, not %d", nargin);
   endif
-  if (! (isnumeric (nk) && isscalar (nk) && isreal (nk) && nk == fix (nk)))
+  if (! (isnumeric (nk) && isscalar (nk) && isreal (nk) && nk == fix (nk)
+         && isfinite (nk)))
     error ("iddata:badInput", "iddata: nkshift: 'nk' must be a scalar integer");
   endif
+  nk = double (nk);                    # an integer type saturates below
   if (! dat.timedomain)
     error ("iddata:notSupported",
            "iddata: nkshift: frequency-domain data cannot be shifted");
@@ -79,7 +86,13 @@ endfunction
 %! s = nkshift (iddata ((1:10).', (11:20).', 1), 3, "append");
 %! assert (s.u, [0; 0; 0; (11:17).']);
 
+%!test
+%! ## an integer-typed shift on a record longer than its type's range
+%! d = iddata ((1:300).', (301:600).', 1);
+%! assert (nkshift (d, int8 (2)).y, nkshift (d, 2).y);
+%! assert (nkshift (d, int8 (-2), "append").u, nkshift (d, -2, "append").u);
 %!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), 1.5)
+%!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), Inf)
 %!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), 5)
 %!error id=iddata:notSupported nkshift (fft (iddata ((1:5).', (1:5).', 1)), 1)
 %!error id=iddata:badInput nkshift (iddata ((1:5).', (1:5).', 1), 1, 1, 1)

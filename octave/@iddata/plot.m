@@ -28,7 +28,11 @@
 ## @seealso{idplot, iddata}
 ## @end deftypefn
 
-function [ax, varargout] = plot (varargin)
+function varargout = plot (varargin)
+  varargout = contsid_guard ({"plot", "iddata"}, @plot_body, nargout, varargin);
+endfunction
+
+function [ax, varargout] = plot_body (varargin)
   contsid_nargchk ("plot", nargin, nargout, [0 Inf], 1);
   [sets, styles] = parse_args (varargin);
   timedomain = cellfun (@(d) struct (d).timedomain, sets);

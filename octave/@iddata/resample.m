@@ -15,7 +15,12 @@
 ## @seealso{idresamp, iddata}
 ## @end deftypefn
 
-function [dat, varargout] = resample (dat, p, q, varargin)
+function varargout = resample (varargin)
+  varargout = contsid_guard ({"resample", "iddata"}, @resample_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = resample_body (dat, p, q, varargin)
   contsid_nargchk ("resample", nargin, nargout, [1 Inf], 1);
   if (nargin != 3)
     if (nargin == 4)
@@ -47,7 +52,7 @@ endfunction
 
 %!error id=iddata:badInput resample (iddata ((1:9).', [], 1), 1.5, 1)
 %!error id=iddata:notSupported resample (iddata ((1:9).', [], 1), 1, 2, 10)
-%!error id=idresamp:notSupported
+%!error id=resample:notSupported
 %! resample (iddata ((1:3).', [], [0 1 3]), 1, 2);
 %!error id=iddata:badInput resample (iddata ((1:9).', [], 1), 1)
 

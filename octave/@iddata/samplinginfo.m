@@ -32,7 +32,12 @@
 ## @seealso{iddata, get}
 ## @end deftypefn
 
-function [info, varargout] = samplinginfo (dat, varargin)
+function varargout = samplinginfo (varargin)
+  varargout = contsid_guard ({"samplinginfo", "iddata"}, @samplinginfo_body,
+                             nargout, varargin);
+endfunction
+
+function [info, varargout] = samplinginfo_body (dat, varargin)
   contsid_nargchk ("samplinginfo", nargin, nargout, [1 1], 1);
   if (! dat.timedomain)
     error ("iddata:badInput",

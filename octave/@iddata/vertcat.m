@@ -21,7 +21,12 @@
 ## @seealso{cat, horzcat, merge}
 ## @end deftypefn
 
-function [dat, varargout] = vertcat (varargin)
+function varargout = vertcat (varargin)
+  varargout = contsid_guard ({"vertcat", "iddata"}, @vertcat_body, nargout,
+                             varargin);
+endfunction
+
+function [dat, varargout] = vertcat_body (varargin)
   contsid_nargchk ("vertcat", nargin, nargout, [0 Inf], 1);
   dat = concat_sets (1, varargin, "iddata: vertcat");
 endfunction

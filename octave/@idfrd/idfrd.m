@@ -26,7 +26,12 @@
 ## @seealso{idtf, bode, freqresp}
 ## @end deftypefn
 
-function [G, varargout] = idfrd (varargin)
+function varargout = idfrd (varargin)
+  varargout = contsid_guard ({"idfrd", "idfrd"}, @idfrd_body, nargout,
+                             varargin);
+endfunction
+
+function [G, varargout] = idfrd_body (varargin)
   contsid_nargchk ("idfrd", nargin, nargout, [0 Inf], 1);
   if (nargin < 2)
     if (nargin == 1 && isa (varargin{1}, "idfrd"))

@@ -19,7 +19,12 @@
 ## package's @code{freqresp} on @code{tf (M)}.
 ## @end deftypefn
 
-function [mag, phase, wout, sdmag, sdphase, varargout] = bode (varargin)
+function varargout = bode (varargin)
+  varargout = contsid_guard ({"bode", "idmodel"}, @bode_body, nargout,
+                             varargin);
+endfunction
+
+function [mag, phase, wout, sdmag, sdphase, varargout] = bode_body (varargin)
   contsid_nargchk ("bode", nargin, nargout, [1 Inf], 5);
   [sys, styles, w, opt] = parse_sys_args ("bode", varargin);
   if (nargout > 0)

@@ -13,7 +13,11 @@
 ## The covariance is not carried over.
 ## @end deftypefn
 
-function [Md, varargout] = c2d (M, Ts, method, varargin)
+function varargout = c2d (varargin)
+  varargout = contsid_guard ({"c2d", "idmodel"}, @c2d_body, nargout, varargin);
+endfunction
+
+function [Md, varargout] = c2d_body (M, Ts, method, varargin)
   contsid_nargchk ("c2d", nargin, nargout, [1 3], 1);
   if (nargin < 3)
     method = "zoh";

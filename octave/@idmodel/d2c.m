@@ -10,7 +10,11 @@
 ## covariance is not carried over.
 ## @end deftypefn
 
-function [Mc, varargout] = d2c (M, method, varargin)
+function varargout = d2c (varargin)
+  varargout = contsid_guard ({"d2c", "idmodel"}, @d2c_body, nargout, varargin);
+endfunction
+
+function [Mc, varargout] = d2c_body (M, method, varargin)
   contsid_nargchk ("d2c", nargin, nargout, [1 2], 1);
   if (nargin < 2)
     method = "zoh";

@@ -8,7 +8,12 @@
 ## @code{pole}); printed without outputs.
 ## @end deftypefn
 
-function [wn, zeta, p, varargout] = damp (M, varargin)
+function varargout = damp (varargin)
+  varargout = contsid_guard ({"damp", "idmodel"}, @damp_body, nargout,
+                             varargin);
+endfunction
+
+function [wn, zeta, p, varargout] = damp_body (M, varargin)
   contsid_nargchk ("damp", nargin, nargout, [1 1], 3);
   P = pstruct (M);
   p = pole (M);

@@ -10,7 +10,12 @@
 ## at its own frequencies (other @var{w}: @code{idfrd:badInput}).
 ## @end deftypefn
 
-function [H, varargout] = freqresp (M, w, varargin)
+function varargout = freqresp (varargin)
+  varargout = contsid_guard ({"freqresp", "idmodel"}, @freqresp_body, nargout,
+                             varargin);
+endfunction
+
+function [H, varargout] = freqresp_body (M, w, varargin)
   contsid_nargchk ("freqresp", nargin, nargout, [1 2], 1);
   P = pstruct (M);
   if (nargin < 2 || ! isnumeric (w) || ! isreal (w) || ! isvector (w)

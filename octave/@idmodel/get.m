@@ -11,7 +11,11 @@
 ## prefixes.
 ## @end deftypefn
 
-function varargout = get (M, varargin)
+function varargout = get (varargin)
+  varargout = contsid_guard ({"get", "idmodel"}, @get_body, nargout, varargin);
+endfunction
+
+function varargout = get_body (M, varargin)
   contsid_nargchk ("get", nargin, nargout, [1 Inf], max (1, nargin - 1));
   P = pstruct (M);
   if (nargin == 1)

@@ -7,7 +7,12 @@
 ## a model that was not estimated.
 ## @end deftypefn
 
-function [C, varargout] = getcov (M, varargin)
+function varargout = getcov (varargin)
+  varargout = contsid_guard ({"getcov", "idmodel"}, @getcov_body, nargout,
+                             varargin);
+endfunction
+
+function [C, varargout] = getcov_body (M, varargin)
   contsid_nargchk ("getcov", nargin, nargout, [1 1], 1);
   C = pstruct (M).cov;
 endfunction

@@ -13,7 +13,12 @@
 ## covariance diagonal; NaN without a covariance).
 ## @end deftypefn
 
-function [p, sd, varargout] = getpvec (M, varargin)
+function varargout = getpvec (varargin)
+  varargout = contsid_guard ({"getpvec", "idmodel"}, @getpvec_body, nargout,
+                             varargin);
+endfunction
+
+function [p, sd, varargout] = getpvec_body (M, varargin)
   contsid_nargchk ("getpvec", nargin, nargout, [1 Inf], 2);
   P = pstruct (M);
   if (! isempty (varargin)

@@ -19,12 +19,23 @@
 ## @seealso{idpoly, idtf, idproc, idss, idfrd}
 ## @end deftypefn
 
-function [M, varargout] = idmodel (kind, par, ny, nu, varargin)
+function varargout = idmodel (varargin)
+  varargout = contsid_guard ({"idmodel", "idmodel"}, @idmodel_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = idmodel_body (kind, par, ny, nu, varargin)
   contsid_nargchk ("idmodel", nargin, nargout, [0 4], 1);
   if (nargin != 4 || ! ischar (kind) || ! isstruct (par))
     error ("idmodel:badInput", "idmodel: expected kind, par, ny and nu");
   endif
   model_props (kind);                  # checks kind
+  if (! (is_count (ny) && is_count (nu)))
+    error ("idmodel:badInput",
+           "idmodel: ny and nu must be whole numbers of outputs and inputs");
+  endif
+  ny = double (ny);
+  nu = double (nu);
   s = struct ();
   s.kind = kind;
   s.par = par;
@@ -64,12 +75,20 @@ function [M, varargout] = idmodel (kind, par, ny, nu, varargin)
   M = class (s, "idmodel");
 endfunction
 
+function tf = is_count (n)
+  tf = isnumeric (n) && isreal (n) && isscalar (n) && n >= 0 && n == fix (n);
+endfunction
+
 %!test
 %! M = idmodel ("idtf", struct ("Numerator", {{1}}, "Denominator", {{[1 1]}},
 %!              "IODelay", 0, "Variable", "s"), 1, 1);
 %! assert (class (M), "idmodel");
 %!error id=idmodel:badInput idmodel ("idtf")
 %!error id=idmodel:badInput idmodel ("nothing", struct (), 1, 1)
+%!error id=idmodel:badInput idmodel ("idtf", struct (), -1, 1)
+%!error id=idmodel:badInput idmodel ("idtf", struct (), 1, NaN)
+%!error id=idmodel:badInput idmodel ("idtf", struct (), 1, "a")
+%!error id=idmodel:badInput idmodel ("idtf", struct (), [1 2], 1)
 
 %!demo
 %! ## idmodel is the parent class; users build its children:

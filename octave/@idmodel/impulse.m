@@ -14,6 +14,11 @@
 ## @end deftypefn
 
 function varargout = impulse (varargin)
+  varargout = contsid_guard ({"impulse", "idmodel"}, @impulse_body, nargout,
+                             varargin);
+endfunction
+
+function varargout = impulse_body (varargin)
   contsid_nargchk ("impulse", nargin, nargout, [1 Inf], 2);
   [varargout{1:nargout}] = time_response ("impulse", "impulse", varargin);
 endfunction

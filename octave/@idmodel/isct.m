@@ -6,7 +6,12 @@
 ## True for a continuous-time model (Ts = 0).
 ## @end deftypefn
 
-function [r, varargout] = isct (M, varargin)
+function varargout = isct (varargin)
+  varargout = contsid_guard ({"isct", "idmodel"}, @isct_body, nargout,
+                             varargin);
+endfunction
+
+function [r, varargout] = isct_body (M, varargin)
   contsid_nargchk ("isct", nargin, nargout, [1 1], 1);
   r = pstruct (M).Ts == 0;
 endfunction

@@ -8,7 +8,12 @@
 ## ny-by-nu-by-N.
 ## @end deftypefn
 
-function [re, im, wout, varargout] = nyquist (varargin)
+function varargout = nyquist (varargin)
+  varargout = contsid_guard ({"nyquist", "idmodel"}, @nyquist_body, nargout,
+                             varargin);
+endfunction
+
+function [re, im, wout, varargout] = nyquist_body (varargin)
   contsid_nargchk ("nyquist", nargin, nargout, [1 Inf], 3);
   [sys, styles, w] = parse_sys_args ("nyquist", varargin);
   if (nargout > 0)

@@ -7,7 +7,12 @@
 ## delays aside).
 ## @end deftypefn
 
-function [p, varargout] = pole (M, varargin)
+function varargout = pole (varargin)
+  varargout = contsid_guard ({"pole", "idmodel"}, @pole_body, nargout,
+                             varargin);
+endfunction
+
+function [p, varargout] = pole_body (M, varargin)
   contsid_nargchk ("pole", nargin, nargout, [1 1], 1);
   [~, ~, ~, ~, ~, ~, P] = sys_data (M, "pole");
   p = pole (lti_of (P, ifelse_ss (P), "pole"));

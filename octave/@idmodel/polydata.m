@@ -10,8 +10,13 @@
 ## for one input, cells for several.
 ## @end deftypefn
 
-function [A, B, C, D, F, dA, dB, dC, dD, dF, varargout] = polydata (M,
-                                                                    varargin)
+function varargout = polydata (varargin)
+  varargout = contsid_guard ({"polydata", "idmodel"}, @polydata_body, nargout,
+                             varargin);
+endfunction
+
+function [A, B, C, D, F, dA, dB, dC, dD, dF, varargout] = ...
+         polydata_body (M, varargin)
   contsid_nargchk ("polydata", nargin, nargout, [1 1], 10);
   if (! isa (M, "idpoly"))
     M = idpoly (M);

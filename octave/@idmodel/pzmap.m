@@ -7,7 +7,12 @@
 ## Poles (x) and zeros (o) of models in the complex plane.
 ## @end deftypefn
 
-function [pout, zout, varargout] = pzmap (varargin)
+function varargout = pzmap (varargin)
+  varargout = contsid_guard ({"pzmap", "idmodel"}, @pzmap_body, nargout,
+                             varargin);
+endfunction
+
+function [pout, zout, varargout] = pzmap_body (varargin)
   contsid_nargchk ("pzmap", nargin, nargout, [1 Inf], 2);
   [sys, styles] = parse_sys_args ("pzmap", varargin);
   if (nargout > 0)

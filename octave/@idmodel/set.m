@@ -9,7 +9,11 @@
 ## property names.
 ## @end deftypefn
 
-function [M, varargout] = set (M, varargin)
+function varargout = set (varargin)
+  varargout = contsid_guard ({"set", "idmodel"}, @set_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = set_body (M, varargin)
   contsid_nargchk ("set", nargin, nargout, [1 Inf], 1);
   P = pstruct (M);
   if (nargin == 1)
@@ -44,6 +48,20 @@ endfunction
 %!error id=idtf:badInput set (idtf (2, [1 3 2]), "NoiseVariance", -1)
 %!error id=idpoly:badInput set (idpoly (1, 2, 1, 1, [1 3 2], 1, 0), "nk", Inf)
 %!error id=idpoly:badInput set (idpoly (1, 2, 1, 1, [1 3 2], 1, 0), "nk", NaN)
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "theta", [4 2.4 NaN]);
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "theta", NaN);
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance", -eye (3));
+%!error id=idpoly:badInput
+%! set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance", [1 2; 0 1]);
+%!error id=idproc:badInput set (idproc ("P1D", "Kp", 2), "Kp", Inf)
+%!error id=idproc:badInput idproc ("P1D", "Kp", -Inf)
+%!test
+%! M = set (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), "covariance",
+%!          int8 (eye (3)));
+%! assert (getcov (M), eye (3));
 
 %!demo
 %! M = set (idpoly (1, 2, 1, 1, [1 1], "Ts", 0), "InputDelay", 0.3)

@@ -11,7 +11,12 @@
 ## Errors: @code{<class>:dimensionMismatch}, @code{<class>:badInput}.
 ## @end deftypefn
 
-function [M, varargout] = setcov (M, C, varargin)
+function varargout = setcov (varargin)
+  varargout = contsid_guard ({"setcov", "idmodel"}, @setcov_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = setcov_body (M, C, varargin)
   contsid_nargchk ("setcov", nargin, nargout, [2 2], 1);
   P = pstruct (M);
   np = numel (pvec_of (P));
@@ -31,13 +36,7 @@ function [M, varargout] = setcov (M, C, varargin)
     error ([P.kind ":dimensionMismatch"],
            "%s: the covariance must be %d-by-%d", P.kind, np, np);
   endif
-  if (any (! isfinite (C(:))) || norm (C - C.', 1) > 1e-10 * norm (C, 1)
-      || any (eig ((C + C.') / 2) < -1e-10 * max (norm (C, 1), realmin)))
-    error ([P.kind ":badInput"],
-           "%s: the covariance must be symmetric positive semi-definite",
-           P.kind);
-  endif
-  M.cov = double (C);
+  M.cov = check_cov (C, P.kind);
 endfunction
 
 %!test
@@ -51,6 +50,11 @@ endfunction
 %! [p, sd] = getpvec (M);
 %! assert ([p sd], [2 0.2; 3 0.1; 0.4 0.05], 1e-15);
 %!error id=idtf:dimensionMismatch setcov (idtf (2, [1 3]), 1)
+%!error id=idpoly:badInput
+%! setcov (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), int8 (-eye (3)));
+%!test
+%! M = setcov (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), int8 (zeros (3)));
+%! assert (getcov (M), zeros (3));
 %!error id=idtf:badInput setcov (idtf (2, [1 3]), [1 2; 0 1])
 
 %!demo

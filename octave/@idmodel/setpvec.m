@@ -5,10 +5,18 @@
 ## @deftypefn {} {@var{M} =} setpvec (@var{M}, @var{p})
 ## Sets the parameters of a model from a vector in the order of
 ## @code{getpvec} (an @code{idtf}'s ends with its IODelay entries, >= 0);
-## the covariance is kept (it describes the same parameters).  A vector of the wrong length: @code{<class>:dimensionMismatch}.
+## the covariance is kept (it describes the same parameters).  A vector
+## of the wrong length: @code{<class>:dimensionMismatch}; NaN or Inf
+## entries (an @code{idproc} may hold NaN, a parameter not yet known):
+## @code{<class>:badInput}.
 ## @end deftypefn
 
-function [M, varargout] = setpvec (M, p, varargin)
+function varargout = setpvec (varargin)
+  varargout = contsid_guard ({"setpvec", "idmodel"}, @setpvec_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = setpvec_body (M, p, varargin)
   contsid_nargchk ("setpvec", nargin, nargout, [2 2], 1);
   P = pstruct (M);
   p0 = pvec_of (P);
@@ -31,6 +39,19 @@ endfunction
 %!error id=idtf:dimensionMismatch setpvec (idtf (2, [1 3 2]), [1 2])
 %!error id=idtf:dimensionMismatch setpvec (idtf (2, [1 3 2]), [1 2 3])
 %!error id=idtf:badInput setpvec (idtf (2, [1 3 2]), [1 2 3 -1])
+## NaN or Inf coefficients: refused (the control package's pole and
+## realisation routines would not return on them)
+%!error id=idpoly:badInput
+%! setpvec (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), [4; 2.4; NaN]);
+%!error id=idpoly:badInput
+%! setpvec (idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0), [4; Inf; 4]);
+%!error id=idtf:badInput setpvec (idtf (2, [1 3 2]), [NaN 3 2 0])
+%!error id=idss:badInput setpvec (idss (-1, 1, 1, 0), [NaN 1 1 0])
+%!error id=idproc:badInput setpvec (idproc ("P1D"), [2 Inf 1])
+%!test
+%! ## an idproc's NaN is a parameter not yet known
+%! P = setpvec (idproc ("P1D"), [2 NaN 1]);
+%! assert (isnan (P.Tp1));
 
 %!demo
 %! M = setpvec (idtf (2, [1 3 2]), [4 3 2 0.5])

@@ -36,7 +36,11 @@
 ## @end example
 ## @end deftypefn
 
-function [y, varargout] = sim (M, data, varargin)
+function varargout = sim (varargin)
+  varargout = contsid_guard ({"sim", "idmodel"}, @sim_body, nargout, varargin);
+endfunction
+
+function [y, varargout] = sim_body (M, data, varargin)
   contsid_nargchk ("sim", nargin, nargout, [1 Inf], 1);
   P = pstruct (M);
   if (nargin < 2)

@@ -8,7 +8,11 @@
 ## continuous-time delay).
 ## @end deftypefn
 
-function [G, varargout] = ss (M, varargin)
+function varargout = ss (varargin)
+  varargout = contsid_guard ({"ss", "idmodel"}, @ss_body, nargout, varargin);
+endfunction
+
+function [G, varargout] = ss_body (M, varargin)
   contsid_nargchk ("ss", nargin, nargout, [1 1], 1);
   P = pstruct (M);
   [G, delay] = lti_of (P, "ss", "ss");

@@ -14,6 +14,11 @@
 ## @end deftypefn
 
 function varargout = step (varargin)
+  varargout = contsid_guard ({"step", "idmodel"}, @step_body, nargout,
+                             varargin);
+endfunction
+
+function varargout = step_body (varargin)
   contsid_nargchk ("step", nargin, nargout, [1 Inf], 2);
   [varargout{1:nargout}] = time_response ("step", "step", varargin);
 endfunction

@@ -11,7 +11,11 @@
 ## @code{totaldelay (M)}, or @code{c2d} first).
 ## @end deftypefn
 
-function [G, varargout] = tf (M, varargin)
+function varargout = tf (varargin)
+  varargout = contsid_guard ({"tf", "idmodel"}, @tf_body, nargout, varargin);
+endfunction
+
+function [G, varargout] = tf_body (M, varargin)
   contsid_nargchk ("tf", nargin, nargout, [1 1], 1);
   P = pstruct (M);
   [G, delay] = lti_of (P, "tf", "tf");

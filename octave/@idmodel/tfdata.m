@@ -13,7 +13,12 @@
 ## @code{<class>:badInput} / @code{<class>:notSupported}.
 ## @end deftypefn
 
-function [num, den, Ts, varargout] = tfdata (M, form, varargin)
+function varargout = tfdata (varargin)
+  varargout = contsid_guard ({"tfdata", "idmodel"}, @tfdata_body, nargout,
+                             varargin);
+endfunction
+
+function [num, den, Ts, varargout] = tfdata_body (M, form, varargin)
   contsid_nargchk ("tfdata", nargin, nargout, [1 2], 3);
   P = pstruct (M);
   [num, den] = tf_parts (P);

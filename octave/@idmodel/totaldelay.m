@@ -8,7 +8,12 @@
 ## continuous time, samples in discrete time.
 ## @end deftypefn
 
-function [d, varargout] = totaldelay (M, varargin)
+function varargout = totaldelay (varargin)
+  varargout = contsid_guard ({"totaldelay", "idmodel"}, @totaldelay_body,
+                             nargout, varargin);
+endfunction
+
+function [d, varargout] = totaldelay_body (M, varargin)
   contsid_nargchk ("totaldelay", nargin, nargout, [1 1], 1);
   M = pstruct (M);
   d = repmat (M.InputDelay(:).', M.ny, 1);

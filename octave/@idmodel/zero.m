@@ -6,7 +6,12 @@
 ## Zeros of a model (the control package's @code{zero}).
 ## @end deftypefn
 
-function [z, varargout] = zero (M, varargin)
+function varargout = zero (varargin)
+  varargout = contsid_guard ({"zero", "idmodel"}, @zero_body, nargout,
+                             varargin);
+endfunction
+
+function [z, varargout] = zero_body (M, varargin)
   contsid_nargchk ("zero", nargin, nargout, [1 1], 1);
   [~, ~, ~, ~, ~, ~, P] = sys_data (M, "zero");
   z = zero (lti_of (P, "tf", "zero"));

@@ -11,6 +11,11 @@
 ## @end deftypefn
 
 function varargout = zpplot (varargin)
+  varargout = contsid_guard ({"zpplot", "idmodel"}, @zpplot_body, nargout,
+                             varargin);
+endfunction
+
+function varargout = zpplot_body (varargin)
   contsid_nargchk ("zpplot", nargin, nargout, [1 Inf], 0);
   [sys, styles, ~, opt] = parse_sys_args ("zpplot", varargin);
   args = [sys; styles];

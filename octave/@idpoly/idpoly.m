@@ -71,7 +71,12 @@
 ## @seealso{idtf, idproc, idss, idfrd, present, srivc}
 ## @end deftypefn
 
-function [M, varargout] = idpoly (varargin)
+function varargout = idpoly (varargin)
+  varargout = contsid_guard ({"idpoly", "idpoly"}, @idpoly_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = idpoly_body (varargin)
   contsid_nargchk ("idpoly", nargin, nargout, [0 Inf], 1);
   if (nargin > 0 && (isobject (varargin{1}) || isstruct (varargin{1})))
     M = convert (varargin{:});

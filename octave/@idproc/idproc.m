@@ -32,7 +32,12 @@
 ## @seealso{idtf, idpoly, procsrivc}
 ## @end deftypefn
 
-function [M, varargout] = idproc (varargin)
+function varargout = idproc (varargin)
+  varargout = contsid_guard ({"idproc", "idproc"}, @idproc_body, nargout,
+                             varargin);
+endfunction
+
+function [M, varargout] = idproc_body (varargin)
   contsid_nargchk ("idproc", nargin, nargout, [0 Inf], 1);
   if (nargin == 0 || ! ischar (varargin{1}))
     if (nargin == 1 && isa (varargin{1}, "idproc"))

@@ -26,7 +26,11 @@
 ## @seealso{idpoly, idtf, comparec}
 ## @end deftypefn
 
-function [M, varargout] = idss (varargin)
+function varargout = idss (varargin)
+  varargout = contsid_guard ({"idss", "idss"}, @idss_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = idss_body (varargin)
   contsid_nargchk ("idss", nargin, nargout, [0 Inf], 1);
   if (nargin > 0 && isobject (varargin{1}))
     M = convert (varargin{:});

@@ -30,7 +30,11 @@
 ## @seealso{idpoly, idproc, idss, tfsrivc}
 ## @end deftypefn
 
-function [M, varargout] = idtf (varargin)
+function varargout = idtf (varargin)
+  varargout = contsid_guard ({"idtf", "idtf"}, @idtf_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = idtf_body (varargin)
   contsid_nargchk ("idtf", nargin, nargout, [0 Inf], 1);
   if (nargin > 0 && isobject (varargin{1}))
     M = convert (varargin{:});

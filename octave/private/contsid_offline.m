@@ -96,6 +96,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
              "%s: lambda must be a finite real scalar > 0", fname);
     endif
     e.cutoffs = lam;
+    contsid_check_cutoff (fname, lam, d);
   elseif (! refined)
     error ([fname ":badOption"], ...
            "%s: the SVF cut-off lambda (rad/s) is required", fname);

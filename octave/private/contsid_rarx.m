@@ -45,6 +45,7 @@ function [thm, yhat, thmc, failed, P] = contsid_rarx (fname, d, nn, o)
            "%s: adm must be 'ff' or 'kf', got '%s'", fname, adm);
   endif
   np = na + nb;
+  contsid_check_input (fname, d.u, nb);
   if (rows (d.y) <= np)
     ## as contsid_recursive_args: more samples than parameters
     error ([fname ":badInput"],

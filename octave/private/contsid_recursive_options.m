@@ -2,13 +2,17 @@
 ## SPDX-License-Identifier: BSD-3-Clause
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{o} =} contsid_recursive_options (@var{fname}, @var{opts}, @var{np})
+## @deftypefn {} {@var{o} =} contsid_recursive_options (@var{fname}, @
+##   @var{opts}, @var{np}, @var{d})
 ## Checks and normalises the options shared by the recursive routines for a
-## model with @var{np} parameters:
+## model with @var{np} parameters estimated on the record @var{d} (a
+## struct of @code{contsid_getdata}):
 ##
 ## @table @code
 ## @item lambda_svf
-## finite real scalar > 0 (required).
+## finite real scalar > 0 (required); above the Nyquist frequency of
+## @var{d} a warning @code{@var{fname}:cutoffAboveNyquist}
+## (@code{contsid_check_cutoff}).
 ## @item adm
 ## @qcode{"ff"} or @qcode{"kf"}; @qcode{"rw"} (CONTSID 7.0/7.1) means
 ## @qcode{"kf"}; @qcode{"lmr"} (LMR-RLSSVF, eq. 3.82) takes a forgetting
@@ -33,7 +37,7 @@
 ## @end table
 ## @end deftypefn
 
-function o = contsid_recursive_options (fname, opts, np)
+function o = contsid_recursive_options (fname, opts, np, d)
   o = opts;
   lam = opts.lambda_svf;
   if (isempty (lam))
@@ -45,6 +49,7 @@ function o = contsid_recursive_options (fname, opts, np)
            "%s: lambda_svf must be a finite real scalar > 0", fname);
   endif
   o.lambda_svf = double (lam);
+  contsid_check_cutoff (fname, o.lambda_svf, d);
 
   adm = opts.adm;
   if (! ischar (adm) || ! any (strcmpi (adm, {"ff", "kf", "rw", "lmr"})))

@@ -27,4 +27,5 @@ function varargout = contsid_riv (fname, nout, varargin)
     outs{4}.tsiv_detector = p.tsiv_detector;
   endif
   varargout = contsid_expand (outs, p.d);
+  contsid_check_track (fname, varargout);
 endfunction

@@ -34,6 +34,7 @@ function p = contsid_riv_args (fname, routine, varargin)
                                               varargin{:});
   np = orders.np;
   na = orders.na;
+  contsid_check_input (fname, d.u, orders.nb);
   ## Public order -> core order [a b].
   if (srivc_form)
     perm = [na+1:np, 1:na];         # thm_public = thm_core(:, perm)
@@ -47,7 +48,7 @@ function p = contsid_riv_args (fname, routine, varargin)
     ## The RLSSVF start needs a cut-off: the geometric mean of A's roots.
     opts.lambda_svf = A(end) ^ (1 / na);
   endif
-  o = contsid_recursive_options (fname, opts, np);
+  o = contsid_recursive_options (fname, opts, np, d);
   if (strcmp (o.adm, "lmr"))
     error ([fname ":badOption"], ...
            "%s: adm 'lmr' (LMR-RLSSVF) belongs to rlssvf", fname);

@@ -17,7 +17,8 @@ function p = contsid_rlssvf_args (fname, varargin)
                      "precision", "double", "covariance_guard", true, "GapSettle", []);
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                              varargin{:});
-  o = contsid_recursive_options (fname, opts, orders.np);
+  contsid_check_input (fname, d.u, orders.nb);
+  o = contsid_recursive_options (fname, opts, orders.np, d);
   o = contsid_ch3_options (fname, opts, orders, d, o);
   o = extend_for_initial_conditions (o, orders);
   if (d.uniform)

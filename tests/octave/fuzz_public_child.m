@@ -50,10 +50,7 @@ function fuzz_public_child (specfile)
       if (isempty (id))
         id = "-";
       endif
-      if (isempty (regexp (id, ['^(' tgt.name '|' tgt.cls '|' objcls '):'],
-                           "once")))
-        fprintf (fid, "M %d %s\n", k, strrep (err.message, "\n", " "));
-      endif
+      fprintf (fid, "M %d %s\n", k, strrep (err.message, "\n", " "));
     end_try_catch
     close all;
     fprintf (fid, "R %d %s %s %d %.3f %s %s\n", k, status, id, nonfinite,
@@ -80,41 +77,49 @@ function [args, nout] = make_call (tgt)
     [pool, templates, names] = value_pool ();
     own = fuzz_public_templates ();
   endif
-  numeric = strcmp (tgt.cls, "double");
-  switch (tgt.kind)
-    case "method"
-      if (numeric)
-        ## A method of the built-in class double (the pre-LTI step/bode/
-        ## pzmap forms): its calls stay numeric (see mpool below).
-        args = pick (numeric_templates ());
-        args = args(1:randi (numel (args)));
-        obj = [];
-      else
-        obj = object_of (tgt.cls);
+  ## methods of the built-in classes: the pre-LTI step/bode/pzmap forms
+  numeric = any (strcmp (tgt.cls, {"double", "single", "int8", "int16", ...
+                                   "int32", "int64", "uint8", "uint16", ...
+                                   "uint32", "uint64", "logical", "char", ...
+                                   "cell", "struct", "function_handle"}));
+  ## A method's or constructor's own calls in fuzz_public_templates are
+  ## under <class>_<name> (half of its calls start from them).
+  key = [tgt.cls "_" tgt.name];
+  if (! strcmp (tgt.kind, "gateway") && isfield (own, key) && rand () < 0.5)
+    args = pick (own.(key));
+  elseif (strcmp (tgt.kind, "method"))
+    if (numeric)
+      ## A method of a built-in class (the pre-LTI step/bode/pzmap
+      ## forms): its calls are numeric (see mpool below).
+      args = pick (numeric_templates ());
+      args = args(1:randi (numel (args)));
+      obj = [];
+    else
+      obj = object_of (tgt.cls);
+    endif
+    if (! numeric)
+      tpl = pick (templates);
+      args = [{obj}, tpl(2:end)];
+      args = args(1:randi (numel (args)));
+    endif
+  elseif (strcmp (tgt.kind, "gateway"))
+    args = [{tgt.name(1:end-4)}, pick(templates)];
+  else
+    ## The function's own well-formed calls (fuzz_public_templates) or,
+    ## less often, a generic one.
+    if (isfield (own, tgt.name) && rand () < 0.7)
+      args = pick (own.(tgt.name));
+    else
+      args = pick (templates);
       endif
-      if (! numeric)
-        tpl = pick (templates);
-        args = [{obj}, tpl(2:end)];
-        args = args(1:randi (numel (args)));
-      endif
-    case "gateway"
-      args = [{tgt.name(1:end-4)}, pick(templates)];
-    otherwise
-      ## The function's own well-formed calls (fuzz_public_templates) or,
-      ## less often, a generic one.
-      if (isfield (own, tgt.name) && rand () < 0.7)
-        args = pick (own.(tgt.name));
-      else
-        args = pick (templates);
-      endif
-  endswitch
+  endif
   mpool = pool;
   if (numeric)
-    ## Only double (and char, which ranks below it) arguments keep the
-    ## dispatch on the class double: a cell, single, integer, logical,
-    ## struct or object argument sends the call to the control package's
-    ## function of that name instead of ours.
-    mpool = pool(cellfun (@(v) isa (v, "double") || ischar (v), pool));
+    ## No object: a call with an object goes to the control package (or
+    ## the object's class), not to these methods.  The built-in classes
+    ## other than double link to the same files (a call whose arguments
+    ## are all built-in goes to the highest of their classes).
+    mpool = pool(! cellfun ("isobject", pool));
   endif
   nmut = randi ([0 3]);                  # 0: a well-formed call
   for m = 1:nmut

@@ -10,7 +10,16 @@
 ## that the random calls also reach beyond each function's first argument
 ## check.  @file{test_fuzz_public.m} fails when a public function has no
 ## field here (the list is kept complete as the API grows) or when a field
-## names no public function.
+## names no public function.  A method or constructor may have calls too,
+## under @code{<class>_<name>} (its first argument is the object; for the
+## pre-LTI forms of @code{step}, @code{bode}, @code{pzmap}: @code{double}).
+##
+## Among them, calls that once hung, failed without an identifier or
+## returned garbage silently: NaN parameters (@code{setpvec}, @code{set}
+## of theta; the model then hung the control package's routines), a
+## cut-off far above the Nyquist frequency, an input that is zero at every
+## sample, a constant output, missing samples in the data methods,
+## integer-typed arguments.
 ## @end deftypefn
 
 function tpl = fuzz_public_templates ()
@@ -53,6 +62,20 @@ function tpl = fuzz_public_templates ()
   ## a skewed input for the errors-in-variables estimators
   us = exp (sin (k * 0.37 + 0.3) + 0.4 * sin (k * 0.11));
   eiv = iddata (filter ([0 0.05 0.04], [1 -1.6 0.7], us), us, Ts);
+  ## a typical record: PRBS into 4/(s^2+2.4s+4), 381 samples, Ts = 0.05
+  Mp = idpoly (1, 4, 1, 1, [1 2.4 4], "Ts", 0);
+  kp = (1:381)';
+  up = sign (sin (kp * 0.61 + 0.2) + 0.5 * sin (kp * 0.23));
+  up(up == 0) = 1;
+  dp = iddata (simc (Mp, up, 0.05), up, 0.05, "InterSample", "zoh");
+  ## the same output, an input zero at every sample
+  dz = iddata (get (dp, "OutputData"), zeros (381, 1), 0.05);
+  ## a constant output
+  dc = iddata (2 * ones (381, 1), up, 0.05);
+  yg = get (dp, "OutputData");
+  yg(100:110) = NaN;                # 11 missing samples
+  dg = iddata (yg, up, 0.05);
+  far = {"lambda_svf", 1e9};        # far above pi/Ts = 62.8 rad/s
 
   tpl = struct ();
   tpl.Ham = {{u}, {}};
@@ -70,7 +93,7 @@ function tpl = fuzz_public_templates ()
   tpl.clrivsvf = {[{data, [2 1 0], "lambda_svf", 3}, ctl]};
   tpl.clrsrivc = {[{data, [1 2 0], "lambda_svf", 3}, ctl]};
   tpl.clsrivc = {{data, dcl, [1 2 0], C}};
-  tpl.comparec = {{data, M}, {data, thm, [2 1 0]}};
+  tpl.comparec = {{data, M}, {data, thm, [2 1 0]}, {dc, Mp}};
   tpl.compress = {{[y u], Ts, 0.05}, {y, Ts, 0.05}};
   tpl.cra = {{data}, {data, 20, 5, 0}};
   tpl.dbode = {{0.1, [1 -0.9], Ts}, {0.1, [1 -0.9], Ts, w}};
@@ -100,13 +123,14 @@ function tpl = fuzz_public_templates ()
   tpl.tocils = {{eiv, [2 1 0], 20}, {eiv, [2 1 0], 20, 5, 3, 1e-4}};
   tpl.qnml = {{data, [2 1 0], "lambda_svf", 3}};
   tpl.rarx = {{data, [2 2 1], "ff", 0.98}, {[y u], [2 2 1], "kf", 1e-3}};
-  tpl.rarxc = {{data, [2 1 1], "lambda_svf", 3}};
+  tpl.rarxc = {{data, [2 1 1], "lambda_svf", 3}, ...
+               {dz, [2 1 1], "lambda_svf", 3}};
   tpl.relay = {{1, [1 2 1], 0.05}, {1, [1 2 1], 0.05, "NumCycle", 3}};
   tpl.residc = {{data, M}, {data, thm, [2 1 0]}};
   ## residtrace on 320 samples (the fewest its validation third takes:
   ## about 10 s a call on this machine, 50 s on the 800 of long)
   mid = long(1:320);
-  tpl.residtrace = {{mid, M}};
+  tpl.residtrace = {{mid, M}, {mid, idpoly([1 2.4 4], [], "Ts", 0)}};
   ## a complete result (residtrace runs once per child process)
   try
     R = residtrace (mid, idtf (0.9, [1 1.5 0.5]));
@@ -117,11 +141,17 @@ function tpl = fuzz_public_templates ()
   tpl.residtrace_sim = {{R, mid}, {R, mid, "model", "top"}};
   tpl.residtrace_plot = {{R, [tempname() ".png"]}};
   tpl.rivc = {{data, [1 1 1 2 0]}, {gap, [1 0 0 2 0]}};
-  tpl.rivsvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}};
+  tpl.rivsvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}, ...
+                [{dp, [2 1 0]}, far, {"tsiv", 5}], ...
+                {dz, [2 1 0], "lambda_svf", 3}};
   tpl.rlsconverge = {{long, [2 1 0], "lambda_svf", 3}, ...
-                     {data, [2 1 0], "lambda_svf", 3, "nblocks", 3}};
-  tpl.rlssvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}};
-  tpl.rsrivc = {{data, [1 2 0], "lambda_svf", 3}, {gap, [1 2 0], 3}};
+                     {data, [2 1 0], "lambda_svf", 3, "nblocks", 3}, ...
+                     {dz, [2 1 0], "lambda_svf", 3}};
+  tpl.rlssvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}, ...
+                [{dp, [2 1 0]}, far], {dz, [2 1 0], "lambda_svf", 3}};
+  tpl.rsrivc = {{data, [1 2 0], "lambda_svf", 3}, {gap, [1 2 0], 3}, ...
+                [{dp, [1 2 0]}, far, {"tsiv", 5}], ...
+                {dz, [1 2 0], "lambda_svf", 3}};
   tpl.selcstruc = {{[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1]}, ...
                    {[0.9 0.1 1 2 0 1 1; 0.8 0.2 1 1 0 2 1], "c2sort", "RT2"}};
   tpl.sidgpmf = {{data2, 3, 3, 3}, {data2, 3, 3, 3, 2, 10}};
@@ -142,7 +172,7 @@ function tpl = fuzz_public_templates ()
                      "InitialCondition", "e"}, ...
                     {data, [], [1 2 0], "Denominator", "Different"}};
   tpl.stepplot = {{M}, {M, "r", P}};
-  tpl.svfcutoff = {{long, [1 2 0]}};
+  tpl.svfcutoff = {{long, [1 2 0]}, {dp, [1 2 0], "segments", 1e308}};
   tpl.svfscaling = {{data, [2 1 0], "lambda_svf", 3}};
   tpl.tfcoe = {{data, 2, 1}, {data, 2, 0, 0.1}, ...
                {data, 2, 1, "TdMin", 0.05, "NumTd", 8, "StepReduction", 3}, ...
@@ -160,4 +190,23 @@ function tpl = fuzz_public_templates ()
   tpl.throttleid = {{ts, "clrsrivc", "tsiv", 0.5}};
   tpl.throttleparams = {{}};
   tpl.throttlesim = {{}, {0.5 * ones(50, 1), 1e-3}};
+
+  ## methods and constructors
+  Pp = idproc ("P1D", "Kp", 2, "Tp1", 0.5, "Td", 0.1);
+  tpl.idmodel_setpvec = {{Mp, [4; 2.4; NaN]}, {Mp, [4; 2.4; 4]}, ...
+                         {M, [NaN 3 2 0]}, {Pp, [2 Inf 1]}};
+  tpl.idmodel_set = {{Mp, "theta", [4 2.4 NaN]}, ...
+                     {Mp, "covariance", -eye(3)}, {Pp, "Kp", Inf}};
+  tpl.idmodel_setcov = {{Mp, int8(zeros (3))}, {Mp, eye(3)}};
+  tpl.idmodel_idmodel = {{"idtf", struct(), -1, 1}, {"idtf", struct(), 1, NaN}};
+  for f = {"damp", "pole", "zero", "ss", "pzmap", "zpplot", "d2c"}
+    tpl.(["idmodel_" f{1}]) = {{Mp}};
+  endfor
+  tpl.iddata_nkshift = {{dp, int8(2)}, {dp, 2}};
+  tpl.iddata_detrend = {{dg}, {dg, 1}};
+  tpl.iddata_fft = {{dg}, {dp}};
+  tpl.iddata_horzcat = {{dp, dp}, {dp, dz}};
+  tpl.double_step = {{4, [1 2.4 4], {1}}, {4, [1 2.4 4]}};
+  tpl.double_bode = {{4, [1 2.4 4], {1}}, {4, [1 2.4 4]}};
+  tpl.double_pzmap = {{4, [1 2.4 4], {1}}, {4, [1 2.4 4]}};
 endfunction

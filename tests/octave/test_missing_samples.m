@@ -56,7 +56,15 @@ function test_missing_samples ()
   ## the external signals of the closed-loop calls, sampled as the record
   ## (its present samples on the irregular record)
   rs = @(d) u(rows (get (d, "OutputData")) == N | ! missing);
-  rec = @(d) {"controller", C, "r1", rs(d), "r2", 0 * rs(d)};
+  ## The recursive closed-loop estimators' loop u = r1 + Cp (r2 - y), with
+  ## r2 = 0 and a proportional Cp (a stable loop), holds on the record with
+  ## r1 = u + Cp y: their instruments then come from a loop that the data
+  ## obey (with r1 = u and C the recursion diverged and its frozen-model
+  ## output overflowed).
+  Cp = struct ("num", 0.2, "den", 1);
+  r1 = u + 0.2 * y;
+  r1s = @(d) r1(rows (get (d, "OutputData")) == N | ! missing);
+  rec = @(d) {"controller", Cp, "r1", r1s(d), "r2", 0 * r1s(d)};
 
   ## Bridged: {name, call (data, extra options), number of outputs, index
   ## of the estimate among them, index of the info output with the field

@@ -15,6 +15,8 @@
 ## whose file is not in this @@iddata folder decides: a file installed
 ## under @file{packages/control-@var{version}/} gets the control behaviour,
 ## anything else (scripts, the command line, this toolbox) the MATLAB one.
+## The frames of @code{contsid_guard}, which runs the public methods, are
+## skipped as well.
 ## @end deftypefn
 
 function tf = called_from_control (name)
@@ -26,7 +28,8 @@ function tf = called_from_control (name)
   frames = dbstack ("-completenames");
   for k = 2:numel (frames)
     file = frames(k).file;
-    if (! strncmp (file, here, numel (here)))
+    if (! strncmp (file, here, numel (here))
+        && ! strcmp (frames(k).name, "contsid_guard"))
       tf = ! isempty (regexp (file, '[\\/]packages[\\/]control-[^\\/]+[\\/]',
                               "once"));
       return;

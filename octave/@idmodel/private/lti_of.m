@@ -23,16 +23,28 @@ function [G, delay] = lti_of (P, form, fname)
   endswitch
   if (strcmp (P.kind, "idss"))
     p = P.par;
+    finite_or_error ({p.A, p.B, p.C, p.D}, P.kind);
     G = feval ("ss", p.A, p.B, p.C, p.D, tsam (P));
     if (strcmp (form, "tf"))
       G = feval ("tf", G);
     endif
   else
     [num, den] = tf_parts (P);
+    finite_or_error ([num(:); den(:)], P.kind);
     G = feval ("tf", num, den, tsam (P));
     if (strcmp (form, "ss"))
       G = feval ("ss", G);
     endif
+  endif
+endfunction
+
+## The control package's pole and realisation routines do not return on
+## NaN or Inf coefficients (the classes' set and setpvec refuse them; this
+## is the last check before the conversion).
+function finite_or_error (c, kind)
+  if (! all (cellfun (@(x) all (isfinite (x(:))), c)))
+    error ([kind ":badInput"], "%s: the model has NaN or Inf coefficients",
+           kind);
   endif
 endfunction
 

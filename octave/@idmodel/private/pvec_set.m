@@ -9,6 +9,13 @@
 
 function P = pvec_set (P, p)
   p = double (p(:));
+  ## NaN or Inf coefficients would reach the control package's pole and
+  ## realisation routines, which do not return on them; an idproc's NaN
+  ## is a parameter not yet known, its own convention.
+  if (any (isinf (p)) || (! strcmp (P.kind, "idproc") && any (isnan (p))))
+    error ([P.kind ":badInput"],
+           "%s: the parameters must be finite (NaN or Inf given)", P.kind);
+  endif
   s = P.par;
   k = 0;
   switch (P.kind)

@@ -229,8 +229,10 @@ endfunction
 ## CONTSID's theta [denominators, numerators]; a longer theta (a model
 ## with extra terms, residtrace) is only stored.
 function M = set_theta (M, v, fname)
-  if (! isnumeric (v) || ! isreal (v) || ! (isvector (v) || isempty (v)))
-    error ([fname ":badInput"], "%s: theta must be a real vector", fname);
+  if (! isnumeric (v) || ! isreal (v) || ! (isvector (v) || isempty (v))
+      || any (! isfinite (v)))
+    error ([fname ":badInput"], "%s: theta must be a finite real vector",
+           fname);
   endif
   T = legacy_order (M);
   if (numel (v) == columns (T))
@@ -246,10 +248,11 @@ function M = set_theta (M, v, fname)
   endif
 endfunction
 
+## CONTSID's covariance, in the order of theta: checked as setcov checks
+## it (symmetric positive semi-definite).
 function M = set_covariance (M, v, fname)
-  if (! isnumeric (v) || ! isreal (v) || rows (v) != columns (v))
-    error ([fname ":badInput"], "%s: covariance must be a square matrix",
-           fname);
+  if (! isempty (v))
+    v = check_cov (v, fname);
   endif
   T = legacy_order (M);
   if (rows (v) == columns (T) && isempty (M.legacy.theta))
@@ -348,6 +351,11 @@ function s = check_structure (s, old, fname)
     if (! isnumeric (e.Value) || ! isscalar (e.Value) || ! isreal (e.Value))
       error ([fname ":badInput"],
              "%s: Structure.%s.Value must be a real scalar", fname, f{1});
+    endif
+    if (isinf (e.Value))
+      error ([fname ":badInput"],
+             "%s: Structure.%s.Value must be finite (NaN: not yet known)",
+             fname, f{1});
     endif
     if (! isnan (e.Value) && (e.Value < e.Minimum || e.Value > e.Maximum))
       error ([fname ":badInput"],
