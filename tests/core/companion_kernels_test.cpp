@@ -78,7 +78,8 @@ TEST(CompanionKernels, ZohMatchesTheMatrixExponential) {
   std::uniform_real_distribution<double> log_hn(-4, 1);
   double worst = 0;
   for (int n = 1; n <= kMaxFixedOrder; ++n) {
-    const auto kernel = companion_discretizer<double>(n, InterSample::kZoh);
+    const auto kernel =
+        companion_discretizer<double>(n, Discretisation::kExactZoh);
     ASSERT_NE(kernel, nullptr);
     for (int trial = 0; trial < 400; ++trial) {
       const Eigen::VectorXd d = random_denominator(n, rng);
@@ -109,7 +110,8 @@ TEST(CompanionKernels, TrapezoidalMatchesTheDynamicRule) {
   std::mt19937_64 rng(141);
   std::uniform_real_distribution<double> log_hn(-4, 0.5);
   for (int n = 1; n <= kMaxFixedOrder; ++n) {
-    const auto kernel = companion_discretizer<double>(n, InterSample::kFoh);
+    const auto kernel =
+        companion_discretizer<double>(n, Discretisation::kTrapezoid);
     for (int trial = 0; trial < 400; ++trial) {
       const Eigen::VectorXd d = random_denominator(n, rng);
       const Eigen::MatrixXd F = companion_matrix<double>(d);
@@ -134,7 +136,8 @@ TEST(CompanionKernels, SinglePrecisionAgreesAtFloatRounding) {
   std::mt19937_64 rng(1414);
   std::uniform_real_distribution<double> log_hn(-3, 0.5);
   const double tol = 32 * std::numeric_limits<float>::epsilon();
-  for (const InterSample rule : {InterSample::kZoh, InterSample::kFoh}) {
+  for (const Discretisation rule :
+       {Discretisation::kExactZoh, Discretisation::kTrapezoid}) {
     for (int n = 1; n <= kMaxFixedOrder; ++n) {
       const auto kd = companion_discretizer<double>(n, rule);
       const auto kf = companion_discretizer<float>(n, rule);

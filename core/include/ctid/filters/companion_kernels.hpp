@@ -23,8 +23,10 @@
 //   MatrixExponential (the reference, discretization.hpp, checked against it
 //   in tests/core/companion_kernels_test.cpp).
 //   Trapezoidal rule (App. A.2, in the physical coordinates of
-//   discretization.hpp): Phi = (I - h/2 F)^-1 (I + h/2 F),
-//   Gamma = (I - h/2 F)^-1 e_n h/2, by a fixed-size LU.
+//   discretization.hpp; Discretisation::kTrapezoid):
+//   Phi = (I - h/2 F)^-1 (I + h/2 F), Gamma = (I - h/2 F)^-1 e_n h/2, by a
+//   fixed-size LU. The exact first-order hold has no fixed-size kernel here:
+//   the dynamic-size exponential of discretization.hpp computes it.
 //
 // FilterDiscretization (svf.hpp) picks these kernels once, when configured
 // with FilterKernels::kFixedSize and an order up to kMaxFixedOrder; the
@@ -43,6 +45,7 @@
 #include <type_traits>
 
 #include "ctid/base/types.hpp"
+#include "ctid/filters/discretization.hpp"
 
 namespace ctid {
 
@@ -432,10 +435,13 @@ class CompanionZohAdvance {
   int substeps_ = 1;
 };
 
-// The kernels of order n (nullptr when n is outside 1..kMaxFixedOrder).
+// The kernels of order n (nullptr when n is outside 1..kMaxFixedOrder, and
+// for the exact first-order hold, which the dynamic-size code of
+// discretization.hpp computes).
 template <typename S>
-CompanionDiscretizer<S> companion_discretizer(int n, InterSample rule) {
-  const bool zoh = rule == InterSample::kZoh;
+CompanionDiscretizer<S> companion_discretizer(int n, Discretisation rule) {
+  if (rule == Discretisation::kExactFoh) return nullptr;
+  const bool zoh = rule == Discretisation::kExactZoh;
   switch (n) {
     case 1:
       return zoh ? &detail::companion_zoh<1, S>
