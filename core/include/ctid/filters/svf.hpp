@@ -72,6 +72,9 @@ class FilterDiscretization {
     gamma1_ = Vector<S>::Zero(n_);
     const bool fixed = kernels == FilterKernels::kFixedSize;
     discretizer_ = fixed ? companion_discretizer<S>(n_, rule_) : nullptr;
+    foh_discretizer_ = fixed && rule_ == Discretisation::kExactFoh
+                           ? companion_foh_discretizer<S>(n_)
+                           : nullptr;
     propagator_ = fixed ? companion_propagator<S>(n_) : nullptr;
     dirty_ = true;
   }
@@ -117,6 +120,13 @@ class FilterDiscretization {
       dirty_ = false;
       return;
     }
+    if (foh_discretizer_ != nullptr) {
+      foh_discretizer_(d_.data(), h, Phi_.data(), gamma_.data(),
+                       gamma1_.data());
+      h_ = h;
+      dirty_ = false;
+      return;
+    }
     F_.setZero(n_, n_);
     for (int i = 0; i + 1 < n_; ++i) F_(i, i + 1) = 1;
     for (int j = 0; j < n_; ++j) F_(n_ - 1, j) = -d_(n_ - 1 - j);
@@ -152,6 +162,7 @@ class FilterDiscretization {
   Matrix<S> F_, G_, Gamma_, Gamma1_, work_;
   Eigen::PartialPivLU<Matrix<S>> lu_;
   CompanionDiscretizer<S> discretizer_ = nullptr;
+  CompanionFohDiscretizer<S> foh_discretizer_ = nullptr;
   CompanionPropagator<S> propagator_ = nullptr;
   S h_ = 0;
   bool dirty_ = true;
