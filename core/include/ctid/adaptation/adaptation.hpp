@@ -20,7 +20,7 @@
 // covariance_guard.hpp checks P when asked (the estimators' default). No
 // allocation happens in update().
 //
-// Fixed-size path (issue 14): configured with fixed_size = true and
+// Fixed-size path: configured with fixed_size = true and
 // np <= kMaxFixedParameters (the parameter counts orders 1-4 produce), each
 // step runs on compile-time-size maps of the same storage
 // (theta, P, Qn), with lambda and the adaptation kind read once at

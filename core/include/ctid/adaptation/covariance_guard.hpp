@@ -3,7 +3,7 @@
 // Protection of the covariance P of the standard-form recursions (RLSSVF,
 // eqs. 1.57/1.59, and the IV updates of RIVSVF/RSRIVC/CLRIVSVF/CLRSRIVC,
 // eqs. 2.29/2.30) over long runs of poor excitation, as one step after
-// each parameter update (issue 12).
+// each parameter update.
 //
 // Why. Under a constant input the regressor excites one direction only;
 // with forgetting factor 1 the eigenvalue of P in that direction decays as

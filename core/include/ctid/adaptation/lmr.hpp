@@ -17,7 +17,7 @@
 // forgetting factor, eq. 3.77), at the price of a bias toward the previous
 // estimate. P = R^-1, so kappa_2(P) = kappa_2(R).
 //
-// Square-root information form (not in the thesis; issue 12). R itself,
+// Square-root information form (not in the thesis). R itself,
 // summed in working precision, is lost under poor excitation: with a
 // constant input phi_f stays in one direction, where R grows to
 // |phi_f|^2 / (1 - lambda), while in the other directions R tends to Gamma.
@@ -52,7 +52,7 @@
 // The guard leaves L untouched, bit for bit, while neither applies.
 // Nothing is allocated per step.
 //
-// Fixed-size path (issue 14): configured with fixed_size = true and
+// Fixed-size path: configured with fixed_size = true and
 // np <= kMaxFixedParameters, the step runs as update_fixed<np>, unrolled
 // scalar code on a local copy of L written back once (as
 // ParameterUpdate::update_fixed in adaptation.hpp): the same rotations,

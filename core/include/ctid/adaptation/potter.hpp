@@ -36,7 +36,7 @@
 // costs several times the rest of the step (bench/ch3_bench.cpp). No
 // allocation happens in update().
 //
-// Fixed-size path (issue 14): configured with fixed_size = true and
+// Fixed-size path: configured with fixed_size = true and
 // np <= kMaxFixedParameters, the step runs as update_fixed<np>, unrolled
 // scalar code on local copies of S^T, theta and phi written back once (as
 // ParameterUpdate::update_fixed in adaptation.hpp): the same operations in
