@@ -129,7 +129,11 @@ void discretize(Discretisation rule, const Matrix<S>& F, const Matrix<S>& G,
                 S h, Matrix<S>& Phi, Matrix<S>& Gamma0, Matrix<S>& Gamma1) {
   switch (rule) {
     case Discretisation::kExactZoh:
-      zoh_discretize<S>(F, G, h, Phi, Gamma0);
+      // Phi and Gamma0 of the exact FOH are those of the exact ZOH (eq.
+      // A.6 with the slope's block added): one exponential gives both, so
+      // that ZOH and FOH channels filtered through discretize() share them
+      // to the last bit.
+      foh_discretize<S>(F, G, h, Phi, Gamma0, Gamma1);
       Gamma1.setZero(F.rows(), G.cols());
       return;
     case Discretisation::kExactFoh:
