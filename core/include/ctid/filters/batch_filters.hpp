@@ -6,9 +6,11 @@
 // estimators built on it: refined_iv_bj.hpp, hammerstein.hpp,
 // output_error.hpp). The discretisation of each interval is that of the
 // per-sample filters (svf.hpp): discretize() of discretization.hpp, by the
-// rule discretisation_of() gives for the signal's InterSample, so that the
-// same record filtered sample by sample and in one batch agrees to
-// rounding (tests/core/filters_test.cpp).
+// rule discretisation_of() gives for the signal's InterSample (the
+// per-sample filters of orders 1-4 compute the same matrices with the
+// fixed-size kernels of companion_kernels.hpp, equal to a few roundoffs),
+// so that the same record filtered sample by sample and in one batch
+// agrees to rounding (tests/core/batch_filters_test.cpp).
 //
 // The filter starts at rest at the first sample (FilterChannel's
 // rest_at_first_sample). Irregular sampling: the intervals of the time
