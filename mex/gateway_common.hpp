@@ -43,7 +43,9 @@ inline RecordView<double> read_record(const Gateway& g, const mxArray* y,
 }
 
 // The options every estimator and simulator shares, by field name:
-//   intersample  'zoh' | 'foh' (of u; default of the core: 'zoh')
+//   intersample  'zoh' | 'foh' | 'trapezoid' (of u; default of the core:
+//                'zoh'; 'foh' the exact first-order hold, 'trapezoid' the
+//                thesis' Tustin filter of a linear intersample behaviour)
 //   na, nb, nk   the orders (nb, nk one entry per input)
 //   lambda_svf   the SVF cut-off (rad/s)
 //   svf          'normalised' (default) | 'normalized' | 'ordinary'
@@ -51,7 +53,10 @@ inline RecordView<double> read_record(const Gateway& g, const mxArray* y,
 //   th0, P0      np-by-1 and np-by-np, absent or [] for the core's defaults
 inline InterSample read_intersample(OptionsReader& opt, InterSample fallback) {
   return opt.choice<InterSample>(
-      "intersample", {{"zoh", InterSample::kZoh}, {"foh", InterSample::kFoh}},
+      "intersample",
+      {{"zoh", InterSample::kZoh},
+       {"foh", InterSample::kFoh},
+       {"trapezoid", InterSample::kTrapezoid}},
       fallback);
 }
 

@@ -53,6 +53,11 @@
 ## forgetting factor of that RLSSVF-FF (default 0.998, thesis Table 3.2).
 ## @item precision
 ## @qcode{"double"} (default) or @qcode{"single"}, as in @code{rlssvf}.
+## @item InterSample
+## the rule by which the filters treat the input: the data's InterSample
+## (default), @qcode{"zoh"}, @qcode{"foh"} (the exact first-order hold) or
+## @qcode{"trapezoid"} (the trapezoidal, Tustin rule the thesis uses for an
+## input that is not piecewise constant, sec. 3.1.3).
 ## @item Missing
 ## @qcode{"bridge"} (default) or @qcode{"error"}: how a NaN in y or u (a
 ## missing sample) is treated, as in @code{rlssvf}.

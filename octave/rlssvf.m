@@ -89,6 +89,11 @@
 ## time (s) from which the estimates are updated (Suggested procedure 3.7);
 ## the filters run from the first sample, so the transient of the initial
 ## conditions passes before the estimation starts. Default 0.
+## @item InterSample
+## the rule by which the SVF filters the input: the data's InterSample
+## (default), @qcode{"zoh"}, @qcode{"foh"} (the exact first-order hold) or
+## @qcode{"trapezoid"} (the trapezoidal, Tustin rule the thesis uses for an
+## input that is not piecewise constant, sec. 3.1.3).
 ## @item Missing
 ## @qcode{"bridge"} (default) or @qcode{"error"}. A NaN in y or in an input
 ## marks a missing sample. With @qcode{"bridge"} the estimator runs on the
@@ -182,10 +187,10 @@
 ## @file{lmr.hpp}.
 ##
 ## @strong{Algorithm.} The input is filtered by the SVF with the data's
-## InterSample rule (exact ZOH through the matrix exponential, or the
-## trapezoidal rule for @qcode{"foh"}), the output always by the trapezoidal
-## rule, which suits a signal that is not piecewise constant (thesis
-## Suggested procedure 3.3). The filtered regression (eqs. 1.53-1.55) is
+## InterSample rule (exact ZOH through the matrix exponential, or the exact
+## first-order hold for @qcode{"foh"}, the batch estimators' rule too), the
+## output always by the trapezoidal rule, which suits a signal that is not
+## piecewise constant (thesis Suggested procedure 3.3). The filtered regression (eqs. 1.53-1.55) is
 ## updated by eq. (1.57) (forgetting factor) or eq. (1.59) (Kalman filter).
 ## Reference: A. Padilla, Recursive identification of continuous-time systems
 ## with time-varying parameters, PhD thesis, Universite de Lorraine, 2017,
@@ -281,11 +286,17 @@ endfunction
 %! assert (size (thm), [numel(u) 3]);
 %! assert (all (isfinite (thm(:))));
 
-%!test  # FOH data are filtered with the trapezoidal rule
+%!test  # FOH data are filtered by the first-order hold, not as ZOH
 %! d2 = iddata (y, u, Ts, "InterSample", "foh");
 %! a = rlssvf (d2, [2 1 0], "lambda_svf", 3);
 %! b = rlssvf (data, [2 1 0], "lambda_svf", 3);
 %! assert (any (abs (a(:) - b(:)) > 0));
+%! ## the option names the filter's rule: the data's by default
+%! c = rlssvf (data, [2 1 0], "lambda_svf", 3, "InterSample", "foh");
+%! assert (c, a);
+%! e = rlssvf (d2, [2 1 0], "lambda_svf", 3, "InterSample", "trapezoid");
+%! assert (any (abs (e(:) - a(:)) > 0));
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 3, "InterSample", "bl")
 
 %!test  # potter: the square-root form gives the standard estimates
 %! Qn = diag ([1e-4 1e-5 1e-5]);

@@ -20,7 +20,8 @@
 ## (@code{lambda_svf}, @code{adm}, @code{adg}, @code{th0}, @code{P0},
 ## @code{tsiv} (also "auto"), @code{dtupdate}, @code{stability},
 ## @code{mtheta}, @code{svf}, @code{scaling}, @code{antiwindup},
-## @code{antiwindup_lambda}, @code{precision}; @var{info} as there) plus:
+## @code{antiwindup_lambda}, @code{precision}, @code{InterSample};
+## @var{info} as there) plus:
 ## @table @code
 ## @item A
 ## a stable denominator [1 f1 .. f_nf] that starts the adaptive prefilter

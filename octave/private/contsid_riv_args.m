@@ -29,9 +29,13 @@ function p = contsid_riv_args (fname, routine, varargin)
                      "prefilter", "unit", "A", [], "controller", [],
                      "r1", [], "r2", [], "scaling", [], "antiwindup", 0,
                      "antiwindup_lambda", 0.998, "precision", "double",
-                     "covariance_guard", true, "GapSettle", []);
+                     "covariance_guard", true, "GapSettle", [],
+                     "InterSample", "");
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults,
                                               varargin{:});
+  ## The filters' rule for the input: the data's InterSample, or the
+  ## option's (e.g. "trapezoid" for the thesis' Tustin filtering).
+  d.intersample = contsid_filter_rule (fname, d, opts.InterSample);
   np = orders.np;
   na = orders.na;
   contsid_check_input (fname, d.u, orders.nb);

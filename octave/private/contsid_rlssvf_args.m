@@ -14,10 +14,14 @@ function p = contsid_rlssvf_args (fname, varargin)
   defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
                      "P0", [], "svf", "normalised", "potter", false,
                      "Gamma", [], "scaling", [], "ic", false, "tsls", 0,
-                     "precision", "double", "covariance_guard", true, "GapSettle", []);
+                     "precision", "double", "covariance_guard", true, "GapSettle", [],
+                     "InterSample", "");
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                              varargin{:});
   contsid_check_input (fname, d.u, orders.nb);
+  ## The filters' rule for the input: the data's InterSample, or the
+  ## option's (e.g. "trapezoid" for the thesis' Tustin filtering).
+  d.intersample = contsid_filter_rule (fname, d, opts.InterSample);
   o = contsid_recursive_options (fname, opts, orders.np, d);
   o = contsid_ch3_options (fname, opts, orders, d, o);
   o = extend_for_initial_conditions (o, orders);

@@ -78,7 +78,8 @@ TEST(CompanionKernels, ZohMatchesTheMatrixExponential) {
   std::uniform_real_distribution<double> log_hn(-4, 1);
   double worst = 0;
   for (int n = 1; n <= kMaxFixedOrder; ++n) {
-    const auto kernel = companion_discretizer<double>(n, InterSample::kZoh);
+    const auto kernel =
+        companion_discretizer<double>(n, Discretisation::kExactZoh);
     ASSERT_NE(kernel, nullptr);
     for (int trial = 0; trial < 400; ++trial) {
       const Eigen::VectorXd d = random_denominator(n, rng);
@@ -109,7 +110,8 @@ TEST(CompanionKernels, TrapezoidalMatchesTheDynamicRule) {
   std::mt19937_64 rng(141);
   std::uniform_real_distribution<double> log_hn(-4, 0.5);
   for (int n = 1; n <= kMaxFixedOrder; ++n) {
-    const auto kernel = companion_discretizer<double>(n, InterSample::kFoh);
+    const auto kernel =
+        companion_discretizer<double>(n, Discretisation::kTrapezoid);
     for (int trial = 0; trial < 400; ++trial) {
       const Eigen::VectorXd d = random_denominator(n, rng);
       const Eigen::MatrixXd F = companion_matrix<double>(d);
@@ -128,13 +130,56 @@ TEST(CompanionKernels, TrapezoidalMatchesTheDynamicRule) {
   }
 }
 
+// Exact FOH (the ZOH kernel of p D(p)) against the exponential of the
+// augmented matrix of discretization.hpp, over h ||F|| from 1e-3 to about
+// 3. Gamma1 ~ h/2 is small beside the augmented matrix's exponential
+// (norm ~ 1), whose roundoff both methods carry: the bound on each block
+// relative to its own norm is 1e-14 / min(1, h ||F||).
+TEST(CompanionKernels, ExactFohMatchesTheAugmentedExponential) {
+  std::mt19937_64 rng(142);
+  std::uniform_real_distribution<double> log_hn(-3, 0.5);
+  double worst = 0;
+  for (int n = 1; n <= kMaxFixedOrder; ++n) {
+    EXPECT_EQ(companion_discretizer<double>(n, Discretisation::kExactFoh),
+              nullptr);
+    const auto kernel = companion_foh_discretizer<double>(n);
+    ASSERT_NE(kernel, nullptr);
+    for (int trial = 0; trial < 400; ++trial) {
+      const Eigen::VectorXd d = random_denominator(n, rng);
+      const Eigen::MatrixXd F = companion_matrix<double>(d);
+      const double norm = F.cwiseAbs().colwise().sum().maxCoeff();
+      const double hn = std::pow(10.0, log_hn(rng));
+      const double h = hn / std::max(norm, 1.0);
+      Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, 1);
+      G(n - 1, 0) = 1;
+      Eigen::MatrixXd Phi_ref, G0_ref, G1_ref;
+      foh_discretize<double>(F, G, h, Phi_ref, G0_ref, G1_ref);
+      Eigen::MatrixXd Phi(n, n);
+      Eigen::VectorXd G0(n), G1(n);
+      kernel(d.data(), h, Phi.data(), G0.data(), G1.data());
+      const double tol = 1e-14 / std::min(1.0, hn);
+      const double e[3] = {norm_relative_error(Phi, Phi_ref),
+                           norm_relative_error(G0, G0_ref),
+                           norm_relative_error(G1, G1_ref)};
+      worst = std::max({worst, e[0], e[1], e[2]});
+      for (double err : e) {
+        EXPECT_LE(err, tol)
+            << "n = " << n << ", h = " << h << ", d = " << d.transpose();
+      }
+    }
+  }
+  std::printf("largest relative difference to the augmented expm: %.2e\n",
+              worst);
+}
+
 // Single precision: the float kernel against the double one, at float
 // rounding (32 unit roundoffs).
 TEST(CompanionKernels, SinglePrecisionAgreesAtFloatRounding) {
   std::mt19937_64 rng(1414);
   std::uniform_real_distribution<double> log_hn(-3, 0.5);
   const double tol = 32 * std::numeric_limits<float>::epsilon();
-  for (const InterSample rule : {InterSample::kZoh, InterSample::kFoh}) {
+  for (const Discretisation rule :
+       {Discretisation::kExactZoh, Discretisation::kTrapezoid}) {
     for (int n = 1; n <= kMaxFixedOrder; ++n) {
       const auto kd = companion_discretizer<double>(n, rule);
       const auto kf = companion_discretizer<float>(n, rule);

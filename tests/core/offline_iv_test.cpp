@@ -240,10 +240,10 @@ TEST(OfflineIv, NoiseFreeOpenLoopRecordIsRecovered) {
   EXPECT_LT(fine.sriv, 1e-11);
 }
 
-// A zero, a delay of 3 samples and a FOH input (filtered by the trapezoidal
-// rule, simulated exactly as piecewise linear): u_f now carries the Tustin
-// error too, so SRIVC is no longer exact and both methods sit at O(Ts^2)
-// (measured 6.5e-5 and 4.7e-5 at Ts = 0.01).
+// A zero, a delay of 3 samples and a FOH input (simulated exactly as
+// piecewise linear, filtered by the exact first-order hold): IVSVF keeps
+// the O(Ts^2) error of the trapezoidal filtering of y (measured 7.7e-5 at
+// Ts = 0.01), SRIVC, which filters y by the model, is exact.
 TEST(OfflineIv, NoiseFreeRecordWithZeroDelayAndFohInput) {
   const double ts = 0.01;
   const ModelOrders orders = siso_orders(2, 2, 3);

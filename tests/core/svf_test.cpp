@@ -63,7 +63,8 @@ TEST(Svf, OutputsSatisfyTheFilterEquation) {
   const double lambda = 4, h = 0.01;
   const Eigen::VectorXd d = svf_denominator<double>(n, lambda);
   const double g = svf_gain<double>(n, lambda, true);
-  for (InterSample is : {InterSample::kZoh, InterSample::kFoh}) {
+  for (InterSample is :
+       {InterSample::kZoh, InterSample::kFoh, InterSample::kTrapezoid}) {
     StateVariableFilter<double> svf(n, is);
     svf.set_denominator(d, g);
     std::mt19937 rng(3);
@@ -123,7 +124,7 @@ TEST(Svf, ZohMatchesFineStepIntegrationWithIrregularSampling) {
 //   lh).
 TEST(Svf, TrapezoidalMatchesClosedFormTustin) {
   const double lambda = 5, h = 0.02;
-  StateVariableFilter<double> svf(1, InterSample::kFoh);
+  StateVariableFilter<double> svf(1, InterSample::kTrapezoid);
   svf.set_denominator(svf_denominator<double>(1, lambda), lambda);
   const double a = (2 - lambda * h) / (2 + lambda * h);
   const double b = lambda * h / (2 + lambda * h);
@@ -161,7 +162,7 @@ TEST(Svf, TrapezoidalMatchesThesisEquationA7) {
   const Eigen::MatrixXd Hd = std::sqrt(h) * H * inv;
   const Eigen::MatrixXd Jd = J + h / 2 * H * inv * G;
 
-  StateVariableFilter<double> svf(n, InterSample::kFoh);
+  StateVariableFilter<double> svf(n, InterSample::kTrapezoid);
   svf.set_denominator(d, g);
   std::mt19937 rng(5);
   std::normal_distribution<double> normal;

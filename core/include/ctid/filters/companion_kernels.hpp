@@ -23,8 +23,16 @@
 //   MatrixExponential (the reference, discretization.hpp, checked against it
 //   in tests/core/companion_kernels_test.cpp).
 //   Trapezoidal rule (App. A.2, in the physical coordinates of
-//   discretization.hpp): Phi = (I - h/2 F)^-1 (I + h/2 F),
-//   Gamma = (I - h/2 F)^-1 e_n h/2, by a fixed-size LU.
+//   discretization.hpp; Discretisation::kTrapezoid):
+//   Phi = (I - h/2 F)^-1 (I + h/2 F), Gamma = (I - h/2 F)^-1 e_n h/2, by a
+//   fixed-size LU.
+//   Exact first-order hold (Discretisation::kExactFoh): the ZOH kernel of
+//   order n + 1 for p D(p), whose companion state for a unit step is
+//   [int q, q, q', .., q^(n-1)] with D(p) q = 1: its last n entries are the
+//   ZOH of D (Phi, Gamma0), its first n the integral of the step response,
+//   which is the response to the unit ramp tau/h times h, so Gamma1 = (first
+//   n entries) / h. The dynamic reference is the exponential of the
+//   augmented matrix of discretization.hpp.
 //
 // FilterDiscretization (svf.hpp) picks these kernels once, when configured
 // with FilterKernels::kFixedSize and an order up to kMaxFixedOrder; the
@@ -43,6 +51,7 @@
 #include <type_traits>
 
 #include "ctid/base/types.hpp"
+#include "ctid/filters/discretization.hpp"
 
 namespace ctid {
 
@@ -54,6 +63,11 @@ constexpr int kMaxFixedOrder = 4;
 // denominator coefficients d (n values).
 template <typename S>
 using CompanionDiscretizer = void (*)(const S* d, S h, S* phi, S* gamma);
+
+// The exact FOH: Phi, Gamma0 and Gamma1 (discretization.hpp's form).
+template <typename S>
+using CompanionFohDiscretizer = void (*)(const S* d, S h, S* phi, S* gamma0,
+                                         S* gamma1);
 
 // z <- Phi z + Gamma v, z of n values.
 template <typename S>
@@ -241,6 +255,25 @@ void companion_trapezoidal(const S* d, S h, S* phi, S* gamma) {
   Phi.diagonal().array() -= S(1);
   Eigen::Map<Mat>{phi} = Phi;
   Eigen::Map<Vec>{gamma} = X.col(N - 1) * (h / 2);
+}
+
+// The exact FOH of D from the ZOH of p D(p) (see the header comment).
+template <int N, typename S>
+void companion_foh(const S* d, S h, S* phi, S* gamma0, S* gamma1) {
+  constexpr int M = N + 1;
+  S augmented[M];
+  for (int i = 0; i < N; ++i) augmented[i] = d[i];
+  augmented[N] = 0;
+  S phi_m[M * M], gamma_m[M];
+  companion_zoh<M, S>(augmented, h, phi_m, gamma_m);
+  for (int j = 0; j < N; ++j) {  // column-major, the trailing block
+    for (int i = 0; i < N; ++i) phi[j * N + i] = phi_m[(j + 1) * M + i + 1];
+  }
+  const S inverse_h = S(1) / h;
+  for (int i = 0; i < N; ++i) {
+    gamma0[i] = gamma_m[i + 1];
+    gamma1[i] = gamma_m[i] * inverse_h;
+  }
 }
 
 template <int N, typename S>
@@ -432,10 +465,13 @@ class CompanionZohAdvance {
   int substeps_ = 1;
 };
 
-// The kernels of order n (nullptr when n is outside 1..kMaxFixedOrder).
+// The kernels of order n (nullptr when n is outside 1..kMaxFixedOrder, and
+// for the exact first-order hold, whose kernel has a second Gamma:
+// companion_foh_discretizer below).
 template <typename S>
-CompanionDiscretizer<S> companion_discretizer(int n, InterSample rule) {
-  const bool zoh = rule == InterSample::kZoh;
+CompanionDiscretizer<S> companion_discretizer(int n, Discretisation rule) {
+  if (rule == Discretisation::kExactFoh) return nullptr;
+  const bool zoh = rule == Discretisation::kExactZoh;
   switch (n) {
     case 1:
       return zoh ? &detail::companion_zoh<1, S>
@@ -449,6 +485,22 @@ CompanionDiscretizer<S> companion_discretizer(int n, InterSample rule) {
     case 4:
       return zoh ? &detail::companion_zoh<4, S>
                  : &detail::companion_trapezoidal<4, S>;
+    default:
+      return nullptr;
+  }
+}
+
+template <typename S>
+CompanionFohDiscretizer<S> companion_foh_discretizer(int n) {
+  switch (n) {
+    case 1:
+      return &detail::companion_foh<1, S>;
+    case 2:
+      return &detail::companion_foh<2, S>;
+    case 3:
+      return &detail::companion_foh<3, S>;
+    case 4:
+      return &detail::companion_foh<4, S>;
     default:
       return nullptr;
   }

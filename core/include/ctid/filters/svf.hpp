@@ -14,18 +14,20 @@
 // so p^i F s = g z_i (i < n) and p^n F s = g (s - d^T z reversed). The state
 // keeps its meaning when D changes, so a time-varying filter carries it
 // across a change of coefficients. Discretisation per sample interval h_k
-// (irregular sampling allowed): exact ZOH or the trapezoidal rule, see
-// discretization.hpp. Signals that share a denominator and a rule share one
-// FilterDiscretization (one matrix exponential per change) and keep their
-// own FilterChannel state.
+// (irregular sampling allowed) by the rule of the signal's InterSample
+// (discretisation_of): exact ZOH, exact FOH or the trapezoidal rule, the
+// matrices of discretization.hpp, which the batch filters
+// (batch_filters.hpp) share. Signals that share a denominator and a rule
+// share one FilterDiscretization (one matrix exponential per change) and
+// keep their own FilterChannel state.
 #pragma once
 
 #include <cmath>
 #include <limits>
 
+#include "ctid/base/types.hpp"
 #include "ctid/filters/companion_kernels.hpp"
 #include "ctid/filters/discretization.hpp"
-#include "ctid/base/types.hpp"
 
 namespace ctid {
 
@@ -63,11 +65,16 @@ class FilterDiscretization {
                  FilterKernels kernels = FilterKernels::kFixedSize) {
     n_ = order;
     intersample_ = intersample;
+    rule_ = discretisation_of(intersample);
     d_ = Vector<S>::Zero(n_);
     Phi_ = Matrix<S>::Identity(n_, n_);
     gamma_ = Vector<S>::Zero(n_);
+    gamma1_ = Vector<S>::Zero(n_);
     const bool fixed = kernels == FilterKernels::kFixedSize;
-    discretizer_ = fixed ? companion_discretizer<S>(n_, intersample) : nullptr;
+    discretizer_ = fixed ? companion_discretizer<S>(n_, rule_) : nullptr;
+    foh_discretizer_ = fixed && rule_ == Discretisation::kExactFoh
+                           ? companion_foh_discretizer<S>(n_)
+                           : nullptr;
     propagator_ = fixed ? companion_propagator<S>(n_) : nullptr;
     dirty_ = true;
   }
@@ -91,9 +98,14 @@ class FilterDiscretization {
 
   int order() const { return n_; }
   InterSample intersample() const { return intersample_; }
+  Discretisation rule() const { return rule_; }
   const Vector<S>& denominator() const { return d_; }
+  // z_k = Phi z_(k-1) + Gamma v with v = s_(k-1) (exact ZOH and FOH) or
+  // s_(k-1) + s_k (trapezoidal rule, Gamma = Bd), plus Gamma1 (s_k -
+  // s_(k-1)) for the exact FOH (Gamma1 = 0 otherwise).
   const Matrix<S>& Phi() const { return Phi_; }
   const Vector<S>& Gamma() const { return gamma_; }
+  const Vector<S>& Gamma1() const { return gamma1_; }
   // The fixed-size z <- Phi z + Gamma v of this order, or nullptr.
   CompanionPropagator<S> propagator() const { return propagator_; }
 
@@ -108,13 +120,23 @@ class FilterDiscretization {
       dirty_ = false;
       return;
     }
+    if (foh_discretizer_ != nullptr) {
+      foh_discretizer_(d_.data(), h, Phi_.data(), gamma_.data(),
+                       gamma1_.data());
+      h_ = h;
+      dirty_ = false;
+      return;
+    }
     F_.setZero(n_, n_);
     for (int i = 0; i + 1 < n_; ++i) F_(i, i + 1) = 1;
     for (int j = 0; j < n_; ++j) F_(n_ - 1, j) = -d_(n_ - 1 - j);
     G_.setZero(n_, 1);
     G_(n_ - 1, 0) = 1;
-    if (intersample_ == InterSample::kZoh) {
+    if (rule_ == Discretisation::kExactZoh) {
       zoh_discretize<S>(F_, G_, h, Phi_, Gamma_);
+    } else if (rule_ == Discretisation::kExactFoh) {
+      foh_discretize<S>(F_, G_, h, Phi_, Gamma_, Gamma1_);
+      gamma1_ = Gamma1_.col(0);
     } else {
       // (I - h/2 F)^-1 (I + h/2 F) and (I - h/2 F)^-1 G h/2, see
       // discretization.hpp.
@@ -133,12 +155,14 @@ class FilterDiscretization {
 
   int n_ = 0;
   InterSample intersample_ = InterSample::kZoh;
+  Discretisation rule_ = Discretisation::kExactZoh;
   Vector<S> d_;
   Matrix<S> Phi_;
-  Vector<S> gamma_;
-  Matrix<S> F_, G_, Gamma_, work_;
+  Vector<S> gamma_, gamma1_;
+  Matrix<S> F_, G_, Gamma_, Gamma1_, work_;
   Eigen::PartialPivLU<Matrix<S>> lu_;
   CompanionDiscretizer<S> discretizer_ = nullptr;
+  CompanionFohDiscretizer<S> foh_discretizer_ = nullptr;
   CompanionPropagator<S> propagator_ = nullptr;
   S h_ = 0;
   bool dirty_ = true;
@@ -158,11 +182,13 @@ class FilterChannel {
   }
 
   // Zero state; the next sample is the first of a record. ZOH starts with
-  // the state at rest at t_k, the trapezoidal rule by default as if s and
-  // the state were zero one interval earlier (a discrete filter from rest);
-  // with rest_at_first_sample, at rest at t_k like ZOH (the continuous
-  // filter started at the first sample, which is what the initial-condition
-  // regressors of eqs. 3.36-3.41 describe).
+  // the state at rest at t_k; the trapezoidal rule and the exact FOH by
+  // default as if s and the state were zero one interval earlier (a
+  // discrete filter from rest; for the exact FOH a ramp from 0 to s(t_k)
+  // over one interval); with rest_at_first_sample, at rest at t_k like ZOH
+  // (the continuous filter started at the first sample, which is what the
+  // initial-condition regressors of eqs. 3.36-3.41 describe, and what the
+  // batch filters do).
   void set_rest_at_first_sample(bool rest) { rest_at_first_sample_ = rest; }
   void reset() {
     z_.setZero();
@@ -172,16 +198,22 @@ class FilterChannel {
 
   // Feeds s(t_k); `disc` must hold the matrices of t_k - t_(k-1).
   void step(const FilterDiscretization<S>& disc, S gain, S s) {
-    const bool zoh = disc.intersample() == InterSample::kZoh;
+    const Discretisation rule = disc.rule();
+    const bool trapezoid = rule == Discretisation::kTrapezoid;
+    const bool foh = rule == Discretisation::kExactFoh;
     if (!first_ && disc.propagator() != nullptr) {
       disc.propagator()(disc.Phi().data(), disc.Gamma().data(), z_.data(),
-                        zoh ? s_prev_ : s_prev_ + s);
+                        trapezoid ? s_prev_ + s : s_prev_);
+      if (foh) z_ += disc.Gamma1() * (s - s_prev_);
     } else if (!first_) {
       z_next_.noalias() = disc.Phi() * z_;
-      z_next_ += disc.Gamma() * (zoh ? s_prev_ : s_prev_ + s);
+      z_next_ += disc.Gamma() * (trapezoid ? s_prev_ + s : s_prev_);
+      if (foh) z_next_ += disc.Gamma1() * (s - s_prev_);
       z_.swap(z_next_);
-    } else if (!zoh && !rest_at_first_sample_) {
+    } else if (!rest_at_first_sample_ && trapezoid) {
       z_.noalias() = disc.Gamma() * s;
+    } else if (!rest_at_first_sample_ && foh) {
+      z_.noalias() = disc.Gamma1() * s;
     }
     first_ = false;
     s_prev_ = s;
@@ -205,11 +237,13 @@ class FilterChannel {
     const S* Phi = disc.Phi().data();
     const S* Gamma = disc.Gamma().data();
     const S* d = disc.denominator().data();
-    const bool zoh = disc.intersample() == InterSample::kZoh;
+    const Discretisation rule = disc.rule();
+    const bool trapezoid = rule == Discretisation::kTrapezoid;
+    const bool foh = rule == Discretisation::kExactFoh;
     S* z = z_.data();
     S next[N];
     if (!first_) {
-      const S v = zoh ? s_prev_ : s_prev_ + s;
+      const S v = trapezoid ? s_prev_ + s : s_prev_;
       S state[N];
 #pragma GCC unroll 4
       for (int i = 0; i < N; ++i) state[i] = z[i];
@@ -222,9 +256,16 @@ class FilterChannel {
       }
 #pragma GCC unroll 4
       for (int i = 0; i < N; ++i) next[i] += Gamma[i] * v;
-    } else if (!zoh && !rest_at_first_sample_) {
+      if (foh) {
+        const S* Gamma1 = disc.Gamma1().data();
+        const S du = s - s_prev_;
 #pragma GCC unroll 4
-      for (int i = 0; i < N; ++i) next[i] = Gamma[i] * s;
+        for (int i = 0; i < N; ++i) next[i] += Gamma1[i] * du;
+      }
+    } else if (!rest_at_first_sample_ && (trapezoid || foh)) {
+      const S* first = trapezoid ? Gamma : disc.Gamma1().data();
+#pragma GCC unroll 4
+      for (int i = 0; i < N; ++i) next[i] = first[i] * s;
     } else {
 #pragma GCC unroll 4
       for (int i = 0; i < N; ++i) next[i] = z[i];

@@ -25,9 +25,9 @@ struct SvfSettings {
   S lambda_svf = 1;
   bool normalised = true;  // (lambda/(p+lambda))^na, eq. (3.1)
   InterSample u_intersample = InterSample::kZoh;
-  InterSample y_intersample = InterSample::kFoh;
-  // Trapezoidal channels start at rest at the first sample instead of as a
-  // discrete filter from rest (see FilterChannel::reset).
+  InterSample y_intersample = InterSample::kTrapezoid;
+  // Trapezoidal and FOH channels start at rest at the first sample instead
+  // of as a discrete filter from rest (see FilterChannel::reset).
   bool rest_at_first_sample = false;
   // Fixed-size filter kernels for orders 1-4 (companion_kernels.hpp), or the
   // dynamic-size reference.

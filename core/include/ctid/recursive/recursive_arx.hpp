@@ -159,7 +159,7 @@ class RecursiveArx {
     u_past_.assign(config.nk + config.nb, S(0));
     if (config.lambda_prefilter > 0) {
       for (StateVariableFilter<S>* f : {&filter_y_, &filter_u_}) {
-        f->configure(config.na, InterSample::kFoh);
+        f->configure(config.na, InterSample::kTrapezoid);
         f->set_denominator(svf_denominator<S>(config.na,
                                               config.lambda_prefilter),
                            svf_gain<S>(config.na, config.lambda_prefilter,
