@@ -24,8 +24,10 @@ using ctid::mex::Gateway;
 void effect_sim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
   if (nrhs != 3) {
-    g.fail("badInput", "the gateway takes 3 arguments (fname, W, options), "
-                       "got " + std::to_string(nrhs));
+    g.fail("badInput",
+           "the gateway takes 3 arguments (fname, W, options), "
+           "got " +
+               std::to_string(nrhs));
   }
   if (nlhs > 2) g.fail("badInput", "at most 2 outputs (x, u1)");
   g.require_real_double(prhs[1], "W");
@@ -63,8 +65,9 @@ void effect_sim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const Eigen::MatrixXd cnum = opt.matrix("controller_num", 1, -1);
   const Eigen::MatrixXd cden = opt.matrix("controller_den", 1, -1);
   if ((cnum.size() == 0) != (cden.size() == 0)) {
-    g.fail("badOption", "options 'controller_num' and 'controller_den' go "
-                        "together");
+    g.fail("badOption",
+           "options 'controller_num' and 'controller_den' go "
+           "together");
   }
   if (cden.size() > 0) {
     c.controller_num = cnum.row(0).transpose();
@@ -97,8 +100,7 @@ void effect_sim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("residtrace", {"residtrace"}, nrhs, prhs,
-                         [&](const Gateway& g) {
-                           effect_sim_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "residtrace", {"residtrace"}, nrhs, prhs,
+      [&](const Gateway& g) { effect_sim_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

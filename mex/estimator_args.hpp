@@ -116,11 +116,10 @@ inline bool read_single_precision(OptionsReader& opt) {
 // (companion_kernels.hpp); 'dynamic': the dynamic-size reference, for
 // comparisons and benchmarks.
 inline FilterKernels read_filter_kernels(OptionsReader& opt) {
-  return opt.choice<FilterKernels>(
-      "kernels",
-      {{"fixed", FilterKernels::kFixedSize},
-       {"dynamic", FilterKernels::kDynamic}},
-      FilterKernels::kFixedSize);
+  return opt.choice<FilterKernels>("kernels",
+                                   {{"fixed", FilterKernels::kFixedSize},
+                                    {"dynamic", FilterKernels::kDynamic}},
+                                   FilterKernels::kFixedSize);
 }
 
 // ---- single precision: the same core, instantiated for float -----------

@@ -7,10 +7,10 @@
 #pragma once
 
 #include "ctid/adaptation/adaptation.hpp"
-#include "ctid/simulation/controller.hpp"
 #include "ctid/base/model.hpp"
 #include "ctid/base/record.hpp"
 #include "ctid/filters/svf_regressor.hpp"
+#include "ctid/simulation/controller.hpp"
 #include "options_reader.hpp"
 
 namespace ctid::mex {
@@ -52,12 +52,11 @@ inline RecordView<double> read_record(const Gateway& g, const mxArray* y,
 //   adm, adg     'ff' and the forgetting factor, or 'kf' and the np-by-np Qn
 //   th0, P0      np-by-1 and np-by-np, absent or [] for the core's defaults
 inline InterSample read_intersample(OptionsReader& opt, InterSample fallback) {
-  return opt.choice<InterSample>(
-      "intersample",
-      {{"zoh", InterSample::kZoh},
-       {"foh", InterSample::kFoh},
-       {"trapezoid", InterSample::kTrapezoid}},
-      fallback);
+  return opt.choice<InterSample>("intersample",
+                                 {{"zoh", InterSample::kZoh},
+                                  {"foh", InterSample::kFoh},
+                                  {"trapezoid", InterSample::kTrapezoid}},
+                                 fallback);
 }
 
 inline ModelOrders read_orders(const Gateway& g, OptionsReader& opt) {

@@ -166,10 +166,10 @@ void offline_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("srivc",
-                         {"lssvf", "ivsvf", "srivc", "clsrivc", "svfscaling", "tocls", "tocils",
-                          "rlssvf", "rivsvf", "rsrivc", "clrivsvf", "clrsrivc"},
-                         nrhs, prhs, [&](const Gateway& g) {
-                           offline_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "srivc",
+      {"lssvf", "ivsvf", "srivc", "clsrivc", "svfscaling", "tocls", "tocils",
+       "rlssvf", "rivsvf", "rsrivc", "clrivsvf", "clrsrivc"},
+      nrhs, prhs,
+      [&](const Gateway& g) { offline_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

@@ -90,15 +90,16 @@ void pde_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   const Eigen::VectorXd t = vector_option(g, opt, "t");
   const Eigen::VectorXd x = vector_option(g, opt, "x");
   if (lssvf) {
-    const ctid::HeatRule rule = opt.choice<ctid::HeatRule>(
-        "rule", {{"bili", ctid::HeatRule::kBilinear},
-                 {"euler", ctid::HeatRule::kEuler}},
-        ctid::HeatRule::kBilinear);
+    const ctid::HeatRule rule =
+        opt.choice<ctid::HeatRule>("rule",
+                                   {{"bili", ctid::HeatRule::kBilinear},
+                                    {"euler", ctid::HeatRule::kEuler}},
+                                   ctid::HeatRule::kBilinear);
     const Eigen::MatrixXd lambda = opt.required_matrix("lambda", 1, 2);
     opt.finish();
     Eigen::Vector2d theta;
-    g.check(ctid::heat_lssvf(t, x, y, u, rule, lambda(0, 0), lambda(0, 1),
-                             &theta));
+    g.check(
+        ctid::heat_lssvf(t, x, y, u, rule, lambda(0, 0), lambda(0, 1), &theta));
     plhs[0] = ctid::mex::to_output(theta);
     return;
   }
@@ -127,10 +128,10 @@ void pde_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway(
-      "sim_heat",
-      {"sim_heat", "local_filter3", "pdelssvf4heatdiffusion",
-       "pdesrivc4heatdiffusion", "pderivc4heatdiffusion"},
-      nrhs, prhs,
-      [&](const Gateway& g) { pde_gateway(g, nlhs, plhs, nrhs, prhs); });
+  ctid::mex::run_gateway("sim_heat",
+                         {"sim_heat", "local_filter3", "pdelssvf4heatdiffusion",
+                          "pdesrivc4heatdiffusion", "pderivc4heatdiffusion"},
+                         nrhs, prhs, [&](const Gateway& g) {
+                           pde_gateway(g, nlhs, plhs, nrhs, prhs);
+                         });
 }

@@ -42,11 +42,11 @@ void rarx_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     g.fail("badInput", "na and nb must be integers in 1..50");
   }
   const long np = config.na + config.nb;
-  const bool kalman = opt.choice<bool>("adm", {{"ff", false}, {"kf", true}},
-                                       false);
+  const bool kalman =
+      opt.choice<bool>("adm", {{"ff", false}, {"kf", true}}, false);
   if (kalman) {
-    config.adaptation = ctid::KalmanAdaptation<double>(
-        opt.matrix("adg", np, np));
+    config.adaptation =
+        ctid::KalmanAdaptation<double>(opt.matrix("adg", np, np));
   } else {
     config.adaptation =
         ctid::ForgettingFactorAdaptation<double>(opt.scalar("adg", 1.0));

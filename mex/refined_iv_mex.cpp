@@ -170,14 +170,28 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
               mxGetPr(plhs[1]));
   }
   if (nlhs >= 3) {
-    const char* fields[] = {
-        "converged",      "stable",    "iterations", "reason",
-        "noise_variance", "cutoff",    "time_scale", "starts",
-        "condition",      "x0",        "offset",     "simulated",
-        "free_response",  "determined", "clipped",   "clipped_iterations",
-        "integrator_suspected", "loss_history", "lowest_theta",
-        "lowest_noise_variance", "lowest_integrator_suspected",
-        "lowest_simulated"};
+    const char* fields[] = {"converged",
+                            "stable",
+                            "iterations",
+                            "reason",
+                            "noise_variance",
+                            "cutoff",
+                            "time_scale",
+                            "starts",
+                            "condition",
+                            "x0",
+                            "offset",
+                            "simulated",
+                            "free_response",
+                            "determined",
+                            "clipped",
+                            "clipped_iterations",
+                            "integrator_suspected",
+                            "loss_history",
+                            "lowest_theta",
+                            "lowest_noise_variance",
+                            "lowest_integrator_suspected",
+                            "lowest_simulated"};
     mxArray* info = mxCreateStructMatrix(1, 1, 22, fields);
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
@@ -210,8 +224,7 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                result.lowest_theta.size() > 0
                    ? mxCreateDoubleScalar(result.lowest_noise_variance)
                    : mxCreateDoubleMatrix(0, 0, mxREAL));
-    const std::size_t lowest_groups =
-        result.lowest_integrator_suspected.size();
+    const std::size_t lowest_groups = result.lowest_integrator_suspected.size();
     mxArray* lowest_suspected = mxCreateLogicalMatrix(1, lowest_groups);
     for (std::size_t g = 0; g < lowest_groups; ++g) {
       mxGetLogicals(lowest_suspected)[g] =
@@ -219,8 +232,8 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     }
     mxSetField(info, 0, "lowest_integrator_suspected", lowest_suspected);
     mxSetField(info, 0, "lowest_simulated", to_output(result.lowest_simulated));
-    mxArray* losses = ctid::mex::make_output_matrix(
-        result.loss_history.size(), 1);
+    mxArray* losses =
+        ctid::mex::make_output_matrix(result.loss_history.size(), 1);
     std::copy(result.loss_history.begin(), result.loss_history.end(),
               mxGetPr(losses));
     mxSetField(info, 0, "loss_history", losses);
@@ -231,12 +244,11 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("srivc",
-                         {"lssvf", "ivsvf", "srivc", "clsrivc", "svfcutoff",
-                          "srivcstruc", "residtrace", "comparec", "simc",
-                          "tfsrivc", "tfsrivc_init", "procsrivc", "tfcoe",
-                          "tfrivc"},
-                         nrhs, prhs, [&](const Gateway& g) {
-                           refined_iv_gateway(g, nlhs, plhs, nrhs, prhs);
-                         });
+  ctid::mex::run_gateway(
+      "srivc",
+      {"lssvf", "ivsvf", "srivc", "clsrivc", "svfcutoff", "srivcstruc",
+       "residtrace", "comparec", "simc", "tfsrivc", "tfsrivc_init", "procsrivc",
+       "tfcoe", "tfrivc"},
+      nrhs, prhs,
+      [&](const Gateway& g) { refined_iv_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

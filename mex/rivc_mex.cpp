@@ -12,9 +12,9 @@
 //   method  'rivc' (default; with controller_num/_den: CLRIVC),
 //           'cl2srivc' (two-stage SRIVC: u on r, then y on u_hat) or
 //           'arma' (the ARMA estimator alone on y: nd, nc).
-//   nb, nc, nd, nf, nk (nb, nf, nk: one entry per input), delay (continuous, time units), intersample
-//   (0 zoh, 1 foh), tol, maxiter, theta_init ([f b]), cutoffs,
-//   max_starts (the SRIVC start), arma_maxiter, arma_method ('pem' or
+//   nb, nc, nd, nf, nk (nb, nf, nk: one entry per input), delay (continuous,
+//   time units), intersample (0 zoh, 1 foh), tol, maxiter, theta_init ([f b]),
+//   cutoffs, max_starts (the SRIVC start), arma_maxiter, arma_method ('pem' or
 //   'ivarma': the noise model's estimator), controller_num,
 //   controller_den (descending powers of p); cl2srivc: cl_nb, cl_nf, cl_nk,
 //   cl_theta_init (stage 1's start; theta_init starts stage 2).
@@ -74,9 +74,8 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (static_cast<int>(nb_each.size()) != num_inputs ||
       static_cast<int>(nf_each.size()) != num_inputs ||
       static_cast<int>(nk_each.size()) != num_inputs) {
-    g.fail("dimensionMismatch",
-           "nb, nf and nk need one entry per input (" +
-               std::to_string(num_inputs) + ")");
+    g.fail("dimensionMismatch", "nb, nf and nk need one entry per input (" +
+                                    std::to_string(num_inputs) + ")");
   }
   problem.nb = nb_each[0];
   problem.nf = nf_each[0];
@@ -175,9 +174,9 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     stage_settings.theta_init = settings.theta_init;
     ctid::Vector<double> loop_start;
     if (cl_theta_init.size() > 0) loop_start = cl_theta_init.reshaped();
-    const ctid::Status status = ctid::cl2srivc<double>(
-        plant, loop, stage_settings, record.y, record.u, r, n, record.ts, &res,
-        loop_start);
+    const ctid::Status status =
+        ctid::cl2srivc<double>(plant, loop, stage_settings, record.y, record.u,
+                               r, n, record.ts, &res, loop_start);
     if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
     theta = res.plant.theta;
     cov = res.covariance.size() > 0 ? res.covariance : res.plant.covariance;

@@ -10,9 +10,9 @@
 // adaptation, th0, P0, update form, Gamma, scaling, ic, tsls) plus
 // precision 'double' | 'single' (the core instantiated for float on a float
 // copy of the data) and kernels 'fixed' | 'dynamic' (the fixed-size filter
-// kernels for orders 1-4, the default, or the dynamic-size reference). YH, PSET and INFO (kappa_2(P), the initial-condition
-// coefficients, prediction errors and innovation scales per sample) are
-// computed only when requested.
+// kernels for orders 1-4, the default, or the dynamic-size reference). YH, PSET
+// and INFO (kappa_2(P), the initial-condition coefficients, prediction errors
+// and innovation scales per sample) are computed only when requested.
 #include "estimator_args.hpp"
 
 namespace {

@@ -199,15 +199,24 @@ class ParameterUpdate {
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
     if constexpr (std::is_same_v<Derived, Vector<S>>) {
       switch (fixed_np_) {
-        case 1: return update_fixed<1>(phi.derived().data(), target);
-        case 2: return update_fixed<2>(phi.derived().data(), target);
-        case 3: return update_fixed<3>(phi.derived().data(), target);
-        case 4: return update_fixed<4>(phi.derived().data(), target);
-        case 5: return update_fixed<5>(phi.derived().data(), target);
-        case 6: return update_fixed<6>(phi.derived().data(), target);
-        case 7: return update_fixed<7>(phi.derived().data(), target);
-        case 8: return update_fixed<8>(phi.derived().data(), target);
-        default: break;
+        case 1:
+          return update_fixed<1>(phi.derived().data(), target);
+        case 2:
+          return update_fixed<2>(phi.derived().data(), target);
+        case 3:
+          return update_fixed<3>(phi.derived().data(), target);
+        case 4:
+          return update_fixed<4>(phi.derived().data(), target);
+        case 5:
+          return update_fixed<5>(phi.derived().data(), target);
+        case 6:
+          return update_fixed<6>(phi.derived().data(), target);
+        case 7:
+          return update_fixed<7>(phi.derived().data(), target);
+        case 8:
+          return update_fixed<8>(phi.derived().data(), target);
+        default:
+          break;
       }
     }
     predict();
@@ -238,15 +247,24 @@ class ParameterUpdate {
       const S* p = phi.derived().data();
       const S* z = zeta.derived().data();
       switch (fixed_np_) {
-        case 1: return update_fixed_iv<1>(p, z, target);
-        case 2: return update_fixed_iv<2>(p, z, target);
-        case 3: return update_fixed_iv<3>(p, z, target);
-        case 4: return update_fixed_iv<4>(p, z, target);
-        case 5: return update_fixed_iv<5>(p, z, target);
-        case 6: return update_fixed_iv<6>(p, z, target);
-        case 7: return update_fixed_iv<7>(p, z, target);
-        case 8: return update_fixed_iv<8>(p, z, target);
-        default: break;
+        case 1:
+          return update_fixed_iv<1>(p, z, target);
+        case 2:
+          return update_fixed_iv<2>(p, z, target);
+        case 3:
+          return update_fixed_iv<3>(p, z, target);
+        case 4:
+          return update_fixed_iv<4>(p, z, target);
+        case 5:
+          return update_fixed_iv<5>(p, z, target);
+        case 6:
+          return update_fixed_iv<6>(p, z, target);
+        case 7:
+          return update_fixed_iv<7>(p, z, target);
+        case 8:
+          return update_fixed_iv<8>(p, z, target);
+        default:
+          break;
       }
     }
     predict();

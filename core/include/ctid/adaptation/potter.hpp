@@ -160,15 +160,24 @@ class PotterUpdate {
     if constexpr (std::is_same_v<Derived, Vector<S>>) {
       const S* p = phi.derived().data();
       switch (fixed_np_) {
-        case 1: return update_fixed<1>(p, target);
-        case 2: return update_fixed<2>(p, target);
-        case 3: return update_fixed<3>(p, target);
-        case 4: return update_fixed<4>(p, target);
-        case 5: return update_fixed<5>(p, target);
-        case 6: return update_fixed<6>(p, target);
-        case 7: return update_fixed<7>(p, target);
-        case 8: return update_fixed<8>(p, target);
-        default: break;
+        case 1:
+          return update_fixed<1>(p, target);
+        case 2:
+          return update_fixed<2>(p, target);
+        case 3:
+          return update_fixed<3>(p, target);
+        case 4:
+          return update_fixed<4>(p, target);
+        case 5:
+          return update_fixed<5>(p, target);
+        case 6:
+          return update_fixed<6>(p, target);
+        case 7:
+          return update_fixed<7>(p, target);
+        case 8:
+          return update_fixed<8>(p, target);
+        default:
+          break;
       }
     }
     predict();

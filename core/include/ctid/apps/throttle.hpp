@@ -91,9 +91,9 @@
 #include <string>
 
 #include "ctid/adaptation/adaptation.hpp"
-#include "ctid/simulation/controller.hpp"
-#include "ctid/recursive/rlssvf.hpp"
 #include "ctid/filters/svf.hpp"
+#include "ctid/recursive/rlssvf.hpp"
+#include "ctid/simulation/controller.hpp"
 
 namespace ctid {
 

@@ -23,7 +23,6 @@
 #pragma once
 
 #include <cmath>
-
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "ctid/base/types.hpp"

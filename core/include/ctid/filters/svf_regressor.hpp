@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "ctid/base/delay_line.hpp"
-#include "ctid/filters/discretization.hpp"
 #include "ctid/base/model.hpp"
+#include "ctid/filters/discretization.hpp"
 #include "ctid/filters/svf.hpp"
 
 namespace ctid {
@@ -69,10 +69,9 @@ class SvfRegressor {
     target_ = 0;
     // The fixed-size kernels of both discretisations (set by configure
     // above for these orders) allow the fixed-order step.
-    fixed_order_ = y_disc_.propagator() != nullptr &&
-                           u_disc_.propagator() != nullptr
-                       ? na
-                       : 0;
+    fixed_order_ =
+        y_disc_.propagator() != nullptr && u_disc_.propagator() != nullptr ? na
+                                                                           : 0;
   }
 
   void reset() {
@@ -84,11 +83,16 @@ class SvfRegressor {
   // Feeds u(t_k) (num_inputs values) and y(t_k); h = t_k - t_(k-1).
   void step(const S* u, S y, S h) {
     switch (fixed_order_) {
-      case 1: return step_order<1>(u, y, h);
-      case 2: return step_order<2>(u, y, h);
-      case 3: return step_order<3>(u, y, h);
-      case 4: return step_order<4>(u, y, h);
-      default: return step_order<Eigen::Dynamic>(u, y, h);
+      case 1:
+        return step_order<1>(u, y, h);
+      case 2:
+        return step_order<2>(u, y, h);
+      case 3:
+        return step_order<3>(u, y, h);
+      case 4:
+        return step_order<4>(u, y, h);
+      default:
+        return step_order<Eigen::Dynamic>(u, y, h);
     }
   }
 

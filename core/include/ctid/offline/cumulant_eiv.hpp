@@ -46,7 +46,7 @@ namespace ctid {
 
 template <typename S>
 struct CumulantEivSettings {
-  int lags = 50;          // M, the number of cross-cumulant lags
+  int lags = 50;            // M, the number of cross-cumulant lags
   int max_iterations = 20;  // TOCILS only
   S tolerance = S(1e-4);  // TOCILS: on ||theta_i - theta_(i-1)|| / ||theta_i||
 };
@@ -80,15 +80,17 @@ Status validate(const ModelOrders& orders, const RecordView<S>& record,
   if (!status.ok()) return status;
   const int np = orders.num_parameters();
   if (settings.lags < np) {
-    return bad_input("the number of lags M must be at least the number of "
-                     "parameters (" + std::to_string(np) + "), got " +
-                     std::to_string(settings.lags));
+    return bad_input(
+        "the number of lags M must be at least the number of "
+        "parameters (" +
+        std::to_string(np) + "), got " + std::to_string(settings.lags));
   }
   if (settings.lags > record.num_samples / 2) {
-    return bad_input("the number of lags M must be at most half the number "
-                     "of samples (" +
-                     std::to_string(record.num_samples / 2) + "), got " +
-                     std::to_string(settings.lags));
+    return bad_input(
+        "the number of lags M must be at most half the number "
+        "of samples (" +
+        std::to_string(record.num_samples / 2) + "), got " +
+        std::to_string(settings.lags));
   }
   if (settings.max_iterations < 1) {
     return bad_input("the maximum number of iterations must be >= 1");
@@ -159,8 +161,8 @@ Status solve_cumulant_equations(const Matrix<S>& Phi, const Vector<S>& target,
   for (int tau = 0; tau < lags; ++tau) {
     weight = u.segment(first - tau, count).array().square().matrix();
     weight.array() -= weight.mean();
-    C.row(tau) = (weight.transpose() * Phi.bottomRows(count)) /
-                 static_cast<S>(count);
+    C.row(tau) =
+        (weight.transpose() * Phi.bottomRows(count)) / static_cast<S>(count);
     c(tau) = weight.dot(target.tail(count)) / static_cast<S>(count);
   }
   if (!C.allFinite() || !c.allFinite()) {
@@ -226,8 +228,8 @@ Status tocils(const ModelOrders& orders, const SvfSettings<S>& svf,
     offline_iv_detail::build_prefiltered_regression(
         orders, d, d(na - 1), svf.y_intersample, svf.u_intersample,
         centred.view, Phi, target);
-    status = solve_cumulant_equations(Phi, target, centred.u, settings.lags,
-                                      theta);
+    status =
+        solve_cumulant_equations(Phi, target, centred.u, settings.lags, theta);
     if (!status.ok()) return status;
     const S change = (theta - estimate->theta).norm() / theta.norm();
     estimate->theta = theta;

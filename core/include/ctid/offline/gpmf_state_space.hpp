@@ -21,8 +21,8 @@
 //
 // linear in (alpha, beta). Its GPMF of order n_i (the Poisson filter
 // (lambda_i/(p+lambda_i))^(n_i+1), one lambda per output) is the output of
-// the normalised state-variable filter of svf.hpp (thesis eq. 3.1): the filtered
-// equation is a linear regression zeta_i = phi_i^T theta_i, solved per
+// the normalised state-variable filter of svf.hpp (thesis eq. 3.1): the
+// filtered equation is a linear regression zeta_i = phi_i^T theta_i, solved per
 // output by least squares, or by IV with instruments built from the
 // noise-free output of the LS model (auxiliary model). B follows from beta
 // by the triangular change of coordinates beta = T(alpha) b (see

@@ -35,14 +35,14 @@
 #include <string>
 #include <vector>
 
-#include "ctid/simulation/controller.hpp"
 #include "ctid/base/delay_line.hpp"
-#include "ctid/offline/least_squares.hpp"
-#include "ctid/simulation/ltv_simulator.hpp"
 #include "ctid/base/record.hpp"
 #include "ctid/base/stability.hpp"
 #include "ctid/filters/svf.hpp"
 #include "ctid/filters/svf_regressor.hpp"
+#include "ctid/offline/least_squares.hpp"
+#include "ctid/simulation/controller.hpp"
+#include "ctid/simulation/ltv_simulator.hpp"
 
 namespace ctid {
 

@@ -169,7 +169,8 @@ inline Status check_grid(const Eigen::VectorXd& v, const char* name,
 
 // The checks shared by the estimators: grids, field sizes, finite values.
 inline Status check_problem(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
-                            const Eigen::MatrixXd& y, const Eigen::MatrixXd& u) {
+                            const Eigen::MatrixXd& y,
+                            const Eigen::MatrixXd& u) {
   Status s = check_grid(t, "the time grid t", 4);
   if (!s.ok()) return s;
   s = check_grid(x, "the space grid x", 4);
@@ -258,7 +259,8 @@ inline Status solve_iv(const Eigen::MatrixXd& zb, const Eigen::MatrixXd& zc,
   const Eigen::Vector2d th = r.fullPivLu().solve(f);
   (*theta)[0] = th[0] / s1;
   (*theta)[1] = th[1] / s2;
-  if (!theta->allFinite()) return numerical_failure("the estimate is not finite");
+  if (!theta->allFinite())
+    return numerical_failure("the estimate is not finite");
   return Status::Ok();
 }
 
@@ -337,8 +339,9 @@ inline Status filter_2d(const Eigen::MatrixXd& num, const Eigen::MatrixXd& den,
     }
   }
   if (!out->allFinite()) {
-    return numerical_failure("the filtered data are not finite (unstable "
-                             "denominator)");
+    return numerical_failure(
+        "the filtered data are not finite (unstable "
+        "denominator)");
   }
   return Status::Ok();
 }
@@ -358,17 +361,20 @@ inline Status simulate_heat(double a, double b, const Eigen::VectorXd& t,
     return bad_input("theta = [a b] must be finite");
   }
   if (a < 0) {
-    return bad_input("the diffusion coefficient a must be >= 0 (a < 0 is "
-                     "the ill-posed backward heat equation)");
+    return bad_input(
+        "the diffusion coefficient a must be >= 0 (a < 0 is "
+        "the ill-posed backward heat equation)");
   }
   if (u.rows() != t.size() || u.cols() != x.size()) {
     return dimension_mismatch("the input field must be numel(t)-by-numel(x)");
   }
   if (ic.size() != x.size()) {
-    return dimension_mismatch("the initial condition must have numel(x) values");
+    return dimension_mismatch(
+        "the initial condition must have numel(x) values");
   }
   if (!u.allFinite() || !ic.allFinite()) {
-    return bad_input("the input field and the initial condition must be finite");
+    return bad_input(
+        "the input field and the initial condition must be finite");
   }
   const long nt = t.size(), nx = x.size(), n = nx - 2;
   const pde_detail::Laplacian l = pde_detail::make_laplacian(x);
@@ -392,8 +398,9 @@ inline Status simulate_heat(double a, double b, const Eigen::VectorXd& t,
   y->middleCols(1, n) = z.transpose();
   y->row(0) = ic.transpose();
   if (!y->allFinite()) {
-    return numerical_failure("the simulated field is not finite (theta or "
-                             "the source too large)");
+    return numerical_failure(
+        "the simulated field is not finite (theta or "
+        "the source too large)");
   }
   return Status::Ok();
 }
@@ -444,7 +451,7 @@ inline Status heat_lssvf(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
 }
 
 struct HeatIvOptions {
-  double tol = 1e-6;   // relative change of theta that stops the iterations
+  double tol = 1e-6;  // relative change of theta that stops the iterations
   int maxiter = 50;
   // RIVC noise model orders [ndt nct nds ncs] (time AR, time MA, space AR,
   // space MA); unused by SRIVC.
@@ -476,7 +483,8 @@ inline Status pooled_arma(const Eigen::MatrixXd& v, int na, int nc,
   Eigen::MatrixXd e = v;  // innovations estimate
   if (nc > 0) {
     const long p = std::min<long>(std::max(20, 3 * (na + nc)), len / 4);
-    if (p < 1) return bad_input("the records are too short for the noise model");
+    if (p < 1)
+      return bad_input("the records are too short for the noise model");
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(p, p);
     Eigen::VectorXd f = Eigen::VectorXd::Zero(p);
     for (long r = 0; r < nrec; ++r) {
@@ -497,7 +505,8 @@ inline Status pooled_arma(const Eigen::MatrixXd& v, int na, int nc,
     }
   }
   const long m = na + nc, start = std::max<long>(na, nc);
-  if (len <= start + m) return bad_input("the records are too short for the noise model");
+  if (len <= start + m)
+    return bad_input("the records are too short for the noise model");
   Eigen::MatrixXd g = Eigen::MatrixXd::Zero(m, m);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
   Eigen::VectorXd phi(m);
@@ -527,7 +536,8 @@ inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
   Status s = check_problem(t, x, y, u);
   if (!s.ok()) return s;
   if (ic.size() != x.size()) {
-    return dimension_mismatch("the initial condition must have numel(x) values");
+    return dimension_mismatch(
+        "the initial condition must have numel(x) values");
   }
   if (!ic.allFinite()) return bad_input("the initial condition must be finite");
   if (!(opt.tol > 0) || opt.maxiter < 1) {
@@ -555,8 +565,8 @@ inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
   // variations, far below the grids' Nyquist bands).
   Eigen::Vector2d theta;
   const double span_t = t[nt - 1] - t[0], span_x = x[x.size() - 1] - x[0];
-  s = heat_lssvf(t, x, y, u, HeatRule::kBilinear, 20.0 / span_t,
-                 20.0 / span_x, &theta);
+  s = heat_lssvf(t, x, y, u, HeatRule::kBilinear, 20.0 / span_t, 20.0 / span_x,
+                 &theta);
   if (!s.ok()) return s;
   if (!(theta[0] > 0)) {
     return numerical_failure(
@@ -601,11 +611,14 @@ inline Status heat_iv(const Eigen::VectorXd& t, const Eigen::VectorXd& x,
     s = solve_iv(fz, fc, fb, fc, fa, &next);
     if (!s.ok()) return s;
     if (!(next[0] > 0)) {
-      return numerical_failure("the estimate of a is not positive at "
-                               "iteration " + std::to_string(it));
+      return numerical_failure(
+          "the estimate of a is not positive at "
+          "iteration " +
+          std::to_string(it));
     }
     const double change =
-        ((next - theta).array().abs() / next.array().abs().max(1e-300)).maxCoeff();
+        ((next - theta).array().abs() / next.array().abs().max(1e-300))
+            .maxCoeff();
     theta = next;
     r.iterations = it;
     if (change < opt.tol) {

@@ -566,7 +566,7 @@ struct RivcSettings {
 
 template <typename S>
 struct RivcResult {
-  Vector<S> theta;            // [f1 .. f_nf, b_0 .. b_(nb-1)], original time
+  Vector<S> theta;  // [f1 .. f_nf, b_0 .. b_(nb-1)], original time
   // sigma_e^2 (sum zeta_f zeta_f^T)^-1, eq. 2.13 (closed loop: the IV
   // sandwich, see the header comment)
   Matrix<S> covariance;
@@ -1240,8 +1240,8 @@ Status rivc_miso(const RivcMisoProblem<S>& problem,
     Status status = iteration->step(th[i], arma_settings, true, next,
                                     inverse_gram, arma, x_hat, condition);
     if (!status.ok()) {
-      return Status(status.code(), "input " + std::to_string(i + 1) + ": " +
-                                       status.message());
+      return Status(status.code(),
+                    "input " + std::to_string(i + 1) + ": " + status.message());
     }
     result->condition = std::max(result->condition, condition);
     const int nf = problem.inputs[i].nf, nb = problem.inputs[i].nb;
@@ -1382,8 +1382,8 @@ Eigen::Index decorrelation_lag(const Vector<S>& x, S level,
 // first-stage error this is SRIVC's sigma^2 (Z^T Z)^-1 (eq. 2.13).
 template <typename S>
 Status two_stage_covariance(const RivProblem<S>& plant,
-                            const RivProblem<S>& loop, const S* y,
-                            const S* u, const S* r, Eigen::Index n, S ts,
+                            const RivProblem<S>& loop, const S* y, const S* u,
+                            const S* r, Eigen::Index n, S ts,
                             Cl2srivcResult<S>* result) {
   using namespace bj_detail;
   RivcProblem<S> p1, p2;

@@ -33,10 +33,10 @@
 #include <vector>
 
 #include "ctid/adaptation/adaptation.hpp"
-#include "ctid/recursive/rlssvf.hpp"  // validate_adaptation, validate_initial_estimate
 #include "ctid/base/status.hpp"
-#include "ctid/filters/svf.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/filters/svf.hpp"
+#include "ctid/recursive/rlssvf.hpp"  // validate_adaptation, validate_initial_estimate
 
 namespace ctid {
 
@@ -112,8 +112,8 @@ struct RecursiveArxConfig {
   int nk = 1;  // delay of beta_0 in samples
   S ts = 0;    // sampling interval (uniform sampling)
   Adaptation<S> adaptation = ForgettingFactorAdaptation<S>(S(1));
-  Vector<S> theta0;  // empty: zeros
-  Matrix<S> P0;      // empty: 1e4 I
+  Vector<S> theta0;        // empty: zeros
+  Matrix<S> P0;            // empty: 1e4 I
   S lambda_prefilter = 0;  // 0: no prefilter
   // Convert to CT at every step; needs nk >= 1 and nk + nb - 1 <= na (a
   // strictly proper DT model of order na, the ZOH image of a CT model).
@@ -160,10 +160,9 @@ class RecursiveArx {
     if (config.lambda_prefilter > 0) {
       for (StateVariableFilter<S>* f : {&filter_y_, &filter_u_}) {
         f->configure(config.na, InterSample::kTrapezoid);
-        f->set_denominator(svf_denominator<S>(config.na,
-                                              config.lambda_prefilter),
-                           svf_gain<S>(config.na, config.lambda_prefilter,
-                                       true));
+        f->set_denominator(
+            svf_denominator<S>(config.na, config.lambda_prefilter),
+            svf_gain<S>(config.na, config.lambda_prefilter, true));
       }
     }
     a_ct_ = Vector<S>::Zero(config.na);

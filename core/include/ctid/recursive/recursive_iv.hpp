@@ -41,12 +41,12 @@
 #include <vector>
 
 #include "ctid/adaptation/adaptation.hpp"
-#include "ctid/simulation/controller.hpp"
 #include "ctid/base/delay_line.hpp"
 #include "ctid/base/record.hpp"
-#include "ctid/recursive/rlssvf.hpp"
 #include "ctid/base/stability.hpp"
 #include "ctid/filters/svf_regressor.hpp"
+#include "ctid/recursive/rlssvf.hpp"
+#include "ctid/simulation/controller.hpp"
 
 namespace ctid {
 
@@ -78,8 +78,8 @@ struct RecursiveIvConfig {
   S antiwindup_gamma = 0;  // gamma of eq. (3.79); 0: no conditional updating
   S antiwindup_lambda = S(0.998);  // forgetting factor of the parallel
                                    // RLSSVF-FF (thesis Table 3.2)
-  bool covariance_guard = true;  // covariance_guard.hpp, on P and on the
-                                 // parallel RLSSVF-FF's P
+  bool covariance_guard = true;    // covariance_guard.hpp, on P and on the
+                                   // parallel RLSSVF-FF's P
   S gap_interval = 0;  // gaps of missing samples, as in RlsSvfConfig: no
   S gap_settle = 0;    // update for gap_settle s after an interval above
                        // gap_interval (0: none)
@@ -316,10 +316,10 @@ class RecursiveIv {
       prediction_error_ =
           ls_regressor_.target() - ls_regressor_.phi().dot(update_.theta());
     } else if (gap_hold_) {  // filters settling after a gap: no update
-      prediction_error_ =
-          iv_active_ ? yf(na) - phi_.dot(update_.theta())
-                     : ls_regressor_.target() -
-                           ls_regressor_.phi().dot(update_.theta());
+      prediction_error_ = iv_active_
+                              ? yf(na) - phi_.dot(update_.theta())
+                              : ls_regressor_.target() -
+                                    ls_regressor_.phi().dot(update_.theta());
     } else if (!iv_active_) {
       prediction_error_ =
           update_.update(ls_regressor_.phi(), ls_regressor_.target());
@@ -598,11 +598,10 @@ Status run_recursive_iv(const RecursiveIvConfig<S>& config,
     S innovation_scale() const { return e.innovation_scale(); }
     int covariance_guard() const { return e.covariance_guard(); }
   };
-  const Status run =
-      record_recursive_run(config.orders, config.svf.u_intersample, record, out,
-                           Adapter{estimator, loop, windup},
-                           "the scaling of the data, lambda_svf and tsiv",
-                           config.svf.kernels);
+  const Status run = record_recursive_run(
+      config.orders, config.svf.u_intersample, record, out,
+      Adapter{estimator, loop, windup},
+      "the scaling of the data, lambda_svf and tsiv", config.svf.kernels);
   if (rejections != nullptr) *rejections = estimator.stability_rejections();
   if (windup != nullptr) windup->resets = estimator.resets();
   return run;

@@ -33,13 +33,13 @@
 #include <type_traits>
 
 #include "ctid/adaptation/adaptation.hpp"
-#include "ctid/filters/auxiliary_model.hpp"
-#include "ctid/filters/frozen_model.hpp"
 #include "ctid/adaptation/lmr.hpp"
 #include "ctid/adaptation/potter.hpp"
 #include "ctid/base/record.hpp"
-#include "ctid/recursive/scaling.hpp"
+#include "ctid/filters/auxiliary_model.hpp"
+#include "ctid/filters/frozen_model.hpp"
 #include "ctid/filters/svf_regressor.hpp"
+#include "ctid/recursive/scaling.hpp"
 
 namespace ctid {
 
@@ -251,9 +251,7 @@ class LeastSquaresUpdate {
     return error;
   }
 
-  const Vector<S>& theta() const {
-    return plain_ ? standard_.theta() : theta_;
-  }
+  const Vector<S>& theta() const { return plain_ ? standard_.theta() : theta_; }
   // Unscaled P(t_k) (M_s P_s M_s), formed on request.
   const Matrix<S>& P() const {
     const Matrix<S>& working = working_P();
@@ -496,16 +494,17 @@ struct RecursiveOutputs {
                        // initial-condition coefficients c_i)
   S* error = nullptr;  // N: prediction error of each recursion
   S* innovation = nullptr;  // N: r(t_k)/sigma_e^2 of each recursion
-  S* guard = nullptr;  // N: what the covariance protection did to P
-                       // (covariance_guard.hpp: 0, 1 repair, 2 ceiling, 3)
+  S* guard = nullptr;       // N: what the covariance protection did to P
+                            // (covariance_guard.hpp: 0, 1 repair, 2 ceiling, 3)
 };
 
 // Runs a recursive estimator over a record. `estimator` provides
 // update(u_k, y_k, h, k) -> theta(t_k) (np model parameters first),
 // covariance() (P after it), kappa(), prediction_error(),
-// innovation_scale() and covariance_guard(). Writes THM, and when asked YH (the frozen model of
-// each sample simulated along the record, eq. 1.60), PSET and the rest;
-// fails if an estimate is not finite, with `hint` saying what to check.
+// innovation_scale() and covariance_guard(). Writes THM, and when asked YH (the
+// frozen model of each sample simulated along the record, eq. 1.60), PSET and
+// the rest; fails if an estimate is not finite, with `hint` saying what to
+// check.
 template <typename S, typename Estimator>
 Status record_recursive_run(const ModelOrders& orders, InterSample u_rule,
                             const RecordView<S>& record,
@@ -577,10 +576,9 @@ Status run_rlssvf(const RlsSvfConfig<S>& config, const RecordView<S>& record,
     S innovation_scale() const { return e.innovation_scale(); }
     int covariance_guard() const { return e.covariance_guard(); }
   };
-  status = record_recursive_run(config.orders, config.svf.u_intersample, record,
-                                out, Adapter{estimator},
-                                "the scaling of the data and lambda_svf",
-                                config.svf.kernels);
+  status = record_recursive_run(
+      config.orders, config.svf.u_intersample, record, out, Adapter{estimator},
+      "the scaling of the data and lambda_svf", config.svf.kernels);
   if (status.ok() && estimator.failed()) {
     return numerical_failure(
         "the factor of R of LMR-RLSSVF is no longer finite; check Gamma "

@@ -35,26 +35,26 @@
 #include <string>
 #include <vector>
 
-#include "ctid/filters/discretization.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/filters/discretization.hpp"
 
 namespace ctid {
 
 enum class EffectChannelKind {
-  kExogenous,       // column j of the channel signals W, delayed by nk_j
-  kSignVelocity,    // sign(dx/dt) (sign(x) for a first-order model)
-  kSignOutput,      // sign(x + y_off)
-  kOutputPower,     // (x + y_off)^p
-  kControlledInput, // closed loop: u1 (delayed by nk_j)
-  kControlledPower, // closed loop: u1^p
-  kControlledClip,  // closed loop: min(max(u1, -c), c)
+  kExogenous,        // column j of the channel signals W, delayed by nk_j
+  kSignVelocity,     // sign(dx/dt) (sign(x) for a first-order model)
+  kSignOutput,       // sign(x + y_off)
+  kOutputPower,      // (x + y_off)^p
+  kControlledInput,  // closed loop: u1 (delayed by nk_j)
+  kControlledPower,  // closed loop: u1^p
+  kControlledClip,   // closed loop: min(max(u1, -c), c)
 };
 
 template <typename S>
 struct EffectSimulationConfig {
-  Vector<S> f;     // f1..fn of the monic F (n >= 1)
-  Matrix<S> b;     // n-by-m: column j holds B_j right-aligned (b_(n) last)
+  Vector<S> f;  // f1..fn of the monic F (n >= 1)
+  Matrix<S> b;  // n-by-m: column j holds B_j right-aligned (b_(n) last)
   std::vector<EffectChannelKind> kinds;  // m entries
   std::vector<int> delays;               // m entries, samples (>= 0)
   std::vector<S> params;                 // m entries: p or c (else unused)
@@ -78,33 +78,34 @@ struct EffectSimulationConfig {
 // null in open loop. Writes x (N) and, when u_applied != nullptr, u1 (N).
 template <typename S>
 Status simulate_effect_model(const EffectSimulationConfig<S>& c, const S* W,
-                             Eigen::Index num_samples, const S* r1,
-                             const S* r2, const S* s, S* x, S* u_applied) {
+                             Eigen::Index num_samples, const S* r1, const S* r2,
+                             const S* s, S* x, S* u_applied) {
   const Eigen::Index n = c.f.size();
   const Eigen::Index m = c.b.cols();
   const Eigen::Index N = num_samples;
   if (n < 1) return bad_input("the model needs an order n >= 1");
   if (c.b.rows() != n) {
-    return dimension_mismatch("b must have n = " + std::to_string(n) +
-                              " rows");
+    return dimension_mismatch("b must have n = " + std::to_string(n) + " rows");
   }
   if (static_cast<Eigen::Index>(c.kinds.size()) != m ||
       static_cast<Eigen::Index>(c.delays.size()) != m ||
       static_cast<Eigen::Index>(c.params.size()) != m) {
-    return dimension_mismatch("kinds, delays and params need one entry per "
-                              "channel");
+    return dimension_mismatch(
+        "kinds, delays and params need one entry per "
+        "channel");
   }
   if (c.substeps < 1) return bad_input("substeps must be >= 1");
   if (!(c.ts > 0)) return bad_input("ts must be > 0");
   const bool closed = c.controller_den.size() > 0;
   if (closed && (c.controller_num.size() == 0 || c.controller_den[0] == 0 ||
                  r1 == nullptr || r2 == nullptr)) {
-    return bad_input("the closed loop needs a controller with den(1) != 0, "
-                     "r1 and r2");
+    return bad_input(
+        "the closed loop needs a controller with den(1) != 0, "
+        "r1 and r2");
   }
   const bool varying = c.f_t.size() > 0;
-  if (varying && (c.f_t.rows() != N || c.f_t.cols() != n ||
-                  c.b_t.rows() != N || c.b_t.cols() != n * m)) {
+  if (varying && (c.f_t.rows() != N || c.f_t.cols() != n || c.b_t.rows() != N ||
+                  c.b_t.cols() != n * m)) {
     return dimension_mismatch("f_t must be N-by-n and b_t N-by-(n m)");
   }
   for (Eigen::Index j = 0; j < m; ++j) {
@@ -155,12 +156,13 @@ Status simulate_effect_model(const EffectSimulationConfig<S>& c, const S* W,
     const S xk = state[0];
     x[k] = xk;
     if (closed) {
-      const S yk = xk + c.y_off + c.poly2 * xk * xk +
-                   c.poly3 * xk * xk * xk + (s != nullptr ? s[k] : S(0));
+      const S yk = xk + c.y_off + c.poly2 * xk * xk + c.poly3 * xk * xk * xk +
+                   (s != nullptr ? s[k] : S(0));
       for (Eigen::Index i = ncn - 1; i > 0; --i) ebuf[i] = ebuf[i - 1];
       ebuf[0] = r2[k] - yk;
       S acc = c.controller_num.dot(ebuf);
-      for (Eigen::Index i = 1; i < ncd; ++i) acc -= c.controller_den[i] * ubuf[i - 1];
+      for (Eigen::Index i = 1; i < ncd; ++i)
+        acc -= c.controller_den[i] * ubuf[i - 1];
       const S uc = acc / c.controller_den[0];
       for (Eigen::Index i = ncd - 1; i > 0; --i) ubuf[i] = ubuf[i - 1];
       if (ncd > 0) ubuf[0] = uc;
@@ -177,9 +179,9 @@ Status simulate_effect_model(const EffectSimulationConfig<S>& c, const S* W,
           w[j] = kk >= 0 ? u1[static_cast<std::size_t>(kk)] : S(0);
           break;
         case EffectChannelKind::kControlledPower:
-          w[j] = kk >= 0 ? std::pow(u1[static_cast<std::size_t>(kk)],
-                                    c.params[j])
-                         : S(0);
+          w[j] = kk >= 0
+                     ? std::pow(u1[static_cast<std::size_t>(kk)], c.params[j])
+                     : S(0);
           break;
         case EffectChannelKind::kControlledClip:
           w[j] = kk >= 0 ? std::min(std::max(u1[static_cast<std::size_t>(kk)],

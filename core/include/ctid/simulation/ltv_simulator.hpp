@@ -35,12 +35,12 @@
 #include <limits>
 #include <vector>
 
-#include "ctid/simulation/controller.hpp"
 #include "ctid/base/balanced_exponential.hpp"
 #include "ctid/base/delay_line.hpp"
-#include "ctid/filters/discretization.hpp"
 #include "ctid/base/model.hpp"
 #include "ctid/base/record.hpp"
+#include "ctid/filters/discretization.hpp"
+#include "ctid/simulation/controller.hpp"
 
 namespace ctid {
 

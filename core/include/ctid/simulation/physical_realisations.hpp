@@ -314,9 +314,8 @@ Status simulate_cascade(const CascadeConfig<S>& c, const S* W, long num_samples,
           const S b4 = za - ga * ha;
           const S zn = zi + h6 * (a1 + 2 * a2 + 2 * a3 + a4);
           zi = std::fmin(zn, top);
-          hi_ = std::fmin(hi_ + h6 * (b1 + 2 * b2 + 2 * b3 + b4) +
-                              spill * (zn - zi),
-                          otop);
+          hi_ = std::fmin(
+              hi_ + h6 * (b1 + 2 * b2 + 2 * b3 + b4) + spill * (zn - zi), otop);
         }
       }
       z(i) = zi;
