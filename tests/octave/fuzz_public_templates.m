@@ -59,6 +59,16 @@ function tpl = fuzz_public_templates ()
   depa(:,2,:) = [ones(1, n); pl];
   depb = ones (1, 1, n);
   alpv = [1 0; 3 0.5; 2 0.3];
+  ## a heated bar: 11 nodes, 60 instants, a source at the middle node
+  hd2 = struct ("x", 0:0.1:1, "t", 0:59);
+  hd1 = struct ("Input", zeros (60, 11));
+  hd1.Input(mod (0:59, 20) < 10, 6) = 0.01;
+  hd1.Output = zeros (60, 11);
+  try
+    hd1.Output = sim_heat ([1e-3 1], hd1, hd2, zeros (1, 11));
+  catch
+  end_try_catch
+  hic = zeros (1, 11);
   ## a skewed input for the errors-in-variables estimators
   us = exp (sin (k * 0.37 + 0.3) + 0.4 * sin (k * 0.11));
   eiv = iddata (filter ([0 0.05 0.04], [1 -1.6 0.7], us), us, Ts);
@@ -119,6 +129,12 @@ function tpl = fuzz_public_templates ()
   tpl.lpvsrivc = {{data, [1 2], depa, depb}, ...
                   {data, [1 2], depa, depb, 1e-4, 10, alpv, 0.05}};
   tpl.procsrivc = {{data, "P2U"}, {data, "P1D"}};
+  tpl.sim_heat = {{[1e-3 1], hd1, hd2, hic}};
+  tpl.local_filter3 = {{[1 0]' * [1 0], [1 -0.5]' * [1 -0.3], randn(20, 5)}};
+  tpl.pdelssvf4heatdiffusion = {{hd1, hd2, struct("Str", "Euler", ...
+                                                  "BF", [0.1 5])}};
+  tpl.pdesrivc4heatdiffusion = {{hd1, hd2, hic}};
+  tpl.pderivc4heatdiffusion = {{hd1, hd2, hic, [1 0 0 0]}};
   tpl.tocls = {{eiv, [2 1 0], 20, 3}, {eiv, [1 0 0], 10, "Tol", 1e-4}};
   tpl.tocils = {{eiv, [2 1 0], 20}, {eiv, [2 1 0], 20, 5, 3, 1e-4}};
   tpl.qnml = {{data, [2 1 0], "lambda_svf", 3}};
