@@ -27,6 +27,12 @@
 ## @end deftypefn
 
 function varargout = idfrd (varargin)
+  ## The precedence over the control package's models is declared here,
+  ## in the constructor itself: Octave ignores it from a subfunction.
+  try
+    superiorto ("tf", "ss", "frd", "lti");
+  catch
+  end_try_catch
   varargout = contsid_guard ({"idfrd", "idfrd"}, @idfrd_body, nargout,
                              varargin);
 endfunction
@@ -68,10 +74,6 @@ function [G, varargout] = idfrd_body (varargin)
                 "FrequencyUnit", "rad/s");
   G = class (struct (), "idfrd",
              idmodel ("idfrd", par, size (R, 1), size (R, 2)));
-  try
-    superiorto ("tf", "ss", "frd", "lti");
-  catch
-  end_try_catch
   if (mod (numel (rest), 2) != 0)
     error ("idfrd:badInput", "idfrd: properties must come in name-value pairs");
   endif

@@ -72,6 +72,12 @@
 ## @end deftypefn
 
 function varargout = idpoly (varargin)
+  ## The precedence over the control package's models is declared here,
+  ## in the constructor itself: Octave ignores it from a subfunction.
+  try
+    superiorto ("tf", "ss", "frd", "lti");
+  catch
+  end_try_catch
   varargout = contsid_guard ({"idpoly", "idpoly"}, @idpoly_body, nargout,
                              varargin);
 endfunction
@@ -104,10 +110,6 @@ function [M, varargout] = idpoly_body (varargin)
   par = struct ("A", 1, "B", {repmat({0}, 1, nu)}, "C", 1, "D", 1,
                 "F", {repmat({1}, 1, nu)}, "IODelay", zeros (1, nu));
   M = class (struct (), "idpoly", idmodel ("idpoly", par, 1, nu));
-  try
-    superiorto ("tf", "ss", "frd", "lti");
-  catch
-  end_try_catch
   M = set (M, "Ts", Ts);
   if (nu > 0)
     M = set (M, "B", B, "F", F);

@@ -33,6 +33,12 @@
 ## @end deftypefn
 
 function varargout = idproc (varargin)
+  ## The precedence over the control package's models is declared here,
+  ## in the constructor itself: Octave ignores it from a subfunction.
+  try
+    superiorto ("tf", "ss", "frd", "lti");
+  catch
+  end_try_catch
   varargout = contsid_guard ({"idproc", "idproc"}, @idproc_body, nargout,
                              varargin);
 endfunction
@@ -65,10 +71,6 @@ function [M, varargout] = idproc_body (varargin)
   par = struct ("Type", type, "Integration", any (type == "I"),
                 "Structure", S);
   M = class (struct (), "idproc", idmodel ("idproc", par, 1, 1));
-  try
-    superiorto ("tf", "ss", "frd", "lti");
-  catch
-  end_try_catch
   M = set (M, pairs{:});
 endfunction
 

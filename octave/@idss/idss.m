@@ -27,6 +27,12 @@
 ## @end deftypefn
 
 function varargout = idss (varargin)
+  ## The precedence over the control package's models is declared here,
+  ## in the constructor itself: Octave ignores it from a subfunction.
+  try
+    superiorto ("tf", "ss", "frd", "lti");
+  catch
+  end_try_catch
   varargout = contsid_guard ({"idss", "idss"}, @idss_body, nargout, varargin);
 endfunction
 
@@ -68,10 +74,6 @@ function [M, varargout] = idss_body (varargin)
                 "StateName", {repmat({""}, n, 1)},
                 "StateUnit", {repmat({""}, n, 1)});
   M = class (struct (), "idss", idmodel ("idss", par, rows (C), columns (B)));
-  try
-    superiorto ("tf", "ss", "frd", "lti");
-  catch
-  end_try_catch
   if (! isempty (Tsp))
     Ts = Tsp;
   endif

@@ -31,6 +31,12 @@
 ## @end deftypefn
 
 function varargout = idtf (varargin)
+  ## The precedence over the control package's models is declared here,
+  ## in the constructor itself: Octave ignores it from a subfunction.
+  try
+    superiorto ("tf", "ss", "frd", "lti");
+  catch
+  end_try_catch
   varargout = contsid_guard ({"idtf", "idtf"}, @idtf_body, nargout, varargin);
 endfunction
 
@@ -77,10 +83,6 @@ function [M, varargout] = idtf_body (varargin)
                 "Denominator", {repmat({1}, ny, nu)},
                 "IODelay", zeros (ny, nu));
   M = class (struct (), "idtf", idmodel ("idtf", par, ny, nu));
-  try
-    superiorto ("tf", "ss", "frd", "lti");
-  catch
-  end_try_catch
   M = set (M, "Ts", Ts, "Numerator", num, "Denominator", den, pairs{:});
 endfunction
 

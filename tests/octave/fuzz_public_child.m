@@ -246,6 +246,11 @@ function tf = has_nonfinite (x)
         return;
       end_try_catch
     endif
+    ## UserData is the user's own payload, stored as given (as an iddata
+    ## holds its samples): not a result of the call.
+    if (isfield (x, "UserData"))
+      x = rmfield (x, "UserData");
+    endif
     c = struct2cell (x(:));
     tf = has_nonfinite (c(:).');
   endif

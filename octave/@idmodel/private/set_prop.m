@@ -45,8 +45,15 @@ function M = set_prop (M, name, v, fname)
         error ([fname ":badInput"], "%s: %s must be a string", fname, name);
       endif
       M.(name) = v;
-    case {"Notes", "UserData"}
-      M.(name) = v;
+    case "Notes"
+      if (! (ischar (v) || iscellstr (v)))
+        error ([fname ":badInput"],
+               "%s: Notes must be text (a string or a cell of strings)",
+               fname);
+      endif
+      M.Notes = v;
+    case "UserData"
+      M.UserData = v;                   # the user's own, stored as given
     case "Report"
       M.Report = merge_report (M.Report, v, fname);
     case "noise_variance"
@@ -57,8 +64,18 @@ function M = set_prop (M, name, v, fname)
         M.Report.Status = sprintf ("Estimated using %s", upper (v));
       endif
     case "iterations"
-      M.Report.Termination.Iterations = v;
+      if (! isnumeric (v) || ! isreal (v) || ! isscalar (v) || ! isfinite (v)
+          || v < 0 || v != fix (v))
+        error ([fname ":badInput"], ...
+               "%s: iterations must be a non-negative integer", fname);
+      endif
+      M.Report.Termination.Iterations = double (v);
     case "converged"
+      if (! (islogical (v) || isnumeric (v)) || ! isscalar (v)
+          || ! any (v == [0 1]))
+        error ([fname ":badInput"], "%s: converged must be true or false",
+               fname);
+      endif
       M.Report.Termination.Converged = logical (v);
     case "InterSample"
       M.Report.DataUsed.InterSample = check_string (v, name, fname);
@@ -157,8 +174,15 @@ function p = set_own (M, name, v, fname)
                    "%s: A, B, C, D do not fit together after setting %s",
                    fname, name);
           endif
-        otherwise
-          p.(name) = v;
+        otherwise                       # StateName, StateUnit
+          if (ischar (v))
+            v = {v};
+          endif
+          if (! iscellstr (v) || numel (v) != rows (p.A))
+            error ([fname ":badInput"], "%s: %s must be %d string(s)",
+                   fname, name, rows (p.A));
+          endif
+          p.(name) = v(:);
       endswitch
     case "idfrd"
       switch (name)
