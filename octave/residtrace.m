@@ -1462,10 +1462,21 @@ function out = export_model (m, Ts, ex)
   if (numel (B) == 1)
     B = B{1};
   endif
-  out.linear = idctm (struct ("B", {B}, "F", F, "nk", [m.channels.nk],
-                              "Ts", Ts, "InterSample", m.intersample,
-                              "theta", m.theta(:).', "covariance", m.cov,
-                              "noise_variance", m.s2, "method", "residtrace"));
+  lin = struct ("B", {B}, "F", F, "nk", [m.channels.nk], "Ts", Ts,
+                "InterSample", m.intersample, "theta", m.theta(:).',
+                "covariance", m.cov, "noise_variance", m.s2,
+                "method", "residtrace");
+  try
+    out.linear = idctm (lin);
+  catch err
+    if (isempty (strfind (err.message, "covariance")))
+      rethrow (err);
+    endif
+    ## The fit's covariance is not positive semi-definite (a direction the
+    ## data do not determine): the linear part is returned without one.
+    lin.covariance = [];
+    out.linear = idctm (lin);
+  end_try_catch
 endfunction
 
 function s = step_row (label, e, y, tests, kind, params)
