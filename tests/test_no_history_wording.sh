@@ -6,8 +6,8 @@
 # tests, scripts and documents say what the code does and why, not the
 # episode that led to it. Fails, listing the offending lines, when a
 # tracked text file (other than NEWS.md and this script) names an issue,
-# session, round or stop by its number ("issue 9", "session 6", "round 2",
-# "stop 3"), calls a simulator a "replica" or a check a "blind check", or
+# session, round or stop by its number (the word, then a number), calls a
+# simulator a "replica" or a check a "blind check", or
 # when a tracked file's name does the same. A word followed by something
 # other than a number ("a round-off", "round (x)", "the end stops (0 and
 # 100 %)") is not history. Skips (exit 77, a visible SKIP) outside a git
