@@ -50,7 +50,7 @@
 ## of u_hat (dU = d u_hat / d theta1); its covariance sums the products of
 ## a and b (exact) times the residuals' auto- and cross-covariances
 ## (Bartlett lag window, 8 times the residuals' decorrelation lag).
-## @file{bench/rivc_mc.m} (100 runs): MC sd / reported sd 0.96 1.09 0.93.
+## @file{devel/monte_carlo/rivc_mc.m} (100 runs): MC sd / reported sd 0.96 1.09 0.93.
 ## Stage 2's own SRIVC covariance (white noise, u_hat taken as exact: 5-6
 ## times too small there) is in
 ## @code{M_G.Report.Parameters.Stage2Covariance}, the window length in
@@ -150,7 +150,7 @@ endfunction
 %! assert (abs (M.theta - [2 3 3]) < 0.1 * [2 3 3]);
 
 %!test  # coloured noise through the loop: the two-stage covariance
-%! # (bench/rivc_mc.m: its sd matches the Monte Carlo spread, stage 2's
+%! # (devel/monte_carlo/rivc_mc.m: its sd matches the Monte Carlo spread, stage 2's
 %! # SRIVC sd is 5-6 times too small)
 %! randn ("state", 5);
 %! r5 = kron (sign (randn (N / 100, 1)), ones (100, 1));

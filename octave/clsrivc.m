@@ -135,7 +135,7 @@ endfunction
 %!test  # reported sd against a small Monte Carlo on exact closed-loop data
 %! # (discrete PI, ZOH plant exact at the samples, white noise fed back;
 %! # 20 runs, the sample sd's relative sd ~16 %; the 100-run check,
-%! # also with a continuous controller: bench/closed_loop_mc.m, 0.94-1.12)
+%! # also with a continuous controller: devel/monte_carlo/closed_loop_mc.m, 0.94-1.12)
 %! pkg load control
 %! randn ("state", 17);
 %! Tm = 0.01; Nm = 2000; kp = 0.5; ki = 2;

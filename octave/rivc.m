@@ -169,7 +169,7 @@ endfunction
 %! assert (M.theta, [1.2 4 1.5 4], 1e-8);
 
 %!test  # a small Monte Carlo: spread vs reported sd (20 runs; the full
-%! # check is bench/rivc_mc.m)
+%! # check is devel/monte_carlo/rivc_mc.m)
 %! randn ("state", 9);
 %! R = 20; T = zeros (R, 4); S = T;
 %! for i = 1:R
@@ -301,7 +301,7 @@ endfunction
 %!error id=rivc:numericalFailure rivc (iddata (x, zeros (N, 1), Ts), [2 1 1 2 0])
 
 %!demo
-%! ## RIVC against SRIVC on coloured noise (Monte Carlo: bench/rivc_mc.m)
+%! ## RIVC against SRIVC on coloured noise (Monte Carlo: devel/monte_carlo/rivc_mc.m)
 %! pkg load control
 %! Ts = 0.05; N = 3000; u = kron (sign (randn (N / 10, 1)), ones (10, 1));
 %! x = lsim (c2d (tf ([1.5 4], [1 1.2 4]), Ts), u);

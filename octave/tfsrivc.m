@@ -173,7 +173,7 @@ endfunction
 %! ## Monte Carlo (40 runs, ~15 s): spread vs reported sd, delay estimated,
 %! ## relative degree 2 (the output is smooth in td; with relative degree 1
 %! ## and ZOH input y(t_k) has kinks in td at whole samples and the sd of
-%! ## td and b1 come out ~30 % low at 0.2 samples sd: bench/tfsrivc_mc.m).
+%! ## td and b1 come out ~30 % low at 0.2 samples sd: devel/monte_carlo/tfsrivc_mc.m).
 %! M1 = idtf (4, [1 1.2 4], "IODelay", 0.37);
 %! y1 = simc (M1, iddata ([], u(1:2000), Ts, "InterSample", "zoh"));
 %! R = 40;

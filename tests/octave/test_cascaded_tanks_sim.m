@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_cascaded_tanks_sim ()
-## The Cascaded Tanks simulator (@code{demos/cascaded_tanks_sim.m})
+## The Cascaded Tanks simulator (@code{devel/validation/cascaded_tanks_sim.m})
 ## against independent computations. It checks only the simulator, never
 ## residtrace's verdicts (those are reported by
 ## @code{demos/residtrace_cascaded_tanks.m}).
@@ -31,6 +31,7 @@ function test_cascaded_tanks_sim ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
+  addpath (fullfile (root, "devel", "validation"));
   pkg load control;
   rand ("state", 11);
   randn ("state", 11);

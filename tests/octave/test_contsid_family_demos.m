@@ -326,7 +326,7 @@ endfunction
 ## are u = r - C(p) y (r at the plant input), the default of clsrivc and
 ## clrivc's "ReferenceAt" (instruments built for u = C(p) (r - y) would
 ## report sd 20-55 times smaller than the spread; their covariance is the
-## IV sandwich, and bench/closed_loop_mc.m's "demo" case checks the sd
+## IV sandwich, and devel/monte_carlo/closed_loop_mc.m's "demo" case checks the sd
 ## against a Monte Carlo of closedloop1).  The tolerance is 3% (about 4
 ## times the measured spread), the distance in reported sd is printed and,
 ## where the reported sd apply (white noise, or the noise model estimated),

@@ -6,7 +6,7 @@
 ## The delay search of @code{tffsrivc} and of @code{tffcoe} against an
 ## exhaustive scan of fixed delays (each estimator against its own scan,
 ## as the inline tests of both functions did with the same 21 lines each;
-## now one copy). The record is the 27th noise draw of bench/freq_mc.m (G
+## now one copy). The record is the 27th noise draw of devel/monte_carlo/freq_mc.m (G
 ## = (0.5 s + 4) / (s^2 + 1.2 s + 4) e^(-0.37 s), 50 frequencies, complex
 ## noise of sd 0.05): its loss is lowest at 0.16 s, not 0.37 s (a
 ## right-half-plane zero traded for delay), and the free search must find

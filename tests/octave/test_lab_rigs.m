@@ -3,8 +3,8 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_lab_rigs ()
-## The simulators of the simulated lab rigs (@code{demos/lab_rigs.m},
-## @code{demos/lab_rig_rk4.m}) against identities and
+## The simulators of the simulated lab rigs (@code{devel/validation/lab_rigs.m},
+## @code{devel/validation/lab_rig_rk4.m}) against identities and
 ## independent computations.  It checks only the simulators, never
 ## residtrace's verdicts (those are reported by
 ## @code{demos/residtrace_lab_rigs.m}).
@@ -33,6 +33,7 @@ function test_lab_rigs ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
+  addpath (fullfile (root, "devel", "validation"));
   pkg load control;
   rand ("state", 7);
   randn ("state", 7);

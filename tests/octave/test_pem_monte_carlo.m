@@ -11,7 +11,7 @@
 ## standard errors of the truth.  The ratio's own standard error is about
 ## 1/sqrt(2 R) = 6 % for R = 150, so the bar's bounds lie more than three
 ## of them from 1 (with R = 60 they did not: 9 %).  The full run
-## (200 realisations, N = 1000) is demos/pem_monte_carlo.m.
+## (200 realisations, N = 1000) is devel/monte_carlo/pem_monte_carlo.m.
 ## @end deftypefn
 
 function test_pem_monte_carlo ()

@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_fastpole ()
 ## Every failure loud, on a simulated Cascaded Tanks record
-## (@code{demos/cascaded_tanks_sim.m}, strong nonlinearity, record 1)
+## (@code{devel/validation/cascaded_tanks_sim.m}, strong nonlinearity, record 1)
 ## with the user's @code{srivc} [3 3 0] model of the raw record. That
 ## model has a real pole far beyond the Nyquist frequency (p Ts of about
 ## 68); every candidate's fit started from it fails (instrument matrix
@@ -30,6 +30,7 @@ function test_residtrace_fastpole ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
+  addpath (fullfile (root, "devel", "validation"));
   [de, dv] = cascaded_tanks_sim ("records", 1, "strong");
   M = [];
   evalc ("M = srivc (de, [3 3 0]);");

@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} test_residtrace_loud ()
 ## Every failure loud: on the simulated pendulum record
-## (@code{demos/lab_rigs.m}; torque motor V -> potentiometer angle in
+## (@code{devel/validation/lab_rigs.m}; torque motor V -> potentiometer angle in
 ## degrees, hanging at 180 degrees, m g l sin(theta)), with a user's model
 ## (@code{srivc} [1 2 0] on the raw record) and residtrace's defaults:
 ## @itemize
@@ -27,6 +27,7 @@ function test_residtrace_loud ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
+  addpath (fullfile (root, "devel", "validation"));
   rig = lab_rigs ("pendulum", 1, 0);
   [M, ~, ~, ~, ~, info] = srivc (rig.de, [1 2 0]);
   assert (info.output_offset);

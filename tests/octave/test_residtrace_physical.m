@@ -35,6 +35,7 @@
 function test_residtrace_physical ()
   root = ctid_test_root ();
   addpath (fullfile (root, "demos"));
+  addpath (fullfile (root, "devel", "validation"));
   priv = fullfile (root, "octave", "private");
   here = pwd ();
   unwind_protect
@@ -108,7 +109,7 @@ function check_simulators ()
 
   ## both tanks overflowing, half the upper overflow falling into the
   ## lower tank, from levels not at rest: against the Cascaded Tanks
-  ## simulator (demos/cascaded_tanks_sim.m, written apart: its
+  ## simulator (devel/validation/cascaded_tanks_sim.m, written apart: its
   ## overflow switches in each Runge-Kutta stage) mapped by z = k2^2 x1,
   ## b = k2^2 k4, alpha = k1 k2, gamma = k3, spill = frac, yhi = x2max;
   ## the projection after each sub-step is first order in the sub-step
@@ -247,7 +248,7 @@ function check_tanks ()
                        "square-root outflows of a two-section cascade")));
 endfunction
 
-## A draw of the Cascaded Tanks simulator (demos/cascaded_tanks_sim.m,
+## A draw of the Cascaded Tanks simulator (devel/validation/cascaded_tanks_sim.m,
 ## strong excitation, draw 7: none of the draws 1-4 that the README's
 ## study looked at): records in raw volts that start 4 V below rest, both
 ## tanks overflowing, half the upper overflow falling into the lower one.

@@ -27,6 +27,7 @@ function test_residtrace_rivals ()
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
+  addpath (fullfile (root, "devel", "validation"));
   private_dir = fullfile (root, "octave", "private");
   addpath (private_dir);
   cleanup = onCleanup (@() rmpath (private_dir));

@@ -3,14 +3,13 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{R} =} srivc_records ()
-## @deftypefnx {} {@var{R} =} srivc_records (@var{root})
-## @deftypefnx {} {@var{R} =} srivc_records (@var{root}, @var{only})
+## @deftypefnx {} {@var{R} =} srivc_records (@var{only})
 ## SRIVC with its automatic start over a grid of structures on the measured
-## records of ../shared/data, raw and mean-removed (target: a stable,
+## records (@code{ctid_data_dir}), raw and mean-removed (target: a stable,
 ## converged model on >= 95 % of such fits). Not a test (it takes minutes):
 ## run it from the repository root,
 ## @example
-## octave-cli -q --eval "addpath octave bench; srivc_records"
+## devel/run-study srivc_records
 ## @end example
 ## Records: EMPS (force gtau*vir -> motor position qm, and -> velocity
 ## d qm/dt), estimation and pulses records; Silverbox V1 -> V2, its
@@ -25,11 +24,11 @@
 ## the data determine the parameters (false: srivc:overParameterised).
 ## @end deftypefn
 
-function R = srivc_records (root, only)
-  if (nargin < 1 || isempty (root))
-    root = pwd ();
+function R = srivc_records (only)
+  [data, why] = ctid_data_dir ();
+  if (isempty (data))
+    error ("srivc_records:noData", "srivc_records: %s", why);
   endif
-  data = fullfile (root, "..", "shared", "data");
   recs = {};
   for name = {"DATA_EMPS.mat", "DATA_EMPS_PULSES.mat"}
     s = load (fullfile (data, "emps", name{1}));
@@ -51,7 +50,7 @@ function R = srivc_records (root, only)
                       [1 2 0; 2 2 0; 3 2 0; 2 3 0; 3 3 0; 3 4 0]};
   endfor
 
-  if (nargin >= 2)
+  if (nargin >= 1)
     recs = recs(only, :);
   endif
   R = struct ("record", {}, "nn", {}, "mean_removed", {}, "stable", {},

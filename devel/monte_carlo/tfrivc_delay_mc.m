@@ -7,7 +7,7 @@
 ## 'NN', [2 1]) estimates the delay jointly with the plant and the noise
 ## model. Prints per run the delay, its reported sd, the plant and c1, and
 ## at the end the spread of td against the mean reported sd. Run from the
-## repository root: octave-cli --eval "addpath octave; run bench/tfrivc_delay_mc.m"
+## repository root: devel/run-study tfrivc_delay_mc
 ## (R = 5 runs, about a minute each on a loaded machine; set R first).
 if (! exist ("R", "var"))
   R = 5;

@@ -8,10 +8,10 @@
 ## two rules of the residtrace studies (the best R_T^2, and
 ## parsimonious_structure). Prints one line per pair; about a minute.
 ## Run from the repository root:
-##   octave-cli -q --eval "addpath demos; srivcstruc_initial_condition"
+##   devel/run-study srivcstruc_initial_condition
 
 function srivcstruc_initial_condition ()
-  root = fileparts (fileparts (mfilename ("fullpath")));
+  root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
   addpath (fullfile (root, "octave"));
   addpath (fullfile (root, "demos"));
   pkg load control;

@@ -5,7 +5,7 @@
 ## Ts = 0.1 s, 15 dB): tfsrivc from the coarse start delay td0 = 1 with
 ## the Focus filter fc = 0.1 rad/s, against the estimate started at the
 ## true delay (the global minimum). Run from the repository root:
-## octave-cli --eval "addpath octave; run bench/tdsrivc_focus_mc.m"
+## devel/run-study tdsrivc_focus_mc
 ## (R = 5 runs, about 30 s each on a loaded machine; set R first for more).
 if (! exist ("R", "var"))
   R = 5;

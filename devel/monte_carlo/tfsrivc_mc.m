@@ -3,7 +3,7 @@
 
 ## Monte Carlo of tfsrivc (delay estimated): spread of the estimates
 ## against the reported standard deviations. Run from the repository
-## root: octave-cli --eval "addpath octave; run bench/tfsrivc_mc.m"
+## root: devel/run-study tfsrivc_mc
 ## (R = 40 runs, about 20-30 s; set R before running for more).
 ## Measured (R = 40): ratios MC std / mean reported sd for b1 b0 f1 f2 td
 ## 1.33 1.18 1.09 1.04 1.33. This system has relative degree 1: with a

@@ -17,7 +17,7 @@
 
 function T = residtrace_suite (set = 2, outdir = "results")
   here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "tests", "octave"));
+  addpath (fullfile (here, "..", "..", "tests", "octave"));
   demo_prepare (outdir);
   cases = residtrace_cases (set);
   T = struct ("effect", {}, "found", {}, "rmse_before", {},

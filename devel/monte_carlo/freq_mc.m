@@ -16,7 +16,7 @@
 ## parameter ([b; a], then td), and the ratio of the robust spread
 ## (1.4826 median absolute deviation).
 ## @example
-## octave-cli -q --eval "addpath octave bench; freq_mc (200)"
+## devel/run-study freq_mc 200
 ## @end example
 ## @end deftypefn
 
@@ -25,7 +25,7 @@ function R = freq_mc (runs)
     runs = 200;
   endif
   warning ("off", "all");
-  mc = @mc_sd_ratio;                    # bench/mc_sd_ratio.m
+  mc = @mc_sd_ratio;                    # devel/monte_carlo/mc_sd_ratio.m
   w = logspace (-1, 1.5, 50).';
   s = 1i * w;
   G1 = (2 * s + 6) ./ (s.^2 + 1.5 * s + 9);

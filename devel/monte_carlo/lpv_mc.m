@@ -11,7 +11,7 @@
 ## |mean - true| in standard errors (sd / sqrt (R)).  Run from the
 ## repository root:
 ## @example
-## octave-cli -q --eval "addpath octave bench; lpv_mc (150);"
+## devel/run-study lpv_mc 150
 ## @end example
 ## @end deftypefn
 

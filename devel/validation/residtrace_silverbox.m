@@ -16,7 +16,7 @@
 
 function R = residtrace_silverbox (varargin)
   here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
+  addpath (fullfile (here, "..", "..", "octave"));
   [root, why] = ctid_data_dir ("silverbox");
   if (isempty (root))
     error ("residtrace_silverbox:noData", "residtrace_silverbox: %s", why);

@@ -20,7 +20,7 @@
 ## Prints and returns the ratio per parameter (getpvec's order), and the
 ## ratio of the robust spread (1.4826 median absolute deviation).
 ## @example
-## octave-cli -q --eval "addpath octave bench; oe_miso_mc (200)"
+## devel/run-study oe_miso_mc 200
 ## @end example
 ## @end deftypefn
 
@@ -29,7 +29,7 @@ function R = oe_miso_mc (runs)
     runs = 200;
   endif
   warning ("off", "all");
-  mc = @mc_sd_ratio;                    # bench/mc_sd_ratio.m
+  mc = @mc_sd_ratio;                    # devel/monte_carlo/mc_sd_ratio.m
   ## discrete time
   N = 1000;
   rand ("state", 1);

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
 // Monte Carlo of HWSRIVC's reported standard deviations on the core
-// directly (faster than bench/hammerstein_mc.m on a loaded machine): the
+// directly (faster than devel/monte_carlo/hammerstein_mc.m on a loaded machine): the
 // system of that script (CONTSID's Hammerstein-Wiener demo, f = u - 2u^2 +
 // 0.8u^3, G = 1/(s + 2), g = x + 1.5x^2 + x^3, Ts = 5 ms, N = 5000, noise
 // sd 0.03), other random numbers. Prints spread / mean reported sd and
 // bias / spread per parameter [f b alpha2 alpha3 beta2 beta3].
 // Build and run from the repository root:
 //   g++ -O2 -std=c++17 -Icore/include -I/usr/include/eigen3 \
-//     bench/hammerstein_wiener_mc.cpp -o /tmp/hwmc && /tmp/hwmc 80
+//     devel/monte_carlo/hammerstein_wiener_mc.cpp -o /tmp/hwmc && /tmp/hwmc 80
 #include <cstdio>
 #include <cstdlib>
 #include <random>

@@ -65,7 +65,7 @@ function S = residtrace_cascaded_tanks (outdir, draws, greybox, rule, variant)
            "residtrace_cascaded_tanks: rule '%s'", rule);
   endif
   here = fileparts (mfilename ("fullpath"));
-  addpath (fullfile (here, "..", "octave"));
+  addpath (fullfile (here, "..", "..", "octave"));
   addpath (here);
   pkg load control;
   ## The structures a user would try on a two-tank level record.
@@ -373,7 +373,7 @@ function write_report (S, NN, file, rule, variant)
   endif
   fprintf (fid, "# residtrace on simulated Cascaded Tanks records (%s)\n\n",
            variant);
-  fprintf (fid, ["Records: demos/cascaded_tanks_sim.m (k1 = %g, k2 = %g, ", ...
+  fprintf (fid, ["Records: devel/validation/cascaded_tanks_sim.m (k1 = %g, k2 = %g, ", ...
                  "k3 = %g, k4 = %g, frac = %g, rims %g V and %g V, x0 = ", ...
                  "[%g %g] V, sensor noise %g V rms, %g-V quantisation, ", ...
                  "multisine %g +- %g V rms up to %g Hz, %d samples at ", ...

@@ -16,7 +16,7 @@
 ## ARMA(1,1) noise: the stacked-instrument covariance of rivc_miso).
 ## Run from the repository root:
 ## @example
-## octave-cli -q --eval "addpath octave bench; rivc_mc (200)"
+## devel/run-study rivc_mc 200
 ## @end example
 ## @end deftypefn
 

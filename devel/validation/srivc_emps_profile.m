@@ -13,7 +13,7 @@
 ## Gauss-Newton (at most 25 steps) and b, c by least squares. Not a test
 ## (a few minutes); run from the repository root:
 ## @example
-## octave-cli -q --eval "addpath octave bench; srivc_emps_profile"
+## devel/run-study srivc_emps_profile
 ## @end example
 ## @var{rec}: @qcode{"DATA_EMPS.mat"} (default) or
 ## @qcode{"DATA_EMPS_PULSES.mat"}.
@@ -23,7 +23,11 @@ function srivc_emps_profile (rec)
   if (nargin < 1)
     rec = "DATA_EMPS.mat";
   endif
-  s = load (fullfile ("..", "shared", "data", "emps", rec));
+  [data, why] = ctid_data_dir ("emps");
+  if (isempty (data))
+    error ("srivc_emps_profile:noData", "srivc_emps_profile: %s", why);
+  endif
+  s = load (fullfile (data, rec));
   Ts = s.t(2) - s.t(1);
   u = s.gtau * s.vir(:);
   y = s.qm(:);

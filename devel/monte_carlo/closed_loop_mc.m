@@ -46,7 +46,7 @@
 ## Per estimator and parameter: the bias, the Monte Carlo sd, the mean
 ## reported sd and their ratio. Run from the repository root (minutes):
 ## @example
-## nice octave-cli -q --eval "addpath octave bench; closed_loop_mc (100)"
+## devel/run-study closed_loop_mc 100
 ## @end example
 ## @end deftypefn
 

@@ -8,9 +8,9 @@
 ## 0.8-1.25 per parameter).
 ##
 ## Usage, from the repository root:
-##   octave-cli -q demos/pem_monte_carlo.m [R]      (default R = 200)
+##   devel/run-study pem_monte_carlo      (R = 200 noise realisations)
 1;
-root = pwd ();
+root = fileparts (fileparts (fileparts (mfilename ("fullpath"))));
 addpath (fullfile (root, "octave"));
 args = argv ();
 R = 200;

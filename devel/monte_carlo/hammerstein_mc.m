@@ -14,7 +14,7 @@
 ## Ts = 5 ms, N = 5000, noise sd 0.03). The input is the same in every run,
 ## the noise changes. Prints and returns the ratio per parameter.
 ## @example
-## octave-cli -q --eval "addpath octave bench; hammerstein_mc (100)"
+## devel/run-study hammerstein_mc 100
 ## @end example
 ## @end deftypefn
 

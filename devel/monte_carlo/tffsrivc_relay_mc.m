@@ -8,7 +8,7 @@
 ## relative to the sd (the SRIVC fixed point is a stationary point of the
 ## output-error criterion, so the two agree), and the output-error loss of
 ## each. Run from the repository root:
-## octave-cli --eval "addpath octave; run bench/tffsrivc_relay_mc.m"
+## devel/run-study tffsrivc_relay_mc
 ## (R = 10 runs; set R, and seed for other draws, first).
 if (! exist ("R", "var"))
   R = 10;
