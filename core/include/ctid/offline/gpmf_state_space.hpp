@@ -462,13 +462,16 @@ Status ss_iv_gpmf(const MultiRecordView<S>& record,
 // the compensated estimate theta(sigma) = (Phi^T Phi - sum_j sigma_j^2
 // D_ij)^-1 (Phi^T zeta - sigma_i^2 d_i) is consistent. The constraints
 // H^T theta(sigma) = 0 of every output equation and input, written around
-// the current theta as
+// the current theta, have the Jacobian
 //
-//   sum_j sigma_j^2 H^T P_i^-1 (D_ij theta_i - [i = j] d_i) = -H^T theta_LS,i,
+//   d g / d sigma_j^2 = H^T R_i^-1 (D_ij theta_i - [i = j] d_i),
+//   R_i = Phi^T Phi - sum_j sigma_j^2 D_ij,
 //
-// give sigma^2 by least squares (clipped at 0); theta and sigma^2 are
-// iterated to a fixed point. beta then follows from beta_bar = F beta by
+// and sigma^2 >= 0 minimising |g|^2 is found by Gauss-Newton with step
+// halving, keeping every R_i positive definite (it estimates the
+// noise-free normal matrix). beta then follows from beta_bar = F beta by
 // least squares. Uniform sampling only (the noise Gram assumes one filter).
+// A root at a pole of the system makes the augmented equation non-unique.
 template <typename S>
 Status ss_bc_gpmf(const MultiRecordView<S>& record,
                   const GpmfSettings<S>& settings,
