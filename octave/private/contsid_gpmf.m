@@ -4,15 +4,17 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{sv}] =} contsid_gpmf (@var{fname}, @var{args})
 ## Shared back-end of the GPMF state-space estimators @code{sslsgpmf}
-## (@var{fname} = @qcode{"sslsgpmf"}), @code{ssivgpmf} and
-## @code{sidgpmf}: reads @code{(data, nni, param[, n0])} or, for
+## (@var{fname} = @qcode{"sslsgpmf"}), @code{ssivgpmf}, @code{ssbcgpmf}
+## and @code{sidgpmf}: reads @code{(data, nni, param[, n0])}, for
+## @code{ssbcgpmf} @code{(data, nni, param, root[, n0])} or, for
 ## @code{sidgpmf}, @code{(data, i, j, lambda[, n, n0])} from the cell
 ## @var{args}, checks it
 ## (errors @code{@var{fname}:badInput}, @code{:dimensionMismatch},
 ## @code{:notSupported}), runs the core estimator through
 ## @code{gpmf_mex} and returns the continuous-time @code{idss} model
-## (and, for @code{sidgpmf}, the singular values @var{sv}).
-## @seealso{sslsgpmf, ssivgpmf, sidgpmf}
+## (and, for @code{sidgpmf}, the singular values @var{sv}; for
+## @code{ssbcgpmf}, the estimated output noise variances).
+## @seealso{sslsgpmf, ssivgpmf, ssbcgpmf, sidgpmf}
 ## @end deftypefn
 
 function [M, sv] = contsid_gpmf (fname, args)
@@ -21,6 +23,10 @@ function [M, sv] = contsid_gpmf (fname, args)
     opts = sid_options (fname, args(2:end), rows (y));
   else
     opts = canonical_options (fname, args(2:end), columns (y), rows (y));
+  endif
+  if (strcmp (fname, "ssbcgpmf") && ! isscalar (t))
+    error ([fname ":notSupported"],
+           "%s: bias compensation needs uniformly sampled data", fname);
   endif
   opts.intersample = lower (rule);
   try
@@ -95,10 +101,31 @@ function opts = canonical_options (fname, args, ny, N)
            "%s: 'param' needs one filter parameter per output (%d), got %d",
            fname, ny, numel (param));
   endif
-  n0 = first_sample (fname, args, 3, N);
-  method = struct ("sslsgpmf", "ls", "ssivgpmf", "iv").(fname);
+  method = struct ("sslsgpmf", "ls", "ssivgpmf", "iv",
+                   "ssbcgpmf", "bc").(fname);
+  if (strcmp (method, "bc"))
+    root = args{3};
+    if (! isnumeric (root) || ! isreal (root) || isempty (root)
+        || ndims (root) != 2 || ! all (isfinite (root(:))) || any (root(:) >= 0))
+      error ([fname ":badInput"],
+             "%s: 'root' must hold finite negative filter roots", fname);
+    endif
+    if (rows (root) == 1)
+      root = repmat (root, ny, 1);
+    elseif (rows (root) != ny)
+      error ([fname ":dimensionMismatch"],
+             "%s: 'root' needs one row per output (%d) or one row, got %d",
+             fname, ny, rows (root));
+    endif
+    n0 = first_sample (fname, args, 4, N);
+  else
+    n0 = first_sample (fname, args, 3, N);
+  endif
   opts = struct ("method", method, "nni", double (nni(:)'),
                  "lambda", double (param(:)), "n0", n0);
+  if (strcmp (method, "bc"))
+    opts.root = double (root);
+  endif
 endfunction
 
 function opts = sid_options (fname, args, N)

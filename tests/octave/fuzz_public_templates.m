@@ -177,6 +177,8 @@ function tpl = fuzz_public_templates ()
   tpl.sineresp = {{M, 1, (0:n-1)' * Ts}};
   tpl.spafdr = {{data}, {data, 20, w}};
   tpl.simulLPVCT = {{u, alpv, depa, 2, depb, Ts}};
+  tpl.ssbcgpmf = {{data2, [1 1], [3; 3], -1}, ...
+                  {data2, [1 1], [2; 4], [-0.5; -1], 10}};
   tpl.ssivgpmf = {{data2, [1 1], [3; 3]}, {data2, [1 1], [2; 4], 10}};
   tpl.sslsgpmf = {{data2, [1 1], [3; 3]}, {data, 2, 3}};
   tpl.srivc = {{data, [1 2 0]}, {gap, [1 2 0]}, ...

@@ -250,10 +250,13 @@ function test_gateway_fuzz ()
   gls = struct ("method", "ls", "nni", [1 1], "lambda", [3; 3], "n0", 1,
                 "intersample", "zoh");
   giv = setfield (gls, "method", "iv");
+  gbc = setfield (setfield (gls, "method", "bc"), "root", [-1; -1]);
   gsid = struct ("method", "sid", "i", 3, "j", 3, "lambda", 3, "n", 2);
-  calls(end+1:end+3) = {
+  calls(end+1:end+4) = {
     {"gpmf_mex", {"sslsgpmf", yg, ug, 0.1, gls}, {"method", "nni", "lambda"}}
     {"gpmf_mex", {"ssivgpmf", yg, ug, 0.1, giv}, {"method", "nni", "lambda"}}
+    {"gpmf_mex", {"ssbcgpmf", yg, ug, 0.1, gbc}, ...
+     {"method", "nni", "lambda", "root"}}
     {"gpmf_mex", {"sidgpmf", yg, ug, 0.1, gsid}, ...
      {"method", "i", "j", "lambda"}}
   };

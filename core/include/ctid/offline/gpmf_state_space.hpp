@@ -185,34 +185,58 @@ Status validate(const MultiRecordView<S>& record,
 // The GPMF regressors of output i over the record: row k holds
 // [-p^k F y_j (k < nu_ij), j = 1..p | p^k F u_l (k < n_i), l = 1..m] with
 // the outputs y_hat (instruments) or y, and zeta = p^(n_i) F y_i.
+//
+// With input_roots (r roots, the bias-compensated estimator), the inputs
+// are first passed through the artificial filter 1/F(p), F(p) = prod (p -
+// root): the columns of input l are then p^k F u_l / F(p), k < n_i + r,
+// whose coefficients beta_bar = beta F carry the r known zeros of F.
 template <typename S>
 void gpmf_regressors(const MultiRecordView<S>& record,
                      const GpmfSettings<S>& settings, int i, const S* outputs,
-                     Matrix<S>* phi, Vector<S>* zeta) {
+                     Matrix<S>* phi, Vector<S>* zeta,
+                     const std::vector<S>* input_roots = nullptr) {
   const auto& n = settings.observability_indices;
   const int p = static_cast<int>(record.num_outputs);
   const int m = static_cast<int>(record.num_inputs);
   const int order = n[i] + 1;  // GPMF of order n_i: Poisson filter ^(n_i+1)
+  const int extra =
+      input_roots == nullptr ? 0 : static_cast<int>(input_roots->size());
+  const int u_order = order + extra;
+  const int u_columns = n[i] + extra;
   const S lambda = settings.lambda[i];
   const Vector<S> d = svf_denominator(order, lambda);
   const S gain = svf_gain(order, lambda, true);
+  // D(p) F(p), descending coefficients without the leading 1.
+  Vector<S> du(u_order);
+  {
+    Vector<S> poly(order + 1);
+    poly(0) = 1;
+    poly.tail(order) = d;
+    for (int r = 0; r < extra; ++r) {
+      Vector<S> next = Vector<S>::Zero(poly.size() + 1);
+      next.head(poly.size()) = poly;
+      next.tail(poly.size()) -= (*input_roots)[r] * poly;
+      poly = next;
+    }
+    du = poly.tail(u_order);
+  }
   FilterDiscretization<S> y_disc, u_disc;
   y_disc.configure(order, InterSample::kFoh);
   y_disc.set_denominator(d);
-  u_disc.configure(order, record.u_intersample);
-  u_disc.set_denominator(d);
+  u_disc.configure(u_order, record.u_intersample);
+  u_disc.set_denominator(du);
   std::vector<FilterChannel<S>> y_channels(p), u_channels(m);
   for (auto& c : y_channels) {
     c.configure(order);
     c.set_rest_at_first_sample(true);
   }
   for (auto& c : u_channels) {
-    c.configure(order);
+    c.configure(u_order);
     c.set_rest_at_first_sample(true);
   }
   const Eigen::Index count = record.num_samples;
   const Eigen::Index first = settings.first_sample;
-  const Eigen::Index columns = num_alpha(n, i) + n[i] * m;
+  const Eigen::Index columns = num_alpha(n, i) + u_columns * m;
   phi->resize(count - first, columns);
   zeta->resize(count - first);
   for (Eigen::Index k = 0; k < count; ++k) {
@@ -234,7 +258,7 @@ void gpmf_regressors(const MultiRecordView<S>& record,
       }
     }
     for (int l = 0; l < m; ++l) {
-      for (int q = 0; q < n[i]; ++q) {
+      for (int q = 0; q < u_columns; ++q) {
         (*phi)(row, col++) = u_channels[l].outputs()(q);
       }
     }
@@ -415,6 +439,259 @@ Status ss_iv_gpmf(const MultiRecordView<S>& record,
   return gpmf_detail::canonical_model(settings.observability_indices,
                                       static_cast<int>(record.num_inputs),
                                       theta, estimate);
+}
+
+// Bias-compensated least-squares GPMF estimate (ssbcgpmf), after Garnier,
+// Sibille and Bastogne, "A bias-free least-squares parameter estimator for
+// continuous-time state-space models", CDC 1997, on the bias-eliminated LS
+// principle of Feng and Zheng (IEE Proc. D 138, 1991) and Zhang and Feng
+// (Automatica 33(5), 1997).
+//
+// Each output equation i is augmented with a known factor: the inputs pass
+// through 1/F_i(p), F_i(p) = prod_r (p - roots_i(r)), so the numerators
+// beta_bar_(il) = beta_(il) F_i of the augmented equation vanish at the
+// roots: H^T beta_bar_(il) = 0 with H the left null space of the
+// convolution by F_i. With white output noise of variances sigma_j^2 on
+// the samples, the GPMF normal equations of output i are
+//
+//   E[Phi^T Phi] = R_0 + sum_j sigma_j^2 D_ij,  E[Phi^T zeta] = r_0 +
+//   sigma_i^2 d_i,
+//
+// D_ij and d_i the known noise Gram of the Poisson filter (its impulse
+// response, summed exactly over the rows used) in the columns of y_j, so
+// the compensated estimate theta(sigma) = (Phi^T Phi - sum_j sigma_j^2
+// D_ij)^-1 (Phi^T zeta - sigma_i^2 d_i) is consistent. The constraints
+// H^T theta(sigma) = 0 of every output equation and input, written around
+// the current theta, have the Jacobian
+//
+//   d g / d sigma_j^2 = H^T R_i^-1 (D_ij theta_i - [i = j] d_i),
+//   R_i = Phi^T Phi - sum_j sigma_j^2 D_ij,
+//
+// and sigma^2 >= 0 minimising |g|^2 is found by Gauss-Newton with step
+// halving, keeping every R_i positive definite (it estimates the
+// noise-free normal matrix). beta then follows from beta_bar = F beta by
+// least squares. Uniform sampling only (the noise Gram assumes one filter).
+// A root at a pole of the system makes the augmented equation non-unique.
+template <typename S>
+Status ss_bc_gpmf(const MultiRecordView<S>& record,
+                  const GpmfSettings<S>& settings,
+                  const std::vector<std::vector<S>>& roots,
+                  StateSpaceEstimate<S>* estimate,
+                  Vector<S>* noise_variance = nullptr) {
+  Status status = gpmf_detail::validate(record, settings);
+  if (!status.ok()) return status;
+  const auto& n = settings.observability_indices;
+  const int p = static_cast<int>(record.num_outputs);
+  const int m = static_cast<int>(record.num_inputs);
+  if (static_cast<int>(roots.size()) != p) {
+    return dimension_mismatch("root must have one row per output (" +
+                              std::to_string(p) + "), got " +
+                              std::to_string(roots.size()));
+  }
+  for (const auto& row : roots) {
+    if (row.empty() || row.size() > 20) {
+      return bad_input("each output needs 1..20 filter roots");
+    }
+    for (S r : row) {
+      if (!std::isfinite(r) || !(r < 0)) {
+        return bad_input("the filter roots must be finite and < 0");
+      }
+    }
+  }
+  if (record.instants != nullptr) {
+    return bad_input("bias compensation needs uniformly sampled data");
+  }
+  const Eigen::Index count = record.num_samples;
+  const Eigen::Index first = settings.first_sample;
+  for (int i = 0; i < p; ++i) {
+    const Eigen::Index columns =
+        gpmf_detail::num_alpha(n, i) +
+        (n[i] + static_cast<Eigen::Index>(roots[i].size())) * m;
+    if (count - first < columns) {
+      return bad_input("the data from sample n0 on have fewer samples than "
+                       "the " + std::to_string(columns) +
+                       " parameters of an augmented output equation");
+    }
+  }
+  struct Equation {
+    Matrix<S> P;                 // Phi^T Phi
+    Vector<S> c;                 // Phi^T zeta
+    Vector<S> theta_ls, theta;   // augmented parameters
+    std::vector<Matrix<S>> D;    // noise Gram of y_j, j = 1..p
+    Vector<S> d;                 // noise cross term of y_i and zeta
+    Matrix<S> H;                 // left null space of the convolution by F
+    Matrix<S> T;                 // convolution by F: beta_bar = T beta
+    Eigen::Index alpha_count = 0;
+    Eigen::LDLT<Matrix<S>> ldlt;
+  };
+  std::vector<Equation> eq(p);
+  for (int i = 0; i < p; ++i) {
+    Equation& e = eq[i];
+    const int r = static_cast<int>(roots[i].size());
+    Matrix<S> phi;
+    Vector<S> zeta;
+    gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta,
+                                 &roots[i]);
+    Eigen::ColPivHouseholderQR<Matrix<S>> qr(phi);
+    if (qr.rank() < phi.cols()) {
+      return numerical_failure(
+          "the augmented GPMF regression of output " + std::to_string(i + 1) +
+          " is rank deficient (input not exciting enough, nni too large or "
+          "too many roots)");
+    }
+    e.theta_ls = qr.solve(zeta);
+    e.theta = e.theta_ls;
+    e.P = phi.transpose() * phi;
+    e.c = phi.transpose() * zeta;
+    e.ldlt.compute(e.P);
+    e.alpha_count = gpmf_detail::num_alpha(n, i);
+    // Impulse response g(tau) of the y filter (outputs 0..n_i), from rest;
+    // the noise Gram of the rows k = first..N-1 is sum_k G(k - 1), G(t) =
+    // sum_(tau <= t) g(tau) g(tau)^T (sample 0 sets the rest state).
+    const int order = n[i] + 1;
+    FilterDiscretization<S> disc;
+    disc.configure(order, InterSample::kFoh);
+    disc.set_denominator(svf_denominator(order, settings.lambda[i]));
+    disc.ensure(record.ts);
+    FilterChannel<S> channel;
+    channel.configure(order);
+    channel.set_rest_at_first_sample(true);
+    const S gain = svf_gain(order, settings.lambda[i], true);
+    channel.step(disc, gain, S(0));
+    Matrix<S> G = Matrix<S>::Zero(order + 1, order + 1);
+    Matrix<S> W = Matrix<S>::Zero(order + 1, order + 1);
+    for (Eigen::Index t = 0; t + 1 < count; ++t) {
+      channel.step(disc, gain, t == 0 ? S(1) : S(0));
+      const Vector<S>& g = channel.outputs();
+      G.noalias() += g * g.transpose();
+      if (t + 1 >= first) W += G;  // row k = t + 1
+    }
+    e.D.assign(p, Matrix<S>::Zero(phi.cols(), phi.cols()));
+    e.d = Vector<S>::Zero(phi.cols());
+    Eigen::Index offset = 0;
+    for (int j = 0; j < p; ++j) {
+      const int nu = gpmf_detail::coupling_degree(n, i, j);
+      e.D[j].block(offset, offset, nu, nu) = W.topLeftCorner(nu, nu);
+      if (j == i) e.d.segment(offset, nu) = -W.col(n[i]).head(nu);
+      offset += nu;
+    }
+    // Convolution by F (ascending powers): beta_bar = T beta.
+    Vector<S> f = Vector<S>::Ones(1);
+    for (int q = 0; q < r; ++q) {
+      Vector<S> next = Vector<S>::Zero(f.size() + 1);
+      next.tail(f.size()) = f;
+      next.head(f.size()) -= roots[i][q] * f;
+      f = next;
+    }
+    e.T = Matrix<S>::Zero(n[i] + r, n[i]);
+    for (int k = 0; k < n[i]; ++k) e.T.col(k).segment(k, r + 1) = f;
+    Eigen::JacobiSVD<Matrix<S>> svd(e.T, Eigen::ComputeFullU);
+    e.H = svd.matrixU().rightCols(r);
+  }
+  // sigma^2 >= 0 minimising |g(sigma^2)|^2, g the stacked constraints
+  // H^T beta_bar_(il)(sigma^2), by Gauss-Newton with step halving; the
+  // Jacobian column j of output i is H^T R_i^-1 (D_ij theta_i - [i = j]
+  // d_i), R_i = P_i - sum_j sigma_j^2 D_ij.
+  Eigen::Index rows = 0;
+  for (int i = 0; i < p; ++i) rows += eq[i].H.cols() * m;
+  const auto evaluate = [&](const Vector<S>& sigma2, Vector<S>* g,
+                            Matrix<S>* J) -> bool {
+    g->resize(rows);
+    if (J != nullptr) J->resize(rows, p);
+    Eigen::Index row = 0;
+    for (int i = 0; i < p; ++i) {
+      Equation& e = eq[i];
+      Matrix<S> R = e.P;
+      for (int j = 0; j < p; ++j) R -= sigma2(j) * e.D[j];
+      // R_i estimates the noise-free normal matrix: positive definite.
+      const Eigen::LLT<Matrix<S>> lu(R);
+      if (lu.info() != Eigen::Success) return false;
+      e.theta = lu.solve(e.c - sigma2(i) * e.d);
+      if (!e.theta.allFinite()) return false;
+      Matrix<S> response(e.theta.size(), p);
+      if (J != nullptr) {
+        for (int j = 0; j < p; ++j) {
+          Vector<S> v = e.D[j] * e.theta;
+          if (j == i) v -= e.d;
+          response.col(j) = lu.solve(v);
+        }
+      }
+      const Eigen::Index width = e.H.rows();
+      const Eigen::Index h = e.H.cols();
+      for (int l = 0; l < m; ++l) {
+        const Eigen::Index start = e.alpha_count + l * width;
+        g->segment(row, h) = e.H.transpose() * e.theta.segment(start, width);
+        if (J != nullptr) {
+          J->middleRows(row, h) =
+              e.H.transpose() * response.middleRows(start, width);
+        }
+        row += h;
+      }
+    }
+    return true;
+  };
+  S power = 0;
+  for (Eigen::Index k = 0; k < count * p; ++k) {
+    power = std::max(power, record.y[k] * record.y[k]);
+  }
+  const S floor = std::max(power, std::numeric_limits<S>::min()) *
+                  std::numeric_limits<S>::epsilon();
+  Vector<S> sigma2 = Vector<S>::Zero(p);
+  Vector<S> g;
+  Matrix<S> J;
+  if (!evaluate(sigma2, &g, &J)) {
+    return numerical_failure("the least-squares GPMF estimate is not finite");
+  }
+  const int max_iterations = 100;
+  bool converged = false;
+  for (int iteration = 0; iteration < max_iterations && !converged;
+       ++iteration) {
+    const Vector<S> step = J.colPivHouseholderQr().solve(-g);
+    S cost = g.squaredNorm();
+    S scale = 1;
+    bool improved = false;
+    Vector<S> trial(p), g_trial;
+    for (int halving = 0; halving < 40; ++halving, scale /= 2) {
+      trial = (sigma2 + scale * step).cwiseMax(S(0));
+      if (evaluate(trial, &g_trial, nullptr) &&
+          g_trial.squaredNorm() < cost) {
+        improved = true;
+        break;
+      }
+    }
+    const S moved = improved ? (trial - sigma2).norm() : S(0);
+    if (improved) sigma2 = trial;
+    converged =
+        !improved || moved <= S(1e-10) * std::max(sigma2.norm(), floor);
+    if (!evaluate(sigma2, &g, &J)) {
+      return numerical_failure("the bias-compensated estimate is not finite");
+    }
+  }
+  if (!converged) {
+    return Status(ErrorCode::kNotConverged,
+                  "the bias compensation did not converge (try other roots "
+                  "or filter parameters)");
+  }
+  // beta from beta_bar = T beta, per input, and the canonical model.
+  Eigen::Index total = 0;
+  for (int i = 0; i < p; ++i) total += eq[i].alpha_count + n[i] * m;
+  Vector<S> theta(total);
+  Eigen::Index offset = 0;
+  for (int i = 0; i < p; ++i) {
+    const Equation& e = eq[i];
+    theta.segment(offset, e.alpha_count) = e.theta.head(e.alpha_count);
+    offset += e.alpha_count;
+    const Eigen::Index width = e.T.rows();
+    const Eigen::ColPivHouseholderQR<Matrix<S>> qr(e.T);
+    for (int l = 0; l < m; ++l) {
+      theta.segment(offset, n[i]) =
+          qr.solve(Vector<S>(e.theta.segment(e.alpha_count + l * width,
+                                             width)));
+      offset += n[i];
+    }
+  }
+  if (noise_variance != nullptr) *noise_variance = sigma2;
+  return gpmf_detail::canonical_model(n, m, theta, estimate);
 }
 
 struct SubspaceGpmfSettings {
