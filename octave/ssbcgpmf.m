@@ -49,7 +49,11 @@
 ## @seealso{sslsgpmf, ssivgpmf, idss}
 ## @end deftypefn
 
-function [M, varargout] = ssbcgpmf (varargin)
+function varargout = ssbcgpmf (varargin)
+  varargout = contsid_guard ("ssbcgpmf", @ssbcgpmf_body, nargout, varargin);
+endfunction
+
+function [M, varargout] = ssbcgpmf_body (varargin)
   contsid_nargchk ("ssbcgpmf", nargin, nargout, [4 5], 1);
   M = contsid_gpmf ("ssbcgpmf", varargin);
 endfunction
