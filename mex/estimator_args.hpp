@@ -4,54 +4,116 @@
 // what qnml_mex reuses of them: reading a whole estimator configuration by
 // field name, running it in double or single precision, and building the
 // info struct. The data y, u, t are positional; every other setting is a
-// field of the one options struct (gateway_common.hpp for the shared ones):
-//
-// rlssvf fields: intersample, na, nb, nk, lambda_svf, svf, adm, adg, th0,
-//   P0, form ('standard' | 'potter' | 'lmr'), Gamma (n-by-n), scaling
-//   (n-by-1 M_s), ic (estimate the initial conditions), tsls,
-//   covariance_guard (logical, default true: covariance_guard.hpp),
-//   gap_interval, gap_settle (gaps of bridged missing samples);
-// riv fields: intersample, na, nb, nk, lambda_svf, svf, adm, adg, th0, P0,
-//   method ('rivsvf' | 'rsrivc'), tsiv, dtupdate, stability ('keep' |
-//   'reflect'), mtheta_num/mtheta_den (M_theta), prefilter ('unit' |
-//   'monic'), A (1-by-na initial denominator), controller_num/
-//   controller_den and r1, r2 (closed loop), scaling, antiwindup (gamma of
-//   eq. 3.79, 0: none), antiwindup_lambda, covariance_guard, gap_interval,
-//   gap_settle.
-// Absent optional fields keep the core's defaults (its config structs).
+// field of the one options struct, declared once in the core
+// (ctid/recursive/recursive_options.hpp: rlssvf_options,
+// recursive_iv_options) and read from that table, plus what is not a
+// setting of the estimator: precision 'double' | 'single' and, for the
+// closed loop, the signals r1 and r2. Absent optional fields keep the
+// core's defaults (its config structs); `<gateway> (fname, "options")`
+// returns the table.
 #pragma once
 
 #include <vector>
 
 #include "ctid/recursive/recursive_iv.hpp"
+#include "ctid/recursive/recursive_options.hpp"
 #include "ctid/recursive/rlssvf.hpp"
 #include "gateway_common.hpp"
 
 namespace ctid::mex {
 
+// Every option of a table (ctid/recursive/recursive_options.hpp) that the
+// struct holds, converted by its declared type and set in table order;
+// a required one that is absent is an error. The ranges are checked once,
+// by the core's validate(config), which the caller runs after the last
+// option is set.
+template <typename Config>
+void read_option_table(const Gateway& g, OptionsReader& opt,
+                       const OptionTable<Config>& table, Config* config) {
+  for (const auto& decl : table) {
+    const mxArray* a = opt.field(decl.name);
+    if (a == nullptr || (mxIsEmpty(a) && mxIsDouble(a))) {
+      if (decl.required) {
+        g.fail("badOption",
+               std::string("option '") + decl.name + "' is missing");
+      }
+      continue;
+    }
+    const std::string what = std::string("option '") + decl.name + "'";
+    const bool one_number =
+        (mxIsNumeric(a) || mxIsLogical(a)) && mxGetNumberOfElements(a) == 1;
+    OptionValue value;
+    switch (decl.type) {
+      case OptionType::kReal:
+        if (!one_number) g.fail("badInput", what + " must be a real scalar");
+        value.real = g.scalar(a, what);
+        break;
+      case OptionType::kInteger:
+        value.integer = g.integer(a, what);
+        break;
+      case OptionType::kIntegerVector:
+        value.integers = g.integer_vector(a, what);
+        break;
+      case OptionType::kFlag:
+        if (!one_number) g.fail("badOption", what + " must be true or false");
+        if (mxIsLogical(a)) {
+          value.flag = mxIsLogicalScalarTrue(a);
+        } else {
+          const double v = g.scalar(a, what);
+          if (v != 0 && v != 1) g.fail("badOption", what + " must be true or false");
+          value.flag = v != 0;
+        }
+        break;
+      case OptionType::kChoice:
+        if (!mxIsChar(a)) {
+          std::string allowed;
+          for (const char* w : decl.choices) {
+            allowed += (allowed.empty() ? "'" : ", '") + std::string(w) + "'";
+          }
+          g.fail("badOption", what + " must be one of " + allowed);
+        }
+        value.word = g.text(a, what);
+        break;
+      case OptionType::kMatrix:
+        value.matrix = g.eigen_matrix(a, what, -1, -1);
+        break;
+    }
+    g.check(set_option(table, decl.name, value, config));
+  }
+}
+
+// The table as a struct array (name, type, default, range, help): what a
+// gateway returns for `<gateway> (fname, "options")`, and what the help
+// texts are checked against.
+template <typename Config>
+mxArray* option_table_struct(const OptionTable<Config>& table) {
+  const char* fields[] = {"name", "type", "default", "range", "help"};
+  mxArray* s = mxCreateStructMatrix(table.size(), 1, 5, fields);
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    const auto& decl = table[k];
+    mxSetField(s, k, "name", mxCreateString(decl.name));
+    mxSetField(s, k, "type", mxCreateString(option_type_name(decl.type)));
+    mxSetField(s, k, "default",
+               mxCreateString(decl.required ? "(required)"
+                                            : option_default(decl).c_str()));
+    mxSetField(s, k, "range", mxCreateString(decl.range));
+    mxSetField(s, k, "help", mxCreateString(decl.help));
+  }
+  return s;
+}
+
+// True for the call `<gateway> (fname, "options")`.
+inline bool asks_for_options(int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 2 || !mxIsChar(prhs[1])) return false;
+  char word[8] = {0};
+  return mxGetString(prhs[1], word, sizeof word) == 0 &&
+         std::string(word) == "options";
+}
+
 // The rlssvf configuration; the caller calls opt.finish().
 inline void read_rlssvf_config(const Gateway& g, OptionsReader& opt,
                                RlsSvfConfig<double>* config) {
-  read_svf(opt, &config->svf);
-  config->orders = read_orders(g, opt);
-  config->initial_conditions = opt.flag("ic", config->initial_conditions);
-  const long n = num_estimated(*config);
-  config->adaptation = read_adaptation(opt, n);
-  read_initial_estimate(opt, n, &config->theta0, &config->P0);
-  config->form =
-      opt.choice<UpdateForm>("form",
-                             {{"standard", UpdateForm::kStandard},
-                              {"potter", UpdateForm::kPotter},
-                              {"lmr", UpdateForm::kLevenbergMarquardt}},
-                             config->form);
-  const Eigen::MatrixXd gamma = opt.matrix("Gamma", n, n);
-  if (gamma.size() != 0) config->lmr_gamma = gamma;
-  config->scaling = opt.matrix("scaling", n, 1);
-  config->t_s_ls = opt.scalar("tsls", config->t_s_ls);
-  config->covariance_guard =
-      opt.flag("covariance_guard", config->covariance_guard);
-  config->gap_interval = opt.scalar("gap_interval", config->gap_interval);
-  config->gap_settle = opt.scalar("gap_settle", config->gap_settle);
+  read_option_table(g, opt, rlssvf_options<double>(), config);
   g.check(validate(*config));
 }
 
@@ -61,47 +123,18 @@ inline void read_riv_config(const Gateway& g, OptionsReader& opt,
                             const RecordView<double>& record,
                             RecursiveIvConfig<double>* config,
                             ClosedLoopSignals<double>* loop) {
-  read_svf(opt, &config->svf);
-  config->orders = read_orders(g, opt);
-  const long np = config->orders.num_parameters();
-  config->adaptation = read_adaptation(opt, np);
-  read_initial_estimate(opt, np, &config->theta0, &config->P0);
-  config->method = opt.choice<IvMethod>(
-      "method", {{"rivsvf", IvMethod::kRivsvf}, {"rsrivc", IvMethod::kRsrivc}},
-      config->method);
-  config->t_s_iv = opt.scalar("tsiv", config->t_s_iv);
-  config->dtupdate = opt.scalar("dtupdate", config->dtupdate);
-  config->stability =
-      opt.choice<StabilityPolicy>("stability",
-                                  {{"keep", StabilityPolicy::kKeepLast},
-                                   {"reflect", StabilityPolicy::kReflect}},
-                                  config->stability);
-  read_transfer_function(g, opt, "mtheta", &config->m_theta);
-  config->prefilter_gain =
-      opt.choice<PrefilterGain>("prefilter",
-                                {{"unit", PrefilterGain::kUnitStaticGain},
-                                 {"monic", PrefilterGain::kMonic}},
-                                config->prefilter_gain);
-  const Eigen::MatrixXd a = opt.matrix("A", 1, config->orders.na);
-  if (a.size() != 0) config->initial_denominator = a.transpose();
-  config->closed_loop =
-      read_transfer_function(g, opt, "controller", &config->controller);
+  read_option_table(g, opt, recursive_iv_options<double>(), config);
   const long n = record.num_samples;
   loop->r1 = opt.signal("r1", n);
   loop->r2 = opt.signal("r2", n);
-  if (config->closed_loop != (loop->r1 != nullptr && loop->r2 != nullptr)) {
+  const bool controller = config->controller.numerator.size() != 0 &&
+                          config->controller.denominator.size() != 0;
+  if (config->closed_loop != controller ||
+      config->closed_loop != (loop->r1 != nullptr && loop->r2 != nullptr)) {
     g.fail("badOption",
            "the closed loop needs the options 'controller_num', "
            "'controller_den', 'r1' and 'r2' together");
   }
-  config->scaling = opt.matrix("scaling", np, 1);
-  config->antiwindup_gamma = opt.scalar("antiwindup", config->antiwindup_gamma);
-  config->antiwindup_lambda =
-      opt.scalar("antiwindup_lambda", config->antiwindup_lambda);
-  config->covariance_guard =
-      opt.flag("covariance_guard", config->covariance_guard);
-  config->gap_interval = opt.scalar("gap_interval", config->gap_interval);
-  config->gap_settle = opt.scalar("gap_settle", config->gap_settle);
   g.check(validate(*config));
 }
 
@@ -110,16 +143,6 @@ inline void read_riv_config(const Gateway& g, OptionsReader& opt,
 inline bool read_single_precision(OptionsReader& opt) {
   return opt.choice<bool>("precision", {{"double", false}, {"single", true}},
                           false);
-}
-
-// 'fixed' (default): the fixed-size filter kernels for orders 1-4
-// (companion_kernels.hpp); 'dynamic': the dynamic-size reference, for
-// comparisons and benchmarks.
-inline FilterKernels read_filter_kernels(OptionsReader& opt) {
-  return opt.choice<FilterKernels>("kernels",
-                                   {{"fixed", FilterKernels::kFixedSize},
-                                    {"dynamic", FilterKernels::kDynamic}},
-                                   FilterKernels::kFixedSize);
 }
 
 // ---- single precision: the same core, instantiated for float -----------

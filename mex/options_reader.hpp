@@ -58,10 +58,10 @@ class OptionsReader {
     return raw(name);
   }
 
-  // A required field: absent is an error naming it.
+  // A required field: absent (or []) is an error naming it.
   const mxArray* required(const std::string& name) {
     const mxArray* a = field(name);
-    if (a == nullptr) g_.fail("badOption", what(name) + " is missing");
+    if (absent(a)) g_.fail("badOption", what(name) + " is missing");
     return a;
   }
 
@@ -116,7 +116,7 @@ class OptionsReader {
   }
   std::string text(const std::string& name, std::string fallback) {
     const mxArray* a = field(name);
-    return a == nullptr ? std::move(fallback) : g_.text(a, what(name));
+    return absent(a) ? std::move(fallback) : g_.text(a, what(name));
   }
 
   // A finite real double matrix (rows/cols < 0: any). Absent or [] gives an
@@ -153,7 +153,7 @@ class OptionsReader {
            std::initializer_list<std::pair<const char*, T>> choices,
            T fallback) {
     const mxArray* a = field(name);
-    if (a == nullptr) return fallback;
+    if (absent(a)) return fallback;
     const std::string s = g_.text(a, what(name));
     std::string allowed;
     for (const auto& c : choices) {

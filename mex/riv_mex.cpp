@@ -7,10 +7,10 @@
 //   [thm, yh, pset, info] = riv_mex (fname, y, u, t, options)
 //
 // y N-by-1, u N-by-nu, t the sampling interval or the N instants; the
-// fields of options are listed in estimator_args.hpp, plus precision
-// 'double' | 'single' and kernels 'fixed' | 'dynamic' (the fixed-size
-// filter kernels for orders 1-4, the default, or the dynamic-size
-// reference). INFO has the number of estimates refused by the stability
+// fields of options are those of the core's recursive_iv_options() table
+// (estimator_args.hpp) plus precision 'double' | 'single' and the
+// closed-loop signals r1, r2; `riv_mex (fname, "options")` returns the
+// table. INFO has the number of estimates refused by the stability
 // test, kappa_2(P), prediction errors and innovation scales per sample, and
 // with conditional updating kappa_2 of the parallel RLSSVF-FF,
 // whether each sample updated the estimates, and the number of resets.
@@ -64,6 +64,10 @@ struct RivRun {
 
 void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] = ctid::mex::option_table_struct(ctid::recursive_iv_options<double>());
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments (fname, y, u, t, "
@@ -77,7 +81,6 @@ void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::RecursiveIvConfig<double> config;
   ctid::ClosedLoopSignals<double> loop;
   ctid::mex::read_riv_config(g, opt, record, &config, &loop);
-  config.svf.kernels = ctid::mex::read_filter_kernels(opt);
   const bool single = ctid::mex::read_single_precision(opt);
   opt.finish();
 

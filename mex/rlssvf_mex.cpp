@@ -6,11 +6,10 @@
 //   [thm, yh, pset, info] = rlssvf_mex (fname, y, u, t, options)
 //
 // y N-by-1, u N-by-nu, t the sampling interval or the N instants; the
-// fields of options are listed in estimator_args.hpp (orders, SVF,
-// adaptation, th0, P0, update form, Gamma, scaling, ic, tsls) plus
-// precision 'double' | 'single' (the core instantiated for float on a float
-// copy of the data) and kernels 'fixed' | 'dynamic' (the fixed-size filter
-// kernels for orders 1-4, the default, or the dynamic-size reference). YH, PSET
+// fields of options are those of the core's rlssvf_options() table
+// (estimator_args.hpp) plus precision 'double' | 'single' (the core
+// instantiated for float on a float copy of the data);
+// `rlssvf_mex ("rlssvf", "options")` returns the table. YH, PSET
 // and INFO (kappa_2(P), the initial-condition coefficients, prediction errors
 // and innovation scales per sample) are computed only when requested.
 #include "estimator_args.hpp"
@@ -21,6 +20,10 @@ using ctid::mex::Gateway;
 
 void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                     const mxArray* prhs[]) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] = ctid::mex::option_table_struct(ctid::rlssvf_options<double>());
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments (fname, y, u, t, "
@@ -33,7 +36,6 @@ void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::RlsSvfConfig<double> config;
   ctid::mex::read_rlssvf_config(g, opt, &config);
-  config.svf.kernels = ctid::mex::read_filter_kernels(opt);
   const bool single = ctid::mex::read_single_precision(opt);
   opt.finish();
   g.check(ctid::validate_record(record, config.orders));

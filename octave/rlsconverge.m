@@ -122,8 +122,9 @@ endfunction
 function [tsiv, info, thm, yh, varargout] = rlsconverge_body (varargin)
   contsid_nargchk ("rlsconverge", nargin, nargout, [0 Inf], 4);
   fname = "rlsconverge";
-  rdef = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
-                 "P0", [], "svf", "normalised");
+  ## [] leaves an option to the core's default (recursive_options.hpp).
+  rdef = struct ("lambda_svf", [], "adm", [], "adg", [], "th0", [],
+                 "P0", [], "svf", []);
   ddef = struct ("blocklength", [], "nblocks", 10, "alpha", 0.05,
                  "tol_theta", 0.05, "eyfloor", 1e-3, "ptol", 1e-2,
                  "criteria", "all");

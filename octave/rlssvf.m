@@ -485,12 +485,12 @@ endfunction
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", iddata (zeros (50, 1), ones (50, 1), 0.1))
 %!error id=rlssvf:dimensionMismatch rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", iddata (ones (50, 1), ones (50, 2), 0.1))
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "scaling", {1})
-%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "ic", "on")
+%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "ic", "on")
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", -1)
 %!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "tsls", [1 2])
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "precision", "half")
 %!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "covariance_guard", "yes")
-%!error id=rlssvf:badOption rlssvf (data, [2 1 0], "lambda_svf", 2, "GapSettle", -1)
+%!error id=rlssvf:badInput rlssvf (data, [2 1 0], "lambda_svf", 2, "GapSettle", -1)
 %!error id=rlssvf:numericalFailure
 %! [a, b] = rlssvf (sin ((1:200)'), sign (sin ((1:200)' * 0.37)), 0.1, ...
 %!                  [2 1 0], 1e9);

@@ -28,7 +28,18 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
   T = t(end);
   Tb = opts.blocklength;
   if (isempty (Tb))
-    Tb = 2 * 2 * pi / rls.lambda_svf;     # two periods of the SVF cut-off
+    ## The default window needs the cut-off before rlssvf (which checks
+    ## it) runs.
+    lam = rls.lambda_svf;
+    if (isempty (lam))
+      error ([fname ":badOption"], ...
+             "%s: lambda_svf (the SVF cut-off, rad/s) is required", fname);
+    elseif (! (isnumeric (lam) && isreal (lam) && isscalar (lam)
+               && isfinite (lam) && lam > 0))
+      error ([fname ":badInput"], ...
+             "%s: lambda_svf must be a finite real scalar > 0", fname);
+    endif
+    Tb = 2 * 2 * pi / lam;               # two periods of the SVF cut-off
   endif
   positive (fname, Tb, "blocklength");
   if (d.uniform && Tb < 2 * d.Ts * (1 - 1e-12))

@@ -23,14 +23,14 @@ function p = contsid_riv_args (fname, routine, varargin)
     method = "rivsvf";
     form = "a";
   endif
-  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
-                     "P0", [], "svf", "normalised", "tsiv", [],
-                     "dtupdate", [], "stability", "keep", "mtheta", [],
-                     "prefilter", "unit", "A", [], "controller", [],
-                     "r1", [], "r2", [], "scaling", [], "antiwindup", 0,
-                     "antiwindup_lambda", 0.998, "precision", "double",
-                     "covariance_guard", true, "GapSettle", [],
-                     "InterSample", "");
+  ## [] leaves an option to the core's default (recursive_options.hpp).
+  defaults = struct ("lambda_svf", [], "adm", [], "adg", [], "th0", [],
+                     "P0", [], "svf", [], "tsiv", [], "dtupdate", [],
+                     "stability", [], "mtheta", [], "prefilter", [], "A", [],
+                     "controller", [], "r1", [], "r2", [], "scaling", [],
+                     "antiwindup", [], "antiwindup_lambda", [],
+                     "precision", [], "covariance_guard", [],
+                     "GapSettle", [], "InterSample", "");
   [d, orders, opts] = contsid_recursive_args (fname, form, defaults,
                                               varargin{:});
   ## The filters' rule for the input: the data's InterSample, or the
@@ -53,7 +53,7 @@ function p = contsid_riv_args (fname, routine, varargin)
     opts.lambda_svf = A(end) ^ (1 / na);
   endif
   o = contsid_recursive_options (fname, opts, np, d);
-  if (strcmp (o.adm, "lmr"))
+  if (ischar (o.adm) && strcmp (o.adm, "lmr"))
     error ([fname ":badOption"], ...
            "%s: adm 'lmr' (LMR-RLSSVF) belongs to rlssvf", fname);
   endif
@@ -62,16 +62,19 @@ function p = contsid_riv_args (fname, routine, varargin)
     opts.scaling = opts.scaling(iperm);  # given in THM order
   endif
   o = contsid_ch3_options (fname, opts, orders, d, o);
+  ## Qn, th0 and P0 are given in THM order: reordered when their size
+  ## allows (the core checks the sizes).
   adg = o.adg;
-  if (strcmp (o.adm, "kf"))
+  if (ischar (o.adm) && strcmp (o.adm, "kf") && isnumeric (adg)
+      && isequal (size (adg), [np np]))
     adg = adg(iperm, iperm);
   endif
   th0 = o.th0;
-  if (! isempty (th0))
+  if (isnumeric (th0) && numel (th0) == np)
     th0 = th0(iperm);
   endif
   P0 = o.P0;
-  if (! isempty (P0))
+  if (isnumeric (P0) && isequal (size (P0), [np np]))
     P0 = P0(iperm, iperm);
   endif
 
@@ -107,27 +110,15 @@ function p = contsid_riv_args (fname, routine, varargin)
            "%s: tsiv = %g s lies outside the record [0, %g] s", fname, tsiv,
            duration);
   endif
+  ## dtupdate below the sampling interval would name a refresh the data
+  ## cannot give (the core checks it is finite and >= 0).
   dtupdate = opts.dtupdate;
-  if (isempty (dtupdate))
-    dtupdate = 0;                        # every sample
-  else
-    check_scalar (fname, dtupdate, "dtupdate");
-    if (d.uniform && dtupdate < d.Ts * (1 - 1e-9))
-      error ([fname ":badInput"], ...
-             ["%s: dtupdate (%g s) must not be below the sampling ", ...
-              "interval (%g s)"],
-             fname, dtupdate, d.Ts);
-    endif
-  endif
-  if (! ischar (opts.stability)
-      || ! any (strcmpi (opts.stability, {"keep", "reflect"})))
-    error ([fname ":badOption"], "%s: stability must be 'keep' or 'reflect'",
-           fname);
-  endif
-  if (! ischar (opts.prefilter)
-      || ! any (strcmpi (opts.prefilter, {"unit", "monic"})))
-    error ([fname ":badOption"], "%s: prefilter must be 'unit' or 'monic'",
-           fname);
+  if (d.uniform && isnumeric (dtupdate) && isscalar (dtupdate)
+      && dtupdate > 0 && dtupdate < d.Ts * (1 - 1e-9))
+    error ([fname ":badInput"], ...
+           ["%s: dtupdate (%g s) must not be below the sampling ", ...
+            "interval (%g s)"],
+           fname, dtupdate, d.Ts);
   endif
   [m_num, m_den] = check_mtheta (fname, opts.mtheta);
 
@@ -179,10 +170,10 @@ function p = contsid_riv_args (fname, routine, varargin)
   g.method = method;
   g.tsiv = tsiv;
   g.dtupdate = dtupdate;
-  g.stability = lower (opts.stability);
+  g.stability = lower_word (opts.stability);
   g.mtheta_num = m_num;
   g.mtheta_den = m_den;
-  g.prefilter = lower (opts.prefilter);
+  g.prefilter = lower_word (opts.prefilter);
   g.A = A;
   if (closed)
     g.controller_num = c_num;
@@ -220,6 +211,12 @@ function A = check_A (fname, A, na, allowed)
   endif
   if (any (real (roots ([1 A])) >= 0))
     error ([fname ":badInput"], "%s: A must be a stable polynomial", fname);
+  endif
+endfunction
+
+function w = lower_word (w)
+  if (ischar (w))
+    w = lower (w);
   endif
 endfunction
 
@@ -291,9 +288,8 @@ endfunction
 ## for GapSettle seconds after each (default 20 / lambda_svf).
 function [interval, settle] = gap_options (d, o)
   interval = 0;
-  settle = 0;
+  settle = o.GapSettle;                  # [] unless given or gaps bridged
   if (isfield (d, "gap_interval"))
     interval = d.gap_interval;
-    settle = o.GapSettle;
   endif
 endfunction

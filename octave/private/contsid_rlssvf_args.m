@@ -11,10 +11,11 @@
 ## @end deftypefn
 
 function p = contsid_rlssvf_args (fname, varargin)
-  defaults = struct ("lambda_svf", [], "adm", "ff", "adg", [], "th0", [],
-                     "P0", [], "svf", "normalised", "potter", false,
-                     "Gamma", [], "scaling", [], "ic", false, "tsls", 0,
-                     "precision", "double", "covariance_guard", true, "GapSettle", [],
+  ## [] leaves an option to the core's default (recursive_options.hpp).
+  defaults = struct ("lambda_svf", [], "adm", [], "adg", [], "th0", [],
+                     "P0", [], "svf", [], "potter", false, "Gamma", [],
+                     "scaling", [], "ic", [], "tsls", [], "precision", [],
+                     "covariance_guard", [], "GapSettle", [],
                      "InterSample", "");
   [d, orders, opts] = contsid_recursive_args (fname, "a", defaults,
                                              varargin{:});
@@ -31,7 +32,7 @@ function p = contsid_rlssvf_args (fname, varargin)
     t = d.t;
   endif
   adm = o.adm;
-  if (strcmp (adm, "lmr"))
+  if (ischar (adm) && strcmp (adm, "lmr"))
     adm = "ff";                          # the forgetting factor of eq. 3.82
   endif
   p = struct ("d", d, "orders", orders);
@@ -50,7 +51,7 @@ function p = contsid_rlssvf_args (fname, varargin)
   g.form = o.form;
   g.Gamma = o.Gamma;
   g.scaling = o.scaling;
-  g.ic = logical (o.ic);
+  g.ic = o.ic;
   g.tsls = o.tsls;
   g.precision = o.precision;
   g.covariance_guard = o.covariance_guard;
@@ -62,24 +63,25 @@ endfunction
 ## np-size options are extended (c_i: start 0, P0 1e4, Qn 0, no
 ## regularisation, no scaling).
 function o = extend_for_initial_conditions (o, orders)
-  if (! o.ic)
+  if (! (isscalar (o.ic) && (islogical (o.ic) || isnumeric (o.ic)) && o.ic))
     return;
   endif
   na = orders.na;
-  if (strcmp (o.adm, "kf"))
+  if (ischar (o.adm) && strcmp (o.adm, "kf") && ! isempty (o.adg)
+      && isnumeric (o.adg))
     o.adg = blkdiag (o.adg, zeros (na));
   endif
-  if (! isempty (o.th0))
-    o.th0 = [o.th0; zeros(na, 1)];
+  if (! isempty (o.th0) && isnumeric (o.th0))
+    o.th0 = [o.th0(:); zeros(na, 1)];
   endif
-  if (! isempty (o.P0))
+  if (! isempty (o.P0) && isnumeric (o.P0))
     o.P0 = blkdiag (o.P0, 1e4 * eye (na));
   endif
-  if (! isempty (o.Gamma))
+  if (! isempty (o.Gamma) && isnumeric (o.Gamma))
     o.Gamma = blkdiag (o.Gamma, zeros (na));
   endif
-  if (! isempty (o.scaling))
-    o.scaling = [o.scaling; ones(na, 1)];
+  if (! isempty (o.scaling) && isnumeric (o.scaling))
+    o.scaling = [o.scaling(:); ones(na, 1)];
   endif
 endfunction
 
@@ -88,9 +90,8 @@ endfunction
 ## for GapSettle seconds after each (default 20 / lambda_svf).
 function [interval, settle] = gap_options (d, o)
   interval = 0;
-  settle = 0;
+  settle = o.GapSettle;                  # [] unless given or gaps bridged
   if (isfield (d, "gap_interval"))
     interval = d.gap_interval;
-    settle = o.GapSettle;
   endif
 endfunction

@@ -123,10 +123,14 @@ Status validate_update_form(UpdateForm form, const Adaptation<S>& adaptation,
           "LMR-RLSSVF (eq. 3.82) takes a forgetting factor (adm 'ff'), "
           "not a Kalman filter");
     }
+    if (gamma.size() == 0) {
+      return Status(ErrorCode::kBadOption,
+                    "LMR-RLSSVF (eq. 3.82) needs Gamma");
+    }
     status = validate_covariance<S>(gamma, n, "Gamma", false);
     if (!status.ok()) return status;
   } else if (gamma.size() != 0) {
-    return bad_input("Gamma belongs to LMR-RLSSVF only");
+    return Status(ErrorCode::kBadOption, "Gamma belongs to LMR-RLSSVF only");
   }
   return validate_scaling(scaling, n);
 }

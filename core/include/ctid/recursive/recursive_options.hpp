@@ -1,0 +1,617 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
+// The named options of the recursive estimators, declared once, beside
+// their config structs (RlsSvfConfig, RecursiveIvConfig): each option's
+// name, type, accepted range, one-line help and how a value sets the
+// config. Its default is the config struct's own member initialiser,
+// printed from a default-constructed config, so it is written in one
+// place. Hosts read options through these tables (the MEX gateways
+// rlssvf_mex and riv_mex do; a C++ program may too, with
+// set_option()), and validate(config) is the one range check on every
+// path. The tables are also what the toolbox's help texts are checked
+// against.
+//
+//   RecursiveIvConfig<double> config;
+//   OptionValue v;
+//   v.real = 3;
+//   Status s = set_option(recursive_iv_options<double>(), "lambda_svf", v,
+//                         &config);
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ctid/recursive/recursive_iv.hpp"
+#include "ctid/recursive/rlssvf.hpp"
+
+namespace ctid {
+
+enum class OptionType {
+  kReal,           // a finite real scalar
+  kInteger,        // an integer scalar
+  kIntegerVector,  // integers, one per input
+  kFlag,           // true or false
+  kChoice,         // one word of a fixed list
+  kMatrix,         // a real matrix (its size is checked by validate())
+};
+
+inline const char* option_type_name(OptionType type) {
+  switch (type) {
+    case OptionType::kReal:
+      return "real scalar";
+    case OptionType::kInteger:
+      return "integer";
+    case OptionType::kIntegerVector:
+      return "integer vector";
+    case OptionType::kFlag:
+      return "logical";
+    case OptionType::kChoice:
+      return "choice";
+    case OptionType::kMatrix:
+      return "real matrix";
+  }
+  return "";
+}
+
+// One option's value as a host read it: the member of its type.
+struct OptionValue {
+  double real = 0;
+  int integer = 0;
+  std::vector<int> integers;
+  bool flag = false;
+  std::string word;
+  Matrix<double> matrix;
+};
+
+template <typename Config>
+struct OptionDecl {
+  const char* name;
+  OptionType type;
+  bool required;
+  std::vector<const char*> choices;  // kChoice: the accepted words
+  const char* range;                 // what validate() accepts, in words
+  const char* help;                  // one line
+  // The option's value in a config, as text (its default for a default
+  // config).
+  std::function<std::string(const Config&)> show;
+  // Sets the config from a value of the declared type (a kChoice value is
+  // one of `choices`; the host checks that).
+  std::function<Status(Config*, const OptionValue&)> set;
+};
+
+template <typename Config>
+using OptionTable = std::vector<OptionDecl<Config>>;
+
+namespace options_detail {
+
+inline std::string number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+inline std::string integers(const std::vector<int>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    s += (i ? " " : "") + std::to_string(v[i]);
+  }
+  return s + "]";
+}
+
+template <typename S>
+std::string matrix_text(const Matrix<S>& m, const char* empty) {
+  if (m.size() == 0) return empty;
+  return std::to_string(m.rows()) + "x" + std::to_string(m.cols());
+}
+
+template <typename S>
+Vector<S> to_vector(const Matrix<double>& m) {
+  return Eigen::Map<const Vector<double>>(m.data(), m.size()).cast<S>();
+}
+
+inline const char* intersample_word(InterSample rule) {
+  switch (rule) {
+    case InterSample::kZoh:
+      return "zoh";
+    case InterSample::kFoh:
+      return "foh";
+    case InterSample::kTrapezoid:
+      return "trapezoid";
+  }
+  return "";
+}
+
+inline InterSample intersample_of(const std::string& word) {
+  if (word == "foh") return InterSample::kFoh;
+  if (word == "trapezoid") return InterSample::kTrapezoid;
+  return InterSample::kZoh;
+}
+
+// The parameters a config estimates (the size of Qn, th0, P0, M_s).
+template <typename S>
+Eigen::Index estimated_count(const RlsSvfConfig<S>& c) {
+  return num_estimated(c);
+}
+template <typename S>
+Eigen::Index estimated_count(const RecursiveIvConfig<S>& c) {
+  return c.orders.num_parameters();
+}
+
+// The options every recursive estimator shares, for Config = RlsSvfConfig
+// or RecursiveIvConfig (same member names), in two parts: the model
+// structure and its filter, then the adaptation and the start. Table
+// order is the order a host applies them in: the orders (and an
+// estimator's own structural options) before anything sized by them, adm
+// before adg.
+template <typename S, typename Config>
+void add_structure_options(OptionTable<Config>* table) {
+  using V = const OptionValue&;
+  table->push_back(
+      {"intersample", OptionType::kChoice, false, {"zoh", "foh", "trapezoid"},
+       "'zoh' | 'foh' | 'trapezoid'",
+       "how the input varies between samples: the input filters' "
+       "discretisation",
+       [](const Config& c) {
+         return std::string(intersample_word(c.svf.u_intersample));
+       },
+       [](Config* c, V v) {
+         c->svf.u_intersample = intersample_of(v.word);
+         return Status::Ok();
+       }});
+  table->push_back({"na", OptionType::kInteger, true, {}, ">= 1",
+                    "denominator order", [](const Config& c) {
+                      return std::to_string(c.orders.na);
+                    },
+                    [](Config* c, V v) {
+                      c->orders.na = v.integer;
+                      return Status::Ok();
+                    }});
+  table->push_back({"nb", OptionType::kIntegerVector, true, {},
+                    ">= 0 each, at most na + 1",
+                    "numerator parameters, one per input",
+                    [](const Config& c) { return integers(c.orders.nb); },
+                    [](Config* c, V v) {
+                      c->orders.nb = v.integers;
+                      return Status::Ok();
+                    }});
+  table->push_back({"nk", OptionType::kIntegerVector, true, {}, ">= 0 each",
+                    "input delay in samples, one per input",
+                    [](const Config& c) { return integers(c.orders.nk); },
+                    [](Config* c, V v) {
+                      c->orders.nk = v.integers;
+                      return validate_orders(c->orders);
+                    }});
+  table->push_back(
+      {"lambda_svf", OptionType::kReal, true, {}, "> 0, finite",
+       "cut-off (rad/s) of the state-variable filter",
+       [](const Config& c) { return number(c.svf.lambda_svf); },
+       [](Config* c, V v) {
+         c->svf.lambda_svf = static_cast<S>(v.real);
+         return Status::Ok();
+       }});
+  table->push_back(
+      {"svf", OptionType::kChoice, false,
+       {"normalised", "normalized", "ordinary"},
+       "'normalised' | 'ordinary'",
+       "the SVF (lambda/(p + lambda))^na (eq. 3.1) or 1/(p + lambda)^na",
+       [](const Config& c) {
+         return std::string(c.svf.normalised ? "normalised" : "ordinary");
+       },
+       [](Config* c, V v) {
+         c->svf.normalised = v.word != "ordinary";
+         return Status::Ok();
+       }});
+  table->push_back(
+      {"kernels", OptionType::kChoice, false, {"fixed", "dynamic"},
+       "'fixed' | 'dynamic'",
+       "fixed-size filter kernels for orders 1-4, or the dynamic-size "
+       "reference",
+       [](const Config& c) {
+         return std::string(c.svf.kernels == FilterKernels::kFixedSize
+                                ? "fixed"
+                                : "dynamic");
+       },
+       [](Config* c, V v) {
+         c->svf.kernels = v.word == "dynamic" ? FilterKernels::kDynamic
+                                              : FilterKernels::kFixedSize;
+         return Status::Ok();
+       }});
+}
+
+template <typename S, typename Config>
+void add_estimate_options(OptionTable<Config>* table) {
+  using V = const OptionValue&;
+  table->push_back(
+      {"adm", OptionType::kChoice, false, {"ff", "kf"}, "'ff' | 'kf'",
+       "adaptation: forgetting factor (eq. 1.57) or Kalman filter (eq. 1.59; "
+       "Qn = 0 unless adg is given)",
+       [](const Config& c) {
+         return std::string(
+             std::holds_alternative<ForgettingFactorAdaptation<S>>(
+                 c.adaptation)
+                 ? "ff"
+                 : "kf");
+       },
+       [](Config* c, V v) {
+         if (v.word == "kf") {
+           // Qn = 0 until adg says otherwise: no drift of the parameters.
+           const Eigen::Index n = estimated_count(*c);
+           c->adaptation = KalmanAdaptation<S>(Matrix<S>::Zero(n, n));
+         } else {
+           c->adaptation = ForgettingFactorAdaptation<S>();
+         }
+         return Status::Ok();
+       }});
+  table->push_back(
+      {"adg", OptionType::kMatrix, false, {},
+       "ff: a scalar in (0, 1]; kf: np-by-np, symmetric, positive "
+       "semi-definite",
+       "the forgetting factor (adm 'ff') or Qn (adm 'kf')",
+       [](const Config& c) {
+         if (const auto* ff =
+                 std::get_if<ForgettingFactorAdaptation<S>>(&c.adaptation)) {
+           return number(ff->lambda());
+         }
+         return matrix_text(
+             std::get<KalmanAdaptation<S>>(c.adaptation).qn(), "[]");
+       },
+       [](Config* c, V v) -> Status {
+         if (std::holds_alternative<ForgettingFactorAdaptation<S>>(
+                 c->adaptation)) {
+           if (v.matrix.size() != 1) {
+             return bad_input(
+                 "adg with adm 'ff' must be a scalar (the forgetting "
+                 "factor)");
+           }
+           c->adaptation =
+               ForgettingFactorAdaptation<S>(static_cast<S>(v.matrix(0, 0)));
+         } else {
+           // Checked here, not by validate(): KalmanAdaptation keeps the
+           // symmetric part of what it is given.
+           const Matrix<double>& q = v.matrix;
+           if (q.rows() != q.cols()) {
+             return bad_input("adg (Qn) must be square");
+           }
+           if ((q - q.transpose()).cwiseAbs().maxCoeff() >
+               1000 * std::numeric_limits<double>::epsilon() *
+                   q.cwiseAbs().maxCoeff()) {
+             return bad_input("adg (Qn) must be symmetric");
+           }
+           c->adaptation = KalmanAdaptation<S>(q.cast<S>());
+         }
+         return Status::Ok();
+       }});
+  table->push_back({"th0", OptionType::kMatrix, false, {}, "np-by-1, finite",
+                    "initial estimate (default zeros)",
+                    [](const Config& c) {
+                      return matrix_text(Matrix<S>(c.theta0), "0");
+                    },
+                    [](Config* c, V v) -> Status {
+                      if (v.matrix.cols() > 1 && v.matrix.rows() > 1) {
+                        return dimension_mismatch("th0 must be a vector");
+                      }
+                      c->theta0 = to_vector<S>(v.matrix);
+                      return Status::Ok();
+                    }});
+  table->push_back({"P0", OptionType::kMatrix, false, {},
+                    "np-by-np, symmetric, positive definite",
+                    "initial covariance (default 1e4 I)",
+                    [](const Config& c) { return matrix_text(c.P0, "1e4 I"); },
+                    [](Config* c, V v) {
+                      c->P0 = v.matrix.cast<S>();
+                      return Status::Ok();
+                    }});
+  table->push_back(
+      {"scaling", OptionType::kMatrix, false, {}, "np-by-1, > 0",
+       "diagonal of the scaling matrix M_s (eq. 3.74); [] for none",
+       [](const Config& c) {
+         return matrix_text(Matrix<S>(c.scaling), "none");
+       },
+       [](Config* c, V v) -> Status {
+         if (v.matrix.cols() > 1 && v.matrix.rows() > 1) {
+           return dimension_mismatch("scaling must be a vector");
+         }
+         c->scaling = to_vector<S>(v.matrix);
+         return Status::Ok();
+       }});
+  table->push_back(
+      {"covariance_guard", OptionType::kFlag, false, {}, "true | false",
+       "keep P symmetric positive definite (covariance_guard.hpp)",
+       [](const Config& c) {
+         return std::string(c.covariance_guard ? "true" : "false");
+       },
+       [](Config* c, V v) {
+         c->covariance_guard = v.flag;
+         return Status::Ok();
+       }});
+  table->push_back(
+      {"gap_interval", OptionType::kReal, false, {}, ">= 0, finite",
+       "a sampling interval above this (s) is a gap of missing samples (0: "
+       "none)",
+       [](const Config& c) { return number(c.gap_interval); },
+       [](Config* c, V v) {
+         c->gap_interval = static_cast<S>(v.real);
+         return Status::Ok();
+       }});
+  table->push_back(
+      {"gap_settle", OptionType::kReal, false, {}, ">= 0, finite",
+       "no update for this long (s) after a gap",
+       [](const Config& c) { return number(c.gap_settle); },
+       [](Config* c, V v) {
+         c->gap_settle = static_cast<S>(v.real);
+         return Status::Ok();
+       }});
+}
+
+// A discrete transfer function's numerator or denominator (q^-1), given
+// as a vector.
+template <typename S>
+Status set_polynomial(const OptionValue& v, const char* what,
+                      Vector<S>* target) {
+  if (v.matrix.rows() > 1 && v.matrix.cols() > 1) {
+    return bad_input(std::string(what) + " must be a vector");
+  }
+  *target = to_vector<S>(v.matrix);
+  return Status::Ok();
+}
+
+}  // namespace options_detail
+
+// The options of RLSSVF (rlssvf.hpp).
+template <typename S>
+const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
+  using Config = RlsSvfConfig<S>;
+  using V = const OptionValue&;
+  static const OptionTable<Config> table = [] {
+    OptionTable<Config> t;
+    options_detail::add_structure_options<S>(&t);
+    t.push_back(
+        {"form", OptionType::kChoice, false, {"standard", "potter", "lmr"},
+         "'standard' | 'potter' | 'lmr'",
+         "the update: P (eqs. 1.57/1.59), Potter's square root (eq. 3.73) "
+         "or LMR (eq. 3.82)",
+         [](const Config& c) {
+           return std::string(c.form == UpdateForm::kPotter ? "potter"
+                              : c.form == UpdateForm::kLevenbergMarquardt
+                                  ? "lmr"
+                                  : "standard");
+         },
+         [](Config* c, V v) {
+           c->form = v.word == "potter" ? UpdateForm::kPotter
+                     : v.word == "lmr"  ? UpdateForm::kLevenbergMarquardt
+                                        : UpdateForm::kStandard;
+           return Status::Ok();
+         }});
+    t.push_back({"ic", OptionType::kFlag, false, {}, "true | false",
+                 "estimate the initial conditions c_1 .. c_na too",
+                 [](const Config& c) {
+                   return std::string(c.initial_conditions ? "true" : "false");
+                 },
+                 [](Config* c, V v) {
+                   c->initial_conditions = v.flag;
+                   return Status::Ok();
+                 }});
+    options_detail::add_estimate_options<S>(&t);
+    t.push_back({"Gamma", OptionType::kMatrix, false, {},
+                 "np-by-np, symmetric, positive semi-definite",
+                 "the regularisation Gamma of LMR (eq. 3.82)",
+                 [](const Config& c) {
+                   return options_detail::matrix_text(c.lmr_gamma, "[]");
+                 },
+                 [](Config* c, V v) {
+                   c->lmr_gamma = v.matrix.cast<S>();
+                   return Status::Ok();
+                 }});
+    t.push_back({"tsls", OptionType::kReal, false, {}, ">= 0, finite",
+                 "first update at the first sample with t - t_1 >= tsls (s)",
+                 [](const Config& c) { return options_detail::number(c.t_s_ls); },
+                 [](Config* c, V v) {
+                   c->t_s_ls = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
+    return t;
+  }();
+  return table;
+}
+
+// The options of the recursive IV estimators RIVSVF and RSRIVC, open and
+// closed loop (recursive_iv.hpp).
+template <typename S>
+const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
+  using Config = RecursiveIvConfig<S>;
+  using V = const OptionValue&;
+  static const OptionTable<Config> table = [] {
+    OptionTable<Config> t;
+    options_detail::add_structure_options<S>(&t);
+    options_detail::add_estimate_options<S>(&t);
+    t.push_back(
+        {"method", OptionType::kChoice, false, {"rivsvf", "rsrivc"},
+         "'rivsvf' | 'rsrivc'",
+         "the SVF as prefilter (sec. 2.2.3) or the adaptive prefilter "
+         "(sec. 2.3.3)",
+         [](const Config& c) {
+           return std::string(c.method == IvMethod::kRivsvf ? "rivsvf"
+                                                            : "rsrivc");
+         },
+         [](Config* c, V v) {
+           c->method =
+               v.word == "rivsvf" ? IvMethod::kRivsvf : IvMethod::kRsrivc;
+           return Status::Ok();
+         }});
+    t.push_back({"tsiv", OptionType::kReal, false, {}, ">= 0, finite",
+                 "RLSSVF until tsiv (s), the IV update after it (the "
+                 "front-ends default to a tenth of the record, as CONTSID)",
+                 [](const Config& c) { return options_detail::number(c.t_s_iv); },
+                 [](Config* c, V v) {
+                   c->t_s_iv = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
+    t.push_back(
+        {"dtupdate", OptionType::kReal, false, {}, ">= 0, finite",
+         "refresh period (s) of the auxiliary model and the prefilter (0: "
+         "every sample)",
+         [](const Config& c) { return options_detail::number(c.dtupdate); },
+         [](Config* c, V v) {
+           c->dtupdate = static_cast<S>(v.real);
+           return Status::Ok();
+         }});
+    t.push_back(
+        {"stability", OptionType::kChoice, false, {"keep", "reflect"},
+         "'keep' | 'reflect'",
+         "an unstable estimate keeps the last stable one or is reflected "
+         "(eq. 3.10)",
+         [](const Config& c) {
+           return std::string(c.stability == StabilityPolicy::kReflect
+                                  ? "reflect"
+                                  : "keep");
+         },
+         [](Config* c, V v) {
+           c->stability = v.word == "reflect" ? StabilityPolicy::kReflect
+                                              : StabilityPolicy::kKeepLast;
+           return Status::Ok();
+         }});
+    t.push_back({"mtheta_num", OptionType::kMatrix, false, {},
+                 "a vector, with mtheta_den; unit static gain",
+                 "numerator of the smoothing filter M_theta(q^-1) (default "
+                 "q^-1)",
+                 [](const Config& c) {
+                   return options_detail::matrix_text(
+                       Matrix<S>(c.m_theta.numerator), "q^-1");
+                 },
+                 [](Config* c, V v) {
+                   return options_detail::set_polynomial<S>(
+                       v, "mtheta_num", &c->m_theta.numerator);
+                 }});
+    t.push_back({"mtheta_den", OptionType::kMatrix, false, {},
+                 "a vector, with mtheta_num", "denominator of M_theta(q^-1)",
+                 [](const Config& c) {
+                   return options_detail::matrix_text(
+                       Matrix<S>(c.m_theta.denominator), "1");
+                 },
+                 [](Config* c, V v) {
+                   return options_detail::set_polynomial<S>(
+                       v, "mtheta_den", &c->m_theta.denominator);
+                 }});
+    t.push_back(
+        {"prefilter", OptionType::kChoice, false, {"unit", "monic"},
+         "'unit' | 'monic'",
+         "gain of the adaptive prefilter: f_na/A(p) or 1/A(p) (eq. 2.19)",
+         [](const Config& c) {
+           return std::string(
+               c.prefilter_gain == PrefilterGain::kMonic ? "monic" : "unit");
+         },
+         [](Config* c, V v) {
+           c->prefilter_gain = v.word == "monic"
+                                   ? PrefilterGain::kMonic
+                                   : PrefilterGain::kUnitStaticGain;
+           return Status::Ok();
+         }});
+    t.push_back({"A", OptionType::kMatrix, false, {},
+                 "1-by-na, a stable [a1 .. a_na]",
+                 "denominator that starts the prefilter and the auxiliary "
+                 "model (default (p + lambda_svf)^na)",
+                 [](const Config& c) {
+                   return options_detail::matrix_text(
+                       Matrix<S>(c.initial_denominator),
+                       "(p + lambda_svf)^na");
+                 },
+                 [](Config* c, V v) {
+                   return options_detail::set_polynomial<S>(
+                       v, "A", &c->initial_denominator);
+                 }});
+    t.push_back({"controller_num", OptionType::kMatrix, false, {},
+                 "a vector, with controller_den",
+                 "numerator of the controller C(q^-1), u = r1 + C (r2 - y)",
+                 [](const Config& c) {
+                   return options_detail::matrix_text(
+                       Matrix<S>(c.controller.numerator), "open loop");
+                 },
+                 [](Config* c, V v) {
+                   c->closed_loop = true;
+                   return options_detail::set_polynomial<S>(
+                       v, "controller_num", &c->controller.numerator);
+                 }});
+    t.push_back({"controller_den", OptionType::kMatrix, false, {},
+                 "a vector, with controller_num",
+                 "denominator of the controller C(q^-1)",
+                 [](const Config& c) {
+                   return options_detail::matrix_text(
+                       Matrix<S>(c.controller.denominator), "open loop");
+                 },
+                 [](Config* c, V v) {
+                   c->closed_loop = true;
+                   return options_detail::set_polynomial<S>(
+                       v, "controller_den", &c->controller.denominator);
+                 }});
+    t.push_back(
+        {"antiwindup", OptionType::kReal, false, {}, "0 (none) or > 1",
+         "conditional updating: the threshold gamma on kappa_2(P) (eq. 3.79)",
+         [](const Config& c) {
+           return options_detail::number(c.antiwindup_gamma);
+         },
+         [](Config* c, V v) {
+           c->antiwindup_gamma = static_cast<S>(v.real);
+           return Status::Ok();
+         }});
+    t.push_back(
+        {"antiwindup_lambda", OptionType::kReal, false, {}, "(0, 1]",
+         "forgetting factor of the parallel RLSSVF-FF of conditional "
+         "updating (Table 3.2)",
+         [](const Config& c) {
+           return options_detail::number(c.antiwindup_lambda);
+         },
+         [](Config* c, V v) {
+           c->antiwindup_lambda = static_cast<S>(v.real);
+           return Status::Ok();
+         }});
+    return t;
+  }();
+  return table;
+}
+
+template <typename Config>
+const OptionDecl<Config>* find_option(const OptionTable<Config>& table,
+                                      const std::string& name) {
+  for (const auto& decl : table) {
+    if (name == decl.name) return &decl;
+  }
+  return nullptr;
+}
+
+// The option's default: its value in a default-constructed config.
+template <typename Config>
+std::string option_default(const OptionDecl<Config>& decl) {
+  return decl.show(Config{});
+}
+
+// Sets one option by name; an unknown name or a word outside the choices
+// is a bad option. The ranges are checked by validate(config) once every
+// option is set.
+template <typename Config>
+Status set_option(const OptionTable<Config>& table, const std::string& name,
+                  const OptionValue& value, Config* config) {
+  const OptionDecl<Config>* decl = find_option(table, name);
+  if (decl == nullptr) {
+    return Status(ErrorCode::kBadOption, "unknown option '" + name + "'");
+  }
+  if (decl->type == OptionType::kChoice) {
+    bool known = false;
+    std::string allowed;
+    for (const char* word : decl->choices) {
+      known = known || value.word == word;
+      allowed += (allowed.empty() ? "'" : ", '") + std::string(word) + "'";
+    }
+    if (!known) {
+      return Status(ErrorCode::kBadOption,
+                    "option '" + name + "' must be one of " + allowed +
+                        ", got '" + value.word + "'");
+    }
+  }
+  return decl->set(config, value);
+}
+
+}  // namespace ctid

@@ -1,0 +1,159 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
+## -*- texinfo -*-
+## @deftypefn {} {} test_options_declared_once ()
+## The options of the recursive estimators are declared once, in the core
+## (@file{core/include/ctid/recursive/recursive_options.hpp}), and the
+## gateways return that table (@code{riv_mex (fname, "options")},
+## @code{rlssvf_mex ("rlssvf", "options")}). Checked here:
+## @itemize
+## @item every option a user sets is documented in the help text of its
+## front-ends, and where the help states a default, it is the table's;
+## @item a front-end leaves an option it is not given to the core: giving
+## it the table's default explicitly changes nothing, option by option;
+## @item an option the table does not declare is refused by the gateway.
+## @end itemize
+## @end deftypefn
+
+function test_options_declared_once ()
+  root = ctid_test_root ();
+  private_dir = fullfile (root, "octave", "private");
+  addpath (private_dir);
+  cleanup = onCleanup (@() rmpath (private_dir));
+
+  ## Options the front-ends set from something else than an option of the
+  ## same name: the orders (nn), the data's InterSample, the routine
+  ## (method), the gaps of the bridged record, the polynomial pairs.
+  derived = {"na", "nb", "nk", "intersample", "method", "gap_interval", ...
+             "gap_settle", "mtheta_den", "controller_den", "kernels"};
+  user_name = struct ("mtheta_num", "mtheta", "controller_num", "controller",
+                      "form", "potter");
+
+  families = cell (2, 3);
+  families(1, :) = {"riv_mex", "rsrivc", ...
+                    {"rlssvf", "rivsvf", "rsrivc", "clrivsvf", "clrsrivc"}};
+  families(2, :) = {"rlssvf_mex", "rlssvf", {"rlssvf"}};
+  for f = 1:rows (families)
+    [gw, fname, fronts] = families{f, :};
+    T = feval (gw, fname, "options");
+    assert (isstruct (T) && numel (T) > 10);
+    help_text = "";
+    for k = 1:numel (fronts)
+      help_text = [help_text, "\n", get_help_text(fronts{k})];
+    endfor
+    for k = 1:numel (T)
+      name = T(k).name;
+      assert (! isempty (T(k).help) && ! isempty (T(k).range), name);
+      if (any (strcmp (name, derived)))
+        continue;
+      endif
+      if (isfield (user_name, name))
+        name = user_name.(name);
+      endif
+      item = help_item (help_text, name);
+      if (isempty (item))
+        error ("option '%s' of %s is not documented in the help of %s",
+               name, gw, strjoin (fronts, ", "));
+      endif
+      stated = stated_default (item);
+      if (! isempty (stated) && ! strcmp (T(k).default, "(required)"))
+        assert (same_default (stated, T(k).default),
+                sprintf ("%s: the help says default %s, the core %s", name,
+                         stated, T(k).default));
+      endif
+    endfor
+    ## an option the table does not declare is refused
+    fail_id = [fname ":badOption"];
+    try
+      feval (gw, fname, 1, 1, 1, struct ("na", 1, "nb", 1, "nk", 0,
+                                         "lambda_svf", 1, "not_an_option", 1));
+      error ("the gateway accepted an unknown option");
+    catch err
+      assert (err.identifier, fail_id);
+    end_try_catch
+  endfor
+
+  ## Given explicitly at the table's default, each option changes nothing.
+  T = riv_mex ("rsrivc", "options");
+  default_of = @(n) T(strcmp ({T.name}, n)).default;
+  Ts = 0.05;
+  u = prbs (9, 8);
+  x = simc (struct ("B", 4, "F", [1 2.4 4]), u, Ts);
+  randn ("state", 2);
+  data = iddata (x + 0.05 * randn (size (x)), u, Ts, "InterSample", "zoh");
+  base = {"lambda_svf", 3, "tsiv", 10};
+  ref = rsrivc (data, [1 2 0], base{:});
+  for name = {"stability", "prefilter", "svf", "adm", "dtupdate", ...
+              "covariance_guard", "adg", "antiwindup"}
+    v = default_of (name{1});
+    num = str2double (v);
+    if (strcmp (v, "true"))
+      v = true;
+    elseif (! isnan (num))
+      v = num;
+    endif
+    thm = rsrivc (data, [1 2 0], base{:}, name{1}, v);
+    assert (isequal (thm, ref), sprintf ("%s at its default changed THM",
+                                         name{1}));
+  endfor
+  ## antiwindup_lambda acts only with conditional updating
+  w = {"antiwindup", 1e3};
+  a = rsrivc (data, [1 2 0], base{:}, w{:});
+  b = rsrivc (data, [1 2 0], base{:}, w{:}, "antiwindup_lambda",
+              str2double (default_of ("antiwindup_lambda")));
+  assert (isequal (a, b));
+  c = rsrivc (data, [1 2 0], base{:}, w{:}, "antiwindup_lambda", 0.9);
+  assert (! isequal (a, c));
+endfunction
+
+## The @item block of the help text that names option NAME (an item may
+## name several, "@item th0, P0"), up to the next @item or @end table.
+function item = help_item (text, name)
+  item = "";
+  starts = regexp (text, '@item\s', "start");
+  ends = [starts(2:end), numel(text) + 1];
+  for k = 1:numel (starts)
+    block = text(starts(k):ends(k) - 1);
+    first = strtok (block, "\n");
+    if (! isempty (regexp (first, ['\<' regexptranslate("escape", name) '\>'],
+                           "once")))
+      stop = strfind (block, "@end table");
+      if (! isempty (stop))
+        block = block(1:stop(1) - 1);
+      endif
+      item = block;
+      return;
+    endif
+  endfor
+endfunction
+
+## The default an @item block states, as text: "(default 0.998" or
+## '@qcode{"keep"} (default)'; empty when it states none in those forms.
+function v = stated_default (item)
+  v = "";
+  t = regexp (item, '\(default:?\s+([-+0-9.eE]+)[,;)\s]', "tokens", "once");
+  if (! isempty (t))
+    v = t{1};
+    return;
+  endif
+  t = regexp (item, '@qcode\{"([^"]+)"\}\s*\(default\)', "tokens", "once");
+  if (! isempty (t))
+    v = t{1};
+    return;
+  endif
+  t = regexp (item, '\<(true|false)\s*\(default\)', "tokens", "once");
+  if (! isempty (t))
+    v = t{1};
+  endif
+endfunction
+
+function tf = same_default (stated, core)
+  a = str2double (stated);
+  b = str2double (core);
+  if (! isnan (a) && ! isnan (b))
+    tf = abs (a - b) <= 1e-12 * max (1, abs (b));
+  else
+    tf = strcmp (stated, core);
+  endif
+endfunction
