@@ -20,6 +20,7 @@
 #include "ctid/simulation/effect_simulator.hpp"
 #include "ctid/simulation/ltv_simulator.hpp"
 #include "ctid/simulation/physical_realisations.hpp"
+#include "ctid/simulation/state_space_simulator.hpp"
 #include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"

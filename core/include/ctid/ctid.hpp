@@ -37,3 +37,4 @@
 #include "ctid/simulation/effect_simulator.hpp"
 #include "ctid/simulation/ltv_simulator.hpp"
 #include "ctid/simulation/physical_realisations.hpp"
+#include "ctid/simulation/state_space_simulator.hpp"
