@@ -657,6 +657,20 @@ endfunction
 %!   assert (y, y2(1:2:end), 1e-10);
 %! endfor
 
+%!test  # whole and fractional delays together, with feedthrough: the sum
+%! ## of the single-input responses (the whole delay's feedthrough reads
+%! ## the input at the sample itself)
+%! Ts = 0.1; k = (0:99)'; u = [sign(sin(k / 5)), sign(cos(k / 7))];
+%! A = [-1 2; -2 -1]; B = [0 1; 1 0.5]; C = [1 0.3]; D = [0.5 -0.2];
+%! for is = {"zoh", "foh"}
+%!   y = simc (idss (A, B, C, D, "InputDelay", [0; 0.25]), u, Ts,
+%!             "InterSample", is{1});
+%!   y1 = simc (idss (A, B(:, 1), C, D(1)), u(:, 1), Ts, "InterSample", is{1});
+%!   y2 = simc (idss (A, B(:, 2), C, D(2), "InputDelay", 0.25), u(:, 2), Ts,
+%!              "InterSample", is{1});
+%!   assert (y, y1 + y2, 1e-13);
+%! endfor
+
 %!test  # FOH on a ramp is exact: 1/(s+1) driven by u = t
 %! Ts = 0.2; t = (0:50)' * Ts;
 %! y = simc (idss (-1, 1, 1, 0), iddata (zeros (51, 0), t, Ts,
