@@ -16,6 +16,7 @@
 #include "ctid/adaptation/nlopt_minimizer.hpp"
 #include "ctid/adaptation/qn_ml.hpp"
 #include "ctid/apps/throttle.hpp"
+#include "ctid/recursive/convergence_detector.hpp"
 #include "ctid/recursive/recursive_arx.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "ctid/simulation/ltv_simulator.hpp"

@@ -43,8 +43,8 @@ void read_time(const Gateway& g, const mxArray* t, long n,
   }
 }
 
-void state_space_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
-                         int nrhs, const mxArray* prhs[]) {
+void state_space_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                         const mxArray* prhs[]) {
   if (nrhs != 5) {
     g.fail("badInput",
            "the state-space method takes 5 arguments (fname, "

@@ -114,9 +114,8 @@ TEST(StateSpaceSimulator, ZohAndFohMatchTheClosedFormHold) {
     const Status s = simulate_state_space(
         m, foh ? InterSample::kFoh : InterSample::kZoh, uniform(u, ts), y);
     ASSERT_TRUE(s.ok()) << s.message();
-    EXPECT_TRUE(MatrixNear(y, reference(m, u, steps, foh,
-                                        Eigen::MatrixXi::Zero(2, 2)),
-                           kTol))
+    EXPECT_TRUE(MatrixNear(
+        y, reference(m, u, steps, foh, Eigen::MatrixXi::Zero(2, 2)), kTol))
         << (foh ? "foh" : "zoh");
   }
 }
@@ -131,10 +130,10 @@ TEST(StateSpaceSimulator, IntegerDelaysPerOutputAndInput) {
   const std::vector<double> steps(u.rows(), ts);
   for (bool foh : {false, true}) {
     Eigen::MatrixXd y;
-    ASSERT_TRUE(simulate_state_space(
-                    m, foh ? InterSample::kFoh : InterSample::kZoh,
-                    uniform(u, ts), y)
-                    .ok());
+    ASSERT_TRUE(
+        simulate_state_space(m, foh ? InterSample::kFoh : InterSample::kZoh,
+                             uniform(u, ts), y)
+            .ok());
     EXPECT_TRUE(MatrixNear(y, reference(m, u, steps, foh, nk), kTol));
   }
 }
@@ -244,8 +243,8 @@ TEST(StateSpaceSimulator, MixedDelaysAddUpPairByPair) {
           yij = reference(pair, uj, steps, rule == InterSample::kFoh, nk);
         } else {
           pair.delays = m.delays.block(i, j, 1, 1);
-          ASSERT_TRUE(simulate_state_space(pair, rule, uniform(uj, ts), yij)
-                          .ok());
+          ASSERT_TRUE(
+              simulate_state_space(pair, rule, uniform(uj, ts), yij).ok());
         }
         sum.col(i) += yij;
       }
@@ -268,9 +267,9 @@ TEST(StateSpaceSimulator, HalfSampleDelayEqualsOneSampleOnFinerGrid) {
     Eigen::MatrixXd fine(2 * u.rows(), 2);
     for (Eigen::Index k = 0; k < u.rows(); ++k) {
       fine.row(2 * k) = u.row(k);
-      fine.row(2 * k + 1) =
-          foh && k + 1 < u.rows() ? 0.5 * (u.row(k) + u.row(k + 1))
-                                  : Eigen::RowVectorXd(u.row(k));
+      fine.row(2 * k + 1) = foh && k + 1 < u.rows()
+                                ? 0.5 * (u.row(k) + u.row(k + 1))
+                                : Eigen::RowVectorXd(u.row(k));
     }
     const InterSample rule = foh ? InterSample::kFoh : InterSample::kZoh;
     Eigen::MatrixXd y;
@@ -326,7 +325,8 @@ TEST(StateSpaceSimulator, StaticGainWithoutStates) {
   m.delays << 0, 2;
   const Eigen::MatrixXd u = binary_inputs(30);
   Eigen::MatrixXd y;
-  ASSERT_TRUE(simulate_state_space(m, InterSample::kZoh, uniform(u, 1), y).ok());
+  ASSERT_TRUE(
+      simulate_state_space(m, InterSample::kZoh, uniform(u, 1), y).ok());
   for (Eigen::Index k = 0; k < u.rows(); ++k) {
     const double delayed = k >= 2 ? u(k - 2, 1) : 0.0;
     EXPECT_DOUBLE_EQ(y(k, 0), 2 * u(k, 0) - delayed) << "sample " << k;
@@ -338,23 +338,22 @@ TEST(StateSpaceSimulator, RejectsBadModelsAndData) {
   Eigen::MatrixXd y;
   StateSpaceModel<double> m = mimo();
   m.d.resize(1, 2);
-  EXPECT_EQ(simulate_state_space(m, InterSample::kZoh, uniform(u, 0.1), y)
-                .code(),
-            ErrorCode::kDimensionMismatch);
+  EXPECT_EQ(
+      simulate_state_space(m, InterSample::kZoh, uniform(u, 0.1), y).code(),
+      ErrorCode::kDimensionMismatch);
   m = mimo();
   m.delays = Eigen::MatrixXd::Constant(2, 2, -1);
-  EXPECT_EQ(simulate_state_space(m, InterSample::kZoh, uniform(u, 0.1), y)
+  EXPECT_EQ(
+      simulate_state_space(m, InterSample::kZoh, uniform(u, 0.1), y).code(),
+      ErrorCode::kBadInput);
+  m = mimo();
+  EXPECT_EQ(simulate_state_space(m, InterSample::kTrapezoid, uniform(u, 0.1), y)
                 .code(),
             ErrorCode::kBadInput);
-  m = mimo();
   EXPECT_EQ(
-      simulate_state_space(m, InterSample::kTrapezoid, uniform(u, 0.1), y)
+      simulate_state_space(m, InterSample::kZoh, uniform(u.leftCols(1), 0.1), y)
           .code(),
-      ErrorCode::kBadInput);
-  EXPECT_EQ(simulate_state_space(m, InterSample::kZoh,
-                                 uniform(u.leftCols(1), 0.1), y)
-                .code(),
-            ErrorCode::kDimensionMismatch);
+      ErrorCode::kDimensionMismatch);
   m.delays = Eigen::MatrixXd::Constant(2, 2, 0.5);
   std::vector<double> t(u.rows());
   for (Eigen::Index k = 0; k < u.rows(); ++k) t[k] = 0.1 * k * (1 + 0.01 * k);
@@ -365,9 +364,9 @@ TEST(StateSpaceSimulator, RejectsBadModelsAndData) {
   m = mimo();
   m.a(0, 0) = 50;  // unstable enough to overflow over the record
   const Eigen::MatrixXd ones = Eigen::MatrixXd::Ones(400, 2);
-  EXPECT_EQ(simulate_state_space(m, InterSample::kZoh, uniform(ones, 5), y)
-                .code(),
-            ErrorCode::kNumericalFailure);
+  EXPECT_EQ(
+      simulate_state_space(m, InterSample::kZoh, uniform(ones, 5), y).code(),
+      ErrorCode::kNumericalFailure);
 }
 
 }  // namespace

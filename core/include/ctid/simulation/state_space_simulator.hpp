@@ -60,7 +60,8 @@ Status validate_state_space(const StateSpaceModel<S>& model) {
   }
   if (model.d.rows() != ny || model.d.cols() != nu) {
     return dimension_mismatch("D must be " + std::to_string(ny) + "-by-" +
-                              std::to_string(nu) + " (rows of C by columns "
+                              std::to_string(nu) +
+                              " (rows of C by columns "
                               "of B)");
   }
   if (model.delays.size() != 0 &&
