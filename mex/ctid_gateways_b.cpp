@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "ctid/base/polynomial_inverse.hpp"
+#include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/cumulant_eiv.hpp"
 #include "ctid/offline/freq_srivc.hpp"
 #include "ctid/offline/gpmf_state_space.hpp"

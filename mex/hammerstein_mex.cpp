@@ -15,8 +15,15 @@
 // sep = [f; b; alpha(2:l); beta(2:nw)], cov its covariance; info: f, b,
 // alpha, beta, c, d, theta_miso, cov_miso, noise_variance, condition,
 // iterations, converged, reason, simulated.
+//
+//   x = hammerstein_mex (fname, "poly_inverse", v, options)
+//
+// The inverse of the Wiener block's output polynomial, sample by sample:
+// x solves beta(1) x + .. + beta(L) x^L = v (polynomial_inverse.hpp); x has
+// the size of v. options field: beta.
 #include <algorithm>
 
+#include "ctid/base/polynomial_inverse.hpp"
 #include "ctid/offline/hammerstein.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
@@ -28,8 +35,40 @@ using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
 using ctid::mex::to_output;
 
+void poly_inverse_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                          const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput",
+           "the poly_inverse method takes 4 arguments (fname, "
+           "'poly_inverse', v, options), got " +
+               std::to_string(nrhs));
+  }
+  if (nlhs > 1) g.fail("badInput", "the poly_inverse method has 1 output");
+  g.require_real_double(prhs[2], "the values");
+  const long rows = static_cast<long>(mxGetM(prhs[2]));
+  const long cols = static_cast<long>(mxGetN(prhs[2]));
+  const double* v = g.matrix(prhs[2], "the values", rows, cols);
+  OptionsReader opt(g, prhs[3]);
+  const Eigen::MatrixXd beta = opt.required_matrix("beta");
+  opt.finish();
+  if (beta.rows() > 1 && beta.cols() > 1) {
+    g.fail("badInput", "the polynomial beta must be a vector");
+  }
+  plhs[0] = ctid::mex::make_output_matrix(rows, cols);
+  g.check(ctid::invert_polynomial<double>(Eigen::VectorXd(beta.reshaped()), v,
+                                          rows * cols, mxGetPr(plhs[0])));
+}
+
 void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                          const mxArray* prhs[]) {
+  if (nrhs >= 2 && mxIsChar(prhs[1])) {
+    const std::string method = g.text(prhs[1], "the method");
+    if (method != "poly_inverse") {
+      g.fail("badInput", "unknown method '" + method + "'");
+    }
+    poly_inverse_gateway(g, nlhs, plhs, nrhs, prhs);
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments, got " + std::to_string(nrhs));
@@ -119,8 +158,9 @@ void hammerstein_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  ctid::mex::run_gateway("hsrivc", {"hsrivc", "hrivc", "hwsrivc"}, nrhs, prhs,
-                         [&](const Gateway& g) {
+  ctid::mex::run_gateway("hsrivc",
+                         {"hsrivc", "hrivc", "hwsrivc", "Wie", "simc_hw"}, nrhs,
+                         prhs, [&](const Gateway& g) {
                            hammerstein_gateway(g, nlhs, plhs, nrhs, prhs);
                          });
 }

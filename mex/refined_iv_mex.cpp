@@ -25,8 +25,14 @@
 // lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
 // iterate over all starts when it is not the returned model; lowest_theta
 // and lowest_noise_variance empty if none).
+//
+//   [yf, uf] = refined_iv_mex (fname, "focus_filter", y, u, opts)
+//
+// y and u (N rows each) filtered column by column by the Focus band
+// (focus_filter.hpp); opts fields: ts, band ([w1 w2] rad/s), order.
 #include <algorithm>
 
+#include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
@@ -42,8 +48,46 @@ std::vector<double> to_std(const Eigen::MatrixXd& m) {
   return std::vector<double>(m.data(), m.data() + m.size());
 }
 
+void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                          const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the focus_filter method takes 5 arguments (fname, "
+           "'focus_filter', y, u, opts), got " +
+               std::to_string(nrhs));
+  }
+  if (nlhs > 2) g.fail("badInput", "the focus_filter method has 2 outputs");
+  Eigen::MatrixXd y = g.eigen_matrix(prhs[2], "y");
+  Eigen::MatrixXd u = g.eigen_matrix(prhs[3], "u", y.rows(), -1);
+  OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("ts");
+  // (w2 may be Inf: read without the finiteness check, the core checks it)
+  const mxArray* band_arg = opt.required("band");
+  g.require_real_double(band_arg, "band");
+  if (mxGetNumberOfElements(band_arg) != 2) {
+    g.fail("badInput", "band must be [w1 w2]");
+  }
+  const double* band = mxGetPr(band_arg);
+  const int order = opt.integer("order");
+  opt.finish();
+  ctid::DiscreteTransferFunction<double> filter;
+  g.check(ctid::focus_band_filter<double>(order, band[0], band[1], ts, filter));
+  ctid::apply_filter(filter, y);
+  ctid::apply_filter(filter, u);
+  plhs[0] = to_output(y);
+  if (nlhs > 1) plhs[1] = to_output(u);
+}
+
 void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
+  if (nrhs >= 2 && mxIsChar(prhs[1])) {
+    const std::string method = g.text(prhs[1], "the method");
+    if (method != "focus_filter") {
+      g.fail("badInput", "unknown method '" + method + "'");
+    }
+    focus_filter_gateway(g, nlhs, plhs, nrhs, prhs);
+    return;
+  }
   if (nrhs != 6) {
     g.fail("badInput",
            "the gateway takes 6 arguments, got " + std::to_string(nrhs));

@@ -11,15 +11,80 @@
 // noise (absent or [], or N-by-1 e(t_k) added to y); in closed loop
 // controller_num, controller_den (C(q^-1) of u = r1 + C (r2 - y)) and r2
 // (N-by-1).
+//
+//   y = simc_mex (fname, "state_space", u, t, options)
+//
+// Output (N-by-ny) of the state-space model x' = a x + b u, y = c x + d u
+// from rest (state_space_simulator.hpp). Fields of options: a, b, c, d;
+// nk (absent or [], or ny-by-nu delays in samples, fractional allowed with
+// a sampling interval); intersample ('zoh' default, or 'foh').
 #include "ctid/simulation/ltv_simulator.hpp"
+#include "ctid/simulation/state_space_simulator.hpp"
 #include "gateway_common.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
 
+// The sampling interval or the N sampling instants, into the record.
+void read_time(const Gateway& g, const mxArray* t, long n,
+               ctid::RecordView<double>* record) {
+  g.require_real_double(t, "Ts");
+  if (mxGetNumberOfElements(t) == 1) {
+    record->ts = g.scalar(t, "Ts");
+    if (!(record->ts > 0)) g.fail("badInput", "Ts must be > 0");
+    return;
+  }
+  record->instants = g.matrix(t, "the sampling instants", n, 1);
+  for (long k = 1; k < n; ++k) {
+    if (!(record->instants[k] > record->instants[k - 1])) {
+      g.fail("badInput", "the sampling instants must be strictly increasing");
+    }
+  }
+}
+
+void state_space_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                         const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the state-space method takes 5 arguments (fname, "
+           "'state_space', u, t, options), got " +
+               std::to_string(nrhs));
+  }
+  if (nlhs > 1) g.fail("badInput", "the state-space method has 1 output");
+  g.require_real_double(prhs[2], "u");
+  const long n = static_cast<long>(mxGetM(prhs[2]));
+  if (n < 1) g.fail("badInput", "u must not be empty");
+  ctid::RecordView<double> record;
+  record.u = g.matrix(prhs[2], "u", n, -1);
+  record.num_samples = n;
+  record.num_inputs = static_cast<Eigen::Index>(mxGetN(prhs[2]));
+  read_time(g, prhs[3], n, &record);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  ctid::StateSpaceModel<double> model;
+  model.a = opt.required_matrix("a");
+  model.b = opt.required_matrix("b");
+  model.c = opt.required_matrix("c");
+  model.d = opt.required_matrix("d");
+  model.delays = opt.matrix("nk");
+  const ctid::InterSample rule =
+      ctid::mex::read_intersample(opt, ctid::InterSample::kZoh);
+  opt.finish();
+  Eigen::MatrixXd y;
+  g.check(ctid::simulate_state_space(model, rule, record, y));
+  plhs[0] = ctid::mex::to_output(y);
+}
+
 void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
+  if (nrhs >= 2 && mxIsChar(prhs[1])) {
+    const std::string method = g.text(prhs[1], "the method");
+    if (method != "state_space") {
+      g.fail("badInput", "unknown method '" + method + "'");
+    }
+    state_space_gateway(g, nlhs, plhs, nrhs, prhs);
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments (fname, u, t, theta, "
@@ -34,18 +99,7 @@ void simc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   record.u = g.matrix(prhs[1], "u", n, -1);
   record.num_samples = n;
   record.num_inputs = static_cast<Eigen::Index>(mxGetN(prhs[1]));
-  g.require_real_double(prhs[2], "Ts");
-  if (mxGetNumberOfElements(prhs[2]) == 1) {
-    record.ts = g.scalar(prhs[2], "Ts");
-    if (!(record.ts > 0)) g.fail("badInput", "Ts must be > 0");
-  } else {
-    record.instants = g.matrix(prhs[2], "the sampling instants", n, 1);
-    for (long k = 1; k < n; ++k) {
-      if (!(record.instants[k] > record.instants[k - 1])) {
-        g.fail("badInput", "the sampling instants must be strictly increasing");
-      }
-    }
-  }
+  read_time(g, prhs[2], n, &record);
   ctid::mex::OptionsReader opt(g, prhs[4]);
   ctid::LtvSimulationConfig<double> config;
   config.u_intersample = ctid::mex::read_intersample(opt, config.u_intersample);

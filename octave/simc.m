@@ -365,12 +365,12 @@ function b = trim (b)
 endfunction
 
 ## Noise-free output of a model struct: a state-space model exactly
-## (contsid_ss_sim), a transfer-function model input by input through the
-## gateway (the responses add up).
+## (the gateway's state-space method), a transfer-function model input by
+## input through the gateway (the responses add up).
 function x = simulate_model (m, u, t, intersample, substeps)
   n = rows (u);
   if (strcmp (m.kind, "ss"))
-    x = contsid_ss_sim (m.a, m.b, m.c, m.d, u, t, intersample, m.nk);
+    x = simulate_ss (m.a, m.b, m.c, m.d, u, t, intersample, m.nk);
     return;
   endif
   x = zeros (n, m.ny);
@@ -383,8 +383,8 @@ function x = simulate_model (m, u, t, intersample, substeps)
       if (m.nk(i, j) != fix (m.nk(i, j)))
         ## a delay between samples: exact in state space
         [a, bb, c, d] = canonical (b, m.F{i, j});
-        x(:, i) += contsid_ss_sim (a, bb, c, d, u(:, j), t, intersample,
-                                   m.nk(i, j));
+        x(:, i) += simulate_ss (a, bb, c, d, u(:, j), t, intersample,
+                                m.nk(i, j));
         continue;
       endif
       orders = struct ("na", numel (m.F{i, j}) - 1, "nb", numel (b),
@@ -394,6 +394,18 @@ function x = simulate_model (m, u, t, intersample, substeps)
                                [], []);
     endfor
   endfor
+endfunction
+
+## x' = a x + b u, y = c x + d u from rest, exact for a ZOH or FOH input,
+## nk: ny-by-nu delays in samples, fractional with a sampling interval.
+function y = simulate_ss (a, b, c, d, u, t, intersample, nk)
+  try
+    y = simc_mex ("simc", "state_space", u, t,
+                  struct ("a", a, "b", b, "c", c, "d", d, "nk", nk,
+                          "intersample", intersample));
+  catch err
+    contsid_rethrow (err);
+  end_try_catch
 endfunction
 
 ## Controllable canonical realisation of b(p) / f(p), f monic, deg b <=
@@ -643,6 +655,20 @@ endfunction
 %!              "InterSample", is{1});
 %!   ## 0.25 s = 5 fine samples: integer there, fractional on Ts
 %!   assert (y, y2(1:2:end), 1e-10);
+%! endfor
+
+%!test  # whole and fractional delays together, with feedthrough: the sum
+%! ## of the single-input responses (the whole delay's feedthrough reads
+%! ## the input at the sample itself)
+%! Ts = 0.1; k = (0:99)'; u = [sign(sin(k / 5)), sign(cos(k / 7))];
+%! A = [-1 2; -2 -1]; B = [0 1; 1 0.5]; C = [1 0.3]; D = [0.5 -0.2];
+%! for is = {"zoh", "foh"}
+%!   y = simc (idss (A, B, C, D, "InputDelay", [0; 0.25]), u, Ts,
+%!             "InterSample", is{1});
+%!   y1 = simc (idss (A, B(:, 1), C, D(1)), u(:, 1), Ts, "InterSample", is{1});
+%!   y2 = simc (idss (A, B(:, 2), C, D(2), "InputDelay", 0.25), u(:, 2), Ts,
+%!              "InterSample", is{1});
+%!   assert (y, y1 + y2, 1e-13);
 %! endfor
 
 %!test  # FOH on a ramp is exact: 1/(s+1) driven by u = t

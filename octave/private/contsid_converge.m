@@ -102,7 +102,7 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
       clear pset;
     else
       [thm, yh] = rlssvf (data, nn, args{:});
-      trP = NaN (rows (thm), 1);
+      trP = [];
     endif
   catch err
     id = regexprep (err.identifier, '^rlssvf:', [fname ":"]);
@@ -110,86 +110,32 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
     error (struct ("message", msg, "identifier", id, "stack", err.stack));
   end_try_catch
 
-  ## Block statistics: mean square of the output error (eq. 1.60) and of y,
-  ## mean of the estimates.
-  blk = floor (t / Tb * (1 + 1e-12)) + 1;
-  in = blk <= B;
-  blk = blk(in);
-  ey = d.y(in) - yh(in);
-  cnt = accumarray (blk, 1, [B 1]);
-  E = accumarray (blk, ey .^ 2, [B 1]) ./ cnt;
-  Y = accumarray (blk, d.y(in) .^ 2, [B 1]) ./ cnt;
-  np = columns (thm);
-  thb = zeros (B, np);
-  for j = 1:np
-    thb(:, j) = accumarray (blk, thm(in, j), [B 1]) ./ cnt;
-  endfor
-  E(! isfinite (E)) = Inf;
-  ## trace (P) / trace (P0) at the end of each block.
-  last = accumarray (blk, find (in), [B 1], @max, NaN);
-  Pb = NaN (B, 1);
-  Pb(isfinite (last)) = trP(last(isfinite (last)));
-  dth = NaN (B, 1);
-  dth(2:end) = sqrt (sumsq (diff (thb), 2)) ./ sqrt (sumsq (thb(2:end, :), 2));
-  dth(! isfinite (dth)) = Inf;
-
-  ## Steady-state test of Cao and Rhinehart (1995) on X = log E over the
-  ## last n blocks: R = 2 sum (X - mean X)^2 / sum (diff X)^2, the ratio of
-  ## two estimates of the variance, about 1 for independent values about a
-  ## constant level and larger along a trend. R = 2 / eta with eta von
-  ## Neumann's ratio, E[eta] = 2 and var[eta] = 4 (n-2) / ((n+1) (n-1))
-  ## for normal values: R_crit is its one-sided normal quantile at alpha.
-  z = sqrt (2) * erfinv (1 - 2 * alpha);
-  Rcrit = 2 / (2 - z * sqrt (4 * (n - 2) / ((n + 1) * (n - 1))));
-  if (! (Rcrit > 0))
-    Rcrit = Inf;                          # alpha so small the test never fails
-  endif
-  X = log (E);
-  R = NaN (B, 1);
-  thidx = NaN (B, 1);
-  steady_ey = false (B, 1);
-  steady_th = false (B, 1);
-  small_P = false (B, 1);
-  for k = n:B
-    w = k-n+1:k;
-    x = X(w);
-    if (all (isfinite (x)))
-      s1 = sumsq (x - mean (x));
-      s2 = sumsq (diff (x));
-      if (s2 > 0)
-        R(k) = 2 * s1 / s2;
-      elseif (s1 == 0)
-        R(k) = 0;                         # a constant level
-      endif
-    endif
-    steady_ey(k) = R(k) < Rcrit || all (E(w) <= floor_ ^ 2 * Y(w));
-    thidx(k) = sqrt (mean (dth(w(2:end)) .^ 2));
-    steady_th(k) = thidx(k) < opts.tol_theta;
-    small_P(k) = all (Pb(w) <= opts.ptol);
-  endfor
-  pass = true (B, 1);
-  pass(1:n-1) = false;
-  if (any (strcmp (crit, "outputerror")))
-    pass &= steady_ey;
-  endif
-  if (any (strcmp (crit, "theta")))
-    pass &= steady_th;
-  endif
-  if (use_P)
-    pass &= small_P;
-  endif
-  kd = find (pass, 1);
-
+  ## Block statistics and the three indices (the core's detector,
+  ## recursive/convergence_detector.hpp: Cao and Rhinehart's steady-state
+  ## test on the output error, the estimates' change, trace P).
+  opts_det = struct ("blocklength", Tb, "nblocks", n, "alpha", alpha,
+                     "tol_theta", opts.tol_theta, "eyfloor", floor_,
+                     "ptol", opts.ptol,
+                     "use_outputerror", any (strcmp (crit, "outputerror")),
+                     "use_theta", any (strcmp (crit, "theta")),
+                     "use_P", use_P);
+  try
+    r = rlssvf_mex (fname, "converge", t(:), double (d.y(:)), yh(:), thm,
+                    trP, opts_det);
+  catch err
+    contsid_rethrow (err, fname);
+  end_try_catch
   info = struct ("blocklength", Tb, "nblocks", n, "alpha", alpha,
-                 "Rcrit", Rcrit, "tol_theta", opts.tol_theta,
+                 "Rcrit", r.Rcrit, "tol_theta", opts.tol_theta,
                  "eyfloor", floor_, "ptol", opts.ptol, "criteria", {crit},
                  "causal", true,
-                 "tblock", (1:B)' * Tb, "ey_ms", E, "y_ms", Y, "R", R,
-                 "dtheta", dth, "theta_index", thidx,
-                 "P_index", Pb, "steady_ey", steady_ey,
-                 "steady_theta", steady_th, "small_P", small_P,
-                 "converged", ! isempty (kd), "tsiv", NaN, "k", NaN);
-  if (isempty (kd))
+                 "tblock", (1:r.nblocks)' * Tb, "ey_ms", r.ey_ms,
+                 "y_ms", r.y_ms, "R", r.R, "dtheta", r.dtheta,
+                 "theta_index", r.theta_index, "P_index", r.P_index,
+                 "steady_ey", r.steady_ey, "steady_theta", r.steady_theta,
+                 "small_P", r.small_P, "converged", r.converged,
+                 "tsiv", NaN, "k", NaN);
+  if (! r.converged)
     tsiv = NaN;
     msg = sprintf (["%s: no convergence of RLSSVF detected in %g s ", ...
                     "(%d blocks of %g s); give tsiv, or relax the ", ...
@@ -201,9 +147,9 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
     warning ([fname ":notConverged"], "%s", msg);
     return;
   endif
-  tsiv = kd * Tb;
+  tsiv = r.tsiv;
   info.tsiv = tsiv;
-  info.k = find (t >= tsiv * (1 - 1e-12), 1);
+  info.k = r.k;
 endfunction
 
 function positive (fname, v, what)

@@ -17,6 +17,7 @@ enum class ErrorCode {
   kBadInput,
   kDimensionMismatch,
   kBadOption,
+  kNotSupported,
   kNotConverged,
   kNumericalFailure,
 };
@@ -32,6 +33,8 @@ inline const char* error_reason(ErrorCode code) {
       return "dimensionMismatch";
     case ErrorCode::kBadOption:
       return "badOption";
+    case ErrorCode::kNotSupported:
+      return "notSupported";
     case ErrorCode::kNotConverged:
       return "notConverged";
     case ErrorCode::kNumericalFailure:
@@ -62,6 +65,9 @@ inline Status bad_input(std::string message) {
 }
 inline Status dimension_mismatch(std::string message) {
   return Status(ErrorCode::kDimensionMismatch, std::move(message));
+}
+inline Status not_supported(std::string message) {
+  return Status(ErrorCode::kNotSupported, std::move(message));
 }
 inline Status numerical_failure(std::string message) {
   return Status(ErrorCode::kNumericalFailure, std::move(message));

@@ -31,6 +31,7 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "ctid/base/balanced_exponential.hpp"
 #include "ctid/base/types.hpp"
 
 namespace ctid {
@@ -82,19 +83,30 @@ inline Discretisation discretisation_of(InterSample rule) {
 }
 
 namespace detail {
+// [F G 0; 0 0 I/h; 0 0 0] h and the blocks Phi, Gamma0, Gamma1 of its
+// exponential e.
 template <typename M, typename S>
-void foh_exponential(const Matrix<S>& F, const Matrix<S>& G, S h,
-                     Matrix<S>& Phi, Matrix<S>& Gamma0, Matrix<S>& Gamma1) {
+M foh_augmented(const Matrix<S>& F, const Matrix<S>& G, S h) {
   const Eigen::Index n = F.rows();
   const Eigen::Index m = G.cols();
   M augmented = M::Zero(n + 2 * m, n + 2 * m);
   augmented.topLeftCorner(n, n) = F * h;
   augmented.block(0, n, n, m) = G * h;
   augmented.block(n, n + m, m, m).setIdentity();  // (I/h) h
-  const M e = augmented.exp();
+  return augmented;
+}
+template <typename M, typename S>
+void foh_blocks(const M& e, Eigen::Index n, Eigen::Index m, Matrix<S>& Phi,
+                Matrix<S>& Gamma0, Matrix<S>& Gamma1) {
   Phi = e.topLeftCorner(n, n);
   Gamma0 = e.block(0, n, n, m);
   Gamma1 = e.block(0, n + m, n, m);
+}
+template <typename M, typename S>
+void foh_exponential(const Matrix<S>& F, const Matrix<S>& G, S h,
+                     Matrix<S>& Phi, Matrix<S>& Gamma0, Matrix<S>& Gamma1) {
+  const M e = foh_augmented<M, S>(F, G, h).exp();
+  foh_blocks<M, S>(e, F.rows(), G.cols(), Phi, Gamma0, Gamma1);
 }
 }  // namespace detail
 
@@ -110,6 +122,19 @@ void foh_discretize(const Matrix<S>& F, const Matrix<S>& G, S h, Matrix<S>& Phi,
   } else {
     detail::foh_exponential<Matrix<S>, S>(F, G, h, Phi, Gamma0, Gamma1);
   }
+}
+
+// The same exact first-order hold through the balanced exponential
+// (balanced_exponential.hpp), for a state matrix F of arbitrary scaling (a
+// user's state-space model rather than a filter of bounded order), as
+// MATLAB's and Octave's expm compute it.
+template <typename S>
+void foh_discretize_balanced(const Matrix<S>& F, const Matrix<S>& G, S h,
+                             Matrix<S>& Phi, Matrix<S>& Gamma0,
+                             Matrix<S>& Gamma1) {
+  const Matrix<S> e =
+      balanced_exp<S>(detail::foh_augmented<Matrix<S>, S>(F, G, h));
+  detail::foh_blocks<Matrix<S>, S>(e, F.rows(), G.cols(), Phi, Gamma0, Gamma1);
 }
 
 template <typename S>

@@ -50,6 +50,7 @@
 #include <string>
 #include <vector>
 
+#include "ctid/base/polynomial_inverse.hpp"
 #include "ctid/offline/offline_iv.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_bj.hpp"
@@ -123,46 +124,6 @@ Status rank_one(const Matrix<S>& M, Vector<S>& alpha, Vector<S>& b) {
   alpha = u / u(0);
   b = scale * u(0) * svd.matrixV().col(0);
   return Status::Ok();
-}
-
-// Real root of g(x) = xbar nearest to `near` (g = x + beta_2 x^2 + ..).
-template <typename S>
-S inverse_polynomial(const Vector<S>& beta, S xbar, S near) {
-  const int m = static_cast<int>(beta.size());
-  int deg = m;
-  while (deg > 1 && beta(deg - 1) == S(0)) --deg;
-  if (deg == 1) return xbar / beta(0);
-  // Companion matrix of beta_deg x^deg + .. + beta_1 x - xbar.
-  Matrix<S> C = Matrix<S>::Zero(deg, deg);
-  for (int i = 0; i < deg; ++i) {
-    const S coeff = i == 0 ? -xbar : beta(i - 1);
-    C(0, deg - 1 - i) = -coeff / beta(deg - 1);
-  }
-  for (int i = 1; i < deg; ++i) C(i, i - 1) = 1;
-  Eigen::EigenSolver<Matrix<S>> es(C, false);
-  S best = near;
-  S gap = std::numeric_limits<S>::infinity();
-  for (int i = 0; i < deg; ++i) {
-    const std::complex<S> r = es.eigenvalues()(i);
-    if (std::abs(r.imag()) > S(1e-7) * (S(1) + std::abs(r.real()))) continue;
-    const S distance = std::abs(r.real() - near);
-    if (distance < gap) {
-      gap = distance;
-      best = r.real();
-    }
-  }
-  // Newton polish of the chosen root.
-  for (int k = 0; k < 3; ++k) {
-    S g = 0, dg = 0, power = 1;
-    for (int j = 0; j < m; ++j) {
-      dg += (j + 1) * beta(j) * power;
-      power *= best;
-      g += beta(j) * power;
-    }
-    if (!(std::abs(dg) > 0)) break;
-    best -= (g - xbar) / dg;
-  }
-  return best;
 }
 
 // x_hat = B/A ubar(t - nk Ts), the model at rest at the first sample:
@@ -408,11 +369,8 @@ Status block_srivc(BlockModel model, const BlockOrders& o,
     }
     Vector<S> beta(m);
     beta << 1, s.tail(m - 1);
-    S near = xbar(0);
-    for (Eigen::Index k = 0; k < n; ++k) {
-      x(k) = inverse_polynomial<S>(beta, xbar(k), near);
-      near = x(k);
-    }
+    st = invert_polynomial<S>(beta, xbar.data(), n, x.data());
+    if (!st.ok()) return st;
     return x.allFinite() ? Status::Ok()
                          : numerical_failure("the simulated output diverged");
   };

@@ -56,6 +56,7 @@
 #include <string>
 #include <vector>
 
+#include "ctid/base/polynomial.hpp"
 #include "ctid/base/stability.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
@@ -152,16 +153,6 @@ void theta_to_matrices(const Vector<S>& theta,
       (*b)(t.coefficient, t.function) = theta(p);
     }
   }
-}
-
-// Polynomial product (coefficients of q^0, q^-1, ..).
-template <typename S>
-Vector<S> convolve(const Vector<S>& x, const Vector<S>& y) {
-  Vector<S> z = Vector<S>::Zero(x.size() + y.size() - 1);
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    for (Eigen::Index j = 0; j < y.size(); ++j) z(i + j) += x(i) * y(j);
-  }
-  return z;
 }
 
 // The polynomial in q^-1 of A(D) = D^n + a1 D^(n-1) + .. + an with
