@@ -34,6 +34,7 @@ function test_options_declared_once ()
   families(1, :) = {"riv_mex", "rsrivc", ...
                     {"rlssvf", "rivsvf", "rsrivc", "clrivsvf", "clrsrivc"}};
   families(2, :) = {"rlssvf_mex", "rlssvf", {"rlssvf"}};
+  compared = 0;                          # defaults stated by a help text
   for f = 1:rows (families)
     [gw, fname, fronts] = families{f, :};
     T = feval (gw, fname, "options");
@@ -51,16 +52,17 @@ function test_options_declared_once ()
       if (isfield (user_name, name))
         name = user_name.(name);
       endif
-      item = help_item (help_text, name);
+      [item, position] = help_item (help_text, name);
       if (isempty (item))
         error ("option '%s' of %s is not documented in the help of %s",
                name, gw, strjoin (fronts, ", "));
       endif
-      stated = stated_default (item);
+      stated = stated_default (item, position);
       if (! isempty (stated) && ! strcmp (T(k).default, "(required)"))
         assert (same_default (stated, T(k).default),
                 sprintf ("%s: the help says default %s, the core %s", name,
                          stated, T(k).default));
+        compared++;
       endif
     endfor
     ## an option the table does not declare is refused
@@ -73,6 +75,10 @@ function test_options_declared_once ()
       assert (err.identifier, fail_id);
     end_try_catch
   endfor
+
+  ## the parser above reads the defaults the help texts state (a floor, so
+  ## that a change of wording cannot silently empty the check)
+  assert (compared >= 5, sprintf ("only %d defaults compared", compared));
 
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
@@ -108,16 +114,19 @@ function test_options_declared_once ()
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may
-## name several, "@item th0, P0"), up to the next @item or @end table.
-function item = help_item (text, name)
+## name several, "@item th0, P0": POSITION is NAME's place among them), up
+## to the next @item or @end table.
+function [item, position] = help_item (text, name)
   item = "";
+  position = 0;
   starts = regexp (text, '@item\s', "start");
   ends = [starts(2:end), numel(text) + 1];
   for k = 1:numel (starts)
     block = text(starts(k):ends(k) - 1);
     first = strtok (block, "\n");
-    if (! isempty (regexp (first, ['\<' regexptranslate("escape", name) '\>'],
-                           "once")))
+    names = regexp (first(6:end), '[A-Za-z_]\w*', "match");
+    position = find (strcmp (names, name), 1);
+    if (! isempty (position))
       stop = strfind (block, "@end table");
       if (! isempty (stop))
         block = block(1:stop(1) - 1);
@@ -126,23 +135,41 @@ function item = help_item (text, name)
       return;
     endif
   endfor
+  position = 0;
 endfunction
 
-## The default an @item block states, as text: "(default 0.998" or
-## '@qcode{"keep"} (default)'; empty when it states none in those forms.
-function v = stated_default (item)
+## The default an @item block states for its POSITION-th name, as text:
+## "(default 0.998", '@qcode{"keep"} (default)' or "true (default)"; empty
+## when it states none in those forms.
+function v = stated_default (item, position)
   v = "";
-  t = regexp (item, '\(default:?\s+([-+0-9.eE]+)[,;)\s]', "tokens", "once");
+  marks = regexp (item, '\(default', "start");
+  if (numel (marks) < position)
+    return;
+  endif
+  ## the text from the previous default statement on
+  from = 1;
+  if (position > 1)
+    from = marks(position - 1) + 1;
+  endif
+  part = item(from:end);
+  t = regexp (part, '^[^(]*?\(default:?\s+([-+0-9.eE]+)[,;)\s]', "tokens", "once");
+  if (isempty (t))
+    t = regexp (part, '\(default:?\s+([-+0-9.eE]+)[,;)\s]', "tokens", "once");
+    if (position > 1 && ! isempty (t))
+      t = {};                            # that one belongs to a later name
+    endif
+  endif
   if (! isempty (t))
     v = t{1};
     return;
   endif
-  t = regexp (item, '@qcode\{"([^"]+)"\}\s*\(default\)', "tokens", "once");
+  t = regexp (part, '@qcode\{"([^"]+)"\}\s*\(default\)', "tokens", "once");
   if (! isempty (t))
     v = t{1};
     return;
   endif
-  t = regexp (item, '\<(true|false)\s*\(default\)', "tokens", "once");
+  t = regexp (part, '\<(true|false)\s*\(default\)', "tokens", "once");
   if (! isempty (t))
     v = t{1};
   endif
