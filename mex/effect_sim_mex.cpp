@@ -27,10 +27,20 @@
 //                                 theta0, P0, Qn, options)
 //     the tracking recursion (track.hpp); options: free (indices of the
 //     tracked coefficients of f, 1-based), r (integrators), k0 (first
-//     tracked sample, 1-based).
+//     tracked sample, 1-based);
+//   v = effect_sim_mex (fname, "dmtest", e0, e1, options)
+//     the Diebold-Mariano and encompassing tests (statistics.hpp), v =
+//     [score stat p bandwidth z p_corr]; options: none (a struct);
+//   [r, Q, xc, S, reason] = effect_sim_mex (fname, "whiteness", e, u,
+//                                           options)
+//     the Ljung-Box and Haugh statistics (statistics.hpp): autocorrelations
+//     r (lags 0..m), Q, the prewhitened cross-correlations xc (lags -m..m,
+//     one column per input), S; reason is empty, or says why e is not
+//     tested (the others are then empty); options: maxlag, yscale.
 // The signals and estimates may hold non-finite values (they propagate as
 // in the recursion itself).
 #include "ctid/apps/residtrace/responses.hpp"
+#include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/apps/residtrace/track.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
@@ -212,6 +222,68 @@ void effect_sim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                                               mxGetPr(plhs[0]), u1));
 }
 
+// A column of any values.
+Eigen::VectorXd any_column(const Gateway& g, const mxArray* a,
+                           const char* what) {
+  const auto m = any_matrix(g, a, what, -1, 1);
+  return m.col(0);
+}
+
+void dmtest_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                   const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "dmtest takes (fname, 'dmtest', e0, e1, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "dmtest has one output");
+  const Eigen::VectorXd e0 = any_column(g, prhs[2], "e0");
+  const Eigen::VectorXd e1 = any_column(g, prhs[3], "e1");
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  opt.finish();
+  ctid::residtrace::DmTest<double> t;
+  g.check(ctid::residtrace::dm_test<double>(e0, e1, &t));
+  plhs[0] = ctid::mex::make_output_matrix(1, 6);
+  double* v = mxGetPr(plhs[0]);
+  v[0] = t.score;
+  v[1] = t.stat;
+  v[2] = t.p;
+  v[3] = static_cast<double>(t.bandwidth);
+  v[4] = t.z;
+  v[5] = t.p_corr;
+}
+
+void whiteness_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                      const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "whiteness takes (fname, 'whiteness', e, u, options)");
+  }
+  if (nlhs > 5) g.fail("badInput", "whiteness has at most 5 outputs");
+  const Eigen::VectorXd e = any_column(g, prhs[2], "e");
+  const long n = static_cast<long>(e.size());
+  g.require_real_double(prhs[3], "u");
+  Eigen::MatrixXd u(n, 0);
+  if (mxGetNumberOfElements(prhs[3]) > 0) u = any_matrix(g, prhs[3], "u", n);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const int maxlag = opt.integer("maxlag");
+  const double yscale = opt.scalar("yscale", 0.0);
+  opt.finish();
+  ctid::residtrace::WhitenessStatistics<double> w;
+  g.check(
+      ctid::residtrace::whiteness_statistics<double>(e, u, maxlag, yscale, &w));
+  auto put = [](const Eigen::MatrixXd& m) {
+    mxArray* a = ctid::mex::make_output_matrix(m.rows(), m.cols());
+    Eigen::Map<Eigen::MatrixXd>(mxGetPr(a), m.rows(), m.cols()) = m;
+    return a;
+  };
+  plhs[0] = put(w.autocorr);
+  if (nlhs >= 2)
+    plhs[1] = put(Eigen::MatrixXd::Constant(w.testable, w.testable, w.Q));
+  if (nlhs >= 3) plhs[2] = put(w.xcorr);
+  if (nlhs >= 4) {
+    plhs[3] = put(Eigen::MatrixXd::Constant(w.testable, w.testable, w.S_indep));
+  }
+  if (nlhs >= 5) plhs[4] = mxCreateString(w.reason.c_str());
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -225,6 +297,10 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             free_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "track") {
             track_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "dmtest") {
+            dmtest_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "whiteness") {
+            whiteness_method(g, nlhs, plhs, nrhs, prhs);
           } else {
             g.fail("badInput", "unknown method '" + method + "'");
           }

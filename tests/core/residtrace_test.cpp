@@ -10,7 +10,12 @@
 //     the matrix exponential (test_util.hpp) and the exact FOH response by
 //     partial fractions;
 //   - the free responses against their closed forms, and the zero rows of
-//     an unstable or non-finite F.
+//     an unstable or non-finite F;
+//   - the Newey-West long-run variance against the known one of an AR(1)
+//     series, the Diebold-Mariano and encompassing tests on errors of
+//     known relative size and on equal errors, the AR whitener against
+//     the coefficients that generated the series, and the whiteness and
+//     independence statistics on white, coloured and dependent residuals.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -21,6 +26,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/responses.hpp"
+#include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/apps/residtrace/track.hpp"
 #include "test_util.hpp"
 
@@ -332,6 +338,141 @@ TEST(ResidtraceResponses, UnstableOrNonFiniteFGivesZeroRows) {
   EXPECT_EQ(residtrace::free_responses<double>(Eigen::Vector2d(1, 1), 0.0, 5, X)
                 .code(),
             ErrorCode::kBadInput);
+}
+
+std::vector<double> white(int N, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<double> v(N);
+  for (double& x : v) x = g(rng);
+  return v;
+}
+
+Eigen::VectorXd as_vector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+}
+
+// g_t = phi g_(t-1) + eps_t, var(eps) = 1: long-run variance 1/(1-phi)^2.
+TEST(ResidtraceStatistics, NeweyWestMatchesTheAr1LongRunVariance) {
+  const int N = 40000;
+  const std::vector<double> eps = white(N, 21);
+  for (const double phi : {0.0, 0.5, -0.4}) {
+    Eigen::VectorXd g(N);
+    g(0) = eps[0];
+    for (int k = 1; k < N; ++k) g(k) = phi * g(k - 1) + eps[k];
+    const residtrace::LongRunVariance<double> nw = residtrace::newey_west(g);
+    const double expected = 1 / ((1 - phi) * (1 - phi));
+    EXPECT_NEAR(nw.variance, expected, 0.08 * expected) << "phi " << phi;
+    // The prewhitened series is white: a short window.
+    EXPECT_LE(nw.bandwidth, 3) << "phi " << phi;
+  }
+  // A constant has no variance.
+  EXPECT_EQ(residtrace::newey_west<double>(Eigen::VectorXd::Constant(50, 2.0))
+                .variance,
+            0.0);
+}
+
+TEST(ResidtraceStatistics, DieboldMarianoOnKnownErrors) {
+  const int N = 2000;
+  const Eigen::VectorXd e0 = as_vector(white(N, 31));
+  const Eigen::VectorXd noise = as_vector(white(N, 32));
+  // e1 = e0 / 2: a quarter of the mean square, clearly better; the
+  // correction e0 - e1 explains e0 exactly, so the encompassing score has
+  // no variance and z is 0 by definition.
+  residtrace::DmTest<double> t;
+  ASSERT_TRUE(residtrace::dm_test<double>(e0, e0 / 2, &t).ok());
+  EXPECT_NEAR(t.score, 0.75, 1e-12);
+  EXPECT_GT(t.stat, 10);
+  EXPECT_LT(t.p, 1e-10);
+  EXPECT_EQ(t.z, 0.0);
+  // e1 = e0 / 2 + 0.3 noise: 0.34 of the mean square in expectation, and
+  // the correction explains part of e0.
+  ASSERT_TRUE(residtrace::dm_test<double>(e0, e0 / 2 + 0.3 * noise, &t).ok());
+  EXPECT_NEAR(t.score, 0.66, 0.05);
+  EXPECT_GT(t.stat, 10);
+  EXPECT_GT(t.z, 10);
+  EXPECT_LT(t.p_corr, 1e-10);
+  // Equal errors: no difference, nothing to test.
+  ASSERT_TRUE(residtrace::dm_test<double>(e0, e0, &t).ok());
+  EXPECT_EQ(t.score, 0.0);
+  EXPECT_EQ(t.stat, 0.0);
+  EXPECT_EQ(t.p, 1.0);
+  EXPECT_EQ(t.z, 0.0);
+  EXPECT_EQ(t.p_corr, 0.5);
+  // Two independent errors of the same size: no significant difference.
+  ASSERT_TRUE(residtrace::dm_test<double>(e0, noise, &t).ok());
+  EXPECT_GT(t.p, 0.001);
+  EXPECT_LT(t.p, 0.999);
+  EXPECT_NEAR(t.p, 0.5 * std::erfc(t.stat / std::sqrt(2.0)), 1e-15);
+  EXPECT_EQ(residtrace::dm_test<double>(e0, noise.head(10), &t).code(),
+            ErrorCode::kDimensionMismatch);
+}
+
+TEST(ResidtraceStatistics, ArWhitenerFindsTheGeneratingModel) {
+  // x_t = 1.2 x_(t-1) - 0.5 x_(t-2) + eps_t: A(q) = [1 -1.2 0.5].
+  const int N = 8000;
+  const std::vector<double> eps = white(N, 41);
+  Eigen::VectorXd x(N);
+  x(0) = eps[0];
+  x(1) = 1.2 * x(0) + eps[1];
+  for (int k = 2; k < N; ++k) x(k) = 1.2 * x(k - 1) - 0.5 * x(k - 2) + eps[k];
+  const Eigen::VectorXd a = residtrace::ar_whitener(x, 10);
+  ASSERT_EQ(a.size(), 3);
+  EXPECT_TRUE(test::MatrixNear(a, Eigen::Vector3d(1, -1.2, 0.5), 0.03));
+  // The filter A(q) returns the innovations (after the first two samples).
+  const Eigen::VectorXd w =
+      residtrace::fir<double>(Eigen::Vector3d(1, -1.2, 0.5), x);
+  for (int k = 2; k < N; ++k) EXPECT_NEAR(w(k), eps[k], 1e-12);
+}
+
+TEST(ResidtraceStatistics, WhitenessAndIndependence) {
+  const int N = 3000, m = 20;
+  const Eigen::VectorXd e = as_vector(white(N, 51));
+  const Eigen::VectorXd u = as_vector(white(N, 52));
+  residtrace::WhitenessStatistics<double> w;
+  ASSERT_TRUE(residtrace::whiteness_statistics<double>(e, u, m, 1.0, &w).ok());
+  ASSERT_TRUE(w.testable);
+  EXPECT_NEAR(w.autocorr(0), 1.0, 1e-15);
+  // Ljung-Box from the sample autocorrelations, computed here.
+  const Eigen::VectorXd ec = e.array() - e.mean();
+  double q = 0;
+  for (int k = 1; k <= m; ++k) {
+    const double rk = ec.tail(N - k).dot(ec.head(N - k)) / ec.squaredNorm();
+    q += rk * rk / (N - k);
+  }
+  EXPECT_NEAR(w.Q, double(N) * (N + 2) * q, 1e-9 * w.Q);
+  // chi^2 quantiles at 0.999: 45.3 (20 dof), 80.1 (41 dof).
+  EXPECT_LT(w.Q, 45.3);
+  EXPECT_LT(w.S_indep, 80.1);
+  // A residual that carries the input two samples back, through a
+  // coloured path: dependent, the largest correlation at lag 2.
+  Eigen::VectorXd d = 0.3 * e;
+  for (int k = 2; k < N; ++k) d(k) += u(k - 2) + (k > 2 ? 0.8 * u(k - 3) : 0);
+  ASSERT_TRUE(residtrace::whiteness_statistics<double>(d, u, m, 1.0, &w).ok());
+  Eigen::Index lag = 0;
+  w.xcorr.col(0).cwiseAbs().maxCoeff(&lag);
+  EXPECT_EQ(lag - m, 2);
+  EXPECT_GT(w.S_indep, 1000);
+  EXPECT_GT(w.Q, 45.3);  // and coloured
+}
+
+TEST(ResidtraceStatistics, UntestableResiduals) {
+  residtrace::WhitenessStatistics<double> w;
+  const Eigen::MatrixXd u = Eigen::MatrixXd::Ones(40, 1);
+  Eigen::VectorXd e = Eigen::VectorXd::Constant(40, 0.5);
+  ASSERT_TRUE(residtrace::whiteness_statistics<double>(e, u, 5, 1.0, &w).ok());
+  EXPECT_FALSE(w.testable);
+  EXPECT_NE(w.reason.find("constant"), std::string::npos);
+  e.setConstant(1e-12);
+  ASSERT_TRUE(residtrace::whiteness_statistics<double>(e, u, 5, 1.0, &w).ok());
+  EXPECT_NE(w.reason.find("rounding"), std::string::npos);
+  e(3) = std::numeric_limits<double>::infinity();
+  ASSERT_TRUE(residtrace::whiteness_statistics<double>(e, u, 5, 1.0, &w).ok());
+  EXPECT_NE(w.reason.find("not finite"), std::string::npos);
+  EXPECT_EQ(
+      residtrace::whiteness_statistics<double>(e, u.topRows(3), 5, 1.0, &w)
+          .code(),
+      ErrorCode::kDimensionMismatch);
 }
 
 }  // namespace
