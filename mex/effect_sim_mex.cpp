@@ -36,7 +36,10 @@
 //     the Ljung-Box and Haugh statistics (statistics.hpp): autocorrelations
 //     r (lags 0..m), Q, the prewhitened cross-correlations xc (lags -m..m,
 //     one column per input), S; reason is empty, or says why e is not
-//     tested (the others are then empty); options: maxlag, yscale.
+//     tested (the others are then empty); options: maxlag, yscale;
+//   a = effect_sim_mex (fname, "ar", x, options)
+//     A(q) = [1 -c1 .. -cp] of the AR model of x whose order p <= pmax has
+//     the smallest BIC (statistics.hpp); options: pmax.
 // The signals and estimates may hold non-finite values (they propagate as
 // in the recursion itself).
 #include "ctid/apps/residtrace/responses.hpp"
@@ -284,6 +287,21 @@ void whiteness_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs >= 5) plhs[4] = mxCreateString(w.reason.c_str());
 }
 
+void ar_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+               const mxArray* prhs[]) {
+  if (nrhs != 4) g.fail("badInput", "ar takes (fname, 'ar', x, options)");
+  if (nlhs > 1) g.fail("badInput", "ar has one output");
+  const Eigen::VectorXd x = any_column(g, prhs[2], "x");
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const int pmax = opt.integer("pmax");
+  opt.finish();
+  if (pmax < 0) g.fail("badOption", "option 'pmax' must be >= 0");
+  if (x.size() < 1) g.fail("badInput", "x must not be empty");
+  const Eigen::VectorXd a = ctid::residtrace::ar_whitener<double>(x, pmax);
+  plhs[0] = ctid::mex::make_output_matrix(1, a.size());
+  Eigen::Map<Eigen::VectorXd>(mxGetPr(plhs[0]), a.size()) = a;
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -301,6 +319,8 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             dmtest_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "whiteness") {
             whiteness_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "ar") {
+            ar_method(g, nlhs, plhs, nrhs, prhs);
           } else {
             g.fail("badInput", "unknown method '" + method + "'");
           }

@@ -23,11 +23,15 @@
 //     independence whatever the colour of e). The chi^2 tail
 //     probabilities are left to the caller.
 //
+//   ar_whitener: the AR model of a series by least squares, its order
+//     chosen by BIC (the prewhitening above, and the noise model of
+//     residtrace's coloured-noise candidate).
+//
 // Non-finite data propagate as in the formulas; clamps and maxima ignore
 // a NaN operand (as Octave's min and max do).
 #pragma once
 
-#include <Eigen/QR>
+#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -187,7 +191,8 @@ Vector<S> ar_whitener(const Vector<S>& x, int pmax) {
       Matrix<S> X(N - p, p);
       for (int i = 1; i <= p; ++i) X.col(i - 1) = x.segment(p - i, N - p);
       const Vector<S> target = x.tail(N - p);
-      const Vector<S> c = X.completeOrthogonalDecomposition().solve(target);
+      const Vector<S> c =
+          X.bdcSvd(Eigen::ComputeThinU | Eigen::ComputeThinV).solve(target);
       s2 = detail::sum_squares<S>(target - X * c) / static_cast<S>(N - p);
       ap.tail(p) = -c;
     }
