@@ -175,6 +175,9 @@ function test_residtrace_simulate ()
   fails (@() effect_sim_mex ("residtrace", "dmtest", ones (5, 1),
                              ones (4, 1), struct ()),
          "residtrace:dimensionMismatch");
+  fails (@() effect_sim_mex ("residtrace", "ar", ones (5, 1),
+                             struct ("pmax", -1)),
+         "residtrace:badOption");
   printf ("test_residtrace_simulate: all checks passed\n");
 endfunction
 
