@@ -15,6 +15,9 @@
 
 #include "ctid/adaptation/nlopt_minimizer.hpp"
 #include "ctid/adaptation/qn_ml.hpp"
+#include "ctid/apps/residtrace/responses.hpp"
+#include "ctid/apps/residtrace/statistics.hpp"
+#include "ctid/apps/residtrace/track.hpp"
 #include "ctid/apps/throttle.hpp"
 #include "ctid/recursive/convergence_detector.hpp"
 #include "ctid/recursive/recursive_arx.hpp"

@@ -14,12 +14,140 @@
 // level), y_off, substeps; in closed loop controller_num, controller_den,
 // r1, r2 (N-by-1 each), s (N-by-1 sampled output terms, optional) and poly
 // ([c2 c3]); for per-sample coefficients f_t (N-by-n) and b_t (N-by-nm).
+//
+// The other computations of residtrace (core/include/ctid/apps/residtrace/),
+// by a method name in second place:
+//
+//   D = effect_sim_mex (fname, "filter", x, f, options)
+//     p^i x / F(p), i = 0..n (N-by-(n+1)), F = p^n + f1 p^(n-1) + .. + fn;
+//     options: ts, rule ('zoh' | 'foh');
+//   X = effect_sim_mex (fname, "free", N, f, options)
+//     the free responses of F(p) h = 0 (N-by-n); options: ts;
+//   [thm, V, P] = effect_sim_mex (fname, "track", target, Phi, Z, f,
+//                                 theta0, P0, Qn, options)
+//     the tracking recursion (track.hpp); options: free (indices of the
+//     tracked coefficients of f, 1-based), r (integrators), k0 (first
+//     tracked sample, 1-based);
+//   v = effect_sim_mex (fname, "dmtest", e0, e1, options)
+//     the Diebold-Mariano and encompassing tests (statistics.hpp), v =
+//     [score stat p bandwidth z p_corr]; options: none (a struct);
+//   [r, Q, xc, S, reason] = effect_sim_mex (fname, "whiteness", e, u,
+//                                           options)
+//     the Ljung-Box and Haugh statistics (statistics.hpp): autocorrelations
+//     r (lags 0..m), Q, the prewhitened cross-correlations xc (lags -m..m,
+//     one column per input), S; reason is empty, or says why e is not
+//     tested (the others are then empty); options: maxlag, yscale;
+//   a = effect_sim_mex (fname, "ar", x, options)
+//     A(q) = [1 -c1 .. -cp] of the AR model of x whose order p <= pmax has
+//     the smallest BIC (statistics.hpp); options: pmax.
+// The signals and estimates may hold non-finite values (they propagate as
+// in the recursion itself).
+#include "ctid/apps/residtrace/responses.hpp"
+#include "ctid/apps/residtrace/statistics.hpp"
+#include "ctid/apps/residtrace/track.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
+
+// A real double matrix of any values (non-finite ones too).
+Eigen::Map<const Eigen::MatrixXd> any_matrix(const Gateway& g, const mxArray* a,
+                                             const char* what, long rows = -1,
+                                             long cols = -1) {
+  const double* p = g.matrix(a, what, rows, cols, false);
+  return Eigen::Map<const Eigen::MatrixXd>(
+      p, static_cast<Eigen::Index>(mxGetM(a)),
+      static_cast<Eigen::Index>(mxGetN(a)));
+}
+
+// f as a column: a row or column vector.
+Eigen::VectorXd read_f(const Gateway& g, const mxArray* a) {
+  g.require_real_double(a, "f");
+  if (mxGetM(a) > 1 && mxGetN(a) > 1) g.fail("badInput", "f must be a vector");
+  const auto f = any_matrix(g, a, "f");
+  return Eigen::Map<const Eigen::VectorXd>(f.data(), f.size());
+}
+
+void filter_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                   const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "filter takes (fname, 'filter', x, f, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "filter has one output");
+  g.require_real_double(prhs[2], "x");
+  if (mxGetN(prhs[2]) > 1) g.fail("badInput", "x must be a column vector");
+  const long n = static_cast<long>(mxGetM(prhs[2]));
+  const auto x = any_matrix(g, prhs[2], "x", n, -1);
+  const Eigen::VectorXd f = read_f(g, prhs[3]);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("ts");
+  const ctid::InterSample rule = opt.choice<ctid::InterSample>(
+      "rule",
+      {{"zoh", ctid::InterSample::kZoh}, {"foh", ctid::InterSample::kFoh}},
+      ctid::InterSample::kZoh);
+  if (!opt.has("rule")) g.fail("badOption", "option 'rule' is missing");
+  opt.finish();
+  Eigen::MatrixXd out;
+  g.check(ctid::residtrace::filtered_derivatives<double>(f, ts, rule, x.data(),
+                                                         n, out));
+  plhs[0] = ctid::mex::make_output_matrix(out.rows(), out.cols());
+  Eigen::Map<Eigen::MatrixXd>(mxGetPr(plhs[0]), out.rows(), out.cols()) = out;
+}
+
+void free_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                 const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "free takes (fname, 'free', N, f, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "free has one output");
+  const int n = g.integer(prhs[2], "N");
+  const Eigen::VectorXd f = read_f(g, prhs[3]);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("ts");
+  opt.finish();
+  Eigen::MatrixXd out;
+  g.check(ctid::residtrace::free_responses<double>(f, ts, n, out));
+  plhs[0] = ctid::mex::make_output_matrix(out.rows(), out.cols());
+  Eigen::Map<Eigen::MatrixXd>(mxGetPr(plhs[0]), out.rows(), out.cols()) = out;
+}
+
+void track_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                  const mxArray* prhs[]) {
+  if (nrhs != 10) {
+    g.fail("badInput",
+           "track takes (fname, 'track', target, Phi, Z, f, theta0, P0, Qn, "
+           "options)");
+  }
+  if (nlhs > 3) g.fail("badInput", "track has at most 3 outputs");
+  const auto target = any_matrix(g, prhs[2], "target", -1, 1);
+  const auto Phi = any_matrix(g, prhs[3], "Phi");
+  const auto Z = any_matrix(g, prhs[4], "Z");
+  ctid::residtrace::TrackConfig<double> c;
+  c.f = read_f(g, prhs[5]);
+  const auto theta0 = any_matrix(g, prhs[6], "theta0");
+  c.theta0 = Eigen::Map<const Eigen::VectorXd>(theta0.data(), theta0.size());
+  c.P0 = any_matrix(g, prhs[7], "P0");
+  c.Qn = any_matrix(g, prhs[8], "Qn");
+  ctid::mex::OptionsReader opt(g, prhs[9]);
+  for (const int i : opt.integer_vector("free")) c.free.push_back(i - 1);
+  c.integrators = opt.integer("r");
+  c.first = opt.integer("k0") - 1;
+  opt.finish();
+  ctid::residtrace::TrackResult<double> result;
+  g.check(ctid::residtrace::track<double>(c, target, Phi, Z, &result));
+  plhs[0] =
+      ctid::mex::make_output_matrix(result.theta.rows(), result.theta.cols());
+  Eigen::Map<Eigen::MatrixXd>(mxGetPr(plhs[0]), result.theta.rows(),
+                              result.theta.cols()) = result.theta;
+  if (nlhs >= 2) plhs[1] = mxCreateDoubleScalar(result.V);
+  if (nlhs >= 3) {
+    plhs[2] = ctid::mex::make_output_matrix(result.P.rows(), result.P.cols());
+    Eigen::Map<Eigen::MatrixXd>(mxGetPr(plhs[2]), result.P.rows(),
+                                result.P.cols()) = result.P;
+  }
+}
 
 void effect_sim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
@@ -97,10 +225,107 @@ void effect_sim_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                                               mxGetPr(plhs[0]), u1));
 }
 
+// A column of any values.
+Eigen::VectorXd any_column(const Gateway& g, const mxArray* a,
+                           const char* what) {
+  const auto m = any_matrix(g, a, what, -1, 1);
+  return m.col(0);
+}
+
+void dmtest_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                   const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "dmtest takes (fname, 'dmtest', e0, e1, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "dmtest has one output");
+  const Eigen::VectorXd e0 = any_column(g, prhs[2], "e0");
+  const Eigen::VectorXd e1 = any_column(g, prhs[3], "e1");
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  opt.finish();
+  ctid::residtrace::DmTest<double> t;
+  g.check(ctid::residtrace::dm_test<double>(e0, e1, &t));
+  plhs[0] = ctid::mex::make_output_matrix(1, 6);
+  double* v = mxGetPr(plhs[0]);
+  v[0] = t.score;
+  v[1] = t.stat;
+  v[2] = t.p;
+  v[3] = static_cast<double>(t.bandwidth);
+  v[4] = t.z;
+  v[5] = t.p_corr;
+}
+
+void whiteness_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                      const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "whiteness takes (fname, 'whiteness', e, u, options)");
+  }
+  if (nlhs > 5) g.fail("badInput", "whiteness has at most 5 outputs");
+  const Eigen::VectorXd e = any_column(g, prhs[2], "e");
+  const long n = static_cast<long>(e.size());
+  g.require_real_double(prhs[3], "u");
+  Eigen::MatrixXd u(n, 0);
+  if (mxGetNumberOfElements(prhs[3]) > 0) u = any_matrix(g, prhs[3], "u", n);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const int maxlag = opt.integer("maxlag");
+  const double yscale = opt.scalar("yscale", 0.0);
+  opt.finish();
+  ctid::residtrace::WhitenessStatistics<double> w;
+  g.check(
+      ctid::residtrace::whiteness_statistics<double>(e, u, maxlag, yscale, &w));
+  auto put = [](const Eigen::MatrixXd& m) {
+    mxArray* a = ctid::mex::make_output_matrix(m.rows(), m.cols());
+    Eigen::Map<Eigen::MatrixXd>(mxGetPr(a), m.rows(), m.cols()) = m;
+    return a;
+  };
+  plhs[0] = put(w.autocorr);
+  if (nlhs >= 2)
+    plhs[1] = put(Eigen::MatrixXd::Constant(w.testable, w.testable, w.Q));
+  if (nlhs >= 3) plhs[2] = put(w.xcorr);
+  if (nlhs >= 4) {
+    plhs[3] = put(Eigen::MatrixXd::Constant(w.testable, w.testable, w.S_indep));
+  }
+  if (nlhs >= 5) plhs[4] = mxCreateString(w.reason.c_str());
+}
+
+void ar_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+               const mxArray* prhs[]) {
+  if (nrhs != 4) g.fail("badInput", "ar takes (fname, 'ar', x, options)");
+  if (nlhs > 1) g.fail("badInput", "ar has one output");
+  const Eigen::VectorXd x = any_column(g, prhs[2], "x");
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const int pmax = opt.integer("pmax");
+  opt.finish();
+  if (pmax < 0) g.fail("badOption", "option 'pmax' must be >= 0");
+  if (x.size() < 1) g.fail("badInput", "x must not be empty");
+  const Eigen::VectorXd a = ctid::residtrace::ar_whitener<double>(x, pmax);
+  plhs[0] = ctid::mex::make_output_matrix(1, a.size());
+  Eigen::Map<Eigen::VectorXd>(mxGetPr(plhs[0]), a.size()) = a;
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway(
-      "residtrace", {"residtrace"}, nrhs, prhs,
-      [&](const Gateway& g) { effect_sim_gateway(g, nlhs, plhs, nrhs, prhs); });
+      "residtrace", {"residtrace"}, nrhs, prhs, [&](const Gateway& g) {
+        if (nrhs >= 2 && mxIsChar(prhs[1])) {
+          const std::string method = g.text(prhs[1], "the method");
+          if (method == "filter") {
+            filter_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "free") {
+            free_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "track") {
+            track_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "dmtest") {
+            dmtest_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "whiteness") {
+            whiteness_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "ar") {
+            ar_method(g, nlhs, plhs, nrhs, prhs);
+          } else {
+            g.fail("badInput", "unknown method '" + method + "'");
+          }
+          return;
+        }
+        effect_sim_gateway(g, nlhs, plhs, nrhs, prhs);
+      });
 }

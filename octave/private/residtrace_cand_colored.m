@@ -5,7 +5,8 @@
 ## @deftypefn {} {@var{c} =} residtrace_cand_colored (@var{cur}, @var{ctx})
 ## Coloured-noise candidate of @code{residtrace}: an AR noise model
 ## A(q) e = eps for the residual (order <= 20 by BIC, least squares on the
-## estimation residual). A noise model does not change the simulated
+## estimation residual; the AR fit of the core, core/include/ctid/apps/
+## residtrace/statistics.hpp). A noise model does not change the simulated
 ## output: its validation output is the one-step-ahead prediction of y
 ## (model output plus the predicted residual from the past validation
 ## residuals), so its "after" RMSE is a prediction RMSE, not a simulation
@@ -24,24 +25,8 @@ function c = residtrace_cand_colored (cur, ctx)
     c.reason = "too few samples for a noise model";
     return;
   endif
-  best = Inf; a = 1; p_best = 0;
-  for p = 0:pmax
-    if (p == 0)
-      s2 = mean (e .^ 2); ap = 1;
-    else
-      X = zeros (N - p, p);
-      for i = 1:p
-        X(:, i) = e(p+1-i:N-i);
-      endfor
-      cf = X \ e(p+1:N);
-      s2 = mean ((e(p+1:N) - X * cf) .^ 2);
-      ap = [1, -cf.'];
-    endif
-    bic = N * log (s2) + p * log (N);
-    if (bic < best)
-      best = bic; a = ap; p_best = p;
-    endif
-  endfor
+  a = effect_sim_mex ("residtrace", "ar", e(:), struct ("pmax", pmax));
+  p_best = numel (a) - 1;
   if (p_best == 0)
     c.reason = "an AR model does not improve on white noise (BIC)";
     return;

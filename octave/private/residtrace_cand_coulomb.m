@@ -98,7 +98,7 @@ function c = residtrace_cand_coulomb (cur, ctx)
   c.variant = m.variant_;
   c.nadd = m.np - cur.np;
   Fp = residtrace_prefilter (cur.F, ctx.wlo);
-  sf = residtrace_modal (Fp, s, ctx.D.Ts, "zoh")(:, 1);
+  sf = residtrace_filter (Fp, s, ctx.D.Ts, "zoh")(:, 1);
   r = corr_coef (cur.e_est, sf);
   c.evidence = struct ("term", "b_s (gain of sign(v))", "value", val,
                        "std", sd, "physical", -val / bu,

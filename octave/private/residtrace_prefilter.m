@@ -9,8 +9,7 @@
 ## Roots of @var{F} at the origin (integrators of the model) are moved to
 ## -@var{wlo}; roots in the right half-plane are reflected (as
 ## @code{srivc} does); every root gets a damping of at least 1e-3; roots
-## closer than 1e-2 of their modulus to another are moved apart, so that
-## the partial fractions of @code{residtrace_modal} stay accurate. Only
+## closer than 1e-2 of their modulus to another are moved apart. Only
 ## the prefilter changes: the model keeps its own F.
 ## @end deftypefn
 

@@ -19,6 +19,9 @@
 ## by the noise variance, @var{P0} likewise. An update that makes F
 ## unstable (apart from the model's integrators) is not accepted, as
 ## the stability test of the thesis' sec. 3.2 with "keep" (P still is).
+## The regression is built here; the recursion is the core's
+## (core/include/ctid/apps/residtrace/track.hpp, through
+## @code{effect_sim_mex}).
 ##
 ## @var{thm}(k, :) is the estimate after sample k - 1 (one sample behind,
 ## so that sample k is never explained by itself; before sample @var{k0},
@@ -33,53 +36,15 @@ function [thm, V, P] = residtrace_track (model, D, ctx, Qn, th0, P0, k0)
     k0 = 1;
   endif
   [lhs, Phi, Z] = regression (model, D, ctx);
-  [N, np] = size (Phi);
-  free = find (! model.fixed);
   F = model.F;
   n = numel (F) - 1;
   r = 0;
   while (r < n && model.fixed(n-r) && F(n-r+1) == 0)
     r++;
   endwhile
-  th = th0(:);
-  P = P0;
-  thm = zeros (N, np);
-  eps2 = zeros (N, 1);
-  h = ones (N, 1);
-  thm(1:k0-1, :) = repmat (th.', k0 - 1, 1);
-  Fk = F;
-  nf = numel (free);
-  nr = n - r;
-  for k = k0:N
-    thm(k, :) = th.';
-    phi = Phi(k, :).';
-    z = Z(k, :).';
-    Pz = P * z;
-    den = 1 + phi.' * Pz;
-    e = lhs(k) - phi.' * th;
-    K = Pz / den;
-    th_new = th + K * e;
-    P += Qn - K * (phi.' * P);
-    Fk(1 + free) = th_new(1:nf);
-    switch (nr)                         # Hurwitz test of F1 (F = p^r F1)
-      case 1
-        ok = Fk(2) > 0;
-      case 2
-        ok = Fk(2) > 0 && Fk(3) > 0;
-      case 3
-        ok = Fk(2) > 0 && Fk(3) > 0 && Fk(4) > 0 && Fk(2) * Fk(3) > Fk(4);
-      otherwise
-        ok = residtrace_hurwitz (Fk(1:end-r));
-    endswitch
-    if (ok)
-      th = th_new;
-    endif
-    eps2(k) = e ^ 2;
-    h(k) = abs (den);
-  endfor
-  skip = min (N - 1, k0 - 1 + max (10, round ((N - k0 + 1) / 50)));
-  s2 = mean (eps2(skip+1:end) ./ h(skip+1:end));
-  V = (N - skip) * log (s2) + sum (log (h(skip+1:end)));
+  o = struct ("free", find (! model.fixed), "r", r, "k0", k0);
+  [thm, V, P] = effect_sim_mex ("residtrace", "track", lhs, Phi, Z,
+                                F(2:end), th0(:), P0, Qn, o);
 endfunction
 
 function [lhs, Phi, Z] = regression (model, D, ctx)
@@ -113,10 +78,10 @@ function [lhs, Phi, Z, x] = regression_at (F, B, y, W, ch, Ts, spec, wlo,
                                            r, free, use_iv)
   n = spec.n;
   Fp = residtrace_prefilter (F, wlo);
-  Y = residtrace_modal (Fp, y, Ts, "foh");
+  Y = residtrace_filter (Fp, y, Ts, "foh");
   Phi_u = [];
   for j = 1:numel (ch)
-    D = residtrace_modal (Fp, W{j}, Ts, ch(j).rule);
+    D = residtrace_filter (Fp, W{j}, Ts, ch(j).rule);
     Phi_u = [Phi_u, D(:, ch(j).nb:-1:1)];      # p^(nb-1) .. p^0
   endfor
   lhs = Y(:, n+1);
@@ -144,7 +109,7 @@ function [Z, x] = instruments (F, W, ch, B, Fp, Ts, wlo, r, n, free)
   if (numel (F1) > 1)
     F1p = residtrace_prefilter (F1, wlo);
     for j = 1:numel (ch)
-      D = residtrace_modal (F1p, W{j}, Ts, ch(j).rule);
+      D = residtrace_filter (F1p, W{j}, Ts, ch(j).rule);
       xr += D(:, ch(j).nb:-1:1) * B{j}(:);
     endfor
   else
@@ -152,7 +117,7 @@ function [Z, x] = instruments (F, W, ch, B, Fp, Ts, wlo, r, n, free)
       xr += W{j} * B{j}(end);            # F1 = 1: x_r = B w (nb = 1)
     endfor
   endif
-  X = residtrace_modal (Fp, xr, Ts, "foh");
+  X = residtrace_filter (Fp, xr, Ts, "foh");
   Z = -X(:, n+1-free-r);
   x = xr;
   for k = 1:r

@@ -13,12 +13,12 @@
 ## @end deftypefn
 
 function v = residtrace_velocity (y, Ts, lambda, is_y)
-  D = residtrace_modal ([1 lambda], y, Ts, "foh");
+  D = residtrace_filter ([1 lambda], y, Ts, "foh");
   if (is_y)
     f = lambda * D(:, 1);
   else
     f = lambda * D(:, 2);
   endif
-  b = residtrace_modal ([1 lambda], flipud (f), Ts, "foh");
+  b = residtrace_filter ([1 lambda], flipud (f), Ts, "foh");
   v = flipud (lambda * b(:, 1));
 endfunction

@@ -22,7 +22,10 @@
 ## @code{indep_p}, @code{autocorr} (lags
 ## 0..m), @code{xcorr} (lags -m..m, both prewhitened, one column per
 ## input),
-## @code{bound}.
+## @code{bound}. The statistics are the core's
+## (core/include/ctid/apps/residtrace/statistics.hpp, through
+## @code{effect_sim_mex}); their chi^2 tail probabilities are computed
+## here.
 ## @end deftypefn
 
 function w = residtrace_whiteness (e, u, maxlag, yscale)
@@ -34,80 +37,18 @@ function w = residtrace_whiteness (e, u, maxlag, yscale)
   w = struct ("testable", true, "reason", "", "white_p", NaN,
               "indep_p", NaN, "autocorr", [], "xcorr", [],
               "bound", 2.576 / sqrt (N), "maxlag", m);
-  if (any (! isfinite (e)))
+  [r, Q, xc, S, reason] = effect_sim_mex ("residtrace", "whiteness", e(:), u,
+                                          struct ("maxlag", m,
+                                                  "yscale", yscale));
+  if (! isempty (reason))
     w.testable = false;
-    w.reason = "the residual is not finite (the model output diverges)";
+    w.reason = reason;
     return;
   endif
-  ec = e - mean (e);
-  if (sqrt (mean (e .^ 2)) <= 1e-10 * yscale)
-    w.testable = false;
-    w.reason = "the residual is zero to rounding: nothing left to test";
-    return;
-  endif
-  if (all (ec == 0))
-    w.testable = false;
-    w.reason = "the residual is constant: nothing left to test";
-    return;
-  endif
-  r = zeros (m + 1, 1);
-  s0 = sum (ec .^ 2);
-  for k = 0:m
-    r(k+1) = sum (ec(1+k:end) .* ec(1:end-k)) / s0;
-  endfor
   w.autocorr = r;
-  Q = N * (N + 2) * sum (r(2:end) .^ 2 ./ (N - (1:m)'));
   w.white_p = chi2_sf (Q, m);
-  nu = columns (u);
-  w.xcorr = zeros (2 * m + 1, nu);
-  S = 0;
-  ew = filter (ar_whitener (ec, min (20, floor (N / 20))), 1, ec);
-  for j = 1:nu
-    uc = u(:, j) - mean (u(:, j));
-    if (all (uc == 0))
-      continue;
-    endif
-    a = ar_whitener (uc, min (10, floor (N / 20)));
-    uw = filter (a, 1, uc);
-    scale = sqrt (sum (uw .^ 2) * sum (ew .^ 2));
-    for i = 1:2*m+1
-      k = i - m - 1;               # e(t) against u(t - k)
-      if (k >= 0)
-        c = sum (ew(1+k:end) .* uw(1:end-k));
-      else
-        c = sum (ew(1:end+k) .* uw(1-k:end));
-      endif
-      w.xcorr(i, j) = c / scale;
-    endfor
-    S += N * sum (w.xcorr(:, j) .^ 2);
-  endfor
-  w.indep_p = chi2_sf (S, nu * (2 * m + 1));
-endfunction
-
-## A(q) of an AR model of x, order <= pmax chosen by BIC (least squares).
-function a = ar_whitener (x, pmax)
-  N = numel (x);
-  best = Inf;
-  a = 1;
-  for p = 0:pmax
-    if (p == 0)
-      s2 = mean (x .^ 2);
-      ap = 1;
-    else
-      X = zeros (N - p, p);
-      for i = 1:p
-        X(:, i) = x(p+1-i:N-i);
-      endfor
-      c = X \ x(p+1:N);
-      s2 = mean ((x(p+1:N) - X * c) .^ 2);
-      ap = [1, -c.'];
-    endif
-    bic = N * log (max (s2, realmin)) + p * log (N);
-    if (bic < best)
-      best = bic;
-      a = ap;
-    endif
-  endfor
+  w.xcorr = xc;
+  w.indep_p = chi2_sf (S, columns (u) * (2 * m + 1));
 endfunction
 
 function p = chi2_sf (x, k)

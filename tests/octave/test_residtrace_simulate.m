@@ -19,7 +19,10 @@
 ## @item a channel fed by the output itself, (y + y_off)^1 with numerator
 ## b: the linear model with F(p) - b and a constant input b y_off, which
 ## the sub-stepped loop approaches as the sub-steps shrink (error of order
-## h: at least 5 times smaller from 10 to 100 sub-steps, below 1 % at 100).
+## h: at least 5 times smaller from 10 to 100 sub-steps, below 1 % at 100);
+## @item the gateway's other methods: the filtered derivatives p^i/F(p) x
+## (ZOH and FOH) and the free responses against c2d and lsim, to 1e-9
+## relative; bad arguments give identified errors.
 ## @end itemize
 ## @end deftypefn
 
@@ -136,6 +139,45 @@ function test_residtrace_simulate ()
   bad = o; bad.b = [1; 2];
   fails (@() effect_sim_mex ("residtrace", u, bad),
          "residtrace:dimensionMismatch");
+
+  ## 6. the gateway's filtered derivatives and free responses
+  ## (core/include/ctid/apps/residtrace/responses.hpp) against c2d/lsim:
+  ## p^i / F(p) x for i < n, the signal held (ZOH) or linear (FOH, from 0
+  ## at the first sample, where the filter is at rest); the free response
+  ## from the unit initial condition h^(l)(0) = 1 by lsim from that state
+  F3 = [1 3.5 6 4];
+  t = (0:N-1)' * Ts;
+  xs = u(:, 1);
+  xs(1) = 0;
+  for rule = {"zoh", "foh"}
+    D = effect_sim_mex ("residtrace", "filter", xs, F3(2:end),
+                        struct ("ts", Ts, "rule", rule{1}));
+    for i = 0:2
+      ref = lsim (c2d (tf ([1, zeros(1, i)], F3), Ts, rule{1}), xs, t);
+      check (sprintf ("filter %s, p^%d / F", rule{1}, i), D(:, i+1), ref,
+             1e-9);
+    endfor
+  endfor
+  X = effect_sim_mex ("residtrace", "free", N, F(2:end), struct ("ts", Ts));
+  A = [0 1; -F(3) -F(2)];
+  for l = 1:2
+    e = zeros (2, 1);
+    e(l) = 1;
+    ref = lsim (c2d (ss (A, [0; 1], [1 0], 0), Ts), zeros (N, 1), t, e);
+    check (sprintf ("free response %d", l), X(:, l), ref, 1e-9);
+  endfor
+  fails (@() effect_sim_mex ("residtrace", "nomethod", u, o),
+         "residtrace:badInput");
+  fails (@() effect_sim_mex ("residtrace", "track", ones (5, 1), ones (5, 2),
+                             ones (4, 2), [1 2], [0; 0], eye (2), eye (2),
+                             struct ("free", 1, "r", 0, "k0", 1)),
+         "residtrace:dimensionMismatch");
+  fails (@() effect_sim_mex ("residtrace", "dmtest", ones (5, 1),
+                             ones (4, 1), struct ()),
+         "residtrace:dimensionMismatch");
+  fails (@() effect_sim_mex ("residtrace", "ar", ones (5, 1),
+                             struct ("pmax", -1)),
+         "residtrace:badOption");
   printf ("test_residtrace_simulate: all checks passed\n");
 endfunction
 

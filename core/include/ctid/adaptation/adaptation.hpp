@@ -193,6 +193,11 @@ class ParameterUpdate {
     guard_.reset(P_);
   }
 
+  // Puts back an earlier estimate and leaves P as it is: a step whose
+  // estimate failed a stability test is not accepted (thesis eq. 3.10,
+  // "keep the last stable one").
+  void set_theta(const Vector<S>& theta) { theta_ = theta; }
+
   // Least-squares step (zeta = phi). Returns the prediction error
   // target - phi^T theta(t_(k-1)), eq. (1.55).
   template <typename Derived>
