@@ -272,6 +272,11 @@ class PotterUpdate {
 #pragma GCC unroll 8
       for (int i = 0; i < n; ++i) a[(n + k) * n + i] = q[i * r + k];
     }
+    if constexpr (N != Eigen::Dynamic) {
+      // The local array's rows below n + r are never read; defined so
+      // that the compiler sees no uninitialised value.
+      for (int i = (n + r) * n; i < 2 * n * n; ++i) a[i] = 0;
+    }
     triangularize<N>(a, n + r);
 #pragma GCC unroll 8
     for (int k = 0; k < n; ++k) {
