@@ -289,10 +289,9 @@ IvStepCounts expect_iv_step_is_textbook(int np, bool kalman, bool fixed_size,
     EXPECT_LE(double((step.gain() - textbook.gain()).norm()),
               tol * std::max(double(textbook.gain().norm()), gain_scale))
         << what << ", step " << k;
-    EXPECT_NEAR(double(step.innovation_scale()),
-                double(textbook.innovation_scale()),
-                tol * std::max(1.0, p_norm * double(phi.norm()) *
-                                        double(zeta.norm())))
+    EXPECT_NEAR(
+        double(step.innovation_scale()), double(textbook.innovation_scale()),
+        tol * std::max(1.0, p_norm * double(phi.norm()) * double(zeta.norm())))
         << what << ", step " << k;
     EXPECT_NEAR(double(error_step), double(error_textbook),
                 tol * std::max(1.0, std::abs(double(error_textbook))))
@@ -310,14 +309,14 @@ TEST(ParameterUpdate, IvStepIsTheTextbookFormulaAtEitherSize) {
   for (int np = 1; np <= kMaxFixedParameters; ++np) {
     for (const bool kalman : {true, false}) {
       for (const bool fixed_size : {true, false}) {
-      const IvStepCounts d =
-          expect_iv_step_is_textbook<double>(np, kalman, fixed_size, 1e-12);
-      const IvStepCounts f =
-          expect_iv_step_is_textbook<float>(np, kalman, fixed_size, float_tol);
-      double_total.repairs += d.repairs;
-      double_total.ceilings += d.ceilings;
-      float_total.repairs += f.repairs;
-      float_total.ceilings += f.ceilings;
+        const IvStepCounts d =
+            expect_iv_step_is_textbook<double>(np, kalman, fixed_size, 1e-12);
+        const IvStepCounts f = expect_iv_step_is_textbook<float>(
+            np, kalman, fixed_size, float_tol);
+        double_total.repairs += d.repairs;
+        double_total.ceilings += d.ceilings;
+        float_total.repairs += f.repairs;
+        float_total.ceilings += f.ceilings;
       }
     }
   }

@@ -667,13 +667,12 @@ struct IvRunner {
 // the test prints the largest such difference of each case. The
 // adaptation steps are one source at both sizes (step_size.hpp), so the
 // two paths differ by the filter kernels alone; the window's largest
-// differences are at most 2.0e-11 (RSRIVC-KF, RIVSVF-KF na = 4), 1.6e-11 (their FF
-// forms) and 7.9e-12 (RLSSVF-FF na = 4); after it the tolerance holds. YH
-// is compared from 2 kSettle on: the frozen model's state carries the
-// differences of the settling window forward and forgets them only as fast
-// as its slowest pole (real part -0.6 for na = 4): measured 4.8e-12
-// relative at sample 200 (RSRIVC-KF and RIVSVF-KF, na = 4), when the
-// estimates already agree.
+// differences are at most 2.0e-11 (RSRIVC-KF, RIVSVF-KF na = 4), 1.6e-11 (their
+// FF forms) and 7.9e-12 (RLSSVF-FF na = 4); after it the tolerance holds. YH is
+// compared from 2 kSettle on: the frozen model's state carries the differences
+// of the settling window forward and forgets them only as fast as its slowest
+// pole (real part -0.6 for na = 4): measured 4.8e-12 relative at sample 200
+// (RSRIVC-KF and RIVSVF-KF, na = 4), when the estimates already agree.
 constexpr Eigen::Index kSettle = 200;
 template <typename S, typename Config, typename Runner>
 void expect_paths_agree(const TestRecord& data, double ts, const Config& config,

@@ -175,8 +175,8 @@ class ParameterUpdate {
       return &ParameterUpdate::iv_step<decltype(size)::value>;
     });
     kalman_ = std::holds_alternative<KalmanAdaptation<S>>(adaptation_);
-    offset_ = std::visit([](const auto& a) { return a.gain_offset(); },
-                         adaptation_);
+    offset_ =
+        std::visit([](const auto& a) { return a.gain_offset(); }, adaptation_);
     scale_ = std::visit([](const auto& a) { return a.covariance_scale(); },
                         adaptation_);
     guard_.configure(np, covariance_guard);
