@@ -1,12 +1,14 @@
 ## Copyright (C) the ctid authors
 ## SPDX-License-Identifier: BSD-3-Clause
 
-## Side by side, in one run, for model orders na = 1..4: the fixed-size
-## adaptation steps (the IV step of adaptation.hpp, PotterSVF of
+## Side by side, in one run, for model orders na = 1..4: the adaptation
+## steps at compile-time size (the IV step of adaptation.hpp, PotterSVF of
 ## potter.hpp, LMR-RLSSVF of lmr.hpp, with the fixed-size filter kernels)
-## against the dynamic-size reference, in the core (bench_rsrivc) and end
-## to end through the gateways (riv_mex, rlssvf_mex, option kernels =
-## "fixed" or "dynamic"), and against plain-Octave implementations
+## against the same steps at runtime size with the dynamic-size filter
+## code (one source for both sizes, step_size.hpp), in the core
+## (bench_rsrivc) and end to end through the gateways (riv_mex,
+## rlssvf_mex, option kernels = "fixed" or "dynamic"), and against
+## plain-Octave implementations
 ## (bench/rsrivc_plain_octave.m, bench/rlssvf_forms_plain_octave.m).
 ##
 ## Usage, from the repository root, after building riv_mex and rlssvf_mex

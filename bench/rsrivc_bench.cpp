@@ -30,9 +30,10 @@
 //   BM_RlsSvfUpdate_Lmr   the same, LMR-RLSSVF (eq. 3.82), lambda = 0.999,
 //                         Gamma = 1e-3 I.
 // The fixed-size path (dynamic:0) takes the fixed-size filter kernels and
-// the fixed-size adaptation steps (adaptation.hpp: the least-squares and
-// IV steps; potter.hpp, lmr.hpp); dynamic:1 takes the dynamic-size code
-// for both.
+// the adaptation steps at compile-time size (adaptation.hpp: the
+// least-squares and IV steps; potter.hpp, lmr.hpp); dynamic:1 takes the
+// dynamic-size filter code and the same adaptation steps at runtime size
+// (one source for both sizes, step_size.hpp).
 //
 // True systems b0/A(p) of unit static gain (na = 2: 4 / (p^2 + 2.4 p + 4)),
 // lambda_svf = 3.2, RLSSVF until tsiv = 100 s, then IV. Each iteration is

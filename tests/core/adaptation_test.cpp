@@ -12,6 +12,7 @@
 
 #include "allocation_counter.hpp"  // replaces operator new: one TU only
 #include "test_util.hpp"
+#include "textbook_update.hpp"
 
 namespace ctid {
 namespace {
@@ -208,42 +209,43 @@ TEST(ParameterUpdate, ForgettingFactorKeepsPSymmetricOverLongRuns) {
   }
 }
 
-// The fixed-size IV step (ParameterUpdate::update_fixed_iv, eqs. 2.29/
-// 2.30) against the dynamic one on the same regressors and instruments,
-// step by step, np = 1..8 (every count orders 1-4 give): theta, P, the
-// gain, the innovation scale and the prediction error to `tol` relative
-// to their norms, the covariance guard's action identical at every step.
+// The IV step (eqs. 2.29/2.30) at compile-time size np and at runtime
+// size against the textbook formula evaluated with Eigen
+// (textbook_update.hpp) on the same regressors and instruments, step by
+// step, np = 1..8 (every count orders 1-4 give): theta, P, the gain, the
+// innovation scale and the prediction error to `tol` relative to their
+// norms, the covariance guard's action identical at every step.
 // Instruments well correlated with the regressors (zeta = phi + noise),
 // then regressors confined to one direction, where P winds up (FF 0.9;
 // in float the variances reach the guard's ceiling). Weakly correlated
 // instruments (zeta = 0.05 phi + noise) were tried and are not part of this
 // record: there the IV step's denominator comes near zero and the guard
-// repairs P every few samples, and the two paths parted by 1e-13 to 1e-11
-// (double) within a few samples of the switch, as any two orders of the
-// sums would; the guard's test of a non-symmetric P is checked decision by
-// decision against apply() in covariance_guard_test.cpp. The fixed step
-// must not allocate.
+// repairs P every few samples, and two orders of the sums part by 1e-13 to
+// 1e-11 (double) within a few samples of the switch; the guard's test of a
+// non-symmetric P is checked decision by decision at both sizes in
+// covariance_guard_test.cpp. The step must not allocate.
 struct IvStepCounts {
   int repairs = 0, ceilings = 0;
 };
 
 template <typename S>
-IvStepCounts expect_iv_paths_agree(int np, bool kalman, double tol) {
+IvStepCounts expect_iv_step_is_textbook(int np, bool kalman, bool fixed_size,
+                                        double tol) {
   const std::string what = std::string(kalman ? "IV-KF" : "IV-FF") +
                            " np = " + std::to_string(np) +
-                           (sizeof(S) == 4 ? " float" : " double");
+                           (sizeof(S) == 4 ? " float" : " double") +
+                           (fixed_size ? " fixed" : " dynamic");
   const Adaptation<S> adaptation =
       kalman ? Adaptation<S>(KalmanAdaptation<S>(
                    Matrix<S>(S(1e-4) * Matrix<S>::Identity(np, np))))
              : Adaptation<S>(ForgettingFactorAdaptation<S>(S(0.9)));
-  ParameterUpdate<S> fixed(np, adaptation, true, true);
-  ParameterUpdate<S> dynamic(np, adaptation, true, false);
+  ParameterUpdate<S> step(np, adaptation, true, fixed_size);
+  test::TextbookUpdate<S> textbook(np, adaptation);
   IvStepCounts counts;
-  EXPECT_EQ(fixed.fixed_size(), np) << what;
-  EXPECT_EQ(dynamic.fixed_size(), 0) << what;
+  EXPECT_EQ(step.fixed_size(), fixed_size ? np : 0) << what;
   const Matrix<S> P0 = S(100) * Matrix<S>::Identity(np, np);
-  fixed.reset(Vector<S>::Zero(np), P0);
-  dynamic.reset(Vector<S>::Zero(np), P0);
+  step.reset(Vector<S>::Zero(np), P0);
+  textbook.reset(Vector<S>::Zero(np), P0);
   std::mt19937_64 rng(700 + np);
   std::normal_distribution<double> normal(0.0, 1.0);
   Vector<S> truth(np);
@@ -263,37 +265,36 @@ IvStepCounts expect_iv_paths_agree(int np, bool kalman, double tol) {
       zeta(i) = excited ? S(double(phi(i)) + 0.2 * noise) : S(0);
     }
     const S target = phi.dot(truth) + S(0.01 * normal(rng));
-    const double p_norm = double(dynamic.P().norm());
+    const double p_norm = double(textbook.P().norm());
     const long before = g_allocations.load();
-    const S error_fixed = fixed.update(phi, zeta, target);
+    const S error_step = step.update(phi, zeta, target);
     allocations += g_allocations.load() - before;
-    const S error_dynamic = dynamic.update(phi, zeta, target);
-    EXPECT_EQ(fixed.covariance_guard(), dynamic.covariance_guard())
+    const S error_textbook = textbook.update(phi, zeta, target);
+    EXPECT_EQ(step.covariance_guard(), textbook.covariance_guard())
         << what << ", step " << k;
-    if (fixed.covariance_guard() != dynamic.covariance_guard()) break;
-    counts.repairs += (dynamic.covariance_guard() & kGuardRepair) != 0;
-    counts.ceilings += (dynamic.covariance_guard() & kGuardCeiling) != 0;
-    if (!near(fixed.theta(), dynamic.theta()) ||
-        !near(fixed.P(), dynamic.P())) {
+    if (step.covariance_guard() != textbook.covariance_guard()) break;
+    counts.repairs += (textbook.covariance_guard() & kGuardRepair) != 0;
+    counts.ceilings += (textbook.covariance_guard() & kGuardCeiling) != 0;
+    if (!near(step.theta(), textbook.theta()) ||
+        !near(step.P(), textbook.P())) {
       ADD_FAILURE() << what << ", step " << k << ": theta "
-                    << fixed.theta().transpose() << " vs "
-                    << dynamic.theta().transpose();
+                    << step.theta().transpose() << " vs "
+                    << textbook.theta().transpose();
       break;
     }
     // The gain P^- zeta / den to the rounding of the product: relative to
     // ||P^-|| ||zeta|| / |den|, not to its own norm (cancellation).
     const double gain_scale = p_norm * double(zeta.norm()) /
-                              std::abs(double(dynamic.innovation_scale()));
-    EXPECT_LE(double((fixed.gain() - dynamic.gain()).norm()),
-              tol * std::max(double(dynamic.gain().norm()), gain_scale))
+                              std::abs(double(textbook.innovation_scale()));
+    EXPECT_LE(double((step.gain() - textbook.gain()).norm()),
+              tol * std::max(double(textbook.gain().norm()), gain_scale))
         << what << ", step " << k;
-    EXPECT_NEAR(double(fixed.innovation_scale()),
-                double(dynamic.innovation_scale()),
-                tol * std::max(1.0, p_norm * double(phi.norm()) *
-                                        double(zeta.norm())))
+    EXPECT_NEAR(
+        double(step.innovation_scale()), double(textbook.innovation_scale()),
+        tol * std::max(1.0, p_norm * double(phi.norm()) * double(zeta.norm())))
         << what << ", step " << k;
-    EXPECT_NEAR(double(error_fixed), double(error_dynamic),
-                tol * std::max(1.0, std::abs(double(error_dynamic))))
+    EXPECT_NEAR(double(error_step), double(error_textbook),
+                tol * std::max(1.0, std::abs(double(error_textbook))))
         << what << ", step " << k;
   }
   std::printf("%s: %d repairs, %d ceilings\n", what.c_str(), counts.repairs,
@@ -302,18 +303,21 @@ IvStepCounts expect_iv_paths_agree(int np, bool kalman, double tol) {
   return counts;
 }
 
-TEST(ParameterUpdate, FixedSizeIvStepAgreesWithTheDynamicStep) {
+TEST(ParameterUpdate, IvStepIsTheTextbookFormulaAtEitherSize) {
   const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
   IvStepCounts double_total, float_total;
   for (int np = 1; np <= kMaxFixedParameters; ++np) {
     for (const bool kalman : {true, false}) {
-      const IvStepCounts d = expect_iv_paths_agree<double>(np, kalman, 1e-12);
-      const IvStepCounts f =
-          expect_iv_paths_agree<float>(np, kalman, float_tol);
-      double_total.repairs += d.repairs;
-      double_total.ceilings += d.ceilings;
-      float_total.repairs += f.repairs;
-      float_total.ceilings += f.ceilings;
+      for (const bool fixed_size : {true, false}) {
+        const IvStepCounts d =
+            expect_iv_step_is_textbook<double>(np, kalman, fixed_size, 1e-12);
+        const IvStepCounts f = expect_iv_step_is_textbook<float>(
+            np, kalman, fixed_size, float_tol);
+        double_total.repairs += d.repairs;
+        double_total.ceilings += d.ceilings;
+        float_total.repairs += f.repairs;
+        float_total.ceilings += f.ceilings;
+      }
     }
   }
   // The guard acts on this record, so that the identical actions mean
@@ -327,7 +331,7 @@ TEST(ParameterUpdate, FixedSizeIvStepAgreesWithTheDynamicStep) {
               "repairs, %d ceilings\n",
               double_total.repairs, double_total.ceilings,
               float_total.repairs, float_total.ceilings);
-  // Beyond kMaxFixedParameters the dynamic step is kept.
+  // Beyond kMaxFixedParameters the runtime-size step is used.
   ParameterUpdate<double> large(kMaxFixedParameters + 1,
                                 ForgettingFactorAdaptation<double>(1), true,
                                 true);

@@ -22,6 +22,7 @@
 #include "ctid/recursive/recursive_iv.hpp"
 #include "ctid/recursive/rlssvf.hpp"
 #include "test_util.hpp"
+#include "textbook_update.hpp"
 
 namespace ctid {
 namespace {
@@ -663,15 +664,15 @@ struct IvRunner {
 // 3.7e-12 to 4.8e-12 relative to the column's largest magnitude (RSRIVC-KF
 // and RIVSVF-KF na = 4, samples 3-8, up to 4.9e-10 absolute on estimates
 // of 7-130), 2.5e-12 in YH (sample 24), 1.3e-12 for LMR na = 4 (sample 50);
-// the test prints the largest such difference of each case. Since the IV
-// step has its own fixed-size path (update_fixed_iv), the window's largest
-// differences are 2.0e-11 (RSRIVC-KF, RIVSVF-KF na = 4), 1.6e-11 (their FF
-// forms) and 7.9e-12 (RLSSVF-FF na = 4); after it the tolerance holds. YH
-// is compared from 2 kSettle on: the frozen model's state carries the
-// differences of the settling window forward and forgets them only as fast
-// as its slowest pole (real part -0.6 for na = 4): measured 4.8e-12
-// relative at sample 200 (RSRIVC-KF and RIVSVF-KF, na = 4), when the
-// estimates already agree.
+// the test prints the largest such difference of each case. The
+// adaptation steps are one source at both sizes (step_size.hpp), so the
+// two paths differ by the filter kernels alone; the window's largest
+// differences are at most 2.0e-11 (RSRIVC-KF, RIVSVF-KF na = 4), 1.6e-11 (their
+// FF forms) and 7.9e-12 (RLSSVF-FF na = 4); after it the tolerance holds. YH is
+// compared from 2 kSettle on: the frozen model's state carries the differences
+// of the settling window forward and forgets them only as fast as its slowest
+// pole (real part -0.6 for na = 4): measured 4.8e-12 relative at sample 200
+// (RSRIVC-KF and RIVSVF-KF, na = 4), when the estimates already agree.
 constexpr Eigen::Index kSettle = 200;
 template <typename S, typename Config, typename Runner>
 void expect_paths_agree(const TestRecord& data, double ts, const Config& config,
@@ -829,32 +830,35 @@ void expect_no_allocation(int n) {
       << "FrozenModel (YH, series), n = " << n;
 }
 
-// The fixed-size least-squares step of ParameterUpdate (adaptation.hpp)
-// against the dynamic one, np = 1..8 (every count orders 1-4 give, odd
-// ones included), KF and FF, on the same regressors, step by step: theta,
-// P, the gain and the innovation scale to `tol` relative to their norms,
-// the covariance guard's action identical at every step. Random
+// The least-squares step of ParameterUpdate (adaptation.hpp) at
+// compile-time size np and at runtime size against the textbook formula
+// evaluated with Eigen (textbook_update.hpp), np = 1..8 (every count
+// orders 1-4 give, odd ones included), KF and FF, on the same regressors,
+// step by step: theta, P, the gain and the innovation scale to `tol`
+// relative to their norms, the covariance guard's action identical at
+// every step, P exactly symmetric. Random
 // regressors, then regressors confined to one direction: with lambda = 0.9
 // the windup reaches the guard's ceiling in float (in double the variance
 // only grows). A P(t_0) the guard must repair amplified the rounding of
-// the first steps past 1e-12 and is not part of this record. The fixed step
+// the first steps past 1e-12 and is not part of this record. The step
 // must not allocate.
 template <typename S>
-void expect_update_paths_agree(int np, bool kalman, double tol) {
+void expect_update_is_textbook(int np, bool kalman, bool fixed_size,
+                               double tol) {
   const std::string what = std::string(kalman ? "KF" : "FF") +
                            " np = " + std::to_string(np) +
-                           (sizeof(S) == 4 ? " float" : " double");
+                           (sizeof(S) == 4 ? " float" : " double") +
+                           (fixed_size ? " fixed" : " dynamic");
   const Adaptation<S> adaptation =
       kalman ? Adaptation<S>(KalmanAdaptation<S>(
                    Matrix<S>(S(1e-4) * Matrix<S>::Identity(np, np))))
              : Adaptation<S>(ForgettingFactorAdaptation<S>(S(0.9)));
-  ParameterUpdate<S> fixed(np, adaptation, true, true);
-  ParameterUpdate<S> dynamic(np, adaptation, true, false);
-  ASSERT_EQ(fixed.fixed_size(), np) << what;
-  ASSERT_EQ(dynamic.fixed_size(), 0) << what;
+  ParameterUpdate<S> step(np, adaptation, true, fixed_size);
+  test::TextbookUpdate<S> textbook(np, adaptation);
+  ASSERT_EQ(step.fixed_size(), fixed_size ? np : 0) << what;
   const Matrix<S> P0 = S(100) * Matrix<S>::Identity(np, np);
-  fixed.reset(Vector<S>::Zero(np), P0);
-  dynamic.reset(Vector<S>::Zero(np), P0);
+  step.reset(Vector<S>::Zero(np), P0);
+  textbook.reset(Vector<S>::Zero(np), P0);
   std::mt19937_64 rng(500 + np);
   std::normal_distribution<double> normal(0.0, 1.0);
   Vector<S> truth(np);
@@ -870,36 +874,36 @@ void expect_update_paths_agree(int np, bool kalman, double tol) {
     const S target = phi.dot(truth) + S(0.01 * normal(rng));
     // The gain P^- phi / den to the rounding of the product: relative to
     // ||P^-|| ||phi|| / |den|, not to its own norm (cancellation).
-    const double p_norm = double(dynamic.P().norm());
+    const double p_norm = double(textbook.P().norm());
     const long before = g_allocations.load();
-    const S error_fixed = fixed.update(phi, target);
+    const S error_step = step.update(phi, target);
     allocations += g_allocations.load() - before;
-    const S error_dynamic = dynamic.update(phi, target);
-    ASSERT_EQ(fixed.covariance_guard(), dynamic.covariance_guard())
+    const S error_textbook = textbook.update(phi, target);
+    ASSERT_EQ(step.covariance_guard(), textbook.covariance_guard())
         << what << ", step " << k;
-    repairs += (dynamic.covariance_guard() & kGuardRepair) != 0;
-    ceilings += (dynamic.covariance_guard() & kGuardCeiling) != 0;
+    repairs += (textbook.covariance_guard() & kGuardRepair) != 0;
+    ceilings += (textbook.covariance_guard() & kGuardCeiling) != 0;
     const auto near = [&](const auto& a, const auto& b) {
       const Eigen::MatrixXd ad = a.template cast<double>();
       const Eigen::MatrixXd bd = b.template cast<double>();
       return (ad - bd).norm() <= tol * std::max(bd.norm(), 1e-300);
     };
-    ASSERT_TRUE(near(fixed.theta(), dynamic.theta())) << what << ", " << k;
-    ASSERT_TRUE(near(fixed.P(), dynamic.P())) << what << ", step " << k;
+    ASSERT_TRUE(near(step.theta(), textbook.theta())) << what << ", " << k;
+    ASSERT_TRUE(near(step.P(), textbook.P())) << what << ", step " << k;
     const double gain_scale = p_norm * double(phi.norm()) /
-                              std::abs(double(dynamic.innovation_scale()));
-    ASSERT_LE(double((fixed.gain() - dynamic.gain()).norm()),
-              tol * std::max(double(dynamic.gain().norm()), gain_scale))
+                              std::abs(double(textbook.innovation_scale()));
+    ASSERT_LE(double((step.gain() - textbook.gain()).norm()),
+              tol * std::max(double(textbook.gain().norm()), gain_scale))
         << what << ", step " << k;
-    ASSERT_NEAR(double(fixed.innovation_scale()),
-                double(dynamic.innovation_scale()),
-                tol * std::abs(double(dynamic.innovation_scale())))
+    ASSERT_NEAR(double(step.innovation_scale()),
+                double(textbook.innovation_scale()),
+                tol * std::abs(double(textbook.innovation_scale())))
         << what << ", step " << k;
-    ASSERT_NEAR(double(error_fixed), double(error_dynamic),
-                tol * std::max(1.0, std::abs(double(error_dynamic))))
+    ASSERT_NEAR(double(error_step), double(error_textbook),
+                tol * std::max(1.0, std::abs(double(error_textbook))))
         << what << ", step " << k;
   }
-  EXPECT_TRUE(fixed.P() == fixed.P().transpose()) << what;
+  EXPECT_TRUE(step.P() == step.P().transpose()) << what;
   std::printf("%s: %d repairs, %d ceilings\n", what.c_str(), repairs,
               ceilings);
   if (sizeof(S) == 4 && !kalman && np > 1) {
@@ -908,15 +912,17 @@ void expect_update_paths_agree(int np, bool kalman, double tol) {
   EXPECT_EQ(allocations, 0) << what;
 }
 
-TEST(CompanionKernels, FixedSizeUpdateAgreesWithTheDynamicStep) {
+TEST(CompanionKernels, UpdateIsTheTextbookFormulaAtEitherSize) {
   const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
   for (int np = 1; np <= kMaxFixedParameters; ++np) {
     for (const bool kalman : {true, false}) {
-      expect_update_paths_agree<double>(np, kalman, 1e-12);
-      expect_update_paths_agree<float>(np, kalman, float_tol);
+      for (const bool fixed_size : {true, false}) {
+        expect_update_is_textbook<double>(np, kalman, fixed_size, 1e-12);
+        expect_update_is_textbook<float>(np, kalman, fixed_size, float_tol);
+      }
     }
   }
-  // Beyond kMaxFixedParameters the dynamic step is kept.
+  // Beyond kMaxFixedParameters the runtime-size step is used.
   ParameterUpdate<double> large(kMaxFixedParameters + 1,
                                 ForgettingFactorAdaptation<double>(1), true,
                                 true);

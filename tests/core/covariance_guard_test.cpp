@@ -175,8 +175,7 @@ TEST(CovarianceGuard, LeavesNonFiniteMatricesToTheRunCheck) {
 }
 
 TEST(CovarianceGuard, NoAllocationAndFixedSizeAlike) {
-  CovarianceGuard<double> dynamic;
-  CovarianceGuard<double, 3> fixed;
+  CovarianceGuard<double> dynamic, fixed;
   dynamic.configure(3, true);
   fixed.configure(3, true);
   const Eigen::MatrixXd bad =
@@ -185,14 +184,17 @@ TEST(CovarianceGuard, NoAllocationAndFixedSizeAlike) {
   Eigen::Matrix3d b = bad;
   const long before = g_allocations.load();
   EXPECT_EQ(dynamic.apply(a), kGuardRepair);
-  EXPECT_EQ(fixed.apply(b), kGuardRepair);
+  const double* values = b.data();
+  EXPECT_EQ((fixed.apply_step<3, false>(values, b.data())), kGuardRepair);
   EXPECT_EQ(dynamic.apply(a), kGuardNone);
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_TRUE(test::MatrixNear(a, Eigen::MatrixXd(b), 1e-15));
 }
 
-// apply_symmetric<K> (the unrolled test of the fixed-size least-squares
-// step) against apply() on the same exactly symmetric matrices, K = 1..8:
+// apply_step<K, true> (the test at compile-time size K on a local copy of
+// P, as the least-squares step calls it, reading P(i, j) for the
+// symmetric part) against apply() at runtime size, which forms (P(i, j) +
+// P(j, i)) / 2, on the same exactly symmetric matrices, K = 1..8:
 // positive definite ones from well to barely conditioned (smallest
 // eigenvalue of the correlation form around the detection level rho =
 // n eps), indefinite ones, a variance that is zero, negative, NaN or above
@@ -240,13 +242,13 @@ void expect_symmetric_test_matches_apply() {
     Eigen::MatrixXd a = P;
     Mat b = P;
     for (int call = 0; call < 2; ++call) {
-      double p[K][K];
+      double p[K * K];
       for (int j = 0; j < K; ++j) {
-        for (int i = 0; i < K; ++i) p[j][i] = b(i, j);
+        for (int i = 0; i < K; ++i) p[j * K + i] = b(i, j);
       }
       if (!(b == b.transpose())) break;  // a repair may leave it asymmetric
       const int expected = dynamic.apply(a);
-      const int got = fixed.apply_symmetric<K>(p, b);
+      const int got = fixed.apply_step<K, true>(p, b.data());
       acted += expected != kGuardNone;
       ASSERT_EQ(got, expected) << "K = " << K << ", trial " << trial;
       const Eigen::MatrixXd bd = b;
@@ -270,8 +272,9 @@ TEST(CovarianceGuard, UnrolledSymmetricTestDecidesAsApply) {
   expect_symmetric_test_matches_apply<8>();
 }
 
-// apply_unrolled<K> (the unrolled test of the fixed-size IV step, whose P
-// is not symmetric) against apply() on the same matrices, K = 1..8, double
+// apply_step<K, false> (the test at compile-time size K on a local copy of
+// P, as the IV step calls it, whose P is not symmetric) against apply() at
+// runtime size on the same matrices, K = 1..8, double
 // and float: a symmetric part from well conditioned to barely and not
 // positive definite (its smallest eigenvalue around the detection level
 // rho = n eps and below), an antisymmetric part from none to as large as
@@ -310,12 +313,12 @@ void expect_unrolled_test_matches_apply() {
     Matrix<S> a = P;
     Mat b = P;
     for (int call = 0; call < 2; ++call) {
-      S p[K][K];
+      S p[K * K];
       for (int j = 0; j < K; ++j) {
-        for (int i = 0; i < K; ++i) p[j][i] = b(i, j);
+        for (int i = 0; i < K; ++i) p[j * K + i] = b(i, j);
       }
       const int expected = dynamic.apply(a);
-      const int got = fixed.template apply_unrolled<K>(p, b);
+      const int got = fixed.template apply_step<K, false>(p, b.data());
       acted += expected != kGuardNone;
       ASSERT_EQ(got, expected) << "K = " << K << ", trial " << trial;
       const Matrix<S> bd = b;

@@ -237,19 +237,20 @@ TEST(LmrUpdate, GuardCeilingIsACongruence) {
   EXPECT_LT(std::abs(R(0, 1)) / std::sqrt(R(0, 0) * R(1, 1)), 0.1f);
 }
 
-// The fixed-size step (LmrUpdate::update_fixed) against the dynamic one on
-// the same regressors, step by step, np = 1..8, double and float: theta,
-// the factor L and the prediction error to `tol` relative to their norms,
-// the guard's action identical at every step. Three records: lambda = 0.98
-// with Gamma = 1e-2 I (one rank-one update per column of its root);
-// lambda = 0.9 without Gamma and the regressors confined to one direction
-// after 300 samples, so that R decays to the guard's floor in the others;
-// lambda = 1 with regressors (and noise) of 1e9 (float) or 1e76 (double),
-// so that R's diagonal reaches the ceiling. (A first regressor alone that
-// large made the prediction error, target - phi^T theta with |phi_1
+// The step at compile-time size np against the same step at runtime size
+// (one source, step_size.hpp: the unrolling and the local copies must not
+// change the result) on the same regressors, step by step, np = 1..8,
+// double and float: theta, the factor L and the prediction error to `tol`
+// relative to their norms, the guard's action identical at every step. Three
+// records: lambda = 0.98 with Gamma = 1e-2 I (one rank-one update per column of
+// its root); lambda = 0.9 without Gamma and the regressors confined to one
+// direction after 300 samples, so that R decays to the guard's floor in the
+// others; lambda = 1 with regressors (and noise) of 1e9 (float) or 1e76
+// (double), so that R's diagonal reaches the ceiling. (A first regressor alone
+// that large made the prediction error, target - phi^T theta with |phi_1
 // theta_1| = 1e76, the rounding of that product, which the other
 // parameters then follow: the two paths parted completely in double, as
-// any two orders of the sums would.) The fixed step must not allocate.
+// any two orders of the sums would.) The step must not allocate.
 struct LmrCounts {
   int repairs = 0, ceilings = 0;
 };
@@ -322,7 +323,7 @@ void expect_lmr_paths_agree(int np, int variant, double tol,
   total.ceilings += counts.ceilings;
 }
 
-TEST(LmrUpdate, FixedSizeStepAgreesWithTheDynamicStep) {
+TEST(LmrUpdate, CompileTimeSizeStepAgreesWithRuntimeSize) {
   const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
   LmrCounts total;
   for (int np = 1; np <= kMaxFixedParameters; ++np) {

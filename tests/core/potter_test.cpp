@@ -113,11 +113,12 @@ TEST(PotterUpdate, AgreesWithRecursiveLeastSquaresWhenQnIsZero) {
   }
 }
 
-// The fixed-size step (PotterUpdate::update_fixed) against the dynamic one
-// on the same regression, step by step, np = 1..8: Qn of full rank, Qn
-// with a zero direction (a shorter QR stack), no Qn, and the forgetting
-// factor form. theta, P = S S^T, the gain, beta and the prediction error
-// to `tol` relative to their norms; the fixed step must not allocate.
+// The step at compile-time size np against the same step at runtime size
+// (one source, step_size.hpp: the unrolling and the local copies must not
+// change the result) on the same regression, step by step, np = 1..8: Qn of
+// full rank, Qn with a zero direction (a shorter QR stack), no Qn, and the
+// forgetting factor form. theta, P = S S^T, the gain, beta and the prediction
+// error to `tol` relative to their norms; the step must not allocate.
 template <typename S>
 void expect_potter_paths_agree(int np, int variant, double tol) {
   const char* names[4] = {"KF", "KF semi-definite Qn", "KF Qn = 0", "FF"};
@@ -169,7 +170,7 @@ void expect_potter_paths_agree(int np, int variant, double tol) {
   EXPECT_EQ(allocations, 0) << what;
 }
 
-TEST(PotterUpdate, FixedSizeStepAgreesWithTheDynamicStep) {
+TEST(PotterUpdate, CompileTimeSizeStepAgreesWithRuntimeSize) {
   const double float_tol = 4500 * std::numeric_limits<float>::epsilon();
   for (int np = 1; np <= kMaxFixedParameters; ++np) {
     for (int variant = 0; variant < 4; ++variant) {

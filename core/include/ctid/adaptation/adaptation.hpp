@@ -20,17 +20,13 @@
 // covariance_guard.hpp checks P when asked (the estimators' default). No
 // allocation happens in update().
 //
-// Fixed-size path: configured with fixed_size = true and
-// np <= kMaxFixedParameters (the parameter counts orders 1-4 produce), each
-// step runs on compile-time-size maps of the same storage
-// (theta, P, Qn), with lambda and the adaptation kind read once at
-// configure instead of through the variant every sample. The arithmetic is
-// that of the dynamic step, in the same order; the guard is applied to the
-// same P by the same object, so it acts exactly as on the dynamic path.
-// The instrumental-variable step (2.29)/(2.30) has its fixed-size form
-// too (update_fixed_iv), with the guard's unrolled test of a P that is not
-// symmetric. The dynamic code stays for larger np and as the reference.
-// The guard runs its tests with n = N at compile time.
+// Each step is written once, as a template on the parameter count
+// (step_size.hpp): configured with fixed_size = true and np <=
+// kMaxFixedParameters (the parameter counts orders 1-4 produce) it runs at
+// compile-time size np, on local copies of theta and P written back once,
+// with lambda and the adaptation kind read once at configure; otherwise at
+// runtime size on the storage itself. The choice is made once, in
+// configure().
 #pragma once
 
 #include <cmath>
@@ -40,6 +36,7 @@
 #include <variant>
 
 #include "ctid/adaptation/covariance_guard.hpp"
+#include "ctid/adaptation/step_size.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
 
@@ -149,10 +146,6 @@ S kappa_2(const Matrix<S>& P) {
   return sv(0) / sv(sv.size() - 1);
 }
 
-// Largest parameter count of the fixed-size least-squares step: na = 4,
-// nb = 4.
-constexpr int kMaxFixedParameters = 8;
-
 template <typename S>
 class ParameterUpdate {
  public:
@@ -169,14 +162,21 @@ class ParameterUpdate {
   // legitimate, and the guard would change it); the estimators
   // (LeastSquaresUpdate: RLSSVF, RIVSVF, RSRIVC, CL*) turn it on by
   // default through their configs.
-  // fixed_size: the compile-time-size least-squares and IV steps when
-  // np <= kMaxFixedParameters (chosen here, once).
+  // fixed_size: the steps at compile-time size np when np <=
+  // kMaxFixedParameters (chosen here, once; step_size.hpp).
   void configure(Eigen::Index np, Adaptation<S> adaptation,
                  bool covariance_guard = false, bool fixed_size = false) {
     adaptation_ = std::move(adaptation);
-    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
+    fixed_np_ = fixed_step_size(np, fixed_size);
+    least_squares_step_ = select_size(np, fixed_size, [](auto size) {
+      return &ParameterUpdate::least_squares_step<decltype(size)::value>;
+    });
+    iv_step_ = select_size(np, fixed_size, [](auto size) {
+      return &ParameterUpdate::iv_step<decltype(size)::value>;
+    });
     kalman_ = std::holds_alternative<KalmanAdaptation<S>>(adaptation_);
-    offset_ = offset();
+    offset_ =
+        std::visit([](const auto& a) { return a.gain_offset(); }, adaptation_);
     scale_ = std::visit([](const auto& a) { return a.covariance_scale(); },
                         adaptation_);
     guard_.configure(np, covariance_guard);
@@ -185,6 +185,8 @@ class ParameterUpdate {
     p_zeta_ = Vector<S>::Zero(np);
     pt_phi_ = Vector<S>::Zero(np);
     gain_ = Vector<S>::Zero(np);
+    phi_copy_ = Vector<S>::Zero(np);
+    zeta_copy_ = Vector<S>::Zero(np);
   }
 
   void reset(const Vector<S>& theta0, const Matrix<S>& P0) {
@@ -202,88 +204,15 @@ class ParameterUpdate {
   // target - phi^T theta(t_(k-1)), eq. (1.55).
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
-    if constexpr (std::is_same_v<Derived, Vector<S>>) {
-      switch (fixed_np_) {
-        case 1:
-          return update_fixed<1>(phi.derived().data(), target);
-        case 2:
-          return update_fixed<2>(phi.derived().data(), target);
-        case 3:
-          return update_fixed<3>(phi.derived().data(), target);
-        case 4:
-          return update_fixed<4>(phi.derived().data(), target);
-        case 5:
-          return update_fixed<5>(phi.derived().data(), target);
-        case 6:
-          return update_fixed<6>(phi.derived().data(), target);
-        case 7:
-          return update_fixed<7>(phi.derived().data(), target);
-        case 8:
-          return update_fixed<8>(phi.derived().data(), target);
-        default:
-          break;
-      }
-    }
-    predict();
-    const S error = target - phi.dot(theta_);
-    p_zeta_.noalias() = P_ * phi;
-    const S denominator = offset() + phi.dot(p_zeta_);
-    innovation_scale_ = denominator;
-    gain_ = p_zeta_ / denominator;
-    theta_ += gain_ * error;
-    // P -= (P phi)(P phi)^T / den on the lower triangle, mirrored: P stays
-    // exactly symmetric.
-    P_.template selfadjointView<Eigen::Lower>().rankUpdate(p_zeta_,
-                                                           -1 / denominator);
-    for (Eigen::Index j = 1; j < P_.cols(); ++j) {
-      for (Eigen::Index i = 0; i < j; ++i) P_(i, j) = P_(j, i);
-    }
-    scale_covariance();
-    guard_.apply(P_);
-    return error;
+    return (this->*least_squares_step_)(contiguous(phi, phi_copy_), target);
   }
 
   // Instrumental-variable step, eqs. (2.29) and (2.30).
   template <typename D1, typename D2>
   S update(const Eigen::MatrixBase<D1>& phi, const Eigen::MatrixBase<D2>& zeta,
            S target) {
-    if constexpr (std::is_same_v<D1, Vector<S>> &&
-                  std::is_same_v<D2, Vector<S>>) {
-      const S* p = phi.derived().data();
-      const S* z = zeta.derived().data();
-      switch (fixed_np_) {
-        case 1:
-          return update_fixed_iv<1>(p, z, target);
-        case 2:
-          return update_fixed_iv<2>(p, z, target);
-        case 3:
-          return update_fixed_iv<3>(p, z, target);
-        case 4:
-          return update_fixed_iv<4>(p, z, target);
-        case 5:
-          return update_fixed_iv<5>(p, z, target);
-        case 6:
-          return update_fixed_iv<6>(p, z, target);
-        case 7:
-          return update_fixed_iv<7>(p, z, target);
-        case 8:
-          return update_fixed_iv<8>(p, z, target);
-        default:
-          break;
-      }
-    }
-    predict();
-    const S error = target - phi.dot(theta_);
-    p_zeta_.noalias() = P_ * zeta;
-    pt_phi_.noalias() = P_.transpose() * phi;
-    const S denominator = offset() + phi.dot(p_zeta_);
-    innovation_scale_ = denominator;
-    gain_ = p_zeta_ / denominator;
-    theta_ += gain_ * error;
-    P_.noalias() -= gain_ * pt_phi_.transpose();
-    scale_covariance();
-    guard_.apply(P_);
-    return error;
+    return (this->*iv_step_)(contiguous(phi, phi_copy_),
+                             contiguous(zeta, zeta_copy_), target);
   }
 
   const Vector<S>& theta() const { return theta_; }
@@ -299,185 +228,137 @@ class ParameterUpdate {
   // What the covariance protection did to P at the last step (a
   // CovarianceGuardAction mask).
   int covariance_guard() const { return guard_.last_action(); }
-  // N of the fixed-size step in use, 0 for the dynamic one.
+  // N of the compile-time-size steps in use, 0 for the runtime-size ones.
   int fixed_size() const { return fixed_np_; }
 
  private:
-  // The least-squares step above for np = N, unrolled scalar code on local
-  // copies of phi, theta and P (P column-major as P_: p[j][i] = P(i, j)),
-  // written back once: through the members' storage every store would make
-  // the compiler reload the rest (all of it S*), and Eigen's packet copies
-  // of these small objects reload, 16 bytes at a time, values just stored
-  // 8 bytes at a time, which stalls store forwarding. The same operations
-  // as the dynamic step, the sums in the order of its products; the guard
-  // then tests the stored P with n = N fixed (covariance_guard.hpp).
+  using Step = S (ParameterUpdate::*)(const S*, S);
+  using IvStep = S (ParameterUpdate::*)(const S*, const S*, S);
+
+  // The least-squares step for np = N (step_size.hpp), P column-major
+  // (p[j * n + i] = P(i, j)). P's update is a symmetric rank-one update
+  // of the lower triangle, mirrored, so that P stays exactly symmetric,
+  // and the guard tests it as such.
   template <int N>
-  S update_fixed(const S* phi_data, S target) {
-    S phi[N], theta[N], p[N][N], pz[N], gain[N];
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      phi[i] = phi_data[i];
-      theta[i] = theta_.data()[i];
-    }
-    load_fixed<N>(p);
-    S prediction = 0;
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
-    const S error = target - prediction;
+  S least_squares_step(const S* phi, S target) {
+    const int n = step_size<N>(theta_.size());
+    Working<S, N> theta(theta_.data(), true);
+    Working<S, N> pz(p_zeta_.data(), false), gain(gain_.data(), false);
+    Working<S, array_size(N, N)> p(P_.data(), true);
+    predict<N>(p);
+    const S error = target - dot<N>(phi, theta);
     // P- phi, column by column.
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) pz[i] = p[0][i] * phi[0];
+    for (int i = 0; i < n; ++i) pz[i] = p[i] * phi[0];
 #pragma GCC unroll 8
-    for (int j = 1; j < N; ++j) {
+    for (int j = 1; j < n; ++j) {
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) pz[i] += p[j][i] * phi[j];
+      for (int i = 0; i < n; ++i) pz[i] += p[j * n + i] * phi[j];
     }
-    S phi_pz = 0;
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) phi_pz += phi[i] * pz[i];
-    const S denominator = offset_ + phi_pz;
-    innovation_scale_ = denominator;
-    // One division instead of N + 1: the gain is pz times 1/den, within
-    // one rounding of the dynamic step's pz / den; P's update below uses
-    // the same -1/den as there, so P, all the guard sees, is unchanged.
+    const S denominator = offset_ + dot<N>(phi, pz);
+    // One division: the gain is pz times 1/den, the same -1/den as P's
+    // update.
     const S inverse = 1 / denominator;
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
+    for (int i = 0; i < n; ++i) {
       gain[i] = pz[i] * inverse;
       theta[i] += gain[i] * error;
     }
-    // Lower triangle column by column as rankUpdate does, then mirrored.
+    // P- - (P- phi)(P- phi)^T / den: the lower triangle column by column,
+    // then mirrored.
     const S alpha = -inverse;
 #pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
+    for (int j = 0; j < n; ++j) {
       const S a = alpha * pz[j];
 #pragma GCC unroll 8
-      for (int i = j; i < N; ++i) p[j][i] += a * pz[i];
+      for (int i = j; i < n; ++i) p[j * n + i] += a * pz[i];
     }
 #pragma GCC unroll 8
-    for (int j = 1; j < N; ++j) {
+    for (int j = 1; j < n; ++j) {
 #pragma GCC unroll 8
-      for (int i = 0; i < j; ++i) p[j][i] = p[i][j];
+      for (int i = 0; i < j; ++i) p[j * n + i] = p[i * n + j];
     }
-    Eigen::Map<Eigen::Matrix<S, N, N>> P(store_fixed<N>(p, theta, gain));
-    guard_.template apply_symmetric<N>(p, P);
+    finish<N, true>(p, theta, gain, denominator);
     return error;
   }
 
-  // The IV step above for np = N, in the manner of update_fixed(): local
-  // copies written back once, the products in the order of the dynamic
-  // step's (P zeta and P^T phi column by column, the outer product entry
-  // by entry), the gain by division as there, so that P, theta and what
-  // the guard sees differ from the dynamic step's by the rounding of the
-  // sums only. P is not symmetric: the guard's unrolled test forms its
-  // symmetric part as apply() does (covariance_guard.hpp).
+  // The instrumental-variable step for np = N, eqs. (2.29)/(2.30):
+  // L = P- zeta / (offset + phi^T P- zeta), P = scale (P- - L (P-^T phi)^T).
+  // P is not symmetric: the guard tests its symmetric part.
   template <int N>
-  S update_fixed_iv(const S* phi_data, const S* zeta_data, S target) {
-    S phi[N], zeta[N], theta[N], p[N][N], pz[N], ptphi[N], gain[N];
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      phi[i] = phi_data[i];
-      zeta[i] = zeta_data[i];
-      theta[i] = theta_.data()[i];
-    }
-    load_fixed<N>(p);
-    S prediction = 0;
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
-    const S error = target - prediction;
+  S iv_step(const S* phi, const S* zeta, S target) {
+    const int n = step_size<N>(theta_.size());
+    Working<S, N> theta(theta_.data(), true);
+    Working<S, N> pz(p_zeta_.data(), false), ptphi(pt_phi_.data(), false),
+        gain(gain_.data(), false);
+    Working<S, array_size(N, N)> p(P_.data(), true);
+    predict<N>(p);
+    const S error = target - dot<N>(phi, theta);
     // P- zeta, column by column; P-^T phi, a dot product per column.
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) pz[i] = p[0][i] * zeta[0];
+    for (int i = 0; i < n; ++i) pz[i] = p[i] * zeta[0];
 #pragma GCC unroll 8
-    for (int j = 1; j < N; ++j) {
+    for (int j = 1; j < n; ++j) {
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) pz[i] += p[j][i] * zeta[j];
+      for (int i = 0; i < n; ++i) pz[i] += p[j * n + i] * zeta[j];
     }
 #pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
+    for (int j = 0; j < n; ++j) {
       S sum = 0;
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) sum += p[j][i] * phi[i];
+      for (int i = 0; i < n; ++i) sum += p[j * n + i] * phi[i];
       ptphi[j] = sum;
     }
-    S phi_pz = 0;
+    const S denominator = offset_ + dot<N>(phi, pz);
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) phi_pz += phi[i] * pz[i];
-    const S denominator = offset_ + phi_pz;
-    innovation_scale_ = denominator;
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
+    for (int i = 0; i < n; ++i) {
       gain[i] = pz[i] / denominator;
       theta[i] += gain[i] * error;
     }
     // P- - L (P-^T phi)^T, eq. (2.29c)/(2.30c).
 #pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
+    for (int j = 0; j < n; ++j) {
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) p[j][i] -= gain[i] * ptphi[j];
+      for (int i = 0; i < n; ++i) p[j * n + i] -= gain[i] * ptphi[j];
     }
-    Eigen::Map<Eigen::Matrix<S, N, N>> P(store_fixed<N>(p, theta, gain));
-    guard_.template apply_unrolled<N>(p, P);
+    finish<N, false>(p, theta, gain, denominator);
     return error;
   }
 
-  // The fixed-size steps' local copies: P (plus Qn for the Kalman filter,
-  // P- = P + Qn) read once, and P scaled (the forgetting factor), theta and
-  // the gain written back once; returns P's storage for the guard.
-  template <int N>
-  void load_fixed(S (&p)[N][N]) const {
-    const S* P_in = P_.data();
+  template <int N, typename A, typename B>
+  S dot(const A& a, const B& b) const {
+    const int n = step_size<N>(theta_.size());
+    S sum = 0;
 #pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) p[j][i] = P_in[j * N + i];
-    }
-    if (kalman_) {  // P- = P + Qn
-      const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
-#pragma GCC unroll 8
-      for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) p[j][i] += qn[j * N + i];
-      }
-    }
-  }
-  template <int N>
-  S* store_fixed(S (&p)[N][N], const S (&theta)[N], const S (&gain)[N]) {
-    const S scale = scale_;  // read once: the stores below may alias it
-    if (scale != S(1)) {
-#pragma GCC unroll 8
-      for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) p[j][i] *= scale;
-      }
-    }
-    S* P_data = P_.data();
-#pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) P_data[j * N + i] = p[j][i];
-    }
-    S* theta_data = theta_.data();
-    S* gain_data = gain_.data();
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      theta_data[i] = theta[i];
-      gain_data[i] = gain[i];
-    }
-    return P_data;
+    for (int i = 0; i < n; ++i) sum += a[i] * b[i];
+    return sum;
   }
 
-  void predict() {
-    std::visit([this](const auto& a) { a.predict(P_); }, adaptation_);
+  // P- = P + Qn for the Kalman filter, eq. (1.59).
+  template <int N, typename Square>
+  void predict(Square& p) const {
+    if (!kalman_) return;
+    const int n = step_size<N>(theta_.size());
+    const S* qn = std::get_if<KalmanAdaptation<S>>(&adaptation_)->qn().data();
+#pragma GCC unroll 64
+    for (int i = 0; i < n * n; ++i) p[i] += qn[i];
   }
-  S offset() const {
-    return std::visit([](const auto& a) { return a.gain_offset(); },
-                      adaptation_);
-  }
-  void scale_covariance() {
-    const S scale = std::visit(
-        [](const auto& a) { return a.covariance_scale(); }, adaptation_);
-    if (scale != S(1)) P_ *= scale;
+
+  // P scaled by 1/lambda for the forgetting factor, eq. (1.57); theta, P
+  // and the gain written back; the guard on P.
+  template <int N, bool Symmetric, typename Square, typename Vec>
+  void finish(Square& p, Vec& theta, Vec& gain, S denominator) {
+    const int n = step_size<N>(theta_.size());
+    const S scale = scale_;
+    if (scale != S(1)) {
+#pragma GCC unroll 64
+      for (int i = 0; i < n * n; ++i) p[i] *= scale;
+    }
+    p.write_back();
+    theta.write_back();
+    gain.write_back();
+    innovation_scale_ = denominator;
+    guard_.template apply_step<N, Symmetric>(p, P_.data());
   }
 
   Adaptation<S> adaptation_;
@@ -486,9 +367,12 @@ class ParameterUpdate {
   Vector<S> p_zeta_;
   Vector<S> pt_phi_;
   Vector<S> gain_;
+  Vector<S> phi_copy_, zeta_copy_;  // phi, zeta when not contiguous
   S innovation_scale_ = 1;
   CovarianceGuard<S> guard_;
-  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
+  Step least_squares_step_ = nullptr;
+  IvStep iv_step_ = nullptr;
+  int fixed_np_ = 0;
   bool kalman_ = false;
   S offset_ = 1;
   S scale_ = 1;

@@ -43,16 +43,16 @@
 //
 // apply() returns what it did (kGuardRepair, kGuardCeiling, both, or
 // kGuardNone) and allocates nothing; a non-finite P is left to the run's
-// check of the estimates. Templated on the size (N fixed or
-// Eigen::Dynamic) so that fixed-size kernels can hold one; apply_symmetric()
-// is apply() unrolled for the fixed-size least-squares step,
-// apply_unrolled() for the fixed-size IV step (a P that is not symmetric).
+// check of the estimates. apply_step<N>() is the same test written once for
+// every size (step_size.hpp): the adaptation steps call it on their
+// working copy of P, with N their compile-time size or Eigen::Dynamic.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "ctid/adaptation/step_size.hpp"
 #include "ctid/base/types.hpp"
 
 namespace ctid {
@@ -63,12 +63,9 @@ enum CovarianceGuardAction : int {
   kGuardCeiling = 2,  // a variance reached the ceiling
 };
 
-template <typename S, int N = Eigen::Dynamic>
+template <typename S>
 class CovarianceGuard {
  public:
-  using Mat = Eigen::Matrix<S, N, N>;
-  using Vec = Eigen::Matrix<S, N, 1>;
-
   // n parameters; enabled false: apply() does nothing.
   void configure(Eigen::Index n, bool enabled) {
     enabled_ = enabled;
@@ -76,12 +73,12 @@ class CovarianceGuard {
     rho_ = S(n > 0 ? n : 1) * std::numeric_limits<S>::epsilon();
     period_ = std::max<Eigen::Index>(1, n / 6);
     since_check_ = 0;
-    work_ = Mat::Zero(n, n);
-    pivots_ = Vec::Zero(n);
-    v_ = Vec::Zero(n);
-    d_ = Vec::Zero(n);
-    delta_ = Vec::Zero(n);
-    eigen_ = Eigen::SelfAdjointEigenSolver<Mat>(n);
+    work_ = Matrix<S>::Zero(n, n);
+    pivots_ = Vector<S>::Zero(n);
+    v_ = Vector<S>::Zero(n);
+    d_ = Vector<S>::Zero(n);
+    delta_ = Vector<S>::Zero(n);
+    eigen_ = Eigen::SelfAdjointEigenSolver<Matrix<S>>(n);
     ceiling_ = range_ceiling();
     last_ = kGuardNone;
   }
@@ -97,67 +94,52 @@ class CovarianceGuard {
     last_ = kGuardNone;
   }
 
+  // The guard on an n-by-n P with column-major storage.
   template <typename Derived>
-  int apply(Eigen::MatrixBase<Derived>& P) {
+  int apply(Eigen::PlainObjectBase<Derived>& P) {
+    static_assert(!Derived::IsRowMajor, "P is column-major");
+    const S* values = P.data();
+    return apply_step<Eigen::Dynamic, false>(values, P.data());
+  }
+
+  // The guard on P (column-major, n-by-n, P[j * n + i] = P(i, j)) whose
+  // entries the caller also holds in `values` (its Working copy, or P
+  // itself): the tests read `values`, P is reached only to act on it.
+  // Symmetric: P is known to be exactly symmetric (the least-squares steps
+  // mirror their lower triangle), so the tests read s_ij = P(i, j) where
+  // they otherwise form (P(i, j) + P(j, i)) / 2: the same number (the sum
+  // of two equal numbers and the halving are exact) unless |P(i, j)| >
+  // max / 2, where both fail the correlation test (s^2 overflows).
+  // A variance that is not finite, not > 0 or above the ceiling sends the
+  // step to the ceiling's scaling, after which the tests read P. The
+  // correlation tests are all evaluated, without branches, instead of
+  // stopping at the first failure: the same verdict.
+  template <int N, bool Symmetric, typename Values>
+  int apply_step(const Values& values, S* P) {
     last_ = kGuardNone;
     if (!enabled_ || n_ == 0) return last_;
+    const int n = step_size<N>(n_);
+    bool usual = true;
+#pragma GCC unroll 8
+    for (int i = 0; i < n; ++i) {
+      const S pii = values[i * n + i];
+      usual = usual & (pii > 0) & (pii <= ceiling_);
+    }
+    if (usual) return test_and_repair<N, Symmetric>(values, P, false);
     bool suspect = false;
-    for (Eigen::Index i = 0; i < n_; ++i) {
-      const S pii = P(i, i);
+    for (int i = 0; i < n; ++i) {
+      const S pii = P[i * n + i];
       if (!std::isfinite(pii)) return last_;  // the run reports it
       suspect = suspect || !(pii > 0);
       if (pii > ceiling_) {
         const S e = std::sqrt(ceiling_ / pii);
-        P.row(i) *= e;
-        P.col(i) *= e;
+        for (int j = 0; j < n; ++j) P[j * n + i] *= e;
+        for (int j = 0; j < n; ++j) P[i * n + j] *= e;
         last_ |= kGuardCeiling;
       }
     }
-    for (Eigen::Index j = 0; j < n_ && !suspect; ++j) {
-      for (Eigen::Index i = j + 1; i < n_; ++i) {
-        const S s = (P(i, j) + P(j, i)) / 2;
-        if (!(s * s < P(i, i) * P(j, j))) {
-          suspect = true;
-          break;
-        }
-      }
-    }
-    if (!suspect && ++since_check_ < period_) return last_;
-    since_check_ = 0;
-    if (!suspect && definite(P)) return last_;
-    repair(P);
-    last_ |= kGuardRepair;
-    return last_;
-  }
-
-  // apply() for n = K known at compile time and a P known to be exactly
-  // symmetric (the fixed-size least-squares step of adaptation.hpp, which
-  // mirrors its lower triangle), whose entries the caller also holds in p
-  // (column-major, p[j][i] = P(i, j)): the tests run on p, unrolled, with
-  // the factor in local arrays, and reach P only to act on it. The same
-  // decisions, counters and repairs as apply(), bit for bit:
-  //   - a variance that is not finite, not > 0 or above the ceiling hands
-  //     the step to apply() (which returns or acts);
-  //   - otherwise the tests read s_ij = P(i, j) where apply() forms
-  //     (P(i, j) + P(j, i)) / 2: the same number for a symmetric P (the
-  //     sum of two equal numbers and the halving are exact) unless
-  //     |P(i, j)| > max / 2, where both fail the correlation test (s^2
-  //     overflows) and never reach the factorisation;
-  //   - the correlation tests are all evaluated, without branches,
-  //     instead of stopping at the first failure: the same verdict.
-  template <int K, typename Derived>
-  int apply_symmetric(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
-    return apply_fixed<K, true>(p, P);
-  }
-
-  // apply_symmetric() for any P, symmetric or not (the fixed-size IV step
-  // of adaptation.hpp, eqs. 2.29/2.30): the tests read the symmetric part
-  // s_ij = (P(i, j) + P(j, i)) / 2 as apply() forms it, the same number
-  // by the same operations, so the decisions, counters and repairs are
-  // apply()'s, bit for bit.
-  template <int K, typename Derived>
-  int apply_unrolled(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
-    return apply_fixed<K, false>(p, P);
+    const S* scaled = P;
+    return test_and_repair<N, Symmetric>(scaled, P, suspect);
   }
 
   int last_action() const { return last_; }
@@ -166,97 +148,69 @@ class CovarianceGuard {
  private:
   static S range_ceiling() { return std::sqrt(std::numeric_limits<S>::max()); }
 
-  // s_ij of the tests from p (p[j][i] = P(i, j)), i > j: P(i, j) itself
-  // when P is known to be symmetric, else (P(i, j) + P(j, i)) / 2.
-  template <bool Symmetric, int K>
-  static S symmetric_part(const S (&p)[K][K], int i, int j) {
+  // s_ij of the tests, i > j.
+  template <bool Symmetric, typename Values>
+  static S symmetric_part(const Values& p, int n, int i, int j) {
     if constexpr (Symmetric) {
-      return p[j][i];
+      return p[j * n + i];
     } else {
-      return (p[j][i] + p[i][j]) / 2;
+      return (p[j * n + i] + p[i * n + j]) / 2;
     }
   }
 
-  template <int K, bool Symmetric, typename Derived>
-  int apply_fixed(const S (&p)[K][K], Eigen::MatrixBase<Derived>& P) {
-    if (!enabled_ || n_ == 0) {
-      last_ = kGuardNone;
-      return last_;
-    }
-    bool usual = true;
+  // The correlation tests every sample, the factorisation every period_
+  // samples, the repair when either fails.
+  template <int N, bool Symmetric, typename Values>
+  int test_and_repair(const Values& p, S* P, bool suspect) {
+    const int n = step_size<N>(n_);
 #pragma GCC unroll 8
-    for (int i = 0; i < K; ++i) {
-      usual = usual & (p[i][i] > 0) & (p[i][i] <= ceiling_);
-    }
-    if (!usual) return apply(P);
-    last_ = kGuardNone;
-    bool suspect = false;
+    for (int j = 0; j < n; ++j) {
 #pragma GCC unroll 8
-    for (int j = 0; j < K; ++j) {
-#pragma GCC unroll 8
-      for (int i = j + 1; i < K; ++i) {
-        const S s = symmetric_part<Symmetric>(p, i, j);
-        suspect = suspect | !(s * s < p[i][i] * p[j][j]);
+      for (int i = j + 1; i < n; ++i) {
+        const S s = symmetric_part<Symmetric>(p, n, i, j);
+        suspect = suspect | !(s * s < p[i * n + i] * p[j * n + j]);
       }
     }
     if (!suspect && ++since_check_ < period_) return last_;
     since_check_ = 0;
-    if (!suspect && definite_fixed<K, Symmetric>(p)) return last_;
+    if (!suspect && definite<N, Symmetric>(p)) return last_;
     repair(P);
     last_ |= kGuardRepair;
     return last_;
   }
 
-  // LDL^T of Ps in the lower triangle of work_, each pivot > rho Ps_jj.
-  template <typename Derived>
-  bool definite(const Eigen::MatrixBase<Derived>& P) {
-    for (Eigen::Index j = 0; j < n_; ++j) {
-      S dj = P(j, j);
-      for (Eigen::Index k = 0; k < j; ++k) {
-        v_(k) = work_(j, k) * pivots_(k);
-        dj -= work_(j, k) * v_(k);
-      }
-      if (!(dj > rho_ * P(j, j))) return false;
-      pivots_(j) = dj;
-      for (Eigen::Index i = j + 1; i < n_; ++i) {
-        S lij = (P(i, j) + P(j, i)) / 2;
-        for (Eigen::Index k = 0; k < j; ++k) lij -= work_(i, k) * v_(k);
-        work_(i, j) = lij / dj;
-      }
-    }
-    return true;
-  }
-
-  // definite() on the p of apply_fixed(), the factor in local arrays: the
-  // same operations in the same order.
-  template <int K, bool Symmetric>
-  bool definite_fixed(const S (&p)[K][K]) const {
-    S L[K][K], pivots[K], v[K];
+  // LDL^T of Ps without pivoting, each pivot > rho Ps_jj; the factor's
+  // lower triangle in l (l[k * n + i] = L(i, k)).
+  template <int N, bool Symmetric, typename Values>
+  bool definite(const Values& p) {
+    const int n = step_size<N>(n_);
+    Working<S, array_size(N, N)> l(work_.data(), false);
+    Working<S, N> pivots(pivots_.data(), false), v(v_.data(), false);
 #pragma GCC unroll 8
-    for (int j = 0; j < K; ++j) {
-      S dj = p[j][j];
+    for (int j = 0; j < n; ++j) {
+      S dj = p[j * n + j];
 #pragma GCC unroll 8
       for (int k = 0; k < j; ++k) {
-        v[k] = L[j][k] * pivots[k];
-        dj -= L[j][k] * v[k];
+        v[k] = l[k * n + j] * pivots[k];
+        dj -= l[k * n + j] * v[k];
       }
-      if (!(dj > rho_ * p[j][j])) return false;
+      if (!(dj > rho_ * p[j * n + j])) return false;
       pivots[j] = dj;
 #pragma GCC unroll 8
-      for (int i = j + 1; i < K; ++i) {
-        S lij = symmetric_part<Symmetric>(p, i, j);
+      for (int i = j + 1; i < n; ++i) {
+        S lij = symmetric_part<Symmetric>(p, n, i, j);
 #pragma GCC unroll 8
-        for (int k = 0; k < j; ++k) lij -= L[i][k] * v[k];
-        L[i][j] = lij / dj;
+        for (int k = 0; k < j; ++k) lij -= l[k * n + i] * v[k];
+        l[j * n + i] = lij / dj;
       }
     }
     return true;
   }
 
   // Raises the eigenvalues of C below rho_r to rho_r; adds only the
-  // correction to P.
-  template <typename Derived>
-  void repair(Eigen::MatrixBase<Derived>& P) {
+  // correction to P. Rare: written for the runtime size only.
+  void repair(S* data) {
+    Eigen::Map<Matrix<S>> P(data, n_, n_);
     S largest = 0;
     for (Eigen::Index i = 0; i < n_; ++i) {
       d_(i) = std::sqrt(std::abs(P(i, i)));
@@ -271,13 +225,13 @@ class CovarianceGuard {
       }
     }
     eigen_.compute(work_, Eigen::ComputeEigenvectors);
-    const Vec& lambda = eigen_.eigenvalues();
+    const Vector<S>& lambda = eigen_.eigenvalues();
     const S floor =
         10 * rho_ * std::max(S(1), std::abs(lambda(lambda.size() - 1)));
     for (Eigen::Index k = 0; k < n_; ++k) {
       delta_(k) = lambda(k) < floor ? floor - lambda(k) : S(0);
     }
-    const Mat& V = eigen_.eigenvectors();
+    const Matrix<S>& V = eigen_.eigenvectors();
     for (Eigen::Index k = 0; k < n_; ++k) {
       if (delta_(k) == 0) continue;
       for (Eigen::Index j = 0; j < n_; ++j) {
@@ -292,9 +246,9 @@ class CovarianceGuard {
   S rho_ = 0;
   S ceiling_ = 0;
   Eigen::Index period_ = 1, since_check_ = 0;
-  Mat work_;
-  Vec pivots_, v_, d_, delta_;
-  Eigen::SelfAdjointEigenSolver<Mat> eigen_;
+  Matrix<S> work_;
+  Vector<S> pivots_, v_, d_, delta_;
+  Eigen::SelfAdjointEigenSolver<Matrix<S>> eigen_;
   int last_ = kGuardNone;
 };
 

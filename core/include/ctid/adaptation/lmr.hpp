@@ -52,12 +52,10 @@
 // The guard leaves L untouched, bit for bit, while neither applies.
 // Nothing is allocated per step.
 //
-// Fixed-size path: configured with fixed_size = true and
-// np <= kMaxFixedParameters, the step runs as update_fixed<np>, unrolled
-// scalar code on a local copy of L written back once (as
-// ParameterUpdate::update_fixed in adaptation.hpp): the same rotations,
-// guard and triangular solves in the same order as the dynamic step. The
-// dynamic code stays for larger np and as the reference.
+// The step is written once, as a template on the parameter count
+// (step_size.hpp): at compile-time size np when configured with
+// fixed_size = true and np <= kMaxFixedParameters, on a local copy of L
+// written back once; otherwise at runtime size on L itself.
 #pragma once
 
 #include <algorithm>
@@ -67,6 +65,7 @@
 
 #include "ctid/adaptation/adaptation.hpp"
 #include "ctid/adaptation/covariance_guard.hpp"
+#include "ctid/adaptation/step_size.hpp"
 
 namespace ctid {
 
@@ -75,11 +74,14 @@ class LmrUpdate {
  public:
   // np parameters, forgetting factor lambda, Gamma (symmetric positive
   // semi-definite, see validate_covariance), the guard on R on or off;
-  // fixed_size: the compile-time-size step when np <= kMaxFixedParameters
-  // (chosen here, once).
+  // fixed_size: the step at compile-time size np when np <=
+  // kMaxFixedParameters (chosen here, once; step_size.hpp).
   void configure(Eigen::Index np, S lambda, const Matrix<S>& gamma,
                  bool guard = true, bool fixed_size = false) {
-    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
+    fixed_np_ = fixed_step_size(np, fixed_size);
+    step_ = select_size(np, fixed_size, [](auto size) {
+      return &LmrUpdate::step<decltype(size)::value>;
+    });
     lambda_ = lambda;
     sqrt_lambda_ = std::sqrt(lambda);
     guard_ = guard;
@@ -104,6 +106,7 @@ class LmrUpdate {
     P_ = Matrix<S>::Identity(np, np);
     work_ = Vector<S>::Zero(np);
     x_ = Vector<S>::Zero(np);
+    phi_copy_ = Vector<S>::Zero(np);
     ceiling_ = std::sqrt(std::numeric_limits<S>::max());
     floor_ = 1 / ceiling_;
   }
@@ -135,49 +138,7 @@ class LmrUpdate {
   // precision), the estimate is kept and failed() turns true.
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
-    if constexpr (std::is_same_v<Derived, Vector<S>>) {
-      const S* p = phi.derived().data();
-      switch (fixed_np_) {
-        case 1:
-          return update_fixed<1>(p, target);
-        case 2:
-          return update_fixed<2>(p, target);
-        case 3:
-          return update_fixed<3>(p, target);
-        case 4:
-          return update_fixed<4>(p, target);
-        case 5:
-          return update_fixed<5>(p, target);
-        case 6:
-          return update_fixed<6>(p, target);
-        case 7:
-          return update_fixed<7>(p, target);
-        case 8:
-          return update_fixed<8>(p, target);
-        default:
-          break;
-      }
-    }
-    const S error = target - phi.dot(theta_);
-    last_ = kGuardNone;
-    if (failed_) return error;
-    if (lambda_ != S(1)) L_ *= sqrt_lambda_;
-    x_ = phi;
-    rank_one_update(0);
-    for (Eigen::Index c = 0; c < gamma_root_.cols(); ++c) {
-      x_ = gamma_root_.col(c);
-      rank_one_update(0);
-    }
-    if (!L_.allFinite()) {
-      failed_ = true;
-      return error;
-    }
-    if (guard_) last_ = guard();
-    work_ = phi;
-    L_.template triangularView<Eigen::Lower>().solveInPlace(work_);
-    L_.transpose().template triangularView<Eigen::Upper>().solveInPlace(work_);
-    theta_ += work_ * error;
-    return error;
+    return (this->*step_)(contiguous(phi, phi_copy_), target);
   }
 
   const Vector<S>& theta() const { return theta_; }
@@ -210,188 +171,125 @@ class LmrUpdate {
   // What the guard did to R at the last update (CovarianceGuardAction:
   // kGuardRepair for a raised pivot or diagonal, kGuardCeiling).
   int covariance_guard() const { return last_; }
-  // N of the fixed-size step in use, 0 for the dynamic one.
+  // N of the compile-time-size step in use, 0 for the runtime-size one.
   int fixed_size() const { return fixed_np_; }
 
  private:
-  // The step above for np = N on l[k][i] = L(i, k) (column-major as L_),
-  // written back once.
+  using Step = S (LmrUpdate::*)(const S*, S);
+
+  // The step for np = N (step_size.hpp) on l[k * n + i] = L(i, k).
   template <int N>
-  S update_fixed(const S* phi_data, S target) {
-    S phi[N], theta[N], l[N][N], x[N], w[N];
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      phi[i] = phi_data[i];
-      theta[i] = theta_.data()[i];
-    }
+  S step(const S* phi, S target) {
+    const int n = step_size<N>(theta_.size());
+    Working<S, N> theta(theta_.data(), true);
     S prediction = 0;
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    for (int i = 0; i < n; ++i) prediction += phi[i] * theta[i];
     const S error = target - prediction;
     last_ = kGuardNone;
     if (failed_) return error;
-    const S* L_in = L_.data();
-#pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) l[k][i] = L_in[k * N + i];
-    }
+    Working<S, array_size(N, N)> l(L_.data(), true);
+    Working<S, N> x(x_.data(), false), w(work_.data(), false);
+    // R <- lambda R + phi phi^T + (1 - lambda) Gamma, eq. (3.82a).
     if (lambda_ != S(1)) {
       const S sqrt_lambda = sqrt_lambda_;
-#pragma GCC unroll 8
-      for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) l[k][i] *= sqrt_lambda;
-      }
+#pragma GCC unroll 64
+      for (int i = 0; i < n * n; ++i) l[i] *= sqrt_lambda;
     }
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) x[i] = phi[i];
-    rank_one_update_fixed<N>(l, x, 0);
+    for (int i = 0; i < n; ++i) x[i] = phi[i];
+    rank_one_update<N>(l, x, 0);
     const S* g = gamma_root_.data();
     for (Eigen::Index c = 0; c < gamma_root_.cols(); ++c) {
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) x[i] = g[c * N + i];
-      rank_one_update_fixed<N>(l, x, 0);
+      for (int i = 0; i < n; ++i) x[i] = g[c * n + i];
+      rank_one_update<N>(l, x, 0);
     }
     bool finite = true;
-#pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) finite = finite & std::isfinite(l[k][i]);
-    }
-    S* L_out = L_.data();
-#pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) L_out[k * N + i] = l[k][i];
-    }
+#pragma GCC unroll 64
+    for (int i = 0; i < n * n; ++i) finite = finite & std::isfinite(l[i]);
+    l.write_back();
     if (!finite) {
       failed_ = true;
       return error;
     }
     if (guard_) {
-      last_ = guard_fixed<N>(l, x);
-      if (last_ != kGuardNone) {
-#pragma GCC unroll 8
-        for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-          for (int i = 0; i < N; ++i) L_out[k * N + i] = l[k][i];
-        }
-      }
+      last_ = guard<N>(l, x);
+      if (last_ != kGuardNone) l.write_back();
     }
-    // R^-1 phi: L w = phi forward, then L^T w = w backward.
+    // theta += R^-1 phi epsilon (3.82c): L w = phi forward, then L^T w = w
+    // backward.
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) w[i] = phi[i];
+    for (int i = 0; i < n; ++i) w[i] = phi[i];
 #pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-      w[k] /= l[k][k];
+    for (int k = 0; k < n; ++k) {
+      w[k] /= l[k * n + k];
 #pragma GCC unroll 8
-      for (int i = k + 1; i < N; ++i) w[i] -= w[k] * l[k][i];
+      for (int i = k + 1; i < n; ++i) w[i] -= w[k] * l[k * n + i];
     }
 #pragma GCC unroll 8
-    for (int k = N - 1; k >= 0; --k) {
+    for (int k = n - 1; k >= 0; --k) {
       S sum = w[k];
 #pragma GCC unroll 8
-      for (int i = k + 1; i < N; ++i) sum -= l[k][i] * w[i];
-      w[k] = sum / l[k][k];
+      for (int i = k + 1; i < n; ++i) sum -= l[k * n + i] * w[i];
+      w[k] = sum / l[k * n + k];
     }
-    S* theta_data = theta_.data();
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) theta_data[i] = theta[i] + w[i] * error;
+    for (int i = 0; i < n; ++i) theta[i] += w[i] * error;
+    theta.write_back();
     return error;
   }
 
-  // rank_one_update() on l and x.
-  template <int N>
-  static void rank_one_update_fixed(S (&l)[N][N], S (&x)[N], int first) {
+  // L L^T + x x^T, x (zero above `first`) consumed: Givens rotations of
+  // column k of L against x that zero x_k (LINPACK's dchud), |c|, |s| <= 1
+  // whatever the size of x_k against L_kk.
+  template <int N, typename Square, typename Column>
+  void rank_one_update(Square& l, Column& x, int first) const {
+    const int n = step_size<N>(theta_.size());
 #pragma GCC unroll 8
-    for (int k = first; k < N; ++k) {
+    for (int k = first; k < n; ++k) {
       const S xk = x[k];
       if (xk == 0) continue;
-      const S lkk = l[k][k];
+      const S lkk = l[k * n + k];
       const S r = std::sqrt(lkk * lkk + xk * xk);
       const S c = lkk / r, s = xk / r;
-      l[k][k] = r;
+      l[k * n + k] = r;
 #pragma GCC unroll 8
-      for (int i = k + 1; i < N; ++i) {
-        const S lik = l[k][i];
-        l[k][i] = c * lik + s * x[i];
+      for (int i = k + 1; i < n; ++i) {
+        const S lik = l[k * n + i];
+        l[k * n + i] = c * lik + s * x[i];
         x[i] = c * x[i] - s * lik;
       }
     }
   }
 
-  // guard() on l, x as workspace.
-  template <int N>
-  int guard_fixed(S (&l)[N][N], S (&x)[N]) const {
+  // The guard on R = L L^T, row by row (see above); x as workspace.
+  template <int N, typename Square, typename Column>
+  int guard(Square& l, Column& x) const {
+    const int n = step_size<N>(theta_.size());
     int action = kGuardNone;
 #pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
+    for (int j = 0; j < n; ++j) {
       S rjj = 0;
 #pragma GCC unroll 8
-      for (int k = 0; k <= j; ++k) rjj += l[k][j] * l[k][j];
+      for (int k = 0; k <= j; ++k) rjj += l[k * n + j] * l[k * n + j];
       if (rjj > ceiling_) {
         const S e = std::sqrt(ceiling_ / rjj);
-        for (int k = 0; k <= j; ++k) l[k][j] *= e;
+        for (int k = 0; k <= j; ++k) l[k * n + j] *= e;
         rjj = 0;
-        for (int k = 0; k <= j; ++k) rjj += l[k][j] * l[k][j];
+        for (int k = 0; k <= j; ++k) rjj += l[k * n + j] * l[k * n + j];
         action |= kGuardCeiling;
       }
-      const S pivot = l[j][j] * l[j][j];
+      const S pivot = l[j * n + j] * l[j * n + j];
       S delta = 0;
       if (!(pivot > rho_ * rjj)) {
         delta = (10 * rho_ * rjj - pivot) / (1 - 10 * rho_);
       }
       if (rjj < floor_) delta = std::max(delta, floor_ - rjj);
       if (!(delta > 0)) continue;
-      for (int i = 0; i < N; ++i) x[i] = 0;
+      for (int i = 0; i < n; ++i) x[i] = 0;
       x[j] = std::sqrt(delta);
-      rank_one_update_fixed<N>(l, x, j);
-      action |= kGuardRepair;
-    }
-    return action;
-  }
-
-  // L L^T + x x^T, x_ (zero above `first`) consumed: Givens rotations of
-  // column k of L against x that zero x_k (LINPACK's dchud), |c|, |s| <= 1
-  // whatever the size of x_k against L_kk.
-  void rank_one_update(Eigen::Index first) {
-    const Eigen::Index n = L_.rows();
-    for (Eigen::Index k = first; k < n; ++k) {
-      const S xk = x_(k);
-      if (xk == 0) continue;
-      const S lkk = L_(k, k);
-      const S r = std::sqrt(lkk * lkk + xk * xk);
-      const S c = lkk / r, s = xk / r;
-      L_(k, k) = r;
-      for (Eigen::Index i = k + 1; i < n; ++i) {
-        const S lik = L_(i, k);
-        L_(i, k) = c * lik + s * x_(i);
-        x_(i) = c * x_(i) - s * lik;
-      }
-    }
-  }
-
-  int guard() {
-    int action = kGuardNone;
-    const Eigen::Index n = L_.rows();
-    for (Eigen::Index j = 0; j < n; ++j) {
-      S rjj = L_.row(j).head(j + 1).squaredNorm();
-      if (rjj > ceiling_) {
-        L_.row(j).head(j + 1) *= std::sqrt(ceiling_ / rjj);
-        rjj = L_.row(j).head(j + 1).squaredNorm();
-        action |= kGuardCeiling;
-      }
-      const S pivot = L_(j, j) * L_(j, j);
-      S delta = 0;
-      if (!(pivot > rho_ * rjj)) {
-        delta = (10 * rho_ * rjj - pivot) / (1 - 10 * rho_);
-      }
-      if (rjj < floor_) delta = std::max(delta, floor_ - rjj);
-      if (!(delta > 0)) continue;
-      x_.setZero();
-      x_(j) = std::sqrt(delta);
-      rank_one_update(j);
+      rank_one_update<N>(l, x, j);
       action |= kGuardRepair;
     }
     return action;
@@ -405,9 +303,11 @@ class LmrUpdate {
   Matrix<S> L_;
   mutable Matrix<S> R_, P_, inverse_;  // formed on request
   Vector<S> work_, x_;
+  Vector<S> phi_copy_;  // phi when not contiguous
+  Step step_ = nullptr;
   bool failed_ = false;
   int last_ = kGuardNone;
-  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
+  int fixed_np_ = 0;
 };
 
 }  // namespace ctid

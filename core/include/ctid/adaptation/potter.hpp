@@ -36,13 +36,11 @@
 // costs several times the rest of the step (bench/ch3_bench.cpp). No
 // allocation happens in update().
 //
-// Fixed-size path: configured with fixed_size = true and
-// np <= kMaxFixedParameters, the step runs as update_fixed<np>, unrolled
-// scalar code on local copies of S^T, theta and phi written back once (as
-// ParameterUpdate::update_fixed in adaptation.hpp): the same operations in
-// the same order as the dynamic step, the time update's Householder sweep
-// included (on a local [S^T; Qn^(T/2)] of N + rank rows). The dynamic code
-// stays for larger np and as the reference.
+// The step is written once, as a template on the parameter count
+// (step_size.hpp): at compile-time size np when configured with
+// fixed_size = true and np <= kMaxFixedParameters, on local copies of
+// S^T, theta and the stacked matrix of the time update written back once;
+// otherwise at runtime size on the storage itself.
 #pragma once
 
 #include <cmath>
@@ -51,6 +49,7 @@
 #include <utility>
 
 #include "ctid/adaptation/adaptation.hpp"
+#include "ctid/adaptation/step_size.hpp"
 #include "ctid/base/types.hpp"
 
 namespace ctid {
@@ -109,7 +108,10 @@ class PotterUpdate {
   // step when np <= kMaxFixedParameters (chosen here, once).
   void configure(Eigen::Index np, Adaptation<S> adaptation,
                  bool fixed_size = false) {
-    fixed_np_ = fixed_size && np <= kMaxFixedParameters ? int(np) : 0;
+    fixed_np_ = fixed_step_size(np, fixed_size);
+    step_ = select_size(np, fixed_size, [](auto size) {
+      return &PotterUpdate::step<decltype(size)::value>;
+    });
     lambda_ = 1;
     Matrix<S> qn;
     if (const auto* ff =
@@ -130,6 +132,7 @@ class PotterUpdate {
     f_ = Vector<S>::Zero(np);
     s_f_ = Vector<S>::Zero(np);
     gain_ = Vector<S>::Zero(np);
+    phi_copy_ = Vector<S>::Zero(np);
     shrink_ = lambda_ != S(1) ? S(1) / std::sqrt(lambda_) : S(1);
   }
 
@@ -157,52 +160,7 @@ class PotterUpdate {
   // target - phi^T theta(t_k|t_(k-1)), eq. (3.73d).
   template <typename Derived>
   S update(const Eigen::MatrixBase<Derived>& phi, S target) {
-    if constexpr (std::is_same_v<Derived, Vector<S>>) {
-      const S* p = phi.derived().data();
-      switch (fixed_np_) {
-        case 1:
-          return update_fixed<1>(p, target);
-        case 2:
-          return update_fixed<2>(p, target);
-        case 3:
-          return update_fixed<3>(p, target);
-        case 4:
-          return update_fixed<4>(p, target);
-        case 5:
-          return update_fixed<5>(p, target);
-        case 6:
-          return update_fixed<6>(p, target);
-        case 7:
-          return update_fixed<7>(p, target);
-        case 8:
-          return update_fixed<8>(p, target);
-        default:
-          break;
-      }
-    }
-    predict();
-    const S error = target - phi.dot(theta_);
-    // The rows of the top block of stacked_ are the columns of S; plain
-    // loops over them, since for a few parameters Eigen's general
-    // matrix-vector products cost more than the arithmetic.
-    const Eigen::Index n = theta_.size();
-    auto St = stacked_.topRows(n);
-    for (Eigen::Index k = 0; k < n; ++k) f_(k) = St.row(k).dot(phi);
-    const S beta = lambda_ + f_.squaredNorm();
-    const S alpha = beta + std::sqrt(lambda_ * beta);
-    s_f_.setZero();
-    for (Eigen::Index k = 0; k < n; ++k) {
-      s_f_ += f_(k) * St.row(k).transpose();
-    }
-    gain_ = s_f_ / beta;
-    theta_ += gain_ * error;
-    const S shrink = lambda_ != S(1) ? S(1) / std::sqrt(lambda_) : S(1);
-    for (Eigen::Index k = 0; k < n; ++k) {
-      St.row(k) -= (f_(k) / alpha) * s_f_.transpose();
-      if (shrink != S(1)) St.row(k) *= shrink;
-    }
-    innovation_scale_ = beta;
-    return error;
+    return (this->*step_)(contiguous(phi, phi_copy_), target);
   }
 
   // beta of the last step: lambda (or 1) + phi^T P(t_k|t_k-1) phi, the
@@ -232,161 +190,123 @@ class PotterUpdate {
     return P_;
   }
   const Adaptation<S>& adaptation() const { return adaptation_; }
-  // N of the fixed-size step in use, 0 for the dynamic one.
+  // N of the compile-time-size step in use, 0 for the runtime-size one.
   int fixed_size() const { return fixed_np_; }
 
  private:
-  // The step above for np = N: st[k][i] = S(i, k) (the rows of stacked_'s
-  // top block), the time update's sweep on a local copy of stacked_ with
-  // the rows of Qn^(T/2) below, every sum in the dynamic step's order.
+  using Step = S (PotterUpdate::*)(const S*, S);
+
+  // The step for np = N (step_size.hpp) on st[k * n + i] = S(i, k), the
+  // rows of stacked_'s top block.
   template <int N>
-  S update_fixed(const S* phi_data, S target) {
-    S phi[N], theta[N], st[N][N], f[N], sf[N], gain[N];
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      phi[i] = phi_data[i];
-      theta[i] = theta_.data()[i];
-    }
-    const S* top = stacked_.data();
-#pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) st[k][i] = top[k * N + i];
-    }
-    const int r = int(qn_root_t_.rows());
-    if (r > 0) {  // eq. (3.73b)
-      S a[2 * N][N];
-#pragma GCC unroll 8
-      for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) a[k][i] = st[k][i];
-      }
-      const S* q = qn_root_t_.data();  // column-major, r-by-N
-      for (int k = 0; k < r; ++k) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) a[N + k][i] = q[i * r + k];
-      }
-      triangularize_fixed<N>(a, N + r);
-#pragma GCC unroll 8
-      for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) st[k][i] = i < k ? S(0) : a[k][i];
-      }
-    }
+  S step(const S* phi, S target) {
+    const int n = step_size<N>(theta_.size());
+    Working<S, N> theta(theta_.data(), true), f(f_.data(), false),
+        sf(s_f_.data(), false), gain(gain_.data(), false);
+    Working<S, array_size(N, N)> st(stacked_.data(), true);
+    predict<N>(st);
     S prediction = 0;
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) prediction += phi[i] * theta[i];
+    for (int i = 0; i < n; ++i) prediction += phi[i] * theta[i];
     const S error = target - prediction;
+    // f = S^-T phi (3.73c), beta (3.73e), alpha (3.73f).
     S ff = 0;
 #pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
+    for (int k = 0; k < n; ++k) {
       S sum = 0;
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) sum += st[k][i] * phi[i];
+      for (int i = 0; i < n; ++i) sum += st[k * n + i] * phi[i];
       f[k] = sum;
       ff += sum * sum;
     }
     const S lambda = lambda_;
     const S beta = lambda + ff;
     const S alpha = beta + std::sqrt(lambda * beta);
+    // S^- f, the gain (3.73h) and theta (3.73g).
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) sf[i] = 0;
+    for (int i = 0; i < n; ++i) sf[i] = 0;
 #pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
+    for (int k = 0; k < n; ++k) {
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) sf[i] += f[k] * st[k][i];
+      for (int i = 0; i < n; ++i) sf[i] += f[k] * st[k * n + i];
     }
 #pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
+    for (int i = 0; i < n; ++i) {
       gain[i] = sf[i] / beta;
       theta[i] += gain[i] * error;
     }
+    // S = S^- (I - f f^T / alpha) (3.73i), / sqrt(lambda) for the
+    // forgetting factor.
     const S shrink = shrink_;
 #pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
+    for (int k = 0; k < n; ++k) {
       const S c = f[k] / alpha;
 #pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) st[k][i] -= c * sf[i];
+      for (int i = 0; i < n; ++i) st[k * n + i] -= c * sf[i];
       if (shrink != S(1)) {
 #pragma GCC unroll 8
-        for (int i = 0; i < N; ++i) st[k][i] *= shrink;
+        for (int i = 0; i < n; ++i) st[k * n + i] *= shrink;
       }
     }
-    S* out = stacked_.data();
-#pragma GCC unroll 8
-    for (int k = 0; k < N; ++k) {
-#pragma GCC unroll 8
-      for (int i = 0; i < N; ++i) out[k * N + i] = st[k][i];
-    }
-    S* theta_data = theta_.data();
-    S* gain_data = gain_.data();
-#pragma GCC unroll 8
-    for (int i = 0; i < N; ++i) {
-      theta_data[i] = theta[i];
-      gain_data[i] = gain[i];
-    }
+    st.write_back();
+    theta.write_back();
+    gain.write_back();
     innovation_scale_ = beta;
     return error;
   }
 
-  // triangularize() on the first m rows of a (m <= 2 N), N columns.
-  template <int N>
-  static void triangularize_fixed(S (&a)[2 * N][N], int m) {
-#pragma GCC unroll 8
-    for (int j = 0; j < N; ++j) {
-      S norm2 = 0;
-      for (int i = j; i < m; ++i) norm2 += a[i][j] * a[i][j];
-      if (!(norm2 > 0)) continue;
-      const S norm = std::sqrt(norm2);
-      const S x = a[j][j];
-      const S diagonal = x > 0 ? -norm : norm;
-      a[j][j] = x - diagonal;
-      const S v_norm2 = a[j][j] * a[j][j] + (norm2 - x * x);
-#pragma GCC unroll 8
-      for (int k = j + 1; k < N; ++k) {
-        S dot = 0;
-        for (int i = j; i < m; ++i) dot += a[i][j] * a[i][k];
-        const S f = 2 * dot / v_norm2;
-        for (int i = j; i < m; ++i) a[i][k] -= f * a[i][j];
-      }
-      a[j][j] = diagonal;
-    }
-  }
-
   // S S^T + Qn = [S^T; Qn^(T/2)]^T [S^T; Qn^(T/2)] = R^T R, eq. (3.73b):
   // the orthogonal T is a product of Householder reflections, applied in
-  // place; R is the new S^T (upper triangular).
-  void predict() {
-    const Eigen::Index r = qn_root_t_.rows();
+  // place on a (stacked_ itself at runtime size); R is the new S^T (upper
+  // triangular).
+  template <int N, typename Square>
+  void predict(Square& st) {
+    const int r = int(qn_root_t_.rows());
     if (r == 0) return;
-    const Eigen::Index n = theta_.size();
-    stacked_.bottomRows(r) = qn_root_t_;
-    triangularize(stacked_);
-    for (Eigen::Index i = 1; i < n; ++i) {
-      for (Eigen::Index k = 0; k < i; ++k) stacked_(i, k) = 0;
+    const int n = step_size<N>(theta_.size());
+    Working<S, array_size(array_size(2, N), N)> a(stacked_.data(), false);
+#pragma GCC unroll 64
+    for (int i = 0; i < n * n; ++i) a[i] = st[i];
+    const S* q = qn_root_t_.data();  // column-major, r-by-n
+    for (int k = 0; k < r; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < n; ++i) a[(n + k) * n + i] = q[i * r + k];
+    }
+    if constexpr (N != Eigen::Dynamic) {
+      // The local array's rows below n + r are never read; defined so
+      // that the compiler sees no uninitialised value.
+      for (int i = (n + r) * n; i < 2 * n * n; ++i) a[i] = 0;
+    }
+    triangularize<N>(a, n + r);
+#pragma GCC unroll 8
+    for (int k = 0; k < n; ++k) {
+#pragma GCC unroll 8
+      for (int i = 0; i < n; ++i) st[k * n + i] = i < k ? S(0) : a[k * n + i];
     }
   }
 
-  // Overwrites the upper triangle of A's first n rows with R of A = Q R
-  // (R's diagonal may be negative: R^T R = A^T A is what matters); the
-  // entries below it are left as workspace.
-  static void triangularize(RowMatrix& A) {
-    const Eigen::Index m = A.rows(), n = A.cols();
-    S* a = A.data();
-    for (Eigen::Index j = 0; j < n; ++j) {
+  // Overwrites the upper triangle of the first n rows of a (m-by-n,
+  // row-major) with R of a = Q R (R's diagonal may be negative: R^T R =
+  // a^T a is what matters); the entries below it are left as workspace.
+  template <int N, typename Rows>
+  void triangularize(Rows& a, int m) const {
+    const int n = step_size<N>(theta_.size());
+#pragma GCC unroll 8
+    for (int j = 0; j < n; ++j) {
       S norm2 = 0;
-      for (Eigen::Index i = j; i < m; ++i) norm2 += a[i * n + j] * a[i * n + j];
+      for (int i = j; i < m; ++i) norm2 += a[i * n + j] * a[i * n + j];
       if (!(norm2 > 0)) continue;
       const S norm = std::sqrt(norm2);
       const S x = a[j * n + j];
       const S diagonal = x > 0 ? -norm : norm;
       a[j * n + j] = x - diagonal;  // v = x - diagonal e_j, |v_j| >= norm
       const S v_norm2 = a[j * n + j] * a[j * n + j] + (norm2 - x * x);
-      for (Eigen::Index k = j + 1; k < n; ++k) {
+#pragma GCC unroll 8
+      for (int k = j + 1; k < n; ++k) {
         S dot = 0;
-        for (Eigen::Index i = j; i < m; ++i) dot += a[i * n + j] * a[i * n + k];
+        for (int i = j; i < m; ++i) dot += a[i * n + j] * a[i * n + k];
         const S f = 2 * dot / v_norm2;
-        for (Eigen::Index i = j; i < m; ++i) a[i * n + k] -= f * a[i * n + j];
+        for (int i = j; i < m; ++i) a[i * n + k] -= f * a[i * n + j];
       }
       a[j * n + j] = diagonal;
     }
@@ -405,8 +325,10 @@ class PotterUpdate {
   Vector<S> f_;
   Vector<S> s_f_;
   Vector<S> gain_;
-  S shrink_ = 1;      // 1 / sqrt(lambda)
-  int fixed_np_ = 0;  // N of the fixed-size step, 0: dynamic
+  Vector<S> phi_copy_;  // phi when not contiguous
+  S shrink_ = 1;        // 1 / sqrt(lambda)
+  Step step_ = nullptr;
+  int fixed_np_ = 0;
 };
 
 }  // namespace ctid

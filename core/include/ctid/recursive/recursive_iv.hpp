@@ -179,9 +179,9 @@ class RecursiveIv {
       config_.m_theta.denominator = Vector<S>::Ones(1);
     }
     ls_regressor_.configure(orders, config.svf);
-    // The least-squares steps with the fixed-size kernels as in RLSSVF
-    // (rlssvf.hpp), so that before t_s,iv the estimates are RLSSVF's bit
-    // for bit; the IV step stays dynamic.
+    // The adaptation steps (least squares, then IV) at compile-time size
+    // with the fixed-size kernels as in RLSSVF (rlssvf.hpp), so that before
+    // t_s,iv the estimates are RLSSVF's bit for bit.
     const bool fixed_ls = config.svf.kernels == FilterKernels::kFixedSize;
     update_.configure(np, UpdateForm::kStandard, config.adaptation, Matrix<S>(),
                       config.scaling, config.covariance_guard, fixed_ls);

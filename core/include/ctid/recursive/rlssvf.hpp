@@ -160,9 +160,8 @@ Status validate(const RlsSvfConfig<S>& config) {
 // theta() and P() are unscaled, kappa() is kappa_2 of the matrix actually
 // propagated (P_s, S_s S_s^T or R_s). SquareRootForms = false (the
 // recursive IV estimators, whose configuration has no update form) leaves
-// the Potter and LMR steps out of update(), so that their fixed-size code
-// is not compiled where it cannot run; configure() then takes kStandard
-// only.
+// the Potter and LMR steps out of update(), so that their code is not
+// compiled where it cannot run; configure() then takes kStandard only.
 template <typename S, bool SquareRootForms = true>
 class LeastSquaresUpdate {
  public:
@@ -401,8 +400,8 @@ class RlsSvf {
       ic_regressor_.configure(config.orders.na, svf.lambda_svf, svf.normalised);
     }
     regressor_.configure(config.orders, svf);
-    // The fixed-size least-squares step goes with the fixed-size filter
-    // kernels (svf.kernels, chosen once here).
+    // The adaptation step at compile-time size goes with the fixed-size
+    // filter kernels (svf.kernels, chosen once here; step_size.hpp).
     update_.configure(n, config.form, config.adaptation, config.lmr_gamma,
                       config.scaling, config.covariance_guard,
                       svf.kernels == FilterKernels::kFixedSize);
