@@ -60,7 +60,8 @@ void read_option_table(const Gateway& g, OptionsReader& opt,
           value.flag = mxIsLogicalScalarTrue(a);
         } else {
           const double v = g.scalar(a, what);
-          if (v != 0 && v != 1) g.fail("badOption", what + " must be true or false");
+          if (v != 0 && v != 1)
+            g.fail("badOption", what + " must be true or false");
           value.flag = v != 0;
         }
         break;

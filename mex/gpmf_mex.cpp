@@ -48,13 +48,12 @@ void gpmf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   ctid::mex::OptionsReader opt(g, prhs[4]);
   enum class Method { kLs, kIv, kBc, kSid };
-  const Method method = opt.choice<Method>(
-      "method",
-      {{"ls", Method::kLs},
-       {"iv", Method::kIv},
-       {"bc", Method::kBc},
-       {"sid", Method::kSid}},
-      Method::kLs);
+  const Method method = opt.choice<Method>("method",
+                                           {{"ls", Method::kLs},
+                                            {"iv", Method::kIv},
+                                            {"bc", Method::kBc},
+                                            {"sid", Method::kSid}},
+                                           Method::kLs);
   if (!opt.has("method")) g.fail("badOption", "option 'method' is missing");
   record.u_intersample =
       ctid::mex::read_intersample(opt, ctid::InterSample::kZoh);
@@ -111,7 +110,6 @@ void gpmf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   ctid::mex::run_gateway(
-      "sslsgpmf", {"sslsgpmf", "ssivgpmf", "ssbcgpmf", "sidgpmf"}, nrhs,
-      prhs,
+      "sslsgpmf", {"sslsgpmf", "ssivgpmf", "ssbcgpmf", "sidgpmf"}, nrhs, prhs,
       [&](const Gateway& g) { gpmf_gateway(g, nlhs, plhs, nrhs, prhs); });
 }

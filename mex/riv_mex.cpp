@@ -65,7 +65,8 @@ struct RivRun {
 void riv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
   if (ctid::mex::asks_for_options(nrhs, prhs)) {
-    plhs[0] = ctid::mex::option_table_struct(ctid::recursive_iv_options<double>());
+    plhs[0] =
+        ctid::mex::option_table_struct(ctid::recursive_iv_options<double>());
     return;
   }
   if (nrhs != 5) {

@@ -508,19 +508,21 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
         gpmf_detail::num_alpha(n, i) +
         (n[i] + static_cast<Eigen::Index>(roots[i].size())) * m;
     if (count - first < columns) {
-      return bad_input("the data from sample n0 on have fewer samples than "
-                       "the " + std::to_string(columns) +
-                       " parameters of an augmented output equation");
+      return bad_input(
+          "the data from sample n0 on have fewer samples than "
+          "the " +
+          std::to_string(columns) +
+          " parameters of an augmented output equation");
     }
   }
   struct Equation {
-    Matrix<S> P;                 // Phi^T Phi
-    Vector<S> c;                 // Phi^T zeta
-    Vector<S> theta_ls, theta;   // augmented parameters
-    std::vector<Matrix<S>> D;    // noise Gram of y_j, j = 1..p
-    Vector<S> d;                 // noise cross term of y_i and zeta
-    Matrix<S> H;                 // left null space of the convolution by F
-    Matrix<S> T;                 // convolution by F: beta_bar = T beta
+    Matrix<S> P;                // Phi^T Phi
+    Vector<S> c;                // Phi^T zeta
+    Vector<S> theta_ls, theta;  // augmented parameters
+    std::vector<Matrix<S>> D;   // noise Gram of y_j, j = 1..p
+    Vector<S> d;                // noise cross term of y_i and zeta
+    Matrix<S> H;                // left null space of the convolution by F
+    Matrix<S> T;                // convolution by F: beta_bar = T beta
     Eigen::Index alpha_count = 0;
     Eigen::LDLT<Matrix<S>> ldlt;
   };
@@ -653,16 +655,14 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     Vector<S> trial(p), g_trial;
     for (int halving = 0; halving < 40; ++halving, scale /= 2) {
       trial = (sigma2 + scale * step).cwiseMax(S(0));
-      if (evaluate(trial, &g_trial, nullptr) &&
-          g_trial.squaredNorm() < cost) {
+      if (evaluate(trial, &g_trial, nullptr) && g_trial.squaredNorm() < cost) {
         improved = true;
         break;
       }
     }
     const S moved = improved ? (trial - sigma2).norm() : S(0);
     if (improved) sigma2 = trial;
-    converged =
-        !improved || moved <= S(1e-10) * std::max(sigma2.norm(), floor);
+    converged = !improved || moved <= S(1e-10) * std::max(sigma2.norm(), floor);
     if (!evaluate(sigma2, &g, &J)) {
       return numerical_failure("the bias-compensated estimate is not finite");
     }
@@ -684,9 +684,8 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     const Eigen::Index width = e.T.rows();
     const Eigen::ColPivHouseholderQR<Matrix<S>> qr(e.T);
     for (int l = 0; l < m; ++l) {
-      theta.segment(offset, n[i]) =
-          qr.solve(Vector<S>(e.theta.segment(e.alpha_count + l * width,
-                                             width)));
+      theta.segment(offset, n[i]) = qr.solve(
+          Vector<S>(e.theta.segment(e.alpha_count + l * width, width)));
       offset += n[i];
     }
   }

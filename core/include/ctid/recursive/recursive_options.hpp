@@ -150,27 +150,35 @@ Eigen::Index estimated_count(const RecursiveIvConfig<S>& c) {
 template <typename S, typename Config>
 void add_structure_options(OptionTable<Config>* table) {
   using V = const OptionValue&;
-  table->push_back(
-      {"intersample", OptionType::kChoice, false, {"zoh", "foh", "trapezoid"},
-       "'zoh' | 'foh' | 'trapezoid'",
-       "how the input varies between samples: the input filters' "
-       "discretisation",
-       [](const Config& c) {
-         return std::string(intersample_word(c.svf.u_intersample));
-       },
-       [](Config* c, V v) {
-         c->svf.u_intersample = intersample_of(v.word);
-         return Status::Ok();
-       }});
-  table->push_back({"na", OptionType::kInteger, true, {}, ">= 1",
-                    "denominator order", [](const Config& c) {
-                      return std::to_string(c.orders.na);
+  table->push_back({"intersample",
+                    OptionType::kChoice,
+                    false,
+                    {"zoh", "foh", "trapezoid"},
+                    "'zoh' | 'foh' | 'trapezoid'",
+                    "how the input varies between samples: the input filters' "
+                    "discretisation",
+                    [](const Config& c) {
+                      return std::string(intersample_word(c.svf.u_intersample));
                     },
+                    [](Config* c, V v) {
+                      c->svf.u_intersample = intersample_of(v.word);
+                      return Status::Ok();
+                    }});
+  table->push_back({"na",
+                    OptionType::kInteger,
+                    true,
+                    {},
+                    ">= 1",
+                    "denominator order",
+                    [](const Config& c) { return std::to_string(c.orders.na); },
                     [](Config* c, V v) {
                       c->orders.na = v.integer;
                       return Status::Ok();
                     }});
-  table->push_back({"nb", OptionType::kIntegerVector, true, {},
+  table->push_back({"nb",
+                    OptionType::kIntegerVector,
+                    true,
+                    {},
                     ">= 0 each, at most na + 1",
                     "numerator parameters, one per input",
                     [](const Config& c) { return integers(c.orders.nb); },
@@ -178,23 +186,32 @@ void add_structure_options(OptionTable<Config>* table) {
                       c->orders.nb = v.integers;
                       return Status::Ok();
                     }});
-  table->push_back({"nk", OptionType::kIntegerVector, true, {}, ">= 0 each",
+  table->push_back({"nk",
+                    OptionType::kIntegerVector,
+                    true,
+                    {},
+                    ">= 0 each",
                     "input delay in samples, one per input",
                     [](const Config& c) { return integers(c.orders.nk); },
                     [](Config* c, V v) {
                       c->orders.nk = v.integers;
                       return validate_orders(c->orders);
                     }});
+  table->push_back({"lambda_svf",
+                    OptionType::kReal,
+                    true,
+                    {},
+                    "> 0, finite",
+                    "cut-off (rad/s) of the state-variable filter",
+                    [](const Config& c) { return number(c.svf.lambda_svf); },
+                    [](Config* c, V v) {
+                      c->svf.lambda_svf = static_cast<S>(v.real);
+                      return Status::Ok();
+                    }});
   table->push_back(
-      {"lambda_svf", OptionType::kReal, true, {}, "> 0, finite",
-       "cut-off (rad/s) of the state-variable filter",
-       [](const Config& c) { return number(c.svf.lambda_svf); },
-       [](Config* c, V v) {
-         c->svf.lambda_svf = static_cast<S>(v.real);
-         return Status::Ok();
-       }});
-  table->push_back(
-      {"svf", OptionType::kChoice, false,
+      {"svf",
+       OptionType::kChoice,
+       false,
        {"normalised", "normalized", "ordinary"},
        "'normalised' | 'ordinary'",
        "the SVF (lambda/(p + lambda))^na (eq. 3.1) or 1/(p + lambda)^na",
@@ -206,14 +223,16 @@ void add_structure_options(OptionTable<Config>* table) {
          return Status::Ok();
        }});
   table->push_back(
-      {"kernels", OptionType::kChoice, false, {"fixed", "dynamic"},
+      {"kernels",
+       OptionType::kChoice,
+       false,
+       {"fixed", "dynamic"},
        "'fixed' | 'dynamic'",
        "fixed-size filter kernels for orders 1-4, or the dynamic-size "
        "reference",
        [](const Config& c) {
-         return std::string(c.svf.kernels == FilterKernels::kFixedSize
-                                ? "fixed"
-                                : "dynamic");
+         return std::string(
+             c.svf.kernels == FilterKernels::kFixedSize ? "fixed" : "dynamic");
        },
        [](Config* c, V v) {
          c->svf.kernels = v.word == "dynamic" ? FilterKernels::kDynamic
@@ -226,13 +245,16 @@ template <typename S, typename Config>
 void add_estimate_options(OptionTable<Config>* table) {
   using V = const OptionValue&;
   table->push_back(
-      {"adm", OptionType::kChoice, false, {"ff", "kf"}, "'ff' | 'kf'",
+      {"adm",
+       OptionType::kChoice,
+       false,
+       {"ff", "kf"},
+       "'ff' | 'kf'",
        "adaptation: forgetting factor (eq. 1.57) or Kalman filter (eq. 1.59; "
        "Qn = 0 unless adg is given)",
        [](const Config& c) {
          return std::string(
-             std::holds_alternative<ForgettingFactorAdaptation<S>>(
-                 c.adaptation)
+             std::holds_alternative<ForgettingFactorAdaptation<S>>(c.adaptation)
                  ? "ff"
                  : "kf");
        },
@@ -247,7 +269,10 @@ void add_estimate_options(OptionTable<Config>* table) {
          return Status::Ok();
        }});
   table->push_back(
-      {"adg", OptionType::kMatrix, false, {},
+      {"adg",
+       OptionType::kMatrix,
+       false,
+       {},
        "ff: a scalar in (0, 1]; kf: np-by-np, symmetric, positive "
        "semi-definite",
        "the forgetting factor (adm 'ff') or Qn (adm 'kf')",
@@ -256,8 +281,8 @@ void add_estimate_options(OptionTable<Config>* table) {
                  std::get_if<ForgettingFactorAdaptation<S>>(&c.adaptation)) {
            return number(ff->lambda());
          }
-         return matrix_text(
-             std::get<KalmanAdaptation<S>>(c.adaptation).qn(), "[]");
+         return matrix_text(std::get<KalmanAdaptation<S>>(c.adaptation).qn(),
+                            "[]");
        },
        [](Config* c, V v) -> Status {
          if (std::holds_alternative<ForgettingFactorAdaptation<S>>(
@@ -285,19 +310,25 @@ void add_estimate_options(OptionTable<Config>* table) {
          }
          return Status::Ok();
        }});
-  table->push_back({"th0", OptionType::kMatrix, false, {}, "np-by-1, finite",
-                    "initial estimate (default zeros)",
-                    [](const Config& c) {
-                      return matrix_text(Matrix<S>(c.theta0), "0");
-                    },
-                    [](Config* c, V v) -> Status {
-                      if (v.matrix.cols() > 1 && v.matrix.rows() > 1) {
-                        return dimension_mismatch("th0 must be a vector");
-                      }
-                      c->theta0 = to_vector<S>(v.matrix);
-                      return Status::Ok();
-                    }});
-  table->push_back({"P0", OptionType::kMatrix, false, {},
+  table->push_back(
+      {"th0",
+       OptionType::kMatrix,
+       false,
+       {},
+       "np-by-1, finite",
+       "initial estimate (default zeros)",
+       [](const Config& c) { return matrix_text(Matrix<S>(c.theta0), "0"); },
+       [](Config* c, V v) -> Status {
+         if (v.matrix.cols() > 1 && v.matrix.rows() > 1) {
+           return dimension_mismatch("th0 must be a vector");
+         }
+         c->theta0 = to_vector<S>(v.matrix);
+         return Status::Ok();
+       }});
+  table->push_back({"P0",
+                    OptionType::kMatrix,
+                    false,
+                    {},
                     "np-by-np, symmetric, positive definite",
                     "initial covariance (default 1e4 I)",
                     [](const Config& c) { return matrix_text(c.P0, "1e4 I"); },
@@ -306,7 +337,11 @@ void add_estimate_options(OptionTable<Config>* table) {
                       return Status::Ok();
                     }});
   table->push_back(
-      {"scaling", OptionType::kMatrix, false, {}, "np-by-1, > 0",
+      {"scaling",
+       OptionType::kMatrix,
+       false,
+       {},
+       "np-by-1, > 0",
        "diagonal of the scaling matrix M_s (eq. 3.74); [] for none",
        [](const Config& c) {
          return matrix_text(Matrix<S>(c.scaling), "none");
@@ -318,18 +353,25 @@ void add_estimate_options(OptionTable<Config>* table) {
          c->scaling = to_vector<S>(v.matrix);
          return Status::Ok();
        }});
+  table->push_back({"covariance_guard",
+                    OptionType::kFlag,
+                    false,
+                    {},
+                    "true | false",
+                    "keep P symmetric positive definite (covariance_guard.hpp)",
+                    [](const Config& c) {
+                      return std::string(c.covariance_guard ? "true" : "false");
+                    },
+                    [](Config* c, V v) {
+                      c->covariance_guard = v.flag;
+                      return Status::Ok();
+                    }});
   table->push_back(
-      {"covariance_guard", OptionType::kFlag, false, {}, "true | false",
-       "keep P symmetric positive definite (covariance_guard.hpp)",
-       [](const Config& c) {
-         return std::string(c.covariance_guard ? "true" : "false");
-       },
-       [](Config* c, V v) {
-         c->covariance_guard = v.flag;
-         return Status::Ok();
-       }});
-  table->push_back(
-      {"gap_interval", OptionType::kReal, false, {}, ">= 0, finite",
+      {"gap_interval",
+       OptionType::kReal,
+       false,
+       {},
+       ">= 0, finite",
        "a sampling interval above this (s) is a gap of missing samples (0: "
        "none)",
        [](const Config& c) { return number(c.gap_interval); },
@@ -337,14 +379,17 @@ void add_estimate_options(OptionTable<Config>* table) {
          c->gap_interval = static_cast<S>(v.real);
          return Status::Ok();
        }});
-  table->push_back(
-      {"gap_settle", OptionType::kReal, false, {}, ">= 0, finite",
-       "no update for this long (s) after a gap",
-       [](const Config& c) { return number(c.gap_settle); },
-       [](Config* c, V v) {
-         c->gap_settle = static_cast<S>(v.real);
-         return Status::Ok();
-       }});
+  table->push_back({"gap_settle",
+                    OptionType::kReal,
+                    false,
+                    {},
+                    ">= 0, finite",
+                    "no update for this long (s) after a gap",
+                    [](const Config& c) { return number(c.gap_settle); },
+                    [](Config* c, V v) {
+                      c->gap_settle = static_cast<S>(v.real);
+                      return Status::Ok();
+                    }});
 }
 
 // A discrete transfer function's numerator or denominator (q^-1), given
@@ -370,7 +415,10 @@ const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
     OptionTable<Config> t;
     options_detail::add_structure_options<S>(&t);
     t.push_back(
-        {"form", OptionType::kChoice, false, {"standard", "potter", "lmr"},
+        {"form",
+         OptionType::kChoice,
+         false,
+         {"standard", "potter", "lmr"},
          "'standard' | 'potter' | 'lmr'",
          "the update: P (eqs. 1.57/1.59), Potter's square root (eq. 3.73) "
          "or LMR (eq. 3.82)",
@@ -386,7 +434,11 @@ const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
                                         : UpdateForm::kStandard;
            return Status::Ok();
          }});
-    t.push_back({"ic", OptionType::kFlag, false, {}, "true | false",
+    t.push_back({"ic",
+                 OptionType::kFlag,
+                 false,
+                 {},
+                 "true | false",
                  "estimate the initial conditions c_1 .. c_na too",
                  [](const Config& c) {
                    return std::string(c.initial_conditions ? "true" : "false");
@@ -396,7 +448,10 @@ const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
                    return Status::Ok();
                  }});
     options_detail::add_estimate_options<S>(&t);
-    t.push_back({"Gamma", OptionType::kMatrix, false, {},
+    t.push_back({"Gamma",
+                 OptionType::kMatrix,
+                 false,
+                 {},
                  "np-by-np, symmetric, positive semi-definite",
                  "the regularisation Gamma of LMR (eq. 3.82)",
                  [](const Config& c) {
@@ -406,13 +461,18 @@ const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
                    c->lmr_gamma = v.matrix.cast<S>();
                    return Status::Ok();
                  }});
-    t.push_back({"tsls", OptionType::kReal, false, {}, ">= 0, finite",
-                 "first update at the first sample with t - t_1 >= tsls (s)",
-                 [](const Config& c) { return options_detail::number(c.t_s_ls); },
-                 [](Config* c, V v) {
-                   c->t_s_ls = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(
+        {"tsls",
+         OptionType::kReal,
+         false,
+         {},
+         ">= 0, finite",
+         "first update at the first sample with t - t_1 >= tsls (s)",
+         [](const Config& c) { return options_detail::number(c.t_s_ls); },
+         [](Config* c, V v) {
+           c->t_s_ls = static_cast<S>(v.real);
+           return Status::Ok();
+         }});
     return t;
   }();
   return table;
@@ -428,30 +488,41 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
     OptionTable<Config> t;
     options_detail::add_structure_options<S>(&t);
     options_detail::add_estimate_options<S>(&t);
-    t.push_back(
-        {"method", OptionType::kChoice, false, {"rivsvf", "rsrivc"},
-         "'rivsvf' | 'rsrivc'",
-         "the SVF as prefilter (sec. 2.2.3) or the adaptive prefilter "
-         "(sec. 2.3.3)",
-         [](const Config& c) {
-           return std::string(c.method == IvMethod::kRivsvf ? "rivsvf"
-                                                            : "rsrivc");
-         },
-         [](Config* c, V v) {
-           c->method =
-               v.word == "rivsvf" ? IvMethod::kRivsvf : IvMethod::kRsrivc;
-           return Status::Ok();
-         }});
-    t.push_back({"tsiv", OptionType::kReal, false, {}, ">= 0, finite",
-                 "RLSSVF until tsiv (s), the IV update after it (the "
-                 "front-ends default to a tenth of the record, as CONTSID)",
-                 [](const Config& c) { return options_detail::number(c.t_s_iv); },
+    t.push_back({"method",
+                 OptionType::kChoice,
+                 false,
+                 {"rivsvf", "rsrivc"},
+                 "'rivsvf' | 'rsrivc'",
+                 "the SVF as prefilter (sec. 2.2.3) or the adaptive prefilter "
+                 "(sec. 2.3.3)",
+                 [](const Config& c) {
+                   return std::string(c.method == IvMethod::kRivsvf ? "rivsvf"
+                                                                    : "rsrivc");
+                 },
                  [](Config* c, V v) {
-                   c->t_s_iv = static_cast<S>(v.real);
+                   c->method = v.word == "rivsvf" ? IvMethod::kRivsvf
+                                                  : IvMethod::kRsrivc;
                    return Status::Ok();
                  }});
     t.push_back(
-        {"dtupdate", OptionType::kReal, false, {}, ">= 0, finite",
+        {"tsiv",
+         OptionType::kReal,
+         false,
+         {},
+         ">= 0, finite",
+         "RLSSVF until tsiv (s), the IV update after it (the "
+         "front-ends default to a tenth of the record, as CONTSID)",
+         [](const Config& c) { return options_detail::number(c.t_s_iv); },
+         [](Config* c, V v) {
+           c->t_s_iv = static_cast<S>(v.real);
+           return Status::Ok();
+         }});
+    t.push_back(
+        {"dtupdate",
+         OptionType::kReal,
+         false,
+         {},
+         ">= 0, finite",
          "refresh period (s) of the auxiliary model and the prefilter (0: "
          "every sample)",
          [](const Config& c) { return options_detail::number(c.dtupdate); },
@@ -460,21 +531,26 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
            return Status::Ok();
          }});
     t.push_back(
-        {"stability", OptionType::kChoice, false, {"keep", "reflect"},
+        {"stability",
+         OptionType::kChoice,
+         false,
+         {"keep", "reflect"},
          "'keep' | 'reflect'",
          "an unstable estimate keeps the last stable one or is reflected "
          "(eq. 3.10)",
          [](const Config& c) {
-           return std::string(c.stability == StabilityPolicy::kReflect
-                                  ? "reflect"
-                                  : "keep");
+           return std::string(
+               c.stability == StabilityPolicy::kReflect ? "reflect" : "keep");
          },
          [](Config* c, V v) {
            c->stability = v.word == "reflect" ? StabilityPolicy::kReflect
                                               : StabilityPolicy::kKeepLast;
            return Status::Ok();
          }});
-    t.push_back({"mtheta_num", OptionType::kMatrix, false, {},
+    t.push_back({"mtheta_num",
+                 OptionType::kMatrix,
+                 false,
+                 {},
                  "a vector, with mtheta_den; unit static gain",
                  "numerator of the smoothing filter M_theta(q^-1) (default "
                  "q^-1)",
@@ -486,8 +562,12 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                    return options_detail::set_polynomial<S>(
                        v, "mtheta_num", &c->m_theta.numerator);
                  }});
-    t.push_back({"mtheta_den", OptionType::kMatrix, false, {},
-                 "a vector, with mtheta_num", "denominator of M_theta(q^-1)",
+    t.push_back({"mtheta_den",
+                 OptionType::kMatrix,
+                 false,
+                 {},
+                 "a vector, with mtheta_num",
+                 "denominator of M_theta(q^-1)",
                  [](const Config& c) {
                    return options_detail::matrix_text(
                        Matrix<S>(c.m_theta.denominator), "1");
@@ -497,7 +577,10 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                        v, "mtheta_den", &c->m_theta.denominator);
                  }});
     t.push_back(
-        {"prefilter", OptionType::kChoice, false, {"unit", "monic"},
+        {"prefilter",
+         OptionType::kChoice,
+         false,
+         {"unit", "monic"},
          "'unit' | 'monic'",
          "gain of the adaptive prefilter: f_na/A(p) or 1/A(p) (eq. 2.19)",
          [](const Config& c) {
@@ -510,20 +593,25 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                                    : PrefilterGain::kUnitStaticGain;
            return Status::Ok();
          }});
-    t.push_back({"A", OptionType::kMatrix, false, {},
+    t.push_back({"A",
+                 OptionType::kMatrix,
+                 false,
+                 {},
                  "1-by-na, a stable [a1 .. a_na]",
                  "denominator that starts the prefilter and the auxiliary "
                  "model (default (p + lambda_svf)^na)",
                  [](const Config& c) {
                    return options_detail::matrix_text(
-                       Matrix<S>(c.initial_denominator),
-                       "(p + lambda_svf)^na");
+                       Matrix<S>(c.initial_denominator), "(p + lambda_svf)^na");
                  },
                  [](Config* c, V v) {
                    return options_detail::set_polynomial<S>(
                        v, "A", &c->initial_denominator);
                  }});
-    t.push_back({"controller_num", OptionType::kMatrix, false, {},
+    t.push_back({"controller_num",
+                 OptionType::kMatrix,
+                 false,
+                 {},
                  "a vector, with controller_den",
                  "numerator of the controller C(q^-1), u = r1 + C (r2 - y)",
                  [](const Config& c) {
@@ -535,7 +623,10 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                    return options_detail::set_polynomial<S>(
                        v, "controller_num", &c->controller.numerator);
                  }});
-    t.push_back({"controller_den", OptionType::kMatrix, false, {},
+    t.push_back({"controller_den",
+                 OptionType::kMatrix,
+                 false,
+                 {},
                  "a vector, with controller_num",
                  "denominator of the controller C(q^-1)",
                  [](const Config& c) {
@@ -548,7 +639,11 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                        v, "controller_den", &c->controller.denominator);
                  }});
     t.push_back(
-        {"antiwindup", OptionType::kReal, false, {}, "0 (none) or > 1",
+        {"antiwindup",
+         OptionType::kReal,
+         false,
+         {},
+         "0 (none) or > 1",
          "conditional updating: the threshold gamma on kappa_2(P) (eq. 3.79)",
          [](const Config& c) {
            return options_detail::number(c.antiwindup_gamma);
@@ -557,17 +652,20 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
            c->antiwindup_gamma = static_cast<S>(v.real);
            return Status::Ok();
          }});
-    t.push_back(
-        {"antiwindup_lambda", OptionType::kReal, false, {}, "(0, 1]",
-         "forgetting factor of the parallel RLSSVF-FF of conditional "
-         "updating (Table 3.2)",
-         [](const Config& c) {
-           return options_detail::number(c.antiwindup_lambda);
-         },
-         [](Config* c, V v) {
-           c->antiwindup_lambda = static_cast<S>(v.real);
-           return Status::Ok();
-         }});
+    t.push_back({"antiwindup_lambda",
+                 OptionType::kReal,
+                 false,
+                 {},
+                 "(0, 1]",
+                 "forgetting factor of the parallel RLSSVF-FF of conditional "
+                 "updating (Table 3.2)",
+                 [](const Config& c) {
+                   return options_detail::number(c.antiwindup_lambda);
+                 },
+                 [](Config* c, V v) {
+                   c->antiwindup_lambda = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
     return t;
   }();
   return table;
@@ -606,9 +704,9 @@ Status set_option(const OptionTable<Config>& table, const std::string& name,
       allowed += (allowed.empty() ? "'" : ", '") + std::string(word) + "'";
     }
     if (!known) {
-      return Status(ErrorCode::kBadOption,
-                    "option '" + name + "' must be one of " + allowed +
-                        ", got '" + value.word + "'");
+      return Status(ErrorCode::kBadOption, "option '" + name +
+                                               "' must be one of " + allowed +
+                                               ", got '" + value.word + "'");
     }
   }
   return decl->set(config, value);

@@ -124,8 +124,7 @@ Status validate_update_form(UpdateForm form, const Adaptation<S>& adaptation,
           "not a Kalman filter");
     }
     if (gamma.size() == 0) {
-      return Status(ErrorCode::kBadOption,
-                    "LMR-RLSSVF (eq. 3.82) needs Gamma");
+      return Status(ErrorCode::kBadOption, "LMR-RLSSVF (eq. 3.82) needs Gamma");
     }
     status = validate_covariance<S>(gamma, n, "Gamma", false);
     if (!status.ok()) return status;
