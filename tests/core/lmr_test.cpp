@@ -117,6 +117,44 @@ TEST(LmrUpdate, KeepsTheInformationBoundedWithoutExcitation) {
   EXPECT_GT(ff.P().norm(), 1e6 * 1e-4);
 }
 
+// Eq. (3.82) as written, in information form summed in double with
+// Eigen (R = lambda R + phi phi^T + (1 - lambda) Gamma, theta += R^-1 phi
+// epsilon), against the square-root step at the compile-time size and at
+// the runtime size: an independent reference for both, with a Gamma that
+// acts (lambda < 1).
+TEST(LmrUpdate, AtBothSizesItIsTheTextbookInformationRecursion) {
+  for (int np : {1, 3, 5}) {
+    const Regression r = random_regression(400, np, 7 + np);
+    const double lambda = 0.95;
+    Eigen::MatrixXd gamma(np, np);
+    for (int i = 0; i < np; ++i) {
+      for (int j = 0; j < np; ++j) gamma(i, j) = 0.2 / (1 + std::abs(i - j));
+    }
+    gamma.diagonal().array() += 0.5;
+    const Eigen::VectorXd theta0 = Eigen::VectorXd::Constant(np, 0.3);
+    const Eigen::MatrixXd P0 = 10 * Eigen::MatrixXd::Identity(np, np);
+    for (bool fixed : {true, false}) {
+      LmrUpdate<double> lmr;
+      lmr.configure(np, lambda, gamma, true, fixed);
+      ASSERT_EQ(lmr.fixed_size(), fixed ? np : 0);
+      lmr.reset(theta0, P0);
+      Eigen::MatrixXd R = P0.inverse();
+      Eigen::VectorXd theta = theta0;
+      for (int k = 0; k < r.target.size(); ++k) {
+        const Eigen::VectorXd phi = r.phi.col(k);
+        const double e = r.target(k) - phi.dot(theta);
+        R = lambda * R + phi * phi.transpose() + (1 - lambda) * gamma;
+        theta += R.ldlt().solve(phi) * e;
+        const double e_lmr = lmr.update(phi, r.target(k));
+        ASSERT_NEAR(e_lmr, e, 1e-9 * (1 + std::abs(e))) << np << " " << k;
+      }
+      EXPECT_TRUE(test::MatrixNear(lmr.theta(), theta, 1e-9)) << np;
+      EXPECT_TRUE(test::MatrixNear(lmr.information(), R, 1e-9)) << np;
+      EXPECT_EQ(lmr.covariance_guard(), kGuardNone);
+    }
+  }
+}
+
 TEST(LmrUpdate, UpdateDoesNotAllocate) {
   const int np = 4;
   LmrUpdate<double> lmr;
