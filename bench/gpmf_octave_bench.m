@@ -16,28 +16,16 @@
 1;  # a script file, not a function file
 
 function [A, B] = plain_gpmf_ls (y, u, Ts, nni, lambda)
-  [N, p] = size (y);
+  p = columns (y);
   m = columns (u);
-  n = sum (nni);
-  starts = cumsum ([0, nni(1:end-1)]);
-  A = zeros (n);
-  B = zeros (n, m);
-  T = zeros (n);
-  beta = zeros (n, m);
+  thetas = cell (1, p);
   for i = 1:p
     ord = nni(i) + 1;
     den = poly (-lambda(i) * ones (1, ord));
     filt = @(k, rule, s) filter_channel (k, ord, den, lambda(i), Ts, rule, s);
     phi = [];
     for j = 1:p
-      if (j == i)
-        nu = nni(i);
-      elseif (j < i)
-        nu = min (nni(i) + 1, nni(j));
-      else
-        nu = min (nni(i), nni(j));
-      endif
-      for k = 0:nu-1
+      for k = 0:plain_gpmf_coupling (nni, i, j)-1
         phi(:, end+1) = -filt (k, "tustin", y(:, j));
       endfor
     endfor
@@ -47,33 +35,9 @@ function [A, B] = plain_gpmf_ls (y, u, Ts, nni, lambda)
       endfor
     endfor
     zeta = filt (nni(i), "tustin", y(:, i));
-    theta = phi \ zeta;
-    ## canonical realisation (as the core's canonical_model)
-    s = starts(i);
-    A(s+1:s+nni(i)-1, s+2:s+nni(i)) = eye (nni(i) - 1);
-    for d = 0:nni(i)-1
-      T(s+d+1, s+nni(i)-d) = 1;
-    endfor
-    off = 0;
-    for j = 1:p
-      if (j == i)
-        nu = nni(i);
-      elseif (j < i)
-        nu = min (nni(i) + 1, nni(j));
-      else
-        nu = min (nni(i), nni(j));
-      endif
-      for k = 0:nu-1
-        off += 1;
-        A(s+nni(i), starts(j)+k+1) = -theta(off);
-        for d = 0:k-1
-          T(s+d+1, starts(j)+k-d) += theta(off);
-        endfor
-      endfor
-    endfor
-    beta(s+1:s+nni(i), :) = reshape (theta(off+1:end), nni(i), m);
+    thetas{i} = phi \ zeta;
   endfor
-  B = T \ beta;
+  [A, B] = plain_gpmf_canonical (thetas, nni, m);
 endfunction
 
 function x = filter_channel (k, ord, den, lambda, Ts, rule, s)
@@ -87,6 +51,7 @@ endfunction
 
 pkg load control;
 addpath (fullfile (pwd, "octave"));
+addpath (fullfile (pwd, "bench"));
 A0 = [-1 1 0; -1 -1 0; 0 0 -2];
 B0 = [1 0; 0 1; 1 1];
 C0 = [1 0 1; 0 1 0];
