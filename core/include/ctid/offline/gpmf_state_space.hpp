@@ -266,6 +266,28 @@ void gpmf_regressors(const MultiRecordView<S>& record,
   }
 }
 
+// The least-squares solution of phi theta = zeta by Householder QR, or
+// false when the diagonal of R shows phi rank deficient (|R_kk| at most
+// eps * columns times the largest, the threshold of Eigen's
+// ColPivHouseholderQR). Without column pivoting: the GPMF regressions
+// have a handful of columns and many rows, where pivoting costs more than
+// the whole solve.
+template <typename S>
+bool least_squares(const Matrix<S>& phi, const Vector<S>& zeta,
+                   Vector<S>* theta) {
+  const Eigen::HouseholderQR<Matrix<S>> qr(phi);
+  const Vector<S> diagonal = qr.matrixQR().diagonal().cwiseAbs();
+  const S largest = diagonal.size() == 0 ? S(0) : diagonal.maxCoeff();
+  const S threshold =
+      std::numeric_limits<S>::epsilon() * static_cast<S>(phi.cols()) * largest;
+  if (!(largest > 0) || !diagonal.allFinite() ||
+      (diagonal.array() <= threshold).any()) {
+    return false;
+  }
+  if (theta != nullptr) *theta = qr.solve(zeta);
+  return true;
+}
+
 // The canonical (A, B, C) of the parameters theta. beta_(i,d) (the p^d
 // coefficient of row i, one input) = b_(i,n_i-d) + sum_j sum_(k>d)
 // alpha_(ij,k) b_(j,k-d): a square linear map T(alpha) from b to beta,
@@ -378,13 +400,11 @@ Status ss_ls_gpmf(const MultiRecordView<S>& record,
     Matrix<S> phi;
     Vector<S> zeta;
     gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta);
-    Eigen::ColPivHouseholderQR<Matrix<S>> qr(phi);
-    if (qr.rank() < phi.cols()) {
+    if (!gpmf_detail::least_squares(phi, zeta, &parts[i])) {
       return numerical_failure(
           "the GPMF regression of output " + std::to_string(i + 1) +
           " is rank deficient (input not exciting enough, or nni too large)");
     }
-    parts[i] = qr.solve(zeta);
     total += parts[i].size();
   }
   Vector<S> theta(total);
@@ -524,7 +544,6 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     Matrix<S> H;                // left null space of the convolution by F
     Matrix<S> T;                // convolution by F: beta_bar = T beta
     Eigen::Index alpha_count = 0;
-    Eigen::LDLT<Matrix<S>> ldlt;
   };
   std::vector<Equation> eq(p);
   for (int i = 0; i < p; ++i) {
@@ -534,22 +553,21 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     Vector<S> zeta;
     gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta,
                                  &roots[i]);
-    Eigen::ColPivHouseholderQR<Matrix<S>> qr(phi);
-    if (qr.rank() < phi.cols()) {
+    if (!gpmf_detail::least_squares(phi, zeta, &e.theta_ls)) {
       return numerical_failure(
           "the augmented GPMF regression of output " + std::to_string(i + 1) +
           " is rank deficient (input not exciting enough, nni too large or "
           "too many roots)");
     }
-    e.theta_ls = qr.solve(zeta);
     e.theta = e.theta_ls;
     e.P = phi.transpose() * phi;
     e.c = phi.transpose() * zeta;
-    e.ldlt.compute(e.P);
     e.alpha_count = gpmf_detail::num_alpha(n, i);
     // Impulse response g(tau) of the y filter (outputs 0..n_i), from rest;
     // the noise Gram of the rows k = first..N-1 is sum_k G(k - 1), G(t) =
-    // sum_(tau <= t) g(tau) g(tau)^T (sample 0 sets the rest state).
+    // sum_(tau <= t) g(tau) g(tau)^T (sample 0 sets the rest state), that
+    // is sum_tau w(tau) g(tau) g(tau)^T, w(tau) the number of rows k >=
+    // max(tau + 1, first).
     const int order = n[i] + 1;
     FilterDiscretization<S> disc;
     disc.configure(order, InterSample::kFoh);
@@ -560,13 +578,12 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     channel.set_rest_at_first_sample(true);
     const S gain = svf_gain(order, settings.lambda[i], true);
     channel.step(disc, gain, S(0));
-    Matrix<S> G = Matrix<S>::Zero(order + 1, order + 1);
     Matrix<S> W = Matrix<S>::Zero(order + 1, order + 1);
     for (Eigen::Index t = 0; t + 1 < count; ++t) {
       channel.step(disc, gain, t == 0 ? S(1) : S(0));
       const Vector<S>& g = channel.outputs();
-      G.noalias() += g * g.transpose();
-      if (t + 1 >= first) W += G;  // row k = t + 1
+      const S weight = static_cast<S>(count - std::max(t + 1, first));
+      W.noalias() += weight * g * g.transpose();
     }
     e.D.assign(p, Matrix<S>::Zero(phi.cols(), phi.cols()));
     e.d = Vector<S>::Zero(phi.cols());
