@@ -67,11 +67,7 @@ void read_option_table(const Gateway& g, OptionsReader& opt,
         break;
       case OptionType::kChoice:
         if (!mxIsChar(a)) {
-          std::string allowed;
-          for (const char* w : decl.choices) {
-            allowed += (allowed.empty() ? "'" : ", '") + std::string(w) + "'";
-          }
-          g.fail("badOption", what + " must be one of " + allowed);
+          g.fail("badOption", what + " must be one of " + option_choices(decl));
         }
         value.word = g.text(a, what);
         break;
@@ -79,7 +75,7 @@ void read_option_table(const Gateway& g, OptionsReader& opt,
         value.matrix = g.eigen_matrix(a, what, -1, -1);
         break;
     }
-    g.check(set_option(table, decl.name, value, config));
+    g.check(set_option(decl, value, config));
   }
 }
 

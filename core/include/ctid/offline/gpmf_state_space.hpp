@@ -536,13 +536,13 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     }
   }
   struct Equation {
-    Matrix<S> P;                // Phi^T Phi
-    Vector<S> c;                // Phi^T zeta
-    Vector<S> theta_ls, theta;  // augmented parameters
-    std::vector<Matrix<S>> D;   // noise Gram of y_j, j = 1..p
-    Vector<S> d;                // noise cross term of y_i and zeta
-    Matrix<S> H;                // left null space of the convolution by F
-    Matrix<S> T;                // convolution by F: beta_bar = T beta
+    Matrix<S> P;               // Phi^T Phi
+    Vector<S> c;               // Phi^T zeta
+    Vector<S> theta;           // augmented parameters
+    std::vector<Matrix<S>> D;  // noise Gram of y_j, j = 1..p
+    Vector<S> d;               // noise cross term of y_i and zeta
+    Matrix<S> H;               // left null space of the convolution by F
+    Matrix<S> T;               // convolution by F: beta_bar = T beta
     Eigen::Index alpha_count = 0;
   };
   std::vector<Equation> eq(p);
@@ -553,13 +553,13 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     Vector<S> zeta;
     gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta,
                                  &roots[i]);
-    if (!gpmf_detail::least_squares(phi, zeta, &e.theta_ls)) {
+    // The rank test only: theta(sigma^2) is solved from P and c below.
+    if (!gpmf_detail::least_squares<S>(phi, zeta, nullptr)) {
       return numerical_failure(
           "the augmented GPMF regression of output " + std::to_string(i + 1) +
           " is rank deficient (input not exciting enough, nni too large or "
           "too many roots)");
     }
-    e.theta = e.theta_ls;
     e.P = phi.transpose() * phi;
     e.c = phi.transpose() * zeta;
     e.alpha_count = gpmf_detail::num_alpha(n, i);

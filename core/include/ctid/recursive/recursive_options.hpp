@@ -108,9 +108,17 @@ std::string matrix_text(const Matrix<S>& m, const char* empty) {
   return std::to_string(m.rows()) + "x" + std::to_string(m.cols());
 }
 
+// A vector option (th0, the scaling, a polynomial in q^-1) into target;
+// a matrix with more than one row and column is an error of kind `code`.
 template <typename S>
-Vector<S> to_vector(const Matrix<double>& m) {
-  return Eigen::Map<const Vector<double>>(m.data(), m.size()).cast<S>();
+Status set_vector(const OptionValue& v, const char* what, ErrorCode code,
+                  Vector<S>* target) {
+  const Matrix<double>& m = v.matrix;
+  if (m.rows() > 1 && m.cols() > 1) {
+    return Status(code, std::string(what) + " must be a vector");
+  }
+  *target = Eigen::Map<const Vector<double>>(m.data(), m.size()).cast<S>();
+  return Status::Ok();
 }
 
 inline const char* intersample_word(InterSample rule) {
@@ -318,12 +326,9 @@ void add_estimate_options(OptionTable<Config>* table) {
        "np-by-1, finite",
        "initial estimate (default zeros)",
        [](const Config& c) { return matrix_text(Matrix<S>(c.theta0), "0"); },
-       [](Config* c, V v) -> Status {
-         if (v.matrix.cols() > 1 && v.matrix.rows() > 1) {
-           return dimension_mismatch("th0 must be a vector");
-         }
-         c->theta0 = to_vector<S>(v.matrix);
-         return Status::Ok();
+       [](Config* c, V v) {
+         return set_vector<S>(v, "th0", ErrorCode::kDimensionMismatch,
+                              &c->theta0);
        }});
   table->push_back({"P0",
                     OptionType::kMatrix,
@@ -346,12 +351,9 @@ void add_estimate_options(OptionTable<Config>* table) {
        [](const Config& c) {
          return matrix_text(Matrix<S>(c.scaling), "none");
        },
-       [](Config* c, V v) -> Status {
-         if (v.matrix.cols() > 1 && v.matrix.rows() > 1) {
-           return dimension_mismatch("scaling must be a vector");
-         }
-         c->scaling = to_vector<S>(v.matrix);
-         return Status::Ok();
+       [](Config* c, V v) {
+         return set_vector<S>(v, "scaling", ErrorCode::kDimensionMismatch,
+                              &c->scaling);
        }});
   table->push_back({"covariance_guard",
                     OptionType::kFlag,
@@ -390,18 +392,6 @@ void add_estimate_options(OptionTable<Config>* table) {
                       c->gap_settle = static_cast<S>(v.real);
                       return Status::Ok();
                     }});
-}
-
-// A discrete transfer function's numerator or denominator (q^-1), given
-// as a vector.
-template <typename S>
-Status set_polynomial(const OptionValue& v, const char* what,
-                      Vector<S>* target) {
-  if (v.matrix.rows() > 1 && v.matrix.cols() > 1) {
-    return bad_input(std::string(what) + " must be a vector");
-  }
-  *target = to_vector<S>(v.matrix);
-  return Status::Ok();
 }
 
 }  // namespace options_detail
@@ -559,8 +549,9 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                        Matrix<S>(c.m_theta.numerator), "q^-1");
                  },
                  [](Config* c, V v) {
-                   return options_detail::set_polynomial<S>(
-                       v, "mtheta_num", &c->m_theta.numerator);
+                   return options_detail::set_vector<S>(v, "mtheta_num",
+                                                        ErrorCode::kBadInput,
+                                                        &c->m_theta.numerator);
                  }});
     t.push_back({"mtheta_den",
                  OptionType::kMatrix,
@@ -573,8 +564,9 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                        Matrix<S>(c.m_theta.denominator), "1");
                  },
                  [](Config* c, V v) {
-                   return options_detail::set_polynomial<S>(
-                       v, "mtheta_den", &c->m_theta.denominator);
+                   return options_detail::set_vector<S>(
+                       v, "mtheta_den", ErrorCode::kBadInput,
+                       &c->m_theta.denominator);
                  }});
     t.push_back(
         {"prefilter",
@@ -605,8 +597,8 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                        Matrix<S>(c.initial_denominator), "(p + lambda_svf)^na");
                  },
                  [](Config* c, V v) {
-                   return options_detail::set_polynomial<S>(
-                       v, "A", &c->initial_denominator);
+                   return options_detail::set_vector<S>(
+                       v, "A", ErrorCode::kBadInput, &c->initial_denominator);
                  }});
     t.push_back({"controller_num",
                  OptionType::kMatrix,
@@ -620,8 +612,9 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                  },
                  [](Config* c, V v) {
                    c->closed_loop = true;
-                   return options_detail::set_polynomial<S>(
-                       v, "controller_num", &c->controller.numerator);
+                   return options_detail::set_vector<S>(
+                       v, "controller_num", ErrorCode::kBadInput,
+                       &c->controller.numerator);
                  }});
     t.push_back({"controller_den",
                  OptionType::kMatrix,
@@ -635,8 +628,9 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                  },
                  [](Config* c, V v) {
                    c->closed_loop = true;
-                   return options_detail::set_polynomial<S>(
-                       v, "controller_den", &c->controller.denominator);
+                   return options_detail::set_vector<S>(
+                       v, "controller_den", ErrorCode::kBadInput,
+                       &c->controller.denominator);
                  }});
     t.push_back(
         {"antiwindup",
@@ -686,9 +680,35 @@ std::string option_default(const OptionDecl<Config>& decl) {
   return decl.show(Config{});
 }
 
-// Sets one option by name; an unknown name or a word outside the choices
-// is a bad option. The ranges are checked by validate(config) once every
-// option is set.
+// The words a kChoice option accepts, for messages: "'a', 'b'".
+template <typename Config>
+std::string option_choices(const OptionDecl<Config>& decl) {
+  std::string allowed;
+  for (const char* word : decl.choices) {
+    allowed += (allowed.empty() ? "'" : ", '") + std::string(word) + "'";
+  }
+  return allowed;
+}
+
+// Sets the option `decl` declares; a word outside its choices is a bad
+// option. The ranges are checked by validate(config) once every option is
+// set.
+template <typename Config>
+Status set_option(const OptionDecl<Config>& decl, const OptionValue& value,
+                  Config* config) {
+  if (decl.type == OptionType::kChoice) {
+    bool known = false;
+    for (const char* word : decl.choices) known = known || value.word == word;
+    if (!known) {
+      return Status(ErrorCode::kBadOption,
+                    std::string("option '") + decl.name + "' must be one of " +
+                        option_choices(decl) + ", got '" + value.word + "'");
+    }
+  }
+  return decl.set(config, value);
+}
+
+// Sets one option by name; an unknown name is a bad option.
 template <typename Config>
 Status set_option(const OptionTable<Config>& table, const std::string& name,
                   const OptionValue& value, Config* config) {
@@ -696,20 +716,7 @@ Status set_option(const OptionTable<Config>& table, const std::string& name,
   if (decl == nullptr) {
     return Status(ErrorCode::kBadOption, "unknown option '" + name + "'");
   }
-  if (decl->type == OptionType::kChoice) {
-    bool known = false;
-    std::string allowed;
-    for (const char* word : decl->choices) {
-      known = known || value.word == word;
-      allowed += (allowed.empty() ? "'" : ", '") + std::string(word) + "'";
-    }
-    if (!known) {
-      return Status(ErrorCode::kBadOption, "option '" + name +
-                                               "' must be one of " + allowed +
-                                               ", got '" + value.word + "'");
-    }
-  }
-  return decl->set(config, value);
+  return set_option(*decl, value, config);
 }
 
 }  // namespace ctid
