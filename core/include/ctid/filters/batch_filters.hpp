@@ -183,15 +183,20 @@ void filter_regular_kernel(const Vector<S>& d, S gain, bool slope,
     if (k > 0) {
       const S s0 = s[k - 1];
       const S du = sk - s0;
+#pragma GCC unroll 8
       for (int i = 0; i < n; ++i) next[i] = g0[i] * s0 + g1[i] * du;
+#pragma GCC unroll 8
       for (int j = 0; j < n; ++j) {
         const S zj = z[j];
         const S* column = phi + j * n;
+#pragma GCC unroll 8
         for (int i = 0; i < n; ++i) next[i] += column[i] * zj;
       }
+#pragma GCC unroll 8
       for (int i = 0; i < n; ++i) z[i] = next[i];
     }
     S highest = sk;
+#pragma GCC unroll 8
     for (int i = 0; i < n; ++i) {
       columns[i][k] = gain * z[i];
       highest -= dd[i] * z[n - 1 - i];

@@ -41,9 +41,10 @@
 // solve a least-squares fit of the measured outputs by the exact
 // simulation of (A, I, C) for each input.
 //
-// As in the SVF estimators (svf_regressor.hpp), the inputs are filtered
-// with the data's intersample rule and the outputs, never piecewise
-// constant, with the trapezoidal rule.
+// The inputs are filtered with the data's intersample rule and the
+// outputs, never piecewise constant, as linear between samples (exact
+// first-order hold, InterSample::kFoh; the SVF estimators of
+// svf_regressor.hpp use the trapezoidal rule there by default).
 #pragma once
 
 #include <algorithm>
@@ -55,6 +56,7 @@
 
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/filters/batch_filters.hpp"
 #include "ctid/filters/discretization.hpp"
 #include "ctid/filters/svf.hpp"
 
@@ -220,49 +222,35 @@ void gpmf_regressors(const MultiRecordView<S>& record,
     }
     du = poly.tail(u_order);
   }
-  FilterDiscretization<S> y_disc, u_disc;
-  y_disc.configure(order, InterSample::kFoh);
-  y_disc.set_denominator(d);
-  u_disc.configure(u_order, record.u_intersample);
-  u_disc.set_denominator(du);
-  std::vector<FilterChannel<S>> y_channels(p), u_channels(m);
-  for (auto& c : y_channels) {
-    c.configure(order);
-    c.set_rest_at_first_sample(true);
-  }
-  for (auto& c : u_channels) {
-    c.configure(u_order);
-    c.set_rest_at_first_sample(true);
-  }
+  // Each channel is filtered over the whole record by the batch filters
+  // (batch_filters.hpp: the per-sample filters' discretisation, fixed-size
+  // kernels on a regular grid), then its columns are copied into phi.
   const Eigen::Index count = record.num_samples;
   const Eigen::Index first = settings.first_sample;
+  const Eigen::Index rows = count - first;
   const Eigen::Index columns = num_alpha(n, i) + u_columns * m;
-  phi->resize(count - first, columns);
-  zeta->resize(count - first);
-  for (Eigen::Index k = 0; k < count; ++k) {
-    const S h = record.interval(k);
-    y_disc.ensure(h);
-    u_disc.ensure(h);
-    for (int j = 0; j < p; ++j) {
-      y_channels[j].step(y_disc, gain, outputs[j * count + k]);
+  phi->resize(rows, columns);
+  zeta->resize(rows);
+  batch::Clock<S> clock;
+  clock.ts = record.ts;
+  clock.instants = record.instants;
+  clock.n = count;
+  Matrix<S> filtered;
+  Eigen::Index col = 0;
+  for (int j = 0; j < p; ++j) {
+    batch::filter_derivatives<S>(d, gain, InterSample::kFoh, clock,
+                                 outputs + j * count, filtered);
+    for (int q = 0; q < coupling_degree(n, i, j); ++q) {
+      phi->col(col++) = -filtered.col(q).tail(rows);
     }
-    for (int l = 0; l < m; ++l) {
-      u_channels[l].step(u_disc, gain, record.u_at(k, l));
+    if (j == i) *zeta = filtered.col(n[i]).tail(rows);
+  }
+  for (int l = 0; l < m; ++l) {
+    batch::filter_derivatives<S>(du, gain, record.u_intersample, clock,
+                                 record.u + l * count, filtered);
+    for (int q = 0; q < u_columns; ++q) {
+      phi->col(col++) = filtered.col(q).tail(rows);
     }
-    if (k < first) continue;
-    const Eigen::Index row = k - first;
-    Eigen::Index col = 0;
-    for (int j = 0; j < p; ++j) {
-      for (int q = 0; q < coupling_degree(n, i, j); ++q) {
-        (*phi)(row, col++) = -y_channels[j].outputs()(q);
-      }
-    }
-    for (int l = 0; l < m; ++l) {
-      for (int q = 0; q < u_columns; ++q) {
-        (*phi)(row, col++) = u_channels[l].outputs()(q);
-      }
-    }
-    (*zeta)(row) = y_channels[i].outputs()(n[i]);
   }
 }
 
