@@ -1,0 +1,21 @@
+## Copyright (C) the ctid authors
+## SPDX-License-Identifier: BSD-3-Clause
+
+## -*- texinfo -*-
+## @deftypefn {} {} display (@var{M})
+## Shows a model @code{residtrace} returned as @code{present} does.
+## @end deftypefn
+
+function varargout = display (M, varargin)
+  contsid_nargchk ("display", nargin, nargout, [1 1], 0);
+  name = inputname (1);
+  if (isempty (name))
+    name = "ans";
+  endif
+  printf ("%s =\n\n%s\n", name, present (M));
+endfunction
+
+%!test
+%! out = evalc ("M = idtraced ()");
+%! assert (! isempty (strfind (out, "M =")));
+%!error <Invalid call> display ()
