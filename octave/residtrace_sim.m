@@ -14,7 +14,11 @@
 ## @qcode{"top"} (@code{R.model}, the top effect of the first pass, whose
 ## figure is @code{R.rmse_after}).
 ##
-## The model (@code{R.final_model} or @code{R.model}) holds: @code{F},
+## The model (@code{R.final_model} or @code{R.model}) is an
+## @code{idtraced} object, which @code{simc}, @code{sim} and
+## @code{comparec} simulate the same way (this function is that
+## simulation, kept for results of @code{residtrace} in a struct). It
+## holds: @code{F},
 ## the @code{channels} (inputs and effect terms with their numerators
 ## @code{B} and delays @code{nk}), the output terms @code{out} (an output
 ## level, a polynomial, a sinusoid, a saturation), a physical
@@ -55,7 +59,7 @@
 ## [yh, e, rmse] = residtrace_sim (R, iddata (yv, uv, Ts));
 ## [rmse, R.rmse_final]
 ## @end example
-## @seealso{residtrace, residtrace_plot, residtrace_table}
+## @seealso{idtraced, residtrace, residtrace_plot, residtrace_table, comparec}
 ## @end deftypefn
 
 function varargout = residtrace_sim (varargin)

@@ -4,6 +4,14 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} display (@var{M})
 ## Shows a model @code{residtrace} returned as @code{present} does.
+##
+## @strong{Example}
+## @example
+## Ts = 0.05; u = prbs (9, 4); N = numel (u); G = idctm (2, [1 1.2 1]);
+## y = simc (G, u + 0.3, Ts) + 0.03 * randn (N, 1);
+## R = residtrace (iddata (y, u, Ts), G, "effects", @{"offset"@});
+## M = R.final_model
+## @end example
 ## @end deftypefn
 
 function varargout = display (M, varargin)
