@@ -23,12 +23,15 @@
 ## @end example
 ## @end deftypefn
 
-function varargout = subsref (M, s)
-  P = struct (M).model;
-  if (isempty (s) || ! strcmp (s(1).type, ".") || ! ischar (s(1).subs))
+function varargout = subsref (M, s, varargin)
+  contsid_nargchk ("subsref", nargin, 0, [2 2], 0);
+  if (! isa (M, "idtraced") || ! isstruct (s) || ! isfield (s, "type")
+      || ! isfield (s, "subs") || isempty (s) || ! ischar (s(1).type)
+      || ! strcmp (s(1).type, ".") || ! ischar (s(1).subs))
     error ("idtraced:badInput",
            "idtraced: use M.name (see get (M) for the names)");
   endif
+  P = struct (M).model;
   name = s(1).subs;
   if (! isfield (P, name))
     error ("idtraced:badInput", "idtraced: no field '%s' (fields: %s)", name,
@@ -36,6 +39,9 @@ function varargout = subsref (M, s)
   endif
   v = P.(name);
   if (numel (s) == 1)
+    if (nargout > 1)
+      error ("idtraced:badInput", "idtraced: M.%s is one value", name);
+    endif
     varargout = {v};
     return;
   endif
