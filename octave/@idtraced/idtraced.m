@@ -126,3 +126,17 @@ endfunction
 %!error id=idtraced:badInput idtraced (1)
 %!error id=idtraced:badInput idtraced (struct ("F", [1 1]))
 %!error id=idtraced:badInput idtraced (struct ("F", [1 1]), 2)
+
+%!demo
+%! ## an output that saturates at 0.4: the model residtrace returns,
+%! ## compared with the validation record (the "after" figure)
+%! Ts = 0.05; u = prbs (9, 4); N = numel (u); uv = circshift (u, 200);
+%! G = idctm (2, [1 1.2 1]);
+%! y = min (simc (G, u, Ts), 0.4) + 0.03 * randn (N, 1);
+%! yv = min (simc (G, uv, Ts), 0.4) + 0.03 * randn (N, 1);
+%! d = iddata (y, u, Ts); dv = iddata (yv, uv, Ts);
+%! R = residtrace (d, srivc (d, [1 2 0]), "validation", dv,
+%!                 "effects", {"saturation"}, "iterate", 1);
+%! M = R.final_model
+%! comparec (dv, M);
+%! printf ("residtrace's figure: RMSE %.4g\n", R.rmse_final);

@@ -119,8 +119,8 @@ function s = levels_text (m)
     endif
   endfor
   if (! isempty (c))
-    s = [s sprintf("; output level %s", value_text (struct ("value", c.c(1),
-                                                            "std", c.cstd(1))))];
+    lev = struct ("value", c.c(1), "std", c.cstd(1));
+    s = [s "; output level " value_text(lev)];
   elseif (isfield (m, "phys") && isstruct (m.phys) && isfield (m.phys, "c"))
     s = [s sprintf("; output level %.5g (of the physical realisation)",
                    m.phys.c)];
