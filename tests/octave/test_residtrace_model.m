@@ -19,9 +19,10 @@
 ## linear part alone, without them, is below -100 %) and its output is
 ## c + sat (G (u - u0)) with G, c, u0 and the levels read from it, by
 ## lsim;
-## @item a record split into estimation and validation parts:
-## @code{comparec} on the whole record over samples npre+1 onward gives
-## @code{R.rmse_final};
+## @item a record split into estimation and validation parts, with a
+## saturation and with a sinusoid (whose amplitude and phase are fitted on
+## the record): @code{comparec} on the whole record over samples npre+1
+## onward gives @code{R.rmse_final};
 ## @item options the model does not take are identified errors.
 ## @end itemize
 ## @end deftypefn
@@ -96,6 +97,17 @@ function test_residtrace_model ()
   assert (M.npre > 0);
   [ys, info] = comparec (d, M, M.npre+1:N);
   assert (numel (ys), N - M.npre);
+  assert (info.RMSE, R.rmse_final, 1e-6 * R.rmse_final);
+  ## with a sinusoid, whose amplitude and phase are fitted on the record
+  ## (each half of the validation part applied to the other)
+  randn ("state", 22);
+  y = simc (G, u, Ts) + 0.2 * sin (0.9 * (0:N-1)' * Ts) ...
+      + 0.03 * randn (N, 1);
+  d = iddata (y, u, Ts);
+  R = residtrace (d, G, "effects", {"sinusoid", "delay"}, "iterate", 1);
+  assert (R.effect, "sinusoid");
+  M = R.final_model;
+  [~, info] = comparec (d, M, M.npre+1:N);
   assert (info.RMSE, R.rmse_final, 1e-6 * R.rmse_final);
 
   ## what the model does not take
