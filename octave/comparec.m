@@ -13,6 +13,13 @@
 ## @code{ivsvf}, @code{clsrivc}, or built), @code{idtf}, @code{idproc},
 ## @code{idss} (several outputs), a struct with @code{B} and @code{F}, or
 ## a control-package @code{tf}/@code{ss}; delays are included.
+## A model @code{residtrace} returned (@code{idtraced}: @code{R.model},
+## @code{R.final_model}) is simulated as @code{residtrace} simulated it
+## to score it, its levels and effects included and what it leaves to a
+## record (an initial state it declares, a sinusoid's amplitude) fitted
+## on @var{data} (see @code{help idtraced/sim}): on the validation record
+## @code{estInfo.RMSE} is @code{R.rmse_final}, and without outputs the
+## plot is residtrace's "after" figure.
 ## @var{THM} with @var{nn} is a recursive estimate (rows = samples, order
 ## as @code{rlssvf}; add @code{"order", "bf"} for @code{rsrivc}'s),
 ## simulated as the frozen model of each sample.  The model is simulated
@@ -103,6 +110,11 @@ function [ys, estInfo, varargout] = comparec_body (varargin)
         t = d.Ts;
       endif
       M = varargin{d.nconsumed + 1};
+      if (isa (M, "idtraced"))
+        error ("comparec:notSupported",
+               ["comparec: a residtrace model fits the initial state it ", ...
+                "declares itself (M.x0); no InitialCondition"]);
+      endif
       [yhat, x0] = contsid_initial_state ("comparec", M, d.y, yhat, t);
     endif
     rest = {};

@@ -290,8 +290,10 @@
 ## @item verdict
 ## one line: what was found, or why nothing could be tested.
 ## @item model
-## the model with the top effect, as residtrace simulated it: a struct
-## with @code{F}, @code{fixed}, @code{channels} (inputs and effect terms:
+## the model with the top effect, as residtrace simulated it: an
+## @code{idtraced} object (see @code{help idtraced}) that @code{simc},
+## @code{sim}, @code{comparec}, @code{residc} and @code{present} take,
+## with the fields (@code{M.F}, @code{get (M)}) @code{F}, @code{fixed}, @code{channels} (inputs and effect terms:
 ## type, numerator @code{B}, delay @code{nk}, parameter), output terms
 ## @code{out} (the output level, a polynomial, a sinusoid, a saturation,
 ## each with its coefficients @code{c} and standard deviations
@@ -303,10 +305,11 @@
 ## and each effect in physical units), @code{npre}, @code{substeps},
 ## @code{closed_loop} (how it was simulated) and @code{linear}, its linear
 ## part as an @code{idpoly} (one input per channel, built by
-## @code{idctm}). @code{residtrace_sim (R, data)} simulates it:
-## @code{R.rmse_final} (and with @code{"model", "top"},
-## @code{R.rmse_after}) is reproduced from the record; @code{residtrace_plot}
-## draws the before/after figure.
+## @code{idctm}). @code{comparec (datav, R.final_model)} simulates it
+## on the validation record and reproduces @code{R.rmse_final} as its
+## RMSE (@code{R.model}: @code{R.rmse_after}), as does
+## @code{residtrace_sim (R, datav)}; @code{residtrace_plot} draws the
+## before/after figure.
 ## @item evidence
 ## the winner's evidence (term, value, std, and what the test saw).
 ## @item effects, final_model, rmse_final
@@ -345,7 +348,7 @@
 ## R = residtrace (iddata (y, u, Ts), M);
 ## R.effect, [R.rmse_before, R.rmse_after]
 ## @end example
-## @seealso{residtrace_table, residtrace_sim, residtrace_plot, residc, comparec, srivc, rsrivc}
+## @seealso{idtraced, residtrace_table, residtrace_sim, residtrace_plot, residc, comparec, srivc, rsrivc}
 ## @end deftypefn
 
 function varargout = residtrace (varargin)
@@ -1445,8 +1448,9 @@ function Mst = model_struct (M, Ts)
   Mst = struct ("B", {B}, "F", m.F{1}, "nk", m.nk, "theta", theta);
 endfunction
 
-## The model as returned to the user: the struct plus its linear part as
-## an idctm with one input per channel.
+## The model as returned to the user: an idtraced holding the struct,
+## its linear part as an idctm with one input per channel, the levels and
+## the physical reading.
 function out = export_model (m, Ts, ex)
   out = rmfield (m, intersect (fieldnames (m), {"e_est", "variant_"}));
   ## what residtrace_sim needs to simulate it as residtrace scored it: the
@@ -1477,6 +1481,7 @@ function out = export_model (m, Ts, ex)
     lin.covariance = [];
     out.linear = idctm (lin);
   end_try_catch
+  out = idtraced (out);
 endfunction
 
 function s = step_row (label, e, y, tests, kind, params)

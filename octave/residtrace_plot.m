@@ -41,8 +41,7 @@ function [ax, varargout] = residtrace_plot_body (R, file, varargin)
   contsid_nargchk ("residtrace_plot", nargin, nargout, [1 2], 1);
   if (! isstruct (R) || ! isscalar (R) || ! isfield (R, "sim")
       || ! isfield (R, "model") || ! isfield (R, "effects")
-      || ! isstruct (R.sim) || ! isstruct (R.model)
-      || ! isfield (R.model, "Ts")
+      || ! isstruct (R.sim) || ! isa (R.model, "idtraced")
       || ! all (isfield (R.sim, {"y", "before", "final_simulation"})))
     error ("residtrace_plot:badInput",
            "residtrace_plot: R must be the result of residtrace");

@@ -14,7 +14,11 @@
 ## @qcode{"top"} (@code{R.model}, the top effect of the first pass, whose
 ## figure is @code{R.rmse_after}).
 ##
-## The model (@code{R.final_model} or @code{R.model}) holds: @code{F},
+## The model (@code{R.final_model} or @code{R.model}) is an
+## @code{idtraced} object, which @code{simc}, @code{sim} and
+## @code{comparec} simulate the same way (this function is that
+## simulation, kept for results of @code{residtrace} in a struct). It
+## holds: @code{F},
 ## the @code{channels} (inputs and effect terms with their numerators
 ## @code{B} and delays @code{nk}), the output terms @code{out} (an output
 ## level, a polynomial, a sinusoid, a saturation), a physical
@@ -55,7 +59,7 @@
 ## [yh, e, rmse] = residtrace_sim (R, iddata (yv, uv, Ts));
 ## [rmse, R.rmse_final]
 ## @end example
-## @seealso{residtrace, residtrace_plot, residtrace_table}
+## @seealso{idtraced, residtrace, residtrace_plot, residtrace_table, comparec}
 ## @end deftypefn
 
 function varargout = residtrace_sim (varargin)
@@ -66,9 +70,7 @@ function [yh, e, rmse, varargout] = residtrace_sim_body (R, varargin)
   fname = "residtrace_sim";
   contsid_nargchk (fname, nargin, nargout, [2 Inf], 3);
   if (nargin < 2 || ! isstruct (R) || ! isscalar (R)
-      || ! isfield (R, "final_model") || ! isfield (R, "model")
-      || ! isstruct (R.final_model) || ! isfield (R.final_model, "u0")
-      || ! isstruct (R.model) || ! isfield (R.model, "u0"))
+      || ! isfield (R, "final_model") || ! isfield (R, "model"))
     error ("residtrace_sim:badInput",
            "residtrace_sim: expected a result of residtrace and a record");
   endif
@@ -91,67 +93,10 @@ function [yh, e, rmse, varargout] = residtrace_sim_body (R, varargin)
       error ("residtrace_sim:badOption",
              "residtrace_sim: model must be 'final' or 'top'");
   endswitch
-  need = {"u0", "Ts", "npre", "substeps", "closed_loop", "F", ...
-          "channels", "out"};
-  if (! isstruct (m) || ! isscalar (m) || ! all (isfield (m, need))
-      || ! isnumeric (m.Ts) || ! isscalar (m.Ts) || ! (m.Ts > 0)
-      || ! isnumeric (m.u0) || ! isnumeric (m.npre) || ! isscalar (m.npre))
-    error ("residtrace_sim:badInput",
-           "residtrace_sim: R's model is not one residtrace returned");
+  if (isa (m, "idtraced"))
+    m = get (m);
   endif
-  if (m.closed_loop)
-    error ("residtrace_sim:notSupported",
-           "residtrace_sim: a model found in closed loop");
-  endif
-  nu = numel (m.u0);
-  if (columns (d.u) != nu)
-    error ("residtrace_sim:dimensionMismatch",
-           "residtrace_sim: the model has %d input(s), the data %d", nu,
-           columns (d.u));
-  endif
-  if (abs (d.Ts - m.Ts) > 1e-9 * m.Ts)
-    error ("residtrace_sim:badInput",
-           ["residtrace_sim: the data's sampling interval %g is not ", ...
-            "the model's %g"], d.Ts, m.Ts);
-  endif
-  ## the simulated model: drift and a noise model use the measured output
-  m.ltv = [];
-  m.noise = [];
-  N = numel (d.y);
-  u = d.u - m.u0;
-  z = zeros (N, 1);
-  V = struct ("y", d.y, "u", u, "Ts", d.Ts, "intersample", d.intersample,
-              "loop", [], "vhat", [z z], "ysm", d.y, "pre", [],
-              "missing", d.missing);
-  npre = 0;
-  if (m.npre > 0 && N > m.npre)
-    npre = m.npre;
-    k = 1:npre;
-    V.pre = struct ("y", d.y(k), "u", u(k, :), "vhat", [z(k) z(k)],
-                    "ysm", d.y(k));
-    k = npre+1:N;
-    V.y = d.y(k); V.u = u(k, :); V.vhat = [z(k) z(k)]; V.ysm = d.y(k);
-    V.missing = d.missing(k);
-  endif
-  ctx = struct ("opts", struct ("substeps", m.substeps));
-  try
-    [e, yv] = residtrace_valerror (m, V, ctx);
-    if (npre > 0)
-      y0 = residtrace_simulate (m, u(1:npre, :), d.Ts, [], m.substeps);
-      yh = [y0; yv];
-    else
-      yh = yv;
-    endif
-  catch err
-    id = regexprep (err.identifier, '^residtrace:', 'residtrace_sim:');
-    if (! strncmp (id, "residtrace_sim:", 15))
-      id = "residtrace_sim:badInput";   # R is not a result of residtrace
-    endif
-    error (struct ("identifier", id, "message",
-                   ["residtrace_sim: " regexprep(err.message,
-                                                 '^residtrace: ', '')]));
-  end_try_catch
-  rmse = sqrt (sum (e .^ 2) / max (nnz (! V.missing), 1));
+  [yh, e, rmse] = residtrace_model_sim (fname, m, d);
 endfunction
 
 %!shared Ts, u, uv, G, N

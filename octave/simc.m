@@ -36,6 +36,12 @@
 ## [a1 .. a_na, b0 .. b_(nb-1)] at every sample (linear in between), or a
 ## single row (time-invariant). A true trajectory, or the output
 ## @var{thm} of a recursive estimator.
+## @item M (idtraced)
+## a model @code{residtrace} returned (@code{R.model},
+## @code{R.final_model}): simulated as @code{residtrace} simulated it,
+## levels and effects included, in the forms @code{simc (M, data)} and
+## @code{simc (M, u, Ts)} without options (see @code{help idtraced/sim}
+## for what the measured output in @var{data} is then used for).
 ## @end table
 ##
 ## @strong{Data}: an @code{iddata} object, input-only
@@ -121,6 +127,11 @@ function varargout = simc_body (varargin)
   fname = "simc";
   if (nargin < 2)
     error ("simc:badInput", "simc: expected a model and input data");
+  endif
+  if (isa (varargin{1}, "idtraced"))
+    varargout = traced_sim (fname, varargin{1}, varargin(2:end));
+    varargout(nargout+1:end) = [];
+    return;
   endif
   [model, theta, orders, rest] = parse_model (fname, varargin);
   [u, t, intersample, rest] = parse_input (fname, rest);
@@ -241,6 +252,41 @@ function varargout = simc_body (varargin)
       varargout{2} += y0;
     endif
   endif
+endfunction
+
+## A model residtrace returned (idtraced): its one simulation
+## (residtrace_model_sim), on the record's raw input; with an iddata that
+## carries the measured output, what residtrace fits on such a record is
+## fitted to it.
+function out = traced_sim (fname, M, args)
+  if (! isempty (args) && isa (args{1}, "iddata")
+      && ! isempty (get (args{1}, "OutputData")))
+    try
+      [d, miss] = contsid_getdata (fname, args{1});
+      d = residtrace_bridge (d, miss);
+    catch err
+      error (struct ("identifier", regexprep (err.identifier, '^[^:]*:',
+                                              [fname ':']),
+                     "message", regexprep (err.message, '^[^:]*:',
+                                           [fname ':'])));
+    end_try_catch
+    rest = args(2:end);
+  else
+    [u, t, intersample, rest] = parse_input (fname, args);
+    if (! isscalar (t))
+      error ("simc:badInput",
+             "simc: a residtrace model needs uniformly sampled data");
+    endif
+    d = struct ("y", [], "u", u, "Ts", t, "intersample", intersample,
+                "missing", false (rows (u), 1));
+  endif
+  if (! isempty (rest))
+    error ("simc:notSupported",
+           ["simc: a residtrace model (idtraced) is simulated as ", ...
+            "residtrace scored it: no options"]);
+  endif
+  y = residtrace_model_sim (fname, struct (M).model, d);
+  out = {y, y, d.u};
 endfunction
 
 function varargout = call_gateway (nout, u, t, intersample, orders, theta,

@@ -8,7 +8,9 @@
 ## @code{contsid_model} reads (idpoly, idtf, idproc, idss, idctm, struct
 ## with B and F, control tf/ss), simulated by @code{simc}, or a recursive
 ## estimate THM with its nn (and "order", "bf" for rsrivc's [b f]),
-## simulated as the frozen model of each sample.  The data are an iddata
+## simulated as the frozen model of each sample, or a model
+## @code{residtrace} returned (@code{idtraced}), simulated on the record
+## as @code{residtrace} scored it (@code{residtrace_model_sim}).  The data are an iddata
 ## set (any number of outputs; one experiment) or numeric y, u, Ts.
 ## The option @code{"Levels"} (@qcode{"carried"}, the default, or
 ## @qcode{"ignore"}) is read here and passed on to @code{simc}: a model
@@ -63,6 +65,8 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
                "%s: THM must have one row per sample (%d)", fname, rows (d.y));
       endif
       yhat = simc (M, nn, d.u, t, "InterSample", d.intersample);
+    elseif (isa (M, "idtraced"))
+      yhat = traced_output (fname, M, d, levels);
     elseif (isobject (M) || isstruct (M))
       yhat = simc (M, d.u, t, "InterSample", d.intersample,
                    "Levels", levels);
@@ -85,6 +89,24 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
            "%s: the model has %d output(s), the data %d", fname,
            columns (yhat), columns (d.y));
   endif
+endfunction
+
+## A model residtrace returned (idtraced): simulated on the record as
+## residtrace scored it (residtrace_model_sim: its levels, effects, and
+## what it leaves to a record fitted to the measured output).
+function yhat = traced_output (fname, M, d, levels)
+  if (! strcmpi (levels, "carried"))
+    error ([fname ":notSupported"],
+           "%s: a residtrace model's levels are part of it (Levels '%s')",
+           fname, levels);
+  endif
+  if (columns (d.y) != 1)
+    error ([fname ":dimensionMismatch"],
+           "%s: the model has 1 output, the data %d", fname, columns (d.y));
+  endif
+  rec = struct ("y", d.y, "u", d.u, "Ts", d.Ts, "intersample",
+                d.intersample, "missing", false (rows (d.y), 1));
+  yhat = residtrace_model_sim (fname, struct (M).model, rec);
 endfunction
 
 ## Single-output data through contsid_getdata; an iddata set with

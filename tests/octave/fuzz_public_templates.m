@@ -156,6 +156,11 @@ function tpl = fuzz_public_templates ()
   tpl.residtrace_table = {{R}};
   tpl.residtrace_sim = {{R, mid}, {R, mid, "model", "top"}};
   tpl.residtrace_plot = {{R, [tempname() ".png"]}};
+  ## its model (an empty one when residtrace failed: every call an error)
+  Mt = idtraced ();
+  if (isfield (R, "final_model"))
+    Mt = R.final_model;
+  endif
   tpl.rivc = {{data, [1 1 1 2 0]}, {gap, [1 0 0 2 0]}};
   tpl.rivsvf = {{data, [2 1 0], "lambda_svf", 3}, {gap, [2 1 0], 3}, ...
                 [{dp, [2 1 0]}, far, {"tsiv", 5}], ...
@@ -227,4 +232,12 @@ function tpl = fuzz_public_templates ()
   tpl.double_step = {{4, [1 2.4 4], {1}}, {4, [1 2.4 4]}};
   tpl.double_bode = {{4, [1 2.4 4], {1}}, {4, [1 2.4 4]}};
   tpl.double_pzmap = {{4, [1 2.4 4], {1}}, {4, [1 2.4 4]}};
+  ul320 = get (mid, "InputData");
+  tpl.idtraced_idtraced = {{get(Mt)}, {}};
+  tpl.idtraced_sim = {{Mt, mid}, {Mt, ul320, Ts}};
+  tpl.idtraced_get = {{Mt}, {Mt, "u0"}};
+  tpl.idtraced_present = {{Mt}};
+  tpl.idtraced_subsref = {{Mt, struct("type", ".", "subs", "linear")}};
+  tpl.simc{end+1} = {Mt, ul320, Ts};
+  tpl.comparec{end+1} = {mid, Mt};
 endfunction

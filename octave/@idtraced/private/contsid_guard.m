@@ -1,0 +1,1 @@
+../../private/contsid_guard.m

@@ -1,0 +1,1 @@
+../../private/contsid_nargchk.m

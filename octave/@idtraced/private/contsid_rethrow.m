@@ -1,0 +1,1 @@
+../../private/contsid_rethrow.m
