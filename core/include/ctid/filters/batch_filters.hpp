@@ -153,55 +153,87 @@ void filter_regular_kernel(const Vector<S>& d, S gain, bool slope,
                            const Matrix<S>& Phi, const Vector<S>& g0v,
                            const Vector<S>& g1v, const S* s, Eigen::Index count,
                            Matrix<S>& out) {
-  const int n = N > 0 ? N : static_cast<int>(d.size());
-  constexpr int kCap = N > 0 ? N : 1;
-  S phi_fixed[kCap * kCap], g0_fixed[kCap], g1_fixed[kCap], d_fixed[kCap];
-  S z_fixed[kCap], next_fixed[kCap];
-  std::vector<S> dynamic;
-  S *phi = phi_fixed, *g0 = g0_fixed, *g1 = g1_fixed, *dd = d_fixed;
-  S *z = z_fixed, *next = next_fixed;
-  if (N == 0) {
-    dynamic.assign(static_cast<std::size_t>(n * n + 5 * n), S(0));
-    phi = dynamic.data();
-    g0 = phi + n * n;
-    g1 = g0 + n;
-    dd = g1 + n;
-    z = dd + n;
-    next = z + n;
-  }
-  for (int i = 0; i < n * n; ++i) phi[i] = Phi.data()[i];
-  for (int i = 0; i < n; ++i) {
-    g0[i] = g0v(i);
-    g1[i] = slope ? g1v(i) : S(0);
-    dd[i] = d(i);
-    z[i] = 0;
-  }
-  std::vector<S*> columns(static_cast<std::size_t>(n + 1));
-  for (int i = 0; i <= n; ++i) columns[i] = out.col(i).data();
-  for (Eigen::Index k = 0; k < count; ++k) {
-    const S sk = s[k];
-    if (k > 0) {
-      const S s0 = s[k - 1];
-      const S du = sk - s0;
+  // The previous sample is carried in a register, not read again from s,
+  // and (N > 0) the filter and its state are local arrays whose address is
+  // never taken, so that the compiler keeps them in registers: otherwise
+  // every store into `out` may alias them, they are reloaded at every
+  // sample, and a reload right after a store to an address with the same
+  // low 12 bits stalls, which made some orders several times slower than
+  // others depending on where the allocations fell.
+  S* const o = out.data();
+  const Eigen::Index ld = out.rows();
+  S s0 = count > 0 ? s[0] : S(0);
+  if constexpr (N > 0) {
+    S P[N * N], a[N], b[N], dd[N], z[N] = {}, next[N];
 #pragma GCC unroll 8
-      for (int i = 0; i < n; ++i) next[i] = g0[i] * s0 + g1[i] * du;
+    for (int i = 0; i < N; ++i) {
 #pragma GCC unroll 8
-      for (int j = 0; j < n; ++j) {
-        const S zj = z[j];
-        const S* column = phi + j * n;
+      for (int j = 0; j < N; ++j) P[i * N + j] = Phi(i, j);  // row-major
+    }
 #pragma GCC unroll 8
-        for (int i = 0; i < n; ++i) next[i] += column[i] * zj;
+    for (int i = 0; i < N; ++i) {
+      a[i] = g0v(i);
+      b[i] = slope ? g1v(i) : S(0);
+      dd[i] = d(i);
+    }
+    for (Eigen::Index k = 0; k < count; ++k) {
+      const S sk = s[k];
+      if (k > 0) {
+        const S du = sk - s0;
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) {
+          S sum = a[i] * s0 + b[i] * du;
+#pragma GCC unroll 8
+          for (int j = 0; j < N; ++j) sum += P[i * N + j] * z[j];
+          next[i] = sum;
+        }
+#pragma GCC unroll 8
+        for (int i = 0; i < N; ++i) z[i] = next[i];
       }
+      S highest = sk;
 #pragma GCC unroll 8
-      for (int i = 0; i < n; ++i) z[i] = next[i];
+      for (int i = 0; i < N; ++i) {
+        o[i * ld + k] = gain * z[i];
+        highest -= dd[i] * z[N - 1 - i];
+      }
+      o[N * ld + k] = gain * highest;
+      s0 = sk;
     }
-    S highest = sk;
-#pragma GCC unroll 8
+  } else {
+    const int n = static_cast<int>(d.size());
+    std::vector<S> work(static_cast<std::size_t>(n * n + 5 * n), S(0));
+    S* phi = work.data();
+    S* g0 = phi + n * n;
+    S* g1 = g0 + n;
+    S* dd = g1 + n;
+    S* z = dd + n;
+    S* next = z + n;
+    for (int i = 0; i < n * n; ++i) phi[i] = Phi.data()[i];
     for (int i = 0; i < n; ++i) {
-      columns[i][k] = gain * z[i];
-      highest -= dd[i] * z[n - 1 - i];
+      g0[i] = g0v(i);
+      g1[i] = slope ? g1v(i) : S(0);
+      dd[i] = d(i);
     }
-    columns[n][k] = gain * highest;
+    for (Eigen::Index k = 0; k < count; ++k) {
+      const S sk = s[k];
+      if (k > 0) {
+        const S du = sk - s0;
+        for (int i = 0; i < n; ++i) next[i] = g0[i] * s0 + g1[i] * du;
+        for (int j = 0; j < n; ++j) {
+          const S zj = z[j];
+          const S* column = phi + j * n;
+          for (int i = 0; i < n; ++i) next[i] += column[i] * zj;
+        }
+        for (int i = 0; i < n; ++i) z[i] = next[i];
+      }
+      S highest = sk;
+      for (int i = 0; i < n; ++i) {
+        o[i * ld + k] = gain * z[i];
+        highest -= dd[i] * z[n - 1 - i];
+      }
+      o[n * ld + k] = gain * highest;
+      s0 = sk;
+    }
   }
 }
 
