@@ -81,11 +81,7 @@ namespace gw_physsim {
 // Runs the gateway named by the name this file was called by (its
 // file name, without directory or extension).
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  std::string name = mexFunctionName();
-  const std::string::size_type slash = name.find_last_of("/\\");
-  if (slash != std::string::npos) name.erase(0, slash + 1);
-  const std::string::size_type dot = name.find('.');
-  if (dot != std::string::npos) name.erase(dot);
+  const std::string name = ctid::mex::called_name();
   if (name == "riv_mex") return gw_riv::entry(nlhs, plhs, nrhs, prhs);
   if (name == "rlssvf_mex") return gw_rlssvf::entry(nlhs, plhs, nrhs, prhs);
   if (name == "qnml_mex") return gw_qnml::entry(nlhs, plhs, nrhs, prhs);

@@ -86,11 +86,7 @@ namespace gw_gpmf {
 // Runs the gateway named by the name this file was called by (its
 // file name, without directory or extension).
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
-  std::string name = mexFunctionName();
-  const std::string::size_type slash = name.find_last_of("/\\");
-  if (slash != std::string::npos) name.erase(0, slash + 1);
-  const std::string::size_type dot = name.find('.');
-  if (dot != std::string::npos) name.erase(dot);
+  const std::string name = ctid::mex::called_name();
   if (name == "hammerstein_mex") return gw_hammerstein::entry(nlhs, plhs, nrhs, prhs);
   if (name == "rivc_mex") return gw_rivc::entry(nlhs, plhs, nrhs, prhs);
   if (name == "pem_mex") return gw_pem::entry(nlhs, plhs, nrhs, prhs);

@@ -198,4 +198,16 @@ void run_gateway(const char* fallback_name,
   if (failed) mexErrMsgIdAndTxt(id, "%s", message);
 }
 
+// The name the running MEX file was called by: its file name without
+// directory or extension (a file compiled once and installed under several
+// names dispatches on it, see scripts/make_unity_gateways).
+inline std::string called_name() {
+  std::string name = mexFunctionName();
+  const std::string::size_type slash = name.find_last_of("/\\");
+  if (slash != std::string::npos) name.erase(0, slash + 1);
+  const std::string::size_type dot = name.find('.');
+  if (dot != std::string::npos) name.erase(dot);
+  return name;
+}
+
 }  // namespace ctid::mex
