@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
-// Tests of core/include/ctid/offline/refined_iv_bj.hpp: the ARMA estimator against
-// known ARMA processes (estimate within its reported standard errors; the
-// pure AR case equals the least-squares solution), the discrete filter
+// Tests of core/include/ctid/offline/refined_iv_bj.hpp: the ARMA estimator
+// against known ARMA processes (estimate within its reported standard errors;
+// the pure AR case equals the least-squares solution), the discrete filter
 // against a direct recursion, and exact recovery of a continuous plant from
 // noise-free records by RIVC (open loop, fractional delay), CLRIVC and
 // CL2SRIVC. The records are simulated independently: controllable
@@ -364,10 +364,10 @@ struct ClosedLoopRecord {
     dc << 0.1, 1, 0;
     b << 3;
     f << 1, 2, 3;
-    const Eigen::VectorXd bnc = bj_detail::conv<double>(b, nc);
-    acl = bj_detail::conv<double>(f, dc);
+    const Eigen::VectorXd bnc = convolve<double>(b, nc);
+    acl = convolve<double>(f, dc);
     acl.tail(bnc.size()) += bnc;
-    fnc = bj_detail::conv<double>(f, nc);
+    fnc = convolve<double>(f, nc);
     y = simulate_zoh(bnc, acl, r, ts);
     u = simulate_zoh(fnc, acl, r, ts);
   }
@@ -413,14 +413,10 @@ struct InputLoopRecord : ClosedLoopRecord {
     Eigen::VectorXd wn(1), wd(2);
     wn << 10;
     wd << 1, 10;
-    const Eigen::VectorXd den = bj_detail::conv<double>(acl, wd);
+    const Eigen::VectorXd den = convolve<double>(acl, wd);
     r1 = simulate_zoh(wn, wd, r, ts);
-    y = simulate_zoh(
-        bj_detail::conv<double>(bj_detail::conv<double>(b, dc), wn), den, r,
-        ts);
-    u = simulate_zoh(
-        bj_detail::conv<double>(bj_detail::conv<double>(f, dc), wn), den, r,
-        ts);
+    y = simulate_zoh(convolve<double>(convolve<double>(b, dc), wn), den, r, ts);
+    u = simulate_zoh(convolve<double>(convolve<double>(f, dc), wn), den, r, ts);
   }
 };
 
@@ -579,14 +575,14 @@ TEST(Cl2srivc, GivenStartsReachTheSameEstimate) {
                                &automatic)
                   .ok());
   settings.theta_init = 1.05 * automatic.plant.theta;
-  ASSERT_TRUE(cl2srivc<double>(plant, loop, settings, rec.y.data(),
-                               rec.u.data(), rec.r.data(), rec.n, rec.ts,
-                               &given, Eigen::VectorXd(
-                                           1.05 * automatic.sensitivity.theta))
-                  .ok());
-  EXPECT_LT(relative_error(given.sensitivity.theta,
-                           automatic.sensitivity.theta),
-            1e-9);
+  ASSERT_TRUE(
+      cl2srivc<double>(plant, loop, settings, rec.y.data(), rec.u.data(),
+                       rec.r.data(), rec.n, rec.ts, &given,
+                       Eigen::VectorXd(1.05 * automatic.sensitivity.theta))
+          .ok());
+  EXPECT_LT(
+      relative_error(given.sensitivity.theta, automatic.sensitivity.theta),
+      1e-9);
   EXPECT_LT(relative_error(given.plant.theta, automatic.plant.theta), 1e-9);
 }
 

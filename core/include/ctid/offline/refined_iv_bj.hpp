@@ -53,6 +53,7 @@
 #include <string>
 #include <vector>
 
+#include "ctid/base/polynomial.hpp"
 #include "ctid/offline/refined_iv.hpp"
 
 namespace ctid {
@@ -591,15 +592,6 @@ struct RivcData {
 
 namespace bj_detail {
 
-// Descending-power polynomial product.
-template <typename S>
-Vector<S> conv(const Vector<S>& a, const Vector<S>& b) {
-  Vector<S> c = Vector<S>::Zero(a.size() + b.size() - 1);
-  for (Eigen::Index i = 0; i < a.size(); ++i)
-    for (Eigen::Index j = 0; j < b.size(); ++j) c(i + j) += a(i) * b(j);
-  return c;
-}
-
 // theta' = scale .* theta for t' = sigma t: f_i' = f_i / sigma^i,
 // b_j' = b_j sigma^(pow_j - n) (pow_j the power of p of b_j).
 template <typename S>
@@ -732,7 +724,7 @@ class BjIteration {
     fpoly(0) = 1;
     fpoly.tail(nf) = f;
     // p'^m u / F^2, m = 0..2 nf: x_hat and its prefiltered derivatives.
-    const Vector<S> f2 = conv<S>(fpoly, fpoly);
+    const Vector<S> f2 = convolve<S>(fpoly, fpoly);
     // The large signal matrices are members, reused from one iteration to
     // the next (no fresh pages per iteration).
     Matrix<S>& U2 = u2_;
@@ -824,8 +816,8 @@ class BjIteration {
     for (Eigen::Index k = 0; k < dc.size(); ++k) {
       dc(k) *= std::pow(sigma_, S(dc.size() - 1 - k));
     }
-    const Vector<S> bnc = conv<S>(b, nc);
-    Vector<S> acl = conv<S>(fpoly, dc);
+    const Vector<S> bnc = convolve<S>(b, nc);
+    Vector<S> acl = convolve<S>(fpoly, dc);
     acl.tail(bnc.size()) += bnc;
     const S lead = acl(0);
     if (!(std::abs(lead) > 0)) {
@@ -837,7 +829,7 @@ class BjIteration {
       return numerical_failure(
           "the closed loop F Dc + B Nc of the current estimate is unstable");
     }
-    const Vector<S> den = conv<S>(acl, fpoly);  // monic, order nf + ncl
+    const Vector<S> den = convolve<S>(acl, fpoly);  // monic, order nf + ncl
     Matrix<S> R;
     // sum_k num_k p'^(k + i) s / (Acl F), num in descending powers.
     auto apply = [&](const Vector<S>& num, int count, Matrix<S>& out) {
@@ -856,14 +848,14 @@ class BjIteration {
                                         InterSample::kZoh, clock_, r_.data(),
                                         R);
       apply(bnc, nf + 1, Zx);
-      apply(conv<S>(fpoly, nc), nb, Zu);
+      apply(convolve<S>(fpoly, nc), nb, Zu);
     }
     if (r1_.size() > 0 && !r1_.isZero(0)) {
       riv_detail::filter_derivatives<S>(den.tail(den.size() - 1), S(1) / lead,
                                         InterSample::kZoh, clock_, r1_.data(),
                                         R);
-      apply(conv<S>(b, dc), nf + 1, Zx);
-      apply(conv<S>(fpoly, dc), nb, Zu);
+      apply(convolve<S>(b, dc), nf + 1, Zx);
+      apply(convolve<S>(fpoly, dc), nb, Zu);
     }
     return Status::Ok();
   }

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "ctid/base/polynomial.hpp"
 #include "ctid/filters/batch_filters.hpp"
 #include "ctid/offline/offline_iv.hpp"
 #include "ctid/offline/refined_iv_problem.hpp"
@@ -271,8 +272,9 @@ class Engine {
     }
     const Vector<S> nc = scaled_poly(p_.controller_num);
     const Vector<S> dc = scaled_poly(p_.controller_den);
-    const Vector<S> acl = add(conv(F, dc), conv(B, pad(nc, dc.size())));
-    const Vector<S> bx = conv(B, nc), fu = conv(F, nc);
+    const Vector<S> acl =
+        add(convolve<S>(F, dc), convolve<S>(B, pad(nc, dc.size())));
+    const Vector<S> bx = convolve<S>(B, nc), fu = convolve<S>(F, nc);
     const S lead = acl(0);
     if (!(std::abs(lead) > 0)) {
       return numerical_failure("the closed loop is improper");
@@ -296,8 +298,8 @@ class Engine {
     if (r1_.size() > 0 && !r1_.isZero(0)) {
       filter_derivatives<S>(d, S(1) / lead, p_.channels[0].rule, clock_,
                             r1_.data(), D);
-      x += combine(D, conv(B, dc));
-      u += combine(D, conv(F, dc));
+      x += combine(D, convolve<S>(B, dc));
+      u += combine(D, convolve<S>(F, dc));
     }
     return Status::Ok();
   }
@@ -502,13 +504,6 @@ class Engine {
       out(i) = q(i) * std::pow(clock_.sigma, S(deg - i));
     }
     return out;
-  }
-  static Vector<S> conv(const Vector<S>& a, const Vector<S>& b) {
-    Vector<S> c = Vector<S>::Zero(a.size() + b.size() - 1);
-    for (Eigen::Index i = 0; i < a.size(); ++i) {
-      for (Eigen::Index j = 0; j < b.size(); ++j) c(i + j) += a(i) * b(j);
-    }
-    return c;
   }
   static Vector<S> pad(const Vector<S>& a, Eigen::Index size) {
     Vector<S> out = Vector<S>::Zero(std::max(size, a.size()));
