@@ -14,6 +14,17 @@
 
 namespace ctid {
 
+// t_k - t_(k-1) of a record with N samples, a constant interval ts when
+// `instants` is null; for k = 0 the first interval of the record.
+template <typename S>
+S sampling_interval(const S* instants, S ts, Eigen::Index num_samples,
+                    Eigen::Index k) {
+  if (instants == nullptr) return ts;
+  if (num_samples < 2) return S(1);
+  if (k == 0) return instants[1] - instants[0];
+  return instants[k] - instants[k - 1];
+}
+
 template <typename S>
 struct RecordView {
   const S* y = nullptr;
@@ -28,10 +39,7 @@ struct RecordView {
   }
   // t_k - t_(k-1); for k = 0 the first interval of the record.
   S interval(Eigen::Index k) const {
-    if (instants == nullptr) return ts;
-    if (num_samples < 2) return S(1);
-    if (k == 0) return instants[1] - instants[0];
-    return instants[k] - instants[k - 1];
+    return sampling_interval(instants, ts, num_samples, k);
   }
 };
 

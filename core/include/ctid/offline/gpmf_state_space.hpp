@@ -54,6 +54,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
+#include "ctid/base/record.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
 #include "ctid/filters/batch_filters.hpp"
@@ -83,10 +84,7 @@ struct MultiRecordView {
   }
   // t_k - t_(k-1); for k = 0 the first interval of the record.
   S interval(Eigen::Index k) const {
-    if (instants == nullptr) return ts;
-    if (num_samples < 2) return S(1);
-    if (k == 0) return instants[1] - instants[0];
-    return instants[k] - instants[k - 1];
+    return sampling_interval(instants, ts, num_samples, k);
   }
 };
 
