@@ -11,14 +11,18 @@
 // y = sum_j B_j/F_j u_j; delay in time units, continuous time, default 0),
 // estimate_delay (true: the total delay is the last parameter, started from nk
 // Ts + delay, kept in [0, delay_max]), cutoff (SVF cut-off of the SRIVC start,
-// rad/s; 0 a grid), intersample (0 zoh, 1 foh), theta_init
-// ([f; b], or absent for the SRIVC / ARX start), maxiter, tol; arx: na,
-// nb, nk (nb, nk one entry per input). info: converged, iterations,
+// rad/s; 0 a grid), intersample ('zoh' or 'foh'), theta_init
+// ([f; b], or absent for the SRIVC / ARX start), maxiter, tol: the options
+// of output_error_options.hpp, read from that table with its defaults;
+// `pem_mex (fname, "options")` returns the table. arx: na, nb, nk (nb, nk
+// one entry per input). info: converged, iterations,
 // reason, loss, noise_variance, gradient_norm, damping, start,
 // theta_start, simulated (output error) or rows (arx).
 #include <algorithm>
 
 #include "ctid/offline/output_error.hpp"
+#include "ctid/offline/output_error_options.hpp"
+#include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 
@@ -58,6 +62,11 @@ void arx_gateway(const Gateway& g, OptionsReader& opt,
 
 void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] =
+        ctid::mex::option_table_struct(ctid::output_error_options<double>());
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments, got " + std::to_string(nrhs));
@@ -74,54 +83,16 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (model != "oe_ct" && model != "oe_dt") {
     g.fail("badOption", "model must be 'oe_ct', 'oe_dt' or 'arx'");
   }
-  ctid::OeStructure s;
-  s.time =
+  ctid::OeConfig<double> config;
+  config.time =
       model == "oe_ct" ? ctid::OeTime::kContinuous : ctid::OeTime::kDiscrete;
-  // One entry per input (a scalar: one input).
-  const std::vector<int> nf = opt.integer_vector("nf");
-  const std::vector<int> nb = opt.integer_vector("nb");
-  const std::vector<int> nk = opt.integer_vector("nk", {0});
-  const Eigen::MatrixXd delay = opt.matrix("delay");
-  const std::size_t m = record.num_inputs;
-  if (nf.size() != m || nb.size() != m || nk.size() != m ||
-      (delay.size() != 0 && static_cast<std::size_t>(delay.size()) != m)) {
-    g.fail("dimensionMismatch",
-           "nf, nb, nk and delay need one entry per input (" +
-               std::to_string(m) + ")");
-  }
-  const int rule = opt.integer("intersample", 0);
-  if (rule != 0 && rule != 1) {
-    g.fail("badOption", "intersample must be 0 (zoh) or 1 (foh)");
-  }
-  for (std::size_t j = 0; j < m; ++j) {
-    ctid::OeChannel c;
-    c.nf = nf[j];
-    c.nb = nb[j];
-    c.nk = nk[j];
-    c.delay = delay.size() != 0 ? delay(j) : 0.0;
-    c.rule = rule == 0 ? ctid::InterSample::kZoh : ctid::InterSample::kFoh;
-    if (m == 1) {
-      s.nf = c.nf;
-      s.nb = c.nb;
-      s.nk = c.nk;
-      s.delay = c.delay;
-      s.rule = c.rule;
-    } else {
-      s.inputs.push_back(c);
-    }
-  }
-  s.estimate_delay = opt.flag("estimate_delay", false);
-  s.delay_max = opt.scalar("delay_max", 0);
-  ctid::OeSettings<double> settings;
-  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
-  if (theta_init.size() > 0) {
-    settings.theta_init =
-        Eigen::Map<const Eigen::VectorXd>(theta_init.data(), theta_init.size());
-  }
-  settings.max_iterations = opt.integer("maxiter", 100);
-  settings.tolerance = opt.scalar("tol", 1e-8);
-  settings.srivc_cutoff = opt.scalar("cutoff", 0);
+  ctid::mex::read_option_table(g, opt, ctid::output_error_options<double>(),
+                               &config);
   opt.finish();
+  const std::size_t m = record.num_inputs;
+  ctid::OeStructure s;
+  g.check(ctid::oe_structure(config, m, &s));
+  const ctid::OeSettings<double>& settings = config.settings;
   ctid::OeData<double> data;
   data.y = record.y;
   data.u = record.u;

@@ -272,8 +272,10 @@ function [M, info] = oe_model (fname, d, rest)
     error ([fname ":badInput"], "%s: nb must be >= 1", fname);
   endif
   o = read_options (fname, rest(2:end),
-                    struct ("focus", "simulation", "maxiter", 100,
-                            "tol", 1e-8, "lambda", [], "overpar", "off",
+                    struct ("focus", "simulation",
+                            "maxiter", contsid_pem_default ("maxiter"),
+                            "tol", contsid_pem_default ("tol"),
+                            "lambda", [], "overpar", "off",
                             "tdmax", []));
   check_unused (fname, o, {"lambda", "overpar", "tdmax"});
   df = contsid_focus_filter (fname, d, o.band, 4);
@@ -362,7 +364,9 @@ function [M, info] = tf_model (fname, d, rest)
     td = per_input (fname, td, nu, "IODelay");
   endif
   T = d.t(end) - d.t(1);
-  dflt = struct ("focus", "simulation", "maxiter", 100, "tol", 1e-8,
+  dflt = struct ("focus", "simulation",
+                 "maxiter", contsid_pem_default ("maxiter"),
+                 "tol", contsid_pem_default ("tol"),
                  "lambda", [], "overpar", "off", "tdmax", []);
   is_tfcoe = strcmp (fname, "tfcoe");
   if (is_tfcoe)
@@ -439,7 +443,10 @@ function [M, info] = tf_model (fname, d, rest)
     dg.intersample = "foh";
     npg = np - 1;
   endif
-  rule = double (strcmpi (dg.intersample, "foh"));
+  rule = "zoh";
+  if (strcmpi (dg.intersample, "foh"))
+    rule = "foh";
+  endif
   opts = struct ("model", "oe_ct", "nf", npg, "nb", nz + 1, "nk", 0 * np,
                  "delay", td, "intersample", rule, "maxiter", o.maxiter,
                  "tol", o.tol, "estimate_delay", estimate,
@@ -737,8 +744,10 @@ function [M, info] = freq_model (fname, args)
            fname);
   endif
   o = read_options (fname, rest,
-                    struct ("focus", "simulation", "maxiter", 100,
-                            "tol", 1e-8, "lambda", [], "overpar", "off",
+                    struct ("focus", "simulation",
+                            "maxiter", contsid_pem_default ("maxiter"),
+                            "tol", contsid_pem_default ("tol"),
+                            "lambda", [], "overpar", "off",
                             "tdmax", []));
   check_unused (fname, o, {"lambda", "overpar", "tdmax"});
   spec = struct ("na", double (na(:).'), "nb", double (nb(:).'),

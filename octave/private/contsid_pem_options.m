@@ -11,8 +11,9 @@ function opt = contsid_pem_options (fname, args)
   opt = struct ("OptionSet", fname, "Focus", "simulation",
                 "InitialCondition", "zero", "Display", "off",
                 "SearchMethod", "lm",
-                "SearchOptions", struct ("MaxIterations", 100,
-                                         "Tolerance", 1e-8));
+                "SearchOptions",
+                struct ("MaxIterations", contsid_pem_default ("maxiter"),
+                        "Tolerance", contsid_pem_default ("tol")));
   if (mod (numel (args), 2) != 0)
     error ([fname ":badOption"], "%s: options come in name-value pairs",
            fname);

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "ctid/offline/output_error_options.hpp"
 #include "test_util.hpp"
 
 namespace ctid {
@@ -303,6 +304,73 @@ TEST(OutputError, TwoInputBadStructureIsReported) {
   s.delay_max = 1;
   EXPECT_EQ(output_error<double>(s, OeSettings<double>(), data, &r).code(),
             ErrorCode::kBadInput);
+}
+
+// The options table: its defaults are the settings' own, an option set by
+// name lands in the config, and a bad name or word is a bad option.
+TEST(OutputErrorOptions, DefaultsAreTheSettingsAndNamesSetTheConfig) {
+  const auto& table = output_error_options<double>();
+  const OeSettings<double> settings;
+  const auto shown = [&](const char* name) {
+    const auto* decl = find_option(table, name);
+    EXPECT_NE(decl, nullptr) << name;
+    return decl == nullptr ? std::string() : option_default(*decl);
+  };
+  EXPECT_EQ(std::stod(shown("maxiter")), settings.max_iterations);
+  EXPECT_EQ(std::stod(shown("tol")), settings.tolerance);
+  EXPECT_EQ(std::stod(shown("cutoff")), settings.srivc_cutoff);
+  EXPECT_EQ(shown("intersample"), "zoh");
+  OeConfig<double> config;
+  OptionValue v;
+  v.integer = 7;
+  ASSERT_TRUE(set_option(table, "maxiter", v, &config).ok());
+  EXPECT_EQ(config.settings.max_iterations, 7);
+  v.word = "foh";
+  ASSERT_TRUE(set_option(table, "intersample", v, &config).ok());
+  EXPECT_EQ(config.rule, InterSample::kFoh);
+  v.word = "trapezoid";  // not an output-error rule
+  EXPECT_EQ(set_option(table, "intersample", v, &config).code(),
+            ErrorCode::kBadOption);
+  EXPECT_EQ(set_option(table, "lambda_svf", v, &config).code(),
+            ErrorCode::kBadOption);
+}
+
+// A config set by name gives the structure written by hand, and the same
+// estimate to the last bit; orders with the wrong number of entries are a
+// dimension mismatch.
+TEST(OutputErrorOptions, ConfigByNameGivesTheSameEstimate) {
+  const std::vector<double> u = binary_input(800, 7, 3);
+  Eigen::VectorXd f(3), b(2);
+  f << 1, 1.2, 4;
+  b << 1.5, 4;
+  const std::vector<double> y = simulate(f, b, u, 0.05, true);
+  const auto& table = output_error_options<double>();
+  OeConfig<double> config;
+  OptionValue v;
+  v.integers = {2};
+  ASSERT_TRUE(set_option(table, "nf", v, &config).ok());
+  ASSERT_TRUE(set_option(table, "nb", v, &config).ok());
+  v.word = "foh";
+  ASSERT_TRUE(set_option(table, "intersample", v, &config).ok());
+  v.real = 1e-10;
+  ASSERT_TRUE(set_option(table, "tol", v, &config).ok());
+  OeStructure by_name;
+  ASSERT_TRUE(oe_structure(config, 1, &by_name).ok());
+  OeStructure by_hand;
+  by_hand.nf = 2;
+  by_hand.nb = 2;
+  by_hand.rule = InterSample::kFoh;
+  OeSettings<double> settings;
+  settings.tolerance = 1e-10;
+  OeResult<double> a, c;
+  ASSERT_TRUE(
+      output_error(by_name, config.settings, make_data(y, u, 0.05), &a).ok());
+  ASSERT_TRUE(output_error(by_hand, settings, make_data(y, u, 0.05), &c).ok());
+  EXPECT_EQ(a.theta, c.theta);
+  EXPECT_LT(relative_error(a.theta, Eigen::Vector4d(1.2, 4, 1.5, 4)), 1e-8);
+  OeStructure two;
+  EXPECT_EQ(oe_structure(config, 2, &two).code(),
+            ErrorCode::kDimensionMismatch);
 }
 
 TEST(OutputError, DiscreteNoiseFreeIsExactAndNoisyIsStationary) {

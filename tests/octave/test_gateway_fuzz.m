@@ -95,7 +95,7 @@ function test_gateway_fuzz ()
                "controller_den", [], "cl_nb", 1, "cl_nf", 1, "cl_nk", 0);
   pem = struct ("model", "oe_ct", "nf", 2, "nb", 1, "nk", 0, "delay", 0.05,
                 "estimate_delay", true, "delay_max", 1, "cutoff", 0,
-                "intersample", 0, "theta_init", [], "maxiter", 5, "tol", 1e-8);
+                "intersample", "zoh", "theta_init", [], "maxiter", 5, "tol", 1e-8);
   pemarx = struct ("model", "arx", "na", 2, "nb", 1, "nk", 1);
   sim = struct ("intersample", "zoh", "na", 2, "nb", 1, "nk", 0,
                 "substeps", 1, "x0", [], "noise", []);

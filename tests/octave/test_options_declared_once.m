@@ -6,7 +6,10 @@
 ## The options of the recursive estimators are declared once, in the core
 ## (@file{core/include/ctid/recursive/recursive_options.hpp}), and the
 ## gateways return that table (@code{riv_mex (fname, "options")},
-## @code{rlssvf_mex ("rlssvf", "options")}). Checked here:
+## @code{rlssvf_mex ("rlssvf", "options")}); those of the output-error
+## estimators likewise
+## (@file{core/include/ctid/offline/output_error_options.hpp},
+## @code{pem_mex ("oe", "options")}). Checked here:
 ## @itemize
 ## @item every option a user sets is documented in the help text of its
 ## front-ends, and where the help states a default, it is the table's;
@@ -80,6 +83,8 @@ function test_options_declared_once ()
   ## that a change of wording cannot silently empty the check)
   assert (compared >= 5, sprintf ("only %d defaults compared", compared));
 
+  check_output_error_options ();
+
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
   default_of = @(n) T(strcmp ({T.name}, n)).default;
@@ -111,6 +116,60 @@ function test_options_declared_once ()
   assert (isequal (a, b));
   c = rsrivc (data, [1 2 0], base{:}, w{:}, "antiwindup_lambda", 0.9);
   assert (! isequal (a, c));
+endfunction
+
+## The output-error family: the defaults its help texts and option sets
+## state are the table's, giving them explicitly changes nothing, and the
+## gateway refuses an option the table does not declare.
+function check_output_error_options ()
+  T = pem_mex ("oe", "options");
+  assert (isstruct (T) && numel (T) >= 10);
+  for k = 1:numel (T)
+    assert (! isempty (T(k).help) && ! isempty (T(k).range), T(k).name);
+  endfor
+  default_of = @(n) str2double (T(strcmp ({T.name}, n)).default);
+  maxiter = default_of ("maxiter");
+  tol = default_of ("tol");
+  ## the help texts that state them
+  [item, pos] = help_item (get_help_text ("tfcoe"), "MaxIter");
+  assert (same_default (stated_default (item, pos), num2str (maxiter)));
+  [item, pos] = help_item (get_help_text ("tfcoe"), "TolPar");
+  t = regexp (item, 'Default ([-+0-9.eE]+[0-9])', "tokens", "once");
+  assert (! isempty (t) && same_default (t{1}, num2str (tol)));
+  for f = {"oeOptions", "tfestOptions"}
+    h = get_help_text (f{1});
+    t = regexp (h, '@code\{MaxIterations\} ([0-9]+).*@code\{Tolerance\} ([-+0-9.eE]+[0-9])',
+                "tokens", "once");
+    assert (numel (t) == 2, [f{1} ": the help states no default"]);
+    assert (same_default (t{1}, num2str (maxiter)), [f{1} ": MaxIterations"]);
+    assert (same_default (t{2}, num2str (tol)), [f{1} ": Tolerance"]);
+    o = feval (f{1});
+    assert (o.SearchOptions.MaxIterations, maxiter);
+    assert (o.SearchOptions.Tolerance, tol);
+  endfor
+  h = get_help_text ("oe");
+  t = regexp (h, 'MaxIterations\}, default ([0-9]+)', "tokens", "once");
+  assert (! isempty (t) && same_default (t{1}, num2str (maxiter)));
+  ## explicit defaults change nothing
+  Ts = 0.05;
+  u = prbs (8, 4);
+  randn ("state", 3);
+  y = simc (struct ("B", 2, "F", [1 1.2 1]), u, Ts);
+  data = iddata (y + 0.02 * randn (size (y)), u, Ts);
+  a = tfest (data, 2, 0);
+  b = tfest (data, 2, 0, "MaxIterations", maxiter, "Tolerance", tol);
+  assert (isequal (getpvec (a), getpvec (b)));
+  warning ("off", "all", "local");       # MaxIter 0: "not converged"
+  c = tfest (data, 2, 0, "MaxIterations", 0);   # the start, not the optimum
+  assert (! isequal (getpvec (a), getpvec (c)));
+  ## an undeclared option is refused by the gateway
+  try
+    pem_mex ("oe", y, u, Ts, struct ("model", "oe_ct", "nf", 2, "nb", 1,
+                                     "not_an_option", 1));
+    error ("pem_mex accepted an unknown option");
+  catch err
+    assert (err.identifier, "oe:badOption");
+  end_try_catch
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may

@@ -529,8 +529,11 @@ Status validate(const OeStructure& s, const OeSettings<S>& settings,
   }
   if (settings.max_iterations < 0)
     return Status(ErrorCode::kBadOption, "MaxIter must be >= 0");
-  if (!(settings.tolerance > 0))
+  if (!(settings.tolerance > 0) || !std::isfinite(settings.tolerance))
     return Status(ErrorCode::kBadOption, "the tolerance must be > 0");
+  if (!(settings.srivc_cutoff >= 0) || !std::isfinite(settings.srivc_cutoff))
+    return Status(ErrorCode::kBadOption,
+                  "the SRIVC start's cut-off must be finite and >= 0");
   if (settings.theta_init.size() != 0 && settings.theta_init.size() != np) {
     return Status(
         ErrorCode::kDimensionMismatch,

@@ -1,15 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
 // The named options of the recursive estimators, declared once, beside
-// their config structs (RlsSvfConfig, RecursiveIvConfig): each option's
-// name, type, accepted range, one-line help and how a value sets the
-// config. Its default is the config struct's own member initialiser,
-// printed from a default-constructed config, so it is written in one
-// place. Hosts read options through these tables (the MEX gateways
-// rlssvf_mex and riv_mex do; a C++ program may too, with
+// their config structs (RlsSvfConfig, RecursiveIvConfig), in the form of
+// base/options.hpp. Hosts read options through these tables (the MEX
+// gateways rlssvf_mex and riv_mex do; a C++ program may too, with
 // set_option()), and validate(config) is the one range check on every
-// path. The tables are also what the toolbox's help texts are checked
-// against.
+// path.
 //
 //   RecursiveIvConfig<double> config;
 //   OptionValue v;
@@ -25,119 +21,13 @@
 #include <utility>
 #include <vector>
 
+#include "ctid/base/options.hpp"
 #include "ctid/recursive/recursive_iv.hpp"
 #include "ctid/recursive/rlssvf.hpp"
 
 namespace ctid {
 
-enum class OptionType {
-  kReal,           // a finite real scalar
-  kInteger,        // an integer scalar
-  kIntegerVector,  // integers, one per input
-  kFlag,           // true or false
-  kChoice,         // one word of a fixed list
-  kMatrix,         // a real matrix (its size is checked by validate())
-};
-
-inline const char* option_type_name(OptionType type) {
-  switch (type) {
-    case OptionType::kReal:
-      return "real scalar";
-    case OptionType::kInteger:
-      return "integer";
-    case OptionType::kIntegerVector:
-      return "integer vector";
-    case OptionType::kFlag:
-      return "logical";
-    case OptionType::kChoice:
-      return "choice";
-    case OptionType::kMatrix:
-      return "real matrix";
-  }
-  return "";
-}
-
-// One option's value as a host read it: the member of its type.
-struct OptionValue {
-  double real = 0;
-  int integer = 0;
-  std::vector<int> integers;
-  bool flag = false;
-  std::string word;
-  Matrix<double> matrix;
-};
-
-template <typename Config>
-struct OptionDecl {
-  const char* name;
-  OptionType type;
-  bool required;
-  std::vector<const char*> choices;  // kChoice: the accepted words
-  const char* range;                 // what validate() accepts, in words
-  const char* help;                  // one line
-  // The option's value in a config, as text (its default for a default
-  // config).
-  std::function<std::string(const Config&)> show;
-  // Sets the config from a value of the declared type (a kChoice value is
-  // one of `choices`; the host checks that).
-  std::function<Status(Config*, const OptionValue&)> set;
-};
-
-template <typename Config>
-using OptionTable = std::vector<OptionDecl<Config>>;
-
 namespace options_detail {
-
-inline std::string number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
-inline std::string integers(const std::vector<int>& v) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    s += (i ? " " : "") + std::to_string(v[i]);
-  }
-  return s + "]";
-}
-
-template <typename S>
-std::string matrix_text(const Matrix<S>& m, const char* empty) {
-  if (m.size() == 0) return empty;
-  return std::to_string(m.rows()) + "x" + std::to_string(m.cols());
-}
-
-// A vector option (th0, the scaling, a polynomial in q^-1) into target;
-// a matrix with more than one row and column is an error of kind `code`.
-template <typename S>
-Status set_vector(const OptionValue& v, const char* what, ErrorCode code,
-                  Vector<S>* target) {
-  const Matrix<double>& m = v.matrix;
-  if (m.rows() > 1 && m.cols() > 1) {
-    return Status(code, std::string(what) + " must be a vector");
-  }
-  *target = Eigen::Map<const Vector<double>>(m.data(), m.size()).cast<S>();
-  return Status::Ok();
-}
-
-inline const char* intersample_word(InterSample rule) {
-  switch (rule) {
-    case InterSample::kZoh:
-      return "zoh";
-    case InterSample::kFoh:
-      return "foh";
-    case InterSample::kTrapezoid:
-      return "trapezoid";
-  }
-  return "";
-}
-
-inline InterSample intersample_of(const std::string& word) {
-  if (word == "foh") return InterSample::kFoh;
-  if (word == "trapezoid") return InterSample::kTrapezoid;
-  return InterSample::kZoh;
-}
 
 // The parameters a config estimates (the size of Qn, th0, P0, M_s).
 template <typename S>
@@ -663,60 +553,6 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
     return t;
   }();
   return table;
-}
-
-template <typename Config>
-const OptionDecl<Config>* find_option(const OptionTable<Config>& table,
-                                      const std::string& name) {
-  for (const auto& decl : table) {
-    if (name == decl.name) return &decl;
-  }
-  return nullptr;
-}
-
-// The option's default: its value in a default-constructed config.
-template <typename Config>
-std::string option_default(const OptionDecl<Config>& decl) {
-  return decl.show(Config{});
-}
-
-// The words a kChoice option accepts, for messages: "'a', 'b'".
-template <typename Config>
-std::string option_choices(const OptionDecl<Config>& decl) {
-  std::string allowed;
-  for (const char* word : decl.choices) {
-    allowed += (allowed.empty() ? "'" : ", '") + std::string(word) + "'";
-  }
-  return allowed;
-}
-
-// Sets the option `decl` declares; a word outside its choices is a bad
-// option. The ranges are checked by validate(config) once every option is
-// set.
-template <typename Config>
-Status set_option(const OptionDecl<Config>& decl, const OptionValue& value,
-                  Config* config) {
-  if (decl.type == OptionType::kChoice) {
-    bool known = false;
-    for (const char* word : decl.choices) known = known || value.word == word;
-    if (!known) {
-      return Status(ErrorCode::kBadOption,
-                    std::string("option '") + decl.name + "' must be one of " +
-                        option_choices(decl) + ", got '" + value.word + "'");
-    }
-  }
-  return decl.set(config, value);
-}
-
-// Sets one option by name; an unknown name is a bad option.
-template <typename Config>
-Status set_option(const OptionTable<Config>& table, const std::string& name,
-                  const OptionValue& value, Config* config) {
-  const OptionDecl<Config>* decl = find_option(table, name);
-  if (decl == nullptr) {
-    return Status(ErrorCode::kBadOption, "unknown option '" + name + "'");
-  }
-  return set_option(*decl, value, config);
 }
 
 }  // namespace ctid

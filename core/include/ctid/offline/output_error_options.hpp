@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
+// The named options of the output-error estimators (output_error.hpp;
+// the toolbox's tfcoe, tfest and oe), declared once in the form of
+// base/options.hpp, over OeConfig: the orders and delays one entry per
+// input as a host gives them, and the settings of the iteration. Their
+// defaults are OeConfig's and OeSettings' member initialisers; the ranges
+// are checked once, by validate() of output_error.hpp, when the estimator
+// runs.
+//
+//   OeConfig<double> config;
+//   OptionValue v;
+//   v.integer = 50;
+//   Status s = set_option(output_error_options<double>(), "maxiter", v,
+//                         &config);
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ctid/base/options.hpp"
+#include "ctid/offline/output_error.hpp"
+
+namespace ctid {
+
+template <typename S>
+struct OeConfig {
+  OeTime time = OeTime::kContinuous;
+  // One entry per input (a host that reads a scalar gives one entry).
+  std::vector<int> nf, nb;
+  std::vector<int> nk{0};
+  std::vector<double> delay;  // continuous time, time units; empty: 0
+  InterSample rule = InterSample::kZoh;
+  bool estimate_delay = false;
+  double delay_max = 0;
+  OeSettings<S> settings;
+};
+
+// The structure of a config for m inputs: one input fills OeStructure's
+// own fields, several one OeChannel each. Orders or delays that do not
+// have one entry per input are a dimension mismatch.
+template <typename S>
+Status oe_structure(const OeConfig<S>& config, std::size_t m, OeStructure* s) {
+  if (config.nf.size() != m || config.nb.size() != m || config.nk.size() != m ||
+      (!config.delay.empty() && config.delay.size() != m)) {
+    return dimension_mismatch(
+        "nf, nb, nk and delay need one entry per input (" + std::to_string(m) +
+        ")");
+  }
+  *s = OeStructure();
+  s->time = config.time;
+  for (std::size_t j = 0; j < m; ++j) {
+    OeChannel c;
+    c.nf = config.nf[j];
+    c.nb = config.nb[j];
+    c.nk = config.nk[j];
+    c.delay = config.delay.empty() ? 0.0 : config.delay[j];
+    c.rule = config.rule;
+    if (m == 1) {
+      s->nf = c.nf;
+      s->nb = c.nb;
+      s->nk = c.nk;
+      s->delay = c.delay;
+      s->rule = c.rule;
+    } else {
+      s->inputs.push_back(c);
+    }
+  }
+  s->estimate_delay = config.estimate_delay;
+  s->delay_max = config.delay_max;
+  return Status::Ok();
+}
+
+template <typename S>
+const OptionTable<OeConfig<S>>& output_error_options() {
+  using C = OeConfig<S>;
+  using V = const OptionValue&;
+  using options_detail::integers;
+  using options_detail::number;
+  static const OptionTable<C> table = [] {
+    OptionTable<C> t;
+    t.push_back({"nf",
+                 OptionType::kIntegerVector,
+                 true,
+                 {},
+                 ">= 1 each (continuous time), >= 0 (discrete time)",
+                 "denominator order, one per input",
+                 [](const C& c) { return integers(c.nf); },
+                 [](C* c, V v) {
+                   c->nf = v.integers;
+                   return Status::Ok();
+                 }});
+    t.push_back({"nb",
+                 OptionType::kIntegerVector,
+                 true,
+                 {},
+                 ">= 1 each, at most nf + 1",
+                 "numerator coefficients, one per input",
+                 [](const C& c) { return integers(c.nb); },
+                 [](C* c, V v) {
+                   c->nb = v.integers;
+                   return Status::Ok();
+                 }});
+    t.push_back({"nk",
+                 OptionType::kIntegerVector,
+                 false,
+                 {},
+                 ">= 0 each",
+                 "input delay in samples, one per input",
+                 [](const C& c) { return integers(c.nk); },
+                 [](C* c, V v) {
+                   c->nk = v.integers;
+                   return Status::Ok();
+                 }});
+    t.push_back({"delay",
+                 OptionType::kMatrix,
+                 false,
+                 {},
+                 "finite, >= 0 each",
+                 "continuous-time input delay in time units on top of nk, "
+                 "one per input",
+                 [](const C& c) {
+                   return c.delay.empty()
+                              ? std::string("0")
+                              : std::to_string(c.delay.size()) + " value(s)";
+                 },
+                 [](C* c, V v) {
+                   const Matrix<double>& m = v.matrix;
+                   c->delay.assign(m.data(), m.data() + m.size());
+                   return Status::Ok();
+                 }});
+    t.push_back({"intersample",
+                 OptionType::kChoice,
+                 false,
+                 {"zoh", "foh"},
+                 "'zoh' | 'foh'",
+                 "how the input varies between samples (continuous time)",
+                 [](const C& c) {
+                   return std::string(options_detail::intersample_word(c.rule));
+                 },
+                 [](C* c, V v) {
+                   c->rule = options_detail::intersample_of(v.word);
+                   return Status::Ok();
+                 }});
+    t.push_back({"estimate_delay",
+                 OptionType::kFlag,
+                 false,
+                 {},
+                 "true | false; one input, nb <= nf",
+                 "estimate the total delay as a parameter, started from "
+                 "nk Ts + delay",
+                 [](const C& c) {
+                   return std::string(c.estimate_delay ? "true" : "false");
+                 },
+                 [](C* c, V v) {
+                   c->estimate_delay = v.flag;
+                   return Status::Ok();
+                 }});
+    t.push_back({"delay_max",
+                 OptionType::kReal,
+                 false,
+                 {},
+                 "finite, >= 0",
+                 "upper bound of the estimated delay (time units)",
+                 [](const C& c) { return number(c.delay_max); },
+                 [](C* c, V v) {
+                   c->delay_max = v.real;
+                   return Status::Ok();
+                 }});
+    t.push_back(
+        {"theta_init",
+         OptionType::kMatrix,
+         false,
+         {},
+         "[f; b] (; delay), finite, a stable F",
+         "initial parameters; absent: the SRIVC (continuous) or ARX "
+         "(discrete) start",
+         [](const C& c) {
+           return options_detail::matrix_text(Matrix<S>(c.settings.theta_init),
+                                              "(SRIVC or ARX start)");
+         },
+         [](C* c, V v) {
+           return options_detail::set_vector(
+               v, "theta_init", ErrorCode::kBadInput, &c->settings.theta_init);
+         }});
+    t.push_back(
+        {"maxiter",
+         OptionType::kInteger,
+         false,
+         {},
+         ">= 0",
+         "largest number of Levenberg-Marquardt iterations",
+         [](const C& c) { return std::to_string(c.settings.max_iterations); },
+         [](C* c, V v) {
+           c->settings.max_iterations = v.integer;
+           return Status::Ok();
+         }});
+    t.push_back({"tol",
+                 OptionType::kReal,
+                 false,
+                 {},
+                 "> 0",
+                 "stop once the relative step and loss decrease are below it",
+                 [](const C& c) { return number(c.settings.tolerance); },
+                 [](C* c, V v) {
+                   c->settings.tolerance = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
+    t.push_back({"cutoff",
+                 OptionType::kReal,
+                 false,
+                 {},
+                 ">= 0",
+                 "SVF cut-off of the SRIVC start (rad/s); 0: a grid",
+                 [](const C& c) { return number(c.settings.srivc_cutoff); },
+                 [](C* c, V v) {
+                   c->settings.srivc_cutoff = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace ctid
