@@ -24,6 +24,7 @@
 #include "ctid/offline/pde_heat.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_bj.hpp"
+#include "ctid/offline/refined_iv_delay.hpp"
 #include "ctid/recursive/scaling.hpp"
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"
