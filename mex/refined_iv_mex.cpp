@@ -24,7 +24,14 @@
 // loss_history, and lowest_theta, lowest_noise_variance,
 // lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
 // iterate over all starts when it is not the returned model; lowest_theta
-// and lowest_noise_variance empty if none).
+// and lowest_noise_variance empty if none), integrators and
+// integrator_refit (see RivResult). refit_integrators (flag): the engine's
+// integrator refit (refined_iv.hpp). integrator_start (a struct with
+// suspected, mse, reason, lowest): the integrator refit alone from
+// theta_init, a fit with the integrator_suspected flags suspected, mean
+// squared simulation error mse and reason reason (lowest: the lowest-loss
+// run's); info.integrator_refit -1 and theta = theta_init when the refit
+// is not better.
 //
 //   [theta, cov, info] = refined_iv_mex (fname, "delay_search", y, w, t, r,
 //                                        opts, search)
@@ -289,6 +296,22 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   settings.max_starts = opt.integer("max_starts", 3);
   settings.time_scale = opt.scalar("time_scale", 0);
   settings.integrator_pole = opt.scalar("integrator_pole", 0);
+  settings.refit_integrators = opt.flag("refit_integrators", false);
+  // The integrator refit alone, from theta_init (see the header comment).
+  const bool refit_only = opt.has("integrator_start");
+  std::vector<int> suspected;
+  double base_mse = 0;
+  std::string base_reason;
+  if (refit_only) {
+    OptionsReader start = opt.nested("integrator_start");
+    suspected = start.integer_vector("suspected");
+    base_mse = start.scalar("mse");
+    base_reason = start.text("reason", "");
+    if (start.flag("lowest", false)) {
+      base_reason = ctid::lowest_run_reason(base_reason);
+    }
+    start.finish();
+  }
   const Eigen::MatrixXd cnum = opt.matrix("controller_num");
   const Eigen::MatrixXd cden = opt.matrix("controller_den");
   const bool discrete = opt.flag("discrete_controller", false);
@@ -330,9 +353,23 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     return;
   }
   ctid::RivResult<double> result;
-  const ctid::Status status =
-      ctid::refined_iv(problem, settings, data, &result);
-  if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+  ctid::Status status;
+  if (refit_only) {
+    bool kept = false;
+    g.check(ctid::refit_integrators(problem, settings, data,
+                                    settings.theta_init, suspected, base_mse,
+                                    base_reason, &result, &kept));
+    if (!kept) {
+      result = ctid::RivResult<double>();
+      result.theta = settings.theta_init;
+      result.covariance = Eigen::MatrixXd::Zero(np, np);
+      result.integrator_refit = -1;
+      result.reason = "the refit with a pole at p = 0 was not better";
+    }
+  } else {
+    status = ctid::refined_iv(problem, settings, data, &result);
+    if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+  }
 
   plhs[0] = to_output(result.theta);
   if (nlhs >= 2) {
@@ -366,8 +403,10 @@ mxArray* engine_info(const ctid::RivResult<double>& result) {
                           "lowest_theta",
                           "lowest_noise_variance",
                           "lowest_integrator_suspected",
-                          "lowest_simulated"};
-  mxArray* info = mxCreateStructMatrix(1, 1, 22, fields);
+                          "lowest_simulated",
+                          "integrators",
+                          "integrator_refit"};
+  mxArray* info = mxCreateStructMatrix(1, 1, 24, fields);
   mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
   mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
   mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
@@ -412,6 +451,13 @@ mxArray* engine_info(const ctid::RivResult<double>& result) {
   std::copy(result.loss_history.begin(), result.loss_history.end(),
             mxGetPr(losses));
   mxSetField(info, 0, "loss_history", losses);
+  mxArray* integrators = ctid::mex::make_output_matrix(
+      1, static_cast<long>(result.integrators.size()));
+  std::copy(result.integrators.begin(), result.integrators.end(),
+            mxGetPr(integrators));
+  mxSetField(info, 0, "integrators", integrators);
+  mxSetField(info, 0, "integrator_refit",
+             mxCreateDoubleScalar(result.integrator_refit));
   return info;
 }
 

@@ -278,6 +278,73 @@ TEST(RefinedIvStatus, RawIntegratingPlantWithOffsetsIsRecovered) {
   }
 }
 
+// The integrator refit (RivSettings::refit_integrators): the record of the
+// integrating plant 2 / (p (p + 3)) with a little white noise (sd 0.002),
+// fitted with a free second-order denominator, has its slowest pole creep
+// to p = 0 without converging (flagged); with the refit the engine
+// declares that pole and returns a converged model with the pole
+// reported: the plant (to the noise level), with a simulation error not
+// above the unrefitted fit's.
+TEST(RefinedIvStatus, IntegratingPlantIsRefittedWithItsIntegrator) {
+  const double ts = 0.01;
+  const std::vector<double> u = binary_input(4000, 25, 8u);
+  const Eigen::VectorXd f = (Eigen::VectorXd(3) << 1, 3, 0).finished();
+  const Eigen::VectorXd b = (Eigen::VectorXd(1) << 2).finished();
+  Record r = make_record(f, b, u, 1, ts, 0, false);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.002);
+  for (double& y : r.y) y += noise(rng);
+  RivProblem<double> problem;
+  problem.nf = {2};
+  RivChannel c;
+  c.nb = 1;
+  problem.channels.push_back(c);
+  RivSettings<double> settings;
+  RivResult<double> plain;
+  refined_iv(problem, settings, view(r, ts), &plain);
+  ASSERT_FALSE(plain.converged) << plain.reason;
+  ASSERT_EQ(plain.integrator_suspected.at(0), 1) << plain.reason;
+  EXPECT_EQ(plain.integrator_refit, 0);
+  EXPECT_TRUE(plain.integrators.empty());
+
+  settings.refit_integrators = true;
+  RivResult<double> refit;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &refit).ok())
+      << refit.reason;
+  EXPECT_EQ(refit.integrator_refit, 1) << refit.reason;
+  ASSERT_EQ(refit.integrators.size(), 1u);
+  EXPECT_EQ(refit.integrators[0], 1);
+  EXPECT_TRUE(refit.converged && refit.stable);
+  EXPECT_NEAR(refit.theta(0), 3, 1e-3 * 3);
+  EXPECT_EQ(refit.theta(1), 0);
+  EXPECT_NEAR(refit.theta(2), 2, 1e-3 * 2);
+  EXPECT_NE(refit.reason.find("1 pole(s) at p = 0"), std::string::npos)
+      << refit.reason;
+  const Eigen::Map<const Eigen::VectorXd> y(r.y.data(), r.y.size());
+  EXPECT_LE((y - refit.simulated).squaredNorm(),
+            (y - plain.simulated).squaredNorm());
+}
+
+// A stable plant that SRIVC fits and converges on: the refit is not
+// tried, and the result is the engine's without it.
+TEST(RefinedIvStatus, StablePlantIsNotRefitted) {
+  const double ts = 0.05;
+  const std::vector<double> u = binary_input(1500, 8, 3u);
+  const Record r = make_record(kF, kB, u, 1, ts, 0, false);
+  RivSettings<double> settings;
+  RivResult<double> plain, refit;
+  ASSERT_TRUE(refined_iv(second_order(0, 0, InterSample::kZoh), settings,
+                         view(r, ts), &plain)
+                  .ok());
+  settings.refit_integrators = true;
+  ASSERT_TRUE(refined_iv(second_order(0, 0, InterSample::kZoh), settings,
+                         view(r, ts), &refit)
+                  .ok());
+  EXPECT_EQ(refit.integrator_refit, 0);
+  EXPECT_EQ(refit.integrators, std::vector<int>({0}));
+  EXPECT_EQ(refit.theta, plain.theta);
+}
+
 // Raw units on a stable plant: y = c + B/F (u_raw) from rest at u_raw = 0
 // with an input of mean 5 and an output level c = 20 (as a simulated
 // cascaded-tanks record). The step response of c and the model's gain on
