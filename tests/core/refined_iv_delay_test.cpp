@@ -12,7 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <complex>
+#include <random>
 #include <vector>
 
 #include "ctid/offline/freq_srivc.hpp"
@@ -237,6 +239,43 @@ TEST(RefinedIvDelaySearch, TimeAndFrequencyDomainSearchesAgree) {
   ft << freq.a, freq.b;
   EXPECT_TRUE(test::MatrixNear(time.theta, ft, 1e-5))
       << time.theta.transpose() << " | " << ft.transpose();
+}
+
+// RIVC inside the search (a noise model): the record of the same system
+// with a delay of 2.35 samples plus AR(1) noise e / (1 - 0.9 q^-1), e white
+// with sd 0.05. The delay is found within four of its reported standard
+// deviations, which are below a quarter of a sample (the grid step is one
+// sample), and the loss kept is the innovation variance, near 0.05^2.
+TEST(RefinedIvDelaySearch, DelayWithANoiseModelIsFound) {
+  const double ts = 0.05;
+  const int ratio = 20;
+  const double h = ts / ratio;
+  const std::vector<double> u = binary_input(2000, 8, 5u);
+  Record r = make_record(kF, kB, u, ratio, h, 47, false);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> white(0, 0.05);
+  double v = 0;
+  for (double& y : r.y) {
+    v = 0.9 * v + white(rng);
+    y += v;
+  }
+  RivDelaySettings<double> s = search(0.5, 11);
+  s.noise_model = true;
+  s.nd = 1;
+  s.nc = 0;
+  RivSettings<double> settings;
+  RivDelayResult<double> result;
+  ASSERT_TRUE(refined_iv_delay(plant(2, 2, InterSample::kZoh), settings,
+                               view(r, ts), s, &result)
+                  .ok())
+      << result.reason;
+  ASSERT_EQ(result.covariance.rows(), 5);
+  const double sd = std::sqrt(result.covariance(4, 4));
+  EXPECT_LT(sd, 0.25 * ts);
+  EXPECT_LT(std::abs(result.delay - 47 * h), 4 * sd) << result.reason;
+  EXPECT_EQ(result.loss, result.rivc.noise.innovation_variance);
+  EXPECT_NEAR(result.loss, 0.05 * 0.05, 0.2 * 0.05 * 0.05);
+  EXPECT_NEAR(result.rivc.noise.d(1), -0.9, 0.05);
 }
 
 TEST(RefinedIvDelaySearch, BadProblemsAreRejected) {
