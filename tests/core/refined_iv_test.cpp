@@ -325,6 +325,36 @@ TEST(RefinedIvStatus, IntegratingPlantIsRefittedWithItsIntegrator) {
             (y - plain.simulated).squaredNorm());
 }
 
+// A converged fit from whose starts another run crept toward p = 0 with a
+// lower loss (the lowest_* of the result; the noise-free record of the
+// integrating plant, where the converged fit is already the plant): the
+// refit starts from that run, is not better, and the converged fit stays.
+TEST(RefinedIvStatus, RefitFromTheLowestRunKeepsABetterConvergedFit) {
+  const double ts = 0.01;
+  const std::vector<double> u = binary_input(4000, 25, 9u);
+  const Eigen::VectorXd f = (Eigen::VectorXd(3) << 1, 3, 0).finished();
+  const Eigen::VectorXd b = (Eigen::VectorXd(1) << 2).finished();
+  const Record r = make_record(f, b, u, 1, ts, 0, false);
+  RivProblem<double> problem;
+  problem.nf = {2};
+  RivChannel c;
+  c.nb = 1;
+  problem.channels.push_back(c);
+  RivSettings<double> settings;
+  RivResult<double> plain;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &plain).ok());
+  ASSERT_TRUE(plain.converged && plain.lowest_theta.size() > 0 &&
+              plain.lowest_integrator_suspected.at(0) != 0)
+      << plain.reason;
+  settings.refit_integrators = true;
+  RivResult<double> refit;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &refit).ok());
+  EXPECT_EQ(refit.integrator_refit, -2);
+  EXPECT_EQ(refit.integrators, std::vector<int>({0}));
+  EXPECT_EQ(refit.theta, plain.theta);
+  EXPECT_EQ(refit.reason, plain.reason);
+}
+
 // A stable plant that SRIVC fits and converges on: the refit is not
 // tried, and the result is the engine's without it.
 TEST(RefinedIvStatus, StablePlantIsNotRefitted) {
