@@ -24,7 +24,20 @@
 // loss_history, and lowest_theta, lowest_noise_variance,
 // lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
 // iterate over all starts when it is not the returned model; lowest_theta
-// and lowest_noise_variance empty if none).
+// and lowest_noise_variance empty if none), integrators and
+// integrator_refit (see RivResult). refit_integrators (flag): the engine's
+// integrator refit (refined_iv.hpp). integrator_start (a struct with
+// suspected, mse, reason, lowest): the integrator refit alone from
+// theta_init, a fit with the integrator_suspected flags suspected, mean
+// squared simulation error mse and reason reason (lowest: the lowest-loss
+// run's); info.integrator_refit -1 and theta = theta_init when the refit
+// is not better.
+//
+//   [theta, cov, info] = refined_iv_mex (fname, "delay_search", y, w, t, r,
+//                                        opts, search)
+//
+// the same problem with the continuous delay of its one channel searched
+// (see delay_search_gateway).
 //
 //   [yf, uf] = refined_iv_mex (fname, "focus_filter", y, u, opts)
 //
@@ -34,6 +47,7 @@
 
 #include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/refined_iv.hpp"
+#include "ctid/offline/refined_iv_delay.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 
@@ -78,15 +92,131 @@ void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs > 1) plhs[1] = to_output(u);
 }
 
+mxArray* engine_info(const ctid::RivResult<double>& result);
+
+// RIVC's info at the delay kept (the fields of rivc_mex's info for the
+// method 'rivc', with stable and covariance).
+mxArray* rivc_info(const ctid::RivcResult<double>& res) {
+  const char* fields[] = {
+      "converged", "iterations",     "reason",           "C",
+      "D",         "noise_variance", "noise_covariance", "simulation_variance",
+      "simulated", "condition",      "start_theta",      "stable",
+      "covariance"};
+  mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
+  mxSetField(info, 0, "converged", mxCreateLogicalScalar(res.converged));
+  mxSetField(info, 0, "iterations", mxCreateDoubleScalar(res.iterations));
+  mxSetField(info, 0, "reason", mxCreateString(res.reason.c_str()));
+  mxSetField(info, 0, "C", to_output(res.noise.c.transpose()));
+  mxSetField(info, 0, "D", to_output(res.noise.d.transpose()));
+  mxSetField(info, 0, "noise_variance",
+             mxCreateDoubleScalar(res.noise.innovation_variance));
+  mxSetField(info, 0, "noise_covariance", to_output(res.noise.covariance));
+  mxSetField(info, 0, "simulation_variance",
+             mxCreateDoubleScalar(res.simulation_variance));
+  mxSetField(info, 0, "simulated", to_output(res.simulated));
+  mxSetField(info, 0, "condition", mxCreateDoubleScalar(res.condition));
+  mxSetField(info, 0, "start_theta", to_output(res.start_theta));
+  mxSetField(info, 0, "stable", mxCreateLogicalScalar(res.stable));
+  mxSetField(info, 0, "covariance", to_output(res.covariance));
+  return info;
+}
+
+// The method 'delay_search': the engine's problem with the delay of its
+// one channel searched (core refined_iv_delay.hpp). search fields: td0
+// ([]: the grid), tdmin, tdmax, numtd, refine (Gauss-Newton on the
+// delay), tdmax_limit (> tdmax: the grid extended up to it while its
+// minimum is at its upper end), maxiter, tolpar (sampling intervals),
+// tolfun, stepmax, stepreduction, noise ([] or [nd nc]: RIVC with that
+// ARMA noise model). Outputs: theta, the engine's covariance and info at
+// the delay kept (RIVC's with a noise model), info.delay_search: delay,
+// delay_estimated, covariance (of [theta; td] or theta), loss, simulated,
+// grid, grid_loss, tdmax, iterations, converged, reason.
+void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
+                          const mxArray* search_arg,
+                          const ctid::RivProblem<double>& problem,
+                          const ctid::RivSettings<double>& settings,
+                          const ctid::RivData<double>& data) {
+  OptionsReader opt(g, search_arg, "search.");
+  ctid::RivDelaySettings<double> ds;
+  ctid::DelaySearchSettings<double>& s = ds.search;
+  const Eigen::MatrixXd td0 = opt.matrix("td0");
+  s.grid = td0.size() == 0;
+  if (!s.grid) s.td_start = td0(0);
+  s.td_min = opt.scalar("tdmin");
+  s.td_max = opt.scalar("tdmax");
+  s.num_td = opt.integer("numtd", 50);
+  s.refinement = opt.flag("refine", true) ? ctid::DelayRefinement::kGaussNewton
+                                          : ctid::DelayRefinement::kNone;
+  s.extend_limit = opt.scalar("tdmax_limit", 0);
+  s.max_iterations = opt.integer("maxiter", 20);
+  s.step_tolerance = opt.scalar("tolpar", 1e-4);
+  s.loss_tolerance = opt.scalar("tolfun", 1e-5);
+  s.max_step = opt.scalar("stepmax", std::numeric_limits<double>::infinity());
+  s.step_reduction = opt.scalar("stepreduction", 0.5);
+  const Eigen::MatrixXd noise = opt.matrix("noise");
+  opt.finish();
+  if (noise.size() != 0 && noise.size() != 2) {
+    g.fail("badOption", "search.noise must be [] or [nd nc]");
+  }
+  if (noise.size() == 2) {
+    ds.noise_model = true;
+    ds.nd = static_cast<int>(noise(0));
+    ds.nc = static_cast<int>(noise(1));
+  }
+  ctid::RivDelayResult<double> r;
+  g.check(ctid::refined_iv_delay(problem, settings, data, ds, &r));
+  plhs[0] = to_output(ds.noise_model ? r.rivc.theta : r.engine.theta);
+  if (nlhs >= 2) {
+    plhs[1] =
+        to_output(ds.noise_model ? r.rivc.covariance : r.engine.covariance);
+  }
+  if (nlhs < 3) return;
+  mxArray* info = ds.noise_model ? rivc_info(r.rivc) : engine_info(r.engine);
+  const char* fields[] = {"delay",     "delay_estimated", "covariance",
+                          "loss",      "simulated",       "grid",
+                          "grid_loss", "tdmax",           "iterations",
+                          "converged", "reason"};
+  mxArray* d = mxCreateStructMatrix(1, 1, 11, fields);
+  mxSetField(d, 0, "delay", mxCreateDoubleScalar(r.delay));
+  mxSetField(d, 0, "delay_estimated", mxCreateLogicalScalar(r.delay_estimated));
+  mxSetField(d, 0, "covariance", to_output(r.covariance));
+  mxSetField(d, 0, "loss", mxCreateDoubleScalar(r.loss));
+  mxSetField(d, 0, "simulated", to_output(r.simulated));
+  const Eigen::Map<const Eigen::RowVectorXd> grid(r.grid.data(), r.grid.size());
+  const Eigen::Map<const Eigen::RowVectorXd> grid_loss(r.grid_loss.data(),
+                                                       r.grid_loss.size());
+  mxSetField(d, 0, "grid", to_output(Eigen::MatrixXd(grid)));
+  mxSetField(d, 0, "grid_loss", to_output(Eigen::MatrixXd(grid_loss)));
+  mxSetField(d, 0, "tdmax", mxCreateDoubleScalar(r.td_max));
+  mxSetField(d, 0, "iterations", mxCreateDoubleScalar(r.iterations));
+  mxSetField(d, 0, "converged", mxCreateLogicalScalar(r.converged));
+  mxSetField(d, 0, "reason", mxCreateString(r.reason.c_str()));
+  mxAddField(info, "delay_search");
+  mxSetField(info, 0, "delay_search", d);
+  plhs[2] = info;
+}
+
 void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
-                        const mxArray* prhs[]) {
+                        const mxArray** prhs) {
+  const mxArray* search = nullptr;
   if (nrhs >= 2 && mxIsChar(prhs[1])) {
     const std::string method = g.text(prhs[1], "the method");
-    if (method != "focus_filter") {
+    if (method == "focus_filter") {
+      focus_filter_gateway(g, nlhs, plhs, nrhs, prhs);
+      return;
+    }
+    if (method != "delay_search") {
       g.fail("badInput", "unknown method '" + method + "'");
     }
-    focus_filter_gateway(g, nlhs, plhs, nrhs, prhs);
-    return;
+    if (nrhs != 8) {
+      g.fail("badInput",
+             "the delay_search method takes 8 arguments (fname, "
+             "'delay_search', y, w, t, r, opts, search), got " +
+                 std::to_string(nrhs));
+    }
+    search = prhs[7];
+    ++prhs;
+    nrhs = 6;
   }
   if (nrhs != 6) {
     g.fail("badInput",
@@ -166,6 +296,22 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   settings.max_starts = opt.integer("max_starts", 3);
   settings.time_scale = opt.scalar("time_scale", 0);
   settings.integrator_pole = opt.scalar("integrator_pole", 0);
+  settings.refit_integrators = opt.flag("refit_integrators", false);
+  // The integrator refit alone, from theta_init (see the header comment).
+  const bool refit_only = opt.has("integrator_start");
+  std::vector<int> suspected;
+  double base_mse = 0;
+  std::string base_reason;
+  if (refit_only) {
+    OptionsReader start = opt.nested("integrator_start");
+    suspected = start.integer_vector("suspected");
+    base_mse = start.scalar("mse");
+    base_reason = start.text("reason", "");
+    if (start.flag("lowest", false)) {
+      base_reason = ctid::lowest_run_reason(base_reason);
+    }
+    start.finish();
+  }
   const Eigen::MatrixXd cnum = opt.matrix("controller_num");
   const Eigen::MatrixXd cden = opt.matrix("controller_den");
   const bool discrete = opt.flag("discrete_controller", false);
@@ -202,10 +348,28 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     g.fail("badInput", "a reference r needs a controller");
   }
 
+  if (search != nullptr) {
+    delay_search_gateway(g, nlhs, plhs, search, problem, settings, data);
+    return;
+  }
   ctid::RivResult<double> result;
-  const ctid::Status status =
-      ctid::refined_iv(problem, settings, data, &result);
-  if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+  ctid::Status status;
+  if (refit_only) {
+    bool kept = false;
+    g.check(ctid::refit_integrators(problem, settings, data,
+                                    settings.theta_init, suspected, base_mse,
+                                    base_reason, &result, &kept));
+    if (!kept) {
+      result = ctid::RivResult<double>();
+      result.theta = settings.theta_init;
+      result.covariance = Eigen::MatrixXd::Zero(np, np);
+      result.integrator_refit = -1;
+      result.reason = "the refit with a pole at p = 0 was not better";
+    }
+  } else {
+    status = ctid::refined_iv(problem, settings, data, &result);
+    if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+  }
 
   plhs[0] = to_output(result.theta);
   if (nlhs >= 2) {
@@ -213,76 +377,88 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     std::copy(result.covariance.data(), result.covariance.data() + np * np,
               mxGetPr(plhs[1]));
   }
-  if (nlhs >= 3) {
-    const char* fields[] = {"converged",
-                            "stable",
-                            "iterations",
-                            "reason",
-                            "noise_variance",
-                            "cutoff",
-                            "time_scale",
-                            "starts",
-                            "condition",
-                            "x0",
-                            "offset",
-                            "simulated",
-                            "free_response",
-                            "determined",
-                            "clipped",
-                            "clipped_iterations",
-                            "integrator_suspected",
-                            "loss_history",
-                            "lowest_theta",
-                            "lowest_noise_variance",
-                            "lowest_integrator_suspected",
-                            "lowest_simulated"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 22, fields);
-    mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
-    mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
-    mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
-    mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
-    mxSetField(info, 0, "noise_variance",
-               mxCreateDoubleScalar(result.noise_variance));
-    mxSetField(info, 0, "cutoff", mxCreateDoubleScalar(result.cutoff));
-    mxSetField(info, 0, "time_scale", mxCreateDoubleScalar(result.time_scale));
-    mxSetField(info, 0, "starts", mxCreateDoubleScalar(result.starts_tried));
-    mxSetField(info, 0, "condition", mxCreateDoubleScalar(result.condition));
-    mxSetField(info, 0, "x0", to_output(result.x0));
-    mxSetField(info, 0, "offset", mxCreateDoubleScalar(result.offset));
-    mxSetField(info, 0, "simulated", to_output(result.simulated));
-    mxSetField(info, 0, "free_response", to_output(result.free_response));
-    mxSetField(info, 0, "determined", mxCreateLogicalScalar(result.determined));
-    mxSetField(info, 0, "clipped", mxCreateLogicalScalar(result.clipped));
-    mxSetField(info, 0, "clipped_iterations",
-               mxCreateDoubleScalar(result.clipped_iterations));
-    const std::size_t groups = result.integrator_suspected.size();
-    mxArray* suspected = mxCreateLogicalMatrix(1, groups);
-    for (std::size_t g = 0; g < groups; ++g) {
-      mxGetLogicals(suspected)[g] = result.integrator_suspected[g] != 0;
-    }
-    mxSetField(info, 0, "integrator_suspected", suspected);
-    mxSetField(info, 0, "lowest_theta", to_output(result.lowest_theta));
-    // Empty with lowest_theta when there is no such iterate (the core's
-    // Inf there means "none", not a noise variance).
-    mxSetField(info, 0, "lowest_noise_variance",
-               result.lowest_theta.size() > 0
-                   ? mxCreateDoubleScalar(result.lowest_noise_variance)
-                   : mxCreateDoubleMatrix(0, 0, mxREAL));
-    const std::size_t lowest_groups = result.lowest_integrator_suspected.size();
-    mxArray* lowest_suspected = mxCreateLogicalMatrix(1, lowest_groups);
-    for (std::size_t g = 0; g < lowest_groups; ++g) {
-      mxGetLogicals(lowest_suspected)[g] =
-          result.lowest_integrator_suspected[g] != 0;
-    }
-    mxSetField(info, 0, "lowest_integrator_suspected", lowest_suspected);
-    mxSetField(info, 0, "lowest_simulated", to_output(result.lowest_simulated));
-    mxArray* losses =
-        ctid::mex::make_output_matrix(result.loss_history.size(), 1);
-    std::copy(result.loss_history.begin(), result.loss_history.end(),
-              mxGetPr(losses));
-    mxSetField(info, 0, "loss_history", losses);
-    plhs[2] = info;
+  if (nlhs >= 3) plhs[2] = engine_info(result);
+}
+
+// The engine's info struct (see the header comment).
+mxArray* engine_info(const ctid::RivResult<double>& result) {
+  const char* fields[] = {"converged",
+                          "stable",
+                          "iterations",
+                          "reason",
+                          "noise_variance",
+                          "cutoff",
+                          "time_scale",
+                          "starts",
+                          "condition",
+                          "x0",
+                          "offset",
+                          "simulated",
+                          "free_response",
+                          "determined",
+                          "clipped",
+                          "clipped_iterations",
+                          "integrator_suspected",
+                          "loss_history",
+                          "lowest_theta",
+                          "lowest_noise_variance",
+                          "lowest_integrator_suspected",
+                          "lowest_simulated",
+                          "integrators",
+                          "integrator_refit"};
+  mxArray* info = mxCreateStructMatrix(1, 1, 24, fields);
+  mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
+  mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
+  mxSetField(info, 0, "iterations", mxCreateDoubleScalar(result.iterations));
+  mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
+  mxSetField(info, 0, "noise_variance",
+             mxCreateDoubleScalar(result.noise_variance));
+  mxSetField(info, 0, "cutoff", mxCreateDoubleScalar(result.cutoff));
+  mxSetField(info, 0, "time_scale", mxCreateDoubleScalar(result.time_scale));
+  mxSetField(info, 0, "starts", mxCreateDoubleScalar(result.starts_tried));
+  mxSetField(info, 0, "condition", mxCreateDoubleScalar(result.condition));
+  mxSetField(info, 0, "x0", to_output(result.x0));
+  mxSetField(info, 0, "offset", mxCreateDoubleScalar(result.offset));
+  mxSetField(info, 0, "simulated", to_output(result.simulated));
+  mxSetField(info, 0, "free_response", to_output(result.free_response));
+  mxSetField(info, 0, "determined", mxCreateLogicalScalar(result.determined));
+  mxSetField(info, 0, "clipped", mxCreateLogicalScalar(result.clipped));
+  mxSetField(info, 0, "clipped_iterations",
+             mxCreateDoubleScalar(result.clipped_iterations));
+  const std::size_t groups = result.integrator_suspected.size();
+  mxArray* suspected = mxCreateLogicalMatrix(1, groups);
+  for (std::size_t g = 0; g < groups; ++g) {
+    mxGetLogicals(suspected)[g] = result.integrator_suspected[g] != 0;
   }
+  mxSetField(info, 0, "integrator_suspected", suspected);
+  mxSetField(info, 0, "lowest_theta", to_output(result.lowest_theta));
+  // Empty with lowest_theta when there is no such iterate (the core's
+  // Inf there means "none", not a noise variance).
+  mxSetField(info, 0, "lowest_noise_variance",
+             result.lowest_theta.size() > 0
+                 ? mxCreateDoubleScalar(result.lowest_noise_variance)
+                 : mxCreateDoubleMatrix(0, 0, mxREAL));
+  const std::size_t lowest_groups = result.lowest_integrator_suspected.size();
+  mxArray* lowest_suspected = mxCreateLogicalMatrix(1, lowest_groups);
+  for (std::size_t g = 0; g < lowest_groups; ++g) {
+    mxGetLogicals(lowest_suspected)[g] =
+        result.lowest_integrator_suspected[g] != 0;
+  }
+  mxSetField(info, 0, "lowest_integrator_suspected", lowest_suspected);
+  mxSetField(info, 0, "lowest_simulated", to_output(result.lowest_simulated));
+  mxArray* losses =
+      ctid::mex::make_output_matrix(result.loss_history.size(), 1);
+  std::copy(result.loss_history.begin(), result.loss_history.end(),
+            mxGetPr(losses));
+  mxSetField(info, 0, "loss_history", losses);
+  mxArray* integrators = ctid::mex::make_output_matrix(
+      1, static_cast<long>(result.integrators.size()));
+  std::copy(result.integrators.begin(), result.integrators.end(),
+            mxGetPr(integrators));
+  mxSetField(info, 0, "integrators", integrators);
+  mxSetField(info, 0, "integrator_refit",
+             mxCreateDoubleScalar(result.integrator_refit));
+  return info;
 }
 
 }  // namespace

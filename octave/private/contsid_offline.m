@@ -202,18 +202,15 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     low = info;
     low.integrator_suspected = info.lowest_integrator_suspected;
     low.simulated = info.lowest_simulated;
-    low.noise_variance = info.lowest_noise_variance;
-    low.reason = sprintf (["a run from another start reached a lower ", ...
-                           "loss than the converged one (%s) without ", ...
-                           "converging"], info.reason);
     [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
-                                                      info.lowest_theta, low);
+                                                      info.lowest_theta, low,
+                                                      true);
     if (! ok && auto_input_offset && raw_levels && ! any (e.input_offset))
       e3 = e;
       e3.input_offset = true (1, nu);
       [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e3,
                                                         info.lowest_theta,
-                                                        low);
+                                                        low, true);
     endif
     if (ok)
       e = e2; theta = theta2; cov = cov2; info = info2;
@@ -414,65 +411,32 @@ endfunction
 ## engine's info.integrator_suspected, per denominator): the loss minimum
 ## of the structure lies on the stability boundary, an integrator the
 ## structure does not declare (an integrating plant, e.g. force -> position
-## of an axis). The fit is repeated with that pole declared at p = 0,
-## started from the last iterate with its slowest pole moved there, and
-## kept when it converges to a model whose other poles are stable and whose
-## simulation error is not larger.
+## of an axis). The refit is the engine's (core refined_iv.hpp,
+## refit_integrators: that pole declared at p = 0, started from theta with
+## its slowest pole moved there, kept when it converges to a stable model
+## whose simulation error is not larger; info2.integrators the poles
+## declared); ok says whether it was kept. lowest: info is the lowest-loss
+## run's (info.lowest_*), quoted so in the refit's reason.
 function [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
-                                                          theta, info)
+                                                          theta, info,
+                                                          lowest)
+  if (nargin < 7)
+    lowest = false;
+  endif
   ok = false;
   [theta2, cov2, info2] = deal ([]);
-  nf = e.nf;
-  have = zeros (1, numel (nf));
-  if (isfield (e, "integrators"))
-    have = e.integrators;
-  endif
-  have0 = have;
   e2 = e;
-  mse = mean ((d.y - info.simulated(:)) .^ 2);
-  ## a pole at a time, while the slowest pole still creeps to p = 0
-  for pass = 1:max (nf)
-    add = double (logical (info.integrator_suspected(:).') & have < nf);
-    if (! any (add))
-      return;
-    endif
-    e2.integrators = have + add;
-    th0 = theta;
-    off = 0;
-    for g = 1:numel (nf)
-      m = nf(g) - have(g);
-      if (add(g))
-        r = roots ([1; theta(off + (1:m))]);
-        [~, k] = min (abs (r));
-        r(k) = [];
-        f1 = real (poly (r));
-        th0(off + (1:nf(g))) = [f1(2:end), zeros(1, have(g) + 1)];
-      endif
-      off += nf(g);
-    endfor
-    e2.theta_init = th0;
-    try
-      [theta2, cov2, info2] = contsid_refined_iv (fname, d.y, d.u, t, e2);
-    catch
-      return;
-    end_try_catch
-    mse2 = mean ((d.y - info2.simulated(:)) .^ 2);
-    if (info2.converged && info2.stable && mse2 <= mse)
-      ok = true;
-      info2.integrators = e2.integrators - have0;
-      info2.reason = sprintf (["%s, with %d pole(s) at p = 0 detected ", ...
-                               "(the fit without: %s)"], info2.reason,
-                              sum (info2.integrators), info.reason);
-      return;
-    endif
-    if (! (info2.stable && any (info2.integrator_suspected)))
-      return;
-    endif
-    have = e2.integrators;
-    theta = theta2;
-    info2.reason = info.reason;
-    info = info2;
-  endfor
+  e2.theta_init = theta;
+  e2.integrator_start = struct ("suspected",
+                                double (info.integrator_suspected(:).'),
+                                "mse", mean ((d.y - info.simulated(:)) .^ 2),
+                                "reason", info.reason, "lowest", lowest);
+  try
+    [theta2, cov2, info2] = contsid_refined_iv (fname, d.y, d.u, t, e2);
+    ok = info2.integrator_refit == 1;
+    e2 = rmfield (e2, "integrator_start");
+  catch
+  end_try_catch
 endfunction
 
 ## CONTSID's Denominator ('Common' or 'Different'), checked against the

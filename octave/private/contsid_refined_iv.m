@@ -53,6 +53,17 @@
 ## @code{controller.discrete} true, C(q^-1) = num/den in powers of q^-1
 ## in the loop u = r1 + C (r2 - y) (ZOH data) and @code{reference} =
 ## [r1 r2] (N-by-2).
+## @item refit_integrators, integrator_start
+## the engine's integrator refit (core refined_iv.hpp): after the fit
+## (true), or alone from @code{theta_init} (a struct with
+## @code{suspected}, @code{mse}, @code{reason}, @code{lowest}: the flags,
+## mean squared simulation error and reason of the fit it starts from);
+## @var{info}.integrators and @var{info}.integrator_refit report it.
+## @item delay_search
+## the delay of the one channel searched (refined_iv_mex's method
+## 'delay_search', core refined_iv_delay.hpp): a struct of the search's
+## options; @var{info}.delay_search holds its result and @var{info} the
+## engine's (RIVC's with a noise model) at the delay kept.
 ## @end table
 ##
 ## @var{theta} = [f of each group (f1 .. f_nf), b of each channel
@@ -88,7 +99,8 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
            "delay", ...
            "cutoffs", "tol", "maxiter", "max_starts", "time_scale", ...
            "integrator_pole", "initial_state", "output_offset", ...
-           "input_offset", "controller", "reference"};
+           "input_offset", "controller", "reference", "delay_search", ...
+           "refit_integrators", "integrator_start"};
   given = fieldnames (opts);
   bad = setdiff (given, known);
   if (! isempty (bad))
@@ -124,6 +136,12 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   endfor
   if (isfield (opts, "cutoffs"))
     g.cutoffs = double (opts.cutoffs(:));
+  endif
+  if (isfield (opts, "refit_integrators"))
+    g.refit_integrators = logical (opts.refit_integrators);
+  endif
+  if (isfield (opts, "integrator_start"))
+    g.integrator_start = opts.integrator_start;
   endif
 
   ## Input offsets: one constant channel (nb = 1) in the input's group.
@@ -200,8 +218,14 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
                             && opts.controller.discrete;
     r = double (opts.reference);
   endif
-  [th, P, info] = refined_iv_mex (fname, double (y(:)), double (Wx),
-                                  double (t), r, g);
+  if (isfield (opts, "delay_search"))
+    [th, P, info] = refined_iv_mex (fname, "delay_search", double (y(:)),
+                                    double (Wx), double (t), r, g,
+                                    opts.delay_search);
+  else
+    [th, P, info] = refined_iv_mex (fname, double (y(:)), double (Wx),
+                                    double (t), r, g);
+  endif
   ## Input offsets d_j = (constant channel coefficient) / b_j(end).
   info.input_offset = zeros (1, m);
   boff = nfx + cumsum ([0, g.nb]);
@@ -211,7 +235,7 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   endfor
   theta = th(keep);
   cov = P(keep, keep);
-  if (! isempty (info.lowest_theta))
+  if (isfield (info, "lowest_theta") && ! isempty (info.lowest_theta))
     info.lowest_theta = info.lowest_theta(keep);
   endif
   info.F = cell (1, numel (g.nf));

@@ -14,82 +14,17 @@
 #include <random>
 #include <vector>
 
+#include "delayed_record.hpp"
 #include "test_util.hpp"
 
 namespace ctid {
 namespace {
 
 using test::binary_input;
+using test::make_record;
+using test::Record;
 using test::relative_error;
-
-// b(p) / f(p) driven by v (fine samples, held or linear between them over
-// the fine step h), output at every fine sample; f monic [1 f1 .. fn].
-std::vector<double> simulate_fine(const Eigen::VectorXd& f,
-                                  const Eigen::VectorXd& b,
-                                  const std::vector<double>& v, double h,
-                                  bool foh) {
-  const int n = static_cast<int>(f.size()) - 1;
-  // Controllable canonical form, x = [w^(n-1) .. w], y = sum b_k p^k w.
-  Eigen::MatrixXd big = Eigen::MatrixXd::Zero(n + 2, n + 2);
-  for (int i = 0; i < n; ++i) big(0, i) = -f(i + 1) * h;
-  for (int i = 1; i < n; ++i) big(i, i - 1) = h;
-  big(0, n) = h;
-  big(n, n + 1) = 1;
-  const Eigen::MatrixXd e = big.exp();
-  const Eigen::MatrixXd phi = e.topLeftCorner(n, n);
-  const Eigen::VectorXd g0 = e.block(0, n, n, 1), g1 = e.block(0, n + 1, n, 1);
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
-  const int nb = static_cast<int>(b.size());
-  for (int l = 0; l < nb; ++l) c(n - nb + l) = b(l);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  std::vector<double> y(v.size());
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    if (k > 0) {
-      Eigen::VectorXd next = phi * x + g0 * v[k - 1];
-      if (foh) next += g1 * (v[k] - v[k - 1]);
-      x = next;
-    }
-    y[k] = c.dot(x);
-  }
-  return y;
-}
-
-struct Record {
-  std::vector<double> y, u, instants;
-};
-
-// u on the coarse grid (every `ratio` fine steps), the system delayed by
-// `delay_steps` fine steps; fine input 0 before the start.
-Record make_record(const Eigen::VectorXd& f, const Eigen::VectorXd& b,
-                   const std::vector<double>& u, int ratio, double h,
-                   int delay_steps, bool foh) {
-  const int n = static_cast<int>(u.size());
-  const int fine = (n - 1) * ratio + 1;
-  std::vector<double> v(fine, 0.0);
-  for (int i = 0; i < fine; ++i) {
-    const int src = i - delay_steps;  // fine index of the undelayed signal
-    double value = 0;
-    if (foh) {
-      // linear between coarse samples, a ramp from 0 over the interval
-      // before the first sample
-      const double pos = static_cast<double>(src) / ratio;
-      const int j = static_cast<int>(std::floor(pos));
-      const double frac = pos - j;
-      const double a = j >= 0 && j < n ? u[j] : (j >= n ? u[n - 1] : 0.0);
-      const double c = j + 1 >= 0 && j + 1 < n ? u[j + 1]
-                                               : (j + 1 >= n ? u[n - 1] : 0.0);
-      value = a + (c - a) * frac;
-    } else if (src >= 0) {
-      value = u[src / ratio];
-    }
-    v[i] = value;
-  }
-  const std::vector<double> yf = simulate_fine(f, b, v, h, foh);
-  Record r;
-  r.u = u;
-  for (int k = 0; k < n; ++k) r.y.push_back(yf[k * ratio]);
-  return r;
-}
+using test::simulate_fine;
 
 RivProblem<double> second_order(int nk, double delay, InterSample rule) {
   RivProblem<double> problem;
@@ -145,9 +80,9 @@ void expect_fractional_recovery(bool foh) {
   const InterSample rule = foh ? InterSample::kFoh : InterSample::kZoh;
   RivSettings<double> settings;
   RivResult<double> result;
-  ASSERT_TRUE(refined_iv(second_order(0, 47 * h, rule), settings,
-                         view(r, ts), &result)
-                  .ok());
+  ASSERT_TRUE(
+      refined_iv(second_order(0, 47 * h, rule), settings, view(r, ts), &result)
+          .ok());
   const double err = relative_error(result.theta, kTheta);
   EXPECT_LT(err, 1e-7) << "theta " << result.theta.transpose();
   // The wrong (whole-sample) delay leaves a visible simulation error.
@@ -343,6 +278,103 @@ TEST(RefinedIvStatus, RawIntegratingPlantWithOffsetsIsRecovered) {
   }
 }
 
+// The integrator refit (RivSettings::refit_integrators): the record of the
+// integrating plant 2 / (p (p + 3)) with a little white noise (sd 0.002),
+// fitted with a free second-order denominator, has its slowest pole creep
+// to p = 0 without converging (flagged); with the refit the engine
+// declares that pole and returns a converged model with the pole
+// reported: the plant (to the noise level), with a simulation error not
+// above the unrefitted fit's.
+TEST(RefinedIvStatus, IntegratingPlantIsRefittedWithItsIntegrator) {
+  const double ts = 0.01;
+  const std::vector<double> u = binary_input(4000, 25, 8u);
+  const Eigen::VectorXd f = (Eigen::VectorXd(3) << 1, 3, 0).finished();
+  const Eigen::VectorXd b = (Eigen::VectorXd(1) << 2).finished();
+  Record r = make_record(f, b, u, 1, ts, 0, false);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.002);
+  for (double& y : r.y) y += noise(rng);
+  RivProblem<double> problem;
+  problem.nf = {2};
+  RivChannel c;
+  c.nb = 1;
+  problem.channels.push_back(c);
+  RivSettings<double> settings;
+  RivResult<double> plain;
+  refined_iv(problem, settings, view(r, ts), &plain);
+  ASSERT_FALSE(plain.converged) << plain.reason;
+  ASSERT_EQ(plain.integrator_suspected.at(0), 1) << plain.reason;
+  EXPECT_EQ(plain.integrator_refit, 0);
+  EXPECT_TRUE(plain.integrators.empty());
+
+  settings.refit_integrators = true;
+  RivResult<double> refit;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &refit).ok())
+      << refit.reason;
+  EXPECT_EQ(refit.integrator_refit, 1) << refit.reason;
+  ASSERT_EQ(refit.integrators.size(), 1u);
+  EXPECT_EQ(refit.integrators[0], 1);
+  EXPECT_TRUE(refit.converged && refit.stable);
+  EXPECT_NEAR(refit.theta(0), 3, 1e-3 * 3);
+  EXPECT_EQ(refit.theta(1), 0);
+  EXPECT_NEAR(refit.theta(2), 2, 1e-3 * 2);
+  EXPECT_NE(refit.reason.find("1 pole(s) at p = 0"), std::string::npos)
+      << refit.reason;
+  const Eigen::Map<const Eigen::VectorXd> y(r.y.data(), r.y.size());
+  EXPECT_LE((y - refit.simulated).squaredNorm(),
+            (y - plain.simulated).squaredNorm());
+}
+
+// A converged fit from whose starts another run crept toward p = 0 with a
+// lower loss (the lowest_* of the result; the noise-free record of the
+// integrating plant, where the converged fit is already the plant): the
+// refit starts from that run, is not better, and the converged fit stays.
+TEST(RefinedIvStatus, RefitFromTheLowestRunKeepsABetterConvergedFit) {
+  const double ts = 0.01;
+  const std::vector<double> u = binary_input(4000, 25, 9u);
+  const Eigen::VectorXd f = (Eigen::VectorXd(3) << 1, 3, 0).finished();
+  const Eigen::VectorXd b = (Eigen::VectorXd(1) << 2).finished();
+  const Record r = make_record(f, b, u, 1, ts, 0, false);
+  RivProblem<double> problem;
+  problem.nf = {2};
+  RivChannel c;
+  c.nb = 1;
+  problem.channels.push_back(c);
+  RivSettings<double> settings;
+  RivResult<double> plain;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &plain).ok());
+  ASSERT_TRUE(plain.converged && plain.lowest_theta.size() > 0 &&
+              plain.lowest_integrator_suspected.at(0) != 0)
+      << plain.reason;
+  settings.refit_integrators = true;
+  RivResult<double> refit;
+  ASSERT_TRUE(refined_iv(problem, settings, view(r, ts), &refit).ok());
+  EXPECT_EQ(refit.integrator_refit, -2);
+  EXPECT_EQ(refit.integrators, std::vector<int>({0}));
+  EXPECT_EQ(refit.theta, plain.theta);
+  EXPECT_EQ(refit.reason, plain.reason);
+}
+
+// A stable plant that SRIVC fits and converges on: the refit is not
+// tried, and the result is the engine's without it.
+TEST(RefinedIvStatus, StablePlantIsNotRefitted) {
+  const double ts = 0.05;
+  const std::vector<double> u = binary_input(1500, 8, 3u);
+  const Record r = make_record(kF, kB, u, 1, ts, 0, false);
+  RivSettings<double> settings;
+  RivResult<double> plain, refit;
+  ASSERT_TRUE(refined_iv(second_order(0, 0, InterSample::kZoh), settings,
+                         view(r, ts), &plain)
+                  .ok());
+  settings.refit_integrators = true;
+  ASSERT_TRUE(refined_iv(second_order(0, 0, InterSample::kZoh), settings,
+                         view(r, ts), &refit)
+                  .ok());
+  EXPECT_EQ(refit.integrator_refit, 0);
+  EXPECT_EQ(refit.integrators, std::vector<int>({0}));
+  EXPECT_EQ(refit.theta, plain.theta);
+}
+
 // Raw units on a stable plant: y = c + B/F (u_raw) from rest at u_raw = 0
 // with an input of mean 5 and an output level c = 20 (as a simulated
 // cascaded-tanks record). The step response of c and the model's gain on
@@ -453,8 +485,8 @@ TEST(RefinedIvKernel, FilterDerivativesMatchMatrixExponentialStepping) {
                   1e-11 * std::max(expected.norm(), 1e-300))
             << "order " << n << " column " << i << (foh ? " foh" : " zoh");
       }
-      Eigen::VectorXd highest = 1.5 * Eigen::Map<const Eigen::VectorXd>(
-                                          s.data(), s.size());
+      Eigen::VectorXd highest =
+          1.5 * Eigen::Map<const Eigen::VectorXd>(s.data(), s.size());
       for (int i = 0; i < n; ++i) highest -= d(i) * out.col(n - 1 - i);
       EXPECT_LT((out.col(n) - highest).norm(), 1e-11 * highest.norm())
           << "order " << n;

@@ -23,15 +23,15 @@
 // the geometric centre of the band) for conditioning; coefficients map
 // back exactly (a_i = sigma^i a'_i, b of power p: sigma^(n-p) b').
 //
-// The delay: fixed, or a grid search of the SRIVC loss over
-// [td_min, td_max], then around each of the best local minima of the grid
-// (up to eight) a scan of the two neighbouring grid steps with a sixteenth
-// of a step, and golden section around each local minimum of that scan;
-// the lowest refined loss is kept (the loss is separable in td, Chen,
-// Zhuan, Garnier & Gilson, Automatica 2018). The loss of relay data has
-// several minima within one grid step (the harmonics' phases wrap at
-// different td); the fine scan puts the golden section in the basin of
-// the lowest of them.
+// The delay: fixed, or delay_search.hpp's search of the SRIVC loss over
+// [td_min, td_max] (the time-domain estimators' search): a grid, then
+// around each of the best local minima of the grid (up to eight) a scan
+// of the two neighbouring grid steps with a sixteenth of a step, and
+// golden section around each local minimum of that scan; the lowest
+// refined loss is kept (the loss is separable in td, Chen, Zhuan, Garnier
+// & Gilson, Automatica 2018). The loss of relay data has several minima
+// within one grid step (the harmonics' phases wrap at different td); the
+// fine scan puts the golden section in the basin of the lowest of them.
 //
 // At the SRIVC fixed point the instruments are the output-error
 // Jacobian (zeta = d(G U)/d theta: X_f = B U / A^2 for the a's, U / A for
@@ -61,6 +61,7 @@
 #include "ctid/base/stability.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/offline/delay_search.hpp"
 #include "ctid/offline/output_error.hpp"
 
 namespace ctid {
@@ -435,6 +436,34 @@ class FreqOeModel {
   Matrix<S> J_;
 };
 
+// The SRIVC fit at one delay, for delay_search.hpp.
+template <typename S>
+struct FreqFit {
+  S td = 0;
+  S loss = std::numeric_limits<S>::infinity();  // sum |Y - G U|^2
+  Vector<S> theta;
+  int iterations = 0;
+  bool converged = false;
+};
+
+template <typename S, typename F>
+class FreqDelayModel {
+ public:
+  using Fit = FreqFit<S>;
+  explicit FreqDelayModel(F fit) : fit_(fit) {}
+  Status fit(S td, const Vector<S>&, Fit* out) {
+    out->td = td;
+    return fit_(td, out);
+  }
+  // (the frequency-domain search refines by golden section, without it)
+  Status step_terms(const Fit&, Vector<S>*, Vector<S>*, Matrix<S>*) {
+    return not_supported("no Gauss-Newton refinement in the frequency domain");
+  }
+
+ private:
+  F fit_;
+};
+
 }  // namespace freq_detail
 
 template <typename S>
@@ -547,109 +576,25 @@ Status freq_srivc(const FreqSettings<S>& settings, const FreqData<S>& data,
   S td = delays[0];
   Status status;
   if (settings.estimate_delay) {
-    // Grid, then golden section between the neighbours of each of the
-    // best few local minima of the grid (the loss of a relay or noisy
-    // record has several between grid points); the lowest refined loss
-    // wins.
-    S step = 0;
-    std::vector<S> starts;
-    if (settings.grid) {
-      const int count = settings.num_td;
-      step = (settings.td_max - settings.td_min) / (count - 1);
-      std::vector<S> grid_cost(count, std::numeric_limits<S>::infinity());
-      for (int i = 0; i < count; ++i) {
-        const S t = settings.td_min + step * i;
-        Vector<S> th;
-        int its;
-        bool conv;
-        S c;
-        if (srivc_at(t, th, its, conv, c).ok() && std::isfinite(c))
-          grid_cost[i] = c;
-      }
-      std::vector<int> minima;
-      for (int i = 0; i < count; ++i) {
-        const S c = grid_cost[i];
-        if (!std::isfinite(c)) continue;
-        if ((i == 0 || c <= grid_cost[i - 1]) &&
-            (i == count - 1 || c <= grid_cost[i + 1]))
-          minima.push_back(i);
-      }
-      if (minima.empty()) {
-        return numerical_failure("SRIVC failed at every delay of the grid");
-      }
-      std::sort(minima.begin(), minima.end(),
-                [&](int i, int j) { return grid_cost[i] < grid_cost[j]; });
-      const std::size_t kept = std::min<std::size_t>(minima.size(), 8);
-      for (std::size_t k = 0; k < kept; ++k)
-        starts.push_back(settings.td_min + step * minima[k]);
-    } else {
-      step =
-          std::max((settings.td_max - settings.td_min) / 20, S(1e-3) / p.sigma);
-      starts.push_back(
-          std::min(std::max(td, settings.td_min), settings.td_max));
-    }
-    auto loss = [&](S t) {
-      Vector<S> th;
-      int its;
-      bool conv;
-      S c;
-      return srivc_at(t, th, its, conv, c).ok()
-                 ? c
-                 : std::numeric_limits<S>::infinity();
+    // The search of delay_search.hpp: grid, then a fine scan and golden
+    // section around each of the best local minima of the grid.
+    DelaySearchSettings<S> search;
+    search.grid = settings.grid;
+    search.td_start = std::min(std::max(td, settings.td_min), settings.td_max);
+    search.td_min = settings.td_min;
+    search.td_max = settings.td_max;
+    search.num_td = settings.num_td;
+    search.refinement = DelayRefinement::kScanGolden;
+    search.resolution = 1 / p.sigma;
+    search.min_scan_step = S(1e-3) / p.sigma;
+    auto fit = [&](S t, FreqFit<S>* f) {
+      return srivc_at(t, f->theta, f->iterations, f->converged, f->loss);
     };
-    // Golden section on [lo, hi]: the minimiser.
-    auto golden = [&](S lo, S hi, S* at) {
-      S a = std::max(settings.td_min, lo);
-      S b = std::min(settings.td_max, hi);
-      const S g = (std::sqrt(S(5)) - 1) / 2;
-      S x1 = b - g * (b - a), x2 = a + g * (b - a);
-      S f1 = loss(x1), f2 = loss(x2);
-      for (int it = 0; it < 60 && (b - a) > S(1e-10) * (S(1) + b) / p.sigma;
-           ++it) {
-        if (f1 < f2) {
-          b = x2;
-          x2 = x1;
-          f2 = f1;
-          x1 = b - g * (b - a);
-          f1 = loss(x1);
-        } else {
-          a = x1;
-          x1 = x2;
-          f1 = f2;
-          x2 = a + g * (b - a);
-          f2 = loss(x2);
-        }
-      }
-      *at = (a + b) / 2;
-      return loss(*at);
-    };
-    S best_cost = std::numeric_limits<S>::infinity();
-    // The loss can have several minima within one grid step of a grid
-    // minimum (the harmonics' phases, a delay traded for a zero): a fine
-    // scan of [centre - step, centre + step], then golden section between
-    // the neighbours of each local minimum of the scan.
-    const int sub = 16;
-    for (const S centre : starts) {
-      const S h = step / sub;
-      std::vector<S> at(2 * sub + 1), c(2 * sub + 1);
-      for (int i = 0; i <= 2 * sub; ++i) {
-        at[i] = std::min(std::max(centre + (i - sub) * h, settings.td_min),
-                         settings.td_max);
-        c[i] = loss(at[i]);
-      }
-      for (int i = 0; i <= 2 * sub; ++i) {
-        if (!std::isfinite(c[i])) continue;
-        if ((i > 0 && c[i] > c[i - 1]) || (i < 2 * sub && c[i] > c[i + 1]))
-          continue;
-        S x = at[i];
-        const S cx = golden(at[i] - h, at[i] + h, &x);
-        const S cbest = std::min(cx, c[i]);
-        if (cbest < best_cost || !std::isfinite(best_cost)) {
-          best_cost = cbest;
-          td = cx <= c[i] ? x : at[i];
-        }
-      }
-    }
+    FreqDelayModel<S, decltype(fit)> model(fit);
+    DelaySearchOutcome<S, FreqFit<S>> out;
+    status = delay_search(model, search, &out);
+    if (!status.ok()) return status;
+    td = out.best.td;
   }
   status = srivc_at(td, theta, iterations, converged, cost);
   if (!status.ok()) return status;

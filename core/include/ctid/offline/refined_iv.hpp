@@ -45,6 +45,9 @@
 // says whether this happened on the final iterate (clipped) and how
 // often, and flags a slowest pole that crept to p = 0 without converging
 // (integrator_suspected: an integrator the structure does not declare).
+// With settings.refit_integrators the engine refits such a fit with that
+// pole declared at p = 0 and keeps the refit when it is better
+// (refit_integrators() below; integrators, integrator_refit).
 //
 // The parts: refined_iv_problem.hpp (the types), refined_iv_validation.hpp
 // (input checks), filters/batch_filters.hpp (the batch filters),
@@ -53,8 +56,13 @@
 // refined_iv(), srivc() and clsrivc().
 #pragma once
 
+#include <complex>
+#include <limits>
+#include <string>
 #include <utility>
+#include <vector>
 
+#include "ctid/base/polynomial.hpp"
 #include "ctid/offline/offline_iv.hpp"
 #include "ctid/offline/refined_iv_engine.hpp"
 #include "ctid/offline/refined_iv_problem.hpp"
@@ -63,9 +71,9 @@
 
 namespace ctid {
 
-// The engine: see the header comment. Returns kNotConverged (result filled,
-// converged = false) when SRIVC did not converge, numerical_failure when no
-// start gave an estimate.
+namespace riv_detail {
+
+// The engine without the integrator refit (refined_iv() below).
 //
 // With an output offset c estimated, c is refitted between refined-IV
 // steps. With an input of nonzero mean the step response of c and the
@@ -77,8 +85,9 @@ namespace ctid {
 // then: on records outside the model class the two schemes stop at different
 // points, and a fit that converges with the alternation keeps its result.
 template <typename S>
-Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
-                  const RivData<S>& data, RivResult<S>* result) {
+Status refined_iv_offset(const RivProblem<S>& problem,
+                         const RivSettings<S>& settings, const RivData<S>& data,
+                         RivResult<S>* result) {
   Status status = riv_detail::refined_iv_run(problem, settings, data, result);
   if (settings.method != RivMethod::kSrivc || !problem.output_offset ||
       problem.closed_loop() || settings.offset_in_regression ||
@@ -96,6 +105,208 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
         "(the run refitting it between steps did not converge)";
     *result = std::move(second);
     return repeat;
+  }
+  return status;
+}
+
+// Per group, the trailing coefficients of F_g fixed at 0: its declared
+// integrators.
+template <typename S>
+std::vector<int> declared_integrators(const RivProblem<S>& problem) {
+  std::vector<int> have(problem.num_groups(), 0);
+  if (problem.fixed.empty()) return have;
+  int off = 0;
+  for (int g = 0; g < problem.num_groups(); ++g) {
+    const int n = problem.nf[g];
+    while (have[g] < n && problem.fixed[off + n - 1 - have[g]] &&
+           problem.fixed_values(off + n - 1 - have[g]) == 0)
+      ++have[g];
+    off += n;
+  }
+  return have;
+}
+
+template <typename S>
+S mean_square_error(const RivData<S>& data, const Vector<S>& simulated) {
+  if (simulated.size() != data.num_samples) {
+    return std::numeric_limits<S>::infinity();
+  }
+  return (Eigen::Map<const Vector<S>>(data.y, data.num_samples) - simulated)
+             .squaredNorm() /
+         static_cast<S>(data.num_samples);
+}
+
+inline bool any_flag(const std::vector<int>& v) {
+  for (int x : v)
+    if (x != 0) return true;
+  return false;
+}
+
+}  // namespace riv_detail
+
+// The reason of a refit from the lowest-loss run (RivResult::lowest_*),
+// given the returned fit's reason.
+inline std::string lowest_run_reason(const std::string& reason) {
+  return "a run from another start reached a lower loss than the converged "
+         "one (" +
+         reason + ") without converging";
+}
+
+// The integrator refit: a fit whose slowest pole crept toward p = 0
+// without converging (integrator_suspected, per group) has its loss
+// minimum on the stability boundary, an integrator the structure does not
+// declare (an integrating plant, e.g. force -> position of an axis). The
+// fit is repeated with that pole declared at p = 0 (F_g's last free
+// coefficient fixed at 0), started from theta with its slowest pole moved
+// there, and kept (*kept, *out) when it converges to a model whose other
+// poles are stable and whose mean squared simulation error is not above
+// base_mse; while the refit's own slowest pole still creeps to p = 0, a
+// further pole is declared (at most nf_g in all). base_reason: the
+// unrefitted fit's reason, quoted in the refit's.
+template <typename S>
+Status refit_integrators(const RivProblem<S>& problem,
+                         const RivSettings<S>& settings, const RivData<S>& data,
+                         Vector<S> theta, std::vector<int> suspected,
+                         S base_mse, const std::string& base_reason,
+                         RivResult<S>* out, bool* kept) {
+  if (out == nullptr || kept == nullptr) return bad_input("no result");
+  *kept = false;
+  const int groups = problem.num_groups();
+  const int np = problem.num_parameters();
+  if (theta.size() != np) {
+    return dimension_mismatch("the start needs " + std::to_string(np) +
+                              " coefficients");
+  }
+  const std::vector<int> have0 = riv_detail::declared_integrators(problem);
+  std::vector<int> have = have0;
+  RivProblem<S> p = problem;
+  if (p.fixed.empty()) {
+    p.fixed.assign(np, false);
+    p.fixed_values = Vector<S>::Zero(np);
+  }
+  int most = 0;
+  for (int n : problem.nf) most = std::max(most, n);
+  for (int pass = 0; pass < most; ++pass) {
+    std::vector<int> add(groups, 0);
+    for (int g = 0; g < groups; ++g) {
+      add[g] = g < static_cast<int>(suspected.size()) && suspected[g] != 0 &&
+               have[g] < problem.nf[g];
+    }
+    if (!riv_detail::any_flag(add)) return Status::Ok();
+    Vector<S> start = theta;
+    int off = 0;
+    for (int g = 0; g < groups; ++g) {
+      const int n = problem.nf[g];
+      if (add[g]) {
+        // the free part of F_g (without its have[g] integrators), its
+        // root nearest p = 0 removed
+        const int m = n - have[g];
+        Vector<S> ascending(m + 1);
+        for (int i = 0; i < m; ++i) ascending(i) = theta(off + m - 1 - i);
+        ascending(m) = 1;
+        auto roots = polynomial_roots<S>(ascending);
+        Eigen::Index k = 0;
+        for (Eigen::Index i = 1; i < roots.size(); ++i)
+          if (std::abs(roots(i)) < std::abs(roots(k))) k = i;
+        Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> rest(m - 1);
+        for (Eigen::Index i = 0, j = 0; i < roots.size(); ++i)
+          if (i != k) rest(j++) = roots(i);
+        const auto f1 = monic_from_roots<S>(rest);
+        start.segment(off, n).setZero();
+        for (int i = 0; i + 1 < m; ++i) start(off + i) = f1(i + 1).real();
+        for (int i = 0; i < have[g] + 1; ++i) {
+          p.fixed[off + n - 1 - i] = true;
+          p.fixed_values(off + n - 1 - i) = 0;
+        }
+      }
+      off += n;
+    }
+    RivSettings<S> st = settings;
+    st.theta_init = start;
+    st.refit_integrators = false;
+    RivResult<S> r;
+    const Status s = riv_detail::refined_iv_offset(p, st, data, &r);
+    if (!s.ok() && s.code() != ErrorCode::kNotConverged) return Status::Ok();
+    for (int g = 0; g < groups; ++g) have[g] += add[g];
+    if (r.converged && r.stable &&
+        riv_detail::mean_square_error(data, r.simulated) <= base_mse) {
+      int total = 0;
+      r.integrators.assign(groups, 0);
+      for (int g = 0; g < groups; ++g) {
+        r.integrators[g] = have[g] - have0[g];
+        total += r.integrators[g];
+      }
+      r.integrator_refit = 1;
+      r.reason +=
+          ", with " + std::to_string(total) +
+          " pole(s) at p = 0 detected (the fit without: " + base_reason + ")";
+      *out = std::move(r);
+      *kept = true;
+      return Status::Ok();
+    }
+    if (!(r.stable && riv_detail::any_flag(r.integrator_suspected))) {
+      return Status::Ok();
+    }
+    theta = r.theta;
+    suspected = r.integrator_suspected;
+  }
+  return Status::Ok();
+}
+
+// The engine: see the header comment. Returns kNotConverged (result filled,
+// converged = false) when SRIVC did not converge, numerical_failure when no
+// start gave an estimate.
+//
+// With settings.refit_integrators (SRIVC in open loop), a fit that did not
+// converge to a stable model while its slowest pole crept to p = 0 is
+// refitted from its last iterate with that pole declared
+// (refit_integrators), and a converged fit from whose starts another run
+// reached a lower loss creeping so is refitted from that run; the refit
+// replaces the fit when it is better (result->integrator_refit says what
+// happened).
+template <typename S>
+Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
+                  const RivData<S>& data, RivResult<S>* result) {
+  Status status =
+      riv_detail::refined_iv_offset(problem, settings, data, result);
+  if (!settings.refit_integrators || settings.method != RivMethod::kSrivc ||
+      problem.closed_loop() ||
+      (!status.ok() && status.code() != ErrorCode::kNotConverged)) {
+    return status;
+  }
+  result->integrators.assign(problem.num_groups(), 0);
+  const bool from_returned = !(result->converged && result->stable) &&
+                             riv_detail::any_flag(result->integrator_suspected);
+  const bool from_lowest =
+      !from_returned && result->lowest_theta.size() > 0 &&
+      riv_detail::any_flag(result->lowest_integrator_suspected);
+  if (!from_returned && !from_lowest) return status;
+  RivResult<S> refit;
+  bool kept = false;
+  Status s;
+  if (from_returned) {
+    s = refit_integrators(
+        problem, settings, data, result->theta, result->integrator_suspected,
+        riv_detail::mean_square_error(data, result->simulated), result->reason,
+        &refit, &kept);
+  } else {
+    s = refit_integrators(
+        problem, settings, data, result->lowest_theta,
+        result->lowest_integrator_suspected,
+        riv_detail::mean_square_error(data, result->lowest_simulated),
+        lowest_run_reason(result->reason), &refit, &kept);
+  }
+  if (!s.ok()) return s;
+  if (kept) {
+    *result = std::move(refit);
+    return Status::Ok();
+  }
+  if (from_returned) {
+    result->integrator_refit = -1;
+    result->reason +=
+        "; a refit with a pole at p = 0 did not converge to a better model";
+  } else {
+    result->integrator_refit = -2;
   }
   return status;
 }

@@ -86,6 +86,10 @@ struct RivSettings {
   // of refitted between steps only; refined_iv() sets it for its second
   // attempt (see there).
   bool offset_in_regression = false;
+  // SRIVC in open loop: a fit whose slowest pole crept to p = 0 is
+  // refitted with that pole declared there (refined_iv.hpp,
+  // refit_integrators), and the refit kept when it is better.
+  bool refit_integrators = false;
 };
 
 template <typename S>
@@ -121,6 +125,12 @@ struct RivResult {
   S lowest_noise_variance = std::numeric_limits<S>::infinity();
   std::vector<int> lowest_integrator_suspected;
   Vector<S> lowest_simulated;
+  // With refit_integrators: per group, the poles at p = 0 that the refit
+  // declared (zeros if none), and 1 (the refit was kept), 0 (no refit
+  // tried), -1 (a refit from the returned fit was not better) or -2 (a
+  // refit from the lowest-loss run was not better).
+  std::vector<int> integrators;
+  int integrator_refit = 0;
   std::string reason;  // why it stopped, in words
   S cutoff = 0;        // cut-off of the SVF start used (0: theta_init)
   S time_scale = 1;    // sigma of the final iterations
