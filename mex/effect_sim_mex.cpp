@@ -48,6 +48,10 @@
 //     its fit by the simulation error (physical_fit.hpp): fit holds the
 //     fitted fields below and theta, cov, s2, bic, sse, iterations, ok; e
 //     the errors on the whole record.
+//   F = effect_sim_mex (fname, "physlin", options)
+//     a cascade's denominator linearised at its steady state for the mean
+//     channel signals wbar (physical_fit.hpp), [1 f1 f2]; options: the
+//     realisation's fields (ts is not used).
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
 //   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
 //   channel j's numerator right-aligned in column j), nb (1-by-m numerator
@@ -409,6 +413,23 @@ void physsim_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs >= 2) plhs[1] = put_matrix(z);
 }
 
+void physlin_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                    const mxArray* prhs[]) {
+  if (nrhs != 3)
+    g.fail("badInput", "physlin takes (fname, 'physlin', options)");
+  if (nlhs > 1) g.fail("badInput", "physlin has one output");
+  ctid::mex::OptionsReader opt(g, prhs[2]);
+  const mxArray* b = opt.field("b");
+  const long m = b == nullptr ? 0 : static_cast<long>(mxGetNumberOfElements(b));
+  opt.scalar("ts", 1.0);
+  const auto p = read_physical(g, opt, m);
+  opt.finish();
+  if (p.kind != ctid::residtrace::PhysicalKind::kCascade) {
+    g.fail("badOption", "physlin: a cascade only");
+  }
+  plhs[0] = put_matrix(ctid::residtrace::cascade_linearisation(p).transpose());
+}
+
 void physfit_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                     const mxArray* prhs[]) {
   if (nrhs != 5) {
@@ -496,6 +517,8 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             ar_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physsim") {
             physsim_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "physlin") {
+            physlin_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physfit") {
             physfit_method(g, nlhs, plhs, nrhs, prhs);
           } else {

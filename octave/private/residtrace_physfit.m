@@ -31,7 +31,8 @@
 ## short of their minimum on records of a few thousand samples); the residual
 ## variance, BIC and @code{e_est} are those of the whole record.
 ## @code{phys.theta}, @code{phys.cov}: the parameters above and their
-## Gauss-Newton covariance; @code{theta}, @code{cov}: those of
+## Gauss-Newton covariance s^2 (J'J)^+ (J at the estimate, s^2 on the
+## samples fitted); @code{theta}, @code{cov}: those of
 ## the linear part (for a cascade, its linearisation, without covariance).
 ## The fit is the core's
 ## (@file{core/include/ctid/apps/residtrace/physical_fit.hpp}, gateway

@@ -8,15 +8,19 @@
 ## @file{core/include/ctid/apps/residtrace/physical_fit.hpp}) for a
 ## @code{residtrace} model with @code{model.phys}: the channel signals
 ## @var{W} on the inputs @var{u} (N-by-nu), delayed by each channel's
-## nk samples, and the realisation's fields @var{o} (levels that are not
-## finite and absent fields left out).
+## nk samples (none for an empty @var{u}), and the realisation's fields
+## @var{o} (levels that are not finite and absent fields left out).
 ## @end deftypefn
 
 function [W, o] = residtrace_physopts (model, u, Ts)
   P = model.phys;
   chans = model.channels;
   N = rows (u);
-  W = residtrace_channels (chans, u, zeros (N, 1));
+  if (isempty (u))
+    W = zeros (0, numel (chans));
+  else
+    W = residtrace_channels (chans, u, zeros (N, 1));
+  endif
   for j = 1:numel (chans)
     k = chans(j).nk;
     if (k > 0)
