@@ -11,7 +11,9 @@
 //     against s^2 (J^T J)^-1 with J by central differences of the test's
 //     simulator at the estimate;
 //   - the simulations of simulate_physical against the test's simulators,
-//     and a declared initial state's free response removed exactly;
+//     several models side by side (with and without initial levels) equal
+//     to each alone, and a declared initial state's free response removed
+//     exactly;
 //   - bad input.
 #include "ctid/apps/residtrace/physical_fit.hpp"
 
@@ -193,6 +195,34 @@ TEST(PhysicalSimulation, MatchesTheTestSimulators) {
   }
   EXPECT_LT(worst_t, 1e-10);
   EXPECT_GT((Z.col(0).array() >= kTanks.top).count(), 20);  // it overflows
+}
+
+TEST(PhysicalSimulation, SideBySideEqualsAlone) {
+  // cascades with and without initial levels (simulated in separate
+  // passes), one with an outer level and a spilled share
+  const std::vector<double> w = staircase(600, 25, 0, 4, 9);
+  PhysicalModel<double> a = tanks_model(kTanks, 5, 2.0);
+  PhysicalModel<double> b = a;
+  b.has_h0 = false;
+  PhysicalModel<double> c = a;
+  c.alpha = 0.12;
+  c.has_yhi = true;
+  c.yhi = 12;
+  c.has_spill = true;
+  c.spill = 0.3;
+  Eigen::MatrixXd Y, Z, Y1, Z1;
+  ASSERT_TRUE(
+      simulate_physical<double>({b, a, c}, w.data(), 600, 1, 2.0, &Y, &Z).ok());
+  const std::vector<PhysicalModel<double>> alone = {b, a, c};
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(
+        simulate_physical<double>({alone[i]}, w.data(), 600, 1, 2.0, &Y1, &Z1)
+            .ok());
+    EXPECT_EQ((Y.col(i) - Y1.col(0)).cwiseAbs().maxCoeff(), 0) << i;
+    EXPECT_EQ((Z.col(i) - Z1.col(0)).cwiseAbs().maxCoeff(), 0) << i;
+  }
+  EXPECT_GT((Y.col(1) - Y.col(0)).cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_GT((Y.col(2) - Y.col(1)).cwiseAbs().maxCoeff(), 1e-3);
 }
 
 TEST(PhysicalFit, RecoversAnEndStop) {
