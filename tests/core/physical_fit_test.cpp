@@ -14,6 +14,8 @@
 //     several models side by side (with and without initial levels) equal
 //     to each alone, and a declared initial state's free response removed
 //     exactly;
+//   - a cascade started from a linear model: its linearisation has the
+//     model's poles, its steady state the level and gain asked for;
 //   - bad input.
 #include "ctid/apps/residtrace/physical_fit.hpp"
 
@@ -223,6 +225,38 @@ TEST(PhysicalSimulation, SideBySideEqualsAlone) {
   }
   EXPECT_GT((Y.col(1) - Y.col(0)).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_GT((Y.col(2) - Y.col(1)).cwiseAbs().maxCoeff(), 1e-3);
+}
+
+TEST(PhysicalStart, CascadeFromItsLinearisation) {
+  // the cascade's linearisation has the poles and gain asked for, and
+  // its steady state for the mean inflow is at the level asked for: the
+  // test simulator run to rest with the input at wbar, and at wbar +- 0.05
+  // for the gain (a central secant)
+  for (const bool sq : {true, false}) {
+    PhysicalModel<double> m;
+    m.kind = PhysicalKind::kCascade;
+    m.sqrt_nodes = sq;
+    cascade_from_linear<double>(0.05, 0.01, Eigen::VectorXd::Constant(1, 3.0),
+                                Eigen::VectorXd::Constant(1, 2.0), 8.0, &m);
+    const Eigen::VectorXd F = cascade_linearisation(m);
+    EXPECT_NEAR(F(1), 0.06, 1e-15);
+    EXPECT_NEAR(F(2), 0.0005, 1e-16);
+    EXPECT_EQ(m.F, F);
+    if (!sq) {
+      // linear: the static gain b / (alpha gamma) and the level exactly
+      EXPECT_NEAR(m.b(0) / (m.alpha * m.gamma), 3.0, 1e-12);
+      EXPECT_NEAR((2.0 * m.b(0) + m.d) / (m.alpha * m.gamma), 8.0, 1e-12);
+      continue;
+    }
+    const Tanks p{m.b(0), m.d, m.alpha, m.gamma, 0.0, 1e9, 8.0};
+    const std::vector<double> at(3000, 2.0), above(3000, 2.05),
+        below(3000, 1.95);
+    const double h_at = tanks(p, 1.0, 2, at).back();
+    const double h_above = tanks(p, 1.0, 2, above).back();
+    const double h_below = tanks(p, 1.0, 2, below).back();
+    EXPECT_NEAR(h_at, 8.0, 1e-9);
+    EXPECT_NEAR((h_above - h_below) / 0.1, 3.0, 1e-3);
+  }
 }
 
 TEST(PhysicalFit, RecoversAnEndStop) {

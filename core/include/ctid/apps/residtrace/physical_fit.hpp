@@ -101,6 +101,35 @@ Vector<S> cascade_linearisation(const PhysicalModel<S>& m) {
   return F;
 }
 
+// The cascade whose linearisation (cascade_linearisation) at its steady
+// state for the mean channel signals wbar has the poles p1 (upstream) and
+// p2, the static gains K of the channels and the output level hbar above
+// c: for square-root nodes sqrt(z) = s = 2 p2 hbar at that state, alpha =
+// 2 p1 s, gamma = 2 p2 sqrt(hbar), b = 2 K s p1 p2; for linear ones alpha
+// = p1, gamma = p2, b = K p1 p2; d makes up the inflow of that state
+// (alpha s, or alpha gamma hbar). The start of a cascade from a linear
+// model. Sets b, d, alpha, gamma, wbar and F of *m.
+template <typename S>
+void cascade_from_linear(S p1, S p2, const Vector<S>& K, const Vector<S>& wbar,
+                         S hbar, PhysicalModel<S>* m) {
+  S q;
+  if (m->sqrt_nodes) {
+    const S s = 2 * p2 * hbar;
+    m->alpha = 2 * p1 * s;
+    m->gamma = 2 * p2 * std::sqrt(hbar);
+    m->b = 2 * K * s * p1 * p2;
+    q = m->alpha * s;
+  } else {
+    m->alpha = p1;
+    m->gamma = p2;
+    m->b = K * p1 * p2;
+    q = m->alpha * m->gamma * hbar;
+  }
+  m->d = q - wbar.dot(m->b);
+  m->wbar = wbar;
+  m->F = cascade_linearisation(*m);
+}
+
 // The initial levels of a cascade: h0 kept below the outer level, z0 as
 // given or at rest with h0 (g(z0) = gamma g(h0)) below the inner level;
 // both NaN without h0 (the cascade then starts at rest for the first
