@@ -39,9 +39,31 @@
 //     tested (the others are then empty); options: maxlag, yscale;
 //   a = effect_sim_mex (fname, "ar", x, options)
 //     A(q) = [1 -c1 .. -cp] of the AR model of x whose order p <= pmax has
-//     the smallest BIC (statistics.hpp); options: pmax.
+//     the smallest BIC (statistics.hpp); options: pmax;
+//   [y, z] = effect_sim_mex (fname, "physsim", W, options)
+//     the output and inner state (the position for "stop") of a physical
+//     realisation (physical_fit.hpp) on the channel signals W (N-by-m,
+//     delayed);
+//   [fit, e] = effect_sim_mex (fname, "physfit", W, y, options)
+//     its fit by the simulation error (physical_fit.hpp): fit holds the
+//     fitted fields below and theta, cov, s2, bic, sse, iterations, ok; e
+//     the errors on the whole record.
+//   c = effect_sim_mex (fname, "physstart", options)
+//     the cascade whose linearisation has the poles p1 (upstream), p2, the
+//     static gains K (1-by-m) and the level hbar above c for the mean
+//     channel signals wbar (1-by-m) (physical_fit.hpp): c.b, c.d,
+//     c.alpha, c.gamma, c.F; options: g, p1, p2, K, wbar, hbar.
+//   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
+//   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
+//   channel j's numerator right-aligned in column j), nb (1-by-m numerator
+//   lengths), offset (the output offset as a parameter; absent: none),
+//   offset_fixed, lo, hi (the output's levels; absent: none); "cascade":
+//   g ("sqrt" or "lin"), b (1-by-m gains), d, alpha, gamma, c, wbar
+//   (1-by-m), hi (the inner level), yhi, spill, h0, z0 (each absent: none);
+//   for the fit also initial_state (0 or 1) and maxiter.
 // The signals and estimates may hold non-finite values (they propagate as
 // in the recursion itself).
+#include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/apps/residtrace/track.hpp"
@@ -61,6 +83,8 @@ Eigen::Map<const Eigen::MatrixXd> any_matrix(const Gateway& g, const mxArray* a,
       p, static_cast<Eigen::Index>(mxGetM(a)),
       static_cast<Eigen::Index>(mxGetN(a)));
 }
+
+Eigen::VectorXd row(const Eigen::MatrixXd& a) { return a.row(0).transpose(); }
 
 // f as a column: a row or column vector.
 Eigen::VectorXd read_f(const Gateway& g, const mxArray* a) {
@@ -302,6 +326,187 @@ void ar_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   Eigen::Map<Eigen::VectorXd>(mxGetPr(plhs[0]), a.size()) = a;
 }
 
+// The realisation's fields (see the head of this file).
+ctid::residtrace::PhysicalModel<double> read_physical(
+    const Gateway& g, ctid::mex::OptionsReader& opt, long m) {
+  using ctid::residtrace::PhysicalKind;
+  ctid::residtrace::PhysicalModel<double> p;
+  p.kind = opt.choice<PhysicalKind>(
+      "kind",
+      {{"stop", PhysicalKind::kStop}, {"cascade", PhysicalKind::kCascade}},
+      PhysicalKind::kStop);
+  if (!opt.has("kind")) g.fail("badOption", "option 'kind' is missing");
+  p.substeps = opt.integer("substeps", 1);
+  if (p.substeps < 1) g.fail("badOption", "option 'substeps' must be >= 1");
+  p.yscale = opt.scalar("yscale", 1.0);
+  auto optional = [&](const char* name, bool* has, double* v) {
+    const Eigen::MatrixXd a = opt.matrix(name, 1, 1);
+    if (has != nullptr) *has = a.size() == 1;
+    if (a.size() == 1) *v = a(0, 0);
+  };
+  if (p.kind == PhysicalKind::kStop) {
+    p.F = row(opt.required_matrix("F", 1, -1));
+    const long n = static_cast<long>(p.F.size()) - 1;
+    if (n < 2 || p.F(0) == 0) {
+      g.fail("badOption", "option 'F' must be of order >= 2 with F(1) != 0");
+    }
+    const Eigen::MatrixXd fixed = opt.required_matrix("fixed", 1, n);
+    for (long i = 0; i < n; ++i) p.fixed.push_back(fixed(0, i) != 0);
+    const Eigen::MatrixXd B = opt.required_matrix("B", n, m);
+    const std::vector<int> nb = opt.integer_vector("nb");
+    if (static_cast<long>(nb.size()) != m) {
+      g.fail("dimensionMismatch", "option 'nb' needs one entry per channel");
+    }
+    for (long j = 0; j < m; ++j) {
+      if (nb[j] < 0 || nb[j] > n)
+        g.fail("badOption", "option 'nb' out of range");
+      p.B.push_back(B.col(j).tail(nb[j]));
+    }
+    optional("offset", &p.has_offset, &p.offset);
+    p.offset_fixed = opt.scalar("offset_fixed", 0.0);
+    optional("lo", nullptr, &p.lo);
+    optional("hi", nullptr, &p.hi);
+    return p;
+  }
+  p.sqrt_nodes = opt.choice<bool>("g", {{"sqrt", true}, {"lin", false}}, true);
+  p.b = row(opt.required_matrix("b", 1, m));
+  p.d = opt.scalar("d");
+  p.alpha = opt.scalar("alpha");
+  p.gamma = opt.scalar("gamma");
+  p.c = opt.scalar("c");
+  const Eigen::MatrixXd wbar = opt.matrix("wbar", 1, m);
+  p.wbar = wbar.size() > 0 ? row(wbar) : Eigen::VectorXd::Zero(m);
+  optional("hi", nullptr, &p.hi);
+  optional("yhi", &p.has_yhi, &p.yhi);
+  optional("spill", &p.has_spill, &p.spill);
+  optional("h0", &p.has_h0, &p.h0);
+  optional("z0", &p.has_z0, &p.z0);
+  if (p.has_spill && !(p.spill >= 0 && p.spill <= 1)) {
+    g.fail("badOption", "option 'spill' must lie in [0, 1]");
+  }
+  return p;
+}
+
+mxArray* put_matrix(const Eigen::MatrixXd& a) {
+  mxArray* out = ctid::mex::make_output_matrix(a.rows(), a.cols());
+  Eigen::Map<Eigen::MatrixXd>(mxGetPr(out), a.rows(), a.cols()) = a;
+  return out;
+}
+
+void physsim_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                    const mxArray* prhs[]) {
+  if (nrhs != 4)
+    g.fail("badInput", "physsim takes (fname, 'physsim', W, options)");
+  if (nlhs > 2) g.fail("badInput", "physsim has at most 2 outputs");
+  g.require_real_double(prhs[2], "W");
+  const long n = static_cast<long>(mxGetM(prhs[2]));
+  const long m = static_cast<long>(mxGetN(prhs[2]));
+  const double* W = g.matrix(prhs[2], "W", n, m);
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const double ts = opt.scalar("ts");
+  if (!(ts > 0)) g.fail("badOption", "option 'ts' must be > 0");
+  const auto p = read_physical(g, opt, m);
+  opt.finish();
+  Eigen::MatrixXd y, z;
+  g.check(
+      ctid::residtrace::simulate_physical<double>({p}, W, n, m, ts, &y, &z));
+  plhs[0] = put_matrix(y);
+  if (nlhs >= 2) plhs[1] = put_matrix(z);
+}
+
+void physstart_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                      const mxArray* prhs[]) {
+  if (nrhs != 3) {
+    g.fail("badInput", "physstart takes (fname, 'physstart', options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "physstart has one output");
+  ctid::mex::OptionsReader opt(g, prhs[2]);
+  ctid::residtrace::PhysicalModel<double> p;
+  p.kind = ctid::residtrace::PhysicalKind::kCascade;
+  p.sqrt_nodes = opt.choice<bool>("g", {{"sqrt", true}, {"lin", false}}, true);
+  const double p1 = opt.scalar("p1");
+  const double p2 = opt.scalar("p2");
+  const Eigen::VectorXd K = row(opt.required_matrix("K", 1, -1));
+  const Eigen::VectorXd wbar =
+      row(opt.required_matrix("wbar", 1, static_cast<long>(K.size())));
+  const double hbar = opt.scalar("hbar");
+  opt.finish();
+  ctid::residtrace::cascade_from_linear<double>(p1, p2, K, wbar, hbar, &p);
+  const char* fields[] = {"b", "d", "alpha", "gamma", "F"};
+  plhs[0] = mxCreateStructMatrix(1, 1, 5, fields);
+  mxSetFieldByNumber(plhs[0], 0, 0, put_matrix(p.b.transpose()));
+  mxSetFieldByNumber(plhs[0], 0, 1, mxCreateDoubleScalar(p.d));
+  mxSetFieldByNumber(plhs[0], 0, 2, mxCreateDoubleScalar(p.alpha));
+  mxSetFieldByNumber(plhs[0], 0, 3, mxCreateDoubleScalar(p.gamma));
+  mxSetFieldByNumber(plhs[0], 0, 4, put_matrix(p.F.transpose()));
+}
+
+void physfit_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                    const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "physfit takes (fname, 'physfit', W, y, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "physfit has at most 2 outputs");
+  const Eigen::VectorXd y = any_column(g, prhs[3], "y");
+  const long n = static_cast<long>(y.size());
+  g.require_real_double(prhs[2], "W");
+  const long m = static_cast<long>(mxGetN(prhs[2]));
+  const double* W = g.matrix(prhs[2], "W", n, m);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("ts");
+  if (!(ts > 0)) g.fail("badOption", "option 'ts' must be > 0");
+  const auto p = read_physical(g, opt, m);
+  const bool x0 = opt.flag("initial_state", false);
+  const int maxiter = opt.integer("maxiter");
+  opt.finish();
+  ctid::residtrace::PhysicalFit<double> fit;
+  g.check(ctid::residtrace::fit_physical<double>(p, W, m, y, ts, x0, maxiter,
+                                                 &fit));
+  const auto& q = fit.model;
+  const bool stop = q.kind == ctid::residtrace::PhysicalKind::kStop;
+  std::vector<std::pair<const char*, mxArray*>> f;
+  auto scalar = [](double v) { return mxCreateDoubleScalar(v); };
+  auto maybe = [&](bool has, double v) {
+    return has ? scalar(v) : ctid::mex::make_output_matrix(0, 0);
+  };
+  f.push_back({"ok", scalar(fit.ok ? 1 : 0)});
+  f.push_back({"theta", put_matrix(fit.theta)});
+  f.push_back({"cov", put_matrix(fit.cov)});
+  f.push_back({"s2", scalar(fit.s2)});
+  f.push_back({"bic", scalar(fit.bic)});
+  f.push_back({"sse", scalar(fit.sse)});
+  f.push_back({"iterations", scalar(fit.iterations)});
+  f.push_back({"F", put_matrix(q.F.transpose())});
+  if (stop) {
+    const long nn = static_cast<long>(q.F.size()) - 1;
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nn, m);
+    for (long j = 0; j < m; ++j) B.col(j).tail(q.B[j].size()) = q.B[j];
+    f.push_back({"B", put_matrix(B)});
+    f.push_back({"offset", maybe(q.has_offset, q.offset)});
+    f.push_back({"lo", scalar(q.lo)});
+    f.push_back({"hi", scalar(q.hi)});
+  } else {
+    f.push_back({"b", put_matrix(q.b.transpose())});
+    f.push_back({"d", scalar(q.d)});
+    f.push_back({"alpha", scalar(q.alpha)});
+    f.push_back({"gamma", scalar(q.gamma)});
+    f.push_back({"c", scalar(q.c)});
+    f.push_back({"hi", scalar(q.hi)});
+    f.push_back({"yhi", maybe(q.has_yhi, q.yhi)});
+    f.push_back({"spill", maybe(q.has_spill, q.spill)});
+    f.push_back({"h0", maybe(q.has_h0, q.h0)});
+    f.push_back({"z0", maybe(q.has_z0, q.z0)});
+  }
+  std::vector<const char*> names;
+  for (const auto& kv : f) names.push_back(kv.first);
+  plhs[0] =
+      mxCreateStructMatrix(1, 1, static_cast<int>(names.size()), names.data());
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    mxSetFieldByNumber(plhs[0], 0, static_cast<int>(i), f[i].second);
+  }
+  if (nlhs >= 2) plhs[1] = put_matrix(fit.e);
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -321,6 +526,12 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             whiteness_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "ar") {
             ar_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "physsim") {
+            physsim_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "physstart") {
+            physstart_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "physfit") {
+            physfit_method(g, nlhs, plhs, nrhs, prhs);
           } else {
             g.fail("badInput", "unknown method '" + method + "'");
           }

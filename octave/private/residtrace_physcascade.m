@@ -21,7 +21,9 @@
 ## level c at min(0, min(y) - 0.1 range(y)) for square-root nodes (a
 ## level measured from the outlet starts at c = 0) and 0 for linear ones;
 ## the inner level on the quantiles 0.7-0.99 of the unclipped inner state
-## (the one with the smallest simulation error). The record's initial
+## (the one with the smallest simulation error); the cascade of those
+## poles, gains and level is the core's (@code{effect_sim_mex}, method
+## "physstart"). The record's initial
 ## state is a parameter: the cascade starts at rest at the outer level
 ## @code{phys.h0} (the inner one in balance with it), started at the
 ## first sample, fitted with the others and kept for any other record (as
@@ -91,17 +93,11 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
     why = "no positive level";
     return;
   endif
-  if (sq)
-    s = 2 * p2 * hbar;                   # sqrt(z) at the mean
-    al = 2 * p1 * s;
-    ga = 2 * p2 * sqrt (hbar);
-    b = 2 * K * s * p1 * p2;
-    d = al * s - wbar * b(:);
-  else
-    al = p1; ga = p2;
-    b = K * p1 * p2;
-    d = al * ga * hbar - wbar * b(:);
-  endif
+  ## the cascade whose linearisation has these poles and gains (the core's)
+  c = effect_sim_mex ("residtrace", "physstart",
+                      struct ("g", g, "p1", p1, "p2", p2, "K", K(:).',
+                              "wbar", wbar, "hbar", hbar));
+  al = c.alpha; ga = c.gamma; b = c.b; d = c.d;
   t = cur;
   for j = 1:numel (chans)
     chans(j).nb = 1;
@@ -114,7 +110,7 @@ function [t, why] = residtrace_physcascade (cur, ctx, g, clip)
   t.phys = struct ("kind", "cascade", "g", g, "d", d, "alpha", al,
                    "gamma", ga, "c", c0, "hi", Inf, "substeps", S,
                    "wbar", wbar, "yscale", std (y), "h0", y(1) - c0);
-  t.F = residtrace_physlin (t);
+  t.F = c.F;
   if (clip)
     t.phys.spill = 0;                    # share of the overflow kept
     [~, z] = residtrace_physsim (t, D.u, D.Ts);

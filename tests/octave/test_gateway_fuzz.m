@@ -108,12 +108,12 @@ function test_gateway_fuzz ()
                 "s", zeros (50, 1), "poly", [0 0.1],
                 "f_t", repmat ([1.2 4], 50, 1),
                 "b_t", repmat ([0 4 0.5 -1 0 0.1], 50, 1));
-  ## residtrace's physical realisations: a two-tank cascade (two parameter
-  ## sets side by side)
-  phys = struct ("kind", "cascade", "ts", 2, "g", "sqrt",
-                 "b", [0.0012 0.0011], "d", [0 0], "alpha", [0.01 0.011],
-                 "gamma", [0.085 0.085], "c", [0 0], "hi", [0.4 0.4],
+  ## residtrace's physical realisations: a two-tank cascade, simulated and
+  ## fitted
+  phys = struct ("kind", "cascade", "ts", 2, "g", "sqrt", "b", 0.0012,
+                 "d", 0, "alpha", 0.01, "gamma", 0.085, "c", 0, "hi", 0.4,
                  "substeps", 4);
+  physfit = setfield (setfield (phys, "maxiter", 2), "h0", 0.1);
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -124,8 +124,10 @@ function test_gateway_fuzz ()
     {"pem_mex", {"arx", yp, u, 1, pemarx}, {"model", "na", "nb", "nk"}}
     {"effect_sim_mex", {"residtrace", [u, u, u], eff}, ...
      {"ts", "f", "b", "kind", "nk", "param"}}
-    {"physsim_mex", {"residtrace", abs(u), phys}, ...
-     {"ts", "b", "d", "alpha", "gamma", "c"}}
+    {"effect_sim_mex", {"residtrace", "physsim", abs(u), phys}, ...
+     {"kind", "ts", "b", "d", "alpha", "gamma", "c"}}
+    {"effect_sim_mex", {"residtrace", "physfit", abs(u), y, physfit}, ...
+     {"kind", "ts", "b", "d", "alpha", "gamma", "c", "maxiter"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

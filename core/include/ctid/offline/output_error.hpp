@@ -126,6 +126,15 @@ struct OeSettings {
   Vector<S> theta_init;             // empty: SRIVC / ARX start
   S srivc_cutoff = 0;  // SVF cut-off of SRIVC's start (rad/s); 0: a grid
   S initial_damping = S(1e-3);
+  // Of the minimiser (levenberg_marquardt): damped steps tried per
+  // iteration, the floor of the damping after a success, a stop once an
+  // accepted step lowers the loss by less than this fraction (0: none),
+  // and a floor on each column's scale relative to the largest column's
+  // (0: a zero column gets the scale 1).
+  int max_damping_attempts = 40;
+  S min_damping = S(1e-12);
+  S decrease_tolerance = 0;
+  S relative_scale_floor = 0;
 };
 
 template <typename S>
@@ -663,6 +672,7 @@ struct LmOutcome {
   Vector<S> yhat;
   // (J^T J)^-1 in the model's parameters (NaN when J is rank deficient).
   Matrix<S> inverse_information;
+  Matrix<S> jacobian;  // J at the result
 };
 
 // Levenberg-Marquardt minimisation of ||y - y_hat(theta)||^2, shared by the
@@ -674,9 +684,11 @@ struct LmOutcome {
 // projection. Model provides bool stable(theta) and
 // evaluate(theta, y_hat, Matrix* J) (J = d y_hat / d theta, or null).
 // Stops when the scaled gradient vanishes, the residual is at rounding
-// level, the relative step and loss decrease fall below the tolerance, or
-// no damped step lowers the loss (converged when the predicted decrease is
-// negligible); MaxIter reached: not converged, the last iterate kept.
+// level, the relative step and loss decrease fall below the tolerance (or
+// the loss decrease alone below settings.decrease_tolerance), no damped
+// step lowers the loss (converged when the predicted decrease is
+// negligible) or J is not finite; MaxIter reached: not converged, the
+// last iterate kept.
 template <typename S, typename Model>
 Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
                            const OeSettings<S>& settings,
@@ -703,10 +715,18 @@ Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
   Vector<S> scale(np), gn(np);
   auto equilibrate = [&]() {
     scale = J.colwise().norm().transpose();
-    for (Eigen::Index i = 0; i < np; ++i)
+    const S floor = settings.relative_scale_floor * scale.maxCoeff();
+    for (Eigen::Index i = 0; i < np; ++i) {
+      scale(i) = std::max(scale(i), floor);
       if (!(scale(i) > 0)) scale(i) = 1;
+    }
   };
   for (;;) {
+    if (!J.allFinite()) {
+      reason = "the Jacobian is not finite";
+      gn.setConstant(std::numeric_limits<S>::quiet_NaN());
+      break;
+    }
     equilibrate();
     const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
     gn = Jn.transpose() * e;
@@ -742,7 +762,7 @@ Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
     bool accepted = false;
     S new_cost = cost;
     Vector<S> step, trial;
-    for (int attempt = 0; attempt < 40; ++attempt) {
+    for (int attempt = 0; attempt < settings.max_damping_attempts; ++attempt) {
       Matrix<S> A(2 * np, np);
       A.topRows(np) = R;
       A.bottomRows(np) = std::sqrt(mu) * Matrix<S>::Identity(np, np);
@@ -783,9 +803,14 @@ Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
     const S rel_decrease = (cost - new_cost) / cost;
     theta = trial;
     cost = new_cost;
-    mu = std::max(mu / 10, S(1e-12));
+    mu = std::max(mu / 10, settings.min_damping);
     model.evaluate(theta, yhat, &J);
     e = y - yhat;
+    if (rel_decrease < settings.decrease_tolerance) {
+      converged = true;
+      reason = "the relative loss decrease fell below the tolerance";
+      break;
+    }
     if (rel_step <= settings.tolerance && rel_decrease <= settings.tolerance) {
       converged = true;
       reason = "the relative step and loss decrease fell below the tolerance";
@@ -800,6 +825,13 @@ Status levenberg_marquardt(Model& model, const Eigen::Ref<const Vector<S>>& y,
   out->damping = mu;
   out->gradient_norm = gn.norm() / std::sqrt(std::max(cost, S(1e-300)));
   out->yhat = yhat;
+  out->jacobian = J;
+  if (!J.allFinite()) {
+    out->inverse_information =
+        Matrix<S>::Constant(np, np, std::numeric_limits<S>::quiet_NaN());
+    out->reason = reason;
+    return Status::Ok();
+  }
   // (J^T J)^-1 from the column-pivoted QR of the equilibrated Jacobian.
   const Matrix<S> Jn = J * scale.cwiseInverse().asDiagonal();
   const Eigen::ColPivHouseholderQR<Matrix<S>> qr(Jn);

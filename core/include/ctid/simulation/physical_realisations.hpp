@@ -3,7 +3,7 @@
 // Physical realisations of residtrace models: two nonlinear
 // simulators whose nonlinearity acts on a state that is not measured, so
 // that the model has no regression form and is fitted on its simulation
-// error (octave/private/residtrace_physfit.m).
+// error (apps/residtrace/physical_fit.hpp).
 //
 // End stop ("stop"): F(p) x = sum_j B_j(p) w_j in observable canonical
 // form, x1 = x, x1' = -f1 x1 + x2 + ..., every channel of relative degree
