@@ -1098,7 +1098,11 @@ function out = guarded (effect, f)
 endfunction
 
 ## Significant first by score; a simpler candidate that is not
-## significantly worse than the one above it moves up (parsimony). Only
+## significantly worse than the one above it moves up (parsimony). Two
+## candidates of as many added parameters that the validation record does
+## not tell apart (neither's correction significantly improves on the
+## other's) are put on the same footing: the one with the smaller BIC on
+## the estimation data, its added parameters counted, goes first. Only
 ## rows of one group (all simulated, or all using the validation output)
 ## are ranked together.
 function r = rank_rows (r, opts)
@@ -1111,23 +1115,51 @@ function r = rank_rows (r, opts)
   [~, order] = sort (key, "descend");
   r = r(order);
   sig = find ([r.significant]);
+  better_ = @(a, b) better_than (a, b, opts);
   changed = true;
-  while (changed)
+  sweeps = 0;
+  while (changed && sweeps < 4 * numel (r))
     changed = false;
+    sweeps++;
     for a = 1:numel (sig) - 1
       i = sig(a); j = sig(a+1);
-      if (r(j).nadd < r(i).nadd && strcmp (r(i).kind, r(j).kind))
-        t = residtrace_dmtest (r(j).e1, r(i).e1);
-        better = t.p_corr < opts.alpha && t.score >= opts.minscore;
+      same = strcmp (r(i).kind, r(j).kind);
+      if (r(j).nadd < r(i).nadd && same)
+        keep = better_ (r(i), r(j));
+      elseif (r(j).nadd == r(i).nadd && same
+              && strcmp (r(i).kind, "simulation"))
+        keep = better_ (r(i), r(j)) || better_ (r(j), r(i)) ...
+               || ! (footing_bic (r(j)) < footing_bic (r(i)));
       else
-        better = true;
+        keep = true;
       endif
-      if (! better)
+      if (! keep)
         r([i j]) = r([j i]);
         changed = true;
       endif
     endfor
   endwhile
+endfunction
+
+## Does a's correction significantly improve on b's validation error (the
+## encompassing test, p < alpha and a share >= minscore of what b leaves)?
+function b = better_than (a, b_, opts)
+  t = residtrace_dmtest (b_.e1, a.e1);
+  b = t.p_corr < opts.alpha && t.score >= opts.minscore;
+endfunction
+
+## A candidate's BIC on the estimation data with the parameters it adds
+## counted as nadd (a delay, which a fit does not count, is one): N log
+## s2 + (np - added by the fit + nadd) log N, up to the current model's
+## parameters, which every candidate shares. Inf when unknown.
+function b = footing_bic (row)
+  b = Inf;
+  m = row.model;
+  if (! isstruct (m) || ! all (isfield (m, {"bic", "np", "e_est"}))
+      || isempty (m.e_est) || ! isfinite (m.bic))
+    return;
+  endif
+  b = m.bic + (row.nadd - m.np) * log (numel (m.e_est));
 endfunction
 
 function f = cand_file (effect)

@@ -10,7 +10,11 @@
 ## here. Channel types:
 ## @table @code
 ## @item input
-## u(:, col)
+## u(:, col); with a fraction f = param in (0, 1) (a transport delay
+## that is not a whole number of samples: nk + f samples), the held input
+## delayed by f of a sample, (1 - f) u(k) + f u(k-1) (the shifted hold
+## replaced by the two held values with the same area and centre: exact
+## at low frequency, the error of order (w Ts)^2)
 ## @item const
 ## 1 (an offset entering with the input)
 ## @item signv
@@ -32,7 +36,9 @@
 ## param.hi] (a tank that overflows, a valve at its end stop); the model's
 ## F is then the part F_b after the node
 ## @end table
-## Works row by row as well (a 1-by-nu @var{u} and a scalar @var{v}).
+## Works row by row as well (a 1-by-nu @var{u} and a scalar @var{v});
+## a fractional delay needs the previous sample, so a row is taken as it
+## is.
 ## @end deftypefn
 
 function W = residtrace_channels (chans, u, v, y)
@@ -45,6 +51,10 @@ function W = residtrace_channels (chans, u, v, y)
     switch (c.type)
       case "input"
         W(:, j) = u(:, c.col);
+        if (! isempty (c.param) && c.param != 0 && rows (u) > 1)
+          w = u(:, c.col);
+          W(:, j) = (1 - c.param) * w + c.param * [w(1); w(1:end-1)];
+        endif
       case "const"
         W(:, j) = 1;
       case "signv"
