@@ -40,7 +40,11 @@
 ## @item 'viscous'
 ## the velocity coefficient of F freed when the model has it fixed at zero.
 ## @item 'delay'
-## the input delay nk raised by 1 .. @code{maxdelay} samples.
+## the input delay nk raised by 1 .. @code{maxdelay} samples, then
+## refined to a fraction of a sample (the held input delayed by f,
+## (1 - f) u(k) + f u(k-1)) when the BIC, the fraction counted, says so:
+## a transport delay is rarely a whole number of samples, and a rounded
+## one leaves an error that an extra pole or zero would take.
 ## @item 'order'
 ## one or two more poles, zeros.
 ## @item 'static_nonlinearity'
@@ -134,7 +138,10 @@
 ## ranked by score; one that adds fewer parameters moves ahead of a candidate of
 ## the same kind above it unless that one's extra correction is
 ## significant by the same rules (p < alpha and a share >= minscore of
-## what the simpler one leaves) (parsimony). The
+## what the simpler one leaves) (parsimony); two candidates of as many
+## added parameters whose corrections neither significantly improves on
+## the other's are ordered by their BIC on the estimation data, the
+## added parameters counted (same footing). The
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
 ## (thesis eqs. 2.8-2.13) with the added regressors; a real pole that a
