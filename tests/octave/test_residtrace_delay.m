@@ -13,7 +13,8 @@
 ## exactly for its held input (20 sub-steps per sample), and a model
 ## fitted by srivc without delay: residtrace names the delay, not an
 ## order change, sizes it to a fraction of a sample (3.5 +- 0.25) and
-## brings the validation error down to the noise.
+## brings the validation error down to the noise; the returned model,
+## simulated again by @code{residtrace_sim}, gives the same figure.
 ## @end itemize
 ## @example
 ## octave --no-gui -q --eval \
@@ -42,6 +43,10 @@ function test_residtrace_delay ()
   assert (R.effect, "delay");
   assert (R.evidence.value, 3.5, 0.25);
   assert (R.rmse_after < 1.3 * s);
+  ## the returned model carries the fraction: simulated again on the
+  ## validation record it gives the figure residtrace scored
+  [~, ~, rm] = residtrace_sim (R, iddata (yv, uv, Ts));
+  assert (rm, R.rmse_after, 1e-9 * R.rmse_after);
 endfunction
 
 ## The output of G for the held input u delayed by d samples: the input
