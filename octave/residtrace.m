@@ -462,6 +462,8 @@ function [R, varargout] = residtrace_body (varargin)
     lam_v = min (10 * max (abs (roots (Fp))), pi / D.Ts / 3);
   endif
   is_y = (numel (Mst.F) == 2);
+  ctx.lam_v = lam_v;                  # the velocity's filter (Coulomb)
+  ctx.vel_is_y = is_y;
   ## velocity columns: the default one (dy/dt, or y for a first-order
   ## model) and the output read as a velocity
   vel = @(y) [residtrace_velocity(y, D.Ts, lam_v, is_y), ...

@@ -40,34 +40,41 @@ function c = residtrace_cand_coulomb (cur, ctx)
   if (n == 1)
     kinds = {"y"}; vnames = {"sign(y)"};
   endif
-  tmpls = {}; names = {}; starts = {}; sigs = {};
-  for i = 1:numel (kinds)
-    col = ifelse_ (strcmp (kinds{i}, "y"), 2, 1);
-    s = sign (ctx.D.vhat(:, col));
-    if (numel (unique (s(s != 0))) < 2)
-      continue;
-    endif
-    t = cur;
-    t.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
-                                         "sign(v)");
-    tmpls{end+1} = t; names{end+1} = vnames{i}; starts{end+1} = {cur.F};
-    sigs{end+1} = s;
-    if (! any (strcmp ({cur.channels.type}, "const")) && ! cur.levels)
-      ## unequal levels for the two directions: sign(v) plus a constant
-      t2 = cur;
-      t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
-      t2.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
-                                            "sign(v)");
-      tmpls{end+1} = t2; names{end+1} = [vnames{i} ", asymmetric"];
-      starts{end+1} = {cur.F};
-      sigs{end+1} = s;
-    endif
-  endfor
+  [tmpls, names, starts, sigs] = variants_on (cur, ctx.D, kinds, vnames, "");
   if (isempty (tmpls))
     c.reason = "the velocity never changes sign";
     return;
   endif
   [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
+  ## the same with the velocity of the model's own output (the current
+  ## model's simulation, then the fitted candidate's): at rest the sign
+  ## of the measured velocity is the measurement noise's, correlated with
+  ## the equation error, and a body that sticks between the steps of its
+  ## input gets a sign(v) gain pushing along the motion; the model's
+  ## velocity is free of that noise, and is the one its simulation uses
+  if (isfield (ctx, "lam_v") && numel (cur.e_est) == numel (ctx.D.y))
+    x = ctx.D.y - cur.e_est;
+    for it = 1:2
+      Dm = ctx.D;
+      Dm.vhat = [residtrace_velocity(x, Dm.Ts, ctx.lam_v, ctx.vel_is_y), ...
+                 residtrace_velocity(x, Dm.Ts, ctx.lam_v, true)];
+      [t2, n2, st2, sg2] = variants_on (cur, Dm, kinds, vnames,
+                                        ", model's velocity");
+      if (isempty (t2))
+        break;
+      endif
+      [m2, v2] = residtrace_select (t2, n2, Dm, ctx, st2);
+      if (isempty (m2) || numel (m2.e_est) != numel (x))
+        break;
+      endif
+      c.variants = [c.variants(:); v2(:)];
+      if (isempty (m) || m2.bic < m.bic)
+        m = m2;
+        names = [names, n2]; sigs = [sigs, sg2];
+      endif
+      x = ctx.D.y - m2.e_est;
+    endfor
+  endif
   if (isempty (m))
     c.reason = "the estimation failed";
     c.failed = true;
@@ -109,6 +116,37 @@ function c = residtrace_cand_coulomb (cur, ctx)
                                          "(input units); corr(residual, ", ...
                                          "sign(v)/F) = %.2f"],
                                         -val / bu, sd / abs (bu), r));
+endfunction
+
+## The Coulomb variants on the record D (its velocity D.vhat): sign(v),
+## and sign(v) with a constant, for each kind of velocity that changes
+## sign; their names end with SUFFIX.
+function [tmpls, names, starts, sigs] = variants_on (cur, D, kinds, vnames,
+                                                    suffix)
+  tmpls = {}; names = {}; starts = {}; sigs = {};
+  for i = 1:numel (kinds)
+    col = ifelse_ (strcmp (kinds{i}, "y"), 2, 1);
+    s = sign (D.vhat(:, col));
+    if (numel (unique (s(s != 0))) < 2)
+      continue;
+    endif
+    t = cur;
+    t.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
+                                         "sign(v)");
+    tmpls{end+1} = t; names{end+1} = [vnames{i} suffix];
+    starts{end+1} = {cur.F};
+    sigs{end+1} = s;
+    if (! any (strcmp ({cur.channels.type}, "const")) && ! cur.levels)
+      ## unequal levels for the two directions: sign(v) plus a constant
+      t2 = cur;
+      t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
+      t2.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
+                                            "sign(v)");
+      tmpls{end+1} = t2; names{end+1} = [vnames{i} ", asymmetric" suffix];
+      starts{end+1} = {cur.F};
+      sigs{end+1} = s;
+    endif
+  endfor
 endfunction
 
 ## R^2 of s regressed on the inputs' levels (each distinct level of a
