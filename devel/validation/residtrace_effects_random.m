@@ -56,7 +56,8 @@
 ## draw; @var{which} the effect names to run, a cell or a comma-separated
 ## string (default all). @var{C} holds the records (y, u, yv, uv, Ts, the
 ## structure nn, a description); with @var{records_only} true they are
-## only drawn, not analysed.
+## only drawn, not analysed. A negative @var{ncases} -k draws the k-th
+## record of each effect alone (each record has a seed of its own).
 ## The rules of residtrace are not tuned on these records: they are a
 ## check.
 ## @end deftypefn
@@ -67,6 +68,10 @@ function [T, C] = residtrace_effects_random (ncases = 2, seed = 20261129,
   demo_prepare (outdir);
   if (ischar (which))
     which = strsplit (which, ",");
+  endif
+  ks = 1:ncases;
+  if (ncases < 0)
+    ks = -ncases;                 # that record alone (each has its seed)
   endif
   effects = {"none", "offset", "coulomb", "delay", "sinusoid", ...
              "saturation", "dead_zone", "order", "drift", "colored_noise"};
@@ -83,7 +88,7 @@ function [T, C] = residtrace_effects_random (ncases = 2, seed = 20261129,
     if (! isempty (which) && ! any (strcmp (which, effects{e})))
       continue;
     endif
-    for k = 1:ncases
+    for k = ks
       s = seed + 1000 * e + k;
       randn ("state", s); rand ("state", s);
       c = feval (["case_" effects{e}]);
@@ -134,7 +139,8 @@ endfunction
 
 function write_table (T, effects, right, outdir, ncases, seed)
   fid = fopen (fullfile (outdir, "residtrace_effects_random.md"), "w");
-  fprintf (fid, "%d random records per effect, seed %d.\n\n", ncases, seed);
+  fprintf (fid, "%d random records per effect, seed %d.\n\n", abs (ncases),
+           seed);
   fprintf (fid, ["| true effect | right name | named right | named ", ...
                  "instead (count) |\n|---|---|---|---|\n"]);
   tot = 0; n = 0;
