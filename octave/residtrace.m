@@ -33,9 +33,11 @@
 ## the regressor sign(v), v the velocity (SVF derivative of the measured
 ## output, filtered forward and backward, or the output itself when it is
 ## a velocity: both variants, BIC), as the thesis does for the throttle
-## (sec. 4.2, eq. 4.17); each also with the velocity of the model's own
+## (sec. 4.2, eq. 4.17); when none of these gives a friction (a gain
+## opposing the motion), each also with the velocity of the model's own
 ## output instead of the measured one (at rest the measured velocity's
-## sign is the noise's: a body that sticks), BIC choosing. Simulated honestly: sign() of the model's own
+## sign is the noise's: a body that sticks), BIC choosing among the
+## frictions. Simulated honestly: sign() of the model's own
 ## velocity, in sub-steps (option @code{"substeps"}). When sign(v) is
 ## explained by the input's levels (a two-level input through a velocity)
 ## the verdict is "not identifiable from these data".

@@ -15,7 +15,8 @@
 ## the share of samples moving forward, and @code{reversals}). A
 ## second variant adds a constant
 ## too (Coulomb levels that differ with the direction: sign(v) and an
-## offset). Each variant is fitted again with v the velocity of the
+## offset). When none of them gives a friction (a gain opposing the
+## motion), each is fitted again with v the velocity of the
 ## model's own output (the current model's simulation on the estimation
 ## record, then the fitted candidate's, twice), filtered the same way: at
 ## rest the sign of the measured velocity is the measurement noise's,
@@ -54,13 +55,16 @@ function c = residtrace_cand_coulomb (cur, ctx)
     return;
   endif
   [fits, c.variants] = fit_each (tmpls, names, ctx.D, ctx, starts);
-  ## the same with the velocity of the model's own output (the current
+  ## when no variant on the measured velocity gives a friction, the
+  ## same with the velocity of the model's own output (the current
   ## model's simulation, then the fitted candidate's): at rest the sign
   ## of the measured velocity is the measurement noise's, correlated with
   ## the equation error, and a body that sticks between the steps of its
   ## input gets a sign(v) gain pushing along the motion; the model's
   ## velocity is free of that noise, and is the one its simulation uses
-  if (isfield (ctx, "lam_v") && numel (cur.e_est) == numel (ctx.D.y))
+  m = choose (fits);
+  if ((isempty (m) || m.theta(end) >= 0)
+      && isfield (ctx, "lam_v") && numel (cur.e_est) == numel (ctx.D.y))
     x = ctx.D.y - cur.e_est;
     for it = 1:2
       Dm = ctx.D;
