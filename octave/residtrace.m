@@ -33,14 +33,22 @@
 ## the regressor sign(v), v the velocity (SVF derivative of the measured
 ## output, filtered forward and backward, or the output itself when it is
 ## a velocity: both variants, BIC), as the thesis does for the throttle
-## (sec. 4.2, eq. 4.17). Simulated honestly: sign() of the model's own
+## (sec. 4.2, eq. 4.17); when none of these gives a friction (a gain
+## opposing the motion), each also with the velocity of the model's own
+## output instead of the measured one (at rest the measured velocity's
+## sign is the noise's: a body that sticks), BIC choosing among the
+## frictions. Simulated honestly: sign() of the model's own
 ## velocity, in sub-steps (option @code{"substeps"}). When sign(v) is
 ## explained by the input's levels (a two-level input through a velocity)
 ## the verdict is "not identifiable from these data".
 ## @item 'viscous'
 ## the velocity coefficient of F freed when the model has it fixed at zero.
 ## @item 'delay'
-## the input delay nk raised by 1 .. @code{maxdelay} samples.
+## the input delay nk raised by 1 .. @code{maxdelay} samples, then
+## refined to a fraction of a sample (the held input delayed by f,
+## (1 - f) u(k) + f u(k-1)) when the BIC, the fraction counted, says so:
+## a transport delay is rarely a whole number of samples, and a rounded
+## one leaves an error that an extra pole or zero would take.
 ## @item 'order'
 ## one or two more poles, zeros.
 ## @item 'static_nonlinearity'
@@ -134,7 +142,10 @@
 ## ranked by score; one that adds fewer parameters moves ahead of a candidate of
 ## the same kind above it unless that one's extra correction is
 ## significant by the same rules (p < alpha and a share >= minscore of
-## what the simpler one leaves) (parsimony). The
+## what the simpler one leaves) (parsimony); two candidates of as many
+## added parameters whose corrections neither significantly improves on
+## the other's are ordered by their BIC on the estimation data, the
+## added parameters counted (same footing). The
 ## variant of each effect (which delay, which nonlinearity, ...) is chosen
 ## on the estimation data by BIC. All models are estimated by SRIVC
 ## (thesis eqs. 2.8-2.13) with the added regressors; a real pole that a
@@ -455,6 +466,8 @@ function [R, varargout] = residtrace_body (varargin)
     lam_v = min (10 * max (abs (roots (Fp))), pi / D.Ts / 3);
   endif
   is_y = (numel (Mst.F) == 2);
+  ctx.lam_v = lam_v;                  # the velocity's filter (Coulomb)
+  ctx.vel_is_y = is_y;
   ## velocity columns: the default one (dy/dt, or y for a first-order
   ## model) and the output read as a velocity
   vel = @(y) [residtrace_velocity(y, D.Ts, lam_v, is_y), ...
@@ -1098,7 +1111,11 @@ function out = guarded (effect, f)
 endfunction
 
 ## Significant first by score; a simpler candidate that is not
-## significantly worse than the one above it moves up (parsimony). Only
+## significantly worse than the one above it moves up (parsimony). Two
+## candidates of as many added parameters that the validation record does
+## not tell apart (neither's correction significantly improves on the
+## other's) are put on the same footing: the one with the smaller BIC on
+## the estimation data, its added parameters counted, goes first. Only
 ## rows of one group (all simulated, or all using the validation output)
 ## are ranked together.
 function r = rank_rows (r, opts)
@@ -1111,23 +1128,51 @@ function r = rank_rows (r, opts)
   [~, order] = sort (key, "descend");
   r = r(order);
   sig = find ([r.significant]);
+  better_ = @(a, b) better_than (a, b, opts);
   changed = true;
-  while (changed)
+  sweeps = 0;
+  while (changed && sweeps < 4 * numel (r))
     changed = false;
+    sweeps++;
     for a = 1:numel (sig) - 1
       i = sig(a); j = sig(a+1);
-      if (r(j).nadd < r(i).nadd && strcmp (r(i).kind, r(j).kind))
-        t = residtrace_dmtest (r(j).e1, r(i).e1);
-        better = t.p_corr < opts.alpha && t.score >= opts.minscore;
+      same = strcmp (r(i).kind, r(j).kind);
+      if (r(j).nadd < r(i).nadd && same)
+        keep = better_ (r(i), r(j));
+      elseif (r(j).nadd == r(i).nadd && same
+              && strcmp (r(i).kind, "simulation"))
+        keep = better_ (r(i), r(j)) || better_ (r(j), r(i)) ...
+               || ! (footing_bic (r(j)) < footing_bic (r(i)));
       else
-        better = true;
+        keep = true;
       endif
-      if (! better)
+      if (! keep)
         r([i j]) = r([j i]);
         changed = true;
       endif
     endfor
   endwhile
+endfunction
+
+## Does a's correction significantly improve on b's validation error (the
+## encompassing test, p < alpha and a share >= minscore of what b leaves)?
+function b = better_than (a, b_, opts)
+  t = residtrace_dmtest (b_.e1, a.e1);
+  b = t.p_corr < opts.alpha && t.score >= opts.minscore;
+endfunction
+
+## A candidate's BIC on the estimation data with the parameters it adds
+## counted as nadd (a delay, which a fit does not count, is one): N log
+## s2 + (np - added by the fit + nadd) log N, up to the current model's
+## parameters, which every candidate shares. Inf when unknown.
+function b = footing_bic (row)
+  b = Inf;
+  m = row.model;
+  if (! isstruct (m) || ! all (isfield (m, {"bic", "np", "e_est"}))
+      || isempty (m.e_est) || ! isfinite (m.bic))
+    return;
+  endif
+  b = m.bic + (row.nadd - m.np) * log (numel (m.e_est));
 endfunction
 
 function f = cand_file (effect)

@@ -15,7 +15,16 @@
 ## the share of samples moving forward, and @code{reversals}). A
 ## second variant adds a constant
 ## too (Coulomb levels that differ with the direction: sign(v) and an
-## offset); the BIC on the estimation data chooses. A fitted b_s > 0 (F
+## offset). When none of them gives a friction (a gain opposing the
+## motion), each is fitted again with v the velocity of the
+## model's own output (the current model's simulation on the estimation
+## record, then the fitted candidate's, twice), filtered the same way: at
+## rest the sign of the measured velocity is the measurement noise's,
+## correlated with the equation error (a body that sticks between the
+## steps of its input then gets a gain pushing along the motion), while
+## the model's velocity is free of it and is the one its simulation
+## uses. The BIC on the estimation data chooses among the variants whose
+## fitted gain opposes the motion (a friction), among all when none does. A fitted b_s > 0 (F
 ## being monic, a force along the motion) is not friction: the candidate
 ## is then reported as not applicable, and so is a sign(v) that the
 ## input's levels and a constant explain to more than 90 % (R^2; with a
@@ -40,34 +49,45 @@ function c = residtrace_cand_coulomb (cur, ctx)
   if (n == 1)
     kinds = {"y"}; vnames = {"sign(y)"};
   endif
-  tmpls = {}; names = {}; starts = {}; sigs = {};
-  for i = 1:numel (kinds)
-    col = ifelse_ (strcmp (kinds{i}, "y"), 2, 1);
-    s = sign (ctx.D.vhat(:, col));
-    if (numel (unique (s(s != 0))) < 2)
-      continue;
-    endif
-    t = cur;
-    t.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
-                                         "sign(v)");
-    tmpls{end+1} = t; names{end+1} = vnames{i}; starts{end+1} = {cur.F};
-    sigs{end+1} = s;
-    if (! any (strcmp ({cur.channels.type}, "const")) && ! cur.levels)
-      ## unequal levels for the two directions: sign(v) plus a constant
-      t2 = cur;
-      t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
-      t2.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
-                                            "sign(v)");
-      tmpls{end+1} = t2; names{end+1} = [vnames{i} ", asymmetric"];
-      starts{end+1} = {cur.F};
-      sigs{end+1} = s;
-    endif
-  endfor
+  [tmpls, names, starts, sigs] = variants_on (cur, ctx.D, kinds, vnames, "");
   if (isempty (tmpls))
     c.reason = "the velocity never changes sign";
     return;
   endif
-  [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
+  [fits, c.variants] = fit_each (tmpls, names, ctx.D, ctx, starts);
+  ## when no variant on the measured velocity gives a friction, the
+  ## same with the velocity of the model's own output (the current
+  ## model's simulation, then the fitted candidate's): at rest the sign
+  ## of the measured velocity is the measurement noise's, correlated with
+  ## the equation error, and a body that sticks between the steps of its
+  ## input gets a sign(v) gain pushing along the motion; the model's
+  ## velocity is free of that noise, and is the one its simulation uses
+  m = choose (fits);
+  if ((isempty (m) || m.theta(end) >= 0)
+      && isfield (ctx, "lam_v") && numel (cur.e_est) == numel (ctx.D.y))
+    x = ctx.D.y - cur.e_est;
+    for it = 1:2
+      Dm = ctx.D;
+      Dm.vhat = [residtrace_velocity(x, Dm.Ts, ctx.lam_v, ctx.vel_is_y), ...
+                 residtrace_velocity(x, Dm.Ts, ctx.lam_v, true)];
+      [t2, n2, st2, sg2] = variants_on (cur, Dm, kinds,
+                                        strcat (vnames, sprintf (
+                                          ", model's velocity (%d)", it)),
+                                        "");
+      if (isempty (t2))
+        break;
+      endif
+      [f2, v2] = fit_each (t2, n2, Dm, ctx, st2);
+      c.variants = [c.variants(:); v2(:)];
+      fits = [fits, f2]; names = [names, n2]; sigs = [sigs, sg2];
+      m2 = choose (f2);
+      if (isempty (m2) || numel (m2.e_est) != numel (x))
+        break;
+      endif
+      x = ctx.D.y - m2.e_est;
+    endfor
+  endif
+  m = choose (fits);
   if (isempty (m))
     c.reason = "the estimation failed";
     c.failed = true;
@@ -109,6 +129,68 @@ function c = residtrace_cand_coulomb (cur, ctx)
                                          "(input units); corr(residual, ", ...
                                          "sign(v)/F) = %.2f"],
                                         -val / bu, sd / abs (bu), r));
+endfunction
+
+## Each template fitted on its own (to convergence): a cell of the fitted
+## models (the failed ones empty) and the table of their BIC.
+function [fits, table] = fit_each (tmpls, names, D, ctx, starts)
+  fits = cell (1, numel (tmpls));
+  table = [];
+  for i = 1:numel (tmpls)
+    [m, t] = residtrace_select (tmpls(i), names(i), D, ctx, starts(i));
+    fits{i} = m;
+    table = [table; t(:)];
+  endfor
+endfunction
+
+## The variant with the smallest BIC among those whose sign(v) gain
+## opposes the motion (a friction: b_s < 0, F monic); when none does,
+## the smallest BIC of all (which is then reported as no friction).
+function best = choose (fits)
+  best = [];
+  ok = ! cellfun (@isempty, fits);
+  if (! any (ok))
+    return;
+  endif
+  f = fits(ok);
+  bic = cellfun (@(m) m.bic, f);
+  fric = cellfun (@(m) m.theta(end) < 0, f);
+  if (any (fric))
+    bic(! fric) = Inf;
+  endif
+  [~, i] = min (bic);
+  best = f{i};
+endfunction
+
+## The Coulomb variants on the record D (its velocity D.vhat): sign(v),
+## and sign(v) with a constant, for each kind of velocity that changes
+## sign; their names end with SUFFIX.
+function [tmpls, names, starts, sigs] = variants_on (cur, D, kinds, vnames,
+                                                    suffix)
+  tmpls = {}; names = {}; starts = {}; sigs = {};
+  for i = 1:numel (kinds)
+    col = ifelse_ (strcmp (kinds{i}, "y"), 2, 1);
+    s = sign (D.vhat(:, col));
+    if (numel (unique (s(s != 0))) < 2)
+      continue;
+    endif
+    t = cur;
+    t.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
+                                         "sign(v)");
+    tmpls{end+1} = t; names{end+1} = [vnames{i} suffix];
+    starts{end+1} = {cur.F};
+    sigs{end+1} = s;
+    if (! any (strcmp ({cur.channels.type}, "const")) && ! cur.levels)
+      ## unequal levels for the two directions: sign(v) plus a constant
+      t2 = cur;
+      t2.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "offset");
+      t2.channels(end+1) = residtrace_chan ("signv", 0, kinds{i}, 1, 0,
+                                            "sign(v)");
+      tmpls{end+1} = t2; names{end+1} = [vnames{i} ", asymmetric" suffix];
+      starts{end+1} = {cur.F};
+      sigs{end+1} = s;
+    endif
+  endfor
 endfunction
 
 ## R^2 of s regressed on the inputs' levels (each distinct level of a

@@ -7,7 +7,19 @@
 ## channel raised by 1 .. @code{ctx.opts.maxdelay} samples. Every delay is
 ## screened with three SRIVC iterations from the current model, the two
 ## best are iterated to convergence from their screening estimates and
-## the one with the smallest BIC on the estimation data is kept. Evidence: the chosen delay (samples and
+## the one with the smallest BIC on the estimation data is kept. A
+## transport delay need not be a whole number of samples: the delay is
+## then refined continuously between its neighbours (nk - 1, nk + 1),
+## the fraction f of a sample entering as the held input delayed by f
+## (@code{residtrace_channels}), by a golden-section search of the BIC,
+## each delay screened with three SRIVC iterations, the best one iterated
+## to convergence; it replaces the whole number when its BIC is lower by
+## more than log N (the fraction counted as one more parameter), so that
+## a delay of whole samples stays one. (Not in a closed loop, whose
+## controlled input is formed sample by sample, nor in a physical
+## realisation.) An extra pole or zero mimics a delay that is rounded to
+## whole samples; with its fraction the delay is compared with the order
+## candidate on the same footing. Evidence: the chosen delay (samples and
 ## seconds) and the lag at which the prewhitened cross-correlation of the
 ## current residual with the input peaks.
 ## @end deftypefn
@@ -55,10 +67,17 @@ function c = residtrace_cand_delay (cur, ctx)
     c.failed = true;
     return;
   endif
+  if (isempty (ctx.D.loop) && ! (isfield (cur, "phys") && ! isempty (cur.phys)))
+    best = refine_fraction (best, bj, cur, ctx);
+  endif
   c.applicable = true;
   c.model = best;
-  nk = best.channels(bj).nk;
-  c.variant = sprintf ("nk = %d on %s", nk, best.channels(bj).name);
+  nk = best.channels(bj).nk + frac (best.channels(bj));
+  if (nk == fix (nk))
+    c.variant = sprintf ("nk = %d on %s", nk, best.channels(bj).name);
+  else
+    c.variant = sprintf ("nk = %.2f on %s", nk, best.channels(bj).name);
+  endif
   c.nadd = 1;
   w = residtrace_whiteness (cur.e_est, ctx.D.u(:, cur.channels(bj).col),
                            max (ctx.opts.maxlag, D + 1));
@@ -71,9 +90,69 @@ function c = residtrace_cand_delay (cur, ctx)
   c.evidence = struct ("term", "nk", "value", nk, "std", NaN,
                        "physical", nk * ctx.D.Ts, "physical_std", NaN,
                        "xcorr_peak_lag", peak,
-                       "text", sprintf (["delay nk = %d samples (%.4g s, ", ...
+                       "text", sprintf (["delay nk = %.4g samples (%.4g s, ", ...
                                          "+%d); residual-input ", ...
                                          "cross-correlation peaks at lag ", ...
                                          "%d"],
                                         nk, nk * ctx.D.Ts, bd, peak));
+endfunction
+
+## The fraction of a sample of an input channel's delay (0: whole samples).
+function f = frac (ch)
+  f = 0;
+  if (! isempty (ch.param) && isnumeric (ch.param))
+    f = ch.param;
+  endif
+endfunction
+
+## The delay of channel j of BEST (whole samples) refined continuously
+## between nk - 1 and nk + 1 (not below the current model's delay): a
+## golden-section search of the BIC, each delay fitted with three SRIVC
+## iterations from BEST; the best delay is iterated to convergence and
+## kept when its BIC is lower than BEST's by more than log N.
+function best = refine_fraction (best, j, cur, ctx)
+  nk = best.channels(j).nk;
+  d0 = cur.channels(j).nk + frac (cur.channels(j));
+  lo = max (nk - 1, d0 + 0.05); hi = nk + 1;
+  if (! (hi > lo))
+    return;
+  endif
+  quick = ctx;
+  quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
+  fit = @(d, c) fit_delay (d, best, j, c);
+  g = (sqrt (5) - 1) / 2;
+  x1 = hi - g * (hi - lo); x2 = lo + g * (hi - lo);
+  b1 = fit (x1, quick).bic; b2 = fit (x2, quick).bic;
+  for it = 1:7
+    if (b1 < b2)
+      hi = x2; x2 = x1; b2 = b1;
+      x1 = hi - g * (hi - lo); b1 = fit (x1, quick).bic;
+    else
+      lo = x1; x1 = x2; b1 = b2;
+      x2 = lo + g * (hi - lo); b2 = fit (x2, quick).bic;
+    endif
+  endfor
+  d = ifelse_ (b1 < b2, x1, x2);
+  m = fit (d, ctx);
+  if (m.ok && m.bic < best.bic - log (numel (ctx.D.y)))
+    best = m;
+  endif
+endfunction
+
+function m = fit_delay (d, tmpl, j, ctx)
+  t = tmpl;
+  t.channels(j).nk = floor (d);
+  t.channels(j).param = d - floor (d);
+  m = residtrace_fit (t, ctx.D, ctx, {tmpl.F});
+  if (! m.ok)
+    m.bic = Inf;
+  endif
+endfunction
+
+function v = ifelse_ (c, a, b)
+  if (c)
+    v = a;
+  else
+    v = b;
+  endif
 endfunction

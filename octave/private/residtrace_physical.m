@@ -60,8 +60,13 @@ function p = residtrace_physical (model, Ts)
   for k = 1:numel (z)
     p(end+1) = struct ("name", "zero", "value", z(k), "std", NaN);
   endfor
-  if (ch1.nk > 0)
-    p(end+1) = struct ("name", "delay (s)", "value", ch1.nk * Ts, "std", NaN);
+  f = 0;
+  if (strcmp (ch1.type, "input") && ! isempty (ch1.param))
+    f = ch1.param;                # a fraction of a sample
+  endif
+  if (ch1.nk + f > 0)
+    p(end+1) = struct ("name", "delay (s)", "value", (ch1.nk + f) * Ts,
+                       "std", NaN);
   endif
   ib0 = idxB{1}(end);
   if (numel (b) == 1 && r == 1 && n == 2)

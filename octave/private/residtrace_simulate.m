@@ -69,7 +69,8 @@ function [y, x, uc] = residtrace_simulate (model, u, Ts, loop, substeps, thm)
   needs_loop = (! isempty (loop) || any (strcmp ({chans.type}, "signv"))
                 || any (strcmp ({chans.type}, "ypower")));
   if (! isempty (thm) && ! needs_loop && numel (chans) == 1
-      && strcmp (chans.type, "input"))
+      && strcmp (chans.type, "input")
+      && (isempty (chans.param) || chans.param == 0))
     n = numel (model.F) - 1;
     nb = chans.nb;
     T = repmat ([model.F(2:end), zeros(1, nb)], N, 1);
@@ -143,6 +144,11 @@ function [x, uc] = loop_sim (model, u, Ts, loop, substeps, thm)
       endif
       switch (types{j})
         case "input"
+          if (! isempty (chans(j).param) && chans(j).param != 0)
+            error ("residtrace:notSupported",
+                   ["residtrace: a delay of a fraction of a sample on ", ...
+                    "the controlled input"]);
+          endif
           kind(j) = 4;
         case "power"
           kind(j) = 5; param(j) = chans(j).param;
