@@ -565,11 +565,18 @@ Status ss_bc_gpmf(const MultiRecordView<S>& record,
     const S gain = svf_gain(order, settings.lambda[i], true);
     channel.step(disc, gain, S(0));
     Matrix<S> W = Matrix<S>::Zero(order + 1, order + 1);
+    // The filter is stable (all its poles at -lambda): once the impulse
+    // response (whose first n_i + 1 outputs are the state) has fallen to
+    // 1e-16 of its largest norm, the rest of the sum is below rounding.
+    S largest = 0;
     for (Eigen::Index t = 0; t + 1 < count; ++t) {
       channel.step(disc, gain, t == 0 ? S(1) : S(0));
       const Vector<S>& g = channel.outputs();
       const S weight = static_cast<S>(count - std::max(t + 1, first));
       W.noalias() += weight * g * g.transpose();
+      const S size = g.squaredNorm();
+      largest = std::max(largest, size);
+      if (t > order && size <= S(1e-32) * largest) break;
     }
     e.D.assign(p, Matrix<S>::Zero(phi.cols(), phi.cols()));
     e.d = Vector<S>::Zero(phi.cols());
