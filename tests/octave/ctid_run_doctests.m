@@ -9,6 +9,12 @@ function ctid_run_doctests (file)
   root = ctid_test_root ();
   addpath (fullfile (root, "octave"));
   target = fullfile (root, "octave", file);
+  [dir, ~] = fileparts (target);
+  if (strcmp (fileparts (file), "private"))
+    ## a private function's tests call it (and its neighbours) by name
+    addpath (dir);
+    cleanup = onCleanup (@() rmpath (dir));
+  endif
   [n, nmax] = test (target, "quiet", stdout);
   printf ("%s: %d of %d tests passed\n", file, n, nmax);
   if (nmax == 0)
