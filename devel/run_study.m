@@ -87,11 +87,17 @@ function report = run_study (name, varargin)
   printf ("report: %s\n", report);
 endfunction
 
+## An argument as text for the report's name: a cell's elements joined
+## (mat2str takes numbers, logicals and characters only).
 function s = disp_arg (a)
   if (ischar (a))
     s = a;
-  else
+  elseif (iscell (a))
+    s = strjoin (cellfun (@disp_arg, a, "UniformOutput", false), "_");
+  elseif (isnumeric (a) || islogical (a))
     s = mat2str (a);
+  else
+    s = class (a);
   endif
 endfunction
 
@@ -188,11 +194,16 @@ function write_report (report, name, args, info, failure, output, workdir, ...
   endfor
 endfunction
 
+## An argument as the call in the report's title writes it.
 function s = quoted_arg (a)
   if (ischar (a))
     s = ["\"" a "\""];
-  else
+  elseif (iscell (a))
+    s = ["{" strjoin(cellfun (@quoted_arg, a, "UniformOutput", false), ", ") "}"];
+  elseif (isnumeric (a) || islogical (a))
     s = mat2str (a);
+  else
+    s = ["<" class(a) ">"];
   endif
 endfunction
 
@@ -234,7 +245,7 @@ endfunction
 %! fprintf (fid, "  error ('study:odd', 'odd count %%d', n);\nend\n");
 %! fclose (fid);
 %! addpath (d);
-%! r1 = r2 = "";
+%! r1 = r2 = r3 = "";
 %! unwind_protect
 %!   r1 = run_study ("tiny_study_for_test");
 %!   s = fileread (r1);
@@ -247,12 +258,17 @@ endfunction
 %!   s = fileread (r2);
 %!   assert (! isempty (strfind (s, "# failing_study_for_test (3)")));
 %!   assert (! isempty (strfind (s, "failed: odd count 3 (study:odd)")));
+%!   ## a cell argument (a list of cases) is written into the name and title
+%!   r3 = run_study ("failing_study_for_test", {"tanks", 2});
+%!   s = fileread (r3);
+%!   assert (! isempty (strfind (s, '# failing_study_for_test ({"tanks", 2})')));
+%!   assert (! isempty (strfind (r3, "tanks_2")));
 %! unwind_protect_cleanup
 %!   evalin ("base", "clear f");
 %!   rmpath (d);
 %!   confirm_recursive_rmdir (false, "local");
 %!   rmdir (d, "s");
-%!   for r = {r1, r2}
+%!   for r = {r1, r2, r3}
 %!     if (exist (r{1}, "file")) delete (r{1}); rmdir (r{1}(1:end-3), "s"); endif
 %!   endfor
 %! end_unwind_protect
