@@ -16,10 +16,10 @@ namespace test {
 
 // b(p) / f(p) driven by v (fine samples, held or linear between them over
 // the fine step h), output at every fine sample; f monic [1 f1 .. fn].
-std::vector<double> simulate_fine(const Eigen::VectorXd& f,
-                                  const Eigen::VectorXd& b,
-                                  const std::vector<double>& v, double h,
-                                  bool foh) {
+inline std::vector<double> simulate_fine(const Eigen::VectorXd& f,
+                                         const Eigen::VectorXd& b,
+                                         const std::vector<double>& v, double h,
+                                         bool foh) {
   const int n = static_cast<int>(f.size()) - 1;
   // Controllable canonical form, x = [w^(n-1) .. w], y = sum b_k p^k w.
   Eigen::MatrixXd big = Eigen::MatrixXd::Zero(n + 2, n + 2);
@@ -52,9 +52,9 @@ struct Record {
 
 // u on the coarse grid (every `ratio` fine steps), the system delayed by
 // `delay_steps` fine steps; fine input 0 before the start.
-Record make_record(const Eigen::VectorXd& f, const Eigen::VectorXd& b,
-                   const std::vector<double>& u, int ratio, double h,
-                   int delay_steps, bool foh) {
+inline Record make_record(const Eigen::VectorXd& f, const Eigen::VectorXd& b,
+                          const std::vector<double>& u, int ratio, double h,
+                          int delay_steps, bool foh) {
   const int n = static_cast<int>(u.size());
   const int fine = (n - 1) * ratio + 1;
   std::vector<double> v(fine, 0.0);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ctid/offline/output_error_options.hpp"
+#include "delayed_record.hpp"
 #include "test_util.hpp"
 
 namespace ctid {
@@ -20,34 +21,7 @@ namespace {
 
 using test::binary_input;
 using test::relative_error;
-
-// b(p)/f(p) (f monic [1 f1 .. fn], b descending) driven by v held (ZOH)
-// or linear (FOH) between samples Ts, state-space matrix exponential.
-std::vector<double> simulate(const Eigen::VectorXd& f, const Eigen::VectorXd& b,
-                             const std::vector<double>& v, double h, bool foh) {
-  const int n = static_cast<int>(f.size()) - 1;
-  Eigen::MatrixXd big = Eigen::MatrixXd::Zero(n + 2, n + 2);
-  for (int i = 0; i < n; ++i) big(0, i) = -f(i + 1) * h;
-  for (int i = 1; i < n; ++i) big(i, i - 1) = h;
-  big(0, n) = h;
-  big(n, n + 1) = 1;
-  const Eigen::MatrixXd e = big.exp();
-  const Eigen::MatrixXd phi = e.topLeftCorner(n, n);
-  const Eigen::VectorXd g0 = e.block(0, n, n, 1), g1 = e.block(0, n + 1, n, 1);
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
-  const int nb = static_cast<int>(b.size());
-  for (int l = 0; l < nb; ++l) c(n - nb + l) = b(l);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  std::vector<double> y(v.size());
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    if (k > 0) {
-      x = phi * x + g0 * v[k - 1];
-      if (foh) x += g1 * (v[k] - v[k - 1]);
-    }
-    y[k] = c.dot(x);
-  }
-  return y;
-}
+using test::simulate_fine;  // the exact simulation, delayed_record.hpp
 
 OeData<double> make_data(const std::vector<double>& y,
                          const std::vector<double>& u, double ts) {
@@ -64,7 +38,7 @@ TEST(OutputError, ContinuousNoiseFreeZohIsExact) {
   Eigen::VectorXd f(3), b(2);
   f << 1, 1.2, 4;
   b << 1.5, 4;
-  const std::vector<double> y = simulate(f, b, u, 0.05, false);
+  const std::vector<double> y = simulate_fine(f, b, u, 0.05, false);
   OeStructure s;
   s.nf = 2;
   s.nb = 2;
@@ -84,7 +58,7 @@ TEST(OutputError, ContinuousFohFromAPerturbedStartIsExact) {
   Eigen::VectorXd f(3), b(1);
   f << 1, 0.8, 9;
   b << 9;
-  const std::vector<double> y = simulate(f, b, u, 0.02, true);
+  const std::vector<double> y = simulate_fine(f, b, u, 0.02, true);
   OeStructure s;
   s.nf = 2;
   s.nb = 1;
@@ -110,7 +84,7 @@ TEST(OutputError, ContinuousFractionalDelayIsExact) {
   Eigen::VectorXd f(2), b(1);
   f << 1, 2;
   b << 3;
-  const std::vector<double> yf = simulate(f, b, shifted, 0.05, false);
+  const std::vector<double> yf = simulate_fine(f, b, shifted, 0.05, false);
   std::vector<double> y(coarse.size());
   for (std::size_t k = 0; k < y.size(); ++k) y[k] = yf[2 * k];
   OeStructure s;
@@ -137,7 +111,7 @@ TEST(OutputError, ContinuousDelayIsEstimatedWithinItsBounds) {
   Eigen::VectorXd f(3), b(2);
   f << 1, 1.4, 2;
   b << 0.5, 3;
-  const std::vector<double> yf = simulate(f, b, shifted, 0.05, false);
+  const std::vector<double> yf = simulate_fine(f, b, shifted, 0.05, false);
   std::vector<double> y(coarse.size());
   for (std::size_t k = 0; k < y.size(); ++k) y[k] = yf[2 * k];
   OeStructure s;
@@ -265,8 +239,8 @@ TEST(OutputError, TwoInputContinuousNoiseFreeIsExact) {
   b1 << 1.5, 4;
   f2 << 1, 0.8;
   b2 << 2;
-  const std::vector<double> x1 = simulate(f1, b1, u1, 0.05, false);
-  const std::vector<double> x2 = simulate(f2, b2, u2, 0.05, false);
+  const std::vector<double> x1 = simulate_fine(f1, b1, u1, 0.05, false);
+  const std::vector<double> x2 = simulate_fine(f2, b2, u2, 0.05, false);
   std::vector<double> y(x1.size()), u(u1);
   for (std::size_t k = 0; k < y.size(); ++k) y[k] = x1[k] + x2[k];
   u.insert(u.end(), u2.begin(), u2.end());
@@ -343,7 +317,7 @@ TEST(OutputErrorOptions, ConfigByNameGivesTheSameEstimate) {
   Eigen::VectorXd f(3), b(2);
   f << 1, 1.2, 4;
   b << 1.5, 4;
-  const std::vector<double> y = simulate(f, b, u, 0.05, true);
+  const std::vector<double> y = simulate_fine(f, b, u, 0.05, true);
   const auto& table = output_error_options<double>();
   OeConfig<double> config;
   OptionValue v;
@@ -476,7 +450,7 @@ TEST(OutputError, BadInputAndNonConvergenceAreReported) {
   Eigen::VectorXd f(2), b(1);
   f << 1, 2;
   b << 3;
-  const std::vector<double> y2 = simulate(f, b, u, 0.1, false);
+  const std::vector<double> y2 = simulate_fine(f, b, u, 0.1, false);
   settings.theta_init = Eigen::Vector2d(0.5, 0.2);
   settings.max_iterations = 1;
   const Status st = output_error(s, settings, make_data(y2, u, 0.1), &r);
