@@ -370,27 +370,19 @@ Status simulate_state_space(const Matrix<S>& A, const Matrix<S>& B,
   return Status::Ok();
 }
 
-}  // namespace gpmf_detail
-
-// Least-squares GPMF estimate of the canonical state-space model (sslsgpmf).
-template <typename S>
-Status ss_ls_gpmf(const MultiRecordView<S>& record,
-                  const GpmfSettings<S>& settings,
-                  StateSpaceEstimate<S>* estimate) {
-  Status status = gpmf_detail::validate(record, settings);
-  if (!status.ok()) return status;
+// The canonical model from one estimate per output equation:
+// solve(i, &part) returns the parameters of output i's equation (or a
+// failure), stacked in output order.
+template <typename S, typename Solve>
+Status estimate_by_output(const MultiRecordView<S>& record,
+                          const GpmfSettings<S>& settings, Solve&& solve,
+                          StateSpaceEstimate<S>* estimate) {
   const int p = static_cast<int>(record.num_outputs);
   std::vector<Vector<S>> parts(p);
   Eigen::Index total = 0;
   for (int i = 0; i < p; ++i) {
-    Matrix<S> phi;
-    Vector<S> zeta;
-    gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta);
-    if (!gpmf_detail::least_squares(phi, zeta, &parts[i])) {
-      return numerical_failure(
-          "the GPMF regression of output " + std::to_string(i + 1) +
-          " is rank deficient (input not exciting enough, or nni too large)");
-    }
+    const Status status = solve(i, &parts[i]);
+    if (!status.ok()) return status;
     total += parts[i].size();
   }
   Vector<S> theta(total);
@@ -399,9 +391,31 @@ Status ss_ls_gpmf(const MultiRecordView<S>& record,
     theta.segment(offset, part.size()) = part;
     offset += part.size();
   }
-  return gpmf_detail::canonical_model(settings.observability_indices,
-                                      static_cast<int>(record.num_inputs),
-                                      theta, estimate);
+  return canonical_model(settings.observability_indices,
+                         static_cast<int>(record.num_inputs), theta, estimate);
+}
+
+}  // namespace gpmf_detail
+
+// Least-squares GPMF estimate of the canonical state-space model (sslsgpmf).
+template <typename S>
+Status ss_ls_gpmf(const MultiRecordView<S>& record,
+                  const GpmfSettings<S>& settings,
+                  StateSpaceEstimate<S>* estimate) {
+  const Status status = gpmf_detail::validate(record, settings);
+  if (!status.ok()) return status;
+  auto solve = [&](int i, Vector<S>* part) -> Status {
+    Matrix<S> phi;
+    Vector<S> zeta;
+    gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta);
+    if (!gpmf_detail::least_squares(phi, zeta, part)) {
+      return numerical_failure(
+          "the GPMF regression of output " + std::to_string(i + 1) +
+          " is rank deficient (input not exciting enough, or nni too large)");
+    }
+    return Status::Ok();
+  };
+  return gpmf_detail::estimate_by_output(record, settings, solve, estimate);
 }
 
 // Instrumental-variable GPMF estimate (ssivgpmf): the instruments are the
@@ -423,10 +437,7 @@ Status ss_iv_gpmf(const MultiRecordView<S>& record,
   Matrix<S> y_hat;
   status = gpmf_detail::simulate_state_space(ls.A, ls.B, ls.C, record, &y_hat);
   if (!status.ok()) return status;
-  const int p = static_cast<int>(record.num_outputs);
-  Vector<S> theta(ls.theta.size());
-  Eigen::Index offset = 0;
-  for (int i = 0; i < p; ++i) {
+  auto solve = [&](int i, Vector<S>* part) -> Status {
     Matrix<S> phi, psi;
     Vector<S> zeta, unused;
     gpmf_detail::gpmf_regressors(record, settings, i, record.y, &phi, &zeta);
@@ -438,13 +449,10 @@ Status ss_iv_gpmf(const MultiRecordView<S>& record,
       return numerical_failure("the IV normal matrix of output " +
                                std::to_string(i + 1) + " is singular");
     }
-    const Vector<S> part = lu.solve(psi.transpose() * zeta);
-    theta.segment(offset, part.size()) = part;
-    offset += part.size();
-  }
-  return gpmf_detail::canonical_model(settings.observability_indices,
-                                      static_cast<int>(record.num_inputs),
-                                      theta, estimate);
+    *part = lu.solve(psi.transpose() * zeta);
+    return Status::Ok();
+  };
+  return gpmf_detail::estimate_by_output(record, settings, solve, estimate);
 }
 
 // Bias-compensated least-squares GPMF estimate (ssbcgpmf), after Garnier,
