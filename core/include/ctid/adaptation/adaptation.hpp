@@ -37,6 +37,7 @@
 
 #include "ctid/adaptation/covariance_guard.hpp"
 #include "ctid/adaptation/step_size.hpp"
+#include "ctid/base/small_products.hpp"
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
 
@@ -247,14 +248,7 @@ class ParameterUpdate {
     Working<S, array_size(N, N)> p(P_.data(), true);
     predict<N>(p);
     const S error = target - dot<N>(phi, theta);
-    // P- phi, column by column.
-#pragma GCC unroll 8
-    for (int i = 0; i < n; ++i) pz[i] = p[i] * phi[0];
-#pragma GCC unroll 8
-    for (int j = 1; j < n; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < n; ++i) pz[i] += p[j * n + i] * phi[j];
-    }
+    multiply(n, p, phi, pz);  // P- phi
     const S denominator = offset_ + dot<N>(phi, pz);
     // One division: the gain is pz times 1/den, the same -1/den as P's
     // update.
@@ -294,21 +288,8 @@ class ParameterUpdate {
     Working<S, array_size(N, N)> p(P_.data(), true);
     predict<N>(p);
     const S error = target - dot<N>(phi, theta);
-    // P- zeta, column by column; P-^T phi, a dot product per column.
-#pragma GCC unroll 8
-    for (int i = 0; i < n; ++i) pz[i] = p[i] * zeta[0];
-#pragma GCC unroll 8
-    for (int j = 1; j < n; ++j) {
-#pragma GCC unroll 8
-      for (int i = 0; i < n; ++i) pz[i] += p[j * n + i] * zeta[j];
-    }
-#pragma GCC unroll 8
-    for (int j = 0; j < n; ++j) {
-      S sum = 0;
-#pragma GCC unroll 8
-      for (int i = 0; i < n; ++i) sum += p[j * n + i] * phi[i];
-      ptphi[j] = sum;
-    }
+    multiply(n, p, zeta, pz);               // P- zeta
+    multiply_transposed(n, p, phi, ptphi);  // P-^T phi
     const S denominator = offset_ + dot<N>(phi, pz);
 #pragma GCC unroll 8
     for (int i = 0; i < n; ++i) {

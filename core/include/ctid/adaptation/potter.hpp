@@ -50,6 +50,7 @@
 
 #include "ctid/adaptation/adaptation.hpp"
 #include "ctid/adaptation/step_size.hpp"
+#include "ctid/base/small_products.hpp"
 #include "ctid/base/types.hpp"
 
 namespace ctid {
@@ -210,15 +211,10 @@ class PotterUpdate {
     for (int i = 0; i < n; ++i) prediction += phi[i] * theta[i];
     const S error = target - prediction;
     // f = S^-T phi (3.73c), beta (3.73e), alpha (3.73f).
+    multiply_transposed(n, st, phi, f);
     S ff = 0;
 #pragma GCC unroll 8
-    for (int k = 0; k < n; ++k) {
-      S sum = 0;
-#pragma GCC unroll 8
-      for (int i = 0; i < n; ++i) sum += st[k * n + i] * phi[i];
-      f[k] = sum;
-      ff += sum * sum;
-    }
+    for (int k = 0; k < n; ++k) ff += f[k] * f[k];
     const S lambda = lambda_;
     const S beta = lambda + ff;
     const S alpha = beta + std::sqrt(lambda * beta);

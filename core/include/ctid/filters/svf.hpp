@@ -25,6 +25,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ctid/base/small_products.hpp"
 #include "ctid/base/types.hpp"
 #include "ctid/filters/companion_kernels.hpp"
 #include "ctid/filters/discretization.hpp"
@@ -247,13 +248,7 @@ class FilterChannel {
       S state[N];
 #pragma GCC unroll 4
       for (int i = 0; i < N; ++i) state[i] = z[i];
-#pragma GCC unroll 4
-      for (int i = 0; i < N; ++i) next[i] = Phi[i] * state[0];
-#pragma GCC unroll 4
-      for (int l = 1; l < N; ++l) {
-#pragma GCC unroll 4
-        for (int i = 0; i < N; ++i) next[i] += Phi[l * N + i] * state[l];
-      }
+      multiply(N, Phi, state, next);
 #pragma GCC unroll 4
       for (int i = 0; i < N; ++i) next[i] += Gamma[i] * v;
       if (foh) {
