@@ -37,6 +37,17 @@ endfunction
 %! Md = idpoly (1, [0 0.5], 1, 1, [1 -0.9], 1, 0.1);
 %! yd = step (Md, (0:20)' * 0.1);
 %! assert (yd, [0; 5 * (1 - 0.9 .^ (1:20)')], 1e-12);
+%!test  # a fractional delay, times in any order, against e^(At) directly
+%! M = idtf ([1 3], [1 1.2 1 0.3], "InputDelay", 0.37);
+%! t = [3; 0; 0.1; 2.5; 2.5; 7; 0.37; 0.2];
+%! a = [-1.2 -1 -0.3; 1 0 0; 0 1 0];  b = [1; 0; 0];  c = [0 1 3];
+%! yr = zeros (size (t));
+%! for k = find (t >= 0.37)'
+%!   E = expm ([a, b; zeros(1, 4)] * (t(k) - 0.37));
+%!   yr(k) = c * E(1:3, 4);
+%! endfor
+%! assert (step (M, t), yr, 1e-12);
+%! assert (step (idtf (2.5, 1), [0; 1]), [2.5; 2.5]);
 %!test
 %! [y, t] = step (idss ([-1 0; 0 -2], eye (2), eye (2), zeros (2)));
 %! assert (size (y), [numel(t), 2, 2]);

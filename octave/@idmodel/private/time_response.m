@@ -5,9 +5,9 @@
 ## @deftypefn {} {[@var{y}, @var{t}] =} time_response (@var{kind}, @var{fname}, @var{args})
 ## Step or impulse responses (@var{kind} "step" / "impulse") of the models
 ## in @var{args} (see @code{parse_sys_args}), plotted without outputs.
-## Continuous time: exact at every instant, x(t) from the matrix
-## exponential of [A B; 0 0] t (step) or e^(A t) B (impulse), shifted by
-## each input's delay; discrete time: the state recursion (unit step,
+## Continuous time: exact at every instant, the core's simulation of a
+## unit step (simc_mex, copied into this folder at build time), shifted
+## by each input's delay; discrete time: the state recursion (unit step,
 ## unit pulse).  @var{y} is N-by-ny-by-nu (MATLAB's layout) for the first
 ## model.
 ## @end deftypefn
@@ -33,7 +33,7 @@ function [yout, tout] = time_response (kind, fname, args)
     if (isempty (t))
       t = default_time (a, Ts, delay, tfinal);
     endif
-    Y{s} = response (kind, a, b, c, d, Ts, delay, t);
+    Y{s} = response (kind, a, b, c, d, Ts, delay, t, fname);
     if (any (! isfinite (Y{s}(:))))
       error ([fname ":numericalFailure"],
              "%s: the response is not finite up to t = %g", fname, max (t));
@@ -109,7 +109,7 @@ function t = default_time (a, Ts, delay, tfinal)
   endif
 endfunction
 
-function y = response (kind, a, b, c, d, Ts, delay, t)
+function y = response (kind, a, b, c, d, Ts, delay, t, fname)
   n = rows (a);
   [ny, nu] = size (d);
   N = numel (t);
@@ -132,19 +132,45 @@ function y = response (kind, a, b, c, d, Ts, delay, t)
         endfor
         y(:, i, j) = yy(k + 1);
       else
-        for m = 1:N
-          tau = t(m) - delay(i, j);
-          if (tau < 0)
-            continue;
-          endif
-          if (strcmp (kind, "step"))
-            E = expm ([a, b(:, j); zeros(1, n + 1)] * tau);
-            y(m, i, j) = c(i, :) * E(1:n, n+1) + d(i, j);
-          else
-            y(m, i, j) = c(i, :) * expm (a * tau) * b(:, j);
-          endif
-        endfor
+        y(:, i, j) = continuous_step (kind, a, b(:, j), c(i, :), d(i, j),
+                                      t - delay(i, j), fname);
       endif
     endfor
   endfor
+endfunction
+
+## The step (or impulse) response of x' = a x + b u, y = c x + d u at the
+## times s from the input's onset (0 before it): the core's exact
+## simulation of a unit step, held from s = 0 (a step is its own
+## zero-order hold). The impulse response c e^(a s) b is the step response
+## of (a, b, c a, c b).
+function y = continuous_step (kind, a, b, c, d, s, fname)
+  y = zeros (numel (s), 1);
+  on = s >= 0;
+  if (! any (on))
+    return;
+  endif
+  if (strcmp (kind, "impulse"))
+    [c, d] = deal (c * a, c * b);
+  endif
+  if (isempty (a))                      # a static gain
+    y(on) = d;
+    return;
+  endif
+  [tk, ~, at] = unique (s(on)(:));      # the times in any order
+  lead = tk(1) > 0;                     # the simulation starts at the onset
+  if (lead)
+    tk = [0; tk];
+  endif
+  if (numel (tk) == 1)                  # the onset alone
+    ys = d;
+  else
+    try
+      ys = simc_mex (fname, "state_space", ones (numel (tk), 1), tk,
+                     struct ("a", a, "b", b, "c", c, "d", d));
+    catch err
+      contsid_rethrow (err, fname);
+    end_try_catch
+  endif
+  y(on) = ys(at + lead);
 endfunction
