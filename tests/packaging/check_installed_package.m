@@ -32,6 +32,17 @@ function check_installed_package (prefix, src)
     assert (isfile (fullfile (pkgdir, "private", [g ".mex"])),
             "gateway %s is missing", g);
   endfor
+  ## The gateways a class's methods call (CTID_CLASS_GATEWAYS of
+  ## mex/CMakeLists.txt), in the class's private folder too.
+  cmake = fileread (fullfile (src, "mex", "CMakeLists.txt"));
+  entries = regexp (cmake, 'set\(CTID_CLASS_GATEWAYS ([^)]*)\)', "tokens",
+                    "once");
+  assert (! isempty (entries));
+  for e = strsplit (strtrim (entries{1}))
+    cg = strsplit (e{1}, ":");
+    assert (isfile (fullfile (pkgdir, ["@" cg{1}], "private", [cg{2} ".mex"])),
+            "gateway %s of class %s is missing", cg{2}, cg{1});
+  endfor
   ## PKG_ADD: with the control package installed, ours comes first.
   if (! isempty (pkg ("list", "control")))
     assert (strcmp (which ("iddata"),
@@ -47,6 +58,9 @@ function check_installed_package (prefix, src)
   printf ("srivc: F = %s, B = %s\n", mat2str (M.F, 8), mat2str (M.B, 8));
   assert (M.F, [1 2.4 4], 1e-8);     # noise-free: exact (see help srivc)
   assert (M.B, 4, 1e-8);
+  ## a class method through its private gateway: the final value of the
+  ## step response is the static gain
+  assert (step (M, [0; 40])(end), 1, 1e-6);
   thm = rlssvf (data, [2 1 0], "lambda_svf", 3);
   printf ("rlssvf: final [a1 a2 b0] = %s\n", mat2str (thm(end, :), 6));
   assert (thm(end, :), [2.4 4 4], 2e-3 * 4);
