@@ -13,16 +13,20 @@
 // and INFO (kappa_2(P), the initial-condition coefficients, prediction errors
 // and innovation scales per sample) are computed only when requested.
 //
-//   info = rlssvf_mex (fname, "converge", t, y, yh, thm, trP, options)
+//   [info, thm, yh] = rlssvf_mex (fname, "converge", y, u, t, options,
+//                                 detector)
 //
-// The convergence detector of an RLSSVF start-up (convergence_detector.hpp):
-// t the N instants from 0, y and yh N-by-1, thm N-by-np, trP N-by-1 (trace
-// P / trace P0) or []; options fields blocklength, nblocks, alpha,
-// tol_theta, eyfloor, ptol, use_outputerror, use_theta, use_P. info: nblocks
-// (B), Rcrit, ey_ms, y_ms, R, dtheta, theta_index, P_index, steady_ey,
-// steady_theta, small_P (B-by-1 each), converged, tsiv and k (the first
-// sample at or after tsiv, 1-based; NaN when not converged).
-#include "ctid/recursive/convergence_detector.hpp"
+// An RLSSVF start-up and its convergence (rlssvf_convergence.hpp): y, u,
+// t and options as for rlssvf; detector the fields of the core's
+// convergence_options() table (blocklength, nblocks, alpha, tol_theta,
+// eyfloor, ptol, use_outputerror, use_theta, use_P);
+// `rlssvf_mex (fname, "converge", "options")` returns that table. info:
+// nblocks (B), Rcrit, ey_ms, y_ms, R, dtheta, theta_index, P_index,
+// steady_ey, steady_theta, small_P (B-by-1 each), converged, tsiv, k
+// (the first sample at or after tsiv, 1-based; NaN when not converged) and
+// settings (the detector's settings used, defaults included); thm, yh the
+// RLSSVF run.
+#include "ctid/recursive/rlssvf_convergence.hpp"
 #include "estimator_args.hpp"
 
 namespace {
@@ -38,47 +42,46 @@ mxArray* logical_column(const std::vector<bool>& v) {
 
 void converge_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                       const mxArray* prhs[]) {
-  if (nrhs != 8) {
+  if (nrhs == 3 && mxIsChar(prhs[2])) {
+    if (g.text(prhs[2], "the third argument") != "options") {
+      g.fail("badInput", "the converge method's table is asked by 'options'");
+    }
+    plhs[0] = ctid::mex::option_table_struct(ctid::convergence_options());
+    return;
+  }
+  if (nrhs != 7) {
     g.fail("badInput",
-           "the converge method takes 8 arguments (fname, 'converge', t, "
-           "y, yh, thm, trP, options), got " +
+           "the converge method takes 7 arguments (fname, 'converge', y, u, "
+           "t, options, detector), got " +
                std::to_string(nrhs));
   }
-  if (nlhs > 1) g.fail("badInput", "the converge method has 1 output");
-  g.require_real_double(prhs[5], "thm");
-  const long n = static_cast<long>(mxGetM(prhs[5]));
-  // (a diverging start may leave non-finite estimates: the detector
-  // reads them as an infinite change)
-  const double* thm = g.matrix(prhs[5], "thm", n, -1, false);
-  const Eigen::MatrixXd theta = Eigen::Map<const Eigen::MatrixXd>(
-      thm, n, static_cast<Eigen::Index>(mxGetN(prhs[5])));
-  const double* t = g.matrix(prhs[2], "t", n, 1);
-  const double* y = g.matrix(prhs[3], "y", n, 1);
-  const double* yh = g.matrix(prhs[4], "yh", n, 1, false);
-  const double* trace_ratio = nullptr;
-  if (mxGetNumberOfElements(prhs[6]) != 0) {
-    trace_ratio = g.matrix(prhs[6], "trP", n, 1, false);
+  if (nlhs > 3) g.fail("badInput", "the converge method has 3 outputs");
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[2], prhs[3], prhs[4]);
+  ctid::RlsSvfConfig<double> config;
+  {
+    ctid::mex::OptionsReader opt(g, prhs[5]);
+    ctid::mex::read_rlssvf_config(g, opt, &config);
+    // the start-up is examined in double precision: single precision
+    // would not change the estimates the detector reads
+    ctid::mex::read_single_precision(opt);
+    opt.finish();
   }
-  ctid::mex::OptionsReader opt(g, prhs[7]);
   ctid::ConvergenceSettings settings;
-  settings.block_length = opt.scalar("blocklength");
-  settings.num_blocks = opt.integer("nblocks", settings.num_blocks);
-  settings.alpha = opt.scalar("alpha", settings.alpha);
-  settings.tol_theta = opt.scalar("tol_theta", settings.tol_theta);
-  settings.ey_floor = opt.scalar("eyfloor", settings.ey_floor);
-  settings.p_tol = opt.scalar("ptol", settings.p_tol);
-  settings.use_output_error = opt.flag("use_outputerror", true);
-  settings.use_theta = opt.flag("use_theta", true);
-  settings.use_p = opt.flag("use_P", true);
-  opt.finish();
-  ctid::ConvergenceReport<double> report;
-  g.check(
-      ctid::detect_convergence(t, y, yh, theta, trace_ratio, settings, report));
+  {
+    ctid::mex::OptionsReader opt(g, prhs[6]);
+    ctid::mex::read_option_table(g, opt, ctid::convergence_options(),
+                                 &settings);
+    opt.finish();
+  }
+  ctid::ConvergenceRun<double> run;
+  g.check(ctid::rlssvf_convergence(config, record, settings, &run));
+  const ctid::ConvergenceReport<double>& report = run.report;
   const char* fields[] = {
       "nblocks", "Rcrit",       "ey_ms",   "y_ms",      "R",
       "dtheta",  "theta_index", "P_index", "steady_ey", "steady_theta",
-      "small_P", "converged",   "tsiv",    "k"};
-  mxArray* info = mxCreateStructMatrix(1, 1, 14, fields);
+      "small_P", "converged",   "tsiv",    "k",         "settings"};
+  mxArray* info = mxCreateStructMatrix(1, 1, 15, fields);
   using ctid::mex::to_output;
   mxSetField(info, 0, "nblocks",
              mxCreateDoubleScalar(static_cast<double>(report.num_blocks)));
@@ -98,7 +101,21 @@ void converge_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
              mxCreateDoubleScalar(report.sample >= 0
                                       ? static_cast<double>(report.sample + 1)
                                       : mxGetNaN()));
+  // the settings used, the table's defaults included
+  const char* used[] = {"blocklength", "nblocks", "alpha",
+                        "tol_theta",   "eyfloor", "ptol"};
+  mxArray* given = mxCreateStructMatrix(1, 1, 6, used);
+  mxSetField(given, 0, "blocklength",
+             mxCreateDoubleScalar(settings.block_length));
+  mxSetField(given, 0, "nblocks", mxCreateDoubleScalar(settings.num_blocks));
+  mxSetField(given, 0, "alpha", mxCreateDoubleScalar(settings.alpha));
+  mxSetField(given, 0, "tol_theta", mxCreateDoubleScalar(settings.tol_theta));
+  mxSetField(given, 0, "eyfloor", mxCreateDoubleScalar(settings.ey_floor));
+  mxSetField(given, 0, "ptol", mxCreateDoubleScalar(settings.p_tol));
+  mxSetField(info, 0, "settings", given);
   plhs[0] = info;
+  if (nlhs > 1) plhs[1] = to_output(run.thm);
+  if (nlhs > 2) plhs[2] = to_output(run.yh);
 }
 
 void rlssvf_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,

@@ -17,15 +17,14 @@
 
 function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
                                                   strict)
-  defaults = struct ("blocklength", [], "nblocks", 10, "alpha", 0.05,
-                     "tol_theta", 0.05, "eyfloor", 1e-3, "ptol", 1e-2,
+  ## [] leaves an option to the core's default (rlssvf_convergence.hpp)
+  defaults = struct ("blocklength", [], "nblocks", [], "alpha", [],
+                     "tol_theta", [], "eyfloor", [], "ptol", [],
                      "criteria", "all");
   if (isempty (det))
     det = {};
   endif
   opts = contsid_options (fname, defaults, det);
-  t = d.t - d.t(1);
-  T = t(end);
   Tb = opts.blocklength;
   if (isempty (Tb))
     ## The default window needs the cut-off before rlssvf (which checks
@@ -41,94 +40,41 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
     endif
     Tb = 2 * 2 * pi / lam;               # two periods of the SVF cut-off
   endif
-  positive (fname, Tb, "blocklength");
-  if (d.uniform && Tb < 2 * d.Ts * (1 - 1e-12))
-    error ([fname ":badInput"],
-           "%s: blocklength (%g s) must hold at least two samples (Ts = %g s)",
-           fname, Tb, d.Ts);
-  endif
-  n = opts.nblocks;
-  if (! isnumeric (n) || ! isreal (n) || ! isscalar (n) || n != fix (n)
-      || n < 3)
-    error ([fname ":badInput"], "%s: nblocks must be an integer >= 3", fname);
-  endif
-  alpha = opts.alpha;
-  positive (fname, alpha, "alpha");
-  if (alpha >= 0.5)
-    error ([fname ":badInput"], "%s: alpha must lie in (0, 0.5)", fname);
-  endif
-  positive (fname, opts.tol_theta, "tol_theta");
-  floor_ = opts.eyfloor;
-  if (! isnumeric (floor_) || ! isreal (floor_) || ! isscalar (floor_)
-      || ! isfinite (floor_) || floor_ < 0)
-    error ([fname ":badInput"], "%s: eyfloor must be a finite real >= 0",
-           fname);
-  endif
-  positive (fname, opts.ptol, "ptol");
   crit = check_criteria (fname, opts.criteria);
-  B = floor (T / Tb * (1 + 1e-12));
-  if (B < n)
-    error ([fname ":badInput"],
-           ["%s: the training record (%g s) is too short for nblocks = %d ", ...
-            "blocks of %g s"], fname, T, n, Tb);
-  endif
 
-  ## The RLSSVF run whose start-up is examined, with P0 explicit (rlssvf's
-  ## default 1e4 I when not given) since the P index is relative to it.
-  nu = (numel (nn) - 1) / 2;
-  np = nn(1) + sum (nn(2:1+nu));
-  P0 = rls.P0;
-  if (isempty (P0))
-    P0 = 1e4 * eye (np);
-  endif
+  ## The RLSSVF run whose start-up is examined and the detector
+  ## (recursive/rlssvf_convergence.hpp: Cao and Rhinehart's steady-state
+  ## test on the output error, the estimates' change, trace P / trace P0),
+  ## which checks the detector's options before the run.
   if (d.uniform)
     timing = d.Ts;
   else
-    timing = t;
+    timing = d.t;
   endif
   args = {"lambda_svf", rls.lambda_svf, "adm", rls.adm, "adg", rls.adg, ...
-          "svf", rls.svf, "P0", P0};
+          "svf", rls.svf, "P0", rls.P0};
   if (! isempty (rls.th0))
     args(end+1:end+2) = {"th0", rls.th0};
   endif
-  use_P = any (strcmp (crit, "P"));
-  try
-    data = iddata (d.y, d.u, timing, "InterSample", d.intersample);
-    if (use_P)
-      [thm, yh, pset] = rlssvf (data, nn, args{:});
-      ## trace (P) / trace (P0) after each recursion.
-      trP = reshape (sum (reshape (pset, np * np, [])(1:np+1:end, :), 1),
-                     [], 1) / trace (P0);
-      clear pset;
-    else
-      [thm, yh] = rlssvf (data, nn, args{:});
-      trP = [];
-    endif
-  catch err
-    id = regexprep (err.identifier, '^rlssvf:', [fname ":"]);
-    msg = regexprep (err.message, '^rlssvf:', [fname ": rlssvf:"]);
-    error (struct ("message", msg, "identifier", id, "stack", err.stack));
-  end_try_catch
-
-  ## Block statistics and the three indices (the core's detector,
-  ## recursive/convergence_detector.hpp: Cao and Rhinehart's steady-state
-  ## test on the output error, the estimates' change, trace P).
-  opts_det = struct ("blocklength", Tb, "nblocks", n, "alpha", alpha,
-                     "tol_theta", opts.tol_theta, "eyfloor", floor_,
-                     "ptol", opts.ptol,
+  p = contsid_rlssvf_args (fname, iddata (d.y, d.u, timing, "InterSample",
+                                          d.intersample), nn, args{:});
+  opts_det = struct ("blocklength", Tb, "nblocks", opts.nblocks,
+                     "alpha", opts.alpha, "tol_theta", opts.tol_theta,
+                     "eyfloor", opts.eyfloor, "ptol", opts.ptol,
                      "use_outputerror", any (strcmp (crit, "outputerror")),
                      "use_theta", any (strcmp (crit, "theta")),
-                     "use_P", use_P);
+                     "use_P", any (strcmp (crit, "P")));
   try
-    r = rlssvf_mex (fname, "converge", t(:), double (d.y(:)), yh(:), thm,
-                    trP, opts_det);
+    [r, thm, yh] = rlssvf_mex (fname, "converge", p.data{:}, p.opts,
+                               opts_det);
   catch err
     contsid_rethrow (err, fname);
   end_try_catch
-  info = struct ("blocklength", Tb, "nblocks", n, "alpha", alpha,
-                 "Rcrit", r.Rcrit, "tol_theta", opts.tol_theta,
-                 "eyfloor", floor_, "ptol", opts.ptol, "criteria", {crit},
-                 "causal", true,
+  used = r.settings;
+  info = struct ("blocklength", Tb, "nblocks", used.nblocks,
+                 "alpha", used.alpha, "Rcrit", r.Rcrit,
+                 "tol_theta", used.tol_theta, "eyfloor", used.eyfloor,
+                 "ptol", used.ptol, "criteria", {crit}, "causal", true,
                  "tblock", (1:r.nblocks)' * Tb, "ey_ms", r.ey_ms,
                  "y_ms", r.y_ms, "R", r.R, "dtheta", r.dtheta,
                  "theta_index", r.theta_index, "P_index", r.P_index,
@@ -140,7 +86,7 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
     msg = sprintf (["%s: no convergence of RLSSVF detected in %g s ", ...
                     "(%d blocks of %g s); give tsiv, or relax the ", ...
                     "thresholds (alpha, tol_theta, eyfloor, ptol)"],
-                   fname, T, B, Tb);
+                   fname, d.t(end) - d.t(1), r.nblocks, Tb);
     if (strict)
       error ([fname ":notConverged"], "%s", msg);
     endif
@@ -150,14 +96,6 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
   tsiv = r.tsiv;
   info.tsiv = tsiv;
   info.k = r.k;
-endfunction
-
-function positive (fname, v, what)
-  if (! isnumeric (v) || ! isreal (v) || ! isscalar (v) || ! isfinite (v)
-      || v <= 0)
-    error ([fname ":badInput"], "%s: %s must be a finite real scalar > 0",
-           fname, what);
-  endif
 endfunction
 
 ## The indices to use: "all" or one or several of "outputerror", "theta",

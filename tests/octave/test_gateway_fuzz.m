@@ -269,7 +269,6 @@ function test_gateway_fuzz ()
   ## of an RLSSVF start-up.
   ssopt = struct ("a", [-1 2; -2 -1], "b", [0; 1], "c", [1 0], "d", 0.5,
                   "nk", 0.5, "intersample", "foh");
-  tc = (0:49)' * 0.1;
   cdet = struct ("blocklength", 0.4, "nblocks", 10, "use_P", false);
   calls(end+1:end+4) = {
     {"simc_mex", {"simc", "state_space", u, 0.1, ssopt}, ...
@@ -279,8 +278,8 @@ function test_gateway_fuzz ()
     {"refined_iv_mex", {"tfsrivc", "focus_filter", y, u, ...
                         struct("ts", 0.1, "band", [0.5 5], "order", 2)}, ...
      {"ts", "band", "order"}}
-    {"rlssvf_mex", {"rlssvf", "converge", tc, y, y + 0.1 * u, [y u], [], ...
-                    cdet}, {"blocklength"}}
+    {"rlssvf_mex", {"rlssvf", "converge", y, u, 0.1, rls, cdet}, ...
+     {"blocklength"}}
   };
 
   covered = cellfun (@(c) c{1}, calls, "UniformOutput", false);

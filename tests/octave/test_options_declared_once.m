@@ -84,6 +84,7 @@ function test_options_declared_once ()
   assert (compared >= 5, sprintf ("only %d defaults compared", compared));
 
   check_output_error_options ();
+  check_convergence_options ();
 
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
@@ -170,6 +171,29 @@ function check_output_error_options ()
   catch err
     assert (err.identifier, "oe:badOption");
   end_try_catch
+endfunction
+
+## The convergence detector's options (rlsconverge, "tsiv", "auto"): the
+## defaults rlsconverge's help states are the table's, and the run reports
+## the table's defaults as the settings it used.
+function check_convergence_options ()
+  T = rlssvf_mex ("rlsconverge", "converge", "options");
+  assert (isstruct (T) && numel (T) >= 6);
+  h = get_help_text ("rlsconverge");
+  for name = {"nblocks", "alpha", "eyfloor", "tol_theta", "ptol"}
+    core = T(strcmp ({T.name}, name{1})).default;
+    [item, pos] = help_item (h, name{1});
+    assert (same_default (stated_default (item, pos), core),
+            "rlsconverge: %s", name{1});
+  endfor
+  Ts = 0.05;
+  u = prbs (9, 8);
+  y = simc (struct ("B", 4, "F", [1 2.4 4]), u, Ts);
+  [~, info] = rlsconverge (iddata (y, u, Ts), [2 1 0], "lambda_svf", 3);
+  for name = {"nblocks", "alpha", "eyfloor", "tol_theta", "ptol"}
+    core = str2double (T(strcmp ({T.name}, name{1})).default);
+    assert (info.(name{1}), core, 1e-12 * abs (core));
+  endfor
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may
