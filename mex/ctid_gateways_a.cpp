@@ -18,6 +18,7 @@
 #include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
+#include "ctid/apps/residtrace/structure_fit.hpp"
 #include "ctid/apps/residtrace/track.hpp"
 #include "ctid/apps/throttle.hpp"
 #include "ctid/recursive/recursive_arx.hpp"

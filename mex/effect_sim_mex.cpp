@@ -53,6 +53,19 @@
 //     static gains K (1-by-m) and the level hbar above c for the mean
 //     channel signals wbar (1-by-m) (physical_fit.hpp): c.b, c.d,
 //     c.alpha, c.gamma, c.F; options: g, p1, p2, K, wbar, hbar.
+//   W = effect_sim_mex (fname, "channels", u, v, y, options)
+//     the channel signals of a residtrace structure (structure_fit.hpp,
+//     channel_signals), one column per channel; v (velocity) and y (the
+//     output of the output powers) N rows each or [] when unused; options:
+//     kind, col, param, nb, nk, node (see read_channels);
+//   fit = effect_sim_mex (fname, "fit", u, y, options)
+//     the structure fit (structure_fit.hpp, fit_structure); options: the
+//     channels as for "channels" with B (a cell of start numerators), ts,
+//     rule ('zoh' | 'foh'), F, fixed, levels, out_kind (0 offset, 1
+//     polynomial, 2 sinusoid, 3 saturation), out_c (a cell), out_omega,
+//     vhat, ysm, initial_state, missing, starts (a cell of F's, [] the
+//     engine's automatic start), maxiter; fit: ok, failed_round, F, B, out_c,
+//     out_cstd, out_fitted, theta, cov, s2, np, bic, e.
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
 //   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
 //   channel j's numerator right-aligned in column j), nb (1-by-m numerator
@@ -66,6 +79,7 @@
 #include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
+#include "ctid/apps/residtrace/structure_fit.hpp"
 #include "ctid/apps/residtrace/track.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
@@ -507,6 +521,218 @@ void physfit_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs >= 2) plhs[1] = put_matrix(fit.e);
 }
 
+// The channels of a structure (structure_fit.hpp) from the options kind
+// (1-by-m codes: 0 input, 1 constant, 2 sign of the velocity, 3 sign of
+// the output, 4 power, 5 clip, 6 power of the output, 7 node), col
+// (1-based, 0: none), param, nb, nk, B (a cell of m numerators; absent:
+// zeros) and node (a cell: [] or a struct with fa, ts, rule, lo, hi).
+std::vector<ctid::residtrace::StructureChannel<double>> read_channels(
+    const Gateway& g, ctid::mex::OptionsReader& opt, long nu) {
+  using ctid::residtrace::ChannelKind;
+  const std::vector<int> kind = opt.integer_vector("kind");
+  const std::size_t m = kind.size();
+  const std::vector<int> col =
+      opt.integer_vector("col", std::vector<int>(m, 0));
+  Eigen::MatrixXd param = opt.matrix("param");
+  if (param.size() == 0) param = Eigen::MatrixXd::Zero(1, m);
+  const std::vector<int> nb = opt.integer_vector("nb", std::vector<int>(m, 1));
+  const std::vector<int> nk = opt.integer_vector("nk", std::vector<int>(m, 0));
+  const mxArray* B = opt.field("B");
+  const mxArray* node = opt.field("node");
+  if (col.size() != m || static_cast<std::size_t>(param.size()) != m ||
+      nb.size() != m || nk.size() != m) {
+    g.fail("dimensionMismatch",
+           "col, param, nb and nk need one entry per channel");
+  }
+  auto cell = [&](const mxArray* c, const char* what) {
+    if (c != nullptr && !mxIsEmpty(c) &&
+        (!mxIsCell(c) || mxGetNumberOfElements(c) != m)) {
+      g.fail("dimensionMismatch",
+             std::string(what) + " must be a cell with one entry per channel");
+    }
+    return c != nullptr && !mxIsEmpty(c);
+  };
+  const bool has_b = cell(B, "B");
+  const bool has_node = cell(node, "node");
+  std::vector<ctid::residtrace::StructureChannel<double>> out(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    auto& c = out[j];
+    if (kind[j] < 0 || kind[j] > 7) g.fail("badOption", "unknown channel kind");
+    c.kind = static_cast<ChannelKind>(kind[j]);
+    c.col = col[j] - 1;
+    if (col[j] > nu) g.fail("badInput", "a channel reads a missing input");
+    c.param = param(j);
+    c.nb = nb[j];
+    c.nk = nk[j];
+    c.B = Eigen::VectorXd::Zero(std::max(nb[j], 0));
+    if (has_b) {
+      const mxArray* b = mxGetCell(B, j);
+      const auto v = g.eigen_matrix(b, "B");
+      if (v.size() != nb[j]) {
+        g.fail("dimensionMismatch", "each B needs nb coefficients");
+      }
+      c.B = Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+    }
+    if (c.kind == ChannelKind::kNode) {
+      if (!has_node || mxIsEmpty(mxGetCell(node, j))) {
+        g.fail("badOption", "a node channel needs its node struct");
+      }
+      ctid::mex::OptionsReader p(g, mxGetCell(node, j), "node.");
+      c.node_f = p.required_matrix("fa").reshaped();
+      c.node_ts = p.scalar("ts");
+      c.node_rule = p.choice<ctid::InterSample>(
+          "rule",
+          {{"zoh", ctid::InterSample::kZoh}, {"foh", ctid::InterSample::kFoh}},
+          ctid::InterSample::kZoh);
+      c.node_lo = *g.matrix(p.required("lo"), "node.lo", 1, 1, false);
+      c.node_hi = *g.matrix(p.required("hi"), "node.hi", 1, 1, false);
+      p.finish();
+    }
+  }
+  return out;
+}
+
+// An optional N-row signal of any values ([]: none).
+Eigen::MatrixXd optional_signal(const Gateway& g, const mxArray* a,
+                                const char* what, long n) {
+  if (a == nullptr || mxIsEmpty(a)) return Eigen::MatrixXd();
+  return any_matrix(g, a, what, n, -1);
+}
+
+void channels_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput", "channels takes (fname, 'channels', u, v, y, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "channels has one output");
+  const Eigen::MatrixXd u = any_matrix(g, prhs[2], "u");
+  const long n = static_cast<long>(u.rows());
+  const Eigen::MatrixXd v = optional_signal(g, prhs[3], "v", n);
+  const Eigen::MatrixXd y = optional_signal(g, prhs[4], "y", n);
+  ctid::mex::OptionsReader opt(g, prhs[5]);
+  const auto channels = read_channels(g, opt, u.cols());
+  opt.finish();
+  Eigen::MatrixXd W;
+  g.check(ctid::residtrace::channel_signals<double>(
+      channels, u, v, y.size() ? Eigen::VectorXd(y.col(0)) : Eigen::VectorXd(),
+      &W));
+  plhs[0] = put_matrix(W);
+}
+
+mxArray* put_cell(const std::vector<Eigen::VectorXd>& v) {
+  mxArray* c = mxCreateCellMatrix(1, v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    mxSetCell(c, i, put_matrix(v[i].transpose()));
+  }
+  return c;
+}
+
+void fit_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                const mxArray* prhs[]) {
+  using ctid::residtrace::OutputTermKind;
+  if (nrhs != 5) {
+    g.fail("badInput", "fit takes (fname, 'fit', u, y, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "fit has one output");
+  ctid::residtrace::StructureRecord<double> rec;
+  rec.y = any_column(g, prhs[3], "y");
+  const long n = static_cast<long>(rec.y.size());
+  rec.u = any_matrix(g, prhs[2], "u", n, -1);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  rec.ts = opt.scalar("ts");
+  if (!(rec.ts > 0)) g.fail("badOption", "option 'ts' must be > 0");
+  rec.rule = opt.choice<ctid::InterSample>(
+      "rule",
+      {{"zoh", ctid::InterSample::kZoh}, {"foh", ctid::InterSample::kFoh}},
+      ctid::InterSample::kZoh);
+  rec.vhat = optional_signal(g, opt.field("vhat"), "vhat", n);
+  const Eigen::MatrixXd ysm = optional_signal(g, opt.field("ysm"), "ysm", n);
+  if (ysm.size()) rec.ysm = ysm.col(0);
+  rec.initial_state = opt.flag("initial_state", false);
+  const Eigen::MatrixXd miss = opt.matrix("missing");
+  if (miss.size() == n) {
+    for (long k = 0; k < n; ++k) rec.missing.push_back(miss(k) != 0);
+  }
+  ctid::residtrace::StructureModel<double> model;
+  model.F = opt.required_matrix("F", 1, -1).row(0).transpose();
+  const long order = static_cast<long>(model.F.size()) - 1;
+  const Eigen::MatrixXd fixed = opt.matrix("fixed");
+  if (fixed.size() != order) {
+    g.fail("dimensionMismatch", "fixed needs one flag per coefficient of F");
+  }
+  for (long i = 0; i < order; ++i) model.fixed.push_back(fixed(i) != 0);
+  model.levels = opt.flag("levels", false);
+  model.channels = read_channels(g, opt, rec.u.cols());
+  const std::vector<int> out_kind =
+      opt.integer_vector("out_kind", std::vector<int>());
+  const std::size_t K = out_kind.size();
+  const mxArray* out_c = opt.field("out_c");
+  const Eigen::MatrixXd omega = opt.matrix("out_omega");
+  if (K > 0 && (out_c == nullptr || !mxIsCell(out_c) ||
+                mxGetNumberOfElements(out_c) != K ||
+                static_cast<std::size_t>(omega.size()) != K)) {
+    g.fail("dimensionMismatch", "out_c and out_omega need one entry per term");
+  }
+  for (std::size_t k = 0; k < K; ++k) {
+    ctid::residtrace::OutputTerm<double> t;
+    if (out_kind[k] < 0 || out_kind[k] > 3) {
+      g.fail("badOption", "unknown output term kind");
+    }
+    t.kind = static_cast<OutputTermKind>(out_kind[k]);
+    const mxArray* c = mxGetCell(out_c, k);
+    if (c != nullptr && !mxIsEmpty(c)) {
+      const auto v = any_matrix(g, c, "out_c");
+      t.c = Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+    }
+    t.omega = omega(k);
+    model.out.push_back(t);
+  }
+  std::vector<Eigen::VectorXd> starts;
+  const mxArray* s = opt.field("starts");
+  if (s != nullptr && !mxIsEmpty(s)) {
+    if (!mxIsCell(s)) g.fail("badOption", "starts must be a cell");
+    for (std::size_t i = 0; i < mxGetNumberOfElements(s); ++i) {
+      const mxArray* F0 = mxGetCell(s, i);
+      if (F0 == nullptr || mxIsEmpty(F0)) {
+        starts.push_back(Eigen::VectorXd());
+      } else {
+        const auto v = g.eigen_matrix(F0, "a start");
+        starts.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()));
+      }
+    }
+  }
+  const int maxiter = opt.integer("maxiter");
+  opt.finish();
+  ctid::residtrace::StructureFit<double> fit;
+  g.check(ctid::residtrace::fit_structure<double>(model, rec, starts, maxiter,
+                                                  &fit));
+  std::vector<Eigen::VectorXd> c, cstd;
+  Eigen::MatrixXd fitted = Eigen::MatrixXd::Zero(1, K);
+  for (std::size_t k = 0; k < fit.out.size(); ++k) {
+    c.push_back(fit.out[k].c);
+    cstd.push_back(fit.out[k].cstd);
+    fitted(k) = fit.out[k].fitted;
+  }
+  const char* names[] = {"ok",       "failed_round", "F",     "B",   "out_c",
+                         "out_cstd", "out_fitted",   "theta", "cov", "s2",
+                         "np",       "bic",          "e"};
+  plhs[0] = mxCreateStructMatrix(1, 1, 13, names);
+  mxSetField(plhs[0], 0, "ok", mxCreateLogicalScalar(fit.ok));
+  mxSetField(plhs[0], 0, "failed_round",
+             mxCreateDoubleScalar(fit.failed_round));
+  mxSetField(plhs[0], 0, "F", put_matrix(fit.F.transpose()));
+  mxSetField(plhs[0], 0, "B", put_cell(fit.B));
+  mxSetField(plhs[0], 0, "out_c", put_cell(c));
+  mxSetField(plhs[0], 0, "out_cstd", put_cell(cstd));
+  mxSetField(plhs[0], 0, "out_fitted", put_matrix(fitted));
+  mxSetField(plhs[0], 0, "theta", put_matrix(fit.theta));
+  mxSetField(plhs[0], 0, "cov", put_matrix(fit.cov));
+  mxSetField(plhs[0], 0, "s2", mxCreateDoubleScalar(fit.s2));
+  mxSetField(plhs[0], 0, "np", mxCreateDoubleScalar(fit.np));
+  mxSetField(plhs[0], 0, "bic", mxCreateDoubleScalar(fit.bic));
+  mxSetField(plhs[0], 0, "e", put_matrix(fit.e));
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -532,6 +758,10 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             physstart_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physfit") {
             physfit_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "channels") {
+            channels_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "fit") {
+            fit_method(g, nlhs, plhs, nrhs, prhs);
           } else {
             g.fail("badInput", "unknown method '" + method + "'");
           }

@@ -18,7 +18,7 @@
 ## an input present at a sample whose output is missing is kept:
 ## residtrace simulates the model from the input, and dropping a known
 ## input would leave a transient after the gap. The fits replace the
-## bridged outputs by the model's own output (@code{residtrace_estimate}),
+## bridged outputs by the model's own output (@code{residtrace_fit}),
 ## so that they carry no error. residtrace keeps the record on its
 ## uniform grid (its simulators, tests and candidates need one) and gives
 ## @var{d} the field

@@ -38,52 +38,61 @@
 ## @end table
 ## Works row by row as well (a 1-by-nu @var{u} and a scalar @var{v});
 ## a fractional delay needs the previous sample, so a row is taken as it
-## is.
+## is. The signals are computed by the core (core/include/ctid/apps/
+## residtrace/structure_fit.hpp, channel_signals, through
+## @code{effect_sim_mex}); with @var{chans} alone, the channels are
+## returned in the form that gateway takes.
 ## @end deftypefn
 
 function W = residtrace_channels (chans, u, v, y)
+  if (nargin == 1)
+    W = encode (chans);
+    return;
+  endif
+  if (nargin < 3)
+    v = 0;
+  endif
   if (nargin < 4)
     y = 0;
   endif
-  W = zeros (rows (u), numel (chans));
-  for j = 1:numel (chans)
-    c = chans(j);
-    switch (c.type)
-      case "input"
-        W(:, j) = u(:, c.col);
-        if (! isempty (c.param) && c.param != 0 && rows (u) > 1)
-          w = u(:, c.col);
-          W(:, j) = (1 - c.param) * w + c.param * [w(1); w(1:end-1)];
-        endif
-      case "const"
-        W(:, j) = 1;
-      case "signv"
-        if (strcmp (c.param, "y"))
-          W(:, j) = sign (v(:, end));
-        else
-          W(:, j) = sign (v(:, 1));
-        endif
-      case "power"
-        W(:, j) = u(:, c.col) .^ c.param;
-      case "clip"
-        W(:, j) = min (max (u(:, c.col), -c.param), c.param);
-      case "ypower"
-        W(:, j) = ypow (y, c.param);
-      case "node"
-        P = c.param;
-        z = simc (struct ("B", P.Fa(end), "F", P.Fa), u(:, c.col), P.Ts,
-                  "InterSample", P.rule);
-        W(:, j) = min (max (z, P.lo), P.hi);
-    endswitch
-  endfor
+  N = rows (u);
+  if (isscalar (v))
+    v = repmat (v, N, 1);
+  endif
+  if (isscalar (y))
+    y = repmat (y, N, 1);
+  endif
+  W = effect_sim_mex ("residtrace", "channels", u, v, y, encode (chans));
 endfunction
 
-function w = ypow (y, p)
-  if (p == fix (p))
-    w = y .^ p;
-  else
-    w = sign (y) .* abs (y) .^ p;
-  endif
+## The channels as effect_sim_mex takes them (core/include/ctid/apps/
+## residtrace/structure_fit.hpp, channel_signals), without their
+## numerators.
+function o = encode (chans)
+  m = numel (chans);
+  types = {"input", "const", "signv", "", "power", "clip", "ypower", "node"};
+  o = struct ("kind", zeros (1, m), "col", zeros (1, m),
+              "param", zeros (1, m), "nb", [chans.nb], "nk", [chans.nk],
+              "node", {cell(1, m)});
+  for j = 1:m
+    c = chans(j);
+    o.kind(j) = find (strcmp (types, c.type), 1) - 1;
+    if (! isempty (c.col))
+      o.col(j) = c.col;
+    endif
+    switch (c.type)
+      case "signv"
+        o.kind(j) += strcmp (c.param, "y");   # the output as a velocity
+      case "node"
+        P = c.param;
+        o.node{j} = struct ("fa", P.Fa, "ts", P.Ts, "rule", lower (P.rule),
+                            "lo", P.lo, "hi", P.hi);
+      otherwise
+        if (! isempty (c.param))
+          o.param(j) = c.param;
+        endif
+    endswitch
+  endfor
 endfunction
 
 %!test  # a fraction f of a sample: (1 - f) u(k) + f u(k-1), u(0) = u(1)

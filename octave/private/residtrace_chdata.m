@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{ch} =} residtrace_chdata (@var{model}, @var{D})
 ## The channels of a @code{residtrace} model on the record @var{D} in the
-## form @code{residtrace_estimate} takes: signal (sign of the velocity from
+## form of the filtered regression of @code{residtrace_track}: signal (sign of the velocity from
 ## the measured output @code{D.vhat}, powers of the measured output
 ## @code{D.ysm}), nb, nk and the hold rule (the
 ## data's InterSample for the inputs and the signals made from them).

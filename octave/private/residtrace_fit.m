@@ -7,13 +7,18 @@
 ## @var{tmpl} on the record @var{D} (fields y, u, Ts, vhat: the velocity
 ## from the measured output; optional initial_state: true for a record
 ## that does not start at rest, whose initial state is then estimated
-## with the model) by SRIVC (@code{residtrace_estimate}, the
-## toolbox's refined-IV engine).
+## with the model; optional missing: the mask of bridged samples, which
+## carry no error) by SRIVC, the toolbox's refined-IV engine. The fit
+## runs in the core (core/include/ctid/apps/residtrace/structure_fit.hpp,
+## fit_structure, through @code{effect_sim_mex}); this function adds the
+## refits around it described below.
 ##
 ## The channels (inputs, constant, sign of the velocity, powers, clipped
 ## input) are the regressors of the filtered linear regression; the
 ## coefficients of F that are fixed in @code{tmpl.fixed} keep their
-## values. Output terms (an output offset, a polynomial in the model
+## values. The record's output level (the first offset term when
+## @code{tmpl.levels} is true) is estimated jointly with the model by the
+## engine. Other output terms (an output offset, a polynomial in the model
 ## output, a sinusoid) enter by alternation: SRIVC on y minus the terms,
 ## then the terms by least squares on y minus the model output, three
 ## rounds. An output saturation (term @qcode{"sat"}, its levels fixed by
@@ -51,123 +56,52 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
     model = residtrace_physfit (tmpl, D, ctx);
     return;
   endif
-  y = D.y;
-  N = numel (y);
-  ch = residtrace_chdata (tmpl, D);
-  n = numel (tmpl.F) - 1;
-  ## the record's output level (raw units) is estimated jointly with the
-  ## model by the engine: alternating it with SRIVC converged too slowly
-  ## where the level and the static gain are nearly collinear (a slow
-  ## process; a simulated linear two-tank record: static gain 0.36
-  ## instead of 0.8 after three alternations)
-  k_lev = [];
-  if (! isempty (tmpl.out) && isfield (tmpl, "levels") && tmpl.levels)
-    k_lev = find (strcmp ({tmpl.out.type}, "offset"), 1);
-  endif
-  spec = struct ("n", n, "fixed", tmpl.fixed, "fval", tmpl.F(2:end),
-                 "initial_state", isfield (D, "initial_state")
-                                  && D.initial_state,
-                 "output_offset", ! isempty (k_lev));
-  miss = false (N, 1);
-  if (isfield (D, "missing") && numel (D.missing) == N)
-    miss = D.missing(:);       # bridged samples: no error, no information
-    spec.missing = miss;
-  endif
-  others = setdiff (1:numel (tmpl.out), k_lev);
-  o = zeros (N, 1);
-  o_lin = o;
-  mask = false (N, 1);
-  isat = [];
-  if (! isempty (tmpl.out))
-    isat = find (strcmp ({tmpl.out.type}, "sat"), 1);
-  endif
-  rounds = 1;
-  if (! isempty (others))
-    rounds = 3;
-  endif
-  best = [];
-  for round = 1:rounds
-    if (round == 1)
-      ## the given starts first; the engine's automatic start (a grid of
-      ## SVF cut-offs, the costly one) only when none of them gives a
-      ## stable estimate
-      cands = starts(:)';
-      auto = cellfun ("isempty", cands);
-      cands = [cands(! auto), cands(auto)];
-      if (isempty (cands))
-        cands = {[]};
-      endif
-    else
-      cands = {best.F};
-      Bprev = best.B;
-    endif
-    best = [];
-    for s = 1:numel (cands)
-      if (isempty (cands{s}) && ! isempty (best))
-        break;                 # a given start gave a stable estimate
-      endif
-      if (round == 1)
-        B0 = {tmpl.channels.B};
-      else
-        B0 = Bprev;
-      endif
-      o_ = struct ("F0", cands{s}, "B0", {B0}, "maxiter", ctx.maxiter,
-                   "tol", 1e-6, "c0", 0);
-      if (! isempty (k_lev))
-        o_.c0 = tmpl.out(k_lev).c;
-      endif
-      try
-        est = residtrace_estimate (y - o, ch, D.Ts, spec, o_);
-      catch
-        continue;
-      end_try_catch
-      if (! est.ok || ! stable (est.F, tmpl.fixed))
-        continue;
-      endif
-      if (isempty (best) || est.s2 < best.s2)
-        best = est;
-      endif
-    endfor
-    if (isempty (best))
-      model.ok = false;
-      if (round == 1 && ! (isfield (ctx, "keep_order") && ctx.keep_order))
-        model = refit_without_fast_poles (tmpl, D, ctx, model);
-      endif
-      return;
-    endif
-    if (! isempty (k_lev))
-      model.out(k_lev).c = best.offset;
-      model.out(k_lev).cstd = best.offset_std;
-    endif
-    if (! isempty (others))
-      [o_lin, model.out(others)] = fit_out (tmpl.out(others), y - best.x,
-                                            best.x - best.offset, D.Ts,
-                                            ! mask & ! miss);
-      o = o_lin;
-      if (! isempty (isat))
-        lv = tmpl.out(isat).c;
-        yl = best.x + o_lin;
-        mask = (yl > lv(2)) | (yl < lv(1));
-        o(mask) = y(mask) - best.x(mask);      # y - o = x: imputed
-      endif
-    endif
+  ## the fit itself: core/include/ctid/apps/residtrace/structure_fit.hpp
+  o = residtrace_channels (tmpl.channels);
+  o.B = {tmpl.channels.B};
+  kinds = {"offset", "poly", "sinusoid", "sat"};
+  o.out_kind = zeros (1, numel (tmpl.out));
+  for k = 1:numel (tmpl.out)
+    o.out_kind(k) = find (strcmp (kinds, tmpl.out(k).type)) - 1;
   endfor
-  if (! isempty (isat))
-    o = min (max (best.x + o_lin, lv(1)), lv(2)) - best.x;
+  o.out_c = {tmpl.out.c};
+  o.out_omega = [tmpl.out.omega];
+  o.ts = D.Ts;
+  o.rule = lower (D.intersample);
+  o.vhat = D.vhat;
+  o.ysm = D.ysm;
+  o.initial_state = isfield (D, "initial_state") && D.initial_state;
+  if (isfield (D, "missing") && numel (D.missing) == numel (D.y))
+    o.missing = double (D.missing(:));
   endif
-  model.F = best.F;
+  o.F = tmpl.F;
+  o.fixed = double (tmpl.fixed);
+  o.levels = isfield (tmpl, "levels") && tmpl.levels;
+  o.starts = starts;
+  o.maxiter = ctx.maxiter;
+  r = effect_sim_mex ("residtrace", "fit", D.u, D.y, o);
+  if (! r.ok)
+    model.ok = false;
+    if (r.failed_round == 1
+        && ! (isfield (ctx, "keep_order") && ctx.keep_order))
+      model = refit_without_fast_poles (tmpl, D, ctx, model);
+    endif
+    return;
+  endif
+  for k = find (r.out_fitted)
+    model.out(k).c = r.out_c{k};
+    model.out(k).cstd = r.out_cstd{k};
+  endfor
+  model.F = r.F;
   for j = 1:numel (model.channels)
-    model.channels(j).B = best.B{j};
+    model.channels(j).B = r.B{j};
   endfor
-  e = y - best.x - o;
-  e(miss) = 0;
-  nout = sum (arrayfun (@(m) sum (isfinite (m.c)), model.out));
-  model.np = best.np + nout;
-  model.s2 = sum (e .^ 2) / max (N - model.np, 1);
-  model.theta = best.theta;
-  model.cov = best.cov;
-  model.bic = N * log (model.s2) + model.np * log (N);
-  model.e_est = e;
+  model.np = r.np;
+  model.s2 = r.s2;
+  model.theta = r.theta;
+  model.cov = r.cov;
+  model.bic = r.bic;
+  model.e_est = r.e;
   model.ok = true;
   if (! (isfield (ctx, "keep_order") && ctx.keep_order))
     red = residualised (model, D.Ts);
@@ -335,51 +269,4 @@ function model = refit_without_fast_poles (tmpl, D, ctx, model)
       model = m;
     endif
   endif
-endfunction
-
-## F stable apart from its structural zeros at the origin (integrators);
-## a model whose structure has no damping may be marginally stable.
-function ok = stable (F, fixed)
-  n = numel (F) - 1;
-  r = 0;
-  while (r < n && fixed(n-r) && F(n-r+1) == 0)
-    r++;
-  endwhile
-  z = roots (F(1:end-r));
-  ok = all (real (z) <= 1e-9 * abs (z));  # marginal (undamped) is allowed
-endfunction
-
-## Least squares for the output terms on r = y - x (x the model output).
-function [o, out] = fit_out (out, r, x, Ts, use)
-  N = numel (r);
-  t = (0:N-1)' * Ts;
-  X = zeros (N, 0);
-  for k = 1:numel (out)
-    switch (out(k).type)
-      case "offset"
-        X = [X, ones(N, 1)];
-      case "poly"
-        X = [X, x .^ 2, x .^ 3];
-      case "sinusoid"
-        X = [X, sin(out(k).omega * t), cos(out(k).omega * t)];
-    endswitch
-  endfor
-  if (columns (X) == 0)
-    o = zeros (N, 1);
-    return;
-  endif
-  c = X(use, :) \ r(use);
-  o = X * c;
-  s2 = sum ((r(use) - o(use)) .^ 2) / max (sum (use) - numel (c), 1);
-  cstd = sqrt (diag (s2 * inv (X(use, :)' * X(use, :))));
-  off = 0;
-  for k = 1:numel (out)
-    if (strcmp (out(k).type, "sat"))
-      continue;
-    endif
-    m = numel (out(k).c);
-    out(k).c = c(off+1:off+m).';
-    out(k).cstd = cstd(off+1:off+m).';
-    off += m;
-  endfor
 endfunction

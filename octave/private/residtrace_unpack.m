@@ -4,7 +4,8 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{model} =} residtrace_unpack (@var{model}, @var{theta})
 ## Puts the dynamic parameters @var{theta} (free f's, then each channel's
-## numerator, the order of @code{residtrace_estimate}) into @var{model}.
+## numerator, the order of the theta of @code{residtrace_fit}) into
+## @var{model}.
 ## @end deftypefn
 
 function model = residtrace_unpack (model, theta)
