@@ -22,6 +22,7 @@
 #include "ctid/offline/lpv_refined_iv.hpp"
 #include "ctid/offline/output_error.hpp"
 #include "ctid/offline/output_error_options.hpp"
+#include "ctid/offline/output_error_starts.hpp"
 #include "ctid/offline/pde_heat.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_bj.hpp"

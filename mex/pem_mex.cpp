@@ -14,14 +14,18 @@
 // rad/s; 0 a grid), intersample ('zoh' or 'foh'), theta_init
 // ([f; b], or absent for the SRIVC / ARX start), maxiter, tol: the options
 // of output_error_options.hpp, read from that table with its defaults;
-// `pem_mex (fname, "options")` returns the table. arx: na, nb, nk (nb, nk
-// one entry per input). info: converged, iterations,
-// reason, loss, noise_variance, gradient_norm, damping, start,
-// theta_start, simulated (output error) or rows (arx).
+// starts (one column per start), default_start, delay_min, integrate: the
+// minimisation from several starts of output_error_starts.hpp, the lowest
+// loss kept. `pem_mex (fname, "options")` returns the table. arx: na, nb,
+// nk (nb, nk one entry per input). info: converged, iterations, reason,
+// loss, noise_variance, gradient_norm, damping, start, theta_start,
+// simulated, delay_estimated, delay (the model's delay, one input),
+// free_parameters (output error) or rows, prediction_error (arx).
 #include <algorithm>
 
 #include "ctid/offline/output_error.hpp"
 #include "ctid/offline/output_error_options.hpp"
+#include "ctid/offline/output_error_starts.hpp"
 #include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
@@ -49,13 +53,15 @@ void arx_gateway(const Gateway& g, OptionsReader& opt,
   plhs[0] = to_output(r.theta);
   if (nlhs >= 2) plhs[1] = to_output(r.covariance);
   if (nlhs >= 3) {
-    const char* fields[] = {"loss", "noise_variance", "rows"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 3, fields);
+    const char* fields[] = {"loss", "noise_variance", "rows",
+                            "prediction_error"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 4, fields);
     mxSetField(info, 0, "loss", mxCreateDoubleScalar(r.loss));
     mxSetField(info, 0, "noise_variance",
                mxCreateDoubleScalar(r.noise_variance));
     mxSetField(info, 0, "rows",
                mxCreateDoubleScalar(static_cast<double>(r.rows)));
+    mxSetField(info, 0, "prediction_error", to_output(r.prediction_error));
     plhs[2] = info;
   }
 }
@@ -100,17 +106,31 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   data.num_samples = record.num_samples;
   data.ts = record.ts;
   data.instants = record.instants;
-  ctid::OeResult<double> r;
-  const ctid::Status status = ctid::output_error(s, settings, data, &r);
+  ctid::OeStartsResult<double> outcome;
+  ctid::Status status;
+  if (config.from_starts()) {
+    status = ctid::output_error_from_starts(s, settings, config.starts, data,
+                                            &outcome);
+  } else {
+    status = ctid::output_error(s, settings, data, &outcome.best);
+    const ctid::OeResult<double>& b = outcome.best;
+    outcome.delay_estimated = s.estimate_delay;
+    outcome.delay = s.estimate_delay && b.theta.size() > 0
+                        ? b.theta(b.theta.size() - 1)
+                        : s.delay;
+    outcome.free_parameters = static_cast<int>(b.theta.size());
+  }
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
+  const ctid::OeResult<double>& r = outcome.best;
   plhs[0] = to_output(r.theta);
   if (nlhs >= 2) plhs[1] = to_output(r.covariance);
   if (nlhs >= 3) {
-    const char* fields[] = {"converged", "iterations",     "reason",
-                            "loss",      "noise_variance", "gradient_norm",
-                            "damping",   "start",          "theta_start",
-                            "simulated"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 10, fields);
+    const char* fields[] = {
+        "converged",      "iterations",    "reason",          "loss",
+        "noise_variance", "gradient_norm", "damping",         "start",
+        "theta_start",    "simulated",     "delay_estimated", "delay",
+        "free_parameters"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(r.converged));
     mxSetField(info, 0, "iterations", mxCreateDoubleScalar(r.iterations));
     mxSetField(info, 0, "reason", mxCreateString(r.reason.c_str()));
@@ -122,6 +142,11 @@ void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     mxSetField(info, 0, "start", mxCreateString(r.start.c_str()));
     mxSetField(info, 0, "theta_start", to_output(r.theta_start));
     mxSetField(info, 0, "simulated", to_output(r.simulated));
+    mxSetField(info, 0, "delay_estimated",
+               mxCreateLogicalScalar(outcome.delay_estimated));
+    mxSetField(info, 0, "delay", mxCreateDoubleScalar(outcome.delay));
+    mxSetField(info, 0, "free_parameters",
+               mxCreateDoubleScalar(outcome.free_parameters));
     plhs[2] = info;
   }
 }
