@@ -27,6 +27,7 @@
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_bj.hpp"
 #include "ctid/offline/refined_iv_delay.hpp"
+#include "ctid/offline/relay_frequency_data.hpp"
 #include "ctid/recursive/scaling.hpp"
 #include "estimator_args.hpp"
 #include "gateway_common.hpp"

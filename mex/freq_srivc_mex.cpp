@@ -13,11 +13,19 @@
 // ([a b]). theta = [a; b] or [a; b; td] (several inputs: [a_1; ..; a_m; b_1;
 // ..; b_m]) (estimate_delay); cov its covariance; info: delay, noise_variance,
 // loss, iterations, converged, stable, reason.
+//
+//   [w, Y, U, period] = freq_srivc_mex (fname, "relay", y, u, Ts, intsamp)
+//
+// the limit cycle of a relay-feedback record (y, u N-by-1, regular
+// sampling Ts) as frequency data (core/include/ctid/offline/
+// relay_frequency_data.hpp); intsamp true: y_k is the mean of y over the
+// sampling interval.
 #include <algorithm>
 #include <complex>
 #include <vector>
 
 #include "ctid/offline/freq_srivc.hpp"
+#include "ctid/offline/relay_frequency_data.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 
@@ -45,8 +53,50 @@ std::vector<std::complex<double>> complex_column(const Gateway& g,
   return v;
 }
 
+mxArray* complex_output(const std::vector<std::complex<double>>& v) {
+  mxArray* a = mxCreateDoubleMatrix(v.size(), 1, mxCOMPLEX);
+  double* re = mxGetPr(a);
+  double* im = mxGetPi(a);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    re[k] = v[k].real();
+    im[k] = v[k].imag();
+  }
+  return a;
+}
+
+void relay_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                   const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "the relay method takes 6 arguments, got " + std::to_string(nrhs));
+  }
+  if (nlhs > 4) g.fail("badInput", "at most 4 outputs");
+  g.require_real_double(prhs[2], "y");
+  const long n = static_cast<long>(mxGetNumberOfElements(prhs[2]));
+  const double* y = g.matrix(prhs[2], "y", n, 1);
+  const double* u = g.matrix(prhs[3], "u", n, 1);
+  const double ts = g.scalar(prhs[4], "Ts");
+  const bool intsamp = g.scalar(prhs[5], "intsamp") != 0;
+  ctid::RelayFrequencyData<double> d;
+  g.check(ctid::relay_frequency_data(y, u, n, ts, intsamp, &d));
+  plhs[0] = ctid::mex::make_output_matrix(static_cast<long>(d.w.size()), 1);
+  std::copy(d.w.begin(), d.w.end(), mxGetPr(plhs[0]));
+  if (nlhs >= 2) plhs[1] = complex_output(d.y);
+  if (nlhs >= 3) plhs[2] = complex_output(d.u);
+  if (nlhs >= 4) plhs[3] = mxCreateDoubleScalar(d.period);
+}
+
 void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
+  if (nrhs >= 2 && mxIsChar(prhs[1])) {
+    char word[8] = {0};
+    if (mxGetString(prhs[1], word, sizeof word) != 0 ||
+        std::string(word) != "relay") {
+      g.fail("badInput", "the only method is 'relay'");
+    }
+    relay_gateway(g, nlhs, plhs, nrhs, prhs);
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments, got " + std::to_string(nrhs));
