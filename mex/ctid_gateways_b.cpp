@@ -17,6 +17,7 @@
 #include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/cumulant_eiv.hpp"
 #include "ctid/offline/freq_srivc.hpp"
+#include "ctid/offline/freq_srivc_options.hpp"
 #include "ctid/offline/gpmf_state_space.hpp"
 #include "ctid/offline/hammerstein.hpp"
 #include "ctid/offline/lpv_refined_iv.hpp"

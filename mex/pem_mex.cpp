@@ -21,6 +21,13 @@
 // loss, noise_variance, gradient_norm, damping, start, theta_start,
 // simulated, delay_estimated, delay (the model's delay, one input),
 // free_parameters (output error) or rows, prediction_error (arx).
+//
+//   start = pem_mex (fname, "reduce", f, b, spec)
+//
+// the start [f; b; td] of output_error_starts.hpp's reduced_start from the
+// over-parametrised model b/(p^n + f_1 p^(n-1) + ..) e^(-td p) (f without
+// its leading 1), [] when the reduced model is unstable; spec fields nf,
+// nb, band ([w_lo w_hi], rad/s), td, search_delay, delay_max.
 #include <algorithm>
 
 #include "ctid/offline/output_error.hpp"
@@ -66,8 +73,47 @@ void arx_gateway(const Gateway& g, OptionsReader& opt,
   }
 }
 
+void reduce_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                    const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the reduce method takes 5 arguments, got " + std::to_string(nrhs));
+  }
+  if (nlhs > 1) g.fail("badInput", "at most 1 output");
+  const Eigen::MatrixXd f = g.eigen_matrix(prhs[2], "f", -1, -1);
+  const Eigen::MatrixXd b = g.eigen_matrix(prhs[3], "b", -1, -1);
+  OptionsReader opt(g, prhs[4]);
+  const int nf = opt.integer("nf");
+  const int nb = opt.integer("nb");
+  const Eigen::MatrixXd band = opt.matrix("band");
+  if (band.size() != 2)
+    g.fail("badOption", "option 'band' must be [w_lo w_hi]");
+  const double td = opt.scalar("td", 0.0);
+  const bool search = opt.flag("search_delay", false);
+  const double delay_max = opt.scalar("delay_max", 0.0);
+  opt.finish();
+  const Eigen::VectorXd fv =
+      Eigen::Map<const Eigen::VectorXd>(f.data(), f.size());
+  const Eigen::VectorXd bv =
+      Eigen::Map<const Eigen::VectorXd>(b.data(), b.size());
+  Eigen::VectorXd start;
+  g.check(ctid::reduced_start<double>(fv, bv, td, nf, nb, band(0), band(1),
+                                      search, delay_max, &start));
+  plhs[0] = to_output(start);
+}
+
 void pem_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                  const mxArray* prhs[]) {
+  if (nrhs >= 2 && mxIsChar(prhs[1]) &&
+      !ctid::mex::asks_for_options(nrhs, prhs)) {
+    char word[8] = {0};
+    if (mxGetString(prhs[1], word, sizeof word) != 0 ||
+        std::string(word) != "reduce") {
+      g.fail("badInput", "the only methods are 'options' and 'reduce'");
+    }
+    reduce_gateway(g, nlhs, plhs, nrhs, prhs);
+    return;
+  }
   if (ctid::mex::asks_for_options(nrhs, prhs)) {
     plhs[0] =
         ctid::mex::option_table_struct(ctid::output_error_options<double>());

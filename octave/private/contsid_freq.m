@@ -21,7 +21,7 @@ function [M, info] = contsid_freq (fname, args)
   endif
   data = args{1};
   opts = struct ("Tol", [], "MaxIter", [], "TdMin", 0, "TdMax", [],
-                 "NumTd", 50, "FixTd", "off", "IntSamp", "on",
+                 "NumTd", [], "FixTd", "off", "IntSamp", "on",
                  "TolPar", [], "TolFun", [], "StepMax", [],
                  "StepReduction", [], "Lambda", []);
   o = struct ();
@@ -154,11 +154,14 @@ function [M, info] = contsid_freq (fname, args)
     endif
     o.td_min = opts.TdMin;
     o.td_max = tdmax;
-    if (! isscalar (opts.NumTd) || opts.NumTd < 2
-        || opts.NumTd != round (opts.NumTd))
-      error ([fname ":badOption"], "%s: NumTd must be an integer >= 2", fname);
+    if (! isempty (opts.NumTd))          # (default: the core's table)
+      if (! isscalar (opts.NumTd) || opts.NumTd < 2
+          || opts.NumTd != round (opts.NumTd))
+        error ([fname ":badOption"], "%s: NumTd must be an integer >= 2",
+               fname);
+      endif
+      o.num_td = opts.NumTd;
     endif
-    o.num_td = opts.NumTd;
     o.grid = isempty (td0);
     if (! isempty (td0))
       o.td_min = min (o.td_min, td0);
@@ -376,7 +379,8 @@ function [M, info] = contsid_freq (fname, args)
              "with one output and one input"], fname);
     endif
     [w, Y, U, period] = freq_srivc_mex (fname, "relay", double (y),
-                                        double (u), Ts, double (intsamp));
+                                        double (u),
+                                        struct ("Ts", Ts, "intsamp", intsamp));
   endfunction
 endfunction
 

@@ -680,14 +680,13 @@ endfunction
 
 ## tfcoe's OverPar 'on': one more start [f; b; td] from an over-parametrised
 ## fit.  The output error of the structure with one pole and one zero more
-## (np + 1, nz + 1; its delay searched as tfcoe's) is fitted first: the
-## output-error loss of an over-parametrised model has fewer non-global
-## minima (Soderstrom and Stoica, "Some properties of the output error
-## method", Automatica 18(1), 1982), and the extra pole-zero pair can take
-## up a delay error (a first-order Pade term).  Its frequency response over
-## the band of the record (2 pi / T to the Nyquist frequency) is then
-## reduced to the asked orders, the delay with them, by tffcoe's
-## frequency-domain output error (contsid_freq), which gives the start.
+## (np + 1, nz + 1; its delay searched as tfcoe's) is fitted first; the
+## core (output_error_starts.hpp, reduced_start) reduces its frequency
+## response over the band of the record (2 pi / T to the Nyquist
+## frequency) to the asked orders, the delay with them, by the
+## frequency-domain output error (tffcoe's): fewer non-global minima
+## (Soderstrom and Stoica, Automatica 18(1), 1982), and the extra
+## pole-zero pair can take up a delay error.  [] when that is unstable.
 function th = overpar_start (fname, d, np, nz, td, o)
   args = {np + 1, nz + 1};
   if (! isempty (td))
@@ -714,22 +713,9 @@ function th = overpar_start (fname, d, np, nz, td, o)
     warning (state);
   end_unwind_protect
   [num, den] = tfdata (Mo, "vector");
-  h = median (diff (d.t));
-  T = d.t(end) - d.t(1);
-  w = logspace (log10 (2 * pi / T), log10 (pi / h), 200).';
-  G = polyval (num, 1i * w) ./ polyval (den, 1i * w) ...
-      .* exp (-1i * w * get (Mo, "IODelay"));
-  fr = idfrd (G, w, "Ts", 0);
-  if (nz < np)
-    Mr = contsid_freq ("tffcoe", {fr, np, nz, "TdMax", o.tdmax});
-  else
-    Mr = contsid_freq ("tffcoe", {fr, np, nz, get(Mo, "IODelay"), ...
-                                  "FixTd", "on"});
-  endif
-  [num, den] = tfdata (Mr, "vector");
-  num = num(end-nz:end);
-  th = [den(2:end), num, get(Mr, "IODelay")].';
-  if (any (real (roots (den)) >= 0))
-    th = [];                            # no stable start: not used
-  endif
+  band = [2 * pi / (d.t(end) - d.t(1)), pi / median (diff (d.t))];
+  th = pem_mex (fname, "reduce", den(2:end), num,
+                struct ("nf", np, "nb", nz + 1, "band", band,
+                        "td", get (Mo, "IODelay"), "search_delay", nz < np,
+                        "delay_max", o.tdmax));
 endfunction

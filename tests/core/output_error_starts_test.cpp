@@ -201,6 +201,31 @@ TEST(OutputErrorStarts, BadInputIsReported) {
             ErrorCode::kNotSupported);
 }
 
+// An over-parametrised model with a cancelling pole-zero pair reduces to
+// the model without it exactly: 2 (p + 3) / ((p^2 + 1.2 p + 1) (p + 3))
+// e^(-0.3 p), with the delay kept or searched.
+TEST(ReducedStart, ACancellingPairIsRemovedExactly) {
+  Eigen::VectorXd f_over(3), b_over(2);
+  f_over << 4.2, 4.6, 3;  // (p^2 + 1.2 p + 1)(p + 3), without its leading 1
+  b_over << 2, 6;
+  Eigen::VectorXd expected(4);
+  expected << 1.2, 1, 2, 0.3;
+  for (const bool search : {false, true}) {
+    Eigen::VectorXd start;
+    const Status st = reduced_start<double>(f_over, b_over, 0.3, 2, 1, 0.05,
+                                            20.0, search, 1.0, &start);
+    ASSERT_TRUE(st.ok()) << st.message();
+    ASSERT_EQ(start.size(), 4);
+    EXPECT_LT(relative_error(start, expected), 1e-7)
+        << "search " << search << ": " << start.transpose();
+  }
+  Eigen::VectorXd start;
+  EXPECT_EQ(reduced_start<double>(f_over, b_over, 0.3, 2, 1, 1.0, 0.5, false,
+                                  1.0, &start)
+                .code(),
+            ErrorCode::kBadInput);
+}
+
 TEST(ArxPredictionError, IsTheResidualOverTheRegressionRows) {
   const int n = 300;
   const std::vector<double> u = binary_input(n, 3, 8);

@@ -22,6 +22,15 @@
 // exact FOH signal on the same instants, so the pole at 0 is exact and F'
 // is estimated. Starts and result are in the layout of F (f_nf = 0, with
 // zero rows and columns of the covariance).
+//
+// reduced_start gives one more start from an over-parametrised fit
+// (tfcoe's OverPar): the output-error loss of an over-parametrised model
+// has fewer non-global minima (Soderstrom and Stoica, "Some properties of
+// the output error method", Automatica 18(1), 1982), and an extra
+// pole-zero pair can take up a delay error (a first-order Pade term). The
+// frequency response of that model over the band of the record is
+// reduced to the asked orders by the frequency-domain output error
+// (freq_srivc.hpp, TFFCOE), its delay searched or kept.
 #pragma once
 
 #include <Eigen/Dense>
@@ -32,6 +41,7 @@
 
 #include "ctid/base/status.hpp"
 #include "ctid/base/types.hpp"
+#include "ctid/offline/freq_srivc.hpp"
 #include "ctid/offline/output_error.hpp"
 
 namespace ctid {
@@ -239,6 +249,59 @@ Status output_error_from_starts(const OeStructure& structure,
   if (starts.integrate) insert_fixed_zero(fixed_pole, &best);
   result->best = best;
   if (!best.converged) return Status(ErrorCode::kNotConverged, best.reason);
+  return Status::Ok();
+}
+
+// The model f_over (monic, without its leading 1, descending powers of
+// p), b_over, td_over as a frequency response on 200 logarithmically
+// spaced frequencies in [w_lo, w_hi], reduced to nf poles and nb
+// numerator coefficients by freq_srivc's output error: the delay searched
+// on its grid over [0, delay_max] (search_delay) or fixed at td_over.
+// start = [f; b; td]; empty when the reduced model is not stable (no
+// start). A fit that did not converge still gives its last iterate.
+template <typename S>
+Status reduced_start(const Vector<S>& f_over, const Vector<S>& b_over,
+                     S td_over, int nf, int nb, S w_lo, S w_hi,
+                     bool search_delay, S delay_max, Vector<S>* start) {
+  if (start == nullptr) return bad_input("no result given");
+  if (!(w_lo > 0) || !(w_hi > w_lo) || !std::isfinite(w_hi))
+    return bad_input("the band needs 0 < w_lo < w_hi < Inf");
+  if (!f_over.allFinite() || !b_over.allFinite() || !std::isfinite(td_over))
+    return bad_input("the over-parametrised model must be finite");
+  const int K = 200;
+  std::vector<S> w(K);
+  std::vector<std::complex<S>> g(K);
+  const S a = std::log10(w_lo), b = std::log10(w_hi);
+  for (int k = 0; k < K; ++k) {
+    w[k] = std::pow(S(10), a + (b - a) * static_cast<S>(k) / S(K - 1));
+    const std::complex<S> s(0, w[k]);
+    std::complex<S> num = 0, den = 1;
+    for (Eigen::Index i = 0; i < b_over.size(); ++i) num = num * s + b_over(i);
+    for (Eigen::Index i = 0; i < f_over.size(); ++i) den = den * s + f_over(i);
+    g[k] = num / den * std::exp(-s * td_over);
+  }
+  FreqSettings<S> settings;
+  settings.na = nf;
+  settings.nb = nb;
+  settings.output_error = true;
+  if (search_delay) {
+    settings.estimate_delay = true;
+    settings.td_min = 0;
+    settings.td_max = delay_max;
+  } else {
+    settings.delay = td_over;
+  }
+  FreqData<S> data;
+  data.w = w.data();
+  data.y = g.data();
+  data.num_frequencies = K;
+  FreqResult<S> r;
+  const Status status = freq_srivc(settings, data, &r);
+  if (!status.ok() && status.code() != ErrorCode::kNotConverged) return status;
+  start->resize(0);
+  if (!r.stable) return Status::Ok();
+  start->resize(nf + nb + 1);
+  *start << r.a, r.b, r.delay;
   return Status::Ok();
 }
 
