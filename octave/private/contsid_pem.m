@@ -713,7 +713,8 @@ function th = overpar_start (fname, d, np, nz, td, o)
     warning (state);
   end_unwind_protect
   [num, den] = tfdata (Mo, "vector");
-  band = [2 * pi / (d.t(end) - d.t(1)), pi / median (diff (d.t))];
+  h = median (diff (d.t));
+  band = [2 * pi / (d.t(end) - d.t(1)), pi / h];
   th = pem_mex (fname, "reduce", den(2:end), num,
                 struct ("nf", np, "nb", nz + 1, "band", band,
                         "td", get (Mo, "IODelay"), "search_delay", nz < np,
