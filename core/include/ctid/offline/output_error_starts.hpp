@@ -53,7 +53,8 @@ struct OeStartsSettings {
   // the nearer bound).
   std::vector<Vector<S>> starts;
   // Also the run of OeSettings as given (theta_init, or the SRIVC / ARX
-  // start), first.
+  // start), first; its delay (when estimated) starts from the
+  // structure's and is bounded by the iteration's [0, delay_max] only.
   bool default_start = false;
   S delay_min = 0;  // lower bound of an estimated delay (time units)
   bool integrate = false;
