@@ -8,16 +8,27 @@
 //
 // w K-by-1 frequencies (rad/s, >= 0); Y K-by-1 complex output (or the
 // frequency response); U K-by-m complex inputs, or [] (U = 1). opts fields:
-// na, nb (required; one entry per input, y = sum_j B_j/A_j U_j), tol, maxiter,
-// delay, estimate_delay, td_min, td_max, num_td, grid, output_error, theta_init
-// ([a b]). theta = [a; b] or [a; b; td] (several inputs: [a_1; ..; a_m; b_1;
-// ..; b_m]) (estimate_delay); cov its covariance; info: delay, noise_variance,
-// loss, iterations, converged, stable, reason.
+// the options of freq_srivc_options.hpp, read from that table with its
+// defaults (na, nb required; one entry per input, y = sum_j B_j/A_j U_j);
+// `freq_srivc_mex (fname, "options")` returns the table. theta = [a; b]
+// or [a; b; td] (estimate_delay; several inputs: [a_1; ..; a_m; b_1; ..;
+// b_m]); cov its covariance; info: delay, noise_variance, loss,
+// iterations, converged, stable, reason.
+//
+//   [w, Y, U, period] = freq_srivc_mex (fname, "relay", y, u, opts)
+//
+// the limit cycle of a relay-feedback record (y, u N-by-1) as frequency
+// data (core/include/ctid/offline/relay_frequency_data.hpp); opts fields
+// Ts (regular sampling), intsamp (true: y_k is the mean of y over the
+// sampling interval; default false).
 #include <algorithm>
 #include <complex>
 #include <vector>
 
 #include "ctid/offline/freq_srivc.hpp"
+#include "ctid/offline/freq_srivc_options.hpp"
+#include "ctid/offline/relay_frequency_data.hpp"
+#include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
 
@@ -45,8 +56,57 @@ std::vector<std::complex<double>> complex_column(const Gateway& g,
   return v;
 }
 
+mxArray* complex_output(const std::vector<std::complex<double>>& v) {
+  mxArray* a = mxCreateDoubleMatrix(v.size(), 1, mxCOMPLEX);
+  double* re = mxGetPr(a);
+  double* im = mxGetPi(a);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    re[k] = v[k].real();
+    im[k] = v[k].imag();
+  }
+  return a;
+}
+
+void relay_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                   const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "the relay method takes 5 arguments, got " + std::to_string(nrhs));
+  }
+  if (nlhs > 4) g.fail("badInput", "at most 4 outputs");
+  g.require_real_double(prhs[2], "y");
+  const long n = static_cast<long>(mxGetNumberOfElements(prhs[2]));
+  const double* y = g.matrix(prhs[2], "y", n, 1);
+  const double* u = g.matrix(prhs[3], "u", n, 1);
+  OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("Ts");
+  const bool intsamp = opt.flag("intsamp", false);
+  opt.finish();
+  ctid::RelayFrequencyData<double> d;
+  g.check(ctid::relay_frequency_data(y, u, n, ts, intsamp, &d));
+  plhs[0] = ctid::mex::make_output_matrix(static_cast<long>(d.w.size()), 1);
+  std::copy(d.w.begin(), d.w.end(), mxGetPr(plhs[0]));
+  if (nlhs >= 2) plhs[1] = complex_output(d.y);
+  if (nlhs >= 3) plhs[2] = complex_output(d.u);
+  if (nlhs >= 4) plhs[3] = mxCreateDoubleScalar(d.period);
+}
+
 void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] =
+        ctid::mex::option_table_struct(ctid::freq_srivc_options<double>());
+    return;
+  }
+  if (nrhs >= 2 && mxIsChar(prhs[1])) {
+    char word[8] = {0};
+    if (mxGetString(prhs[1], word, sizeof word) != 0 ||
+        std::string(word) != "relay") {
+      g.fail("badInput", "the only method is 'relay'");
+    }
+    relay_gateway(g, nlhs, plhs, nrhs, prhs);
+    return;
+  }
   if (nrhs != 5) {
     g.fail("badInput",
            "the gateway takes 5 arguments, got " + std::to_string(nrhs));
@@ -72,45 +132,14 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
 
   OptionsReader opt(g, prhs[4]);
-  ctid::FreqSettings<double> s;
-  // na, nb, delay: one entry per input (a scalar: one input)
-  const std::vector<int> na = opt.integer_vector("na");
-  const std::vector<int> nb = opt.integer_vector("nb");
-  const Eigen::MatrixXd delay = opt.matrix("delay");
-  if (na.size() != static_cast<size_t>(inputs) ||
-      nb.size() != static_cast<size_t>(inputs) ||
-      (delay.size() != 0 && delay.size() != inputs)) {
-    g.fail("dimensionMismatch", "na, nb and delay need one entry per input (" +
-                                    std::to_string(inputs) + ")");
-  }
-  s.na = na[0];
-  s.nb = nb[0];
-  s.delay = delay.size() != 0 ? delay(0) : 0.0;
-  long np = 0;
-  for (long j = 0; j < inputs; ++j) {
-    ctid::FreqChannel<double> c;
-    c.na = na[j];
-    c.nb = nb[j];
-    c.delay = delay.size() != 0 ? delay(j) : 0.0;
-    if (inputs > 1) s.inputs.push_back(c);
-    if (c.na < 0 || c.nb < 0 || c.na > 1000 || c.nb > 1000) {
-      g.fail("badInput", "na and nb must lie in [0, 1000]");
-    }
-    np += c.na + c.nb;
-  }
-  s.tolerance = opt.scalar("tol", 1e-8);
-  s.max_iterations = opt.integer("maxiter", 50);
-  s.estimate_delay = opt.flag("estimate_delay", false);
-  s.td_min = opt.scalar("td_min", 0);
-  s.td_max = opt.scalar("td_max", 0);
-  s.num_td = opt.integer("num_td", 50);
-  s.grid = opt.flag("grid", true);
-  s.output_error = opt.flag("output_error", false);
-  const Eigen::MatrixXd init = opt.matrix("theta_init");
-  if (init.size() > 0) {
-    s.theta_init = Eigen::Map<const Eigen::VectorXd>(init.data(), init.size());
-  }
+  ctid::FreqConfig<double> config;
+  ctid::mex::read_option_table(g, opt, ctid::freq_srivc_options<double>(),
+                               &config);
   opt.finish();
+  ctid::FreqSettings<double> s;
+  g.check(ctid::freq_settings(config, static_cast<std::size_t>(inputs), &s));
+  long np = 0;
+  for (const ctid::FreqChannel<double>& c : s.channels()) np += c.na + c.nb;
 
   ctid::FreqData<double> data;
   data.w = w;

@@ -89,6 +89,12 @@ endfunction
 %! C = getcov (M);                  # B's leading zero is fixed
 %! assert (C([1 2 4 5], [1 2 4 5]), s2 * inv (Phi' * Phi), 1e-10);
 %! assert (M.NoiseVariance, s2, 1e-12);
+%! ## Report.Fit: of the one-step prediction error over the whole record
+%! ## (the regressor's values before the record 0)
+%! ep = y - filter ([0 -th(1:2)'], 1, y) - filter ([0 th(3:4)'], 1, u);
+%! assert (M.Report.Fit.MSE, mean (ep .^ 2), 1e-12);
+%! assert (M.Report.Fit.FitPercent,
+%!         100 * (1 - norm (ep) / norm (y - mean (y))), 1e-9);
 
 %!test  # two inputs
 %! u2 = sign (randn (N, 1));

@@ -199,6 +199,11 @@ endfunction
 %! assert (Mon.Report.Fit.LossFcn <= Moff.Report.Fit.LossFcn * (1 + 1e-12));
 %! [p, sd] = getpvec (Mon);
 %! assert (all (abs (p - getpvec (M0)) < 5 * sd));
+%! ## nz = np (no delay estimated): the reduced start competes with the
+%! ## default one
+%! Mon = tfcoe (dn, 2, 2, "OverPar", "on");
+%! Moff = tfcoe (dn, 2, 2);
+%! assert (Mon.Report.Fit.LossFcn <= Moff.Report.Fit.LossFcn * (1 + 1e-12));
 %!error id=tfcoe:notSupported tfcoe (iddata (x, [u u], Ts), 2, 1)
 %!error id=tfcoe:badInput tfcoe (1, 2, 3, 4, 5, 6, 7, 8)
 %!warning id=tfcoe:notConverged

@@ -21,7 +21,7 @@ function [M, info] = contsid_freq (fname, args)
   endif
   data = args{1};
   opts = struct ("Tol", [], "MaxIter", [], "TdMin", 0, "TdMax", [],
-                 "NumTd", 50, "FixTd", "off", "IntSamp", "on",
+                 "NumTd", [], "FixTd", "off", "IntSamp", "on",
                  "TolPar", [], "TolFun", [], "StepMax", [],
                  "StepReduction", [], "Lambda", []);
   o = struct ();
@@ -154,11 +154,14 @@ function [M, info] = contsid_freq (fname, args)
     endif
     o.td_min = opts.TdMin;
     o.td_max = tdmax;
-    if (! isscalar (opts.NumTd) || opts.NumTd < 2
-        || opts.NumTd != round (opts.NumTd))
-      error ([fname ":badOption"], "%s: NumTd must be an integer >= 2", fname);
+    if (! isempty (opts.NumTd))          # (default: the core's table)
+      if (! isscalar (opts.NumTd) || opts.NumTd < 2
+          || opts.NumTd != round (opts.NumTd))
+        error ([fname ":badOption"], "%s: NumTd must be an integer >= 2",
+               fname);
+      endif
+      o.num_td = opts.NumTd;
     endif
-    o.num_td = opts.NumTd;
     o.grid = isempty (td0);
     if (! isempty (td0))
       o.td_min = min (o.td_min, td0);
@@ -174,14 +177,8 @@ function [M, info] = contsid_freq (fname, args)
   endif
   ## theta = [a_1; ..; a_nu; b_1; ..; b_nu] (several inputs: oe, tfest)
   nu = numel (na);
-  if (isempty (U))
-    Uc = ones (size (Y));
-  else
-    Uc = U;
-  endif
   Fs = cell (1, nu); bs = cell (1, nu);
   at = 0; bt = sum (na);
-  GU = zeros (size (Y));
   delays = info.delay;
   if (nu > 1)
     delays = td0;
@@ -191,15 +188,12 @@ function [M, info] = contsid_freq (fname, args)
     bs{j} = theta(bt+(1:nb(j))).';
     at += na(j);
     bt += nb(j);
-    GU += polyval (bs{j}, 1i * w) ./ polyval (Fs{j}, 1i * w) ...
-          .* exp (-1i * w * delays(j)) .* Uc(:, j);
   endfor
   [F, b] = deal (Fs{1}, bs{1});
-  E = Y - GU;
   K = numel (w);
   npar = numel (theta);
-  mse = mean (abs (E) .^ 2);
-  fit = struct ("FitPercent", 100 * (1 - norm (E) / norm (Y)),
+  mse = info.loss;                      # mean |Y - G U|^2 (the core's)
+  fit = struct ("FitPercent", 100 * (1 - sqrt (K * mse) / norm (Y)),
                 "LossFcn", mse, "MSE", mse,
                 "FPE", mse * (1 + npar / (2 * K)) / (1 - npar / (2 * K)));
   info.w = w;
@@ -372,13 +366,10 @@ function [M, info] = contsid_freq (fname, args)
     endif
   endfunction
 
-  ## The limit cycle of a relay-feedback record as frequency data: the
-  ## record between the first and the last upward switch of u (a whole
-  ## number c of periods), its DFT at the multiples of c (the harmonics of
-  ## the cycle) where u has at least 1 % of its largest harmonic and below
-  ## a quarter of the sampling frequency; U corrected for the hold
-  ## (u is ZOH): U_c = U_d (1 - e^(-jw Ts)) / (jw Ts); with IntSamp 'on'
-  ## (y_k the mean of y over the interval) Y is corrected likewise.
+  ## The limit cycle of a relay-feedback record as frequency data: its
+  ## harmonics, the input corrected for its hold (core
+  ## relay_frequency_data.hpp); with IntSamp 'on' (y_k the mean of y over
+  ## the interval) the output likewise.
   function [w, Y, U, period, Ts] = relay_frequency_data (data)
     Ts = get (data, "Ts");
     y = get (data, "OutputData");
@@ -387,36 +378,9 @@ function [M, info] = contsid_freq (fname, args)
       error ([fname ":badInput"], ["%s: time-domain data must be regular "
              "with one output and one input"], fname);
     endif
-    level = (max (u) + min (u)) / 2;
-    up = find (u(1:end-1) <= level & u(2:end) > level) + 1;
-    if (numel (up) < 3)
-      error ([fname ":badInput"], ["%s: the input shows fewer than two "
-             "periods of a limit cycle (relay feedback data expected)"],
-             fname);
-    endif
-    idx = up(1):(up(end) - 1);
-    c = numel (up) - 1;
-    n = numel (idx);
-    period = n / c * Ts;
-    Yd = fft (y(idx));
-    Ud = fft (u(idx));
-    r = (c:c:floor (n / 4)).';
-    if (abs (Ud(1)) > 1e-9 * n * max (abs (u)))
-      r = [0; r];
-    endif
-    Yd = Yd(r + 1);
-    Ud = Ud(r + 1);
-    keep = abs (Ud) >= 0.01 * max (abs (Ud));
-    r = r(keep); Yd = Yd(keep); Ud = Ud(keep);
-    w = 2 * pi * r / (n * Ts);
-    h = ones (size (w));
-    nz = w > 0;
-    h(nz) = (1 - exp (-1i * w(nz) * Ts)) ./ (1i * w(nz) * Ts);
-    U = Ud .* h;
-    Y = Yd;
-    if (intsamp)
-      Y = Yd ./ h;
-    endif
+    [w, Y, U, period] = freq_srivc_mex (fname, "relay", double (y),
+                                        double (u),
+                                        struct ("Ts", Ts, "intsamp", intsamp));
   endfunction
 endfunction
 

@@ -196,22 +196,9 @@ function [M, info] = arx_model (fname, d, rest)
     at += nk(j) + nb(j);
   endfor
   M = set_cov (M, P, theta, free);
-  n = rows (d.y);
-  e = d.y - sim_arx (A, B, d, nu);
-  M = set_report (M, fname, d, e, numel (theta), 0, true, "linear LS", n);
-endfunction
-
-## One-step prediction of the ARX model, for its Report.Fit (the SITB
-## reports the prediction fit for ARX).
-function e = sim_arx (A, B, d, nu)
-  if (! iscell (B))
-    B = {B};
-  endif
-  yp = filter ([0 -A(2:end)], 1, d.y);
-  for j = 1:nu
-    yp += filter (B{j}, 1, d.u(:, j));
-  endfor
-  e = d.y - yp;
+  ## the one-step prediction error (the SITB reports the prediction fit)
+  M = set_report (M, fname, d, info.prediction_error, numel (theta), 0, true,
+                  "linear LS", rows (d.y));
 endfunction
 
 ## The covariance in getpvec's layout: P is over the free parameters
@@ -433,24 +420,16 @@ function [M, info] = tf_model (fname, d, rest)
     check_integration (fname, d, np, nz, o);
   endif
   df = contsid_focus_filter (fname, d, o.band, forder);
-  dg = df;                              # the data the gateway fits
-  npg = np;                             # its denominator order
-  if (o.integ)
-    ## B(p)/(p F'(p)) u = B(p)/F'(p) v with v the integral of u: of a ZOH
-    ## input an exact FOH signal on the same instants (check_integration),
-    ## so the pole at 0 is fixed exactly and F' is estimated.
-    dg.u = [0; cumsum(d.u(1:end-1) .* diff (d.t))];
-    dg.intersample = "foh";
-    npg = np - 1;
-  endif
   rule = "zoh";
-  if (strcmpi (dg.intersample, "foh"))
+  if (strcmpi (df.intersample, "foh"))
     rule = "foh";
   endif
-  opts = struct ("model", "oe_ct", "nf", npg, "nb", nz + 1, "nk", 0 * np,
+  ## Integration 'on': B(p)/(p F'(p)) fitted by the core as B/F' on the
+  ## integral of the ZOH input (check_integration), f_np = 0 fixed.
+  opts = struct ("model", "oe_ct", "nf", np, "nb", nz + 1, "nk", 0 * np,
                  "delay", td, "intersample", rule, "maxiter", o.maxiter,
                  "tol", o.tol, "estimate_delay", estimate,
-                 "delay_max", o.tdmax, "cutoff", 0);
+                 "delay_max", o.tdmax, "cutoff", 0, "integrate", o.integ);
   if (! isempty (o.lambda))
     opts.cutoff = o.lambda;
   endif
@@ -458,80 +437,37 @@ function [M, info] = tf_model (fname, d, rest)
     ## The delay located by tfsrivc's search (its grid, then its
     ## Gauss-Newton refinement; with td also that refinement from td), then
     ## refined with the coefficients by the output-error minimisation from
-    ## each start; the lowest loss wins.  (On a ZOH input the loss has a
-    ## kink at every whole number of samples of delay, where a local
-    ## minimum can hold a gradient method: from td alone the TFCOE demo
-    ## stays at 7.4994 s for a true 8 s.)
+    ## each start, td kept in [TdMin, TdMax]; the lowest loss wins (core
+    ## output_error_starts.hpp).  (On a ZOH input the loss has a kink at
+    ## every whole number of samples of delay, where a local minimum can
+    ## hold a gradient method: from td alone the TFCOE demo stays at 7.4994
+    ## s for a true 8 s.)
     [starts, o.tdmax, search] = srivc_delay_start (fname, df, np, nz,
                                                    td_given, o, tdmax_given);
     if (overpar)
       starts{end+1} = overpar_start (fname, d, np, nz, td_given, o);
-      starts = starts(! cellfun ("isempty", starts));
     endif
-    if (o.integ)
-      ## the starts' f_np is 0 (fixed in SRIVC): the gateway's [f'; b; td]
-      starts = cellfun (@(th) th([1:np-1, np+1:end]), starts,
-                        "UniformOutput", false);
-    endif
-    estimate = true;
+    opts.starts = [starts{:}];
     opts.estimate_delay = true;
     opts.delay_max = o.tdmax;
-    best = Inf;
-    for k = 1:numel (starts)
-      st = starts{k};
-      st(end) = min (max (st(end), o.tdmin), o.tdmax);
-      [th, Pk, ik] = oe_from (fname, dg, opts, st, o.tdmin);
-      if (k == 1 || ik.loss < best)
-        best = ik.loss;
-        theta = th;
-        P = Pk;
-        info = ik;
-      endif
-    endfor
-    if (theta(end) <= o.tdmin + 1e-6 * median (diff (d.t)))
-      ## At its bound TdMin (to 1e-6 samples) the delay is no free parameter
-      ## (an active constraint): the minimum over the coefficients at TdMin.
-      estimate = false;
-      opts.estimate_delay = false;
-      opts.delay = o.tdmin;
-      opts.theta_init = theta(1:end-1);
-      [theta, P, info] = call_gateway (fname, dg, opts);
-      td = o.tdmin;
-    endif
-  else
-    [theta, P, info] = call_gateway (fname, df, opts);
-    th0 = [];
-    if (overpar)
-      th0 = overpar_start (fname, d, np, nz, td_given, o);
-    endif
+    opts.delay_min = o.tdmin;
+  elseif (overpar)
+    th0 = overpar_start (fname, d, np, nz, td_given, o);
     if (! isempty (th0))
-      opts.theta_init = th0(1:end-1);
-      [th, Pk, ik] = call_gateway (fname, df, opts);
-      if (ik.loss < info.loss)
-        [theta, P, info] = deal (th, Pk, ik);
-      endif
+      opts.starts = th0(1:end-1);
+      opts.default_start = true;
     endif
   endif
-  npar = numel (theta);
-  if (o.integ)
-    ## back to [f; b (; td)] with f_np = 0 fixed (zero covariance)
-    keep = [1:np-1, np+1:numel(theta)+1];
-    full = zeros (numel (theta) + 1, 1);
-    full(keep) = theta;
-    Pf = zeros (numel (full));
-    Pf(keep, keep) = P;
-    theta = full;
-    P = Pf;
+  [theta, P, info] = call_gateway (fname, df, opts);
+  estimate = info.delay_estimated;
+  if (opts.estimate_delay)
+    td = info.delay;
   endif
+  npar = info.free_parameters;
   if (nu > 1)
     M = tf_multi (theta, P, np, nz, td);
   else
-    den = [1 theta(1:np).'];
-    num = theta(np+(1:nz+1)).';
-    if (estimate)
-      td = theta(end);
-    endif
-    M = idtf (num, den, "IODelay", td);
+    M = idtf (theta(np+(1:nz+1)).', [1 theta(1:np).'], "IODelay", td);
     perm = [np + (1:nz+1), 1:np];
     if (estimate)
       perm(end+1) = np + nz + 2;        # getpvec ends with the IODelay
@@ -641,34 +577,6 @@ function [starts, tdmax, search] = srivc_delay_start (fname, d, np, nz, td0,
   endfor
 endfunction
 
-## The output-error iteration from st = [f; b; td] with the delay kept in
-## [tdmin, delay_max].  The gateway keeps it in [0, delay_max]; a run that
-## ends below tdmin is replaced by the minimum over the coefficients at td
-## = tdmin (the bound active), or by the free run from that point when it
-## ends within the range with a lower loss (the loss decreasing into the
-## range from the bound).  tdmin = 0: the gateway's run alone.
-function [theta, P, info] = oe_from (fname, d, opts, st, tdmin)
-  opts.delay = st(end);
-  opts.theta_init = st;
-  [theta, P, info] = call_gateway (fname, d, opts);
-  if (theta(end) >= tdmin)
-    return;
-  endif
-  fx = opts;
-  fx.estimate_delay = false;
-  fx.delay = tdmin;
-  fx.theta_init = theta(1:end-1);
-  [th, Pf, info] = call_gateway (fname, d, fx);
-  theta = [th; tdmin];
-  P = blkdiag (Pf, 0);
-  opts.delay = tdmin;
-  opts.theta_init = theta;
-  [th, Pk, ik] = call_gateway (fname, d, opts);
-  if (th(end) >= tdmin && ik.loss < info.loss)
-    [theta, P, info] = deal (th, Pk, ik);
-  endif
-endfunction
-
 ## Integration 'on' (tfcoe): the model B(p)/(p F'(p)) e^(-td p) is fitted
 ## as B/F' on the integral v of the input; v is then an exact FOH signal
 ## (piecewise linear) only for a ZOH input, and B/F' must be strictly
@@ -772,14 +680,13 @@ endfunction
 
 ## tfcoe's OverPar 'on': one more start [f; b; td] from an over-parametrised
 ## fit.  The output error of the structure with one pole and one zero more
-## (np + 1, nz + 1; its delay searched as tfcoe's) is fitted first: the
-## output-error loss of an over-parametrised model has fewer non-global
-## minima (Soderstrom and Stoica, "Some properties of the output error
-## method", Automatica 18(1), 1982), and the extra pole-zero pair can take
-## up a delay error (a first-order Pade term).  Its frequency response over
-## the band of the record (2 pi / T to the Nyquist frequency) is then
-## reduced to the asked orders, the delay with them, by tffcoe's
-## frequency-domain output error (contsid_freq), which gives the start.
+## (np + 1, nz + 1; its delay searched as tfcoe's) is fitted first; the
+## core (output_error_starts.hpp, reduced_start) reduces its frequency
+## response over the band of the record (2 pi / T to the Nyquist
+## frequency) to the asked orders, the delay with them, by the
+## frequency-domain output error (tffcoe's): fewer non-global minima
+## (Soderstrom and Stoica, Automatica 18(1), 1982), and the extra
+## pole-zero pair can take up a delay error.  [] when that is unstable.
 function th = overpar_start (fname, d, np, nz, td, o)
   args = {np + 1, nz + 1};
   if (! isempty (td))
@@ -807,21 +714,9 @@ function th = overpar_start (fname, d, np, nz, td, o)
   end_unwind_protect
   [num, den] = tfdata (Mo, "vector");
   h = median (diff (d.t));
-  T = d.t(end) - d.t(1);
-  w = logspace (log10 (2 * pi / T), log10 (pi / h), 200).';
-  G = polyval (num, 1i * w) ./ polyval (den, 1i * w) ...
-      .* exp (-1i * w * get (Mo, "IODelay"));
-  fr = idfrd (G, w, "Ts", 0);
-  if (nz < np)
-    Mr = contsid_freq ("tffcoe", {fr, np, nz, "TdMax", o.tdmax});
-  else
-    Mr = contsid_freq ("tffcoe", {fr, np, nz, get(Mo, "IODelay"),
-                                  "FixTd", "on"});
-  endif
-  [num, den] = tfdata (Mr, "vector");
-  num = num(end-nz:end);
-  th = [den(2:end), num, get(Mr, "IODelay")].';
-  if (any (real (roots (den)) >= 0))
-    th = [];                            # no stable start: not used
-  endif
+  band = [2 * pi / (d.t(end) - d.t(1)), pi / h];
+  th = pem_mex (fname, "reduce", den(2:end), num,
+                struct ("nf", np, "nb", nz + 1, "band", band,
+                        "td", get (Mo, "IODelay"), "search_delay", nz < np,
+                        "delay_max", o.tdmax));
 endfunction

@@ -282,6 +282,25 @@ function test_gateway_fuzz ()
      {"blocklength"}}
   };
 
+  ## The output error from several starts (the delay bounded below), the
+  ## reduction of an over-parametrised model (tfcoe's OverPar start) and
+  ## the frequency data of a relay-feedback limit cycle.
+  pems = struct ("model", "oe_ct", "nf", 2, "nb", 1, "estimate_delay", true,
+                 "delay_max", 1, "starts", [1.6 0.7 0.05 0.1; 1 1 0.1 0.3].',
+                 "delay_min", 0.05, "default_start", false,
+                 "integrate", false, "maxiter", 3);
+  red = struct ("nf", 2, "nb", 1, "band", [0.05 20], "td", 0.3,
+                "search_delay", true, "delay_max", 1);
+  ur = sign (sin (2 * pi * (0:59)' / 12) + 0.1);
+  yr = filter ([0 0.2], [1 -0.8], ur);
+  calls(end+1:end+3) = {
+    {"pem_mex", {"tfcoe", yp, u, 0.1, pems}, {"model", "nf", "nb"}}
+    {"pem_mex", {"tfcoe", "reduce", [4.2 4.6 3], [2 6], red}, ...
+     {"nf", "nb", "band"}}
+    {"freq_srivc_mex", {"tffsrivc", "relay", yr, ur, ...
+                        struct("Ts", 0.1, "intsamp", true)}, {"Ts"}}
+  };
+
   covered = cellfun (@(c) c{1}, calls, "UniformOutput", false);
   missing = setdiff (gateways, covered);
   if (! isempty (missing))

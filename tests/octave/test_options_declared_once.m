@@ -9,7 +9,9 @@
 ## @code{rlssvf_mex ("rlssvf", "options")}); those of the output-error
 ## estimators likewise
 ## (@file{core/include/ctid/offline/output_error_options.hpp},
-## @code{pem_mex ("oe", "options")}). Checked here:
+## @code{pem_mex ("oe", "options")}) and of the frequency-domain estimators
+## (@file{core/include/ctid/offline/freq_srivc_options.hpp},
+## @code{freq_srivc_mex ("tffsrivc", "options")}). Checked here:
 ## @itemize
 ## @item every option a user sets is documented in the help text of its
 ## front-ends, and where the help states a default, it is the table's;
@@ -85,6 +87,7 @@ function test_options_declared_once ()
 
   check_output_error_options ();
   check_convergence_options ();
+  check_frequency_options ();
 
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
@@ -194,6 +197,41 @@ function check_convergence_options ()
     core = str2double (T(strcmp ({T.name}, name{1})).default);
     assert (info.(name{1}), core, 1e-12 * abs (core));
   endfor
+endfunction
+
+## The frequency-domain family: the defaults tffsrivc's help states are
+## the table's, giving them explicitly changes nothing, and the gateway
+## refuses an option the table does not declare.
+function check_frequency_options ()
+  T = freq_srivc_mex ("tffsrivc", "options");
+  assert (isstruct (T) && numel (T) >= 10);
+  for k = 1:numel (T)
+    assert (! isempty (T(k).help) && ! isempty (T(k).range), T(k).name);
+  endfor
+  shown = @(n) T(strcmp ({T.name}, n)).default;
+  default_of = @(n) str2double (shown (n));
+  h = get_help_text ("tffsrivc");
+  for pair = {"NumTd", "num_td"; "MaxIter", "maxiter"; "TolPar", "tol"}.'
+    pattern = sprintf ('@code\\{%s\\}\\s*\\(([-+0-9.eE]+)\\)', pair{1});
+    t = regexp (h, pattern, "tokens", "once");
+    assert (! isempty (t), "tffsrivc: the help states no default of %s",
+            pair{1});
+    assert (same_default (t{1}, shown (pair{2})), pair{1});
+  endfor
+  w = logspace (-1, 1, 40)';
+  G = idfrd (2 ./ ((1i * w) .^ 2 + 1.2i * w + 1) .* exp (-0.3i * w), w,
+             "Ts", 0);
+  a = tffsrivc (G, 2, 0);
+  b = tffsrivc (G, 2, 0, "NumTd", default_of ("num_td"), "MaxIter",
+                default_of ("maxiter"), "Tol", default_of ("tol"));
+  assert (isequal (getpvec (a), getpvec (b)));
+  try
+    freq_srivc_mex ("tffsrivc", w, ones (40, 1), [],
+                    struct ("na", 2, "nb", 1, "not_an_option", 1));
+    error ("freq_srivc_mex accepted an unknown option");
+  catch err
+    assert (err.identifier, "tffsrivc:badOption");
+  end_try_catch
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may

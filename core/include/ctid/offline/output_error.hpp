@@ -403,6 +403,9 @@ struct ArxResult {
   S loss = 0;  // mean square equation error over the regression rows
   S noise_variance = 0;
   Eigen::Index rows = 0;
+  // y(k) - y_hat(k|k-1) at every sample, the regressor's values before
+  // the record taken as 0 (the SITB's prediction fit of an ARX model)
+  Vector<S> prediction_error;
 };
 
 template <typename S>
@@ -471,6 +474,21 @@ Status arx_least_squares(const S* y, const S* u, Eigen::Index n, int m, int na,
                  qr.colsPermutation().transpose();
   out->covariance = out->noise_variance * scale.cwiseInverse().asDiagonal() *
                     Cn * scale.cwiseInverse().asDiagonal();
+  out->prediction_error.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    S yhat = 0;
+    int c = 0;
+    for (int i = 1; i <= na; ++i, ++c) {
+      if (k - i >= 0) yhat -= out->theta(c) * y[k - i];
+    }
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i < nb[j]; ++i, ++c) {
+        const Eigen::Index at = k - nk[j] - i;
+        if (at >= 0) yhat += out->theta(c) * u[j * n + at];
+      }
+    }
+    out->prediction_error(k) = y[k] - yhat;
+  }
   return Status::Ok();
 }
 

@@ -20,6 +20,7 @@
 
 #include "ctid/base/options.hpp"
 #include "ctid/offline/output_error.hpp"
+#include "ctid/offline/output_error_starts.hpp"
 
 namespace ctid {
 
@@ -34,6 +35,12 @@ struct OeConfig {
   bool estimate_delay = false;
   double delay_max = 0;
   OeSettings<S> settings;
+  // Several starts (output_error_starts.hpp): used when starts are given
+  // or the input is integrated.
+  OeStartsSettings<S> starts;
+  bool from_starts() const {
+    return !starts.starts.empty() || starts.integrate;
+  }
 };
 
 // The structure of a config for m inputs: one input fills OeStructure's
@@ -215,6 +222,69 @@ const OptionTable<OeConfig<S>>& output_error_options() {
                  [](const C& c) { return number(c.settings.srivc_cutoff); },
                  [](C* c, V v) {
                    c->settings.srivc_cutoff = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
+    t.push_back({"starts",
+                 OptionType::kMatrix,
+                 false,
+                 {},
+                 "finite; one column [f; b] (; delay) per start",
+                 "starts of the iteration, the lowest loss kept; none: "
+                 "one run from theta_init",
+                 [](const C& c) {
+                   return c.starts.starts.empty()
+                              ? std::string("(none)")
+                              : std::to_string(c.starts.starts.size()) +
+                                    " start(s)";
+                 },
+                 [](C* c, V v) {
+                   const Matrix<double>& m = v.matrix;
+                   if (!m.allFinite())
+                     return bad_input("the starts must be finite");
+                   c->starts.starts.clear();
+                   for (Eigen::Index k = 0; k < m.cols(); ++k)
+                     c->starts.starts.push_back(m.col(k).cast<S>());
+                   return Status::Ok();
+                 }});
+    t.push_back({"default_start",
+                 OptionType::kFlag,
+                 false,
+                 {},
+                 "true | false",
+                 "with starts: also the run from theta_init (or the SRIVC / "
+                 "ARX start), first",
+                 [](const C& c) {
+                   return std::string(c.starts.default_start ? "true"
+                                                             : "false");
+                 },
+                 [](C* c, V v) {
+                   c->starts.default_start = v.flag;
+                   return Status::Ok();
+                 }});
+    t.push_back({"delay_min",
+                 OptionType::kReal,
+                 false,
+                 {},
+                 "finite, in [0, delay_max]",
+                 "lower bound of the delay estimated from the starts (time "
+                 "units)",
+                 [](const C& c) { return number(c.starts.delay_min); },
+                 [](C* c, V v) {
+                   c->starts.delay_min = static_cast<S>(v.real);
+                   return Status::Ok();
+                 }});
+    t.push_back({"integrate",
+                 OptionType::kFlag,
+                 false,
+                 {},
+                 "true | false; one ZOH input, nf >= 2, nb <= nf - 1",
+                 "a pole fixed at 0 (f_nf = 0): B/F' fitted on the "
+                 "integrated input",
+                 [](const C& c) {
+                   return std::string(c.starts.integrate ? "true" : "false");
+                 },
+                 [](C* c, V v) {
+                   c->starts.integrate = v.flag;
                    return Status::Ok();
                  }});
     return t;
