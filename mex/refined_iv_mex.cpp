@@ -8,15 +8,15 @@
 // y N-by-1; w N-by-m (the inputs and extra regressors, one channel each);
 // t a scalar Ts or the N sampling instants; r the setpoint (N-by-1) or
 // [r1 r] (N-by-2, r1 at the plant input: u = r1 + C (r - y)) of a closed
-// loop with a continuous-time controller, or []. opts fields (see
-// RivProblem/RivSettings): method ('srivc' | 'ivsvf' | 'lssvf'), nf (order
-// of each denominator), group, nb, nk, intersample (per channel; group
-// 1-based, intersample 0 = zoh, 1 = foh), delay (per channel, a continuous
-// delay in time units on top of nk, default 0), y_intersample, fixed and
-// fixed_values (np each, or absent), theta_init, cutoffs, tol, maxiter,
-// max_starts, time_scale, integrator_pole, output_offset, initial_state,
-// controller_num, controller_den (descending powers of p; with
-// discrete_controller, powers of q^-1 and r = [r1 r2]). info: converged,
+// loop with a continuous-time controller, or []. opts: the options of
+// refined_iv_options() (core/include/ctid/offline/refined_iv_options.hpp:
+// method, nf, and per column of w group (1-based), nb, nk, intersample (0
+// zoh, 1 foh), delay; y_intersample, output_offset, initial_state, fixed,
+// fixed_values, theta_init, cutoffs, tol, maxiter, max_starts, time_scale,
+// integrator_pole, refit_integrators, controller_num, controller_den
+// (descending powers of p; with discrete_controller, powers of q^-1 and r =
+// [r1 r2])), read from that table with its defaults; `refined_iv_mex
+// (fname, "options")` returns the table. info: converged,
 // stable, iterations, reason, noise_variance, cutoff, time_scale, starts,
 // condition, x0, offset, simulated, free_response, determined (false: the
 // simulation loss converged while parameters moved in directions the data
@@ -48,19 +48,17 @@
 #include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_delay.hpp"
+#include "ctid/offline/refined_iv_options.hpp"
+#include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
+#include "rivc_info.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
-using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
 using ctid::mex::to_output;
-
-std::vector<double> to_std(const Eigen::MatrixXd& m) {
-  return std::vector<double>(m.data(), m.data() + m.size());
-}
 
 void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                           const mxArray* prhs[]) {
@@ -97,25 +95,8 @@ mxArray* engine_info(const ctid::RivResult<double>& result);
 // RIVC's info at the delay kept (the fields of rivc_mex's info for the
 // method 'rivc', with stable and covariance).
 mxArray* rivc_info(const ctid::RivcResult<double>& res) {
-  const char* fields[] = {
-      "converged", "iterations",     "reason",           "C",
-      "D",         "noise_variance", "noise_covariance", "simulation_variance",
-      "simulated", "condition",      "start_theta",      "stable",
-      "covariance"};
-  mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
-  mxSetField(info, 0, "converged", mxCreateLogicalScalar(res.converged));
-  mxSetField(info, 0, "iterations", mxCreateDoubleScalar(res.iterations));
-  mxSetField(info, 0, "reason", mxCreateString(res.reason.c_str()));
-  mxSetField(info, 0, "C", to_output(res.noise.c.transpose()));
-  mxSetField(info, 0, "D", to_output(res.noise.d.transpose()));
-  mxSetField(info, 0, "noise_variance",
-             mxCreateDoubleScalar(res.noise.innovation_variance));
-  mxSetField(info, 0, "noise_covariance", to_output(res.noise.covariance));
-  mxSetField(info, 0, "simulation_variance",
-             mxCreateDoubleScalar(res.simulation_variance));
-  mxSetField(info, 0, "simulated", to_output(res.simulated));
-  mxSetField(info, 0, "condition", mxCreateDoubleScalar(res.condition));
-  mxSetField(info, 0, "start_theta", to_output(res.start_theta));
+  mxArray* info = ctid::mex::make_rivc_info({"stable", "covariance"});
+  ctid::mex::set_rivc_info(info, res);
   mxSetField(info, 0, "stable", mxCreateLogicalScalar(res.stable));
   mxSetField(info, 0, "covariance", to_output(res.covariance));
   return info;
@@ -198,6 +179,11 @@ void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
 
 void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray** prhs) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] =
+        ctid::mex::option_table_struct(ctid::refined_iv_options<double>());
+    return;
+  }
   const mxArray* search = nullptr;
   if (nrhs >= 2 && mxIsChar(prhs[1])) {
     const std::string method = g.text(prhs[1], "the method");
@@ -234,69 +220,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   data.ts = record.ts;
   data.instants = record.instants;
 
-  ctid::RivProblem<double> problem;
-  ctid::RivSettings<double> settings;
   OptionsReader opt(g, prhs[5]);
-  settings.method =
-      opt.choice<ctid::RivMethod>("method",
-                                  {{"srivc", ctid::RivMethod::kSrivc},
-                                   {"ivsvf", ctid::RivMethod::kIvsvf},
-                                   {"lssvf", ctid::RivMethod::kLssvf}},
-                                  ctid::RivMethod::kSrivc);
-  problem.nf = opt.integer_vector("nf");
-  const std::vector<int> group = opt.integer_vector("group");
-  const std::vector<int> nb = opt.integer_vector("nb");
-  const std::vector<int> nk = opt.integer_vector("nk");
-  const std::vector<int> rules =
-      opt.integer_vector("intersample", std::vector<int>(m, 0));
-  std::vector<double> delays = to_std(opt.matrix("delay"));
-  if (delays.empty()) delays.assign(m, 0.0);
-  if (static_cast<int>(delays.size()) != m) {
-    g.fail("dimensionMismatch",
-           "delay needs one entry per column of w (" + std::to_string(m) + ")");
-  }
-  if (static_cast<int>(group.size()) != m || static_cast<int>(nb.size()) != m ||
-      static_cast<int>(nk.size()) != m || static_cast<int>(rules.size()) != m) {
-    g.fail("dimensionMismatch",
-           "group, nb, nk and intersample need one entry per column of w (" +
-               std::to_string(m) + ")");
-  }
-  for (int j = 0; j < m; ++j) {
-    ctid::RivChannel c;
-    c.group = group[j] - 1;
-    c.nb = nb[j];
-    c.nk = nk[j];
-    c.rule = intersample_rule(g, rules[j]);
-    c.delay = delays[j];
-    problem.channels.push_back(c);
-  }
-  problem.y_rule = intersample_rule(g, opt.integer("y_intersample", 1));
-  problem.output_offset = opt.flag("output_offset", false);
-  problem.initial_state = opt.flag("initial_state", false);
-  const Eigen::MatrixXd fixed = opt.matrix("fixed");
-  const Eigen::MatrixXd fixed_values = opt.matrix("fixed_values");
-  const int np = problem.num_parameters();
-  if (fixed.size() > 0) {
-    if (fixed.size() != np || fixed_values.size() != np) {
-      g.fail("dimensionMismatch", "fixed and fixed_values need " +
-                                      std::to_string(np) + " entries each");
-    }
-    for (int i = 0; i < np; ++i) problem.fixed.push_back(fixed(i) != 0);
-    problem.fixed_values = Eigen::Map<const Eigen::VectorXd>(
-        fixed_values.data(), fixed_values.size());
-  }
-  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
-  if (theta_init.size() > 0) {
-    settings.theta_init =
-        Eigen::Map<const Eigen::VectorXd>(theta_init.data(), theta_init.size());
-  }
-  settings.cutoffs = to_std(opt.matrix("cutoffs"));
-  settings.tolerance = opt.scalar("tol", 1e-6);
-  settings.max_iterations = opt.integer("maxiter", 30);
-  settings.max_starts = opt.integer("max_starts", 3);
-  settings.time_scale = opt.scalar("time_scale", 0);
-  settings.integrator_pole = opt.scalar("integrator_pole", 0);
-  settings.refit_integrators = opt.flag("refit_integrators", false);
+  ctid::RivConfig<double> config;
+  ctid::mex::read_option_table(g, opt, ctid::refined_iv_options<double>(),
+                               &config);
   // The integrator refit alone, from theta_init (see the header comment).
   const bool refit_only = opt.has("integrator_start");
   std::vector<int> suspected;
@@ -312,30 +239,31 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     }
     start.finish();
   }
-  const Eigen::MatrixXd cnum = opt.matrix("controller_num");
-  const Eigen::MatrixXd cden = opt.matrix("controller_den");
-  const bool discrete = opt.flag("discrete_controller", false);
   opt.finish();
+  ctid::RivProblem<double> problem;
+  g.check(ctid::riv_problem(config, m, &problem));
+  const ctid::RivSettings<double>& settings = config.settings;
+  const int np = problem.num_parameters();
+  const ctid::Vector<double> cnum = problem.controller_num;
+  const ctid::Vector<double> cden = problem.controller_den;
+  const bool discrete = config.discrete_controller;
   ctid::DiscreteTransferFunction<double> controller;
   if (cnum.size() > 0 && discrete) {
-    if (cden.size() == 0 || (cnum.rows() > 1 && cnum.cols() > 1) ||
-        (cden.rows() > 1 && cden.cols() > 1)) {
+    if (cden.size() == 0) {
       g.fail("badOption",
              "options 'controller_num' and 'controller_den' must be "
              "non-empty vectors");
     }
-    controller.numerator = cnum.reshaped();
-    controller.denominator = cden.reshaped();
+    controller.numerator = cnum;
+    controller.denominator = cden;
     g.check(ctid::validate_controller(controller));
     const double* r = g.matrix(prhs[4], "[r1 r2]", n, 2);
+    problem.controller_num.resize(0);
+    problem.controller_den.resize(0);
     problem.discrete_controller = &controller;
     problem.r1 = r;
     problem.r2 = r + n;
   } else if (cnum.size() > 0) {
-    problem.controller_num =
-        Eigen::Map<const Eigen::VectorXd>(cnum.data(), cnum.size());
-    problem.controller_den =
-        Eigen::Map<const Eigen::VectorXd>(cden.data(), cden.size());
     // r (N-by-1, the setpoint) or [r1 r] (N-by-2, r1 at the plant input)
     if (mxGetN(prhs[4]) == 2) {
       const double* r = g.matrix(prhs[4], "[r1 r]", n, 2);

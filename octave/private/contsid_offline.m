@@ -34,11 +34,12 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   if (refined)
     form = "f";
-    defaults = struct ("lambda_svf", [], "lambda", [], "Tol", 1e-6,
-                       "MaxIter", 30, "InitMethod", [],
+    ## [] leaves the option to the core (refined_iv_options.hpp)
+    defaults = struct ("lambda_svf", [], "lambda", [], "Tol", [],
+                       "MaxIter", [], "InitMethod", [],
                        "svf", "normalised", "InitialState", "zero",
                        "OutputOffset", "auto", "InputOffset", "auto",
-                       "TimeScale", "auto", "MaxStarts", 3);
+                       "TimeScale", "auto", "MaxStarts", []);
   else
     form = "a";
     defaults = struct ("lambda_svf", [], "svf", "normalised");
@@ -309,19 +310,12 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     info.AIC = log (max (s2, eps * vy)) + 2 * sum (free) / n;
   endif
 
-  ## The refined-method options into the engine's struct e.
+  ## The refined-method options into the engine's struct e: the core
+  ## checks them (refined_iv_options.hpp); here the words of CONTSID.
   function read_refined_options ()
-    tol = opts.Tol;
-    maxiter = opts.MaxIter;
-    if (! isnumeric (tol) || ! isreal (tol) || ! isscalar (tol) || ! (tol > 0))
-      error ([fname ":badInput"], "%s: Tol must be a real scalar > 0", fname);
-    endif
-    if (! isnumeric (maxiter) || ! isscalar (maxiter)
-        || maxiter != fix (maxiter) || maxiter < 1)
-      error ([fname ":badInput"], "%s: MaxIter must be an integer >= 1", fname);
-    endif
-    e.tol = tol;
-    e.maxiter = maxiter;
+    e.tol = opts.Tol;
+    e.maxiter = opts.MaxIter;
+    e.max_starts = opts.MaxStarts;
     start = contsid_init_method (fname, opts.InitMethod, e);
     e.theta_init = start.Theta(:);
     if (! any (strcmpi (opts.InitialState, {"zero", "estimate", "e", "z"})))
@@ -342,22 +336,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     else
       e.input_offset = logical_option (opts.InputOffset, "InputOffset", nu);
     endif
-    ts = opts.TimeScale;
-    if (ischar (ts) && strcmpi (ts, "auto"))
-      e.time_scale = 0;
-    elseif (isnumeric (ts) && isscalar (ts) && isreal (ts) && ts > 0
-            && isfinite (ts))
-      e.time_scale = ts;
-    else
-      error ([fname ":badOption"],
-             "%s: TimeScale must be 'auto' or a scale > 0 (rad/s)", fname);
+    e.time_scale = opts.TimeScale;
+    if (ischar (e.time_scale))
+      if (! strcmpi (e.time_scale, "auto"))
+        error ([fname ":badOption"],
+               "%s: TimeScale must be 'auto' or a scale > 0 (rad/s)", fname);
+      endif
+      e.time_scale = [];
     endif
-    ms = opts.MaxStarts;
-    if (! isnumeric (ms) || ! isscalar (ms) || ms != fix (ms) || ms < 1)
-      error ([fname ":badOption"], "%s: MaxStarts must be an integer >= 1",
-             fname);
-    endif
-    e.max_starts = ms;
   endfunction
 
   function v = logical_option (v, name, count)
