@@ -25,13 +25,14 @@
 // lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
 // iterate over all starts when it is not the returned model; lowest_theta
 // and lowest_noise_variance empty if none), integrators and
-// integrator_refit (see RivResult). refit_integrators (flag): the engine's
-// integrator refit (refined_iv.hpp). integrator_start (a struct with
-// suspected, mse, reason, lowest): the integrator refit alone from
-// theta_init, a fit with the integrator_suspected flags suspected, mean
-// squared simulation error mse and reason reason (lowest: the lowest-loss
-// run's); info.integrator_refit -1 and theta = theta_init when the refit
-// is not better.
+// integrator_refit (see RivResult). integrator_start (a struct with theta,
+// converged, stable, suspected, simulated, reason, lowest_theta,
+// lowest_suspected, lowest_simulated: a fit's theta and info): the engine's
+// integrator refit of that fit alone (refit_integrators of refined_iv.hpp),
+// from the fit or its lowest-loss run as the engine chooses; theta and info
+// are the refit's when it is kept (info.integrator_refit 1), else the fit's
+// with info.integrator_refit -1 (refitted from the fit), -2 (from its
+// lowest-loss run) or 0 (no refit applies) and cov zero.
 //
 //   [theta, cov, info] = refined_iv_mex (fname, "delay_search", y, w, t, r,
 //                                        opts, search)
@@ -224,19 +225,25 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::RivConfig<double> config;
   ctid::mex::read_option_table(g, opt, ctid::refined_iv_options<double>(),
                                &config);
-  // The integrator refit alone, from theta_init (see the header comment).
+  // The integrator refit of a given fit (see the header comment).
   const bool refit_only = opt.has("integrator_start");
-  std::vector<int> suspected;
-  double base_mse = 0;
-  std::string base_reason;
+  ctid::RivResult<double> fit;
   if (refit_only) {
     OptionsReader start = opt.nested("integrator_start");
-    suspected = start.integer_vector("suspected");
-    base_mse = start.scalar("mse");
-    base_reason = start.text("reason", "");
-    if (start.flag("lowest", false)) {
-      base_reason = ctid::lowest_run_reason(base_reason);
-    }
+    const auto vector = [&](const char* name) {
+      const Eigen::MatrixXd v = start.matrix(name);
+      return ctid::Vector<double>(v.reshaped());
+    };
+    fit.theta = vector("theta");
+    fit.converged = start.flag("converged", false);
+    fit.stable = start.flag("stable", false);
+    fit.integrator_suspected = start.integer_vector("suspected");
+    fit.simulated = vector("simulated");
+    fit.reason = start.text("reason", "");
+    fit.lowest_theta = vector("lowest_theta");
+    fit.lowest_integrator_suspected =
+        start.integer_vector("lowest_suspected", {});
+    fit.lowest_simulated = vector("lowest_simulated");
     start.finish();
   }
   opt.finish();
@@ -283,16 +290,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::RivResult<double> result;
   ctid::Status status;
   if (refit_only) {
-    bool kept = false;
-    g.check(ctid::refit_integrators(problem, settings, data,
-                                    settings.theta_init, suspected, base_mse,
-                                    base_reason, &result, &kept));
-    if (!kept) {
-      result = ctid::RivResult<double>();
-      result.theta = settings.theta_init;
+    result = fit;
+    g.check(ctid::refit_integrators(problem, settings, data, &result));
+    if (result.covariance.size() == 0) {
       result.covariance = Eigen::MatrixXd::Zero(np, np);
-      result.integrator_refit = -1;
-      result.reason = "the refit with a pole at p = 0 was not better";
     }
   } else {
     status = ctid::refined_iv(problem, settings, data, &result);

@@ -56,9 +56,11 @@
 ## [r1 r2] (N-by-2).
 ## @item refit_integrators, integrator_start
 ## the engine's integrator refit (core refined_iv.hpp): after the fit
-## (true), or alone from @code{theta_init} (a struct with
-## @code{suspected}, @code{mse}, @code{reason}, @code{lowest}: the flags,
-## mean squared simulation error and reason of the fit it starts from);
+## (true), or alone of a given fit (a struct with its @code{theta} and
+## the fields @code{converged}, @code{stable}, @code{simulated},
+## @code{reason}, @code{lowest_theta}, @code{lowest_simulated} of its
+## @var{info}, @code{suspected} and @code{lowest_suspected} its
+## @code{integrator_suspected} and @code{lowest_integrator_suspected});
 ## @var{info}.integrators and @var{info}.integrator_refit report it.
 ## @item delay_search
 ## the delay of the one channel searched (refined_iv_mex's method
@@ -99,7 +101,8 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
   ## gateway, which checks it and gives an absent one its default
   ## (core/include/ctid/offline/refined_iv_options.hpp).
   own = {"integrators", "input_offset", "controller", "reference", ...
-         "delay_search", "fixed", "fixed_values", "theta_init"};
+         "delay_search", "fixed", "fixed_values", "theta_init", ...
+         "integrator_start"};
   g = rmfield (opts, intersect (fieldnames (opts), own));
   if (! isfield (opts, "nf") || ! isfield (opts, "nb"))
     error ([fname ":badOption"], "%s: the engine needs nf and nb", fname);
@@ -188,6 +191,17 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
     th = zeros (np, 1);
     th(keep) = opts.theta_init(:);
     g.theta_init = th;
+  endif
+  if (isfield (opts, "integrator_start"))
+    ## the fit's parameters, in the full layout
+    g.integrator_start = opts.integrator_start;
+    for f = {"theta", "lowest_theta"}
+      if (! isempty (g.integrator_start.(f{1})))
+        th = zeros (np, 1);
+        th(keep) = g.integrator_start.(f{1})(:);
+        g.integrator_start.(f{1}) = th;
+      endif
+    endfor
   endif
   r = [];
   if (isfield (opts, "controller") && ! isempty (opts.controller))

@@ -324,6 +324,17 @@ TEST(RefinedIvStatus, IntegratingPlantIsRefittedWithItsIntegrator) {
   const Eigen::Map<const Eigen::VectorXd> y(r.y.data(), r.y.size());
   EXPECT_LE((y - refit.simulated).squaredNorm(),
             (y - plain.simulated).squaredNorm());
+  // The refit of the plain fit alone (a host's second call) starts from
+  // the same run and gives the same model.
+  const IntegratorRefitStart<double> start =
+      integrator_refit_start(plain, view(r, ts));
+  EXPECT_EQ(start.from, 1);
+  EXPECT_EQ(start.theta, plain.theta);
+  RivResult<double> alone = plain;
+  settings.refit_integrators = false;
+  ASSERT_TRUE(refit_integrators(problem, settings, view(r, ts), &alone).ok());
+  EXPECT_EQ(alone.integrator_refit, 1);
+  EXPECT_EQ(alone.theta, refit.theta);
 }
 
 // A converged fit from whose starts another run crept toward p = 0 with a
@@ -354,6 +365,12 @@ TEST(RefinedIvStatus, RefitFromTheLowestRunKeepsABetterConvergedFit) {
   EXPECT_EQ(refit.integrators, std::vector<int>({0}));
   EXPECT_EQ(refit.theta, plain.theta);
   EXPECT_EQ(refit.reason, plain.reason);
+  // the refit of the plain fit alone starts from the lowest run
+  const IntegratorRefitStart<double> start =
+      integrator_refit_start(plain, view(r, ts));
+  EXPECT_EQ(start.from, 2);
+  EXPECT_EQ(start.theta, plain.lowest_theta);
+  EXPECT_NE(start.reason.find("lower loss"), std::string::npos);
 }
 
 // A stable plant that SRIVC fits and converges on: the refit is not
