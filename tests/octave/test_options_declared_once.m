@@ -220,6 +220,16 @@ function check_refined_iv_options ()
     endfor
   endfor
   assert (compared >= 8, sprintf ("only %d defaults compared", compared));
+  ## the positional tol and maxiter of clrivc and cl2srivc
+  T = rivc_mex ("rivc", "options");
+  for f = {"clrivc", "cl2srivc"}
+    t = regexp (get_help_text (f{1}),
+                '@var\{tol\} \(([-+0-9.eE]+)\).*@var\{maxiter\} \(([0-9]+)',
+                "tokens", "once");
+    assert (numel (t) == 2, [f{1} ": the help states no default"]);
+    assert (same_default (t{1}, T(strcmp ({T.name}, "tol")).default));
+    assert (same_default (t{2}, T(strcmp ({T.name}, "maxiter")).default));
+  endfor
 
   ## explicit defaults change nothing; another value does
   Ts = 0.05;
