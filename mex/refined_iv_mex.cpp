@@ -104,15 +104,16 @@ mxArray* rivc_info(const ctid::RivcResult<double>& res) {
 }
 
 // The method 'delay_search': the engine's problem with the delay of its
-// one channel searched (core refined_iv_delay.hpp). search fields: td0
-// ([]: the grid), tdmin, tdmax, numtd, refine (Gauss-Newton on the
-// delay), tdmax_limit (> tdmax: the grid extended up to it while its
-// minimum is at its upper end), maxiter, tolpar (sampling intervals),
-// tolfun, stepmax, stepreduction, noise ([] or [nd nc]: RIVC with that
-// ARMA noise model). Outputs: theta, the engine's covariance and info at
-// the delay kept (RIVC's with a noise model), info.delay_search: delay,
-// delay_estimated, covariance (of [theta; td] or theta), loss, simulated,
-// grid, grid_loss, tdmax, iterations, converged, reason.
+// one channel searched (core refined_iv_delay.hpp). search: the options of
+// refined_iv_delay_options() (core/include/ctid/offline/
+// refined_iv_options.hpp): td0 ([]: the grid), tdmin, tdmax, numtd, refine
+// (Gauss-Newton on the delay), tdmax_limit (> tdmax: the grid extended up
+// to it while its minimum is at its upper end), maxiter, tolpar (sampling
+// intervals), tolfun, stepmax, stepreduction, noise ([] or [nd nc]: RIVC
+// with that ARMA noise model). Outputs: theta, the engine's covariance and
+// info at the delay kept (RIVC's with a noise model), info.delay_search:
+// delay, delay_estimated, covariance (of [theta; td] or theta), loss,
+// simulated, grid, grid_loss, tdmax, iterations, converged, reason.
 void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
                           const mxArray* search_arg,
                           const ctid::RivProblem<double>& problem,
@@ -120,31 +121,9 @@ void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
                           const ctid::RivData<double>& data) {
   OptionsReader opt(g, search_arg, "search.");
   ctid::RivDelaySettings<double> ds;
-  ctid::DelaySearchSettings<double>& s = ds.search;
-  const Eigen::MatrixXd td0 = opt.matrix("td0");
-  s.grid = td0.size() == 0;
-  if (!s.grid) s.td_start = td0(0);
-  s.td_min = opt.scalar("tdmin");
-  s.td_max = opt.scalar("tdmax");
-  s.num_td = opt.integer("numtd", 50);
-  s.refinement = opt.flag("refine", true) ? ctid::DelayRefinement::kGaussNewton
-                                          : ctid::DelayRefinement::kNone;
-  s.extend_limit = opt.scalar("tdmax_limit", 0);
-  s.max_iterations = opt.integer("maxiter", 20);
-  s.step_tolerance = opt.scalar("tolpar", 1e-4);
-  s.loss_tolerance = opt.scalar("tolfun", 1e-5);
-  s.max_step = opt.scalar("stepmax", std::numeric_limits<double>::infinity());
-  s.step_reduction = opt.scalar("stepreduction", 0.5);
-  const Eigen::MatrixXd noise = opt.matrix("noise");
+  ctid::mex::read_option_table(g, opt, ctid::refined_iv_delay_options<double>(),
+                               &ds);
   opt.finish();
-  if (noise.size() != 0 && noise.size() != 2) {
-    g.fail("badOption", "search.noise must be [] or [nd nc]");
-  }
-  if (noise.size() == 2) {
-    ds.noise_model = true;
-    ds.nd = static_cast<int>(noise(0));
-    ds.nc = static_cast<int>(noise(1));
-  }
   ctid::RivDelayResult<double> r;
   g.check(ctid::refined_iv_delay(problem, settings, data, ds, &r));
   plhs[0] = to_output(ds.noise_model ? r.rivc.theta : r.engine.theta);

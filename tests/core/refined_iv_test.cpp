@@ -607,6 +607,17 @@ TEST(RefinedIvOptions, DefaultsAreTheSettingsAndNamesSetTheConfig) {
   EXPECT_EQ(std::stod(bj_default("arma_maxiter")), rivc.arma.max_iterations);
   EXPECT_EQ(std::stod(bj_default("max_starts")), rivc.start.max_starts);
   EXPECT_EQ(bj_default("arma_method"), "pem");
+
+  const auto& delay = refined_iv_delay_options<double>();
+  const RivDelaySettings<double> search;
+  const auto* numtd = find_option(delay, "numtd");
+  ASSERT_NE(numtd, nullptr);
+  EXPECT_EQ(std::stod(option_default(*numtd)), search.search.num_td);
+  RivDelaySettings<double> ds;
+  v.matrix = Matrix<double>::Constant(1, 2, 1.0);
+  ASSERT_TRUE(set_option(delay, "noise", v, &ds).ok());
+  EXPECT_TRUE(ds.noise_model && ds.nd == 1 && ds.nc == 1);
+  EXPECT_EQ(set_option(delay, "td0", v, &ds).code(), ErrorCode::kBadOption);
 }
 
 // A config set by name gives the problem written by hand and the same

@@ -8,13 +8,16 @@
 //   the structure one entry per group or channel as a host gives it, the
 //   closed loop's controller and RivSettings;
 // - rivc_options(), over RivcConfig: the Box-Jenkins refined IV of
-//   refined_iv_bj.hpp (rivc, tfrivc, clrivc, cl2srivc).
+//   refined_iv_bj.hpp (rivc, tfrivc, clrivc, cl2srivc);
+// - refined_iv_delay_options(), over RivDelaySettings: the delay search of
+//   refined_iv_delay.hpp (tfsrivc, tfrivc, procsrivc).
 //
 // Their defaults are the member initialisers of RivProblem, RivChannel,
-// RivSettings, RivcProblem and RivcSettings. The ranges are checked once:
-// by riv_problem() below and the engine's validate()
+// RivSettings, RivcProblem, RivcSettings and RivDelaySettings. The ranges
+// are checked once: by riv_problem() below and the engine's validate()
 // (refined_iv_validation.hpp) for the first table, by validate(RivcConfig)
-// below for the second.
+// below for the second, by delay_search() (delay_search.hpp) for the
+// third.
 //
 //   RivConfig<double> config;
 //   OptionValue v;
@@ -28,6 +31,7 @@
 
 #include "ctid/base/options.hpp"
 #include "ctid/offline/refined_iv_bj.hpp"
+#include "ctid/offline/refined_iv_delay.hpp"
 #include "ctid/offline/refined_iv_problem.hpp"
 
 namespace ctid {
@@ -717,6 +721,137 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
                    c->cl_theta_init = Eigen::Map<const Vector<double>>(
                                           v.matrix.data(), v.matrix.size())
                                           .cast<S>();
+                   return Status::Ok();
+                 }});
+    return t;
+  }();
+  return table;
+}
+
+// ---- the delay search --------------------------------------------------
+
+template <typename S>
+const OptionTable<RivDelaySettings<S>>& refined_iv_delay_options() {
+  using C = RivDelaySettings<S>;
+  using V = const OptionValue&;
+  using options_detail::number;
+  const auto real = [](const char* name, bool required, const char* range,
+                       const char* help, S DelaySearchSettings<S>::*field) {
+    return OptionDecl<C>{
+        name,
+        OptionType::kReal,
+        required,
+        {},
+        range,
+        help,
+        [field](const C& c) { return number(c.search.*field); },
+        [field](C* c, V v) {
+          c->search.*field = static_cast<S>(v.real);
+          return Status::Ok();
+        }};
+  };
+  const auto count = [](const char* name, const char* range, const char* help,
+                        int DelaySearchSettings<S>::*field) {
+    return OptionDecl<C>{
+        name,
+        OptionType::kInteger,
+        false,
+        {},
+        range,
+        help,
+        [field](const C& c) { return std::to_string(c.search.*field); },
+        [field](C* c, V v) {
+          c->search.*field = v.integer;
+          return Status::Ok();
+        }};
+  };
+  static const OptionTable<C> table = [&] {
+    OptionTable<C> t;
+    t.push_back({"td0",
+                 OptionType::kMatrix,
+                 false,
+                 {},
+                 "empty or one delay (time units)",
+                 "the start delay; absent: the grid",
+                 [](const C& c) {
+                   return c.search.grid ? std::string("(the grid)")
+                                        : number(c.search.td_start);
+                 },
+                 [](C* c, V v) {
+                   if (v.matrix.size() > 1) {
+                     return Status(ErrorCode::kBadOption,
+                                   "td0 must be empty or one delay");
+                   }
+                   c->search.grid = v.matrix.size() == 0;
+                   if (!c->search.grid) c->search.td_start = v.matrix(0);
+                   return Status::Ok();
+                 }});
+    t.push_back(real("tdmin", true, "finite, >= 0",
+                     "the lower end of the delay range (time units)",
+                     &DelaySearchSettings<S>::td_min));
+    t.push_back(real("tdmax", true, "finite, >= tdmin",
+                     "the upper end of the delay range (time units)",
+                     &DelaySearchSettings<S>::td_max));
+    t.push_back(count("numtd", "1..1e5", "the delays of the grid",
+                      &DelaySearchSettings<S>::num_td));
+    t.push_back({"refine",
+                 OptionType::kFlag,
+                 false,
+                 {},
+                 "true | false",
+                 "Gauss-Newton steps on the delay from the best grid point "
+                 "(or td0)",
+                 [](const C& c) {
+                   return std::string(c.search.refinement ==
+                                              DelayRefinement::kGaussNewton
+                                          ? "true"
+                                          : "false");
+                 },
+                 [](C* c, V v) {
+                   c->search.refinement = v.flag ? DelayRefinement::kGaussNewton
+                                                 : DelayRefinement::kNone;
+                   return Status::Ok();
+                 }});
+    t.push_back(real("tdmax_limit", false, "0, or > tdmax",
+                     "the grid is extended up to it while its minimum lies at "
+                     "its upper end; 0: not extended",
+                     &DelaySearchSettings<S>::extend_limit));
+    t.push_back(count("maxiter", ">= 0", "largest number of Gauss-Newton steps",
+                      &DelaySearchSettings<S>::max_iterations));
+    t.push_back(real("tolpar", false, ">= 0",
+                     "stop once a step is below it (sampling intervals)",
+                     &DelaySearchSettings<S>::step_tolerance));
+    t.push_back(real("tolfun", false, ">= 0",
+                     "stop once the relative loss decrease is below it",
+                     &DelaySearchSettings<S>::loss_tolerance));
+    t.push_back(real("stepmax", false, "> 0",
+                     "largest Gauss-Newton step (time units)",
+                     &DelaySearchSettings<S>::max_step));
+    t.push_back(real("stepreduction", false, "in (0, 1)",
+                     "the step's factor while the loss does not decrease",
+                     &DelaySearchSettings<S>::step_reduction));
+    t.push_back({"noise",
+                 OptionType::kMatrix,
+                 false,
+                 {},
+                 "empty or [nd nc]",
+                 "RIVC with that ARMA noise model instead of SRIVC",
+                 [](const C& c) {
+                   return c.noise_model ? "[" + std::to_string(c.nd) + " " +
+                                              std::to_string(c.nc) + "]"
+                                        : std::string("(none)");
+                 },
+                 [](C* c, V v) {
+                   const Matrix<double>& m = v.matrix;
+                   if (m.size() != 0 && m.size() != 2) {
+                     return Status(ErrorCode::kBadOption,
+                                   "search.noise must be [] or [nd nc]");
+                   }
+                   c->noise_model = m.size() == 2;
+                   if (c->noise_model) {
+                     c->nd = static_cast<int>(m(0));
+                     c->nc = static_cast<int>(m(1));
+                   }
                    return Status::Ok();
                  }});
     return t;
