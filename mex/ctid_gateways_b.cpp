@@ -28,12 +28,14 @@
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_bj.hpp"
 #include "ctid/offline/refined_iv_delay.hpp"
+#include "ctid/offline/refined_iv_options.hpp"
 #include "ctid/offline/relay_frequency_data.hpp"
 #include "ctid/recursive/scaling.hpp"
 #include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"
 #include "options_reader.hpp"
+#include "rivc_info.hpp"
 
 namespace gw_hammerstein {
 #define mexFunction entry

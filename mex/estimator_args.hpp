@@ -22,14 +22,9 @@
 
 namespace ctid::mex {
 
-// Every option of a table (ctid/recursive/recursive_options.hpp) that the
-// struct holds, converted by its declared type and set in table order;
-// a required one that is absent is an error. The ranges are checked once,
-// by the core's validate(config), which the caller runs after the last
-// option is set.
 template <typename Config>
-void read_option_table(const Gateway& g, OptionsReader& opt,
-                       const OptionTable<Config>& table, Config* config) {
+void read_option_values(const Gateway& g, OptionsReader& opt,
+                        const OptionTable<Config>& table, Config* config) {
   for (const auto& decl : table) {
     const mxArray* a = opt.field(decl.name);
     if (a == nullptr || (mxIsEmpty(a) && mxIsDouble(a))) {
@@ -76,6 +71,24 @@ void read_option_table(const Gateway& g, OptionsReader& opt,
         break;
     }
     g.check(set_option(decl, value, config));
+  }
+}
+
+// Every option of a table (ctid/recursive/recursive_options.hpp) that the
+// struct holds, converted by its declared type and set in table order;
+// a required one that is absent is an error. The ranges are checked once,
+// by the core's validate(config), which the caller runs after the last
+// option is set. A value of the wrong class or size is an error of reason
+// bad_value.
+template <typename Config>
+void read_option_table(const Gateway& g, OptionsReader& opt,
+                       const OptionTable<Config>& table, Config* config,
+                       const std::string& bad_value = "badInput") {
+  try {
+    read_option_values(g, opt, table, config);
+  } catch (const GatewayError& e) {
+    if (e.id != g.name() + ":badInput") throw;
+    throw GatewayError{g.name() + ":" + bad_value, e.message};
   }
 }
 

@@ -8,15 +8,15 @@
 // y N-by-1; w N-by-m (the inputs and extra regressors, one channel each);
 // t a scalar Ts or the N sampling instants; r the setpoint (N-by-1) or
 // [r1 r] (N-by-2, r1 at the plant input: u = r1 + C (r - y)) of a closed
-// loop with a continuous-time controller, or []. opts fields (see
-// RivProblem/RivSettings): method ('srivc' | 'ivsvf' | 'lssvf'), nf (order
-// of each denominator), group, nb, nk, intersample (per channel; group
-// 1-based, intersample 0 = zoh, 1 = foh), delay (per channel, a continuous
-// delay in time units on top of nk, default 0), y_intersample, fixed and
-// fixed_values (np each, or absent), theta_init, cutoffs, tol, maxiter,
-// max_starts, time_scale, integrator_pole, output_offset, initial_state,
-// controller_num, controller_den (descending powers of p; with
-// discrete_controller, powers of q^-1 and r = [r1 r2]). info: converged,
+// loop with a continuous-time controller, or []. opts: the options of
+// refined_iv_options() (core/include/ctid/offline/refined_iv_options.hpp:
+// method, nf, and per column of w group (1-based), nb, nk, intersample (0
+// zoh, 1 foh), delay; y_intersample, output_offset, initial_state, fixed,
+// fixed_values, theta_init, cutoffs, tol, maxiter, max_starts, time_scale,
+// integrator_pole, refit_integrators, controller_num, controller_den
+// (descending powers of p; with discrete_controller, powers of q^-1 and r =
+// [r1 r2])), read from that table with its defaults; `refined_iv_mex
+// (fname, "options")` returns the table. info: converged,
 // stable, iterations, reason, noise_variance, cutoff, time_scale, starts,
 // condition, x0, offset, simulated, free_response, determined (false: the
 // simulation loss converged while parameters moved in directions the data
@@ -25,13 +25,14 @@
 // lowest_integrator_suspected, lowest_simulated (the lowest-loss stable
 // iterate over all starts when it is not the returned model; lowest_theta
 // and lowest_noise_variance empty if none), integrators and
-// integrator_refit (see RivResult). refit_integrators (flag): the engine's
-// integrator refit (refined_iv.hpp). integrator_start (a struct with
-// suspected, mse, reason, lowest): the integrator refit alone from
-// theta_init, a fit with the integrator_suspected flags suspected, mean
-// squared simulation error mse and reason reason (lowest: the lowest-loss
-// run's); info.integrator_refit -1 and theta = theta_init when the refit
-// is not better.
+// integrator_refit (see RivResult). integrator_start (a struct with theta,
+// converged, stable, suspected, simulated, reason, lowest_theta,
+// lowest_suspected, lowest_simulated: a fit's theta and info): the engine's
+// integrator refit of that fit alone (refit_integrators of refined_iv.hpp),
+// from the fit or its lowest-loss run as the engine chooses; theta and info
+// are the refit's when it is kept (info.integrator_refit 1), else the fit's
+// with info.integrator_refit -1 (refitted from the fit), -2 (from its
+// lowest-loss run) or 0 (no refit applies) and cov zero.
 //
 //   [theta, cov, info] = refined_iv_mex (fname, "delay_search", y, w, t, r,
 //                                        opts, search)
@@ -48,19 +49,17 @@
 #include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_delay.hpp"
+#include "ctid/offline/refined_iv_options.hpp"
+#include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
+#include "rivc_info.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
-using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
 using ctid::mex::to_output;
-
-std::vector<double> to_std(const Eigen::MatrixXd& m) {
-  return std::vector<double>(m.data(), m.data() + m.size());
-}
 
 void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                           const mxArray* prhs[]) {
@@ -97,40 +96,24 @@ mxArray* engine_info(const ctid::RivResult<double>& result);
 // RIVC's info at the delay kept (the fields of rivc_mex's info for the
 // method 'rivc', with stable and covariance).
 mxArray* rivc_info(const ctid::RivcResult<double>& res) {
-  const char* fields[] = {
-      "converged", "iterations",     "reason",           "C",
-      "D",         "noise_variance", "noise_covariance", "simulation_variance",
-      "simulated", "condition",      "start_theta",      "stable",
-      "covariance"};
-  mxArray* info = mxCreateStructMatrix(1, 1, 13, fields);
-  mxSetField(info, 0, "converged", mxCreateLogicalScalar(res.converged));
-  mxSetField(info, 0, "iterations", mxCreateDoubleScalar(res.iterations));
-  mxSetField(info, 0, "reason", mxCreateString(res.reason.c_str()));
-  mxSetField(info, 0, "C", to_output(res.noise.c.transpose()));
-  mxSetField(info, 0, "D", to_output(res.noise.d.transpose()));
-  mxSetField(info, 0, "noise_variance",
-             mxCreateDoubleScalar(res.noise.innovation_variance));
-  mxSetField(info, 0, "noise_covariance", to_output(res.noise.covariance));
-  mxSetField(info, 0, "simulation_variance",
-             mxCreateDoubleScalar(res.simulation_variance));
-  mxSetField(info, 0, "simulated", to_output(res.simulated));
-  mxSetField(info, 0, "condition", mxCreateDoubleScalar(res.condition));
-  mxSetField(info, 0, "start_theta", to_output(res.start_theta));
+  mxArray* info = ctid::mex::make_rivc_info({"stable", "covariance"});
+  ctid::mex::set_rivc_info(info, res);
   mxSetField(info, 0, "stable", mxCreateLogicalScalar(res.stable));
   mxSetField(info, 0, "covariance", to_output(res.covariance));
   return info;
 }
 
 // The method 'delay_search': the engine's problem with the delay of its
-// one channel searched (core refined_iv_delay.hpp). search fields: td0
-// ([]: the grid), tdmin, tdmax, numtd, refine (Gauss-Newton on the
-// delay), tdmax_limit (> tdmax: the grid extended up to it while its
-// minimum is at its upper end), maxiter, tolpar (sampling intervals),
-// tolfun, stepmax, stepreduction, noise ([] or [nd nc]: RIVC with that
-// ARMA noise model). Outputs: theta, the engine's covariance and info at
-// the delay kept (RIVC's with a noise model), info.delay_search: delay,
-// delay_estimated, covariance (of [theta; td] or theta), loss, simulated,
-// grid, grid_loss, tdmax, iterations, converged, reason.
+// one channel searched (core refined_iv_delay.hpp). search: the options of
+// refined_iv_delay_options() (core/include/ctid/offline/
+// refined_iv_options.hpp): td0 ([]: the grid), tdmin, tdmax, numtd, refine
+// (Gauss-Newton on the delay), tdmax_limit (> tdmax: the grid extended up
+// to it while its minimum is at its upper end), maxiter, tolpar (sampling
+// intervals), tolfun, stepmax, stepreduction, noise ([] or [nd nc]: RIVC
+// with that ARMA noise model). Outputs: theta, the engine's covariance and
+// info at the delay kept (RIVC's with a noise model), info.delay_search:
+// delay, delay_estimated, covariance (of [theta; td] or theta), loss,
+// simulated, grid, grid_loss, tdmax, iterations, converged, reason.
 void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
                           const mxArray* search_arg,
                           const ctid::RivProblem<double>& problem,
@@ -138,31 +121,9 @@ void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
                           const ctid::RivData<double>& data) {
   OptionsReader opt(g, search_arg, "search.");
   ctid::RivDelaySettings<double> ds;
-  ctid::DelaySearchSettings<double>& s = ds.search;
-  const Eigen::MatrixXd td0 = opt.matrix("td0");
-  s.grid = td0.size() == 0;
-  if (!s.grid) s.td_start = td0(0);
-  s.td_min = opt.scalar("tdmin");
-  s.td_max = opt.scalar("tdmax");
-  s.num_td = opt.integer("numtd", 50);
-  s.refinement = opt.flag("refine", true) ? ctid::DelayRefinement::kGaussNewton
-                                          : ctid::DelayRefinement::kNone;
-  s.extend_limit = opt.scalar("tdmax_limit", 0);
-  s.max_iterations = opt.integer("maxiter", 20);
-  s.step_tolerance = opt.scalar("tolpar", 1e-4);
-  s.loss_tolerance = opt.scalar("tolfun", 1e-5);
-  s.max_step = opt.scalar("stepmax", std::numeric_limits<double>::infinity());
-  s.step_reduction = opt.scalar("stepreduction", 0.5);
-  const Eigen::MatrixXd noise = opt.matrix("noise");
+  ctid::mex::read_option_table(g, opt, ctid::refined_iv_delay_options<double>(),
+                               &ds);
   opt.finish();
-  if (noise.size() != 0 && noise.size() != 2) {
-    g.fail("badOption", "search.noise must be [] or [nd nc]");
-  }
-  if (noise.size() == 2) {
-    ds.noise_model = true;
-    ds.nd = static_cast<int>(noise(0));
-    ds.nc = static_cast<int>(noise(1));
-  }
   ctid::RivDelayResult<double> r;
   g.check(ctid::refined_iv_delay(problem, settings, data, ds, &r));
   plhs[0] = to_output(ds.noise_model ? r.rivc.theta : r.engine.theta);
@@ -198,6 +159,11 @@ void delay_search_gateway(const Gateway& g, int nlhs, mxArray* plhs[],
 
 void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                         const mxArray** prhs) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] =
+        ctid::mex::option_table_struct(ctid::refined_iv_options<double>());
+    return;
+  }
   const mxArray* search = nullptr;
   if (nrhs >= 2 && mxIsChar(prhs[1])) {
     const std::string method = g.text(prhs[1], "the method");
@@ -234,108 +200,56 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   data.ts = record.ts;
   data.instants = record.instants;
 
-  ctid::RivProblem<double> problem;
-  ctid::RivSettings<double> settings;
   OptionsReader opt(g, prhs[5]);
-  settings.method =
-      opt.choice<ctid::RivMethod>("method",
-                                  {{"srivc", ctid::RivMethod::kSrivc},
-                                   {"ivsvf", ctid::RivMethod::kIvsvf},
-                                   {"lssvf", ctid::RivMethod::kLssvf}},
-                                  ctid::RivMethod::kSrivc);
-  problem.nf = opt.integer_vector("nf");
-  const std::vector<int> group = opt.integer_vector("group");
-  const std::vector<int> nb = opt.integer_vector("nb");
-  const std::vector<int> nk = opt.integer_vector("nk");
-  const std::vector<int> rules =
-      opt.integer_vector("intersample", std::vector<int>(m, 0));
-  std::vector<double> delays = to_std(opt.matrix("delay"));
-  if (delays.empty()) delays.assign(m, 0.0);
-  if (static_cast<int>(delays.size()) != m) {
-    g.fail("dimensionMismatch",
-           "delay needs one entry per column of w (" + std::to_string(m) + ")");
-  }
-  if (static_cast<int>(group.size()) != m || static_cast<int>(nb.size()) != m ||
-      static_cast<int>(nk.size()) != m || static_cast<int>(rules.size()) != m) {
-    g.fail("dimensionMismatch",
-           "group, nb, nk and intersample need one entry per column of w (" +
-               std::to_string(m) + ")");
-  }
-  for (int j = 0; j < m; ++j) {
-    ctid::RivChannel c;
-    c.group = group[j] - 1;
-    c.nb = nb[j];
-    c.nk = nk[j];
-    c.rule = intersample_rule(g, rules[j]);
-    c.delay = delays[j];
-    problem.channels.push_back(c);
-  }
-  problem.y_rule = intersample_rule(g, opt.integer("y_intersample", 1));
-  problem.output_offset = opt.flag("output_offset", false);
-  problem.initial_state = opt.flag("initial_state", false);
-  const Eigen::MatrixXd fixed = opt.matrix("fixed");
-  const Eigen::MatrixXd fixed_values = opt.matrix("fixed_values");
-  const int np = problem.num_parameters();
-  if (fixed.size() > 0) {
-    if (fixed.size() != np || fixed_values.size() != np) {
-      g.fail("dimensionMismatch", "fixed and fixed_values need " +
-                                      std::to_string(np) + " entries each");
-    }
-    for (int i = 0; i < np; ++i) problem.fixed.push_back(fixed(i) != 0);
-    problem.fixed_values = Eigen::Map<const Eigen::VectorXd>(
-        fixed_values.data(), fixed_values.size());
-  }
-  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
-  if (theta_init.size() > 0) {
-    settings.theta_init =
-        Eigen::Map<const Eigen::VectorXd>(theta_init.data(), theta_init.size());
-  }
-  settings.cutoffs = to_std(opt.matrix("cutoffs"));
-  settings.tolerance = opt.scalar("tol", 1e-6);
-  settings.max_iterations = opt.integer("maxiter", 30);
-  settings.max_starts = opt.integer("max_starts", 3);
-  settings.time_scale = opt.scalar("time_scale", 0);
-  settings.integrator_pole = opt.scalar("integrator_pole", 0);
-  settings.refit_integrators = opt.flag("refit_integrators", false);
-  // The integrator refit alone, from theta_init (see the header comment).
+  ctid::RivConfig<double> config;
+  ctid::mex::read_option_table(g, opt, ctid::refined_iv_options<double>(),
+                               &config);
+  // The integrator refit of a given fit (see the header comment).
   const bool refit_only = opt.has("integrator_start");
-  std::vector<int> suspected;
-  double base_mse = 0;
-  std::string base_reason;
+  ctid::RivResult<double> fit;
   if (refit_only) {
     OptionsReader start = opt.nested("integrator_start");
-    suspected = start.integer_vector("suspected");
-    base_mse = start.scalar("mse");
-    base_reason = start.text("reason", "");
-    if (start.flag("lowest", false)) {
-      base_reason = ctid::lowest_run_reason(base_reason);
-    }
+    const auto vector = [&](const char* name) {
+      const Eigen::MatrixXd v = start.matrix(name);
+      return ctid::Vector<double>(v.reshaped());
+    };
+    fit.theta = vector("theta");
+    fit.converged = start.flag("converged", false);
+    fit.stable = start.flag("stable", false);
+    fit.integrator_suspected = start.integer_vector("suspected");
+    fit.simulated = vector("simulated");
+    fit.reason = start.text("reason", "");
+    fit.lowest_theta = vector("lowest_theta");
+    fit.lowest_integrator_suspected =
+        start.integer_vector("lowest_suspected", {});
+    fit.lowest_simulated = vector("lowest_simulated");
     start.finish();
   }
-  const Eigen::MatrixXd cnum = opt.matrix("controller_num");
-  const Eigen::MatrixXd cden = opt.matrix("controller_den");
-  const bool discrete = opt.flag("discrete_controller", false);
   opt.finish();
+  ctid::RivProblem<double> problem;
+  g.check(ctid::riv_problem(config, m, &problem));
+  const ctid::RivSettings<double>& settings = config.settings;
+  const int np = problem.num_parameters();
+  const ctid::Vector<double> cnum = problem.controller_num;
+  const ctid::Vector<double> cden = problem.controller_den;
+  const bool discrete = config.discrete_controller;
   ctid::DiscreteTransferFunction<double> controller;
   if (cnum.size() > 0 && discrete) {
-    if (cden.size() == 0 || (cnum.rows() > 1 && cnum.cols() > 1) ||
-        (cden.rows() > 1 && cden.cols() > 1)) {
+    if (cden.size() == 0) {
       g.fail("badOption",
              "options 'controller_num' and 'controller_den' must be "
              "non-empty vectors");
     }
-    controller.numerator = cnum.reshaped();
-    controller.denominator = cden.reshaped();
+    controller.numerator = cnum;
+    controller.denominator = cden;
     g.check(ctid::validate_controller(controller));
     const double* r = g.matrix(prhs[4], "[r1 r2]", n, 2);
+    problem.controller_num.resize(0);
+    problem.controller_den.resize(0);
     problem.discrete_controller = &controller;
     problem.r1 = r;
     problem.r2 = r + n;
   } else if (cnum.size() > 0) {
-    problem.controller_num =
-        Eigen::Map<const Eigen::VectorXd>(cnum.data(), cnum.size());
-    problem.controller_den =
-        Eigen::Map<const Eigen::VectorXd>(cden.data(), cden.size());
     // r (N-by-1, the setpoint) or [r1 r] (N-by-2, r1 at the plant input)
     if (mxGetN(prhs[4]) == 2) {
       const double* r = g.matrix(prhs[4], "[r1 r]", n, 2);
@@ -355,16 +269,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::RivResult<double> result;
   ctid::Status status;
   if (refit_only) {
-    bool kept = false;
-    g.check(ctid::refit_integrators(problem, settings, data,
-                                    settings.theta_init, suspected, base_mse,
-                                    base_reason, &result, &kept));
-    if (!kept) {
-      result = ctid::RivResult<double>();
-      result.theta = settings.theta_init;
+    result = fit;
+    g.check(ctid::refit_integrators(problem, settings, data, &result));
+    if (result.covariance.size() == 0) {
       result.covariance = Eigen::MatrixXd::Zero(np, np);
-      result.integrator_refit = -1;
-      result.reason = "the refit with a pole at p = 0 was not better";
     }
   } else {
     status = ctid::refined_iv(problem, settings, data, &result);

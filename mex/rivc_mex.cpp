@@ -8,7 +8,10 @@
 // y N-by-1, u N-by-m (m > 1: MISO rivc, method 'rivc' in open loop), Ts
 // the sampling interval (regular data), r the reference of a closed loop:
 // the setpoint (N-by-1) or [r1 r] (N-by-2, r1 at the plant input: u = r1
-// + C (r - y); cl2srivc: N-by-1), or []. opts fields:
+// + C (r - y); cl2srivc: N-by-1), or []. opts: the options of
+// rivc_options() (core/include/ctid/offline/refined_iv_options.hpp), read
+// from that table with its defaults and checked by its validate(), every
+// bad value a bad option; `rivc_mex (fname, "options")` returns the table:
 //   method  'rivc' (default; with controller_num/_den: CLRIVC),
 //           'cl2srivc' (two-stage SRIVC: u on r, then y on u_hat) or
 //           'arma' (the ARMA estimator alone on y: nd, nc).
@@ -26,17 +29,17 @@
 #include <algorithm>
 
 #include "ctid/offline/refined_iv_bj.hpp"
+#include "ctid/offline/refined_iv_options.hpp"
+#include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
+#include "rivc_info.hpp"
 
 namespace {
 
 using ctid::mex::Gateway;
-using ctid::mex::intersample_rule;
 using ctid::mex::OptionsReader;
 using ctid::mex::to_output;
-
-enum class Method { kRivc, kCl2srivc, kArma };
 
 void set_info(mxArray* info, const char* name, mxArray* value) {
   mxSetField(info, 0, name, value);
@@ -44,6 +47,10 @@ void set_info(mxArray* info, const char* name, mxArray* value) {
 
 void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                   const mxArray* prhs[]) {
+  if (ctid::mex::asks_for_options(nrhs, prhs)) {
+    plhs[0] = ctid::mex::option_table_struct(ctid::rivc_options<double>());
+    return;
+  }
   if (nrhs != 6) {
     g.fail("badInput",
            "the gateway takes 6 arguments, got " + std::to_string(nrhs));
@@ -58,90 +65,44 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     g.fail("badInput", "regularly sampled data only (a scalar Ts)");
   }
   OptionsReader opt(g, prhs[5]);
-  const Method method = opt.choice<Method>("method",
-                                           {{"rivc", Method::kRivc},
-                                            {"cl2srivc", Method::kCl2srivc},
-                                            {"arma", Method::kArma}},
-                                           Method::kRivc);
-  ctid::RivcProblem<double> problem;
-  ctid::RivcSettings<double> settings;
+  ctid::RivcConfig<double> config;
+  ctid::mex::read_option_table(g, opt, ctid::rivc_options<double>(), &config,
+                               "badOption");
+  opt.finish();
+  g.check(ctid::validate(config));
+  const ctid::RivcMethod method = config.method;
   // nb, nf, nk: one entry per input (MISO rivc); scalars for one input.
-  const std::vector<int> nb_each = opt.integer_vector("nb", {1});
-  problem.nc = opt.integer("nc", 0);
-  problem.nd = opt.integer("nd", 0);
-  const std::vector<int> nf_each = opt.integer_vector("nf", {1});
-  const std::vector<int> nk_each = opt.integer_vector("nk", {0});
+  const std::vector<int>& nb_each = config.nb;
+  const std::vector<int>& nf_each = config.nf;
+  const std::vector<int>& nk_each = config.nk;
   if (static_cast<int>(nb_each.size()) != num_inputs ||
       static_cast<int>(nf_each.size()) != num_inputs ||
       static_cast<int>(nk_each.size()) != num_inputs) {
     g.fail("dimensionMismatch", "nb, nf and nk need one entry per input (" +
                                     std::to_string(num_inputs) + ")");
   }
+  ctid::RivcProblem<double> problem = config.problem;
   problem.nb = nb_each[0];
   problem.nf = nf_each[0];
   problem.nk = nk_each[0];
-  problem.delay = opt.scalar("delay", 0);
-  problem.u_rule = intersample_rule(g, opt.integer("intersample", 0));
-  settings.tolerance = opt.scalar("tol", 1e-6);
-  settings.max_iterations = opt.integer("maxiter", 30);
-  const Eigen::MatrixXd theta_init = opt.matrix("theta_init");
-  if (theta_init.size() > 0) settings.theta_init = theta_init.reshaped();
-  const Eigen::MatrixXd cutoffs = opt.matrix("cutoffs");
-  settings.start.cutoffs.assign(cutoffs.data(),
-                                cutoffs.data() + cutoffs.size());
-  settings.start.max_starts = opt.integer("max_starts", 3);
+  ctid::RivcSettings<double> settings = config.settings;
   settings.start.tolerance = settings.tolerance;
-  settings.start.max_iterations = std::max(settings.max_iterations, 30);
-  settings.arma.max_iterations = opt.integer("arma_maxiter", 50);
-  settings.arma.method = opt.choice<ctid::ArmaMethod>(
-      "arma_method",
-      {{"pem", ctid::ArmaMethod::kPem}, {"ivarma", ctid::ArmaMethod::kIvarma}},
-      ctid::ArmaMethod::kPem);
-  const Eigen::MatrixXd cnum = opt.matrix("controller_num");
-  const Eigen::MatrixXd cden = opt.matrix("controller_den");
-  const int cl_nb = opt.integer("cl_nb", 1);
-  const int cl_nf = opt.integer("cl_nf", 1);
-  const int cl_nk = opt.integer("cl_nk", 0);
-  const Eigen::MatrixXd cl_theta_init = opt.matrix("cl_theta_init");
-  opt.finish();
-  if (method == Method::kCl2srivc) {
-    settings.start.max_iterations = settings.max_iterations;
-  }
-  if (num_inputs > 1 &&
-      (method != Method::kRivc || cnum.size() > 0 || problem.delay != 0)) {
+  settings.start.max_iterations = method == ctid::RivcMethod::kCl2srivc
+                                      ? settings.max_iterations
+                                      : std::max(settings.max_iterations, 30);
+  if (num_inputs > 1 && (method != ctid::RivcMethod::kRivc ||
+                         problem.closed_loop() || problem.delay != 0)) {
     g.fail("notSupported",
            "several inputs: open-loop rivc without a fractional delay only");
   }
-  if (settings.max_iterations < 1 || settings.max_iterations > 100000 ||
-      settings.arma.max_iterations < 0 ||
-      settings.arma.max_iterations > 100000 || settings.start.max_starts < 1 ||
-      settings.start.max_starts > 100) {
-    g.fail("badOption",
-           "maxiter must be in 1..1e5, arma_maxiter in 0..1e5 and max_starts "
-           "in 1..100");
-  }
 
-  const char* fields[] = {"converged",
-                          "iterations",
-                          "reason",
-                          "C",
-                          "D",
-                          "noise_variance",
-                          "noise_covariance",
-                          "simulation_variance",
-                          "simulated",
-                          "condition",
-                          "start_theta",
-                          "cl_theta",
-                          "cl_covariance",
-                          "u_hat",
-                          "stage2_covariance",
-                          "covariance_lags"};
-  mxArray* info = mxCreateStructMatrix(1, 1, 16, fields);
+  mxArray* info =
+      ctid::mex::make_rivc_info({"cl_theta", "cl_covariance", "u_hat",
+                                 "stage2_covariance", "covariance_lags"});
   ctid::Vector<double> theta;
   ctid::Matrix<double> cov;
 
-  if (method == Method::kArma) {
+  if (method == ctid::RivcMethod::kArma) {
     ctid::ArmaResult<double> arma;
     g.check(ctid::arma_estimate<double>(record.y, n, problem.nd, problem.nc,
                                         settings.arma, &arma));
@@ -154,7 +115,7 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     set_info(info, "D", to_output(arma.d.transpose()));
     set_info(info, "noise_variance",
              mxCreateDoubleScalar(arma.innovation_variance));
-  } else if (method == Method::kCl2srivc) {
+  } else if (method == ctid::RivcMethod::kCl2srivc) {
     if (mxIsEmpty(prhs[4])) g.fail("badInput", "cl2srivc needs r");
     const double* r = g.matrix(prhs[4], "the reference r", n, 1);
     ctid::RivProblem<double> plant, loop;
@@ -164,19 +125,17 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     c.nk = problem.nk;
     c.rule = problem.u_rule;
     plant.channels.push_back(c);
-    loop.nf = {cl_nf};
+    loop.nf = {config.cl_nf};
     ctid::RivChannel cl;
-    cl.nb = cl_nb;
-    cl.nk = cl_nk;
+    cl.nb = config.cl_nb;
+    cl.nk = config.cl_nk;
     loop.channels.push_back(cl);
     ctid::Cl2srivcResult<double> res;
     ctid::RivSettings<double> stage_settings = settings.start;
     stage_settings.theta_init = settings.theta_init;
-    ctid::Vector<double> loop_start;
-    if (cl_theta_init.size() > 0) loop_start = cl_theta_init.reshaped();
     const ctid::Status status =
         ctid::cl2srivc<double>(plant, loop, stage_settings, record.y, record.u,
-                               r, n, record.ts, &res, loop_start);
+                               r, n, record.ts, &res, config.cl_theta_init);
     if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
     theta = res.plant.theta;
     cov = res.covariance.size() > 0 ? res.covariance : res.plant.covariance;
@@ -200,12 +159,10 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     set_info(info, "cl_covariance", to_output(res.sensitivity.covariance));
     set_info(info, "u_hat", to_output(res.sensitivity.simulated));
   } else {
-    if (cnum.size() > 0) {
-      if (cden.size() == 0) {
+    if (problem.closed_loop()) {
+      if (problem.controller_den.size() == 0) {
         g.fail("badOption", "controller_num needs controller_den");
       }
-      problem.controller_num = cnum.reshaped();
-      problem.controller_den = cden.reshaped();
       // r (N-by-1, the setpoint) or [r1 r] (N-by-2, r1 at the plant input)
       if (mxGetN(prhs[4]) == 2) {
         const double* r = g.matrix(prhs[4], "[r1 r]", n, 2);
@@ -236,19 +193,7 @@ void rivc_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
     theta = res.theta;
     cov = res.covariance;
-    set_info(info, "converged", mxCreateLogicalScalar(res.converged));
-    set_info(info, "iterations", mxCreateDoubleScalar(res.iterations));
-    set_info(info, "reason", mxCreateString(res.reason.c_str()));
-    set_info(info, "C", to_output(res.noise.c.transpose()));
-    set_info(info, "D", to_output(res.noise.d.transpose()));
-    set_info(info, "noise_variance",
-             mxCreateDoubleScalar(res.noise.innovation_variance));
-    set_info(info, "noise_covariance", to_output(res.noise.covariance));
-    set_info(info, "simulation_variance",
-             mxCreateDoubleScalar(res.simulation_variance));
-    set_info(info, "simulated", to_output(res.simulated));
-    set_info(info, "condition", mxCreateDoubleScalar(res.condition));
-    set_info(info, "start_theta", to_output(res.start_theta));
+    ctid::mex::set_rivc_info(info, res);
   }
   plhs[0] = to_output(theta);
   if (nlhs >= 2) plhs[1] = to_output(cov);

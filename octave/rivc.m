@@ -38,9 +38,15 @@
 ## @var{Mi}: an @code{idpoly} whose B, C, D, F give the orders and whose
 ## B, F start the iterations.
 ##
-## Options: @code{lambda} (SVF cut-off of the start, rad/s),
-## @code{Tol} (1e-6, relative parameter change), @code{MaxIter} (30),
-## @code{InitMethod}, the model the iterations start from:
+## Options:
+## @table @code
+## @item lambda
+## SVF cut-off of the start, rad/s.
+## @item Tol, MaxIter
+## stop when the relative parameter change falls below Tol (default
+## 1e-6), or after MaxIter iterations (default 30).
+## @item InitMethod
+## the model the iterations start from:
 ## @qcode{"sriv"} or @qcode{"srivc"} (default: SRIVC, from IVSVF starts
 ## at @code{lambda} or at 12 cut-offs log-spaced between 5/T and
 ## 0.5 pi/Ts), @qcode{"ivgpmf"} (one IVSVF estimate, thesis eqs.
@@ -55,15 +61,17 @@
 ## @code{rivc:unstableStart} (a given model must be stable:
 ## @code{rivc:badInput}). @code{M.Report.Parameters.InitMethod} says which
 ## start was used (@code{Method}, @code{Requested}, @code{Lambda},
-## @code{Theta} = its [f b], @code{Stabilised}). Unknown names:
-## @code{rivc:badOption}.
-## @code{ArmaMethod} (the noise model's estimator: 'pem', prediction
-## error by Gauss-Newton from Hannan-Rissanen, or 'ivarma', Young's IVARMA:
-## the ARMA model's pseudo-linear regression solved iteratively by IV with
-## the instruments prefiltered by 1/C, whose fixed point solves the
-## prediction-error score equation; see @code{ivarma_estimate} in
-## refined_iv_bj.hpp), @code{ArmaMaxIter} (50, Gauss-Newton or IVARMA
-## iterations).
+## @code{Theta} = its [f b], @code{Stabilised}).
+## @item ArmaMaxIter, ArmaMethod
+## the largest number of iterations of the noise model's estimator
+## (default 50), and that estimator: @qcode{"pem"} (default), prediction
+## error by Gauss-Newton from Hannan-Rissanen, or @qcode{"ivarma"},
+## Young's IVARMA: the ARMA model's pseudo-linear regression solved
+## iteratively by IV with the instruments prefiltered by 1/C, whose fixed
+## point solves the prediction-error score equation (see
+## @code{ivarma_estimate} in refined_iv_bj.hpp).
+## @end table
+## Unknown names, and values out of range: @code{rivc:badOption}.
 ##
 ## @var{M}: the hybrid Box-Jenkins model as a continuous-time
 ## @code{idpoly}: B(s)/F(s) with the covariance of [f b] (@code{M.theta},

@@ -33,10 +33,12 @@
 ## (srivc detects a pole at p = 0 itself; start the record at its first
 ## sample instead of T0).
 ## @item lambda
-## cut-off (rad/s) of the SVF of the IVSVF start. Default: IVSVF at 12
+## cut-off (rad/s) of the SVF of the IVSVF start. Without it: IVSVF at 12
 ## cut-offs log-spaced over the record's band, ranked by the simulation
 ## error of the start model; SRIVC runs from the best @code{MaxStarts}
-## (default 3) starts and keeps the best stable, converged model.
+## starts and keeps the best stable, converged model.
+## @item MaxStarts
+## how many of the ranked starts SRIVC runs from (default 3).
 ## @item InitMethod
 ## the start of the SRIVC iterations: @qcode{"sriv"} or @qcode{"srivc"}
 ## (default: the engine's, IVSVF at @code{lambda} or at the grid of

@@ -34,11 +34,12 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   if (refined)
     form = "f";
-    defaults = struct ("lambda_svf", [], "lambda", [], "Tol", 1e-6,
-                       "MaxIter", 30, "InitMethod", [],
+    ## [] leaves the option to the core (refined_iv_options.hpp)
+    defaults = struct ("lambda_svf", [], "lambda", [], "Tol", [],
+                       "MaxIter", [], "InitMethod", [],
                        "svf", "normalised", "InitialState", "zero",
                        "OutputOffset", "auto", "InputOffset", "auto",
-                       "TimeScale", "auto", "MaxStarts", 3);
+                       "TimeScale", "auto", "MaxStarts", []);
   else
     form = "a";
     defaults = struct ("lambda_svf", [], "svf", "normalised");
@@ -174,11 +175,15 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     end_try_catch
   endif
   info.integrators = zeros (1, numel (e.nf));
-  if (refined && ! closed && ! (info.converged && info.stable)
-      && any (info.integrator_suspected))
+  if (refined && ! closed)
     [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e, theta,
                                                       info);
-    if (! ok && auto_input_offset && ! any (e.input_offset))
+    from = info2.integrator_refit;   # -1: from the fit, -2: its lowest run
+    if (from == -1)
+      reason = info2.reason;          # the core's: the refit was not better
+    endif
+    if (! ok && from < 0 && auto_input_offset && ! any (e.input_offset)
+        && (from == -1 || raw_levels))
       ## raw units: the integrator integrates the input's offset too
       e3 = e;
       e3.input_offset = true (1, nu);
@@ -187,33 +192,8 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     endif
     if (ok)
       e = e2; theta = theta2; cov = cov2; info = info2;
-    else
-      info.reason = [info.reason, "; a refit with a pole at p = 0 did ", ...
-                     "not converge to a better model"];
-    endif
-  elseif (refined && ! closed && ! isempty (info.lowest_theta)
-          && any (info.lowest_integrator_suspected))
-    ## The returned fit converged, but a run from another start reached a
-    ## lower loss without converging while its slowest pole crept to p = 0
-    ## (the engine's info.lowest_*; mean-removed EMPS position [2 3 0]:
-    ## R_T^2 0.93 converged, 0.991 creeping): the integrator refit starts
-    ## from that run and replaces the converged local minimum when it
-    ## converges to a stable model with a loss no larger than the run's.
-    low = info;
-    low.integrator_suspected = info.lowest_integrator_suspected;
-    low.simulated = info.lowest_simulated;
-    [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
-                                                      info.lowest_theta, low,
-                                                      true);
-    if (! ok && auto_input_offset && raw_levels && ! any (e.input_offset))
-      e3 = e;
-      e3.input_offset = true (1, nu);
-      [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e3,
-                                                        info.lowest_theta,
-                                                        low, true);
-    endif
-    if (ok)
-      e = e2; theta = theta2; cov = cov2; info = info2;
+    elseif (from == -1)
+      info.reason = reason;
     endif
   endif
 
@@ -309,19 +289,12 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     info.AIC = log (max (s2, eps * vy)) + 2 * sum (free) / n;
   endif
 
-  ## The refined-method options into the engine's struct e.
+  ## The refined-method options into the engine's struct e: the core
+  ## checks them (refined_iv_options.hpp); here the words of CONTSID.
   function read_refined_options ()
-    tol = opts.Tol;
-    maxiter = opts.MaxIter;
-    if (! isnumeric (tol) || ! isreal (tol) || ! isscalar (tol) || ! (tol > 0))
-      error ([fname ":badInput"], "%s: Tol must be a real scalar > 0", fname);
-    endif
-    if (! isnumeric (maxiter) || ! isscalar (maxiter)
-        || maxiter != fix (maxiter) || maxiter < 1)
-      error ([fname ":badInput"], "%s: MaxIter must be an integer >= 1", fname);
-    endif
-    e.tol = tol;
-    e.maxiter = maxiter;
+    e.tol = opts.Tol;
+    e.maxiter = opts.MaxIter;
+    e.max_starts = opts.MaxStarts;
     start = contsid_init_method (fname, opts.InitMethod, e);
     e.theta_init = start.Theta(:);
     if (! any (strcmpi (opts.InitialState, {"zero", "estimate", "e", "z"})))
@@ -342,22 +315,14 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
     else
       e.input_offset = logical_option (opts.InputOffset, "InputOffset", nu);
     endif
-    ts = opts.TimeScale;
-    if (ischar (ts) && strcmpi (ts, "auto"))
-      e.time_scale = 0;
-    elseif (isnumeric (ts) && isscalar (ts) && isreal (ts) && ts > 0
-            && isfinite (ts))
-      e.time_scale = ts;
-    else
-      error ([fname ":badOption"],
-             "%s: TimeScale must be 'auto' or a scale > 0 (rad/s)", fname);
+    e.time_scale = opts.TimeScale;
+    if (ischar (e.time_scale))
+      if (! strcmpi (e.time_scale, "auto"))
+        error ([fname ":badOption"],
+               "%s: TimeScale must be 'auto' or a scale > 0 (rad/s)", fname);
+      endif
+      e.time_scale = [];
     endif
-    ms = opts.MaxStarts;
-    if (! isnumeric (ms) || ! isscalar (ms) || ms != fix (ms) || ms < 1)
-      error ([fname ":badOption"], "%s: MaxStarts must be an integer >= 1",
-             fname);
-    endif
-    e.max_starts = ms;
   endfunction
 
   function v = logical_option (v, name, count)
@@ -407,36 +372,39 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endfunction
 endfunction
 
-## A fit whose slowest pole crept toward p = 0 without converging (the
-## engine's info.integrator_suspected, per denominator): the loss minimum
-## of the structure lies on the stability boundary, an integrator the
-## structure does not declare (an integrating plant, e.g. force -> position
-## of an axis). The refit is the engine's (core refined_iv.hpp,
-## refit_integrators: that pole declared at p = 0, started from theta with
-## its slowest pole moved there, kept when it converges to a stable model
-## whose simulation error is not larger; info2.integrators the poles
-## declared); ok says whether it was kept. lowest: info is the lowest-loss
-## run's (info.lowest_*), quoted so in the refit's reason.
+## The engine's integrator refit of the fit (theta, info) (core
+## refined_iv.hpp, refit_integrators). A fit whose slowest pole crept
+## toward p = 0 without converging (info.integrator_suspected, per
+## denominator) has the loss minimum of its structure on the stability
+## boundary, an integrator the structure does not declare (an integrating
+## plant, e.g. force -> position of an axis); so has a converged fit whose
+## lowest-loss run from another start crept so (info.lowest_*;
+## mean-removed EMPS position [2 3 0]: R_T^2 0.93 converged, 0.991
+## creeping). The engine chooses which run the refit starts from, declares
+## that pole at p = 0, and keeps the refit when it converges to a stable
+## model whose simulation error is not larger: ok, with info2.integrators
+## the poles declared; otherwise info2.integrator_refit says from where it
+## was tried (-1 the fit, -2 its lowest run, 0 not at all).
 function [ok, e2, theta2, cov2, info2] = integrator_refit (fname, d, t, e,
-                                                          theta, info,
-                                                          lowest)
-  if (nargin < 7)
-    lowest = false;
-  endif
-  ok = false;
-  [theta2, cov2, info2] = deal ([]);
+                                                          theta, info)
   e2 = e;
-  e2.theta_init = theta;
-  e2.integrator_start = struct ("suspected",
-                                double (info.integrator_suspected(:).'),
-                                "mse", mean ((d.y - info.simulated(:)) .^ 2),
-                                "reason", info.reason, "lowest", lowest);
+  e2.integrator_start = struct ("theta", theta, "converged", info.converged,
+                                "stable", info.stable, "suspected",
+                                double (info.integrator_suspected),
+                                "simulated", info.simulated,
+                                "reason", info.reason,
+                                "lowest_theta", info.lowest_theta,
+                                "lowest_suspected",
+                                double (info.lowest_integrator_suspected),
+                                "lowest_simulated", info.lowest_simulated);
   try
     [theta2, cov2, info2] = contsid_refined_iv (fname, d.y, d.u, t, e2);
-    ok = info2.integrator_refit == 1;
-    e2 = rmfield (e2, "integrator_start");
   catch
+    [theta2, cov2] = deal ([]);
+    info2 = struct ("integrator_refit", 0);
   end_try_catch
+  e2 = rmfield (e2, "integrator_start");
+  ok = info2.integrator_refit == 1;
 endfunction
 
 ## CONTSID's Denominator ('Common' or 'Different'), checked against the

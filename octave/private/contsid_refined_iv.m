@@ -14,8 +14,10 @@
 ## @var{fname} names the caller in every error identifier. @var{y}
 ## N-by-1; @var{W} N-by-m, one channel per column (inputs and extra
 ## regressors such as effect terms); @var{t} the sampling interval Ts or the
-## N sampling instants. @var{opts} (a struct; absent fields take their
-## defaults):
+## N sampling instants. @var{opts} (a struct): the options of the core's
+## table (core/include/ctid/offline/refined_iv_options.hpp, returned by
+## @code{refined_iv_mex (fname, "options")}, which checks them and gives
+## an absent one its default) and the ones converted here:
 ## @table @code
 ## @item nf
 ## order of each denominator F_g (required); one entry: common denominator.
@@ -37,10 +39,9 @@
 ## "srivc" (default), "ivsvf" or "lssvf".
 ## @item theta_init, cutoffs, tol, maxiter, max_starts, time_scale, integrator_pole
 ## the start (theta in the layout below; empty: the automatic start
-## from IVSVF at the cut-offs, default 12 log-spaced between 5/T and
-## 0.5 pi/Ts), the stop rule (relative change < tol = 1e-6, maxiter = 30),
-## how many starts SRIVC runs from (3), the time scale (0: automatic)
-## and the prefilter pole that replaces integrators (0: 10/T).
+## from IVSVF at the cut-offs, 12 log-spaced between 5/T and 0.5 pi/Ts),
+## the stop rule, how many starts SRIVC runs from, the time scale and
+## the prefilter pole that replaces integrators.
 ## @item initial_state, output_offset, input_offset
 ## estimate the initial state (free responses, reported as the initial
 ## derivatives of each group's free response), an output offset c, and
@@ -55,9 +56,11 @@
 ## [r1 r2] (N-by-2).
 ## @item refit_integrators, integrator_start
 ## the engine's integrator refit (core refined_iv.hpp): after the fit
-## (true), or alone from @code{theta_init} (a struct with
-## @code{suspected}, @code{mse}, @code{reason}, @code{lowest}: the flags,
-## mean squared simulation error and reason of the fit it starts from);
+## (true), or alone of a given fit (a struct with its @code{theta} and
+## the fields @code{converged}, @code{stable}, @code{simulated},
+## @code{reason}, @code{lowest_theta}, @code{lowest_simulated} of its
+## @var{info}, @code{suspected} and @code{lowest_suspected} its
+## @code{integrator_suspected} and @code{lowest_integrator_suspected});
 ## @var{info}.integrators and @var{info}.integrator_refit report it.
 ## @item delay_search
 ## the delay of the one channel searched (refined_iv_mex's method
@@ -94,24 +97,17 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
     error ([fname ":badInput"], "%s: the engine options must be a struct",
            fname);
   endif
-  known = {"nf", "group", "nb", "nk", "intersample", "y_intersample", ...
-           "integrators", "fixed", "fixed_values", "method", "theta_init", ...
-           "delay", ...
-           "cutoffs", "tol", "maxiter", "max_starts", "time_scale", ...
-           "integrator_pole", "initial_state", "output_offset", ...
-           "input_offset", "controller", "reference", "delay_search", ...
-           "refit_integrators", "integrator_start"};
-  given = fieldnames (opts);
-  bad = setdiff (given, known);
-  if (! isempty (bad))
-    error ([fname ":badOption"], "%s: unknown engine option '%s'", fname,
-           bad{1});
-  endif
+  ## The fields converted here; every other one is an option of the
+  ## gateway, which checks it and gives an absent one its default
+  ## (core/include/ctid/offline/refined_iv_options.hpp).
+  own = {"integrators", "input_offset", "controller", "reference", ...
+         "delay_search", "fixed", "fixed_values", "theta_init", ...
+         "integrator_start"};
+  g = rmfield (opts, intersect (fieldnames (opts), own));
   if (! isfield (opts, "nf") || ! isfield (opts, "nb"))
     error ([fname ":badOption"], "%s: the engine needs nf and nb", fname);
   endif
   m = columns (W);
-  g = struct ();
   g.nf = double (opts.nf(:).');
   g.nb = double (opts.nb(:).');
   g.group = get_or (opts, "group", ones (1, m));
@@ -124,25 +120,11 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
            fname, m);
   endif
   g.intersample = rule_codes (fname, get_or (opts, "intersample", "zoh"), m);
-  g.y_intersample = rule_codes (fname, get_or (opts, "y_intersample", "foh"),
-                                1);
-  g.method = get_or (opts, "method", "srivc");
-  g.output_offset = logical (get_or (opts, "output_offset", false));
-  g.initial_state = logical (get_or (opts, "initial_state", false));
-  for f = {"tol", "maxiter", "max_starts", "time_scale", "integrator_pole"}
-    if (isfield (opts, f{1}) && ! isempty (opts.(f{1})))
-      g.(f{1}) = double (opts.(f{1}));
-    endif
-  endfor
-  if (isfield (opts, "cutoffs"))
-    g.cutoffs = double (opts.cutoffs(:));
+  if (isfield (opts, "y_intersample"))
+    g.y_intersample = rule_codes (fname, opts.y_intersample, 1);
   endif
-  if (isfield (opts, "refit_integrators"))
-    g.refit_integrators = logical (opts.refit_integrators);
-  endif
-  if (isfield (opts, "integrator_start"))
-    g.integrator_start = opts.integrator_start;
-  endif
+  c = (isfield (g, "output_offset") && ! isempty (g.output_offset)
+       && g.output_offset);
 
   ## Input offsets: one constant channel (nb = 1) in the input's group.
   in_off = logical (get_or (opts, "input_offset", false(1, m)));
@@ -164,10 +146,10 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
 
   ## The full layout (with the constant channels) and its fixed mask.
   nfx = sum (g.nf);
-  np_user = nfx + sum (g.nb(1:m)) + g.output_offset;
-  np = nfx + sum (g.nb) + g.output_offset;
+  np_user = nfx + sum (g.nb(1:m)) + c;
+  np = nfx + sum (g.nb) + c;
   keep = 1:nfx + sum (g.nb(1:m));
-  if (g.output_offset)
+  if (c)
     keep(end+1) = np;
   endif
   fixed = false (np, 1);
@@ -199,7 +181,7 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
     g.fixed_values = values;
   endif
   if (isfield (opts, "theta_init") && ! isempty (opts.theta_init))
-    if (g.output_offset && numel (opts.theta_init) == np_user - 1)
+    if (c && numel (opts.theta_init) == np_user - 1)
       opts.theta_init(end+1) = 0;      # c is re-estimated at every step
     endif
     if (numel (opts.theta_init) != np_user)
@@ -209,6 +191,17 @@ function [theta, cov, info] = contsid_refined_iv (fname, y, W, t, opts)
     th = zeros (np, 1);
     th(keep) = opts.theta_init(:);
     g.theta_init = th;
+  endif
+  if (isfield (opts, "integrator_start"))
+    ## the fit's parameters, in the full layout
+    g.integrator_start = opts.integrator_start;
+    for f = {"theta", "lowest_theta"}
+      if (! isempty (g.integrator_start.(f{1})))
+        th = zeros (np, 1);
+        th(keep) = g.integrator_start.(f{1})(:);
+        g.integrator_start.(f{1}) = th;
+      endif
+    endfor
   endif
   r = [];
   if (isfield (opts, "controller") && ! isempty (opts.controller))

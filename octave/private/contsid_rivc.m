@@ -79,8 +79,8 @@ function [M, info, d] = run_rivc (args)
   opts = read_options (fname, rest(2:end),
                        {"lambda", "Tol", "MaxIter", "InitMethod", ...
                         "ArmaMethod", "ArmaMaxIter"}, ...
-                       {[], 1e-6, 30, [], "pem", 50});
-  e = engine_options (fname, opts, d);
+                       {[], [], [], [], [], []});
+  e = engine_options (opts, d);
   [e.nb, e.nc, e.nd, e.nf, e.nk] = nn{:};
   init = opts.InitMethod;
   if (isempty (init) && ! isempty (theta_init))
@@ -125,7 +125,7 @@ function [M, info, d] = run_clrivc (args)
   if (numel (rest) > 6)
     error ("clrivc:badInput", "clrivc: takes at most 7 arguments");
   endif
-  opts = struct ("lambda", [], "Tol", 1e-6, "MaxIter", 30, "ArmaMaxIter", 50);
+  opts = struct ("lambda", [], "Tol", [], "MaxIter", [], "ArmaMaxIter", []);
   positional (fname, rest(4:end), pos);
   if (numel (rest) >= 5 && ! isempty (rest{5}))
     opts.Tol = rest{5};
@@ -133,7 +133,7 @@ function [M, info, d] = run_clrivc (args)
   if (numel (rest) >= 6 && ! isempty (rest{6}))
     opts.MaxIter = rest{6};
   endif
-  e = engine_options (fname, opts, d);
+  e = engine_options (opts, d);
   e.nb = nn(1); e.nc = nn(2); e.nd = nn(3); e.nf = nn(4); e.nk = nn(5);
   if (e.nk != 0)
     error ("clrivc:notSupported", "clrivc: the closed loop takes nk = 0");
@@ -184,14 +184,14 @@ function [M, info, d] = run_cl2srivc (args)
                                struct ("nf", nol(2), "nb", nol(1)), {"model"},
                                ["init_method names the start of both ", ...
                                 "stages: 'sriv', 'ivgpmf' or 'lssvf'"]);
-  opts = struct ("lambda", [], "Tol", 1e-6, "MaxIter", 30, "ArmaMaxIter", 50);
+  opts = struct ("lambda", [], "Tol", [], "MaxIter", [], "ArmaMaxIter", []);
   if (numel (rest) >= 7 && ! isempty (rest{7}))
     opts.Tol = rest{7};
   endif
   if (numel (rest) >= 8 && ! isempty (rest{8}))
     opts.MaxIter = rest{8};
   endif
-  e = engine_options (fname, opts, d);
+  e = engine_options (opts, d);
   e.method = "cl2srivc";
   e.nb = nol(1); e.nf = nol(2); e.nk = nol(3);
   e.cl_nb = ncl(1); e.cl_nf = ncl(2); e.cl_nk = ncl(3);
@@ -277,8 +277,8 @@ function [M, info, d] = run_tfrivc (args)
   num = num(end - nz:end);
   tdel = Ms.IODelay;
   opts = struct ("lambda", [], "Tol", o.tolpar, "MaxIter", o.maxiter,
-                 "ArmaMaxIter", 50);
-  e = engine_options (fname, opts, d);
+                 "ArmaMaxIter", []);
+  e = engine_options (opts, d);
   e.nf = np; e.nb = nz + 1; e.nd = NN(1); e.nc = NN(2);
   e.nk = floor (tdel / d.Ts + 1e-9);
   e.delay = max (tdel - e.nk * d.Ts, 0);
@@ -517,48 +517,22 @@ function opts = read_options (fname, args, names, defaults)
   endfor
 endfunction
 
-function e = engine_options (fname, opts, d)
-  e = struct ();
-  if (! isnumeric (opts.Tol) || ! isscalar (opts.Tol) || ! isreal (opts.Tol)
-      || ! (opts.Tol > 0) || ! isfinite (opts.Tol))
-    error ([fname ":badOption"], "%s: Tol must be a finite scalar > 0",
-           fname);
-  endif
-  if (! isnumeric (opts.MaxIter) || ! isscalar (opts.MaxIter)
-      || ! isreal (opts.MaxIter) || opts.MaxIter < 1
-      || opts.MaxIter != fix (opts.MaxIter) || opts.MaxIter > 1e6)
-    error ([fname ":badOption"], "%s: MaxIter must be an integer >= 1",
-           fname);
-  endif
-  e.tol = double (opts.Tol);
-  e.maxiter = double (opts.MaxIter);
+## The options of rivc_mex (checked there, rivc_options of
+## core/include/ctid/offline/refined_iv_options.hpp; [] is its default).
+function e = engine_options (opts, d)
+  e = struct ("intersample", double (strcmpi (d.intersample, "foh")));
+  e.tol = opts.Tol;
+  e.maxiter = opts.MaxIter;
+  e.cutoffs = opts.lambda;
   if (isfield (opts, "ArmaMaxIter"))
-    a = opts.ArmaMaxIter;
-    if (! isnumeric (a) || ! isscalar (a) || ! isreal (a) || a < 0
-        || a != fix (a) || a > 1e6)
-      error ([fname ":badOption"],
-             "%s: ArmaMaxIter must be an integer >= 0", fname);
-    endif
-    e.arma_maxiter = double (a);
+    e.arma_maxiter = opts.ArmaMaxIter;
   endif
   if (isfield (opts, "ArmaMethod"))
-    m = opts.ArmaMethod;
-    if (! ischar (m) || ! any (strcmpi (m, {"pem", "ivarma"})))
-      error ([fname ":badOption"],
-             "%s: ArmaMethod must be 'pem' or 'ivarma'", fname);
+    e.arma_method = opts.ArmaMethod;
+    if (ischar (e.arma_method))
+      e.arma_method = lower (e.arma_method);
     endif
-    e.arma_method = lower (m);
   endif
-  lam = opts.lambda;
-  if (! isempty (lam))
-    if (! isnumeric (lam) || ! isreal (lam) || ! isscalar (lam)
-        || ! isfinite (lam) || lam <= 0)
-      error ([fname ":badOption"], "%s: lambda must be a finite scalar > 0",
-             fname);
-    endif
-    e.cutoffs = double (lam);
-  endif
-  e.intersample = double (strcmpi (d.intersample, "foh"));
 endfunction
 
 ## cl2srivc's starts: stage 1 (u on r) from the named start of u on r;

@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "ctid/offline/refined_iv_options.hpp"
 #include "delayed_record.hpp"
 #include "test_util.hpp"
 
@@ -323,6 +324,17 @@ TEST(RefinedIvStatus, IntegratingPlantIsRefittedWithItsIntegrator) {
   const Eigen::Map<const Eigen::VectorXd> y(r.y.data(), r.y.size());
   EXPECT_LE((y - refit.simulated).squaredNorm(),
             (y - plain.simulated).squaredNorm());
+  // The refit of the plain fit alone (a host's second call) starts from
+  // the same run and gives the same model.
+  const IntegratorRefitStart<double> start =
+      integrator_refit_start(plain, view(r, ts));
+  EXPECT_EQ(start.from, 1);
+  EXPECT_EQ(start.theta, plain.theta);
+  RivResult<double> alone = plain;
+  settings.refit_integrators = false;
+  ASSERT_TRUE(refit_integrators(problem, settings, view(r, ts), &alone).ok());
+  EXPECT_EQ(alone.integrator_refit, 1);
+  EXPECT_EQ(alone.theta, refit.theta);
 }
 
 // A converged fit from whose starts another run crept toward p = 0 with a
@@ -353,6 +365,12 @@ TEST(RefinedIvStatus, RefitFromTheLowestRunKeepsABetterConvergedFit) {
   EXPECT_EQ(refit.integrators, std::vector<int>({0}));
   EXPECT_EQ(refit.theta, plain.theta);
   EXPECT_EQ(refit.reason, plain.reason);
+  // the refit of the plain fit alone starts from the lowest run
+  const IntegratorRefitStart<double> start =
+      integrator_refit_start(plain, view(r, ts));
+  EXPECT_EQ(start.from, 2);
+  EXPECT_EQ(start.theta, plain.lowest_theta);
+  EXPECT_NE(start.reason.find("lower loss"), std::string::npos);
 }
 
 // A stable plant that SRIVC fits and converges on: the refit is not
@@ -542,6 +560,115 @@ TEST(RefinedIvStart, SegmentRankedStartMatchesEveryGridStart) {
         << "cut-off " << single.cutoffs[0];
   }
   EXPECT_GE(agreeing, 6);
+}
+
+// The options tables: their defaults are the settings' own, an option set
+// by name lands in the config, and a bad name or word is a bad option.
+TEST(RefinedIvOptions, DefaultsAreTheSettingsAndNamesSetTheConfig) {
+  const auto& table = refined_iv_options<double>();
+  const RivSettings<double> settings;
+  const auto shown = [&](const char* name) {
+    const auto* decl = find_option(table, name);
+    EXPECT_NE(decl, nullptr) << name;
+    return decl == nullptr ? std::string() : option_default(*decl);
+  };
+  EXPECT_EQ(std::stod(shown("maxiter")), settings.max_iterations);
+  EXPECT_EQ(std::stod(shown("tol")), settings.tolerance);
+  EXPECT_EQ(std::stod(shown("max_starts")), settings.max_starts);
+  EXPECT_EQ(std::stod(shown("time_scale")), settings.time_scale);
+  EXPECT_EQ(shown("method"), "srivc");
+  EXPECT_EQ(shown("y_intersample"), "1");  // RivProblem's exact FOH
+  RivConfig<double> config;
+  OptionValue v;
+  v.real = 7;
+  ASSERT_TRUE(set_option(table, "max_starts", v, &config).ok());
+  EXPECT_EQ(config.settings.max_starts, 7);
+  v.real = 1.5;
+  EXPECT_EQ(set_option(table, "max_starts", v, &config).code(),
+            ErrorCode::kBadOption);
+  v.integer = 2;  // not an intersample code
+  EXPECT_EQ(set_option(table, "y_intersample", v, &config).code(),
+            ErrorCode::kBadOption);
+  v.word = "rivc";
+  EXPECT_EQ(set_option(table, "method", v, &config).code(),
+            ErrorCode::kBadOption);
+  EXPECT_EQ(set_option(table, "lambda_svf", v, &config).code(),
+            ErrorCode::kBadOption);
+
+  const auto& bj = rivc_options<double>();
+  const RivcSettings<double> rivc;
+  const auto bj_default = [&](const char* name) {
+    const auto* decl = find_option(bj, name);
+    EXPECT_NE(decl, nullptr) << name;
+    return decl == nullptr ? std::string() : option_default(*decl);
+  };
+  EXPECT_EQ(std::stod(bj_default("maxiter")), rivc.max_iterations);
+  EXPECT_EQ(std::stod(bj_default("tol")), rivc.tolerance);
+  EXPECT_EQ(std::stod(bj_default("arma_maxiter")), rivc.arma.max_iterations);
+  EXPECT_EQ(std::stod(bj_default("max_starts")), rivc.start.max_starts);
+  EXPECT_EQ(bj_default("arma_method"), "pem");
+
+  const auto& delay = refined_iv_delay_options<double>();
+  const RivDelaySettings<double> search;
+  const auto* numtd = find_option(delay, "numtd");
+  ASSERT_NE(numtd, nullptr);
+  EXPECT_EQ(std::stod(option_default(*numtd)), search.search.num_td);
+  RivDelaySettings<double> ds;
+  v.matrix = Matrix<double>::Constant(1, 2, 1.0);
+  ASSERT_TRUE(set_option(delay, "noise", v, &ds).ok());
+  EXPECT_TRUE(ds.noise_model && ds.nd == 1 && ds.nc == 1);
+  EXPECT_EQ(set_option(delay, "td0", v, &ds).code(), ErrorCode::kBadOption);
+}
+
+// A config set by name gives the problem written by hand and the same
+// estimate to the last bit; per-channel entries of the wrong count, and
+// the ranges, are refused with the kind each family reports.
+TEST(RefinedIvOptions, ConfigByNameGivesTheSameEstimate) {
+  const double ts = 0.05;
+  const std::vector<double> u = binary_input(1500, 8, 3u);
+  const Record r = make_record(kF, kB, u, 1, ts, 0, false);
+  const auto& table = refined_iv_options<double>();
+  RivConfig<double> config;
+  OptionValue v;
+  v.integers = {2};
+  ASSERT_TRUE(set_option(table, "nf", v, &config).ok());
+  ASSERT_TRUE(set_option(table, "nb", v, &config).ok());
+  v.integers = {1};
+  ASSERT_TRUE(set_option(table, "intersample", v, &config).ok());
+  v.real = 1e-9;
+  ASSERT_TRUE(set_option(table, "tol", v, &config).ok());
+  RivProblem<double> by_name;
+  ASSERT_TRUE(riv_problem(config, 1, &by_name).ok());
+  RivSettings<double> settings;
+  settings.tolerance = 1e-9;
+  RivResult<double> a, b;
+  ASSERT_TRUE(refined_iv(second_order(0, 0, InterSample::kFoh), settings,
+                         view(r, ts), &a)
+                  .ok());
+  ASSERT_TRUE(refined_iv(by_name, config.settings, view(r, ts), &b).ok());
+  EXPECT_EQ(a.theta, b.theta);
+
+  EXPECT_EQ(riv_problem(config, 2, &by_name).code(),
+            ErrorCode::kDimensionMismatch);
+  RivConfig<double> bad = config;
+  bad.settings.max_iterations = 0;  // the engine's start alone: not a host's
+  EXPECT_EQ(riv_problem(bad, 1, &by_name).code(), ErrorCode::kBadInput);
+  bad = config;
+  bad.settings.max_starts = 0;
+  EXPECT_EQ(refined_iv(by_name, bad.settings, view(r, ts), &b).code(),
+            ErrorCode::kBadOption);
+  bad.settings = config.settings;
+  bad.settings.time_scale = -1;
+  EXPECT_EQ(refined_iv(by_name, bad.settings, view(r, ts), &b).code(),
+            ErrorCode::kBadOption);
+
+  RivcConfig<double> bj;
+  EXPECT_TRUE(validate(bj).ok());
+  bj.settings.tolerance = 0;
+  EXPECT_EQ(validate(bj).code(), ErrorCode::kBadOption);
+  bj = RivcConfig<double>();
+  bj.settings.start.cutoffs = {-1};
+  EXPECT_EQ(validate(bj).code(), ErrorCode::kBadOption);
 }
 
 }  // namespace

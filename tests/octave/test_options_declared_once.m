@@ -9,9 +9,13 @@
 ## @code{rlssvf_mex ("rlssvf", "options")}); those of the output-error
 ## estimators likewise
 ## (@file{core/include/ctid/offline/output_error_options.hpp},
-## @code{pem_mex ("oe", "options")}) and of the frequency-domain estimators
+## @code{pem_mex ("oe", "options")}), of the frequency-domain estimators
 ## (@file{core/include/ctid/offline/freq_srivc_options.hpp},
-## @code{freq_srivc_mex ("tffsrivc", "options")}). Checked here:
+## @code{freq_srivc_mex ("tffsrivc", "options")}), and those of the
+## refined-IV estimators
+## (@file{core/include/ctid/offline/refined_iv_options.hpp},
+## @code{refined_iv_mex ("srivc", "options")},
+## @code{rivc_mex ("rivc", "options")}). Checked here:
 ## @itemize
 ## @item every option a user sets is documented in the help text of its
 ## front-ends, and where the help states a default, it is the table's;
@@ -88,6 +92,7 @@ function test_options_declared_once ()
   check_output_error_options ();
   check_convergence_options ();
   check_frequency_options ();
+  check_refined_iv_options ();
 
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
@@ -232,6 +237,99 @@ function check_frequency_options ()
   catch err
     assert (err.identifier, "tffsrivc:badOption");
   end_try_catch
+endfunction
+
+## The refined-IV families (core/include/ctid/offline/refined_iv_options.hpp):
+## refined_iv_mex (srivc and the engine's other front-ends) and rivc_mex
+## (rivc, clrivc, cl2srivc, tfrivc). The options a user sets are documented
+## with the table's defaults (a front-end's word for a default: TimeScale
+## "auto" is 0, InitialState "zero" false), giving the defaults explicitly
+## changes nothing, and an option the table does not declare is refused.
+function check_refined_iv_options ()
+  ## table name: the user's name, and the front-end's word for the default
+  engine = struct ("tol", "Tol", "maxiter", "MaxIter",
+                   "max_starts", "MaxStarts", "time_scale", "TimeScale",
+                   "initial_state", "InitialState",
+                   "output_offset", "OutputOffset", "cutoffs", "lambda");
+  bj = struct ("tol", "Tol", "maxiter", "MaxIter",
+               "arma_maxiter", "ArmaMaxIter", "arma_method", "ArmaMethod",
+               "cutoffs", "lambda");
+  user = {"refined_iv_mex", "srivc", engine; "rivc_mex", "rivc", bj};
+  words = struct ("auto", "0", "zero", "false");
+  compared = 0;
+  for f = 1:rows (user)
+    [gw, fname, names] = user{f, :};
+    T = feval (gw, fname, "options");
+    assert (isstruct (T) && numel (T) >= 15);
+    text = get_help_text (fname);
+    for k = 1:numel (T)
+      assert (! isempty (T(k).help) && ! isempty (T(k).range), T(k).name);
+      if (! isfield (names, T(k).name))
+        continue;                  # set from nn, the data or another option
+      endif
+      [item, position] = help_item (text, names.(T(k).name));
+      assert (! isempty (item), sprintf ("%s: %s is not documented", fname,
+                                         names.(T(k).name)));
+      stated = stated_default (item, position);
+      if (isfield (words, stated))
+        stated = words.(stated);
+      endif
+      if (! isempty (stated))
+        assert (same_default (stated, T(k).default),
+                sprintf ("%s: the help says default %s, the core %s",
+                         names.(T(k).name), stated, T(k).default));
+        compared++;
+      endif
+    endfor
+  endfor
+  assert (compared >= 8, sprintf ("only %d defaults compared", compared));
+  ## the positional tol and maxiter of clrivc and cl2srivc
+  T = rivc_mex ("rivc", "options");
+  for f = {"clrivc", "cl2srivc"}
+    t = regexp (get_help_text (f{1}),
+                '@var\{tol\} \(([-+0-9.eE]+)\).*@var\{maxiter\} \(([0-9]+)',
+                "tokens", "once");
+    assert (numel (t) == 2, [f{1} ": the help states no default"]);
+    assert (same_default (t{1}, T(strcmp ({T.name}, "tol")).default));
+    assert (same_default (t{2}, T(strcmp ({T.name}, "maxiter")).default));
+  endfor
+
+  ## explicit defaults change nothing; another value does
+  Ts = 0.05;
+  u = prbs (8, 4);
+  randn ("state", 4);
+  y = simc (struct ("B", 2, "F", [1 1.2 1]), u, Ts);
+  data = iddata (y + 0.02 * randn (size (y)), u, Ts);
+  T = refined_iv_mex ("srivc", "options");
+  v = @(n) str2double (T(strcmp ({T.name}, n)).default);
+  a = srivc (data, [1 2 0]);
+  b = srivc (data, [1 2 0], "Tol", v ("tol"), "MaxIter", v ("maxiter"),
+             "MaxStarts", v ("max_starts"), "TimeScale", v ("time_scale"));
+  assert (isequal (getpvec (a), getpvec (b)));
+  warning ("off", "all", "local");     # MaxIter 1: "not converged"
+  c = srivc (data, [1 2 0], "MaxIter", 1);
+  assert (! isequal (getpvec (a), getpvec (c)));
+  T = rivc_mex ("rivc", "options");
+  v = @(n) T(strcmp ({T.name}, n)).default;
+  a = rivc (data, [1 1 1 2 0]);
+  b = rivc (data, [1 1 1 2 0], "Tol", str2double (v ("tol")),
+            "MaxIter", str2double (v ("maxiter")),
+            "ArmaMaxIter", str2double (v ("arma_maxiter")),
+            "ArmaMethod", v ("arma_method"));
+  assert (isequal (getpvec (a), getpvec (b)));
+  c = rivc (data, [1 1 1 2 0], "ArmaMethod", "ivarma");
+  assert (! isequal (getpvec (a), getpvec (c)));
+
+  ## an undeclared option is refused by the gateways
+  for g = {"refined_iv_mex", "srivc"; "rivc_mex", "rivc"}.'
+    try
+      feval (g{1}, g{2}, y, u, Ts, [], struct ("nf", 2, "nb", 1,
+                                               "not_an_option", 1));
+      error ("%s accepted an unknown option", g{1});
+    catch err
+      assert (err.identifier, [g{2} ":badOption"]);
+    end_try_catch
+  endfor
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may

@@ -9,7 +9,8 @@
 // table; the estimator's own validation is the one range check. The tables
 // are also what the toolbox's help texts are checked against. Tables:
 // recursive/recursive_options.hpp (the recursive estimators),
-// offline/output_error_options.hpp (the output-error estimators).
+// offline/output_error_options.hpp (the output-error estimators),
+// offline/refined_iv_options.hpp (the offline refined-IV estimators).
 #pragma once
 
 #include <cstdio>

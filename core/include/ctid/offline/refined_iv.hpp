@@ -253,17 +253,82 @@ Status refit_integrators(const RivProblem<S>& problem,
   return Status::Ok();
 }
 
+// Where the integrator refit of a fit starts: the fit itself when it did
+// not converge to a stable model while its slowest pole crept to p = 0
+// (from 1), else the lowest-loss run from another start when that run
+// crept so (RivResult::lowest_*, from 2); from 0: no refit. theta,
+// suspected, mse (the mean squared simulation error) and reason are those
+// of the run it starts from.
+template <typename S>
+struct IntegratorRefitStart {
+  int from = 0;
+  Vector<S> theta;
+  std::vector<int> suspected;
+  S mse = 0;
+  std::string reason;
+};
+
+template <typename S>
+IntegratorRefitStart<S> integrator_refit_start(const RivResult<S>& fit,
+                                               const RivData<S>& data) {
+  IntegratorRefitStart<S> start;
+  if (!(fit.converged && fit.stable) &&
+      riv_detail::any_flag(fit.integrator_suspected)) {
+    start.from = 1;
+    start.theta = fit.theta;
+    start.suspected = fit.integrator_suspected;
+    start.mse = riv_detail::mean_square_error(data, fit.simulated);
+    start.reason = fit.reason;
+  } else if (fit.lowest_theta.size() > 0 &&
+             riv_detail::any_flag(fit.lowest_integrator_suspected)) {
+    start.from = 2;
+    start.theta = fit.lowest_theta;
+    start.suspected = fit.lowest_integrator_suspected;
+    start.mse = riv_detail::mean_square_error(data, fit.lowest_simulated);
+    start.reason = lowest_run_reason(fit.reason);
+  }
+  return start;
+}
+
+// The integrator refit of a fit of (problem, settings, data), from where
+// integrator_refit_start() says: *fit becomes the refit when it is kept
+// (integrator_refit 1); otherwise it stays, marked -1 (refitted from
+// itself, its reason saying so) or -2 (from its lowest-loss run), or 0
+// when no refit applies. fit->integrators: the poles declared per group.
+template <typename S>
+Status refit_integrators(const RivProblem<S>& problem,
+                         const RivSettings<S>& settings, const RivData<S>& data,
+                         RivResult<S>* fit) {
+  if (fit == nullptr) return bad_input("no result");
+  fit->integrators.assign(problem.num_groups(), 0);
+  const IntegratorRefitStart<S> start = integrator_refit_start(*fit, data);
+  if (start.from == 0) return Status::Ok();
+  RivResult<S> refit;
+  bool kept = false;
+  const Status s =
+      refit_integrators(problem, settings, data, start.theta, start.suspected,
+                        start.mse, start.reason, &refit, &kept);
+  if (!s.ok()) return s;
+  if (kept) {
+    *fit = std::move(refit);
+  } else if (start.from == 1) {
+    fit->integrator_refit = -1;
+    fit->reason +=
+        "; a refit with a pole at p = 0 did not converge to a better model";
+  } else {
+    fit->integrator_refit = -2;
+  }
+  return Status::Ok();
+}
+
 // The engine: see the header comment. Returns kNotConverged (result filled,
 // converged = false) when SRIVC did not converge, numerical_failure when no
 // start gave an estimate.
 //
-// With settings.refit_integrators (SRIVC in open loop), a fit that did not
-// converge to a stable model while its slowest pole crept to p = 0 is
-// refitted from its last iterate with that pole declared
-// (refit_integrators), and a converged fit from whose starts another run
-// reached a lower loss creeping so is refitted from that run; the refit
-// replaces the fit when it is better (result->integrator_refit says what
-// happened).
+// With settings.refit_integrators (SRIVC in open loop), the fit is refitted
+// with the pole its slowest creeps toward declared at p = 0, from itself or
+// from its lowest-loss run (refit_integrators above); the refit replaces
+// the fit when it is better (result->integrator_refit says what happened).
 template <typename S>
 Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
                   const RivData<S>& data, RivResult<S>* result) {
@@ -274,41 +339,9 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
       (!status.ok() && status.code() != ErrorCode::kNotConverged)) {
     return status;
   }
-  result->integrators.assign(problem.num_groups(), 0);
-  const bool from_returned = !(result->converged && result->stable) &&
-                             riv_detail::any_flag(result->integrator_suspected);
-  const bool from_lowest =
-      !from_returned && result->lowest_theta.size() > 0 &&
-      riv_detail::any_flag(result->lowest_integrator_suspected);
-  if (!from_returned && !from_lowest) return status;
-  RivResult<S> refit;
-  bool kept = false;
-  Status s;
-  if (from_returned) {
-    s = refit_integrators(
-        problem, settings, data, result->theta, result->integrator_suspected,
-        riv_detail::mean_square_error(data, result->simulated), result->reason,
-        &refit, &kept);
-  } else {
-    s = refit_integrators(
-        problem, settings, data, result->lowest_theta,
-        result->lowest_integrator_suspected,
-        riv_detail::mean_square_error(data, result->lowest_simulated),
-        lowest_run_reason(result->reason), &refit, &kept);
-  }
+  const Status s = refit_integrators(problem, settings, data, result);
   if (!s.ok()) return s;
-  if (kept) {
-    *result = std::move(refit);
-    return Status::Ok();
-  }
-  if (from_returned) {
-    result->integrator_refit = -1;
-    result->reason +=
-        "; a refit with a pole at p = 0 did not converge to a better model";
-  } else {
-    result->integrator_refit = -2;
-  }
-  return status;
+  return result->integrator_refit == 1 ? Status::Ok() : status;
 }
 
 namespace riv_detail {

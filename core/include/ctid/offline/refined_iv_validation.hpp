@@ -105,6 +105,18 @@ Status validate(const RivProblem<S>& problem, const RivSettings<S>& settings,
   if (settings.max_iterations < 0) {
     return bad_input("the maximum number of iterations must be >= 0");
   }
+  if (settings.max_starts < 1) {
+    return Status(ErrorCode::kBadOption, "max_starts must be >= 1");
+  }
+  if (!(settings.time_scale >= 0) || !std::isfinite(settings.time_scale)) {
+    return Status(ErrorCode::kBadOption,
+                  "the time scale must be finite and >= 0 (0: automatic)");
+  }
+  if (!(settings.integrator_pole >= 0) ||
+      !std::isfinite(settings.integrator_pole)) {
+    return Status(ErrorCode::kBadOption,
+                  "the integrator pole must be finite and >= 0 (0: automatic)");
+  }
   for (S c : settings.cutoffs) {
     if (!(c > 0) || !std::isfinite(c)) {
       return bad_input("the cut-off frequencies must be finite and > 0");
