@@ -907,14 +907,7 @@ class Estimator {
       if (!(run.cost <= previous.cost)) {
         damped = true;
         const Vector<S> full = run.theta;
-        bool accepted = false;
-        S alpha = 0.5;
-        for (int k = 0; k < 5 && !accepted; ++k, alpha /= 2) {
-          run.theta = previous.theta + alpha * step;
-          if (!e_.stable(run.theta)) continue;
-          evaluate(run);
-          accepted = run.cost < previous.cost;
-        }
+        bool accepted = halved_step(run, previous, step, S(0.5), 5);
         if (!accepted && !p_.closed_loop()) {
           // No decrease along the IV step (an approximate model: the IV
           // fixed point is not the loss minimum): a Gauss-Newton step on
@@ -926,23 +919,16 @@ class Estimator {
           if (gauss_newton(from, eps, fitted, delta, &columns)) {
             previous_score = score_of(eps, fitted);
             score_columns = columns;
-            S beta = 1;
-            for (int k = 0; k < 6 && !accepted; ++k, beta /= 2) {
-              run.theta = previous.theta + beta * delta;
-              if (!e_.stable(run.theta)) {
-                if (k == 0) newton_unstable = true;
-                continue;
-              }
-              evaluate(run);
-              accepted = run.cost < previous.cost;
-            }
+            S smallest = 1;
+            accepted = halved_step(run, previous, delta, S(1), 6,
+                                   &newton_unstable, &smallest);
             if (accepted) {
               clipped = false;  // not the pulled-back IV step
               newton = true;
             } else if (newton_unstable) {
               // Does the Gauss-Newton direction take a real slowest pole
               // toward p = 0 (the smallest step tried)?
-              const Vector<S> toward = previous.theta + beta * 2 * delta;
+              const Vector<S> toward = previous.theta + smallest * delta;
               for (int g = 0; g < groups; ++g) {
                 const S now = slowest_real_pole(previous.theta, g);
                 const S next = slowest_real_pole(toward, g);
@@ -966,17 +952,12 @@ class Estimator {
           // iterate is returned, not converged, with the pole flagged, instead
           // of the full IV step (on a raw EMPS position record that step
           // raised the loss 500-fold and the iterates cycled).
-          const int clips = run.clipped_iterations;
-          run = previous;
-          covariance_at(run);
-          run.iterations = it;
-          run.clipped = false;
-          run.clipped_iterations = clips;
+          return_previous(run, previous, it);
           boundary = true;
           run.integrator_suspected = toward_origin;
           break;
         }
-        if (!accepted && previous_score < std::max(S(1), S(score_columns)) &&
+        if (!accepted && score_below(previous_score, score_columns) &&
             std::isfinite(previous.cost)) {
           // Neither the damped IV step nor a Gauss-Newton step lowers the
           // loss, and the score statistic at the previous iterate is below
@@ -985,18 +966,12 @@ class Estimator {
           // is returned instead of the full IV step, which on measured
           // records can raise the loss a hundredfold (raw EMPS [2 2 0]
           // with input offsets: 0.0059 -> 1.62 var(y)) and start a cycle.
-          const int clips = run.clipped_iterations;
-          run = previous;
-          covariance_at(run);
-          run.iterations = it;
-          run.clipped = false;
-          run.clipped_iterations = clips;
+          return_previous(run, previous, it);
           run.converged = true;
           how =
               "stationary simulation loss: neither the refined-IV step "
-              "nor a Gauss-Newton step lowers it (score statistic " +
-              std::to_string(previous_score) + " below " +
-              std::to_string(std::max(1, score_columns)) + ")";
+              "nor a Gauss-Newton step lowers it " +
+              score_words(previous_score, score_columns);
           break;
         }
         if (!accepted) {
@@ -1096,29 +1071,15 @@ class Estimator {
         Run<S> at = run;
         int columns = 0;
         if (gauss_newton(at, eps, fitted, delta, &columns)) {
-          const S mean_square =
-              eps.squaredNorm() / static_cast<S>(e_.samples());
-          const S score =
-              mean_square > 0 ? fitted.squaredNorm() / mean_square : S(0);
-          if (score < std::max(S(1), static_cast<S>(columns))) {
+          const S score = score_of(eps, fitted);
+          if (score_below(score, columns)) {
             run.converged = true;
-            how =
-                "stationary simulation loss after a damped step (score "
-                "statistic " +
-                std::to_string(score) + " below " +
-                std::to_string(std::max(1, columns)) + ")";
+            how = "stationary simulation loss after a damped step " +
+                  score_words(score, columns);
             break;
           }
           const Run<S> here = run;
-          bool lowered = false;
-          S beta = 1;
-          for (int k = 0; k < 6 && !lowered; ++k, beta /= 2) {
-            run.theta = here.theta + beta * delta;
-            if (!e_.stable(run.theta)) continue;
-            evaluate(run);
-            lowered = run.cost < here.cost;
-          }
-          if (!lowered) {
+          if (!halved_step(run, here, delta, S(1), 6)) {
             run = here;
           } else {
             run.losses.back() = run.cost;
@@ -1140,7 +1101,7 @@ class Estimator {
         !p_.closed_loop()) {
       int columns = 0;
       const S score = score_statistic(lowest, &columns);
-      if (score < std::max(S(1), static_cast<S>(columns))) {
+      if (score_below(score, columns)) {
         const int its = run.iterations;
         const std::vector<S> history = run.losses;
         const int clips = run.clipped_iterations;
@@ -1151,11 +1112,8 @@ class Estimator {
         run.clipped = false;
         run.converged = true;
         run.determined = !(lowest_worst > S(1));
-        how =
-            "stationary simulation loss at the lowest-loss iterate "
-            "(score statistic " +
-            std::to_string(score) + " below " +
-            std::to_string(std::max(1, columns)) + ")";
+        how = "stationary simulation loss at the lowest-loss iterate " +
+              score_words(score, columns);
       }
     }
     if (!run.converged && !boundary) {
@@ -1238,12 +1196,62 @@ class Estimator {
     return fitted.allFinite() && delta.allFinite();
   }
 
+  // Steps from `from` along `direction` by the lengths first, first / 2,
+  // .. (at most `tries` of them), skipping those that leave the stable
+  // region, until one lowers the simulation loss below from.cost. True
+  // when one does (run holds it, evaluated); false when none does (run's
+  // theta is the last step tried). *first_unstable is set when the full
+  // length `first` leaves the stable region; *smallest is the last length
+  // tried.
+  bool halved_step(Run<S>& run, const Run<S>& from, const Vector<S>& direction,
+                   S first, int tries, bool* first_unstable = nullptr,
+                   S* smallest = nullptr) const {
+    bool lowered = false;
+    S length = first;
+    for (int k = 0; k < tries && !lowered; ++k, length /= 2) {
+      if (smallest != nullptr) *smallest = length;
+      run.theta = from.theta + length * direction;
+      if (!e_.stable(run.theta)) {
+        if (k == 0 && first_unstable != nullptr) *first_unstable = true;
+        continue;
+      }
+      evaluate(run);
+      lowered = run.cost < from.cost;
+    }
+    return lowered;
+  }
+
+  // `previous` returned in place of this iteration's iterate (the
+  // covariance at itself, see covariance_at), the iteration count and the
+  // number of clipped iterations kept.
+  void return_previous(Run<S>& run, const Run<S>& previous, int it) const {
+    const int clips = run.clipped_iterations;
+    run = previous;
+    covariance_at(run);
+    run.iterations = it;
+    run.clipped = false;
+    run.clipped_iterations = clips;
+  }
+
   // N times the relative loss decrease of the Gauss-Newton fit `fitted`
   // of the simulation error eps (the score statistic).
   S score_of(const Vector<S>& eps, const Vector<S>& fitted) const {
     const S mean_square = eps.squaredNorm() / static_cast<S>(e_.samples());
     if (!(mean_square > 0)) return 0;
     return fitted.squaredNorm() / mean_square;
+  }
+
+  // The score test of a stationary simulation loss: the score statistic
+  // below the number of fitted sensitivities (at least 1), the mean of its
+  // chi^2 law at the loss minimiser.
+  static bool score_below(S score, int columns) {
+    return score < std::max(S(1), static_cast<S>(columns));
+  }
+
+  // "(score statistic .. below ..)" of that test, for the stop reason.
+  static std::string score_words(S score, int columns) {
+    return "(score statistic " + std::to_string(score) + " below " +
+           std::to_string(std::max(1, columns)) + ")";
   }
 
   // The score statistic at run.theta: eps^T Psi (Psi^T Psi)^+ Psi^T eps /
