@@ -52,6 +52,16 @@ Status refined_iv_run(const RivProblem<S>& problem,
     S cutoff;
     bool pending = false;  // ranked on the segment; not yet on the record
   };
+  // The SVF start at cut-off lambda (zero theta, time scale lambda), its
+  // estimate not yet computed.
+  auto at_cutoff = [np](Engine<S>& on, S lambda) {
+    Candidate c;
+    on.set_scale(lambda);
+    c.run.theta = on.to_scaled(Vector<S>::Zero(np), lambda);
+    c.sigma = lambda;
+    c.cutoff = lambda;
+    return c;
+  };
   std::vector<Candidate> starts;
   std::string last_failure;
   if (settings.theta_init.size() == np) {
@@ -93,11 +103,7 @@ Status refined_iv_run(const RivProblem<S>& problem,
       Engine<S> ranking_engine(problem, segment);
       Estimator<S> ranking(ranking_engine, problem, settings);
       for (S lambda : cutoffs) {
-        Candidate c;
-        ranking_engine.set_scale(lambda);
-        c.run.theta = ranking_engine.to_scaled(Vector<S>::Zero(np), lambda);
-        c.sigma = lambda;
-        c.cutoff = lambda;
+        Candidate c = at_cutoff(ranking_engine, lambda);
         c.pending = true;
         if (!ranking.svf_start(c.run, true).ok()) continue;
         starts.push_back(c);
@@ -107,11 +113,7 @@ Status refined_iv_run(const RivProblem<S>& problem,
       // The whole record at every cut-off (one-step methods return the
       // best of these; also the fall-back when no segment start worked).
       for (S lambda : cutoffs) {
-        Candidate c;
-        engine.set_scale(lambda);
-        c.run.theta = engine.to_scaled(Vector<S>::Zero(np), lambda);
-        c.sigma = lambda;
-        c.cutoff = lambda;
+        Candidate c = at_cutoff(engine, lambda);
         status =
             estimator.svf_start(c.run, settings.method != RivMethod::kLssvf);
         if (!status.ok()) {
