@@ -380,12 +380,8 @@ Status run_orders(const ModelOrders& orders, const SvfSettings<S>& init_svf,
   riv.theta_init = settings.theta_init;
   riv.cutoffs = {init_svf.lambda_svf};
   riv.max_starts = 1;
-  RivData<S> data;
-  data.y = record.y;
-  data.w = record.u;
-  data.num_samples = record.num_samples;
-  data.ts = record.ts;
-  data.instants = record.instants;
+  const RivData<S> data{record.y, record.u, record.num_samples, record.ts,
+                        record.instants};
   RivResult<S> result;
   status = refined_iv(problem, riv, data, &result);
   if (!status.ok() && status.code() != ErrorCode::kNotConverged) {

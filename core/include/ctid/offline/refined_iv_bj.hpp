@@ -917,6 +917,57 @@ Status stable_bj_step(BjIteration<S>& iteration, const Vector<S>& theta, int nf,
   return Status::Ok();
 }
 
+// The iterations' start [f b] in original time, shared by rivc and
+// rivc_miso: settings.theta_init when given (np finite entries, in the
+// order `layout`), else the SRIVC (CLSRIVC with a controller) fit of
+// make_start()'s problem to the record, kept when it did not converge.
+template <typename S, typename Record, typename MakeStart>
+Status srivc_start(const RivcSettings<S>& settings, const Record& data, int np,
+                   const std::string& layout, MakeStart make_start,
+                   Vector<S>* theta0) {
+  *theta0 = settings.theta_init;
+  if (theta0->size() == 0) {
+    const RivData<S> d{data.y, data.u, data.num_samples, data.ts};
+    RivResult<S> r;
+    const Status status = refined_iv<S>(make_start(), settings.start, d, &r);
+    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
+      return Status(status.code(), "the SRIVC start: " + status.message());
+    }
+    *theta0 = r.theta;
+  } else if (theta0->size() != np || !theta0->allFinite()) {
+    return bad_input("theta_init needs " + std::to_string(np) +
+                     " finite entries " + layout);
+  }
+  return Status::Ok();
+}
+
+// The time scale sigma = |F(0)|^(1/nf) of a start with F(0) = f_nf, or
+// 1 / Ts when that is not a positive number.
+template <typename S>
+S start_time_scale(S f_nf, int nf, S ts) {
+  S sigma = std::pow(std::abs(f_nf), S(1) / nf);
+  if (!(sigma > 0) || !std::isfinite(sigma)) sigma = S(1) / ts;
+  return sigma;
+}
+
+// The end of rivc and rivc_miso, once result->simulated holds x_hat: the
+// simulation-error variance ||y - x_hat||^2 / (N - np), and kNotConverged
+// when the iterations stopped at max_iterations.
+template <typename S>
+Status rivc_outcome(const S* y_data, Eigen::Index n, int np, int max_iterations,
+                    RivcResult<S>* result) {
+  const Eigen::Map<const Vector<S>> y(y_data, n);
+  result->simulation_variance =
+      (y - result->simulated).squaredNorm() / static_cast<S>(n - np);
+  result->stable = true;
+  if (!result->converged) {
+    return Status(ErrorCode::kNotConverged, "RIVC did not converge in " +
+                                                std::to_string(max_iterations) +
+                                                " iterations");
+  }
+  return Status::Ok();
+}
+
 }  // namespace bj_detail
 
 // RIVC / CLRIVC: see the header comment. Returns kNotConverged (result
@@ -935,46 +986,35 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   const Eigen::Index n = data.num_samples;
 
   // The start: SRIVC (CLSRIVC with the controller) of the plant.
-  Vector<S> theta0 = settings.theta_init;
-  if (theta0.size() == 0) {
-    RivProblem<S> start;
-    start.nf = {nf};
-    RivChannel c;
-    c.nb = nb;
-    c.nk = problem.nk;
-    c.rule = problem.u_rule;
-    c.delay = static_cast<double>(problem.delay);
-    start.channels.push_back(c);
-    if (problem.closed_loop()) {
-      start.controller_num = problem.controller_num;
-      start.controller_den = problem.controller_den;
-      start.reference = problem.reference;
-      start.r1 = problem.r1;
-    }
-    RivData<S> d;
-    d.y = data.y;
-    d.w = data.u;
-    d.num_samples = n;
-    d.ts = data.ts;
-    RivResult<S> r;
-    status = refined_iv<S>(start, settings.start, d, &r);
-    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
-      return Status(status.code(), "the SRIVC start: " + status.message());
-    }
-    theta0 = r.theta;
-  } else if (theta0.size() != np || !theta0.allFinite()) {
-    return bad_input("theta_init needs " + std::to_string(np) +
-                     " finite entries [f b]");
-  }
+  Vector<S> theta0;
+  status = srivc_start(
+      settings, data, np, "[f b]",
+      [&] {
+        RivProblem<S> start;
+        start.nf = {nf};
+        RivChannel c;
+        c.nb = nb;
+        c.nk = problem.nk;
+        c.rule = problem.u_rule;
+        c.delay = static_cast<double>(problem.delay);
+        start.channels.push_back(c);
+        if (problem.closed_loop()) {
+          start.controller_num = problem.controller_num;
+          start.controller_den = problem.controller_den;
+          start.reference = problem.reference;
+          start.r1 = problem.r1;
+        }
+        return start;
+      },
+      &theta0);
+  if (!status.ok()) return status;
   result->start_theta = theta0;
   HurwitzTest<S> hurwitz(nf);
   if (!hurwitz.is_stable(theta0.head(nf))) {
     return numerical_failure(
         "the start model is unstable: no stable prefilter 1/F");
   }
-  // sigma: |F(0)|^(1/n).
-  S sigma = std::pow(std::abs(theta0(nf - 1)), S(1) / nf);
-  if (!(sigma > 0) || !std::isfinite(sigma)) sigma = S(1) / data.ts;
+  const S sigma = start_time_scale(theta0(nf - 1), nf, data.ts);
   const Vector<S> scale = scale_factors<S>(nf, nb, sigma);
   BjIteration<S> iteration(problem, data, sigma);
 
@@ -1016,16 +1056,7 @@ Status rivc(const RivcProblem<S>& problem, const RivcSettings<S>& settings,
   result->covariance = arma.innovation_variance *
                        (inv.asDiagonal() * inverse_gram * inv.asDiagonal());
   result->simulated = iteration.simulate(theta);
-  const Eigen::Map<const Vector<S>> y(data.y, n);
-  result->simulation_variance =
-      (y - result->simulated).squaredNorm() / static_cast<S>(n - np);
-  result->stable = true;
-  if (!result->converged) {
-    return Status(ErrorCode::kNotConverged,
-                  "RIVC did not converge in " +
-                      std::to_string(settings.max_iterations) + " iterations");
-  }
-  return Status::Ok();
+  return rivc_outcome(data.y, n, np, settings.max_iterations, result);
 }
 
 // Multi-input RIVC (CONTSID's rivc on MISO data, nn = [nb_1..nb_m nc nd
@@ -1123,33 +1154,24 @@ Status rivc_miso(const RivcMisoProblem<S>& problem,
   }
 
   // The start: MISO SRIVC with one denominator per input.
-  Vector<S> theta0 = settings.theta_init;
-  if (theta0.size() == 0) {
-    RivProblem<S> start;
-    for (int i = 0; i < m; ++i) {
-      start.nf.push_back(problem.inputs[i].nf);
-      RivChannel c;
-      c.group = i;
-      c.nb = problem.inputs[i].nb;
-      c.nk = problem.inputs[i].nk;
-      c.rule = problem.u_rule;
-      start.channels.push_back(c);
-    }
-    RivData<S> d;
-    d.y = data.y;
-    d.w = data.u;
-    d.num_samples = n;
-    d.ts = data.ts;
-    RivResult<S> r;
-    Status status = refined_iv<S>(start, settings.start, d, &r);
-    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
-      return Status(status.code(), "the SRIVC start: " + status.message());
-    }
-    theta0 = r.theta;
-  } else if (theta0.size() != np || !theta0.allFinite()) {
-    return bad_input("theta_init needs " + std::to_string(np) +
-                     " finite entries [f_1 .. f_m b_1 .. b_m]");
-  }
+  Vector<S> theta0;
+  const Status start_status = srivc_start(
+      settings, data, np, "[f_1 .. f_m b_1 .. b_m]",
+      [&] {
+        RivProblem<S> start;
+        for (int i = 0; i < m; ++i) {
+          start.nf.push_back(problem.inputs[i].nf);
+          RivChannel c;
+          c.group = i;
+          c.nb = problem.inputs[i].nb;
+          c.nk = problem.inputs[i].nk;
+          c.rule = problem.u_rule;
+          start.channels.push_back(c);
+        }
+        return start;
+      },
+      &theta0);
+  if (!start_status.ok()) return start_status;
   result->start_theta = theta0;
 
   // Per input: [f_i b_i] in its own scaled time (sigma_i = |F_i(0)|^(1/nf_i)).
@@ -1166,8 +1188,7 @@ Status rivc_miso(const RivcMisoProblem<S>& problem,
                                std::to_string(i + 1) +
                                " is unstable: no stable prefilter 1/F");
     }
-    sigma[i] = std::pow(std::abs(t(nf - 1)), S(1) / nf);
-    if (!(sigma[i] > 0) || !std::isfinite(sigma[i])) sigma[i] = S(1) / data.ts;
+    sigma[i] = start_time_scale(t(nf - 1), nf, data.ts);
     scale[i] = scale_factors<S>(nf, nb, sigma[i]);
     th[i] = t.cwiseProduct(scale[i]);
   }
@@ -1274,15 +1295,7 @@ Status rivc_miso(const RivcMisoProblem<S>& problem,
   }
   result->simulated = Vector<S>::Zero(n);
   for (int i = 0; i < m; ++i) result->simulated += x[i];
-  result->simulation_variance =
-      (y - result->simulated).squaredNorm() / static_cast<S>(n - np);
-  result->stable = true;
-  if (!result->converged) {
-    return Status(ErrorCode::kNotConverged,
-                  "RIVC did not converge in " +
-                      std::to_string(settings.max_iterations) + " iterations");
-  }
-  return Status::Ok();
+  return rivc_outcome(data.y, n, np, settings.max_iterations, result);
 }
 
 template <typename S>
