@@ -96,15 +96,15 @@ void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
 void tf_options_gateway(const Gateway& g, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
   const auto& table = ctid::tfsrivc_options<double>();
-  if (nrhs == 2) {
-    plhs[0] = ctid::mex::option_table_struct(table);
-    return;
-  }
   if (nrhs != 3) {
     g.fail("badInput",
            "the tf_options method takes 3 arguments (fname, 'tf_options', "
            "given), got " +
                std::to_string(nrhs));
+  }
+  if (mxIsChar(prhs[2]) && g.text(prhs[2], "given") == "options") {
+    plhs[0] = ctid::mex::option_table_struct(table);
+    return;
   }
   OptionsReader opt(g, prhs[2]);
   ctid::TfsrivcConfig<double> c;

@@ -18,7 +18,8 @@
 ## @code{rivc_mex ("rivc", "options")}), and CONTSID's tfsrivc defaults
 ## of tfsrivc, tfsrivc_init and tfrivc
 ## (@file{core/include/ctid/offline/tfsrivc_options.hpp},
-## @code{refined_iv_mex ("tfsrivc", "tf_options")}). Checked here:
+## @code{refined_iv_mex ("tfsrivc", "tf_options", "options")}). Checked
+## here:
 ## @itemize
 ## @item every option a user sets is documented in the help text of its
 ## front-ends, and where the help states a default, it is the table's;
@@ -339,7 +340,7 @@ endfunction
 ## CONTSID's tfsrivc defaults, declared in tfsrivc_options.hpp: the ones
 ## tfsrivc's help states, each read in the help's own wording.
 function check_tfsrivc_options ()
-  T = refined_iv_mex ("tfsrivc", "tf_options");
+  T = refined_iv_mex ("tfsrivc", "tf_options", "options");
   assert (isstruct (T) && numel (T) >= 12);
   for k = 1:numel (T)
     assert (! isempty (T(k).help) && ! isempty (T(k).range), T(k).name);
