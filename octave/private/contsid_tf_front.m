@@ -8,7 +8,10 @@
 ## Mi[, Name, Value]), the options of @code{help tfsrivc}, the estimate by
 ## @code{contsid_tfsrivc}, the @code{idtf} with covariance and Report.
 ## @var{o}: the options as @code{contsid_tfsrivc} reads them (the delay
-## range actually searched in @code{tdmax}); @var{info}: its info.
+## range actually searched in @code{tdmax}), those given checked and the
+## rest filled in with CONTSID's tfsrivc defaults by the core's table
+## (core/include/ctid/offline/tfsrivc_options.hpp, refined_iv_mex's method
+## 'tf_options'); @var{info}: its info.
 ##
 ## A Focus filter (CONTSID's cut-off fc: a Butterworth low-pass of order
 ## FocusOrder) serves the convergence of the delay: the whole estimate
