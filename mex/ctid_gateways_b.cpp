@@ -30,6 +30,7 @@
 #include "ctid/offline/refined_iv_delay.hpp"
 #include "ctid/offline/refined_iv_options.hpp"
 #include "ctid/offline/relay_frequency_data.hpp"
+#include "ctid/offline/tfsrivc_options.hpp"
 #include "ctid/recursive/scaling.hpp"
 #include "estimator_args.hpp"
 #include "gateway_common.hpp"

@@ -50,6 +50,7 @@
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_delay.hpp"
 #include "ctid/offline/refined_iv_options.hpp"
+#include "ctid/offline/tfsrivc_options.hpp"
 #include "estimator_args.hpp"
 #include "gateway_common.hpp"
 #include "options_reader.hpp"
@@ -89,6 +90,48 @@ void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::apply_filter(filter, u);
   plhs[0] = to_output(y);
   if (nlhs > 1) plhs[1] = to_output(u);
+}
+
+// The method 'tf_options' (see the header comment).
+void tf_options_gateway(const Gateway& g, mxArray* plhs[], int nrhs,
+                        const mxArray* prhs[]) {
+  const auto& table = ctid::tfsrivc_options<double>();
+  if (nrhs != 3) {
+    g.fail("badInput",
+           "the tf_options method takes 3 arguments (fname, 'tf_options', "
+           "given), got " +
+               std::to_string(nrhs));
+  }
+  if (mxIsChar(prhs[2]) && g.text(prhs[2], "given") == "options") {
+    plhs[0] = ctid::mex::option_table_struct(table);
+    return;
+  }
+  OptionsReader opt(g, prhs[2]);
+  ctid::TfsrivcConfig<double> c;
+  ctid::mex::read_option_table(g, opt, table, &c, "badOption");
+  opt.finish();
+  g.check(ctid::validate(c));
+  const auto automatic = [](double v) {
+    return v == 0 ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar(v);
+  };
+  const char* fields[] = {"fixtd",   "tdmin",   "tdmax",         "numtd",
+                          "lambda",  "maxiter", "tolpar",        "tolfun",
+                          "stepmax", "stepreduction", "focusorder",
+                          "integration"};
+  mxArray* o = mxCreateStructMatrix(1, 1, 12, fields);
+  mxSetField(o, 0, "fixtd", mxCreateLogicalScalar(c.fix_td));
+  mxSetField(o, 0, "tdmin", mxCreateDoubleScalar(c.td_min));
+  mxSetField(o, 0, "tdmax", mxCreateDoubleScalar(c.td_max));
+  mxSetField(o, 0, "numtd", mxCreateDoubleScalar(c.num_td));
+  mxSetField(o, 0, "lambda", automatic(c.lambda));
+  mxSetField(o, 0, "maxiter", mxCreateDoubleScalar(c.max_iterations));
+  mxSetField(o, 0, "tolpar", mxCreateDoubleScalar(c.tol_par));
+  mxSetField(o, 0, "tolfun", mxCreateDoubleScalar(c.tol_fun));
+  mxSetField(o, 0, "stepmax", automatic(c.step_max));
+  mxSetField(o, 0, "stepreduction", mxCreateDoubleScalar(c.step_factor()));
+  mxSetField(o, 0, "focusorder", mxCreateDoubleScalar(c.focus_order));
+  mxSetField(o, 0, "integration", mxCreateLogicalScalar(c.integration));
+  plhs[0] = o;
 }
 
 mxArray* engine_info(const ctid::RivResult<double>& result);
@@ -169,6 +212,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     const std::string method = g.text(prhs[1], "the method");
     if (method == "focus_filter") {
       focus_filter_gateway(g, nlhs, plhs, nrhs, prhs);
+      return;
+    }
+    if (method == "tf_options") {
+      tf_options_gateway(g, plhs, nrhs, prhs);
       return;
     }
     if (method != "delay_search") {

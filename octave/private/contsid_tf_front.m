@@ -8,7 +8,10 @@
 ## Mi[, Name, Value]), the options of @code{help tfsrivc}, the estimate by
 ## @code{contsid_tfsrivc}, the @code{idtf} with covariance and Report.
 ## @var{o}: the options as @code{contsid_tfsrivc} reads them (the delay
-## range actually searched in @code{tdmax}); @var{info}: its info.
+## range actually searched in @code{tdmax}), those given checked and the
+## rest filled in with CONTSID's tfsrivc defaults by the core's table
+## (core/include/ctid/offline/tfsrivc_options.hpp, refined_iv_mex's method
+## 'tf_options'); @var{info}: its info.
 ##
 ## A Focus filter (CONTSID's cut-off fc: a Butterworth low-pass of order
 ## FocusOrder) serves the convergence of the delay: the whole estimate
@@ -94,88 +97,52 @@ function [M, o, info] = contsid_tf_front (fname, args)
   if (! d.uniform)
     h = median (diff (d.t));
   endif
-  ## CONTSID 7.3's documented defaults (NumTd 50, MaxIter 100, StepMax
-  ## inf, StepReduction 2, FocusOrder 5, Focus inf, Integration 'off'),
-  ## except the tolerances, tighter here (CONTSID: 1e-4 both) and StepMax,
-  ## one grid spacing here (a Gauss-Newton step on td never jumps over the
-  ## grid's minimum).
-  o = struct ("fixtd", "off", "tdmin", 0,
-              "tdmax", contsid_default_tdmax (d.t, d.y, d.u),
-              "numtd", 50,
-              "lambda", [], "maxiter", 100, "tolpar", 1e-5, "tolfun", 1e-8,
-              "stepmax", [], "stepreduction", 2, "focus", Inf,
-              "focusorder", 5, "integration", "off");
+  ## The options given, forwarded to the core's table of CONTSID's tfsrivc
+  ## defaults (core/include/ctid/offline/tfsrivc_options.hpp), which checks
+  ## them and fills in the rest; Focus is read here (a cut-off, a band or a
+  ## word), TdMax defaults to the data's.
   if (mod (numel (rest), 2) != 0)
     error ([fname ":badOption"], "%s: options come in name-value pairs",
            fname);
   endif
+  given = struct ("focus", Inf);
+  init_keys = {"tdmin", "tdmax", "lambda", "numtd", "integration"};
   for i = 1:2:numel (rest)
     name = rest{i};
     if (! ischar (name))
       error ([fname ":badOption"], "%s: option names must be strings", fname);
-    endif
-    key = lower (name);
-    init_keys = {"tdmin", "tdmax", "lambda", "numtd", "integration"};
-    if (! isfield (o, key) || init && ! any (strcmp (key, init_keys)))
+    elseif (! isvarname (name) || init && ! any (strcmpi (name, init_keys)))
       error ([fname ":badOption"], "%s: unknown option '%s'", fname, name);
     endif
-    o.(key) = rest{i+1};
+    given.(lower (name)) = rest{i+1};
   endfor
-  if (ischar (o.fixtd) && any (strcmpi (o.fixtd, {"on", "off"})))
-    o.fixtd = strcmpi (o.fixtd, "on");
-  elseif (! (isscalar (o.fixtd)
-             && (islogical (o.fixtd) || isnumeric (o.fixtd))))
-    error ([fname ":badOption"], "%s: FixTd must be 'on' or 'off'", fname);
+  for key = {"fixtd", "FixTd"; "integration", "Integration"}.'
+    if (isfield (given, key{1}))
+      given.(key{1}) = contsid_on_off (fname, key{2}, given.(key{1}));
+    endif
+  endfor
+  ## a default TdMax is extended while the loss is smallest at its end
+  tdmax_auto = ! isfield (given, "tdmax");
+  if (tdmax_auto)
+    given.tdmax = contsid_default_tdmax (d.t, d.y, d.u);
   endif
-  o.fixtd = logical (o.fixtd);
-  band = contsid_focus_option (fname, o.focus);
-  o.integration = contsid_on_off (fname, "Integration", o.integration);
+  band = contsid_focus_option (fname, given.focus);
+  o = refined_iv_mex (fname, "tf_options", rmfield (given, "focus"));
+  o.tdmax_auto = tdmax_auto;
   if (o.integration && ! isempty (band))
     error ([fname ":badOption"], ["%s: Integration is not applicable with ", ...
            "a Focus filter (as CONTSID documents)"], fname);
   endif
-  if (! isnumeric (o.focusorder) || ! isscalar (o.focusorder)
-      || ! isreal (o.focusorder) || o.focusorder != fix (o.focusorder)
-      || o.focusorder < 1 || o.focusorder > 10)
-    error ([fname ":badOption"], "%s: FocusOrder must be an integer in 1..10",
-           fname);
-  endif
   df = contsid_focus_filter (fname, d, band, o.focusorder);
-  scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && isfinite (v);
-  if (! scal (o.tdmin) || ! scal (o.tdmax) || o.tdmin < 0
-      || o.tdmax < o.tdmin)
-    error ([fname ":badOption"], "%s: need 0 <= TdMin <= TdMax (finite)",
-           fname);
-  endif
-  if (! scal (o.numtd) || o.numtd != fix (o.numtd) || o.numtd < 1)
-    error ([fname ":badOption"], "%s: NumTd must be an integer >= 1", fname);
-  endif
-  if (! isempty (o.lambda) && (! scal (o.lambda) || o.lambda <= 0))
-    error ([fname ":badOption"], "%s: Lambda must be a scalar > 0 (rad/s)",
-           fname);
-  endif
-  if (! scal (o.maxiter) || o.maxiter != fix (o.maxiter) || o.maxiter < 1)
-    error ([fname ":badOption"], "%s: MaxIter must be an integer >= 1", fname);
-  endif
-  if (! scal (o.tolpar) || o.tolpar <= 0 || ! scal (o.tolfun)
-      || o.tolfun < 0)
-    error ([fname ":badOption"], "%s: TolPar > 0 and TolFun >= 0 needed",
-           fname);
-  endif
-  o.stepreduction = contsid_step_reduction (fname, o.stepreduction);
   if (isempty (o.stepmax))
     o.stepmax = max ((o.tdmax - o.tdmin) / max (o.numtd - 1, 1), h);
-  elseif (! scal (o.stepmax) || o.stepmax <= 0)
-    error ([fname ":badOption"], "%s: StepMax must be a scalar > 0", fname);
   endif
   if (o.fixtd && isempty (td0))
     error ([fname ":badInput"], "%s: FixTd 'on' needs the delay (IODelay)",
            fname);
   endif
-  ## a default TdMax is extended while the loss is smallest at its end
-  o.tdmax_auto = ! any (strcmpi (rest(1:2:end), "tdmax"));
   if (! isempty (td0) && ! o.fixtd && (td0 < o.tdmin || td0 > o.tdmax))
-    if (any (strcmpi (rest(1:2:end), "tdmax")))
+    if (! o.tdmax_auto)
       error ([fname ":badOption"], ["%s: the start delay %g is outside ", ...
              "[TdMin, TdMax] = [%g, %g]"], fname, td0, o.tdmin, o.tdmax);
     endif

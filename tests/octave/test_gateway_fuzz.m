@@ -265,12 +265,12 @@ function test_gateway_fuzz ()
 
   ## The gateways' methods (a name as second argument): the exact
   ## state-space simulator (a fractional delay), the inverse of a Wiener
-  ## block's polynomial, the Focus prefilter and the convergence detector
-  ## of an RLSSVF start-up.
+  ## block's polynomial, the Focus prefilter, the convergence detector
+  ## of an RLSSVF start-up and the options of tfsrivc checked and filled in.
   ssopt = struct ("a", [-1 2; -2 -1], "b", [0; 1], "c", [1 0], "d", 0.5,
                   "nk", 0.5, "intersample", "foh");
   cdet = struct ("blocklength", 0.4, "nblocks", 10, "use_P", false);
-  calls(end+1:end+4) = {
+  calls(end+1:end+5) = {
     {"simc_mex", {"simc", "state_space", u, 0.1, ssopt}, ...
      {"a", "b", "c", "d"}}
     {"hammerstein_mex", {"Wie", "poly_inverse", u, ...
@@ -280,6 +280,9 @@ function test_gateway_fuzz ()
      {"ts", "band", "order"}}
     {"rlssvf_mex", {"rlssvf", "converge", y, u, 0.1, rls, cdet}, ...
      {"blocklength"}}
+    {"refined_iv_mex", {"tfsrivc", "tf_options", ...
+                        struct("tdmax", 1, "numtd", 10, "stepmax", 0.1)}, ...
+     {"tdmax"}}
   };
 
   ## The output error from several starts (the delay bounded below), the

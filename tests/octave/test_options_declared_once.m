@@ -15,7 +15,11 @@
 ## refined-IV estimators
 ## (@file{core/include/ctid/offline/refined_iv_options.hpp},
 ## @code{refined_iv_mex ("srivc", "options")},
-## @code{rivc_mex ("rivc", "options")}). Checked here:
+## @code{rivc_mex ("rivc", "options")}), and CONTSID's tfsrivc defaults
+## of tfsrivc, tfsrivc_init and tfrivc
+## (@file{core/include/ctid/offline/tfsrivc_options.hpp},
+## @code{refined_iv_mex ("tfsrivc", "tf_options", "options")}). Checked
+## here:
 ## @itemize
 ## @item every option a user sets is documented in the help text of its
 ## front-ends, and where the help states a default, it is the table's;
@@ -93,6 +97,7 @@ function test_options_declared_once ()
   check_convergence_options ();
   check_frequency_options ();
   check_refined_iv_options ();
+  check_tfsrivc_options ();
 
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
@@ -330,6 +335,66 @@ function check_refined_iv_options ()
       assert (err.identifier, [g{2} ":badOption"]);
     end_try_catch
   endfor
+endfunction
+
+## CONTSID's tfsrivc defaults, declared in tfsrivc_options.hpp: the ones
+## tfsrivc's help states, each read in the help's own wording.
+function check_tfsrivc_options ()
+  T = refined_iv_mex ("tfsrivc", "tf_options", "options");
+  assert (isstruct (T) && numel (T) >= 12);
+  for k = 1:numel (T)
+    assert (! isempty (T(k).help) && ! isempty (T(k).range), T(k).name);
+  endfor
+  default_of = @(n) T(strcmp ({T.name}, n)).default;
+  text = regexprep (get_help_text ("tfsrivc"), '\s+', " ");
+  words = struct ("on", "true", "off", "false");
+  stated = {"tdmin", 'NumTd range and grid [^(]*\(default ([-+0-9.eE]+);';
+            "numtd", '; ([0-9]+) points\)';
+            "maxiter", '@item MaxIter [^(]*\(([0-9]+)\)';
+            "tolpar", 'below TolPar \(([-+0-9.eE]+)\)';
+            "tolfun", 'below TolFun \(([-+0-9.eE]+)\)';
+            "stepreduction", 'convention, default ([-+0-9.eE]+)\)';
+            "focusorder", 'order FocusOrder \(default ([0-9]+)\)';
+            "fixtd", "keep the delay \\(default '(on|off)'\\)";
+            "integration", "s = 0\\); default '(on|off)'"};
+  for k = 1:rows (stated)
+    t = regexp (text, stated{k, 2}, "tokens", "once");
+    assert (numel (t) == 1, ["tfsrivc: the help states no default of ", ...
+                             stated{k, 1}]);
+    v = t{1};
+    if (isfield (words, v))
+      v = words.(v);
+    endif
+    assert (same_default (v, default_of (stated{k, 1})),
+            sprintf ("tfsrivc: the help says %s %s, the core %s",
+                     stated{k, 1}, v, default_of (stated{k, 1})));
+  endfor
+
+  ## explicit defaults change nothing; another value does
+  Ts = 0.05;
+  u = prbs (8, 4);
+  M0 = idtf (4, [1 1.2 4], "IODelay", 0.37);
+  y = simc (M0, iddata ([], u, Ts, "InterSample", "zoh"));
+  randn ("state", 5);
+  data = iddata (y + 0.02 * randn (size (y)), u, Ts, "InterSample", "zoh");
+  v = @(n) str2double (default_of (n));
+  a = tfsrivc (data, 2, 0, 0.3, "TdMax", 1);
+  b = tfsrivc (data, 2, 0, 0.3, "TdMax", 1, "TdMin", v ("tdmin"),
+               "NumTd", v ("numtd"), "MaxIter", v ("maxiter"),
+               "TolPar", v ("tolpar"), "TolFun", v ("tolfun"),
+               "StepReduction", v ("stepreduction"), "FixTd", "off",
+               "Integration", "off");
+  assert (isequal ([getpvec(a); a.IODelay], [getpvec(b); b.IODelay]));
+  c = tfsrivc (data, 2, 0, 0.3, "TdMax", 1, "TolPar", 0.1);
+  assert (! isequal ([getpvec(a); a.IODelay], [getpvec(c); c.IODelay]));
+
+  ## an undeclared option is refused by the gateway
+  try
+    refined_iv_mex ("tfsrivc", "tf_options", struct ("tdmax", 1, "bogus", 1));
+    error ("refined_iv_mex accepted an unknown option");
+  catch err
+    assert (err.identifier, "tfsrivc:badOption");
+  end_try_catch
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may
