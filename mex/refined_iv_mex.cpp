@@ -112,12 +112,13 @@ void tf_options_gateway(const Gateway& g, mxArray* plhs[], int nrhs,
   opt.finish();
   g.check(ctid::validate(c));
   const auto automatic = [](double v) {
-    return v == 0 ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar(v);
+    return v == 0 ? mxCreateDoubleMatrix(0, 0, mxREAL)
+                  : mxCreateDoubleScalar(v);
   };
-  const char* fields[] = {"fixtd",   "tdmin",   "tdmax",         "numtd",
-                          "lambda",  "maxiter", "tolpar",        "tolfun",
-                          "stepmax", "stepreduction", "focusorder",
-                          "integration"};
+  const char* fields[] = {"fixtd",         "tdmin",      "tdmax",
+                          "numtd",         "lambda",     "maxiter",
+                          "tolpar",        "tolfun",     "stepmax",
+                          "stepreduction", "focusorder", "integration"};
   mxArray* o = mxCreateStructMatrix(1, 1, 12, fields);
   mxSetField(o, 0, "fixtd", mxCreateLogicalScalar(c.fix_td));
   mxSetField(o, 0, "tdmin", mxCreateDoubleScalar(c.td_min));

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ctid/base/status.hpp"
@@ -175,6 +176,49 @@ Status set_option(const OptionDecl<Config>& decl, const OptionValue& value,
     }
   }
   return decl.set(config, value);
+}
+
+// A real (kReal) or integer (kInteger) option held in one member of the
+// config: `member` returns it for a config (a generic lambda,
+// [](auto& c) -> auto& { return c.settings.tolerance; }, which serves the
+// const config that shows it and the one a value sets). The value is
+// assigned as it is; validate() of the estimator checks its range.
+template <typename Config, typename Member>
+OptionDecl<Config> real_option(const char* name, bool required,
+                               const char* range, const char* help,
+                               Member member) {
+  return {name,
+          OptionType::kReal,
+          required,
+          {},
+          range,
+          help,
+          [member](const Config& c) {
+            return options_detail::number(static_cast<double>(member(c)));
+          },
+          [member](Config* c, const OptionValue& v) {
+            auto& target = member(*c);
+            target = static_cast<std::decay_t<decltype(target)>>(v.real);
+            return Status::Ok();
+          }};
+}
+
+template <typename Config, typename Member>
+OptionDecl<Config> integer_option(const char* name, bool required,
+                                  const char* range, const char* help,
+                                  Member member) {
+  return {name,
+          OptionType::kInteger,
+          required,
+          {},
+          range,
+          help,
+          [member](const Config& c) { return std::to_string(member(c)); },
+          [member](Config* c, const OptionValue& v) {
+            auto& target = member(*c);
+            target = static_cast<std::decay_t<decltype(target)>>(v.integer);
+            return Status::Ok();
+          }};
 }
 
 // Sets one option by name; an unknown name is a bad option.

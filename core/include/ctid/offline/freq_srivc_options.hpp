@@ -110,29 +110,14 @@ const OptionTable<FreqConfig<S>>& freq_srivc_options() {
                    c->delay.assign(m.data(), m.data() + m.size());
                    return Status::Ok();
                  }});
-    t.push_back({"tol",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "> 0",
-                 "stop once the relative change of the estimate is below it",
-                 [](const C& c) { return number(c.settings.tolerance); },
-                 [](C* c, V v) {
-                   c->settings.tolerance = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back(
-        {"maxiter",
-         OptionType::kInteger,
-         false,
-         {},
-         ">= 1",
-         "largest number of SRIVC (or Levenberg-Marquardt) iterations",
-         [](const C& c) { return std::to_string(c.settings.max_iterations); },
-         [](C* c, V v) {
-           c->settings.max_iterations = v.integer;
-           return Status::Ok();
-         }});
+    t.push_back(real_option<C>(
+        "tol", false, "> 0",
+        "stop once the relative change of the estimate is below it",
+        [](auto& c) -> auto& { return c.settings.tolerance; }));
+    t.push_back(integer_option<C>(
+        "maxiter", false, ">= 1",
+        "largest number of SRIVC (or Levenberg-Marquardt) iterations",
+        [](auto& c) -> auto& { return c.settings.max_iterations; }));
     t.push_back({"estimate_delay",
                  OptionType::kFlag,
                  false,
@@ -146,39 +131,17 @@ const OptionTable<FreqConfig<S>>& freq_srivc_options() {
                    c->settings.estimate_delay = v.flag;
                    return Status::Ok();
                  }});
-    t.push_back({"td_min",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= 0",
-                 "lower end of the delay search (time units)",
-                 [](const C& c) { return number(c.settings.td_min); },
-                 [](C* c, V v) {
-                   c->settings.td_min = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back({"td_max",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= td_min",
-                 "upper end of the delay search (time units)",
-                 [](const C& c) { return number(c.settings.td_max); },
-                 [](C* c, V v) {
-                   c->settings.td_max = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back({"num_td",
-                 OptionType::kInteger,
-                 false,
-                 {},
-                 "2 .. 1e5",
-                 "delays of the search's grid",
-                 [](const C& c) { return std::to_string(c.settings.num_td); },
-                 [](C* c, V v) {
-                   c->settings.num_td = v.integer;
-                   return Status::Ok();
-                 }});
+    t.push_back(real_option<C>(
+        "td_min", false, "finite, >= 0",
+        "lower end of the delay search (time units)",
+        [](auto& c) -> auto& { return c.settings.td_min; }));
+    t.push_back(real_option<C>(
+        "td_max", false, "finite, >= td_min",
+        "upper end of the delay search (time units)",
+        [](auto& c) -> auto& { return c.settings.td_max; }));
+    t.push_back(integer_option<C>(
+        "num_td", false, "2 .. 1e5", "delays of the search's grid",
+        [](auto& c) -> auto& { return c.settings.num_td; }));
     t.push_back({"grid",
                  OptionType::kFlag,
                  false,

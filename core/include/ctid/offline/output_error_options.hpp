@@ -163,17 +163,10 @@ const OptionTable<OeConfig<S>>& output_error_options() {
                    c->estimate_delay = v.flag;
                    return Status::Ok();
                  }});
-    t.push_back({"delay_max",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= 0",
-                 "upper bound of the estimated delay (time units)",
-                 [](const C& c) { return number(c.delay_max); },
-                 [](C* c, V v) {
-                   c->delay_max = v.real;
-                   return Status::Ok();
-                 }});
+    t.push_back(real_option<C>(
+        "delay_max", false, "finite, >= 0",
+        "upper bound of the estimated delay (time units)",
+        [](auto& c) -> auto& { return c.delay_max; }));
     t.push_back(
         {"theta_init",
          OptionType::kMatrix,
@@ -190,40 +183,18 @@ const OptionTable<OeConfig<S>>& output_error_options() {
            return options_detail::set_vector(
                v, "theta_init", ErrorCode::kBadInput, &c->settings.theta_init);
          }});
-    t.push_back(
-        {"maxiter",
-         OptionType::kInteger,
-         false,
-         {},
-         ">= 0",
-         "largest number of Levenberg-Marquardt iterations",
-         [](const C& c) { return std::to_string(c.settings.max_iterations); },
-         [](C* c, V v) {
-           c->settings.max_iterations = v.integer;
-           return Status::Ok();
-         }});
-    t.push_back({"tol",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "> 0",
-                 "stop once the relative step and loss decrease are below it",
-                 [](const C& c) { return number(c.settings.tolerance); },
-                 [](C* c, V v) {
-                   c->settings.tolerance = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back({"cutoff",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 ">= 0",
-                 "SVF cut-off of the SRIVC start (rad/s); 0: a grid",
-                 [](const C& c) { return number(c.settings.srivc_cutoff); },
-                 [](C* c, V v) {
-                   c->settings.srivc_cutoff = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_option<C>(
+        "maxiter", false, ">= 0",
+        "largest number of Levenberg-Marquardt iterations",
+        [](auto& c) -> auto& { return c.settings.max_iterations; }));
+    t.push_back(real_option<C>(
+        "tol", false, "> 0",
+        "stop once the relative step and loss decrease are below it",
+        [](auto& c) -> auto& { return c.settings.tolerance; }));
+    t.push_back(real_option<C>(
+        "cutoff", false, ">= 0",
+        "SVF cut-off of the SRIVC start (rad/s); 0: a grid",
+        [](auto& c) -> auto& { return c.settings.srivc_cutoff; }));
     t.push_back({"starts",
                  OptionType::kMatrix,
                  false,
@@ -261,18 +232,11 @@ const OptionTable<OeConfig<S>>& output_error_options() {
                    c->starts.default_start = v.flag;
                    return Status::Ok();
                  }});
-    t.push_back({"delay_min",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, in [0, delay_max]",
-                 "lower bound of the delay estimated from the starts (time "
-                 "units)",
-                 [](const C& c) { return number(c.starts.delay_min); },
-                 [](C* c, V v) {
-                   c->starts.delay_min = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(real_option<C>(
+        "delay_min", false, "finite, in [0, delay_max]",
+        "lower bound of the delay estimated from the starts (time "
+        "units)",
+        [](auto& c) -> auto& { return c.starts.delay_min; }));
     t.push_back({"integrate",
                  OptionType::kFlag,
                  false,

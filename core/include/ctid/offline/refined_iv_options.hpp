@@ -312,29 +312,13 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
                    c->settings.cutoffs.assign(m.data(), m.data() + m.size());
                    return Status::Ok();
                  }});
-    t.push_back({"tol",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "> 0",
-                 "stop once the relative change of theta is below it",
-                 [](const C& c) { return number(c.settings.tolerance); },
-                 [](C* c, V v) {
-                   c->settings.tolerance = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back(
-        {"maxiter",
-         OptionType::kInteger,
-         false,
-         {},
-         ">= 1",
-         "largest number of refined-IV iterations",
-         [](const C& c) { return std::to_string(c.settings.max_iterations); },
-         [](C* c, V v) {
-           c->settings.max_iterations = v.integer;
-           return Status::Ok();
-         }});
+    t.push_back(real_option<C>(
+        "tol", false, "> 0",
+        "stop once the relative change of theta is below it",
+        [](auto& c) -> auto& { return c.settings.tolerance; }));
+    t.push_back(integer_option<C>(
+        "maxiter", false, ">= 1", "largest number of refined-IV iterations",
+        [](auto& c) -> auto& { return c.settings.max_iterations; }));
     // (read as a real: a fraction is a bad option, as a count below 1 is)
     t.push_back(
         {"max_starts",
@@ -352,29 +336,15 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
            c->settings.max_starts = static_cast<int>(v.real);
            return Status::Ok();
          }});
-    t.push_back({"time_scale",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= 0",
-                 "the time scale sigma of the iterations (t' = sigma t); "
-                 "0: automatic",
-                 [](const C& c) { return number(c.settings.time_scale); },
-                 [](C* c, V v) {
-                   c->settings.time_scale = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back({"integrator_pole",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= 0",
-                 "the prefilter pole that replaces p = 0 (rad/s); 0: 10/T",
-                 [](const C& c) { return number(c.settings.integrator_pole); },
-                 [](C* c, V v) {
-                   c->settings.integrator_pole = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(real_option<C>(
+        "time_scale", false, "finite, >= 0",
+        "the time scale sigma of the iterations (t' = sigma t); "
+        "0: automatic",
+        [](auto& c) -> auto& { return c.settings.time_scale; }));
+    t.push_back(real_option<C>(
+        "integrator_pole", false, "finite, >= 0",
+        "the prefilter pole that replaces p = 0 (rad/s); 0: 10/T",
+        [](auto& c) -> auto& { return c.settings.integrator_pole; }));
     t.push_back(
         {"refit_integrators",
          OptionType::kFlag,
@@ -534,43 +504,20 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
                  }});
     t.push_back(order("nb", ">= 1 each, at most nf + 1",
                       "numerator coefficients, one per input", &C::nb));
-    t.push_back({"nc",
-                 OptionType::kInteger,
-                 false,
-                 {},
-                 ">= 0",
-                 "order of the noise numerator C(q^-1)",
-                 [](const C& c) { return std::to_string(c.problem.nc); },
-                 [](C* c, V v) {
-                   c->problem.nc = v.integer;
-                   return Status::Ok();
-                 }});
-    t.push_back({"nd",
-                 OptionType::kInteger,
-                 false,
-                 {},
-                 ">= 0",
-                 "order of the noise denominator D(q^-1)",
-                 [](const C& c) { return std::to_string(c.problem.nd); },
-                 [](C* c, V v) {
-                   c->problem.nd = v.integer;
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_option<C>(
+        "nc", false, ">= 0", "order of the noise numerator C(q^-1)",
+        [](auto& c) -> auto& { return c.problem.nc; }));
+    t.push_back(integer_option<C>(
+        "nd", false, ">= 0", "order of the noise denominator D(q^-1)",
+        [](auto& c) -> auto& { return c.problem.nd; }));
     t.push_back(
         order("nf", ">= 1 each", "denominator order, one per input", &C::nf));
     t.push_back(order("nk", ">= 0 each",
                       "input delay in samples, one per input", &C::nk));
-    t.push_back({"delay",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= 0; one input, open loop",
-                 "continuous delay (time units) on top of nk",
-                 [](const C& c) { return number(c.problem.delay); },
-                 [](C* c, V v) {
-                   c->problem.delay = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(real_option<C>(
+        "delay", false, "finite, >= 0; one input, open loop",
+        "continuous delay (time units) on top of nk",
+        [](auto& c) -> auto& { return c.problem.delay; }));
     t.push_back({"intersample",
                  OptionType::kInteger,
                  false,
@@ -585,29 +532,13 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
                    return options_detail::intersample_code(v.integer,
                                                            &c->problem.u_rule);
                  }});
-    t.push_back({"tol",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, > 0",
-                 "stop once the relative change of theta is below it",
-                 [](const C& c) { return number(c.settings.tolerance); },
-                 [](C* c, V v) {
-                   c->settings.tolerance = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
-    t.push_back(
-        {"maxiter",
-         OptionType::kInteger,
-         false,
-         {},
-         "1..1e5",
-         "largest number of RIVC iterations",
-         [](const C& c) { return std::to_string(c.settings.max_iterations); },
-         [](C* c, V v) {
-           c->settings.max_iterations = v.integer;
-           return Status::Ok();
-         }});
+    t.push_back(real_option<C>(
+        "tol", false, "finite, > 0",
+        "stop once the relative change of theta is below it",
+        [](auto& c) -> auto& { return c.settings.tolerance; }));
+    t.push_back(integer_option<C>(
+        "maxiter", false, "1..1e5", "largest number of RIVC iterations",
+        [](auto& c) -> auto& { return c.settings.max_iterations; }));
     t.push_back({"theta_init",
                  OptionType::kMatrix,
                  false,
@@ -635,31 +566,14 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
                                                     m.data() + m.size());
                    return Status::Ok();
                  }});
-    t.push_back(
-        {"max_starts",
-         OptionType::kInteger,
-         false,
-         {},
-         "1..100",
-         "the SRIVC start runs from at most this many ranked starts",
-         [](const C& c) { return std::to_string(c.settings.start.max_starts); },
-         [](C* c, V v) {
-           c->settings.start.max_starts = v.integer;
-           return Status::Ok();
-         }});
-    t.push_back({"arma_maxiter",
-                 OptionType::kInteger,
-                 false,
-                 {},
-                 "0..1e5",
-                 "largest number of iterations of the noise model's estimator",
-                 [](const C& c) {
-                   return std::to_string(c.settings.arma.max_iterations);
-                 },
-                 [](C* c, V v) {
-                   c->settings.arma.max_iterations = v.integer;
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_option<C>(
+        "max_starts", false, "1..100",
+        "the SRIVC start runs from at most this many ranked starts",
+        [](auto& c) -> auto& { return c.settings.start.max_starts; }));
+    t.push_back(integer_option<C>(
+        "arma_maxiter", false, "0..1e5",
+        "largest number of iterations of the noise model's estimator",
+        [](auto& c) -> auto& { return c.settings.arma.max_iterations; }));
     t.push_back({"arma_method",
                  OptionType::kChoice,
                  false,

@@ -78,8 +78,7 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
   using C = TfsrivcConfig<S>;
   using V = const OptionValue&;
   using options_detail::number;
-  const auto flag = [](const char* name, const char* help,
-                       bool C::*field) {
+  const auto flag = [](const char* name, const char* help, bool C::*field) {
     return OptionDecl<C>{name,
                          OptionType::kFlag,
                          false,
@@ -111,25 +110,24 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
   // A real > 0 whose default 0 stands for an automatic value.
   const auto automatic = [](const char* name, const char* shown,
                             const char* help, S C::*field) {
-    return OptionDecl<C>{name,
-                         OptionType::kReal,
-                         false,
-                         {},
-                         "> 0",
-                         help,
-                         [field, shown](const C& c) {
-                           return c.*field == 0 ? std::string(shown)
-                                                : number(c.*field);
-                         },
-                         [field, name](C* c, V v) {
-                           if (!(v.real > 0)) {
-                             return Status(ErrorCode::kBadOption,
-                                           std::string(name) +
-                                               " must be a scalar > 0");
-                           }
-                           c->*field = static_cast<S>(v.real);
-                           return Status::Ok();
-                         }};
+    return OptionDecl<C>{
+        name,
+        OptionType::kReal,
+        false,
+        {},
+        "> 0",
+        help,
+        [field, shown](const C& c) {
+          return c.*field == 0 ? std::string(shown) : number(c.*field);
+        },
+        [field, name](C* c, V v) {
+          if (!(v.real > 0)) {
+            return Status(ErrorCode::kBadOption,
+                          std::string(name) + " must be a scalar > 0");
+          }
+          c->*field = static_cast<S>(v.real);
+          return Status::Ok();
+        }};
   };
   const auto count = [](const char* name, const char* range, const char* help,
                         int C::*field) {
@@ -155,11 +153,10 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
     t.push_back(real("tdmax", true, "finite, >= tdmin",
                      "the upper end of the delay search (time units)",
                      &C::td_max));
-    t.push_back(count("numtd", ">= 1", "the delays of the search's grid",
-                      &C::num_td));
+    t.push_back(
+        count("numtd", ">= 1", "the delays of the search's grid", &C::num_td));
     t.push_back(automatic("lambda", "(the engine's grid of cut-offs)",
-                          "the SVF cut-off (rad/s) of the start",
-                          &C::lambda));
+                          "the SVF cut-off (rad/s) of the start", &C::lambda));
     t.push_back(count("maxiter", ">= 1",
                       "largest number of SRIVC iterations and of "
                       "Gauss-Newton steps on the delay",
@@ -183,8 +180,7 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
     t.push_back(count("focusorder", "1..10",
                       "order of the Focus filter's Butterworth low-pass",
                       &C::focus_order));
-    t.push_back(flag("integration",
-                     "an integrator enforced (a pole at s = 0)",
+    t.push_back(flag("integration", "an integrator enforced (a pole at s = 0)",
                      &C::integration));
     return t;
   }();
