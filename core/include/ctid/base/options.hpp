@@ -221,6 +221,33 @@ OptionDecl<Config> integer_option(const char* name, bool required,
           }};
 }
 
+// A flag (kFlag) held in one member, as real_option; shown as true or
+// false, `range` the words a host accepts for it.
+template <typename Config, typename Member>
+OptionDecl<Config> flag_option(const char* name, const char* range,
+                               const char* help, Member member) {
+  return {name,
+          OptionType::kFlag,
+          false,
+          {},
+          range,
+          help,
+          [member](const Config& c) {
+            return std::string(member(c) ? "true" : "false");
+          },
+          [member](Config* c, const OptionValue& v) {
+            member(*c) = v.flag;
+            return Status::Ok();
+          }};
+}
+
+// The accessor of a data member for the builders above:
+// member_access(&C::alpha).
+template <typename Config, typename T>
+auto member_access(T Config::*member) {
+  return [member](auto& c) -> auto& { return c.*member; };
+}
+
 // Sets one option by name; an unknown name is a bad option.
 template <typename Config>
 Status set_option(const OptionTable<Config>& table, const std::string& name,

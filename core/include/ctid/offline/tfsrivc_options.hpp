@@ -78,34 +78,13 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
   using C = TfsrivcConfig<S>;
   using V = const OptionValue&;
   using options_detail::number;
-  const auto flag = [](const char* name, const char* help, bool C::*field) {
-    return OptionDecl<C>{name,
-                         OptionType::kFlag,
-                         false,
-                         {},
-                         "true | false ('on' | 'off')",
-                         help,
-                         [field](const C& c) {
-                           return std::string(c.*field ? "true" : "false");
-                         },
-                         [field](C* c, V v) {
-                           c->*field = v.flag;
-                           return Status::Ok();
-                         }};
+  const auto flag = [](const char* name, const char* help, bool C::*member) {
+    return flag_option<C>(name, "true | false ('on' | 'off')", help,
+                          member_access(member));
   };
   const auto real = [](const char* name, bool required, const char* range,
-                       const char* help, S C::*field) {
-    return OptionDecl<C>{name,
-                         OptionType::kReal,
-                         required,
-                         {},
-                         range,
-                         help,
-                         [field](const C& c) { return number(c.*field); },
-                         [field](C* c, V v) {
-                           c->*field = static_cast<S>(v.real);
-                           return Status::Ok();
-                         }};
+                       const char* help, S C::*member) {
+    return real_option<C>(name, required, range, help, member_access(member));
   };
   // A real > 0 whose default 0 stands for an automatic value.
   const auto automatic = [](const char* name, const char* shown,
@@ -130,19 +109,8 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
         }};
   };
   const auto count = [](const char* name, const char* range, const char* help,
-                        int C::*field) {
-    return OptionDecl<C>{
-        name,
-        OptionType::kInteger,
-        false,
-        {},
-        range,
-        help,
-        [field](const C& c) { return std::to_string(c.*field); },
-        [field](C* c, V v) {
-          c->*field = v.integer;
-          return Status::Ok();
-        }};
+                        int C::*member) {
+    return integer_option<C>(name, false, range, help, member_access(member));
   };
   static const OptionTable<C> table = [&] {
     OptionTable<C> t;

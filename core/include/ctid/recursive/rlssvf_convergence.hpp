@@ -71,51 +71,19 @@ inline Status validate(const ConvergenceSettings& s, double ts) {
 // range check.
 inline const OptionTable<ConvergenceSettings>& convergence_options() {
   using C = ConvergenceSettings;
-  using V = const OptionValue&;
-  using options_detail::number;
   auto real = [](const char* name, const char* range, const char* help,
                  double C::*member, bool required = false) {
-    return OptionDecl<C>{name,
-                         OptionType::kReal,
-                         required,
-                         {},
-                         range,
-                         help,
-                         [member](const C& c) { return number(c.*member); },
-                         [member](C* c, V v) {
-                           c->*member = v.real;
-                           return Status::Ok();
-                         }};
+    return real_option<C>(name, required, range, help, member_access(member));
   };
   auto flag = [](const char* name, const char* help, bool C::*member) {
-    return OptionDecl<C>{name,
-                         OptionType::kFlag,
-                         false,
-                         {},
-                         "true or false",
-                         help,
-                         [member](const C& c) {
-                           return std::string(c.*member ? "true" : "false");
-                         },
-                         [member](C* c, V v) {
-                           c->*member = v.flag;
-                           return Status::Ok();
-                         }};
+    return flag_option<C>(name, "true or false", help, member_access(member));
   };
   static const OptionTable<C> table = {
       real("blocklength", "> 0, at least two samples", "block length T_b (s)",
            &C::block_length, true),
-      {"nblocks",
-       OptionType::kInteger,
-       false,
-       {},
-       ">= 3",
-       "blocks n of the moving window",
-       [](const C& c) { return std::to_string(c.num_blocks); },
-       [](C* c, V v) {
-         c->num_blocks = v.integer;
-         return Status::Ok();
-       }},
+      integer_option<C>("nblocks", false, ">= 3",
+                        "blocks n of the moving window",
+                        member_access(&C::num_blocks)),
       real("alpha", "in (0, 0.5)",
            "significance level of the output-error steady-state test",
            &C::alpha),
