@@ -38,7 +38,7 @@ function demo_ch1_indirect (outdir = "results", nseeds = 20)
   mse_after = zeros (nseeds, 2);
   spurious = zeros (nseeds, 1);
   failures = zeros (nseeds, 1);
-  tic;
+  t_run = tic ();
   for s = 1:nseeds
     randn ("state", s);
     y = x + sqrt (0.05) * randn (N, 1);
@@ -61,7 +61,7 @@ function demo_ch1_indirect (outdir = "results", nseeds = 20)
       dir1 = dir;
     endif
   endfor
-  elapsed = toc;
+  elapsed = toc (t_run);
   plot_routes (fullfile (outdir, "fig_1_9_indirect_direct.png"), t, theta,
                ind1, dir1);
   write_table (fullfile (outdir, "indirect_direct.md"), mse, mse_after,

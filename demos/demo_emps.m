@@ -65,11 +65,11 @@ function R = demo_emps (outdir = "results", reduced = false)
   endif
   C = struct ("num", s.gtau * s.kv * [s.kp + 1 / Ts, -1 / Ts], "den", 1);
   M0 = idctm (1 / 100, [1 200 / 100 0]);
-  tic;
+  t_run = tic ();
   R = residtrace (iddata (y, u, Ts), M0, "validation", iddata (yv, uv, Ts),
                   "controller", C, "r1", r1, "r1v", r1v, "lambda_v", 200,
                   "substeps", 2, "iterate", iterate);
-  elapsed = toc;
+  elapsed = toc (t_run);
   idim = inverse_dynamics (u, y, Ts);
 
   plot_sim (fullfile (outdir, "fig_emps_sim.png"), Ts, R.sim);

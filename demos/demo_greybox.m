@@ -84,9 +84,9 @@ function o = trace (name, u, y, uv, yv, Ts, iterate)
              [1 2 0]);
   [o.rmse_linear, o.linear_nn, o.sim_linear] = best_linear (u, y, uv, yv,
                                                             Ts);
-  tic;
+  t_run = tic ();
   o.R = residtrace (d, M, "validation", dv, "iterate", iterate);
-  o.elapsed = toc;
+  o.elapsed = toc (t_run);
   o.name = name;
   ## residtrace's own re-estimate is linear too, with the levels and the
   ## initial state handled: the best linear model is the better of both

@@ -36,7 +36,7 @@ function demo_rlssvf_ltv (outdir = "results", nseeds = 50)
   after = t >= 100;                               # past the start-up
   mse = zeros (nseeds, 1);
   mse_after = zeros (nseeds, 1);
-  tic;
+  t_run = tic ();
   for s = 1:nseeds
     randn ("state", s);
     y = x + sqrt (0.05) * randn (N, 1);
@@ -50,7 +50,7 @@ function demo_rlssvf_ltv (outdir = "results", nseeds = 50)
       y1 = y;
     endif
   endfor
-  elapsed = toc;
+  elapsed = toc (t_run);
 
   plot_estimates (fullfile (outdir, "fig_1_9b_rlssvf.png"), t, theta, thm1);
   write_table (fullfile (outdir, "rlssvf_ltv.md"), mse, mse_after, snr,

@@ -65,9 +65,9 @@ function R = demo_silverbox (outdir = "results", reduced = false)
   d = iddata (y(1:Ne), u(1:Ne), Ts, "InterSample", "zoh");
   dv = iddata (y(iv), u(iv), Ts, "InterSample", "zoh");
   M = srivc (d, [1 2 0]);
-  tic;
+  t_run = tic ();
   R = residtrace (d, M, "validation", dv, "iterate", iterate);
-  elapsed = toc;
+  elapsed = toc (t_run);
 
   plot_track (fullfile (outdir, "fig_silverbox_track.png"), Ts, wn, zeta,
               urms);

@@ -58,14 +58,14 @@ endfunction
 function r = run_mc (name, runs, truth, fun)
   th = zeros (numel (truth), runs);
   sd = th;
-  tic;
+  t_run = tic ();
   for k = 1:runs
     randn ("state", 100 + k);
     [~, I] = fun (k);
     th(:, k) = I.theta;
     sd(:, k) = I.sd(:);
   endfor
-  t = toc;
+  t = toc (t_run);
   r.ratio = (std (th, 0, 2) ./ mean (sd, 2)).';
   r.bias_in_sd = ((mean (th, 2) - truth) ./ std (th, 0, 2)).';
   r.seconds = t;

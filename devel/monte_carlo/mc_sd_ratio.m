@@ -18,14 +18,14 @@ function r = mc_sd_ratio (name, runs, fun)
   th = zeros (numel (th1), runs);
   sd = th;
   t0 = cputime ();
-  tic;
+  t_run = tic ();
   for k = 1:runs
     [th(:, k), sd(:, k)] = fun ();
   endfor
   r = (std (th, 0, 2) ./ mean (sd, 2)).';
   mad = 1.4826 * median (abs (th - median (th, 2)), 2);
   printf ("%s, %d runs (%.0f s, %.0f s CPU): spread / reported sd = %s\n",
-          name, runs, toc, cputime () - t0, mat2str (r, 3));
+          name, runs, toc (t_run), cputime () - t0, mat2str (r, 3));
   printf ("  robust spread (1.4826 MAD) / reported sd = %s\n",
           mat2str ((mad ./ mean (sd, 2)).', 3));
 endfunction

@@ -23,7 +23,7 @@ y0 = simc (M0, iddata ([], u, Ts, "InterSample", "zoh"));
 P = zeros (R, 5);
 S = P;
 randn ("state", 7);
-tic;
+t_run = tic ();
 for r = 1:R
   data = iddata (y0 + 0.2 * randn (size (y0)), u, Ts, "InterSample", "zoh");
   M = tfsrivc (data, 2, 1, 0.3);
@@ -31,7 +31,7 @@ for r = 1:R
   P(r, :) = p';
   S(r, :) = s';
 endfor
-printf ("%d runs in %.1f s\n", R, toc);
+printf ("%d runs in %.1f s\n", R, toc (t_run));
 printf ("%12s %10s %10s %10s %10s %10s\n", "", "b1", "b0", "f1", "f2", "td");
 printf ("%12s %10.4f %10.4f %10.4f %10.4f %10.4f\n", "true", ...
         getpvec (M0));

@@ -59,10 +59,10 @@ function T = residtrace_sim_records (outdir = "results", which = {})
     endif
     randn ("state", 2026112301 + k); rand ("state", 2026112301 + k);
     [u, y, uv, yv, Ts, nn] = feval (["rec_" recs{k}]);
-    tic;
+    t0 = tic ();
     R = residtrace_record (y, u, yv, uv, Ts, nn, "iterate", 2,
                            "verbose", true);
-    el = toc;
+    el = toc (t0);
     T(end+1) = struct ("record", recs{k}, "documented", strjoin (doc{k}, "/"),
                        "found", R.effect, "all", strjoin (R.effects, ", "),
                        "rmse_before", R.rmse_before,

@@ -71,7 +71,7 @@ function R = srivc_records (only)
       endif
       d = iddata (yy, uu, Ts, "InterSample", "zoh");
       for k = 1:rows (NN)
-        tic;
+        t_run = tic ();
         try
           [M, RT2, ~, ~, ~, info] = srivc (d, NN(k, :));
           ok = [info.stable, info.converged];
@@ -83,7 +83,7 @@ function R = srivc_records (only)
           why = err.message;
           printf ("  (%s)\n", err.message);
         end_try_catch
-        sec = toc;
+        sec = toc (t_run);
         R(end+1) = struct ("record", name, "nn", NN(k, :),
                            "mean_removed", centre, "stable", ok(1),
                            "converged", ok(2), "RT2", RT2, "iterations", it,

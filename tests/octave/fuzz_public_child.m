@@ -34,7 +34,7 @@ function fuzz_public_child (specfile)
     endif
     fprintf (fid, "S %d\n", k);
     fflush (fid);
-    tic;
+    t_run = tic ();
     status = "ok"; id = "-"; nonfinite = 0;
     try
       outs = cell (1, nout);
@@ -54,7 +54,7 @@ function fuzz_public_child (specfile)
     end_try_catch
     close all;
     fprintf (fid, "R %d %s %s %d %.3f %s %s\n", k, status, id, nonfinite,
-             toc, tgt.name, objcls);
+             toc (t_run), tgt.name, objcls);
     fflush (fid);
   endfor
   fclose (fid);
