@@ -139,7 +139,7 @@ function s = poly_str (c, sd, ct, var)
         t = ["-", t];
       endif
     else
-      t = [ifelse(v < 0, "- ", "+ "), t];
+      t = [merge(v < 0, "- ", "+ "), t];
     endif
     terms{end+1} = t;
   endfor
@@ -165,18 +165,10 @@ function pw = power_str (var, k)
   endif
 endfunction
 
-function r = ifelse (c, a, b)
-  if (c)
-    r = a;
-  else
-    r = b;
-  endif
-endfunction
-
 function L = poly_lines (P, sd, ct)
   s = P.par;
-  v = ifelse (ct, "s", "z");
-  tm = ifelse (ct, "Continuous-time", "Discrete-time");
+  v = merge (ct, "s", "z");
+  tm = merge (ct, "Continuous-time", "Discrete-time");
   hasA = numel (s.A) > 1;
   hasC = numel (s.C) > 1;
   hasD = numel (s.D) > 1;
@@ -203,9 +195,9 @@ function L = poly_lines (P, sd, ct)
   endif
   terms = {};
   for j = 1:P.nu
-    bj = ifelse (P.nu > 1, sprintf ("B%d", j), "B");
-    fj = ifelse (P.nu > 1, sprintf ("F%d", j), "F");
-    uj = ifelse (P.nu > 1, sprintf ("u%d(t)", j), "u(t)");
+    bj = merge (P.nu > 1, sprintf ("B%d", j), "B");
+    fj = merge (P.nu > 1, sprintf ("F%d", j), "F");
+    uj = merge (P.nu > 1, sprintf ("u%d(t)", j), "u(t)");
     if (numel (s.F{j}) > 1)
       terms{end+1} = sprintf ("[%s(%s)/%s(%s)]%s", bj, v, fj, v, uj);
     else
@@ -219,7 +211,7 @@ function L = poly_lines (P, sd, ct)
     noise = sprintf ("[C(%s)/D(%s)]e(t)", v, v);
   endif
   terms{end+1} = noise;
-  lhs = ifelse (hasA, sprintf ("A(%s)y(t)", v), "y(t)");
+  lhs = merge (hasA, sprintf ("A(%s)y(t)", v), "y(t)");
   L = {sprintf("%s %s model:  %s = %s", tm, kind, lhs,
                strjoin (terms, " + "))};
   k = 0;
@@ -240,7 +232,7 @@ function L = poly_lines (P, sd, ct)
     k += numel (s.A) - 1;
   endif
   for j = 1:P.nu
-    add (ifelse (P.nu > 1, sprintf ("B%d", j), "B"), s.B{j}, 0);
+    add (merge (P.nu > 1, sprintf ("B%d", j), "B"), s.B{j}, 0);
   endfor
   if (hasC)
     add ("C", s.C, 1, noise_ts > 0);
@@ -258,7 +250,7 @@ function L = poly_lines (P, sd, ct)
   endif
   for j = 1:P.nu
     if (numel (s.F{j}) > 1)
-      add (ifelse (P.nu > 1, sprintf ("F%d", j), "F"), s.F{j}, 1);
+      add (merge (P.nu > 1, sprintf ("F%d", j), "F"), s.F{j}, 1);
     endif
   endfor
   if (any (s.IODelay != 0))
@@ -283,9 +275,9 @@ endfunction
 
 function L = tf_lines (P, sd, ct)
   s = P.par;
-  v = ifelse (ct, "s", "z");
+  v = merge (ct, "s", "z");
   L = {sprintf("%s identified transfer function.",
-               ifelse (ct, "Continuous-time", "Discrete-time"))};
+               merge (ct, "Continuous-time", "Discrete-time"))};
   nb = cellfun ("numel", s.Numerator);
   nf = cellfun ("numel", s.Denominator) - 1;
   offs_b = [0; cumsum(nb(:))];

@@ -77,16 +77,9 @@ function [yout, tout] = time_response (kind, fname, args)
 endfunction
 
 function Ts = sys_ts (sys)
-  Ts = get (sys, ifelse_ (isa (sys, "idmodel"), "Ts", "tsam"));
+  Ts = get (sys, merge (isa (sys, "idmodel"), "Ts", "tsam"));
 endfunction
 
-function r = ifelse_ (c, a, b)
-  if (c)
-    r = a;
-  else
-    r = b;
-  endif
-endfunction
 
 function t = default_time (a, Ts, delay, tfinal)
   if (isempty (tfinal))
