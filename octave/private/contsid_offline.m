@@ -229,24 +229,10 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   endif
   if (refined && info.converged && isfield (info, "determined")
       && ! info.determined)
-    warning ([fname ":overParameterised"], "%s: %s", fname, info.reason);
-  endif
-  if (refined && info.converged)
-    ## Poles the data cannot see, whatever the engine's stopping rule said
-    ## (first-order data fitted with [1 2 0] converge with a pole at p Ts
-    ## up to 5e6): the same over-parameterisation, said per pole.
-    if (d.uniform)
-      h = d.Ts;
-    else
-      h = median (diff (d.t(:)));
-    endif
-    msg = undetermined_poles (info.F, cov, h);
-    if (! isempty (msg))
-      info.determined = false;
-      info.reason = [info.reason "; " msg];
-      warning ([fname ":overParameterised"], "%s: %s; try a lower order",
-               fname, msg);
-    endif
+    ## parameters that still moved when the loss stopped, or a real pole
+    ## the data cannot see (the engine: offline/pole_determination.hpp)
+    warning ([fname ":overParameterised"], "%s: %s; try a lower order",
+             fname, info.reason);
   endif
   if (refined && info.noise_variance * (n - np) / n > 0.99 * var (d.y, 1))
     ## R_T^2 < 0.01: a fixed point of the iteration need not be a useful
@@ -521,48 +507,6 @@ function M = make_model (fname, e, theta, cov, info, d, nu)
                      "noise_variance", info.noise_variance, "method", fname,
                      "iterations", info.iterations,
                      "converged", info.converged, "Report", report));
-endfunction
-
-## The real poles of the denominators F (a cell, theta = [f_1..f_nu,
-## b...] with covariance P) that the data do not determine: a pole with
-## |p| h > 1000 has died out within a thousandth of a sample (within the
-## band up to the Nyquist frequency it changes the response by at most
-## pi/1000; residtrace removes such poles from its candidates' fits by the
-## same bound), and, with one denominator, a real pole whose standard
-## error (first order: dp/df_k = -p^(n-k) / F'(p)) exceeds its own
-## magnitude, i.e. whose time constant is not distinguished from 0.
-## Returns "" when every pole is determined, else a message.
-function msg = undetermined_poles (F, P, h)
-  msg = "";
-  for j = 1:numel (F)
-    Fj = F{j};
-    n = numel (Fj) - 1;
-    p = roots (Fj);
-    for i = 1:numel (p)
-      if (imag (p(i)) != 0 || p(i) == 0)
-        continue;
-      endif
-      if (abs (p(i)) * h > 1000)
-        msg = sprintf ("a pole at p = %.4g has |p| Ts = %.3g > 1000", p(i),
-                       abs (p(i)) * h);
-        return;
-      endif
-      if (numel (F) == 1 && rows (P) >= n && all (isfinite (P(1:n, 1:n)(:))))
-        dF = polyval (polyder (Fj), p(i));
-        J = -(p(i) .^ (n-1:-1:0)) / dF;
-        if (! all (isfinite (J)))
-          continue;                  # a repeated pole: no first-order sd
-        endif
-        sd = sqrt (max (J * P(1:n, 1:n) * J.', 0));
-        if (sd > abs (p(i)))
-          msg = sprintf (["the pole at p = %.4g has a standard error of ", ...
-                          "%.3g: its time constant is not distinguished ", ...
-                          "from 0"], p(i), sd);
-          return;
-        endif
-      endif
-    endfor
-  endfor
 endfunction
 
 ## Report.Fit of the model: s2 is the simulation-error variance with

@@ -64,6 +64,7 @@
 
 #include "ctid/base/polynomial.hpp"
 #include "ctid/offline/offline_iv.hpp"
+#include "ctid/offline/pole_determination.hpp"
 #include "ctid/offline/refined_iv_engine.hpp"
 #include "ctid/offline/refined_iv_problem.hpp"
 #include "ctid/offline/refined_iv_starts.hpp"
@@ -329,19 +330,32 @@ Status refit_integrators(const RivProblem<S>& problem,
 // with the pole its slowest creeps toward declared at p = 0, from itself or
 // from its lowest-loss run (refit_integrators above); the refit replaces
 // the fit when it is better (result->integrator_refit says what happened).
+//
+// A converged SRIVC fit whose real pole the data do not determine
+// (pole_determination.hpp) has determined = false and the pole named in
+// its reason, as one whose parameters still moved when the loss stopped.
 template <typename S>
 Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
                   const RivData<S>& data, RivResult<S>* result) {
   Status status =
       riv_detail::refined_iv_offset(problem, settings, data, result);
-  if (!settings.refit_integrators || settings.method != RivMethod::kSrivc ||
-      problem.closed_loop() ||
-      (!status.ok() && status.code() != ErrorCode::kNotConverged)) {
-    return status;
+  if (settings.refit_integrators && settings.method == RivMethod::kSrivc &&
+      !problem.closed_loop() &&
+      (status.ok() || status.code() == ErrorCode::kNotConverged)) {
+    const Status s = refit_integrators(problem, settings, data, result);
+    if (!s.ok()) return s;
+    if (result->integrator_refit == 1) status = Status::Ok();
   }
-  const Status s = refit_integrators(problem, settings, data, result);
-  if (!s.ok()) return s;
-  return result->integrator_refit == 1 ? Status::Ok() : status;
+  if (status.ok() && settings.method == RivMethod::kSrivc &&
+      result->converged) {
+    const std::string why = undetermined_pole(
+        problem, result->theta, result->covariance, typical_interval(data));
+    if (!why.empty()) {
+      result->determined = false;
+      result->reason += "; " + why;
+    }
+  }
+  return status;
 }
 
 namespace riv_detail {
