@@ -241,6 +241,31 @@ OptionDecl<Config> flag_option(const char* name, const char* range,
           }};
 }
 
+// A vector (kMatrix) held in one member, as real_option: a matrix with
+// more than one row and column is an error of kind `code`; shown by its
+// size, or by `empty` when it is not given.
+template <typename Config, typename Member>
+OptionDecl<Config> vector_option(const char* name, const char* range,
+                                 const char* help, const char* empty,
+                                 ErrorCode code, Member member) {
+  return {name,
+          OptionType::kMatrix,
+          false,
+          {},
+          range,
+          help,
+          [member, empty](const Config& c) {
+            using Scalar = typename std::decay_t<decltype(member(c))>::Scalar;
+            return options_detail::matrix_text(Matrix<Scalar>(member(c)),
+                                               empty);
+          },
+          [member, name, code](Config* c, const OptionValue& v) {
+            auto& target = member(*c);
+            using Scalar = typename std::decay_t<decltype(target)>::Scalar;
+            return options_detail::set_vector<Scalar>(v, name, code, &target);
+          }};
+}
+
 // The accessor of a data member for the builders above:
 // member_access(&C::alpha).
 template <typename Config, typename T>

@@ -48,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "ctid/base/polynomial.hpp"
 #include "ctid/base/status.hpp"
 
 namespace ctid {
@@ -264,19 +265,10 @@ inline Status solve_iv(const Eigen::MatrixXd& zb, const Eigen::MatrixXd& zc,
   return Status::Ok();
 }
 
-// Roots of a monic polynomial [1 c1 .. cn] (coefficients of z^n ... z^0).
-inline Eigen::VectorXcd poly_roots(const Eigen::VectorXd& c) {
-  const long n = c.size() - 1;
-  if (n < 1) return Eigen::VectorXcd(0);
-  Eigen::MatrixXd comp = Eigen::MatrixXd::Zero(n, n);
-  for (long j = 0; j < n; ++j) comp(0, j) = -c[j + 1];
-  for (long i = 1; i < n; ++i) comp(i, i - 1) = 1.0;
-  return Eigen::EigenSolver<Eigen::MatrixXd>(comp, false).eigenvalues();
-}
-
 // Reflects the roots outside the unit circle inside (same spectrum shape).
 inline Eigen::VectorXd make_minimum_phase(const Eigen::VectorXd& c) {
-  const Eigen::VectorXcd r = poly_roots(c);
+  if (c.size() < 2) return c;
+  const Eigen::VectorXcd r = polynomial_roots<double>(c.reverse());
   bool any = false;
   for (long i = 0; i < r.size(); ++i) any = any || std::abs(r[i]) >= 1.0;
   if (!any) return c;

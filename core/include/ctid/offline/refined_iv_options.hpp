@@ -285,21 +285,11 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
                    c->fixed_values = values(v.matrix);
                    return Status::Ok();
                  }});
-    t.push_back({"theta_init",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, one entry per parameter",
-                 "the start of the iterations (original time)",
-                 [](const C& c) {
-                   return options_detail::matrix_text(
-                       Matrix<S>(c.settings.theta_init), "(automatic start)");
-                 },
-                 [](C* c, V v) {
-                   return options_detail::set_vector(v, "theta_init",
-                                                     ErrorCode::kBadInput,
-                                                     &c->settings.theta_init);
-                 }});
+    t.push_back(vector_option<C>(
+        "theta_init", "finite, one entry per parameter",
+        "the start of the iterations (original time)", "(automatic start)",
+        ErrorCode::kBadInput,
+        [](auto& c) -> auto& { return c.settings.theta_init; }));
     t.push_back({"cutoffs",
                  OptionType::kMatrix,
                  false,
@@ -358,31 +348,17 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
            c->settings.refit_integrators = v.flag;
            return Status::Ok();
          }});
-    t.push_back({"controller_num",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "a vector; with controller_den",
-                 "closed loop: the controller's numerator (powers of p, or "
-                 "of q^-1 with discrete_controller)",
-                 [](const C&) { return std::string("(open loop)"); },
-                 [](C* c, V v) {
-                   return options_detail::set_vector(
-                       v, "option 'controller_num'", ErrorCode::kBadOption,
-                       &c->problem.controller_num);
-                 }});
-    t.push_back({"controller_den",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "a vector, proper controller",
-                 "closed loop: the controller's denominator",
-                 [](const C&) { return std::string("(open loop)"); },
-                 [](C* c, V v) {
-                   return options_detail::set_vector(
-                       v, "option 'controller_den'", ErrorCode::kBadOption,
-                       &c->problem.controller_den);
-                 }});
+    t.push_back(vector_option<C>(
+        "controller_num", "a vector; with controller_den",
+        "closed loop: the controller's numerator (powers of p, or of q^-1 "
+        "with discrete_controller)",
+        "(open loop)", ErrorCode::kBadOption,
+        [](auto& c) -> auto& { return c.problem.controller_num; }));
+    t.push_back(vector_option<C>(
+        "controller_den", "a vector, proper controller",
+        "closed loop: the controller's denominator", "(open loop)",
+        ErrorCode::kBadOption,
+        [](auto& c) -> auto& { return c.problem.controller_den; }));
     t.push_back({"discrete_controller",
                  OptionType::kFlag,
                  false,
@@ -591,31 +567,17 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
                                                  : ArmaMethod::kPem;
                    return Status::Ok();
                  }});
-    t.push_back({"controller_num",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "a vector; with controller_den",
-                 "closed loop (clrivc): the controller's numerator, "
-                 "descending powers of p",
-                 [](const C&) { return std::string("(open loop)"); },
-                 [](C* c, V v) {
-                   return options_detail::set_vector(
-                       v, "option 'controller_num'", ErrorCode::kBadOption,
-                       &c->problem.controller_num);
-                 }});
-    t.push_back({"controller_den",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "a vector, proper controller",
-                 "closed loop (clrivc): the controller's denominator",
-                 [](const C&) { return std::string("(open loop)"); },
-                 [](C* c, V v) {
-                   return options_detail::set_vector(
-                       v, "option 'controller_den'", ErrorCode::kBadOption,
-                       &c->problem.controller_den);
-                 }});
+    t.push_back(vector_option<C>(
+        "controller_num", "a vector; with controller_den",
+        "closed loop (clrivc): the controller's numerator, descending "
+        "powers of p",
+        "(open loop)", ErrorCode::kBadOption,
+        [](auto& c) -> auto& { return c.problem.controller_num; }));
+    t.push_back(vector_option<C>(
+        "controller_den", "a vector, proper controller",
+        "closed loop (clrivc): the controller's denominator", "(open loop)",
+        ErrorCode::kBadOption,
+        [](auto& c) -> auto& { return c.problem.controller_den; }));
     t.push_back(count("cl_nb", ">= 1, at most cl_nf + 1",
                       "cl2srivc's first stage (u on r): numerator "
                       "coefficients",

@@ -208,18 +208,10 @@ void add_estimate_options(OptionTable<Config>* table) {
          }
          return Status::Ok();
        }});
-  table->push_back(
-      {"th0",
-       OptionType::kMatrix,
-       false,
-       {},
-       "np-by-1, finite",
-       "initial estimate (default zeros)",
-       [](const Config& c) { return matrix_text(Matrix<S>(c.theta0), "0"); },
-       [](Config* c, V v) {
-         return set_vector<S>(v, "th0", ErrorCode::kDimensionMismatch,
-                              &c->theta0);
-       }});
+  table->push_back(vector_option<Config>(
+      "th0", "np-by-1, finite", "initial estimate (default zeros)", "0",
+      ErrorCode::kDimensionMismatch,
+      [](auto& c) -> auto& { return c.theta0; }));
   table->push_back({"P0",
                     OptionType::kMatrix,
                     false,
@@ -231,20 +223,11 @@ void add_estimate_options(OptionTable<Config>* table) {
                       c->P0 = v.matrix.cast<S>();
                       return Status::Ok();
                     }});
-  table->push_back(
-      {"scaling",
-       OptionType::kMatrix,
-       false,
-       {},
-       "np-by-1, > 0",
-       "diagonal of the scaling matrix M_s (eq. 3.74); [] for none",
-       [](const Config& c) {
-         return matrix_text(Matrix<S>(c.scaling), "none");
-       },
-       [](Config* c, V v) {
-         return set_vector<S>(v, "scaling", ErrorCode::kDimensionMismatch,
-                              &c->scaling);
-       }});
+  table->push_back(vector_option<Config>(
+      "scaling", "np-by-1, > 0",
+      "diagonal of the scaling matrix M_s (eq. 3.74); [] for none", "none",
+      ErrorCode::kDimensionMismatch,
+      [](auto& c) -> auto& { return c.scaling; }));
   table->push_back({"covariance_guard",
                     OptionType::kFlag,
                     false,
@@ -427,37 +410,15 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                                               : StabilityPolicy::kKeepLast;
            return Status::Ok();
          }});
-    t.push_back({"mtheta_num",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "a vector, with mtheta_den; unit static gain",
-                 "numerator of the smoothing filter M_theta(q^-1) (default "
-                 "q^-1)",
-                 [](const Config& c) {
-                   return options_detail::matrix_text(
-                       Matrix<S>(c.m_theta.numerator), "q^-1");
-                 },
-                 [](Config* c, V v) {
-                   return options_detail::set_vector<S>(v, "mtheta_num",
-                                                        ErrorCode::kBadInput,
-                                                        &c->m_theta.numerator);
-                 }});
-    t.push_back({"mtheta_den",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "a vector, with mtheta_num",
-                 "denominator of M_theta(q^-1)",
-                 [](const Config& c) {
-                   return options_detail::matrix_text(
-                       Matrix<S>(c.m_theta.denominator), "1");
-                 },
-                 [](Config* c, V v) {
-                   return options_detail::set_vector<S>(
-                       v, "mtheta_den", ErrorCode::kBadInput,
-                       &c->m_theta.denominator);
-                 }});
+    t.push_back(vector_option<Config>(
+        "mtheta_num", "a vector, with mtheta_den; unit static gain",
+        "numerator of the smoothing filter M_theta(q^-1) (default q^-1)",
+        "q^-1", ErrorCode::kBadInput,
+        [](auto& c) -> auto& { return c.m_theta.numerator; }));
+    t.push_back(vector_option<Config>(
+        "mtheta_den", "a vector, with mtheta_num",
+        "denominator of M_theta(q^-1)", "1", ErrorCode::kBadInput,
+        [](auto& c) -> auto& { return c.m_theta.denominator; }));
     t.push_back(
         {"prefilter",
          OptionType::kChoice,
@@ -475,21 +436,12 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                                    : PrefilterGain::kUnitStaticGain;
            return Status::Ok();
          }});
-    t.push_back({"A",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "1-by-na, a stable [a1 .. a_na]",
-                 "denominator that starts the prefilter and the auxiliary "
-                 "model (default (p + lambda_svf)^na)",
-                 [](const Config& c) {
-                   return options_detail::matrix_text(
-                       Matrix<S>(c.initial_denominator), "(p + lambda_svf)^na");
-                 },
-                 [](Config* c, V v) {
-                   return options_detail::set_vector<S>(
-                       v, "A", ErrorCode::kBadInput, &c->initial_denominator);
-                 }});
+    t.push_back(vector_option<Config>(
+        "A", "1-by-na, a stable [a1 .. a_na]",
+        "denominator that starts the prefilter and the auxiliary model "
+        "(default (p + lambda_svf)^na)",
+        "(p + lambda_svf)^na", ErrorCode::kBadInput,
+        [](auto& c) -> auto& { return c.initial_denominator; }));
     t.push_back({"controller_num",
                  OptionType::kMatrix,
                  false,
