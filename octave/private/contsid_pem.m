@@ -536,25 +536,20 @@ endfunction
 ## losses (Report.Termination.DelaySearch).
 function [starts, tdmax, search] = srivc_delay_start (fname, d, np, nz, td0,
                                                       o, tdmax_given)
-  tdmax = o.tdmax;
-  if (! tdmax_given)
-    tdmax = max (contsid_default_tdmax (d.t, d.y, d.u), 2 * o.tdmin);
-    if (! isempty (td0))
-      tdmax = max (tdmax, 2 * td0);
-    endif
-    tdmax = min (tdmax, o.tdmax);
+  ## TdMax not given and StepMax: the data's (core delay_search_defaults.hpp)
+  given = struct ("tdmin", o.tdmin, "numtd", o.numtd, "stepmax", o.stepmax,
+                  "td0", td0);
+  if (tdmax_given)
+    given.tdmax = o.tdmax;
   endif
-  h = median (diff (d.t));
-  stepmax = o.stepmax;
-  if (isempty (stepmax))
-    stepmax = max ((tdmax - o.tdmin) / (o.numtd - 1), h);
-  endif
+  r = refined_iv_mex (fname, "delay_range", d.y, d.u, time_arg (d), given);
+  tdmax = r.tdmax;
   s = struct ("td0", [], "fixtd", false, "tdmin", o.tdmin, "tdmax", tdmax,
               "numtd", o.numtd, "lambda", o.lambda, "maxiter", 30,
-              "tolpar", 1e-5, "tolfun", 1e-8, "stepmax", stepmax,
+              "tolpar", 1e-5, "tolfun", 1e-8, "stepmax", r.stepmax,
               "stepreduction", o.srmult, "theta0", [], "fixed", [],
               "fixed_values", [], "search_only", false,
-              "tdmax_auto", ! tdmax_given);
+              "tdmax_limit", r.tdmax_limit);
   if (o.integ)
     s.fixed = false (np + nz + 1, 1);
     s.fixed(np) = true;                 # f_np = 0: the pole at p = 0
