@@ -153,6 +153,7 @@ function o = tfcoe_options (fname, o, T)
   [o.tdmin, o.tdmax, o.numtd, o.stepmax, o.srmult, o.focusorder, o.integ, ...
    o.lambda] = deal (c.tdmin, c.tdmax, c.numtd, c.stepmax, c.stepreduction,
                      c.focusorder, c.integration, c.lambda);
+  o.search = c;
 endfunction
 
 function [theta, P, info] = call_gateway (fname, d, opts)
@@ -526,12 +527,12 @@ function [starts, tdmax, search] = srivc_delay_start (fname, d, np, nz, td0,
   endif
   r = refined_iv_mex (fname, "delay_range", d.y, d.u, time_arg (d), given);
   tdmax = r.tdmax;
-  s = struct ("td0", [], "fixtd", false, "tdmin", o.tdmin, "tdmax", tdmax,
-              "numtd", o.numtd, "lambda", o.lambda, "maxiter", 30,
-              "tolpar", 1e-5, "tolfun", 1e-8, "stepmax", r.stepmax,
-              "stepreduction", o.srmult, "theta0", [], "fixed", [],
-              "fixed_values", [], "search_only", false,
-              "tdmax_limit", r.tdmax_limit);
+  ## tfsrivc's options (the core's table: its tolerances), 30 iterations
+  s = o.search;
+  [s.td0, s.fixtd, s.tdmax, s.maxiter, s.stepmax, s.tdmax_limit, s.theta0, ...
+   s.fixed, s.fixed_values, s.search_only] = deal ([], false, tdmax, 30,
+                                                   r.stepmax, r.tdmax_limit,
+                                                   [], [], [], false);
   if (o.integ)
     s.fixed = false (np + nz + 1, 1);
     s.fixed(np) = true;                 # f_np = 0: the pole at p = 0
