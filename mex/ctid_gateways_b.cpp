@@ -9,6 +9,7 @@
 // inside the gateway namespaces below no-ops.
 #include <algorithm>
 #include <complex>
+#include <limits>
 #include <mex.h>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "ctid/base/polynomial_inverse.hpp"
 #include "ctid/filters/focus_filter.hpp"
 #include "ctid/offline/cumulant_eiv.hpp"
+#include "ctid/offline/delay_search_defaults.hpp"
 #include "ctid/offline/freq_srivc.hpp"
 #include "ctid/offline/freq_srivc_options.hpp"
 #include "ctid/offline/gpmf_state_space.hpp"

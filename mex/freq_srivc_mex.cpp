@@ -13,7 +13,9 @@
 // `freq_srivc_mex (fname, "options")` returns the table. theta = [a; b]
 // or [a; b; td] (estimate_delay; several inputs: [a_1; ..; a_m; b_1; ..;
 // b_m]); cov its covariance; info: delay, noise_variance, loss,
-// iterations, converged, stable, reason.
+// iterations, converged, stable, reason, and w, Y, U the data the fit used
+// (core freq_fit_data: the frequencies where some input is nonzero, inside
+// the Focus band `band`; the delay range's defaults from them and `period`).
 //
 //   [w, Y, U, period] = freq_srivc_mex (fname, "relay", y, u, opts)
 //
@@ -56,8 +58,9 @@ std::vector<std::complex<double>> complex_column(const Gateway& g,
   return v;
 }
 
-mxArray* complex_output(const std::vector<std::complex<double>>& v) {
-  mxArray* a = mxCreateDoubleMatrix(v.size(), 1, mxCOMPLEX);
+mxArray* complex_output(const std::vector<std::complex<double>>& v, long rows,
+                        long cols) {
+  mxArray* a = mxCreateDoubleMatrix(rows, cols, mxCOMPLEX);
   double* re = mxGetPr(a);
   double* im = mxGetPi(a);
   for (std::size_t k = 0; k < v.size(); ++k) {
@@ -86,8 +89,9 @@ void relay_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   g.check(ctid::relay_frequency_data(y, u, n, ts, intsamp, &d));
   plhs[0] = ctid::mex::make_output_matrix(static_cast<long>(d.w.size()), 1);
   std::copy(d.w.begin(), d.w.end(), mxGetPr(plhs[0]));
-  if (nlhs >= 2) plhs[1] = complex_output(d.y);
-  if (nlhs >= 3) plhs[2] = complex_output(d.u);
+  const long k = static_cast<long>(d.w.size());
+  if (nlhs >= 2) plhs[1] = complex_output(d.y, k, 1);
+  if (nlhs >= 3) plhs[2] = complex_output(d.u, k, 1);
   if (nlhs >= 4) plhs[3] = mxCreateDoubleScalar(d.period);
 }
 
@@ -137,16 +141,14 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                                &config);
   opt.finish();
   ctid::FreqSettings<double> s;
-  g.check(ctid::freq_settings(config, static_cast<std::size_t>(inputs), &s));
+  ctid::FreqFitData<double> used;
+  g.check(ctid::freq_fit_data(config, w, Y.data(),
+                              U.empty() ? nullptr : U.data(), K,
+                              static_cast<std::size_t>(inputs), &used, &s));
   long np = 0;
   for (const ctid::FreqChannel<double>& c : s.channels()) np += c.na + c.nb;
 
-  ctid::FreqData<double> data;
-  data.w = w;
-  data.y = Y.data();
-  data.u = U.empty() ? nullptr : U.data();
-  data.num_frequencies = K;
-  data.num_inputs = static_cast<int>(inputs);
+  const ctid::FreqData<double> data = used.view();
   ctid::FreqResult<double> result;
   const ctid::Status status = ctid::freq_srivc(s, data, &result);
   if (status.code() != ctid::ErrorCode::kNotConverged) g.check(status);
@@ -164,10 +166,10 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
               mxGetPr(plhs[1]));
   }
   if (nlhs >= 3) {
-    const char* fields[] = {"delay",      "noise_variance", "loss",
-                            "iterations", "converged",      "stable",
-                            "reason"};
-    mxArray* info = mxCreateStructMatrix(1, 1, 7, fields);
+    const char* fields[] = {
+        "delay",  "noise_variance", "loss", "iterations", "converged",
+        "stable", "reason",         "w",    "Y",          "U"};
+    mxArray* info = mxCreateStructMatrix(1, 1, 10, fields);
     mxSetField(info, 0, "delay", mxCreateDoubleScalar(result.delay));
     mxSetField(info, 0, "noise_variance",
                mxCreateDoubleScalar(result.noise_variance));
@@ -176,6 +178,14 @@ void freq_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     mxSetField(info, 0, "converged", mxCreateLogicalScalar(result.converged));
     mxSetField(info, 0, "stable", mxCreateLogicalScalar(result.stable));
     mxSetField(info, 0, "reason", mxCreateString(result.reason.c_str()));
+    const long k_used = static_cast<long>(used.w.size());
+    mxArray* w_used = ctid::mex::make_output_matrix(k_used, 1);
+    std::copy(used.w.begin(), used.w.end(), mxGetPr(w_used));
+    mxSetField(info, 0, "w", w_used);
+    mxSetField(info, 0, "Y", complex_output(used.y, k_used, 1));
+    mxSetField(info, 0, "U",
+               used.u.empty() ? mxCreateDoubleMatrix(0, 0, mxREAL)
+                              : complex_output(used.u, k_used, inputs));
     plhs[2] = info;
   }
 }

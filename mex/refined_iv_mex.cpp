@@ -40,13 +40,23 @@
 // the same problem with the continuous delay of its one channel searched
 // (see delay_search_gateway).
 //
+//   range = refined_iv_mex (fname, "delay_range", y, u, t, given)
+//
+// the range of a delay search with the data's defaults
+// (delay_search_defaults.hpp) for what given leaves out; given fields:
+// tdmin, numtd, and tdmax, stepmax, td0 (the start delay), each absent or
+// [] when not given. range fields: tdmax, stepmax, tdmax_limit (half the
+// record when tdmax is the default, else 0), tdmax_auto.
+//
 //   [yf, uf] = refined_iv_mex (fname, "focus_filter", y, u, opts)
 //
 // y and u (N rows each) filtered column by column by the Focus band
 // (focus_filter.hpp); opts fields: ts, band ([w1 w2] rad/s), order.
 #include <algorithm>
+#include <limits>
 
 #include "ctid/filters/focus_filter.hpp"
+#include "ctid/offline/delay_search_defaults.hpp"
 #include "ctid/offline/refined_iv.hpp"
 #include "ctid/offline/refined_iv_delay.hpp"
 #include "ctid/offline/refined_iv_options.hpp"
@@ -92,6 +102,37 @@ void focus_filter_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs > 1) plhs[1] = to_output(u);
 }
 
+// The method 'delay_range' (see the header comment).
+void delay_range_gateway(const Gateway& g, mxArray* plhs[], int nrhs,
+                         const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "the delay_range method takes 6 arguments (fname, 'delay_range', "
+           "y, u, t, given), got " +
+               std::to_string(nrhs));
+  }
+  const ctid::RecordView<double> record =
+      ctid::mex::read_record(g, prhs[2], prhs[3], prhs[4]);
+  OptionsReader opt(g, prhs[5]);
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  ctid::DelayRangeRequest<double> given;
+  given.td_min = opt.scalar("tdmin");
+  given.num_td = opt.integer("numtd");
+  given.td_max = opt.scalar("tdmax", none);
+  given.step_max = opt.scalar("stepmax", none);
+  given.td_start = opt.scalar("td0", none);
+  opt.finish();
+  ctid::DelayRange<double> r;
+  g.check(ctid::delay_search_range(record, given, &r));
+  const char* fields[] = {"tdmax", "stepmax", "tdmax_limit", "tdmax_auto"};
+  mxArray* o = mxCreateStructMatrix(1, 1, 4, fields);
+  mxSetField(o, 0, "tdmax", mxCreateDoubleScalar(r.td_max));
+  mxSetField(o, 0, "stepmax", mxCreateDoubleScalar(r.step_max));
+  mxSetField(o, 0, "tdmax_limit", mxCreateDoubleScalar(r.extend_limit));
+  mxSetField(o, 0, "tdmax_auto", mxCreateLogicalScalar(r.td_max_from_data));
+  plhs[0] = o;
+}
+
 // The method 'tf_options' (see the header comment).
 void tf_options_gateway(const Gateway& g, mxArray* plhs[], int nrhs,
                         const mxArray* prhs[]) {
@@ -122,7 +163,9 @@ void tf_options_gateway(const Gateway& g, mxArray* plhs[], int nrhs,
   mxArray* o = mxCreateStructMatrix(1, 1, 12, fields);
   mxSetField(o, 0, "fixtd", mxCreateLogicalScalar(c.fix_td));
   mxSetField(o, 0, "tdmin", mxCreateDoubleScalar(c.td_min));
-  mxSetField(o, 0, "tdmax", mxCreateDoubleScalar(c.td_max));
+  mxSetField(o, 0, "tdmax",
+             std::isnan(c.td_max) ? mxCreateDoubleMatrix(0, 0, mxREAL)
+                                  : mxCreateDoubleScalar(c.td_max));
   mxSetField(o, 0, "numtd", mxCreateDoubleScalar(c.num_td));
   mxSetField(o, 0, "lambda", automatic(c.lambda));
   mxSetField(o, 0, "maxiter", mxCreateDoubleScalar(c.max_iterations));
@@ -217,6 +260,10 @@ void refined_iv_gateway(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     }
     if (method == "tf_options") {
       tf_options_gateway(g, plhs, nrhs, prhs);
+      return;
+    }
+    if (method == "delay_range") {
+      delay_range_gateway(g, plhs, nrhs, prhs);
       return;
     }
     if (method != "delay_search") {

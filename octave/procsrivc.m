@@ -20,8 +20,8 @@
 ## @code{idproc ("P2DU")}; its @code{Structure.Td} gives the delay: a
 ## finite @code{Value} starts the refinement there, @code{Minimum} and
 ## @code{Maximum} bound it (Maximum Inf: from the input-output
-## cross-correlation, as @code{tfsrivc}'s default TdMax, extended while
-## the loss is smallest at its end), and
+## cross-correlation, as @code{tfsrivc}'s default TdMax (at least twice
+## Minimum), extended while the loss is smallest at its end), and
 ## @code{Free} false keeps it. The other parameters' values are not used
 ## as a start (SRIVC starts itself); bounds other than Td are not
 ## enforced. @var{type}: the type string instead of a model. Options as
@@ -111,25 +111,25 @@ function [M, varargout] = procsrivc_body (varargin)
     Td = S.Td;
     lo = Td.Minimum;
     hi = Td.Maximum;
-    o.tdmax_auto = ! isfinite (hi);
-    if (o.tdmax_auto)
-      hi = contsid_default_tdmax (d.t, d.y, d.u);
-    endif
     if (! isfinite (lo) || lo < 0)
       lo = 0;
     endif
-    if (! (hi >= lo) || hi > T / 2)
+    if (! isfinite (hi))
+      hi = [];                          # the data's (delay_range below)
+    endif
+    if (! isempty (hi) && (! (hi >= lo) || hi > T / 2))
       error ("procsrivc:badInput",
              ["procsrivc: Td range [%g, %g] is empty ", ...
              "or beyond half the record (%g s)"], lo, hi, T);
     endif
     o.tdmin = lo;
     o.tdmax = hi;
+    o = delay_range (d, o);
     if (isfinite (Td.Value))
       td0 = Td.Value;
-      if (td0 < lo || td0 > hi)
+      if (td0 < lo || td0 > o.tdmax)
         error ("procsrivc:badInput", ["procsrivc: Td.Value %g is outside ", ...
-               "[Minimum, Maximum] = [%g, %g]"], td0, lo, hi);
+               "[Minimum, Maximum] = [%g, %g]"], td0, lo, o.tdmax);
       endif
     endif
     if (isfield (Td, "Free") && ! Td.Free)
@@ -140,9 +140,8 @@ function [M, varargout] = procsrivc_body (varargin)
     endif
   else
     td0 = 0;
+    o = delay_range (d, o);
   endif
-  h = median (diff (d.t));
-  o.stepmax = max ((o.tdmax - o.tdmin) / max (o.numtd - 1, 1), h);
   o.td0 = td0;
   o.theta0 = [];
   o.fixed = [];
@@ -256,6 +255,20 @@ function [M, varargout] = procsrivc_body (varargin)
   endfunction
 endfunction
 
+
+## TdMax when not given ([]) and StepMax: the data's (core
+## delay_search_defaults.hpp through refined_iv_mex's 'delay_range').
+function o = delay_range (d, o)
+  t = d.t;
+  if (d.uniform)
+    t = d.Ts;
+  endif
+  r = refined_iv_mex ("procsrivc", "delay_range", d.y, d.u, t,
+                      struct ("tdmin", o.tdmin, "numtd", o.numtd,
+                              "tdmax", o.tdmax));
+  [o.tdmax, o.stepmax, o.tdmax_limit] = deal (r.tdmax, r.stepmax,
+                                              r.tdmax_limit);
+endfunction
 
 %!shared data, M0, Ts, u
 %! Ts = 0.05;

@@ -34,7 +34,9 @@
 ## TdMax from the input-output cross-correlation as CONTSID: the lag of
 ## the largest |r_yu| up to half the record plus 10 samples, at least the
 ## smaller of a tenth of the record and 50 sampling intervals (irregular
-## data: the latter); 50 points).
+## data: on a regular grid of their median interval), at least twice
+## TdMin and twice the start delay, at most half the record, extended
+## while the grid's best delay lies at its upper end; 50 points).
 ## @item Lambda
 ## the SVF cut-off (rad/s) of the start (default: the engine's grid of
 ## cut-offs; CONTSID: 1/50 of the Nyquist frequency).

@@ -97,20 +97,14 @@ function [M, info] = contsid_freq (fname, args)
   intsamp = onoff (opts.IntSamp, "IntSamp");
 
   [w, Y, U, period, Ts] = frequency_data (data);
-  if (! isempty (band))
-    ## Focus [w1 w2] on frequency data: the frequencies inside the band
-    keep = w >= band(1) & w <= band(2);
-    if (sum (keep) < 1)
-      error ([fname ":badOption"], ["%s: the Focus band [%g %g] holds no ", ...
-             "frequency of the data"], fname, band(1), band(2));
-    endif
-    w = w(keep); Y = Y(keep);
-    if (! isempty (U))
-      U = U(keep, :);
-    endif
-  endif
+  ## the Focus band, the rows of zero input and the default TdMax: the
+  ## core's (freq_srivc_options.hpp, freq_fit_data)
   o.na = na;
   o.nb = nb;
+  o.band = band;
+  if (isfinite (period))
+    o.period = period;
+  endif
   tol = opts.Tol;
   if (isempty (tol))
     tol = opts.TolPar;
@@ -139,21 +133,12 @@ function [M, info] = contsid_freq (fname, args)
   endif
   if (estimate_td)
     o.estimate_delay = true;
-    tdmax = opts.TdMax;
-    if (isempty (tdmax))
-      if (isfinite (period))
-        tdmax = period / 2;
-      else
-        tdmax = pi / median (w(w > 0));
-      endif
-    endif
-    check_nonneg (opts.TdMin, "TdMin");
-    check_nonneg (tdmax, "TdMax");
-    if (tdmax < opts.TdMin)
-      error ([fname ":badOption"], "%s: TdMax must be >= TdMin", fname);
-    endif
+    check_scalar (opts.TdMin, "TdMin");
     o.td_min = opts.TdMin;
-    o.td_max = tdmax;
+    if (! isempty (opts.TdMax))
+      check_scalar (opts.TdMax, "TdMax");
+      o.td_max = opts.TdMax;
+    endif
     if (! isempty (opts.NumTd))          # (default: the core's table)
       if (! isscalar (opts.NumTd) || opts.NumTd < 2
           || opts.NumTd != round (opts.NumTd))
@@ -163,14 +148,11 @@ function [M, info] = contsid_freq (fname, args)
       o.num_td = opts.NumTd;
     endif
     o.grid = isempty (td0);
-    if (! isempty (td0))
-      o.td_min = min (o.td_min, td0);
-      o.td_max = max (o.td_max, td0);
-    endif
   endif
   o.output_error = strcmp (fname, "tffcoe") || pem;
 
   [theta, P, info] = freq_srivc_mex (fname, w, Y, U, o);
+  [w, Y, U] = deal (info.w, info.Y, info.U);   # the frequencies used
   if (! info.converged)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
              fname, info.reason);
@@ -196,9 +178,6 @@ function [M, info] = contsid_freq (fname, args)
   fit = struct ("FitPercent", 100 * (1 - sqrt (K * mse) / norm (Y)),
                 "LossFcn", mse, "MSE", mse,
                 "FPE", mse * (1 + npar / (2 * K)) / (1 - npar / (2 * K)));
-  info.w = w;
-  info.Y = Y;
-  info.U = U;
   ## getpvec's order: the numerators, then the denominators
   perm = [sum(na) + (1:sum (nb)), 1:sum(na)];
   if (strcmp (fname, "oe"))
@@ -287,9 +266,9 @@ function [M, info] = contsid_freq (fname, args)
     endif
   endfunction
 
-  function check_nonneg (v, name)
-    if (! isnumeric (v) || ! isscalar (v) || ! isreal (v) || ! (v >= 0)
-        || ! isfinite (v))
+  ## (a finite scalar for the gateway; its range is the core's)
+  function check_scalar (v, name)
+    if (! isnumeric (v) || ! isscalar (v) || ! isreal (v) || ! isfinite (v))
       error ([fname ":badOption"], "%s: %s must be a finite scalar >= 0",
              fname, name);
     endif
@@ -357,12 +336,6 @@ function [M, info] = contsid_freq (fname, args)
                "%s: U and Y need one row per frequency", fname);
       endif
       U = double (U);
-      keep = any (abs (U) > 0, 2);
-      w = w(keep); Y = Y(keep); U = U(keep, :);
-    endif
-    if (any (! isfinite (Y)) || any (! isfinite (U(:))))
-      error ([fname ":badInput"], "%s: the frequency data must be finite",
-             fname);
     endif
   endfunction
 

@@ -118,37 +118,42 @@ function o = read_options (fname, rest, o)
   o.band = contsid_focus_option (fname, o.focus);
 endfunction
 
-## tfcoe's CONTSID options, checked, with the StepReduction factor as the
-## multiplier in (0, 1) that contsid_tfsrivc applies (o.srmult) and
-## Integration as a flag (o.integ).
-function o = check_tfcoe_options (fname, o, T)
-  bad = @(msg) error ([fname ":badOption"], ["%s: " msg], fname);
-  scal = @(v) isnumeric (v) && isreal (v) && isscalar (v) && ! isnan (v);
-  if (! isempty (o.tolfun))
+## tfcoe's CONTSID options: those given checked, the rest filled in, by
+## the core's table of tfsrivc's (core/include/ctid/offline/
+## tfsrivc_options.hpp, refined_iv_mex's method 'tf_options'): the same
+## defaults; StepReduction as the multiplier in (0, 1) (o.srmult),
+## Integration as a flag (o.integ).  NumTd >= 2, TdMin below half the
+## record and TolFun are tfcoe's own rules.
+function o = tfcoe_options (fname, o, T)
+  given = struct ();
+  for key = {"tdmin", "tdmax", "numtd", "stepmax", "stepreduction", ...
+             "focusorder", "integration", "lambda"}
+    if (isfield (o, key{1}))
+      given.(key{1}) = o.(key{1});
+    endif
+  endfor
+  if (isfield (given, "integration"))
+    given.integration = contsid_on_off (fname, "Integration",
+                                        given.integration);
+  endif
+  c = refined_iv_mex (fname, "tf_options", given);
+  if (isfield (o, "tolfun") && ! isempty (o.tolfun))
     error ([fname ":notSupported"], ["%s: TolFun cannot be honoured: the ", ...
            "output-error iteration (pem_mex) stops on one tolerance, met ", ...
            "by the relative step and the relative loss decrease together ", ...
            "(TolPar)"], fname);
   endif
-  if (! scal (o.tdmin) || ! isfinite (o.tdmin) || o.tdmin < 0)
-    bad ("TdMin must be a scalar >= 0 (s)");
+  if (c.tdmin >= T / 2)
+    error ([fname ":badOption"], "%s: TdMin must lie below half the record",
+           fname);
   endif
-  if (o.tdmin >= T / 2)
-    bad ("TdMin must lie below half the record");
+  if (c.numtd < 2)
+    error ([fname ":badOption"], "%s: NumTd must be an integer >= 2", fname);
   endif
-  if (! scal (o.numtd) || ! isfinite (o.numtd) || o.numtd != fix (o.numtd)
-      || o.numtd < 2)
-    bad ("NumTd must be an integer >= 2");
-  endif
-  if (! isempty (o.stepmax) && ! (scal (o.stepmax) && o.stepmax > 0))
-    bad ("StepMax must be a scalar > 0 (s; Inf: unbounded)");
-  endif
-  o.srmult = contsid_step_reduction (fname, o.stepreduction);
-  f = o.focusorder;
-  if (! scal (f) || f != fix (f) || f < 1 || f > 10)
-    bad ("FocusOrder must be an integer in 1..10");
-  endif
-  o.integ = contsid_on_off (fname, "Integration", o.integration);
+  [o.tdmin, o.tdmax, o.numtd, o.stepmax, o.srmult, o.focusorder, o.integ, ...
+   o.lambda] = deal (c.tdmin, c.tdmax, c.numtd, c.stepmax, c.stepreduction,
+                     c.focusorder, c.integration, c.lambda);
+  o.search = c;
 endfunction
 
 function [theta, P, info] = call_gateway (fname, d, opts)
@@ -304,7 +309,8 @@ endfunction
 
 function check_unused (fname, o, keys)
   for i = 1:numel (keys)
-    if (! isempty (o.(keys{i})) && ! strcmpi (o.(keys{i}), "off"))
+    if (isfield (o, keys{i}) && ! isempty (o.(keys{i}))
+        && ! strcmpi (o.(keys{i}), "off"))
       error ([fname ":badOption"], "%s: option '%s' is not one of %s's",
              fname, keys{i}, fname);
     endif
@@ -353,49 +359,26 @@ function [M, info] = tf_model (fname, d, rest)
   T = d.t(end) - d.t(1);
   dflt = struct ("focus", "simulation",
                  "maxiter", contsid_pem_default ("maxiter"),
-                 "tol", contsid_pem_default ("tol"),
-                 "lambda", [], "overpar", "off", "tdmax", []);
+                 "tol", contsid_pem_default ("tol"), "overpar", "off");
   is_tfcoe = strcmp (fname, "tfcoe");
-  if (is_tfcoe)
-    dflt.tdmin = 0;
-    dflt.numtd = 50;
-    dflt.stepmax = [];
-    dflt.stepreduction = 2;
-    dflt.focusorder = 5;
-    dflt.integration = "off";
-    dflt.tolfun = [];
-  endif
   o = read_options (fname, rest, dflt);
   if (is_tfcoe)
-    o = check_tfcoe_options (fname, o, T);
+    o = tfcoe_options (fname, o, T);
     forder = o.focusorder;
   else
     check_unused (fname, o, {"lambda", "overpar", "tdmax"});
-    o.tdmin = 0;
-    o.integ = false;
+    [o.tdmin, o.tdmax, o.lambda, o.integ] = deal (0, [], [], false);
     forder = 4;
   endif
   if (! (ischar (o.overpar) && any (strcmpi (o.overpar, {"on", "off"}))))
     error ([fname ":badOption"], "%s: OverPar must be 'on' or 'off'", fname);
   endif
   overpar = strcmpi (o.overpar, "on");
-  if (! isempty (o.lambda) && ! (isnumeric (o.lambda) && isscalar (o.lambda)
-                                 && isreal (o.lambda) && o.lambda > 0
-                                 && isfinite (o.lambda)))
-    error ([fname ":badOption"], "%s: Lambda must be a scalar > 0 (rad/s)",
-           fname);
-  endif
   estimate = strcmp (fname, "tfcoe") && ! isempty (td);
   td_given = td;
   tdmax_given = ! isempty (o.tdmax);
-  if (isempty (o.tdmax))
+  if (! tdmax_given)
     o.tdmax = T / 2;
-  elseif (! (isnumeric (o.tdmax) && isscalar (o.tdmax) && o.tdmax >= 0
-             && isfinite (o.tdmax)))
-    error ([fname ":badOption"], "%s: TdMax must be a scalar >= 0", fname);
-  endif
-  if (o.tdmin > o.tdmax)
-    error ([fname ":badOption"], "%s: TdMin must not exceed TdMax", fname);
   endif
   if (o.tdmin > 0 && nz >= np)
     error ([fname ":badOption"], ["%s: TdMin applies to an estimated ", ...
@@ -536,25 +519,20 @@ endfunction
 ## losses (Report.Termination.DelaySearch).
 function [starts, tdmax, search] = srivc_delay_start (fname, d, np, nz, td0,
                                                       o, tdmax_given)
-  tdmax = o.tdmax;
-  if (! tdmax_given)
-    tdmax = max (contsid_default_tdmax (d.t, d.y, d.u), 2 * o.tdmin);
-    if (! isempty (td0))
-      tdmax = max (tdmax, 2 * td0);
-    endif
-    tdmax = min (tdmax, o.tdmax);
+  ## TdMax not given and StepMax: the data's (core delay_search_defaults.hpp)
+  given = struct ("tdmin", o.tdmin, "numtd", o.numtd, "stepmax", o.stepmax,
+                  "td0", td0);
+  if (tdmax_given)
+    given.tdmax = o.tdmax;
   endif
-  h = median (diff (d.t));
-  stepmax = o.stepmax;
-  if (isempty (stepmax))
-    stepmax = max ((tdmax - o.tdmin) / (o.numtd - 1), h);
-  endif
-  s = struct ("td0", [], "fixtd", false, "tdmin", o.tdmin, "tdmax", tdmax,
-              "numtd", o.numtd, "lambda", o.lambda, "maxiter", 30,
-              "tolpar", 1e-5, "tolfun", 1e-8, "stepmax", stepmax,
-              "stepreduction", o.srmult, "theta0", [], "fixed", [],
-              "fixed_values", [], "search_only", false,
-              "tdmax_auto", ! tdmax_given);
+  r = refined_iv_mex (fname, "delay_range", d.y, d.u, time_arg (d), given);
+  tdmax = r.tdmax;
+  ## tfsrivc's options (the core's table: its tolerances), 30 iterations
+  s = o.search;
+  [s.td0, s.fixtd, s.tdmax, s.maxiter, s.stepmax, s.tdmax_limit, s.theta0, ...
+   s.fixed, s.fixed_values, s.search_only] = deal ([], false, tdmax, 30,
+                                                   r.stepmax, r.tdmax_limit,
+                                                   [], [], [], false);
   if (o.integ)
     s.fixed = false (np + nz + 1, 1);
     s.fixed(np) = true;                 # f_np = 0: the pole at p = 0

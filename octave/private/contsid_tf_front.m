@@ -93,14 +93,10 @@ function [M, o, info] = contsid_tf_front (fname, args)
            fname);
   endif
   T = d.t(end) - d.t(1);
-  h = T / (rows (d.y) - 1);
-  if (! d.uniform)
-    h = median (diff (d.t));
-  endif
   ## The options given, forwarded to the core's table of CONTSID's tfsrivc
   ## defaults (core/include/ctid/offline/tfsrivc_options.hpp), which checks
   ## them and fills in the rest; Focus is read here (a cut-off, a band or a
-  ## word), TdMax defaults to the data's.
+  ## word).
   if (mod (numel (rest), 2) != 0)
     error ([fname ":badOption"], "%s: options come in name-value pairs",
            fname);
@@ -121,33 +117,29 @@ function [M, o, info] = contsid_tf_front (fname, args)
       given.(key{1}) = contsid_on_off (fname, key{2}, given.(key{1}));
     endif
   endfor
-  ## a default TdMax is extended while the loss is smallest at its end
-  tdmax_auto = ! isfield (given, "tdmax");
-  if (tdmax_auto)
-    given.tdmax = contsid_default_tdmax (d.t, d.y, d.u);
-  endif
   band = contsid_focus_option (fname, given.focus);
   o = refined_iv_mex (fname, "tf_options", rmfield (given, "focus"));
-  o.tdmax_auto = tdmax_auto;
   if (o.integration && ! isempty (band))
     error ([fname ":badOption"], ["%s: Integration is not applicable with ", ...
            "a Focus filter (as CONTSID documents)"], fname);
   endif
   df = contsid_focus_filter (fname, d, band, o.focusorder);
-  if (isempty (o.stepmax))
-    o.stepmax = max ((o.tdmax - o.tdmin) / max (o.numtd - 1, 1), h);
-  endif
   if (o.fixtd && isempty (td0))
     error ([fname ":badInput"], "%s: FixTd 'on' needs the delay (IODelay)",
            fname);
   endif
-  if (! isempty (td0) && ! o.fixtd && (td0 < o.tdmin || td0 > o.tdmax))
-    if (! o.tdmax_auto)
-      error ([fname ":badOption"], ["%s: the start delay %g is outside ", ...
-             "[TdMin, TdMax] = [%g, %g]"], fname, td0, o.tdmin, o.tdmax);
-    endif
-    o.tdmax = max (o.tdmax, 2 * td0 + h);
+  if (! isempty (td0) && ! o.fixtd && ! isempty (o.tdmax)
+      && (td0 < o.tdmin || td0 > o.tdmax))
+    error ([fname ":badOption"], ["%s: the start delay %g is outside ", ...
+           "[TdMin, TdMax] = [%g, %g]"], fname, td0, o.tdmin, o.tdmax);
   endif
+  ## TdMax and StepMax not given: the data's (core delay_search_defaults.hpp)
+  r = refined_iv_mex (fname, "delay_range", d.y, d.u, time_arg (d),
+                      struct ("tdmin", o.tdmin, "numtd", o.numtd,
+                              "tdmax", o.tdmax, "stepmax", o.stepmax,
+                              "td0", td0));
+  [o.tdmax, o.stepmax, o.tdmax_limit] = deal (r.tdmax, r.stepmax,
+                                              r.tdmax_limit);
   if (td0 > T / 2)
     error ([fname ":badInput"],
            ["%s: the delay %g exceeds half the record ", ...
@@ -175,7 +167,7 @@ function [M, o, info] = contsid_tf_front (fname, args)
     o.td0 = td;
     o.theta0 = [den(2:end), num].';
     o.tdmax = max (o.tdmax, info.tdmax);
-    o.tdmax_auto = false;
+    o.tdmax_limit = 0;
     grid = {info.grid, info.grid_loss};
     focus_start = struct ("IODelay", td, "num", num, "den", den);
   endif
@@ -241,5 +233,13 @@ function [M, o, info] = contsid_tf_front (fname, args)
   if (! converged && ! init)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
              fname, reason);
+  endif
+endfunction
+
+function t = time_arg (d)
+  if (d.uniform)
+    t = d.Ts;
+  else
+    t = d.t;
   endif
 endfunction

@@ -16,8 +16,10 @@
 ## @code{fixed}, @code{fixed_values} ([] or a mask over [f; b] and the
 ## values of the fixed entries, e.g. a pole at 0),
 ## @code{search_only} (the grid only: tfsrivc_init), and optionally
-## @code{tdmax_auto} (true: tdmax is a default, extended while the grid's
-## minimum lies at its upper end; @var{info}.tdmax the range used) and
+## @code{tdmax_limit} (> tdmax: the grid extended up to it while its
+## minimum lies at its upper end, as for the data's default TdMax of
+## @code{refined_iv_mex}'s method 'delay_range'; @var{info}.tdmax the range
+## used) and
 ## @code{noise} (tfrivc: [nd nc], a discrete ARMA noise model C/D
 ## estimated with the plant by RIVC, core refined_iv_bj.hpp through
 ## rivc_mex, at every delay; regular sampling only).
@@ -65,8 +67,8 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
     e.theta_init = o.theta0;
   endif
   limit = 0;
-  if (isfield (o, "tdmax_auto") && o.tdmax_auto)
-    limit = (d.t(end) - d.t(1)) / 2;
+  if (isfield (o, "tdmax_limit"))
+    limit = o.tdmax_limit;
   endif
   noise = [];
   if (isfield (o, "noise"))

@@ -5,12 +5,16 @@
 // settings written by hand and the same estimate to the last bit (and
 // the transfer function of the noise-free data), several inputs give one
 // channel each, and orders or delays without one entry per input are a
-// dimension mismatch.
+// dimension mismatch. freq_fit_data: the fit on data with rows of zero
+// input and frequencies outside the Focus band is the fit on the data
+// without them, and the delay range's defaults follow their rule.
 #include "ctid/offline/freq_srivc_options.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <complex>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -98,6 +102,121 @@ TEST(FreqSrivcOptions, ConfigByNameGivesTheSameEstimate) {
   v.integers = {2, 2000};
   ASSERT_TRUE(set_option(table, "na", v, &config).ok());
   EXPECT_EQ(freq_settings(config, 2, &two).code(), ErrorCode::kBadInput);
+}
+
+// G(s) = 2 / (s^2 + 1.2 s + 1) e^(-0.3 s) at w.
+std::vector<C> plant_response(const std::vector<double>& w) {
+  std::vector<C> g;
+  for (double wk : w) {
+    const C s(0, wk);
+    g.push_back(2.0 / (s * s + 1.2 * s + 1.0) * std::exp(-0.3 * s));
+  }
+  return g;
+}
+
+// Rows of zero input and frequencies outside the band are left out: the
+// estimate equals the one on the data written without them, to the last
+// bit; a non-finite value in a row left out is no error, in a row used it
+// is; a band that holds no frequency is a bad option.
+TEST(FreqSrivcOptions, FitDataLeavesOutZeroInputsAndTheBand) {
+  std::vector<double> w;
+  for (int k = 0; k < 60; ++k) w.push_back(0.1 * std::pow(100.0, k / 59.0));
+  const std::vector<C> g = plant_response(w);
+  std::vector<C> y, u;
+  std::vector<double> w_kept;
+  std::vector<C> y_kept, u_kept;
+  const double band[2] = {0.3, 4.0};
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    const C uk = k % 4 == 1 ? C(0) : C(1.0 + 0.1 * k, -0.5);
+    u.push_back(uk);
+    y.push_back(uk == C(0) ? C(std::numeric_limits<double>::quiet_NaN())
+                           : g[k] * uk);
+    if (uk != C(0) && w[k] >= band[0] && w[k] <= band[1]) {
+      w_kept.push_back(w[k]);
+      y_kept.push_back(y.back());
+      u_kept.push_back(uk);
+    }
+  }
+  FreqConfig<double> config;
+  config.na = {2};
+  config.nb = {1};
+  config.delay = {0.3};
+  config.band = {band[0], band[1]};
+  FreqFitData<double> used;
+  FreqSettings<double> s;
+  ASSERT_TRUE(freq_fit_data(config, w.data(), y.data(), u.data(),
+                            static_cast<Eigen::Index>(w.size()), 1, &used, &s)
+                  .ok());
+  ASSERT_EQ(used.w, w_kept);
+  ASSERT_EQ(used.y, y_kept);
+  ASSERT_EQ(used.u, u_kept);
+  FreqData<double> by_hand;
+  by_hand.w = w_kept.data();
+  by_hand.y = y_kept.data();
+  by_hand.u = u_kept.data();
+  by_hand.num_frequencies = static_cast<Eigen::Index>(w_kept.size());
+  FreqResult<double> a, b;
+  ASSERT_TRUE(freq_srivc(s, used.view(), &a).ok());
+  ASSERT_TRUE(freq_srivc(s, by_hand, &b).ok());
+  EXPECT_EQ(a.a, b.a);
+  EXPECT_EQ(a.b, b.b);
+  EXPECT_NEAR(a.a(0), 1.2, 1e-8);
+  EXPECT_NEAR(a.b(0), 2.0, 1e-8);
+
+  std::vector<C> y_bad = y;
+  y_bad[2] = C(std::numeric_limits<double>::infinity());  // a row used
+  EXPECT_EQ(freq_fit_data(config, w.data(), y_bad.data(), u.data(),
+                          static_cast<Eigen::Index>(w.size()), 1, &used, &s)
+                .code(),
+            ErrorCode::kBadInput);
+  config.band = {500, 600};
+  EXPECT_EQ(freq_fit_data(config, w.data(), y.data(), u.data(),
+                          static_cast<Eigen::Index>(w.size()), 1, &used, &s)
+                .code(),
+            ErrorCode::kBadOption);
+}
+
+// The estimated delay's range: td_max half the period of periodic data,
+// else pi over the median positive frequency used (w = 0 not counted), a
+// start delay outside the range widens it; the given td_max is kept.
+TEST(FreqSrivcOptions, FitDataDelayRange) {
+  const std::vector<double> w = {0, 1, 2, 4, 8, 16};
+  const std::vector<C> y = plant_response(w);
+  FreqConfig<double> config;
+  config.na = {2};
+  config.nb = {1};
+  config.settings.estimate_delay = true;
+  FreqFitData<double> used;
+  FreqSettings<double> s;
+  const auto run = [&]() {
+    return freq_fit_data(config, w.data(), y.data(),
+                         static_cast<const C*>(nullptr), 6, 1, &used, &s);
+  };
+  ASSERT_TRUE(run().ok());
+  EXPECT_EQ(s.td_max, M_PI / 4);  // median of 1 2 4 8 16
+  config.band = {0, 3};           // 0 1 2 used: median of 1 2
+  ASSERT_TRUE(run().ok());
+  EXPECT_EQ(s.td_max, M_PI / 1.5);
+  config.band.clear();
+  config.period = 5;
+  ASSERT_TRUE(run().ok());
+  EXPECT_EQ(s.td_max, 2.5);
+  config.delay = {3.5};  // a start beyond the range widens it
+  config.settings.td_min = 0.5;
+  ASSERT_TRUE(run().ok());
+  EXPECT_EQ(s.td_max, 3.5);
+  EXPECT_EQ(s.td_min, 0.5);
+  config.td_max = 7;
+  ASSERT_TRUE(run().ok());
+  EXPECT_EQ(s.td_max, 7);
+  config.td_max = 0.25;  // below TdMin
+  EXPECT_EQ(run().code(), ErrorCode::kBadOption);
+  config.td_max = std::numeric_limits<double>::quiet_NaN();
+  config.settings.td_min = -1;
+  EXPECT_EQ(run().code(), ErrorCode::kBadOption);
+  // not estimated: no range is read
+  config.settings.estimate_delay = false;
+  ASSERT_TRUE(run().ok());
 }
 
 }  // namespace

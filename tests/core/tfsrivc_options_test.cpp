@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace ctid {
@@ -35,6 +36,10 @@ TEST(TfsrivcOptions, DefaultsAreTheConfigs) {
   EXPECT_EQ(config.tol_par, 1e-5);
   EXPECT_EQ(config.tol_fun, 1e-8);
   EXPECT_EQ(config.focus_order, 5);
+  // TdMax left out: the data's (delay_search_defaults.hpp), valid as such
+  EXPECT_TRUE(std::isnan(config.td_max));
+  EXPECT_EQ(shown("tdmax"), "(from the input-output cross-correlation)");
+  EXPECT_TRUE(validate(config).ok());
   OptionValue v;
   TfsrivcConfig<double> c;
   EXPECT_EQ(set_option(table, "not_an_option", v, &c).code(),

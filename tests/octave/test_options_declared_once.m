@@ -98,6 +98,7 @@ function test_options_declared_once ()
   check_frequency_options ();
   check_refined_iv_options ();
   check_tfsrivc_options ();
+  check_tfcoe_options ();
 
   ## Given explicitly at the table's default, each option changes nothing.
   T = riv_mex ("rsrivc", "options");
@@ -395,6 +396,33 @@ function check_tfsrivc_options ()
   catch err
     assert (err.identifier, "tfsrivc:badOption");
   end_try_catch
+endfunction
+
+## tfcoe's CONTSID delay-search options are read by the same table as
+## tfsrivc's (tfsrivc_options.hpp): the defaults tfcoe's help states are
+## the table's.
+function check_tfcoe_options ()
+  T = refined_iv_mex ("tfcoe", "tf_options", "options");
+  default_of = @(n) T(strcmp ({T.name}, n)).default;
+  text = regexprep (get_help_text ("tfcoe"), '\s+', " ");
+  stated = {"tdmin", '@item TdMin Lower bound [^(]*\(s, default ([0-9.]+)\)';
+            "numtd", '@item NumTd [^(]*\(default ([0-9]+);';
+            "stepreduction", 'convention, default ([0-9.]+)\); a value';
+            "focusorder", 'integer 1\.\.10 \(default ([0-9]+)\)';
+            "integration", 'Default @qcode\{"(on|off)"\}\. Not applicable'};
+  words = struct ("on", "true", "off", "false");
+  for k = 1:rows (stated)
+    t = regexp (text, stated{k, 2}, "tokens", "once");
+    assert (numel (t) == 1, ["tfcoe: the help states no default of ", ...
+                             stated{k, 1}]);
+    v = t{1};
+    if (isfield (words, v))
+      v = words.(v);
+    endif
+    assert (same_default (v, default_of (stated{k, 1})),
+            sprintf ("tfcoe: the help says %s %s, the core %s",
+                     stated{k, 1}, v, default_of (stated{k, 1})));
+  endfor
 endfunction
 
 ## The @item block of the help text that names option NAME (an item may

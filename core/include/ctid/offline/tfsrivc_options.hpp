@@ -7,7 +7,8 @@
 // defaults of tfsrivc (NumTd 50, MaxIter 100, StepReduction 2, FocusOrder
 // 5, FixTd and Integration off), except the tolerances, tighter here
 // (CONTSID: 1e-4 both), and StepMax, one grid spacing here (a Gauss-Newton
-// step on td never jumps over the grid's minimum). They differ from the
+// step on td never jumps over the grid's minimum). TdMax and StepMax left
+// out are the data's (delay_search_defaults.hpp). They differ from the
 // refined-IV engine's (refined_iv_options.hpp) and are mapped onto it and
 // onto the delay search (refined_iv_delay_options()) by the host. The
 // ranges are checked once, by validate(TfsrivcConfig) below.
@@ -19,6 +20,8 @@
 //   if (s.ok()) s = validate(config);
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "ctid/base/options.hpp"
@@ -30,9 +33,10 @@ template <typename S>
 struct TfsrivcConfig {
   bool fix_td = false;  // keep the start delay
   S td_min = 0;         // the delay range of the search (time units)
-  S td_max = 0;         // (a host gives it: its default depends on the data)
-  int num_td = 50;      // the delays of the grid
-  S lambda = 0;         // the SVF cut-off of the start; 0: the engine's grid
+  // NaN: from the data (delay_search_defaults.hpp, delay_search_range)
+  S td_max = std::numeric_limits<S>::quiet_NaN();
+  int num_td = 50;  // the delays of the grid
+  S lambda = 0;     // the SVF cut-off of the start; 0: the engine's grid
   int max_iterations = 100;  // SRIVC iterations and Gauss-Newton steps
   S tol_par = S(1e-5);       // relative change of theta; delay step (samples)
   S tol_fun = S(1e-8);       // relative loss decrease
@@ -54,7 +58,8 @@ Status validate(const TfsrivcConfig<S>& c) {
   const auto bad = [](const char* m) {
     return Status(ErrorCode::kBadOption, m);
   };
-  if (!(c.td_min >= 0) || !(c.td_max >= c.td_min)) {
+  if (!(c.td_min >= 0) || !std::isfinite(c.td_min) ||
+      !(std::isnan(c.td_max) || c.td_max >= c.td_min)) {
     return bad("need 0 <= TdMin <= TdMax (finite)");
   }
   if (c.num_td < 1) return bad("NumTd must be an integer >= 1");
@@ -118,9 +123,22 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
     t.push_back(real("tdmin", false, "finite, >= 0",
                      "the lower end of the delay search (time units)",
                      &C::td_min));
-    t.push_back(real("tdmax", true, "finite, >= tdmin",
-                     "the upper end of the delay search (time units)",
-                     &C::td_max));
+    t.push_back(OptionDecl<C>{
+        "tdmax",
+        OptionType::kReal,
+        false,
+        {},
+        "finite, >= tdmin",
+        "the upper end of the delay search (time units)",
+        [](const C& c) {
+          return std::isnan(c.td_max)
+                     ? std::string("(from the input-output cross-correlation)")
+                     : number(c.td_max);
+        },
+        [](C* c, V v) {
+          c->td_max = static_cast<S>(v.real);
+          return Status::Ok();
+        }});
     t.push_back(
         count("numtd", ">= 1", "the delays of the search's grid", &C::num_td));
     t.push_back(automatic("lambda", "(the engine's grid of cut-offs)",
