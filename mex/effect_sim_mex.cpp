@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
-// MEX gateway of the effect-model simulator (core/include/ctid/
-// effect_simulator.hpp), used by octave/private/residtrace_simulate.m:
+// MEX gateway of residtrace's computations (core/include/ctid/apps/
+// residtrace/) and of the effect-model simulator (core/include/ctid/
+// simulation/effect_simulator.hpp):
 //
 //   [x, u1] = effect_sim_mex (fname, W, options)
 //
@@ -784,6 +785,9 @@ void simulate_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   ctid::mex::OptionsReader opt(g, prhs[4]);
   const double ts = opt.scalar("ts");
   const int substeps = opt.integer("substeps", 1);
+  if (substeps < 1 || substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
   ctid::residtrace::ClosedLoop<double> loop;
   const bool closed =
       ctid::mex::read_closed_loop(g, opt.field("loop"), n, &loop);
@@ -828,6 +832,9 @@ void valerror_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   ctid::mex::OptionsReader opt(g, prhs[4]);
   const int substeps = opt.integer("substeps", 1);
+  if (substeps < 1 || substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
   V.thm = optional_signal(g, opt.field("thm"), "thm",
                           n + static_cast<long>(V.u_pre.rows()));
   const Eigen::MatrixXd yh = optional_signal(g, opt.field("yh"), "yh", n);
@@ -898,6 +905,12 @@ void fitmodel_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   settings.max_iterations = opt.integer("maxiter");
   settings.keep_order = opt.flag("keep_order", false);
   settings.substeps = opt.integer("substeps", 1);
+  if (settings.substeps < 1 || settings.substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
+  if (settings.max_iterations < 1) {
+    g.fail("badOption", "option 'maxiter' must be >= 1");
+  }
   opt.finish();
   ctid::residtrace::ResidtraceModel<double> fit;
   g.check(ctid::residtrace::fit_model<double>(tmpl, D, starts, settings, &fit));

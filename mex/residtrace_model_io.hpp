@@ -63,6 +63,16 @@ inline double number(const Gateway& g, const mxArray* a,
   return v(0);
 }
 
+// A whole number in [0, 1e6] (empty: fallback).
+inline int count(const Gateway& g, const mxArray* a, const std::string& what,
+                 int fallback) {
+  const double v = number(g, a, what, fallback);
+  if (!(v >= 0 && v <= 1e6) || v != std::floor(v)) {
+    g.fail("badInput", what + " must be a whole number >= 0");
+  }
+  return static_cast<int>(v);
+}
+
 inline std::string word(const Gateway& g, const mxArray* a,
                         const std::string& what) {
   return g.text(a, what);
@@ -104,9 +114,9 @@ inline residtrace::StructureChannel<double> read_channel(const Gateway& g,
   } else {
     g.fail("badInput", "unknown channel type '" + type + "'");
   }
-  c.col = static_cast<int>(number(g, field(s, "col", j), "channel col", 0)) - 1;
-  c.nb = static_cast<int>(number(g, field(s, "nb", j), "channel nb", 1));
-  c.nk = static_cast<int>(number(g, field(s, "nk", j), "channel nk", 0));
+  c.col = count(g, field(s, "col", j), "channel col", 0) - 1;
+  c.nb = count(g, field(s, "nb", j), "channel nb", 1);
+  c.nk = count(g, field(s, "nk", j), "channel nk", 0);
   c.B = values(g, field(s, "B", j), "channel B");
   if (c.kind == ChannelKind::kNode) {
     if (empty(param) || !mxIsStruct(param)) {
@@ -161,8 +171,10 @@ inline residtrace::PhysicalModel<double> read_phys(const Gateway& g,
   } else {
     g.fail("notSupported", "realisation '" + kind + "'");
   }
-  p.substeps = static_cast<int>(number(g, field(P, "substeps"), "substeps", 1));
-  if (p.substeps < 1) g.fail("badInput", "phys.substeps must be >= 1");
+  p.substeps = count(g, field(P, "substeps"), "phys.substeps", 1);
+  if (p.substeps < 1 || p.substeps > 10000) {
+    g.fail("badInput", "phys.substeps must lie in [1, 1e4]");
+  }
   p.yscale = number(g, field(P, "yscale"), "phys.yscale", 1);
   const double lo = number(g, field(P, "lo"), "phys.lo", -INFINITY);
   const double hi = number(g, field(P, "hi"), "phys.hi", INFINITY);

@@ -331,8 +331,18 @@ Status simulate_model(const ResidtraceModel<S>& model, const Matrix<S>& u, S ts,
   if (static_cast<Eigen::Index>(model.fixed.size()) != n) {
     return dimension_mismatch("fixed needs one flag per coefficient of F");
   }
-  if (!(ts > 0)) return bad_input("the sampling interval must be > 0");
+  if (!(ts > 0) || !std::isfinite(ts)) {
+    return bad_input("the sampling interval must be finite and > 0");
+  }
   if (substeps < 1) return bad_input("substeps must be >= 1");
+  if (!model.F.allFinite()) return bad_input("F must be finite");
+  for (const StructureChannel<S>& c : model.channels) {
+    if (!c.B.allFinite()) return bad_input("the numerators must be finite");
+    if (c.nk < 0 || c.nb < 0) return bad_input("nb and nk must be >= 0");
+  }
+  if (thm != nullptr && !thm->allFinite()) {
+    return bad_input("the parameter path must be finite");
+  }
   for (const OutputTerm<S>& t : model.out) {
     const Eigen::Index need = t.kind == OutputTermKind::kOffset ? 1 : 2;
     if (t.c.size() < need) {
@@ -513,9 +523,9 @@ Status validation_error(const ResidtraceModel<S>& model,
     for (Eigen::Index k = 0; k < N; ++k) {
       S acc = 0;
       for (Eigen::Index i = q; i >= 1; --i) {
-        if (k - i >= 0) acc = a(i) / a(0) * (*e)(k - i) + acc;
+        if (k - i >= 0) acc = a(i) * (*e)(k - i) + acc;
       }
-      p(k) = a(0) / a(0) * (*e)(k) + acc;
+      p(k) = a(0) * (*e)(k) + acc;
     }
     *yh += *e - p;
     *e = p;
