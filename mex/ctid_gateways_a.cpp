@@ -15,8 +15,11 @@
 
 #include "ctid/adaptation/nlopt_minimizer.hpp"
 #include "ctid/adaptation/qn_ml.hpp"
+#include "ctid/apps/residtrace/model.hpp"
+#include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
+#include "ctid/apps/residtrace/simulate.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/apps/residtrace/structure_fit.hpp"
 #include "ctid/apps/residtrace/track.hpp"
@@ -30,6 +33,7 @@
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"
 #include "options_reader.hpp"
+#include "residtrace_model_io.hpp"
 
 namespace gw_riv {
 #define mexFunction entry

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Copyright (C) the ctid authors
-// MEX gateway of the effect-model simulator (core/include/ctid/
-// effect_simulator.hpp), used by octave/private/residtrace_simulate.m:
+// MEX gateway of residtrace's computations (core/include/ctid/apps/
+// residtrace/) and of the effect-model simulator (core/include/ctid/
+// simulation/effect_simulator.hpp):
 //
 //   [x, u1] = effect_sim_mex (fname, W, options)
 //
@@ -66,6 +67,22 @@
 //     vhat, ysm, initial_state, missing, starts (a cell of F's, [] the
 //     engine's automatic start), maxiter; fit: ok, failed_round, F, B, out_c,
 //     out_cstd, out_fitted, theta, cov, s2, np, bic, e.
+//   [y, x, uc] = effect_sim_mex (fname, "simulate", model, u, options)
+//     the simulation of a residtrace model (the struct of
+//     residtrace_model_io.hpp; simulate.hpp, simulate_model) from rest on
+//     the inputs u (N-by-nu): output y, dynamic part x, inputs applied uc;
+//     options: ts, substeps, loop ([] or num, den, r1, r2: the closed
+//     loop), thm ([] or N rows: the path of drifting parameters);
+//   [e, yh] = effect_sim_mex (fname, "valerror", model, V, options)
+//     its error on the record V (simulate.hpp, validation_error): fields
+//     y, u, Ts, loop, pre ([] or the part before it, with u), missing;
+//     options: substeps, thm ([] or the path over the whole record), yh
+//     ([] or the simulation with its initial state fitted by the caller);
+//   model = effect_sim_mex (fname, "fitmodel", tmpl, D, options)
+//     the fit of a residtrace model (model_fit.hpp, fit_model): tmpl with
+//     the estimate; D: y, u, Ts, intersample, vhat, ysm, initial_state,
+//     missing, loop; options: starts (a cell of F's), maxiter, keep_order,
+//     substeps.
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
 //   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
 //   channel j's numerator right-aligned in column j), nb (1-by-m numerator
@@ -76,13 +93,17 @@
 //   for the fit also initial_state (0 or 1) and maxiter.
 // The signals and estimates may hold non-finite values (they propagate as
 // in the recursion itself).
+#include "ctid/apps/residtrace/model.hpp"
+#include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
+#include "ctid/apps/residtrace/simulate.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/apps/residtrace/structure_fit.hpp"
 #include "ctid/apps/residtrace/track.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
+#include "residtrace_model_io.hpp"
 
 namespace {
 
@@ -733,6 +754,169 @@ void fit_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   mxSetField(plhs[0], 0, "e", put_matrix(fit.e));
 }
 
+// A field of a record struct (absent: nullptr).
+const mxArray* record_field(const mxArray* s, const char* name) {
+  return mxGetField(s, 0, name);
+}
+
+Eigen::MatrixXd record_matrix(const Gateway& g, const mxArray* s,
+                              const char* name, long rows) {
+  const mxArray* a = record_field(s, name);
+  if (a == nullptr)
+    g.fail("badInput", std::string("the record has no ") + name);
+  return any_matrix(g, a, name, rows, -1);
+}
+
+void require_record(const Gateway& g, const mxArray* s, const char* what) {
+  if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1) {
+    g.fail("badInput", std::string(what) + " must be a 1x1 struct");
+  }
+}
+
+void simulate_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "simulate takes (fname, 'simulate', model, u, options)");
+  }
+  if (nlhs > 3) g.fail("badInput", "simulate has at most 3 outputs");
+  const auto model = ctid::mex::read_model(g, prhs[2]);
+  const Eigen::MatrixXd u = any_matrix(g, prhs[3], "u");
+  const long n = static_cast<long>(u.rows());
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const double ts = opt.scalar("ts");
+  const int substeps = opt.integer("substeps", 1);
+  if (substeps < 1 || substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
+  ctid::residtrace::ClosedLoop<double> loop;
+  const bool closed =
+      ctid::mex::read_closed_loop(g, opt.field("loop"), n, &loop);
+  const Eigen::MatrixXd thm = optional_signal(g, opt.field("thm"), "thm", n);
+  opt.finish();
+  ctid::residtrace::ModelSimulation<double> sim;
+  g.check(ctid::residtrace::simulate_model<double>(
+      model, u, ts, closed ? &loop : nullptr, substeps,
+      thm.size() ? &thm : nullptr, &sim));
+  plhs[0] = put_matrix(sim.y);
+  if (nlhs >= 2) plhs[1] = put_matrix(sim.x);
+  if (nlhs >= 3) plhs[2] = put_matrix(sim.uc);
+}
+
+void valerror_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "valerror takes (fname, 'valerror', model, V, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "valerror has at most 2 outputs");
+  const auto model = ctid::mex::read_model(g, prhs[2]);
+  const mxArray* s = prhs[3];
+  require_record(g, s, "V");
+  ctid::residtrace::ValidationRecord<double> V;
+  V.y = record_matrix(g, s, "y", -1).reshaped();
+  const long n = static_cast<long>(V.y.size());
+  V.u = record_matrix(g, s, "u", n);
+  V.ts = g.scalar(record_field(s, "Ts"), "V.Ts");
+  V.closed =
+      ctid::mex::read_closed_loop(g, record_field(s, "loop"), n, &V.loop);
+  const mxArray* pre = record_field(s, "pre");
+  if (pre != nullptr && !mxIsEmpty(pre)) {
+    require_record(g, pre, "V.pre");
+    V.u_pre = record_matrix(g, pre, "u", -1);
+  }
+  const mxArray* miss = record_field(s, "missing");
+  if (miss != nullptr &&
+      mxGetNumberOfElements(miss) == static_cast<std::size_t>(n)) {
+    const Eigen::VectorXd mv =
+        ctid::mex::model_io_detail::values(g, miss, "V.missing");
+    for (long k = 0; k < n; ++k) V.missing.push_back(mv(k) != 0);
+  }
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  const int substeps = opt.integer("substeps", 1);
+  if (substeps < 1 || substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
+  V.thm = optional_signal(g, opt.field("thm"), "thm",
+                          n + static_cast<long>(V.u_pre.rows()));
+  const Eigen::MatrixXd yh = optional_signal(g, opt.field("yh"), "yh", n);
+  if (yh.size()) V.yh_given = yh.col(0);
+  opt.finish();
+  Eigen::VectorXd e, yhat;
+  g.check(ctid::residtrace::validation_error<double>(model, V, substeps, &e,
+                                                     &yhat));
+  plhs[0] = put_matrix(e);
+  if (nlhs >= 2) plhs[1] = put_matrix(yhat);
+}
+
+void fitmodel_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput", "fitmodel takes (fname, 'fitmodel', tmpl, D, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "fitmodel has one output");
+  const auto tmpl = ctid::mex::read_model(g, prhs[2]);
+  const mxArray* s = prhs[3];
+  require_record(g, s, "D");
+  ctid::residtrace::FitRecord<double> D;
+  D.y = record_matrix(g, s, "y", -1).reshaped();
+  const long n = static_cast<long>(D.y.size());
+  D.u = record_matrix(g, s, "u", n);
+  D.ts = g.scalar(record_field(s, "Ts"), "D.Ts");
+  if (!(D.ts > 0)) g.fail("badInput", "D.Ts must be > 0");
+  const mxArray* rule = record_field(s, "intersample");
+  std::string r = rule ? g.text(rule, "D.intersample") : std::string("zoh");
+  for (char& c : r) c = static_cast<char>(std::tolower(c));
+  if (r != "zoh" && r != "foh") {
+    g.fail("badInput", "D.intersample must be 'zoh' or 'foh'");
+  }
+  D.rule = r == "foh" ? ctid::InterSample::kFoh : ctid::InterSample::kZoh;
+  D.vhat = optional_signal(g, record_field(s, "vhat"), "D.vhat", n);
+  const Eigen::MatrixXd ysm =
+      optional_signal(g, record_field(s, "ysm"), "D.ysm", n);
+  if (ysm.size()) D.ysm = ysm.col(0);
+  const mxArray* x0 = record_field(s, "initial_state");
+  D.initial_state =
+      x0 != nullptr && !mxIsEmpty(x0) &&
+      ctid::mex::model_io_detail::number(g, x0, "D.initial_state", 0) != 0;
+  const mxArray* miss = record_field(s, "missing");
+  if (miss != nullptr &&
+      mxGetNumberOfElements(miss) == static_cast<std::size_t>(n)) {
+    const Eigen::VectorXd mv =
+        ctid::mex::model_io_detail::values(g, miss, "D.missing");
+    for (long k = 0; k < n; ++k) D.missing.push_back(mv(k) != 0);
+  }
+  D.closed =
+      ctid::mex::read_closed_loop(g, record_field(s, "loop"), n, &D.loop);
+  ctid::mex::OptionsReader opt(g, prhs[4]);
+  std::vector<Eigen::VectorXd> starts;
+  const mxArray* st = opt.field("starts");
+  if (st != nullptr && !mxIsEmpty(st)) {
+    if (!mxIsCell(st)) g.fail("badOption", "starts must be a cell");
+    for (std::size_t i = 0; i < mxGetNumberOfElements(st); ++i) {
+      const mxArray* F0 = mxGetCell(st, i);
+      if (F0 == nullptr || mxIsEmpty(F0)) {
+        starts.push_back(Eigen::VectorXd());
+      } else {
+        const auto v = g.eigen_matrix(F0, "a start");
+        starts.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()));
+      }
+    }
+  }
+  ctid::residtrace::ModelFitSettings settings;
+  settings.max_iterations = opt.integer("maxiter");
+  settings.keep_order = opt.flag("keep_order", false);
+  settings.substeps = opt.integer("substeps", 1);
+  if (settings.substeps < 1 || settings.substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
+  if (settings.max_iterations < 1) {
+    g.fail("badOption", "option 'maxiter' must be >= 1");
+  }
+  opt.finish();
+  ctid::residtrace::ResidtraceModel<double> fit;
+  g.check(ctid::residtrace::fit_model<double>(tmpl, D, starts, settings, &fit));
+  plhs[0] = ctid::mex::write_model(prhs[2], fit);
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -762,6 +946,12 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             channels_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "fit") {
             fit_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "simulate") {
+            simulate_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "valerror") {
+            valerror_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "fitmodel") {
+            fitmodel_method(g, nlhs, plhs, nrhs, prhs);
           } else {
             g.fail("badInput", "unknown method '" + method + "'");
           }

@@ -31,67 +31,43 @@
 ## @code{residtrace_bridge}) e is 0 and yh the bridged y: they are not
 ## scored.
 ## @end itemize
+## The error is computed in the core
+## (core/include/ctid/apps/residtrace/simulate.hpp, validation_error,
+## gateway @code{effect_sim_mex}, method "valerror"); the parameter path
+## of a drifting model and a cascade's initial levels are found here and
+## passed to it.
 ## @end deftypefn
 
 function [e, yh] = residtrace_valerror (model, V, ctx)
-  N = numel (V.y);
+  o = struct ("substeps", ctx.opts.substeps, "thm", [], "yh", []);
   m = model;
-  sins = strcmp ({m.out.type}, "sinusoid");
-  omegas = [m.out(sins).omega];
-  m.out(sins) = [];
-  ## With a prefix (the estimation part of a split record) the simulation
-  ## starts at the beginning of the whole record, driven by its input.
-  Vf = V;
-  npre = 0;
-  if (! isempty (V.pre))
-    npre = numel (V.pre.y);
-    Vf.y = [V.pre.y; V.y];
-    Vf.u = [V.pre.u; V.u];
-    Vf.vhat = [V.pre.vhat; V.vhat];
-    Vf.ysm = [V.pre.ysm; V.ysm];
+  m.out(strcmp ({m.out.type}, "sinusoid")) = [];
+  if (! isempty (m.ltv))
+    ## With a prefix (the estimation part of a split record) the tracking
+    ## starts at the beginning of the whole record.
+    Vf = V;
+    npre = 0;
+    if (! isempty (V.pre))
+      npre = numel (V.pre.y);
+      Vf.y = [V.pre.y; V.y];
+      Vf.u = [V.pre.u; V.u];
+      Vf.vhat = [V.pre.vhat; V.vhat];
+      Vf.ysm = [V.pre.ysm; V.ysm];
+    endif
+    if (strcmp (m.ltv.method, "rsrivc"))
+      o.thm = track_rsrivc (m, Vf, npre);
+    else
+      o.thm = residtrace_track (m, Vf, ctx, m.ltv.Qn, m.ltv.th0, m.ltv.P0,
+                                npre + 1);
+    endif
+  elseif (isfield (m, "x0") && m.x0 && has_levels (m) && isempty (V.pre))
+    yh = residtrace_simulate (m, V.u, V.Ts, V.loop, ctx.opts.substeps);
+    if (all (isfinite (V.y - yh)))
+      yh = refit_levels (m, V, ctx);
+    endif
+    o.yh = yh;
   endif
-  if (! isempty (m.ltv) && strcmp (m.ltv.method, "rsrivc"))
-    thm = track_rsrivc (m, Vf, npre);
-    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps, thm);
-  elseif (! isempty (m.ltv))
-    thm = residtrace_track (m, Vf, ctx, m.ltv.Qn, m.ltv.th0, m.ltv.P0,
-                            npre + 1);
-    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps, thm);
-  else
-    yh = residtrace_simulate (m, Vf.u, V.Ts, V.loop, ctx.opts.substeps);
-  endif
-  yh = yh(npre+1:end);
-  e = V.y - yh;
-  if (isfield (m, "x0") && m.x0 && all (isfinite (e)) && has_levels (m)
-      && isempty (m.ltv) && isempty (V.pre))
-    [e, yh] = refit_levels (m, V, ctx);
-  elseif (isfield (m, "x0") && m.x0 && all (isfinite (e)))
-    X = residtrace_free (m.F, N, V.Ts);
-    f = X * (X \ e);
-    yh += f;
-    e -= f;
-  endif
-  if (! isempty (omegas) && all (isfinite (e)))
-    t = (0:N-1)' * V.Ts;
-    X = [sin(t * omegas), cos(t * omegas)];
-    h = floor (N / 2);
-    i1 = 1:h; i2 = h+1:N;
-    s = zeros (N, 1);
-    s(i2) = X(i2, :) * (X(i1, :) \ e(i1));
-    s(i1) = X(i1, :) * (X(i2, :) \ e(i2));
-    yh += s;
-    e -= s;
-  endif
-  if (! isempty (m.noise))
-    p = filter (m.noise, 1, e);
-    yh += e - p;
-    e = p;
-  endif
-  if (isfield (V, "missing") && any (V.missing))
-    ## a missing sample (bridged, residtrace_bridge) carries no error
-    e(V.missing) = 0;
-    yh(V.missing) = V.y(V.missing);
-  endif
+  [e, yh] = effect_sim_mex ("residtrace", "valerror", model, V, o);
 endfunction
 
 function ok = has_levels (m)
@@ -104,8 +80,8 @@ endfunction
 ## the record's error by Nelder-Mead, from the best of three starts: the
 ## estimation record's levels, at rest at the record's first sample, and
 ## at rest for its first input (as a linear model's free response is
-## fitted).
-function [e, yh] = refit_levels (m, V, ctx)
+## fitted). Returns the simulated output with those levels.
+function yh = refit_levels (m, V, ctx)
   y = V.y;
   P = m.phys;
   starts = zeros (2, 3);
@@ -127,7 +103,6 @@ function [e, yh] = refit_levels (m, V, ctx)
     xb = x;
   endif
   yh = sim_x0 (m, xb, V, ctx);
-  e = y - yh;
 endfunction
 
 function yh = sim_x0 (m, x, V, ctx)

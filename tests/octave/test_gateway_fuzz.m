@@ -114,6 +114,22 @@ function test_gateway_fuzz ()
                  "d", 0, "alpha", 0.01, "gamma", 0.085, "c", 0, "hi", 0.4,
                  "substeps", 4);
   physfit = setfield (setfield (phys, "maxiter", 2), "h0", 0.1);
+  ## a residtrace model (mex/residtrace_model_io.hpp), simulated, scored on
+  ## a record and fitted
+  rch = struct ("name", "u1", "type", "input", "col", 1, "param", [],
+                "nb", 1, "nk", 0, "B", 0.5);
+  rtm = struct ("F", [1 1.2], "fixed", false, "channels", rch,
+                "out", struct ("type", "offset", "c", 0.1, "cstd", NaN,
+                               "omega", 0),
+                "intersample", "zoh", "levels", false, "x0", true,
+                "noise", [], "ltv", [], "phys", []);
+  rtV = struct ("y", y, "u", u, "Ts", 0.1, "loop", [], "pre", [],
+                "missing", false (50, 1));
+  rtD = setfield (rtV, "ysm", y);
+  rsim = struct ("ts", 0.1, "substeps", 2, "loop", [], "thm", []);
+  rval = struct ("substeps", 2, "thm", [], "yh", []);
+  rfit = struct ("starts", {{[]}}, "maxiter", 3, "keep_order", false,
+                 "substeps", 2);
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -128,6 +144,10 @@ function test_gateway_fuzz ()
      {"kind", "ts", "b", "d", "alpha", "gamma", "c"}}
     {"effect_sim_mex", {"residtrace", "physfit", abs(u), y, physfit}, ...
      {"kind", "ts", "b", "d", "alpha", "gamma", "c", "maxiter"}}
+    {"effect_sim_mex", {"residtrace", "simulate", rtm, u, rsim}, {"ts"}}
+    {"effect_sim_mex", {"residtrace", "valerror", rtm, rtV, rval}, {}}
+    {"effect_sim_mex", {"residtrace", "fitmodel", rtm, rtD, rfit}, ...
+     {"maxiter"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...
