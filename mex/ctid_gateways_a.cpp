@@ -30,6 +30,7 @@
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"
 #include "options_reader.hpp"
+#include "residtrace_judge_io.hpp"
 
 namespace gw_riv {
 #define mexFunction entry
