@@ -21,6 +21,10 @@
 //     significant1, order1 (1-based, best first), significant2, order2,
 //     group (0 no winner, 1 or 2), winner (index into that group's rows),
 //     rivals (struct array: effect, variant, score, p).
+//   d = effect_sim_mex (fname, "declare", row, options)
+//     is the record's initial state (row, fields as for "judge")
+//     significant before the pass; options: alpha, minscore, tests (the
+//     number of simulated effects tested, itself included).
 //   [applicable, why] = effect_sim_mex (fname, "noise_gate", options)
 //     may the coloured-noise candidate be tried; options: significant
 //     (a deterministic candidate is), white_p, indep_p, alpha.
@@ -280,6 +284,25 @@ inline void judge_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   mxSetField(plhs[0], 0, "rivals", riv);
 }
 
+inline void declare_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                           int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput", "declare takes (fname, 'declare', row, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "declare has one output");
+  const auto rows = read_rows(g, prhs[2], "row");
+  if (rows.size() != 1) g.fail("badInput", "row must be one candidate");
+  OptionsReader opt(g, prhs[3]);
+  rt::JudgeOptions o;
+  o.alpha = opt.scalar("alpha");
+  o.minscore = opt.scalar("minscore");
+  const int tests = opt.integer("tests");
+  opt.finish();
+  if (tests < 1) g.fail("badOption", "option 'tests' must be >= 1");
+  plhs[0] = mxCreateLogicalScalar(rt::declare_initial_state<double>(
+      rows[0], static_cast<std::size_t>(tests), o));
+}
+
 inline void noise_gate_method(const Gateway& g, int nlhs, mxArray* plhs[],
                               int nrhs, const mxArray* prhs[]) {
   if (nrhs != 3) {
@@ -307,6 +330,8 @@ inline bool dispatch(const std::string& method, const Gateway& g, int nlhs,
     score_method(g, nlhs, plhs, nrhs, prhs);
   } else if (method == "judge") {
     judge_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "declare") {
+    declare_method(g, nlhs, plhs, nrhs, prhs);
   } else if (method == "noise_gate") {
     noise_gate_method(g, nlhs, plhs, nrhs, prhs);
   } else {

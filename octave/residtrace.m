@@ -782,8 +782,10 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
     ## of a full pass) it is added and the pass run again
     c = guarded ("initial_state", @() residtrace_cand_x0 (cur, ctx));
     row = score (c, cur, ctx, e0);
-    row.significant = row.applicable && row.p < opts.alpha / numel (simset) ...
-                      && row.score >= opts.minscore;
+    row.significant = effect_sim_mex ("residtrace", "declare", row,
+                                      struct ("alpha", opts.alpha,
+                                              "minscore", opts.minscore,
+                                              "tests", numel (simset)));
     if (row.significant)
       x0win = row;
       ranking = row;

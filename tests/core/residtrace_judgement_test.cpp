@@ -12,7 +12,8 @@
 //   - the acceptance rules on constructed evidence: an undetermined term,
 //     terms determined but not significant, a saturation active on every
 //     sample or on none, a friction without velocity reversals;
-//   - Bonferroni within a group on a hand-made set;
+//   - Bonferroni within a group on a hand-made set, and the level at which
+//     the record's initial state is declared before a pass;
 //   - the ranking: significant first by score, the parsimony swap of a
 //     simpler candidate that the complex one does not improve on, none
 //     when it does, the same-footing BIC rule;
@@ -219,6 +220,13 @@ TEST(ResidtraceJudgement, BonferroniWithinAGroup) {
   rows[2].applicable = false;
   rows[3].applicable = false;
   EXPECT_TRUE(residtrace::significance(rows, o)[1]);
+  // before the pass, the initial state is declared at alpha / (the
+  // simulated effects tested): 0.002 < 0.01 / 4 but not < 0.01 / 8
+  const auto x = row("initial_state", 0.5, 0.002);
+  EXPECT_TRUE(residtrace::declare_initial_state(x, 4, o));
+  EXPECT_FALSE(residtrace::declare_initial_state(x, 8, o));
+  EXPECT_FALSE(residtrace::declare_initial_state(
+      row("initial_state", 0.005, 1e-9), 4, o));
   // the record's initial state is never significant in the ranking
   std::vector<CandidateRow<double>> x0 = {row("initial_state", 0.5, 1e-9)};
   EXPECT_FALSE(residtrace::judge_group(x0, o).significant[0]);

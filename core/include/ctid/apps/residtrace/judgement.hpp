@@ -406,6 +406,18 @@ bool significant_at(const CandidateRow<S>& r, double level, double minscore) {
   return r.applicable && r.p < level && r.score >= minscore;
 }
 
+// The record's initial state, tried before the pass: declared (estimated
+// with the baseline, and the pass run again) when significant at the
+// level of a full pass, alpha / (the number of simulated effects tested,
+// itself included), as if it were one of them.
+template <typename S>
+bool declare_initial_state(const CandidateRow<S>& r, std::size_t tests,
+                           const JudgeOptions& o) {
+  return significant_at(
+      r, o.alpha / static_cast<double>(std::max<std::size_t>(1, tests)),
+      o.minscore);
+}
+
 // Bonferroni within a group: each candidate at alpha / (the number of
 // applicable candidates of the group), so that testing more effects does
 // not make one significant by chance.
