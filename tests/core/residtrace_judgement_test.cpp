@@ -352,6 +352,11 @@ TEST(ResidtraceJudgement, NoiseGate) {
   EXPECT_FALSE(dep.applicable);
   EXPECT_NE(dep.why.find("depends on the input (p = 0.0001 < alpha)"),
             std::string::npos);
+  // an untestable residual (NaN p-values): not tried, the figure as NaN
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto untested = residtrace::noise_gate(false, nan, nan, 0.01);
+  EXPECT_FALSE(untested.applicable);
+  EXPECT_NE(untested.why.find("(p = NaN < alpha)"), std::string::npos);
 }
 
 }  // namespace

@@ -57,6 +57,14 @@ std::string format(const char* f, A... a) {
   return s;
 }
 
+// A figure as Octave's sprintf writes it with the conversion `spec`:
+// "NaN", "Inf" and "-Inf" for the non-finite ones.
+inline std::string number_text(const char* spec, double v) {
+  if (std::isnan(v)) return "NaN";
+  if (std::isinf(v)) return v > 0 ? "Inf" : "-Inf";
+  return format(spec, v);
+}
+
 // sum_k x(k)^2 in sample order.
 template <typename S>
 S plain_sum_squares(const Vector<S>& x) {
@@ -302,8 +310,9 @@ Acceptance<S> accept(const std::vector<AddedTerm<S>>& terms,
     a.ok = false;
     const double r = static_cast<double>(act.reversals);
     const std::string n =
-        r == std::floor(r) ? detail::format("%lld", static_cast<long long>(r))
-                           : detail::format("%g", r);
+        std::isfinite(r) && r == std::floor(r)
+            ? detail::format("%lld", static_cast<long long>(r))
+            : detail::number_text("%g", r);
     a.why = "not physically active: the velocity changes sign " + n +
             " time(s) on the estimation record (a friction needs reversals)";
   }
@@ -628,12 +637,12 @@ inline NoiseGate noise_gate(bool deterministic_significant, double white_p,
     g.applicable = false;
     if (white_p >= alpha) {
       g.why =
-          detail::format("the residual is white (p = %.2g >= alpha)", white_p);
+          "the residual is white (p = " + detail::number_text("%.2g", white_p) +
+          " >= alpha)";
     } else {
-      g.why = detail::format(
-          "the residual depends on the input (p = %.2g < alpha): a noise "
-          "model cannot explain it",
-          indep_p);
+      g.why = "the residual depends on the input (p = " +
+              detail::number_text("%.2g", indep_p) +
+              " < alpha): a noise model cannot explain it";
     }
   }
   return g;
