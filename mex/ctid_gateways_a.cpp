@@ -15,6 +15,7 @@
 
 #include "ctid/adaptation/nlopt_minimizer.hpp"
 #include "ctid/adaptation/qn_ml.hpp"
+#include "ctid/apps/residtrace/judgement.hpp"
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
@@ -33,6 +34,7 @@
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"
 #include "options_reader.hpp"
+#include "residtrace_judge_io.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace gw_riv {

@@ -32,12 +32,14 @@
 //   v = effect_sim_mex (fname, "dmtest", e0, e1, options)
 //     the Diebold-Mariano and encompassing tests (statistics.hpp), v =
 //     [score stat p bandwidth z p_corr]; options: none (a struct);
-//   [r, Q, xc, S, reason] = effect_sim_mex (fname, "whiteness", e, u,
-//                                           options)
+//   [r, Q, xc, S, reason, white_p, indep_p] = effect_sim_mex (fname,
+//                                           "whiteness", e, u, options)
 //     the Ljung-Box and Haugh statistics (statistics.hpp): autocorrelations
 //     r (lags 0..m), Q, the prewhitened cross-correlations xc (lags -m..m,
 //     one column per input), S; reason is empty, or says why e is not
-//     tested (the others are then empty); options: maxlag, yscale;
+//     tested (the others are then empty, the p-values NaN); white_p =
+//     P(chi^2(m) > Q), indep_p = P(chi^2(nu (2m + 1)) > S) (judgement.hpp,
+//     chi2_upper); options: maxlag, yscale;
 //   a = effect_sim_mex (fname, "ar", x, options)
 //     A(q) = [1 -c1 .. -cp] of the AR model of x whose order p <= pmax has
 //     the smallest BIC (statistics.hpp); options: pmax;
@@ -83,6 +85,8 @@
 //     the estimate; D: y, u, Ts, intersample, vhat, ysm, initial_state,
 //     missing, loop; options: starts (a cell of F's), maxiter, keep_order,
 //     substeps.
+//   The judgement of candidates: the methods "accept", "score", "judge"
+//   and "noise_gate" (residtrace_judge_io.hpp).
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
 //   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
 //   channel j's numerator right-aligned in column j), nb (1-by-m numerator
@@ -93,6 +97,7 @@
 //   for the fit also initial_state (0 or 1) and maxiter.
 // The signals and estimates may hold non-finite values (they propagate as
 // in the recursion itself).
+#include "ctid/apps/residtrace/judgement.hpp"
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
@@ -103,6 +108,7 @@
 #include "ctid/apps/residtrace/track.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
+#include "residtrace_judge_io.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace {
@@ -318,7 +324,7 @@ void whiteness_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nrhs != 5) {
     g.fail("badInput", "whiteness takes (fname, 'whiteness', e, u, options)");
   }
-  if (nlhs > 5) g.fail("badInput", "whiteness has at most 5 outputs");
+  if (nlhs > 7) g.fail("badInput", "whiteness has at most 7 outputs");
   const Eigen::VectorXd e = any_column(g, prhs[2], "e");
   const long n = static_cast<long>(e.size());
   g.require_real_double(prhs[3], "u");
@@ -344,6 +350,19 @@ void whiteness_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
     plhs[3] = put(Eigen::MatrixXd::Constant(w.testable, w.testable, w.S_indep));
   }
   if (nlhs >= 5) plhs[4] = mxCreateString(w.reason.c_str());
+  // the tail probabilities: Q against chi^2(m), S against chi^2(nu (2m + 1))
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double nu = static_cast<double>(u.cols());
+  if (nlhs >= 6) {
+    plhs[5] = mxCreateDoubleScalar(
+        w.testable ? ctid::residtrace::chi2_upper<double>(w.Q, maxlag) : nan);
+  }
+  if (nlhs >= 7) {
+    plhs[6] =
+        mxCreateDoubleScalar(w.testable ? ctid::residtrace::chi2_upper<double>(
+                                              w.S_indep, nu * (2 * maxlag + 1))
+                                        : nan);
+  }
 }
 
 void ar_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
@@ -952,7 +971,8 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             valerror_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "fitmodel") {
             fitmodel_method(g, nlhs, plhs, nrhs, prhs);
-          } else {
+          } else if (!ctid::mex::residtrace_judge::dispatch(method, g, nlhs,
+                                                            plhs, nrhs, prhs)) {
             g.fail("badInput", "unknown method '" + method + "'");
           }
           return;

@@ -121,8 +121,9 @@
 ## is far less powerful when the residual is periodic or slow.) A
 ## candidate is significant when p < alpha / (number of candidates of
 ## its group) (Bonferroni) and its score >= @code{minscore}. Before it is
-## scored every candidate passes one acceptance check
-## (@code{residtrace_accept}): each term it adds determined on the
+## scored every candidate passes one acceptance check (all of this
+## judgement is the core's, core/include/ctid/apps/residtrace/
+## judgement.hpp): each term it adds determined on the
 ## estimation data (Wald z >= 2: its standard error well below its
 ## value) and the terms significant there (largest z >= 3); an effect
 ## that acts on part of the record (a saturation's level, a direction of
@@ -781,8 +782,10 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
     ## of a full pass) it is added and the pass run again
     c = guarded ("initial_state", @() residtrace_cand_x0 (cur, ctx));
     row = score (c, cur, ctx, e0);
-    row.significant = row.applicable && row.p < opts.alpha / numel (simset) ...
-                      && row.score >= opts.minscore;
+    row.significant = effect_sim_mex ("residtrace", "declare", row,
+                                      struct ("alpha", opts.alpha,
+                                              "minscore", opts.minscore,
+                                              "tests", numel (simset)));
     if (row.significant)
       x0win = row;
       ranking = row;
@@ -795,11 +798,6 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
     row = screened_row (simset{k}, cur, ctx, e0);
     rows_ = [rows_; row];
   endfor
-  rows_ = significance (rows_, opts);
-  if (! isempty (rows_))
-    k = strcmp ({rows_.effect}, "initial_state");
-    [rows_(k).significant] = deal (false);
-  endif
   vrows = [];
   if (any (strcmp (opts.effects, "drift")))
     t0 = tic ();
@@ -809,43 +807,57 @@ function [ranking, winner, x0win] = run_pass (cur, ctx, e0, tests, opts)
     vrows = [vrows; row];
   endif
   ## coloured noise: only when nothing deterministic is significant and
-  ## the residual is independent of the input but not white
+  ## the residual is independent of the input but not white (the core's
+  ## noise_gate)
   if (any (strcmp (opts.effects, "colored_noise")))
     c = guarded ("colored_noise", @() residtrace_cand_colored (cur, ctx));
-    det_sig = any ([rows_.significant]);
-    if (! isempty (vrows))
-      vr = significance (vrows, opts);
-      det_sig = det_sig || any ([vr.significant]);
-    endif
-    if (c.applicable && det_sig)
-      c.applicable = false;
-      c.reason = "a deterministic effect explains the residual";
-    elseif (c.applicable && ! (tests.white_p < opts.alpha
-                               && tests.indep_p > opts.alpha))
-      c.applicable = false;
-      if (tests.white_p >= opts.alpha)
-        c.reason = sprintf ("the residual is white (p = %.2g >= alpha)",
-                            tests.white_p);
-      else
-        c.reason = sprintf (["the residual depends on the input (p = ", ...
-                             "%.2g < alpha): a noise model cannot ", ...
-                             "explain it"], tests.indep_p);
+    if (c.applicable)
+      J = judge (rows_, vrows, opts);
+      gate = struct ("significant", double (any (J.significant1)
+                                            || any (J.significant2)),
+                     "white_p", tests.white_p, "indep_p", tests.indep_p,
+                     "alpha", opts.alpha);
+      [c.applicable, why] = effect_sim_mex ("residtrace", "noise_gate", gate);
+      if (! c.applicable)
+        c.reason = why;
       endif
     endif
     row = score (c, cur, ctx, e0);
     vrows = [vrows; row];
   endif
-  vrows = significance (vrows, opts);
-  r1 = rank_rows (rows_, opts);
-  r2 = rank_rows (vrows, opts);
+  ## the pass judged by the core (judgement.hpp): each group's Bonferroni
+  ## significance and ranking, the winner and its rivals
+  J = judge (rows_, vrows, opts);
+  r1 = judged (rows_, J.significant1, J.order1);
+  r2 = judged (vrows, J.significant2, J.order2);
   ranking = [r1; r2];
-  if (! isempty (r1) && r1(1).significant)
+  if (J.group == 1)
     winner = r1(1);
-    winner.rivals = residtrace_rivals (winner, r1, opts);
-  elseif (! isempty (r2) && r2(1).significant)
+  elseif (J.group == 2)
     winner = r2(1);
-    winner.rivals = residtrace_rivals (winner, r2, opts);
   endif
+  if (J.group > 0)
+    winner.rivals = J.rivals;
+  endif
+endfunction
+
+## The pass judged by the core (judgement.hpp, judge_pass): rows1 the
+## candidates simulated from the input, rows2 those that use the
+## validation output.
+function J = judge (rows1, rows2, opts)
+  J = effect_sim_mex ("residtrace", "judge", rows1, rows2,
+                      struct ("alpha", opts.alpha,
+                              "minscore", opts.minscore));
+endfunction
+
+## A group's rows with their significance, in the order of the ranking.
+function r = judged (r, sig, order)
+  if (isempty (r))
+    return;
+  endif
+  sig = num2cell (sig);
+  [r.significant] = sig{:};
+  r = r(order);
 endfunction
 
 ## A candidate fitted and scored in two stages (for speed): first
@@ -955,31 +967,6 @@ function [q, qcur] = screening_context (ctx, cur)
   qcur.e_est = cur.e_est(k);
 endfunction
 
-## A correction fitted on the validation record itself (nadd parameters by
-## least squares): the likelihood-ratio test N log(s0/s1) against
-## chi^2(nadd), the model choice a BIC would make at the same level.
-function [p, LR] = ftest (e0, e1, nadd)
-  N = numel (e1);
-  LR = N * log (sum (e0 .^ 2) / sum (e1 .^ 2));
-  p = 1;
-  if (LR > 0)
-    p = gammainc (LR / 2, nadd / 2, "upper");
-  endif
-endfunction
-
-## Bonferroni within a group: p < alpha / (applicable candidates), and a
-## share of at least minscore.
-function r = significance (r, opts)
-  if (isempty (r))
-    return;
-  endif
-  m = max (1, sum ([r.applicable]));
-  for k = 1:numel (r)
-    r(k).significant = r(k).applicable && r(k).p < opts.alpha / m ...
-                       && r(k).score >= opts.minscore;
-  endfor
-endfunction
-
 function row = score (c, cur, ctx, e0)
   row = struct ("effect", c.effect, "score", NaN, "p", NaN, "stat", NaN,
                 "p_dm", NaN,
@@ -1020,14 +1007,16 @@ function row = score (c, cur, ctx, e0)
     row.reason = "the model's validation output diverges";
     return;
   endif
-  t = residtrace_dmtest (e0, e1);
-  row.score = t.score;
-  row.p = t.p_corr;
-  row.stat = t.z;
-  row.p_dm = t.p;
-  if (c.insample)
-    [row.p, row.stat] = ftest (e0, e1, c.nadd);
-  endif
+  ## the share of e0's mean square removed and the encompassing test's
+  ## p-value (a correction fitted on the validation record itself: the
+  ## likelihood-ratio test), by the core (judgement.hpp, score_candidate)
+  v = effect_sim_mex ("residtrace", "score", e0(:), e1(:),
+                      struct ("insample", double (c.insample),
+                              "nadd", c.nadd));
+  row.score = v(1);
+  row.p = v(2);
+  row.stat = v(3);
+  row.p_dm = v(4);
   switch (c.kind)
     case "tracking"
       row.rmse_tracked = rms_ (e1);
@@ -1108,71 +1097,6 @@ function out = guarded (effect, f)
   unwind_protect_cleanup
     warning (state);
   end_unwind_protect
-endfunction
-
-## Significant first by score; a simpler candidate that is not
-## significantly worse than the one above it moves up (parsimony). Two
-## candidates of as many added parameters that the validation record does
-## not tell apart (neither's correction significantly improves on the
-## other's) are put on the same footing: the one with the smaller BIC on
-## the estimation data, its added parameters counted, goes first. Only
-## rows of one group (all simulated, or all using the validation output)
-## are ranked together.
-function r = rank_rows (r, opts)
-  if (isempty (r))
-    return;
-  endif
-  s = [r.score];
-  s(! [r.applicable]) = -Inf;
-  key = s + 10 * [r.significant];
-  [~, order] = sort (key, "descend");
-  r = r(order);
-  sig = find ([r.significant]);
-  better_ = @(a, b) better_than (a, b, opts);
-  changed = true;
-  sweeps = 0;
-  while (changed && sweeps < 4 * numel (r))
-    changed = false;
-    sweeps++;
-    for a = 1:numel (sig) - 1
-      i = sig(a); j = sig(a+1);
-      same = strcmp (r(i).kind, r(j).kind);
-      if (r(j).nadd < r(i).nadd && same)
-        keep = better_ (r(i), r(j));
-      elseif (r(j).nadd == r(i).nadd && same
-              && strcmp (r(i).kind, "simulation"))
-        keep = better_ (r(i), r(j)) || better_ (r(j), r(i)) ...
-               || ! (footing_bic (r(j)) < footing_bic (r(i)));
-      else
-        keep = true;
-      endif
-      if (! keep)
-        r([i j]) = r([j i]);
-        changed = true;
-      endif
-    endfor
-  endwhile
-endfunction
-
-## Does a's correction significantly improve on b's validation error (the
-## encompassing test, p < alpha and a share >= minscore of what b leaves)?
-function b = better_than (a, b_, opts)
-  t = residtrace_dmtest (b_.e1, a.e1);
-  b = t.p_corr < opts.alpha && t.score >= opts.minscore;
-endfunction
-
-## A candidate's BIC on the estimation data with the parameters it adds
-## counted as nadd (a delay, which a fit does not count, is one): N log
-## s2 + (np - added by the fit + nadd) log N, up to the current model's
-## parameters, which every candidate shares. Inf when unknown.
-function b = footing_bic (row)
-  b = Inf;
-  m = row.model;
-  if (! isstruct (m) || ! all (isfield (m, {"bic", "np", "e_est"}))
-      || isempty (m.e_est) || ! isfinite (m.bic))
-    return;
-  endif
-  b = m.bic + (row.nadd - m.np) * log (numel (m.e_est));
 endfunction
 
 function f = cand_file (effect)

@@ -32,123 +32,14 @@
 ## reversal is enough when each direction holds its share of samples).
 ## @end table
 ## @var{ok} false gives the reason @var{why}; @var{tmax} is the largest z
-## (NaN when no term could be judged), which the screening uses.
+## (NaN when no term could be judged), which the screening uses. The
+## check is the core's (core/include/ctid/apps/residtrace/judgement.hpp,
+## @code{accept}, through @code{effect_sim_mex}).
 ## @end deftypefn
 
 function [ok, why, tmax] = residtrace_accept (c, cur, N)
-  ok = true; why = ""; tmax = NaN;
-  m = c.model;
-  [z, names] = term_z (m, cur);
-  if (! isempty (z))
-    tmax = max (z);
-    [zmin, i] = min (z);
-    if (zmin < 2)
-      ok = false;
-      why = sprintf (["%s is not determined on the estimation data ", ...
-                      "(z = %.2g: its standard error is not well below ", ...
-                      "its value)"], names{i}, zmin);
-      return;
-    endif
-    if (tmax < 3)
-      ok = false;
-      why = sprintf (["the added terms are not significant on the ", ...
-                      "estimation data (largest z = %.2g < 3)"], tmax);
-      return;
-    endif
-  endif
-  ev = c.evidence;
-  if (isstruct (ev) && isfield (ev, "share") && isscalar (ev.share)
-      && isfinite (ev.share))
-    lo = max (0.01, 5 / N);
-    if (ev.share < lo)
-      ok = false;
-      why = sprintf (["not physically active: active on %.2g %% of the ", ...
-                      "estimation samples"], 100 * ev.share);
-      return;
-    elseif (ev.share > 1 - lo)
-      ok = false;
-      why = sprintf (["not physically an effect of part of the record: ", ...
-                      "active on %.4g %% of the estimation samples, ", ...
-                      "inactive on none"], 100 * ev.share);
-      return;
-    endif
-  endif
-  if (isstruct (ev) && isfield (ev, "reversals") && ev.reversals < 1)
-    ok = false;
-    why = sprintf (["not physically active: the velocity changes sign ", ...
-                    "%d time(s) on the estimation record (a friction ", ...
-                    "needs reversals)"], ev.reversals);
-  endif
-endfunction
-
-## Wald z of each term the model adds to cur: the channels beyond cur's
-## (theta = [free f's, each channel's numerator]) and the output terms
-## beyond cur's with a standard deviation.
-function [z, names] = term_z (m, cur)
-  z = []; names = {};
-  if (isempty (m) || ! isstruct (m) || ! isfield (m, "channels")
-      || (isfield (m, "phys") && ! isempty (m.phys)))
-    return;
-  endif
-  nc = numel (cur.channels);
-  nf = sum (! m.fixed);
-  nb = [m.channels.nb];
-  if (numel (m.channels) > nc && numel (m.theta) == nf + sum (nb)
-      && isequal (size (m.cov), [numel(m.theta), numel(m.theta)]))
-    off = nf + sum (nb(1:nc));
-    for j = nc+1:numel (m.channels)
-      k = off + (1:nb(j));
-      off += nb(j);
-      zj = wald (m.theta(k), m.cov(k, k));
-      if (! isnan (zj))
-        z(end+1) = zj;
-        names{end+1} = sprintf ("the %s term", m.channels(j).name);
-      endif
-    endfor
-  endif
-  ## coefficients of F fixed in cur and freed by the candidate (viscous)
-  if (numel (m.fixed) == numel (cur.fixed) && numel (m.theta) >= nf
-      && isequal (size (m.cov), [numel(m.theta), numel(m.theta)]))
-    freed = find (cur.fixed & ! m.fixed);
-    for k = freed
-      i = sum (! m.fixed(1:k));
-      zk = wald (m.theta(i), m.cov(i, i));
-      if (! isnan (zk))
-        z(end+1) = zk;
-        names{end+1} = sprintf ("the freed coefficient f%d", k);
-      endif
-    endfor
-  endif
-  no = numel (cur.out);
-  for k = no+1:numel (m.out)
-    o = m.out(k);
-    if (any (strcmp (o.type, {"sat"})) || numel (o.cstd) != numel (o.c))
-      continue;
-    endif
-    zk = wald (o.c(:), diag (o.cstd(:) .^ 2));
-    if (! isnan (zk))
-      z(end+1) = zk;
-      names{end+1} = sprintf ("the output %s", o.type);
-    endif
-  endfor
-endfunction
-
-## sqrt (theta' C^-1 theta / k); NaN when C gives no standard deviation
-function z = wald (th, C)
-  th = th(:);
-  z = NaN;
-  d = diag (C);
-  if (isempty (th) || any (! isfinite (C(:))) || any (d <= 0))
-    return;
-  endif
-  s = sqrt (d);
-  Cn = C ./ (s * s');                    # correlation: scale-free solve
-  [R, p] = chol (Cn);
-  if (p != 0)
-    return;
-  endif
-  w = R' \ (th ./ s);
-  z = sqrt (sum (w .^ 2) / numel (th));
+  [ok, why, tmax] = effect_sim_mex ("residtrace", "accept", c, cur,
+                                    struct ("n", N));
 endfunction
 
 %!function [c, cur] = accept_case (val, sd)

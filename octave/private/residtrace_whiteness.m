@@ -24,8 +24,8 @@
 ## input),
 ## @code{bound}. The statistics are the core's
 ## (core/include/ctid/apps/residtrace/statistics.hpp, through
-## @code{effect_sim_mex}); their chi^2 tail probabilities are computed
-## here.
+## @code{effect_sim_mex}), their chi^2 tail probabilities too
+## (judgement.hpp).
 ## @end deftypefn
 
 function w = residtrace_whiteness (e, u, maxlag, yscale)
@@ -37,20 +37,16 @@ function w = residtrace_whiteness (e, u, maxlag, yscale)
   w = struct ("testable", true, "reason", "", "white_p", NaN,
               "indep_p", NaN, "autocorr", [], "xcorr", [],
               "bound", 2.576 / sqrt (N), "maxlag", m);
-  [r, Q, xc, S, reason] = effect_sim_mex ("residtrace", "whiteness", e(:), u,
-                                          struct ("maxlag", m,
-                                                  "yscale", yscale));
+  [r, ~, xc, ~, reason, white_p, indep_p] = ...
+    effect_sim_mex ("residtrace", "whiteness", e(:), u,
+                    struct ("maxlag", m, "yscale", yscale));
   if (! isempty (reason))
     w.testable = false;
     w.reason = reason;
     return;
   endif
   w.autocorr = r;
-  w.white_p = chi2_sf (Q, m);
+  w.white_p = white_p;
   w.xcorr = xc;
-  w.indep_p = chi2_sf (S, columns (u) * (2 * m + 1));
-endfunction
-
-function p = chi2_sf (x, k)
-  p = gammainc (x / 2, k / 2, "upper");
+  w.indep_p = indep_p;
 endfunction
