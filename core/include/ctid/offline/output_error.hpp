@@ -629,20 +629,14 @@ Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
     }
     RivSettings<S> settings;
     if (cutoff > 0) settings.cutoffs = {cutoff};
-    RivData<S> data;
-    data.y = d.y;
-    data.w = d.u;
-    data.num_samples = d.num_samples;
-    data.ts = d.ts;
-    data.instants = d.instants;
-    RivResult<S> r;
-    const Status st = refined_iv(problem, settings, data, &r);
-    if (!st.ok() && st.code() != ErrorCode::kNotConverged) {
-      return Status(st.code(), "SRIVC start: " + st.message());
-    }
-    const int nfb = static_cast<int>(r.theta.size());
+    Vector<S> fit;
+    const Status st = refined_iv_start<S>(
+        problem, settings, {d.y, d.u, d.num_samples, d.ts, d.instants},
+        "SRIVC start", &fit);
+    if (!st.ok()) return st;
+    const int nfb = static_cast<int>(fit.size());
     *theta = Vector<S>(s.num_parameters());
-    theta->head(nfb) = r.theta;
+    theta->head(nfb) = fit;
     if (s.estimate_delay) (*theta)(nfb) = static_cast<S>(start_delay);
     *how = "srivc";
     return Status::Ok();
