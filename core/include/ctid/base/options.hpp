@@ -13,6 +13,7 @@
 // offline/refined_iv_options.hpp (the offline refined-IV estimators).
 #pragma once
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -178,47 +179,109 @@ Status set_option(const OptionDecl<Config>& decl, const OptionValue& value,
   return decl.set(config, value);
 }
 
-// A real (kReal) or integer (kInteger) option held in one member of the
-// config: `member` returns it for a config (a generic lambda,
+// An option of type `type` held in one member of the config: `member`
+// returns it for a config (a generic lambda,
 // [](auto& c) -> auto& { return c.settings.tolerance; }, which serves the
-// const config that shows it and the one a value sets). The value is
-// assigned as it is; validate() of the estimator checks its range.
-template <typename Config, typename Member>
-OptionDecl<Config> real_option(const char* name, bool required,
-                               const char* range, const char* help,
-                               Member member) {
+// const config that shows it and the one a value sets); show(value) is its
+// text, set(member, option value) assigns it. The builders below are its
+// forms.
+template <typename Config, typename Member, typename Show, typename Set>
+OptionDecl<Config> member_option(const char* name, OptionType type,
+                                 bool required, const char* range,
+                                 const char* help, Member member, Show show,
+                                 Set set) {
   return {name,
-          OptionType::kReal,
+          type,
           required,
           {},
           range,
           help,
-          [member](const Config& c) {
-            return options_detail::number(static_cast<double>(member(c)));
-          },
-          [member](Config* c, const OptionValue& v) {
-            auto& target = member(*c);
-            target = static_cast<std::decay_t<decltype(target)>>(v.real);
-            return Status::Ok();
+          [member, show](const Config& c) { return show(member(c)); },
+          [member, set](Config* c, const OptionValue& v) {
+            return set(member(*c), v);
           }};
+}
+
+// A real (kReal) or integer (kInteger) option held in one member of the
+// config (as member_option). The value is assigned as it is; validate() of
+// the estimator checks its range.
+template <typename Config, typename Member>
+OptionDecl<Config> real_option(const char* name, bool required,
+                               const char* range, const char* help,
+                               Member member) {
+  return member_option<Config>(
+      name, OptionType::kReal, required, range, help, member,
+      [](const auto& x) {
+        return options_detail::number(static_cast<double>(x));
+      },
+      [](auto& target, const OptionValue& v) {
+        target = static_cast<std::decay_t<decltype(target)>>(v.real);
+        return Status::Ok();
+      });
+}
+
+// A real (kReal) held in one member, as real_option, whose default NaN
+// stands for a value the estimator derives from the data: shown as
+// `derived` while it is NaN.
+template <typename Config, typename Member>
+OptionDecl<Config> derived_real_option(const char* name, const char* range,
+                                       const char* help, const char* derived,
+                                       Member member) {
+  OptionDecl<Config> decl =
+      real_option<Config>(name, false, range, help, member);
+  decl.show = [member, derived](const Config& c) {
+    const double v = static_cast<double>(member(c));
+    return std::isnan(v) ? std::string(derived) : options_detail::number(v);
+  };
+  return decl;
 }
 
 template <typename Config, typename Member>
 OptionDecl<Config> integer_option(const char* name, bool required,
                                   const char* range, const char* help,
                                   Member member) {
-  return {name,
-          OptionType::kInteger,
-          required,
-          {},
-          range,
-          help,
-          [member](const Config& c) { return std::to_string(member(c)); },
-          [member](Config* c, const OptionValue& v) {
-            auto& target = member(*c);
-            target = static_cast<std::decay_t<decltype(target)>>(v.integer);
-            return Status::Ok();
-          }};
+  return member_option<Config>(
+      name, OptionType::kInteger, required, range, help, member,
+      [](const auto& x) { return std::to_string(x); },
+      [](auto& target, const OptionValue& v) {
+        target = static_cast<std::decay_t<decltype(target)>>(v.integer);
+        return Status::Ok();
+      });
+}
+
+// Integers one per input, channel or group (kIntegerVector) held in one
+// std::vector<int> member, as real_option; shown as [n1 n2 ..].
+template <typename Config, typename Member>
+OptionDecl<Config> integer_vector_option(const char* name, bool required,
+                                         const char* range, const char* help,
+                                         Member member) {
+  return member_option<Config>(
+      name, OptionType::kIntegerVector, required, range, help, member,
+      [](const std::vector<int>& x) { return options_detail::integers(x); },
+      [](std::vector<int>& target, const OptionValue& v) {
+        target = v.integers;
+        return Status::Ok();
+      });
+}
+
+// Reals one per input, channel or parameter (kMatrix, taken in column-major
+// order whatever its shape) held in one std::vector member, as
+// real_option; shown as `empty` while the list is empty, else by its
+// length.
+template <typename Config, typename Member>
+OptionDecl<Config> real_list_option(const char* name, const char* range,
+                                    const char* help, std::string empty,
+                                    Member member) {
+  return member_option<Config>(
+      name, OptionType::kMatrix, false, range, help, member,
+      [empty](const auto& list) {
+        return list.empty() ? empty : std::to_string(list.size()) + " value(s)";
+      },
+      [](auto& target, const OptionValue& v) {
+        const Matrix<double>& m = v.matrix;
+        target.assign(m.data(), m.data() + m.size());
+        return Status::Ok();
+      });
 }
 
 // A flag (kFlag) held in one member, as real_option; shown as true or
@@ -226,19 +289,13 @@ OptionDecl<Config> integer_option(const char* name, bool required,
 template <typename Config, typename Member>
 OptionDecl<Config> flag_option(const char* name, const char* range,
                                const char* help, Member member) {
-  return {name,
-          OptionType::kFlag,
-          false,
-          {},
-          range,
-          help,
-          [member](const Config& c) {
-            return std::string(member(c) ? "true" : "false");
-          },
-          [member](Config* c, const OptionValue& v) {
-            member(*c) = v.flag;
-            return Status::Ok();
-          }};
+  return member_option<Config>(
+      name, OptionType::kFlag, false, range, help, member,
+      [](bool x) { return std::string(x ? "true" : "false"); },
+      [](bool& target, const OptionValue& v) {
+        target = v.flag;
+        return Status::Ok();
+      });
 }
 
 // A vector (kMatrix) held in one member, as real_option: a matrix with
@@ -248,22 +305,16 @@ template <typename Config, typename Member>
 OptionDecl<Config> vector_option(const char* name, const char* range,
                                  const char* help, const char* empty,
                                  ErrorCode code, Member member) {
-  return {name,
-          OptionType::kMatrix,
-          false,
-          {},
-          range,
-          help,
-          [member, empty](const Config& c) {
-            using Scalar = typename std::decay_t<decltype(member(c))>::Scalar;
-            return options_detail::matrix_text(Matrix<Scalar>(member(c)),
-                                               empty);
-          },
-          [member, name, code](Config* c, const OptionValue& v) {
-            auto& target = member(*c);
-            using Scalar = typename std::decay_t<decltype(target)>::Scalar;
-            return options_detail::set_vector<Scalar>(v, name, code, &target);
-          }};
+  return member_option<Config>(
+      name, OptionType::kMatrix, false, range, help, member,
+      [empty](const auto& x) {
+        using Scalar = typename std::decay_t<decltype(x)>::Scalar;
+        return options_detail::matrix_text(Matrix<Scalar>(x), empty);
+      },
+      [name, code](auto& target, const OptionValue& v) {
+        using Scalar = typename std::decay_t<decltype(target)>::Scalar;
+        return options_detail::set_vector<Scalar>(v, name, code, &target);
+      });
 }
 
 // The accessor of a data member for the builders above:
@@ -271,6 +322,24 @@ OptionDecl<Config> vector_option(const char* name, const char* range,
 template <typename Config, typename T>
 auto member_access(T Config::*member) {
   return [member](auto& c) -> auto& { return c.*member; };
+}
+
+// The options that several tables declare alike: the structure one entry
+// per input of the output-error (offline/output_error_options.hpp) and the
+// Box-Jenkins refined-IV (offline/refined_iv_options.hpp, rivc_options)
+// estimators.
+template <typename Config, typename Member>
+OptionDecl<Config> numerator_counts_option(bool required, Member member) {
+  return integer_vector_option<Config>(
+      "nb", required, ">= 1 each, at most nf + 1",
+      "numerator coefficients, one per input", member);
+}
+
+template <typename Config, typename Member>
+OptionDecl<Config> input_delays_option(Member member) {
+  return integer_vector_option<Config>("nk", false, ">= 0 each",
+                                       "input delay in samples, one per input",
+                                       member);
 }
 
 // Sets one option by name; an unknown name is a bad option.

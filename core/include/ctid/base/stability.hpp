@@ -4,12 +4,14 @@
 // adaptive prefilter, thesis eqs. (3.9)-(3.10): A(p) must have all roots in
 // the open left half plane. The test is the Routh array (no eigenvalues,
 // no allocation once the workspace exists); the "reflect" policy mirrors
-// unstable roots into the left half plane.
+// unstable roots into the left half plane. Its discrete-time counterpart,
+// reflect_roots_into_unit_disc, mirrors roots into the unit disc.
 #pragma once
 
 #include <Eigen/Eigenvalues>
 #include <complex>
 
+#include "ctid/base/polynomial.hpp"
 #include "ctid/base/types.hpp"
 
 namespace ctid {
@@ -56,33 +58,72 @@ class HurwitzTest {
   Matrix<S> table_;
 };
 
+namespace stability_detail {
+
+// x^n + a1 x^(n-1) + .. + an (a = [a1 .. an]) in ascending powers.
+template <typename S>
+Vector<S> monic_ascending(const Vector<S>& a) {
+  const Eigen::Index n = a.size();
+  Vector<S> c(n + 1);
+  c(n) = 1;
+  for (Eigen::Index i = 0; i < n; ++i) c(n - 1 - i) = a(i);
+  return c;
+}
+
+// [a1 .. an] of a monic polynomial in descending powers, real parts.
+template <typename S>
+Vector<S> monic_tail(
+    const Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1>& c) {
+  return c.tail(c.size() - 1).real();
+}
+
+}  // namespace stability_detail
+
 // Reflects the roots of p^n + a1 p^(n-1) + .. with positive (or zero) real
 // part into the left half plane and returns the new coefficients. Roots on
 // the imaginary axis are moved to -eps*scale so the result is Hurwitz.
 template <typename S>
 Vector<S> reflect_unstable_roots(const Vector<S>& a) {
   const Eigen::Index n = a.size();
-  Matrix<S> companion = Matrix<S>::Zero(n, n);
-  for (Eigen::Index i = 0; i + 1 < n; ++i) companion(i + 1, i) = 1;
-  for (Eigen::Index i = 0; i < n; ++i) companion(0, i) = -a(i);
-  const Eigen::EigenSolver<Matrix<S>> eig(companion, false);
   using C = std::complex<S>;
-  Eigen::Matrix<C, Eigen::Dynamic, 1> poly(n + 1);  // descending powers
-  poly.setZero();
-  poly(0) = 1;
+  Eigen::Matrix<C, Eigen::Dynamic, 1> roots =
+      polynomial_roots<S>(stability_detail::monic_ascending(a));
   const S scale = std::max(S(1), a.cwiseAbs().maxCoeff());
   for (Eigen::Index k = 0; k < n; ++k) {
-    C root = eig.eigenvalues()(k);
+    C& root = roots(k);
     if (root.real() >= 0) {
       root = C(-std::max(root.real(),
                          std::sqrt(std::numeric_limits<S>::epsilon()) * scale),
                root.imag());
     }
-    for (Eigen::Index i = k + 1; i > 0; --i) poly(i) -= root * poly(i - 1);
   }
-  Vector<S> out(n);
-  for (Eigen::Index i = 0; i < n; ++i) out(i) = poly(i + 1).real();
-  return out;
+  return stability_detail::monic_tail(monic_from_roots<S>(roots));
+}
+
+// Reflects into the unit disc the roots of z^n + a1 z^(n-1) + .. + an
+// (a = [a1 .. an]: the polynomial 1 + a1 q^-1 + .. + an q^-n of a
+// discrete-time filter) and returns the new coefficients. A root z with
+// |z| > 1 becomes 1/conj(z) (the magnitude response keeps its shape, up
+// to a constant factor); a root then at |z| >= limit is moved along its ray
+// to |z| = pull_to (pull_to < limit <= 1 keeps it off the unit circle).
+// The coefficients are rebuilt from the roots, also when none moved;
+// *moved (when given) tells whether one did.
+template <typename S>
+Vector<S> reflect_roots_into_unit_disc(const Vector<S>& a, S limit, S pull_to,
+                                       bool* moved = nullptr) {
+  if (moved != nullptr) *moved = false;
+  const Eigen::Index n = a.size();
+  if (n == 0) return a;
+  Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> roots =
+      polynomial_roots<S>(stability_detail::monic_ascending(a));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    std::complex<S>& root = roots(k);
+    const S r = std::abs(root);
+    if (r > 1) root /= r * r;  // 1 / conj(root)
+    if (std::abs(root) >= limit) root *= pull_to / std::abs(root);
+    if (moved != nullptr && (r > 1 || r >= limit)) *moved = true;
+  }
+  return stability_detail::monic_tail(monic_from_roots<S>(roots));
 }
 
 }  // namespace ctid

@@ -189,50 +189,20 @@ template <typename S>
 const OptionTable<FreqConfig<S>>& freq_srivc_options() {
   using C = FreqConfig<S>;
   using V = const OptionValue&;
-  using options_detail::integers;
   using options_detail::number;
-  auto flag_text = [](bool b) { return std::string(b ? "true" : "false"); };
-  static const OptionTable<C> table = [&] {
+  static const OptionTable<C> table = [] {
     OptionTable<C> t;
-    t.push_back({"na",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 1 each",
-                 "denominator order, one per input",
-                 [](const C& c) { return integers(c.na); },
-                 [](C* c, V v) {
-                   c->na = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"nb",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 1 each, at most na + 1",
-                 "numerator coefficients, one per input",
-                 [](const C& c) { return integers(c.nb); },
-                 [](C* c, V v) {
-                   c->nb = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"delay",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, >= 0 each",
-                 "input delay (time units), one per input: fixed, or the "
-                 "start of the estimated one",
-                 [](const C& c) {
-                   return c.delay.empty()
-                              ? std::string("0")
-                              : std::to_string(c.delay.size()) + " value(s)";
-                 },
-                 [](C* c, V v) {
-                   const Matrix<double>& m = v.matrix;
-                   c->delay.assign(m.data(), m.data() + m.size());
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_vector_option<C>("na", true, ">= 1 each",
+                                         "denominator order, one per input",
+                                         member_access(&C::na)));
+    t.push_back(integer_vector_option<C>(
+        "nb", true, ">= 1 each, at most na + 1",
+        "numerator coefficients, one per input", member_access(&C::nb)));
+    t.push_back(real_list_option<C>(
+        "delay", "finite, >= 0 each",
+        "input delay (time units), one per input: fixed, or the start of the "
+        "estimated one",
+        "0", member_access(&C::delay)));
     t.push_back(real_option<C>(
         "tol", false, "> 0",
         "stop once the relative change of the estimate is below it",
@@ -241,40 +211,19 @@ const OptionTable<FreqConfig<S>>& freq_srivc_options() {
         "maxiter", false, ">= 1",
         "largest number of SRIVC (or Levenberg-Marquardt) iterations",
         [](auto& c) -> auto& { return c.settings.max_iterations; }));
-    t.push_back({"estimate_delay",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false; one input",
-                 "estimate the delay in [td_min, td_max]",
-                 [flag_text](const C& c) {
-                   return flag_text(c.settings.estimate_delay);
-                 },
-                 [](C* c, V v) {
-                   c->settings.estimate_delay = v.flag;
-                   return Status::Ok();
-                 }});
+    t.push_back(flag_option<C>(
+        "estimate_delay", "true | false; one input",
+        "estimate the delay in [td_min, td_max]",
+        [](auto& c) -> auto& { return c.settings.estimate_delay; }));
     t.push_back(real_option<C>(
         "td_min", false, "finite, >= 0",
         "lower end of the delay search (time units)",
         [](auto& c) -> auto& { return c.settings.td_min; }));
-    t.push_back({"td_max",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "finite, >= td_min",
-                 "upper end of the delay search (time units)",
-                 [](const C& c) {
-                   return std::isnan(c.td_max)
-                              ? std::string(
-                                    "(half the period of periodic data, "
-                                    "else pi / the median frequency)")
-                              : number(c.td_max);
-                 },
-                 [](C* c, V v) {
-                   c->td_max = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(derived_real_option<C>(
+        "td_max", "finite, >= td_min",
+        "upper end of the delay search (time units)",
+        "(half the period of periodic data, else pi / the median frequency)",
+        member_access(&C::td_max)));
     t.push_back(real_option<C>(
         "period", false, "> 0, Inf: not periodic",
         "the period of periodic data (relay feedback; time units)",
@@ -302,29 +251,14 @@ const OptionTable<FreqConfig<S>>& freq_srivc_options() {
     t.push_back(integer_option<C>(
         "num_td", false, "2 .. 1e5", "delays of the search's grid",
         [](auto& c) -> auto& { return c.settings.num_td; }));
-    t.push_back({"grid",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false",
-                 "search the grid (false: refine from the delay given)",
-                 [flag_text](const C& c) { return flag_text(c.settings.grid); },
-                 [](C* c, V v) {
-                   c->settings.grid = v.flag;
-                   return Status::Ok();
-                 }});
-    t.push_back(
-        {"output_error",
-         OptionType::kFlag,
-         false,
-         {},
-         "true | false",
-         "refine SRIVC's estimate by output error (TFFCOE)",
-         [flag_text](const C& c) { return flag_text(c.settings.output_error); },
-         [](C* c, V v) {
-           c->settings.output_error = v.flag;
-           return Status::Ok();
-         }});
+    t.push_back(flag_option<C>(
+        "grid", "true | false",
+        "search the grid (false: refine from the delay given)",
+        [](auto& c) -> auto& { return c.settings.grid; }));
+    t.push_back(flag_option<C>(
+        "output_error", "true | false",
+        "refine SRIVC's estimate by output error (TFFCOE)",
+        [](auto& c) -> auto& { return c.settings.output_error; }));
     t.push_back(
         {"theta_init",
          OptionType::kMatrix,

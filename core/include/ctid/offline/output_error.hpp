@@ -187,29 +187,12 @@ bool schur_stable(const Vector<S>& a) {
   return true;
 }
 
-// Reflects the roots of 1 + a1 z^-1 + .. outside the unit circle to 1/z*.
+// Reflects the roots of 1 + a1 z^-1 + .. outside the unit circle to
+// 1/conj(z), and moves those at |z| >= 0.999 to |z| = 0.99: a start whose
+// F is well inside the stability region.
 template <typename S>
 Vector<S> reflect_outside_roots(const Vector<S>& a) {
-  const Eigen::Index n = a.size();
-  if (n == 0) return a;
-  Matrix<S> companion = Matrix<S>::Zero(n, n);
-  for (Eigen::Index i = 0; i + 1 < n; ++i) companion(i + 1, i) = 1;
-  for (Eigen::Index i = 0; i < n; ++i) companion(0, i) = -a(i);
-  const Eigen::EigenSolver<Matrix<S>> eig(companion, false);
-  using C = std::complex<S>;
-  Eigen::Matrix<C, Eigen::Dynamic, 1> poly =
-      Eigen::Matrix<C, -1, 1>::Zero(n + 1);
-  poly(0) = 1;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    C root = eig.eigenvalues()(k);
-    const S r = std::abs(root);
-    if (r > 1) root /= r * r;  // 1 / conj(root): same spectrum magnitude
-    if (std::abs(root) >= S(0.999)) root *= S(0.99) / std::abs(root);
-    for (Eigen::Index i = k + 1; i > 0; --i) poly(i) -= root * poly(i - 1);
-  }
-  Vector<S> out(n);
-  for (Eigen::Index i = 0; i < n; ++i) out(i) = poly(i + 1).real();
-  return out;
+  return reflect_roots_into_unit_disc<S>(a, S(0.999), S(0.99));
 }
 
 // y = 1/F(q) x, F = 1 + f1 q^-1 + .., from rest.
@@ -646,20 +629,14 @@ Status start_estimate(const OeStructure& s, const OeData<S>& d, S cutoff,
     }
     RivSettings<S> settings;
     if (cutoff > 0) settings.cutoffs = {cutoff};
-    RivData<S> data;
-    data.y = d.y;
-    data.w = d.u;
-    data.num_samples = d.num_samples;
-    data.ts = d.ts;
-    data.instants = d.instants;
-    RivResult<S> r;
-    const Status st = refined_iv(problem, settings, data, &r);
-    if (!st.ok() && st.code() != ErrorCode::kNotConverged) {
-      return Status(st.code(), "SRIVC start: " + st.message());
-    }
-    const int nfb = static_cast<int>(r.theta.size());
+    Vector<S> fit;
+    const Status st = refined_iv_start<S>(
+        problem, settings, {d.y, d.u, d.num_samples, d.ts, d.instants},
+        "SRIVC start", &fit);
+    if (!st.ok()) return st;
+    const int nfb = static_cast<int>(fit.size());
     *theta = Vector<S>(s.num_parameters());
-    theta->head(nfb) = r.theta;
+    theta->head(nfb) = fit;
     if (s.estimate_delay) (*theta)(nfb) = static_cast<S>(start_delay);
     *how = "srivc";
     return Status::Ok();

@@ -82,60 +82,18 @@ template <typename S>
 const OptionTable<OeConfig<S>>& output_error_options() {
   using C = OeConfig<S>;
   using V = const OptionValue&;
-  using options_detail::integers;
-  using options_detail::number;
   static const OptionTable<C> table = [] {
     OptionTable<C> t;
-    t.push_back({"nf",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 1 each (continuous time), >= 0 (discrete time)",
-                 "denominator order, one per input",
-                 [](const C& c) { return integers(c.nf); },
-                 [](C* c, V v) {
-                   c->nf = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"nb",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 1 each, at most nf + 1",
-                 "numerator coefficients, one per input",
-                 [](const C& c) { return integers(c.nb); },
-                 [](C* c, V v) {
-                   c->nb = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"nk",
-                 OptionType::kIntegerVector,
-                 false,
-                 {},
-                 ">= 0 each",
-                 "input delay in samples, one per input",
-                 [](const C& c) { return integers(c.nk); },
-                 [](C* c, V v) {
-                   c->nk = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"delay",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, >= 0 each",
-                 "continuous-time input delay in time units on top of nk, "
-                 "one per input",
-                 [](const C& c) {
-                   return c.delay.empty()
-                              ? std::string("0")
-                              : std::to_string(c.delay.size()) + " value(s)";
-                 },
-                 [](C* c, V v) {
-                   const Matrix<double>& m = v.matrix;
-                   c->delay.assign(m.data(), m.data() + m.size());
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_vector_option<C>(
+        "nf", true, ">= 1 each (continuous time), >= 0 (discrete time)",
+        "denominator order, one per input", member_access(&C::nf)));
+    t.push_back(numerator_counts_option<C>(true, member_access(&C::nb)));
+    t.push_back(input_delays_option<C>(member_access(&C::nk)));
+    t.push_back(real_list_option<C>(
+        "delay", "finite, >= 0 each",
+        "continuous-time input delay in time units on top of nk, one per "
+        "input",
+        "0", member_access(&C::delay)));
     t.push_back({"intersample",
                  OptionType::kChoice,
                  false,
@@ -149,40 +107,21 @@ const OptionTable<OeConfig<S>>& output_error_options() {
                    c->rule = options_detail::intersample_of(v.word);
                    return Status::Ok();
                  }});
-    t.push_back({"estimate_delay",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false; one input, nb <= nf",
-                 "estimate the total delay as a parameter, started from "
-                 "nk Ts + delay",
-                 [](const C& c) {
-                   return std::string(c.estimate_delay ? "true" : "false");
-                 },
-                 [](C* c, V v) {
-                   c->estimate_delay = v.flag;
-                   return Status::Ok();
-                 }});
+    t.push_back(flag_option<C>("estimate_delay",
+                               "true | false; one input, nb <= nf",
+                               "estimate the total delay as a parameter, "
+                               "started from nk Ts + delay",
+                               member_access(&C::estimate_delay)));
     t.push_back(real_option<C>(
         "delay_max", false, "finite, >= 0",
         "upper bound of the estimated delay (time units)",
         [](auto& c) -> auto& { return c.delay_max; }));
-    t.push_back(
-        {"theta_init",
-         OptionType::kMatrix,
-         false,
-         {},
-         "[f; b] (; delay), finite, a stable F",
-         "initial parameters; absent: the SRIVC (continuous) or ARX "
-         "(discrete) start",
-         [](const C& c) {
-           return options_detail::matrix_text(Matrix<S>(c.settings.theta_init),
-                                              "(SRIVC or ARX start)");
-         },
-         [](C* c, V v) {
-           return options_detail::set_vector(
-               v, "theta_init", ErrorCode::kBadInput, &c->settings.theta_init);
-         }});
+    t.push_back(vector_option<C>(
+        "theta_init", "[f; b] (; delay), finite, a stable F",
+        "initial parameters; absent: the SRIVC (continuous) or ARX "
+        "(discrete) start",
+        "(SRIVC or ARX start)", ErrorCode::kBadInput,
+        [](auto& c) -> auto& { return c.settings.theta_init; }));
     t.push_back(integer_option<C>(
         "maxiter", false, ">= 0",
         "largest number of Levenberg-Marquardt iterations",
@@ -217,40 +156,20 @@ const OptionTable<OeConfig<S>>& output_error_options() {
                      c->starts.starts.push_back(m.col(k).cast<S>());
                    return Status::Ok();
                  }});
-    t.push_back({"default_start",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false",
-                 "with starts: also the run from theta_init (or the SRIVC / "
-                 "ARX start), first",
-                 [](const C& c) {
-                   return std::string(c.starts.default_start ? "true"
-                                                             : "false");
-                 },
-                 [](C* c, V v) {
-                   c->starts.default_start = v.flag;
-                   return Status::Ok();
-                 }});
+    t.push_back(flag_option<C>(
+        "default_start", "true | false",
+        "with starts: also the run from theta_init (or the SRIVC / ARX "
+        "start), first",
+        [](auto& c) -> auto& { return c.starts.default_start; }));
     t.push_back(real_option<C>(
         "delay_min", false, "finite, in [0, delay_max]",
         "lower bound of the delay estimated from the starts (time "
         "units)",
         [](auto& c) -> auto& { return c.starts.delay_min; }));
-    t.push_back({"integrate",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false; one ZOH input, nf >= 2, nb <= nf - 1",
-                 "a pole fixed at 0 (f_nf = 0): B/F' fitted on the "
-                 "integrated input",
-                 [](const C& c) {
-                   return std::string(c.starts.integrate ? "true" : "false");
-                 },
-                 [](C* c, V v) {
-                   c->starts.integrate = v.flag;
-                   return Status::Ok();
-                 }});
+    t.push_back(flag_option<C>(
+        "integrate", "true | false; one ZOH input, nf >= 2, nb <= nf - 1",
+        "a pole fixed at 0 (f_nf = 0): B/F' fitted on the integrated input",
+        [](auto& c) -> auto& { return c.starts.integrate; }));
     return t;
   }();
   return table;

@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "ctid/base/polynomial.hpp"
+#include "ctid/base/stability.hpp"
 #include "ctid/base/status.hpp"
 
 namespace ctid {
@@ -265,29 +266,18 @@ inline Status solve_iv(const Eigen::MatrixXd& zb, const Eigen::MatrixXd& zc,
   return Status::Ok();
 }
 
-// Reflects the roots outside the unit circle inside (same spectrum shape).
+// Reflects the roots of c = [1 c1 .. cn] on or outside the unit circle
+// inside (same spectrum shape; one on the circle moves to |z| = 0.999);
+// c itself when none is.
 inline Eigen::VectorXd make_minimum_phase(const Eigen::VectorXd& c) {
-  if (c.size() < 2) return c;
-  const Eigen::VectorXcd r = polynomial_roots<double>(c.reverse());
-  bool any = false;
-  for (long i = 0; i < r.size(); ++i) any = any || std::abs(r[i]) >= 1.0;
-  if (!any) return c;
-  std::vector<std::complex<double>> p{1.0};
-  for (long i = 0; i < r.size(); ++i) {
-    std::complex<double> z = r[i];
-    if (std::abs(z) >= 1.0) {
-      z = 1.0 / std::conj(z);
-      if (std::abs(z) >= 1.0) z *= 0.999;  // on the unit circle
-    }
-    std::vector<std::complex<double>> q(p.size() + 1, 0.0);
-    for (std::size_t j = 0; j < p.size(); ++j) {
-      q[j] += p[j];
-      q[j + 1] -= z * p[j];
-    }
-    p = q;
-  }
-  Eigen::VectorXd out(c.size());
-  for (long j = 0; j < c.size(); ++j) out[j] = p[j].real();
+  const long n = c.size() - 1;
+  if (n < 1) return c;
+  bool moved = false;
+  const Eigen::VectorXd reflected =
+      reflect_roots_into_unit_disc<double>(c.tail(n), 1.0, 0.999, &moved);
+  if (!moved) return c;
+  Eigen::VectorXd out = c;
+  out.tail(n) = reflected;
   return out;
 }
 

@@ -358,6 +358,23 @@ Status refined_iv(const RivProblem<S>& problem, const RivSettings<S>& settings,
   return status;
 }
 
+// The SRIVC fit of `problem` to `data` as the start of another estimator's
+// iterations (output_error.hpp, refined_iv_bj.hpp): a fit that did not
+// converge is still a start; any other failure is returned, its message
+// after "<what>: ".
+template <typename S>
+Status refined_iv_start(const RivProblem<S>& problem,
+                        const RivSettings<S>& settings, const RivData<S>& data,
+                        const std::string& what, Vector<S>* theta) {
+  RivResult<S> r;
+  const Status status = refined_iv<S>(problem, settings, data, &r);
+  if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
+    return Status(status.code(), what + ": " + status.message());
+  }
+  *theta = r.theta;
+  return Status::Ok();
+}
+
 namespace riv_detail {
 
 // The SISO/MISO common-denominator problem of offline_iv.hpp's interface

@@ -927,14 +927,11 @@ Status srivc_start(const RivcSettings<S>& settings, const Record& data, int np,
                    Vector<S>* theta0) {
   *theta0 = settings.theta_init;
   if (theta0->size() == 0) {
-    const RivData<S> d{data.y, data.u, data.num_samples, data.ts};
-    RivResult<S> r;
-    const Status status = refined_iv<S>(make_start(), settings.start, d, &r);
-    if (!status.ok() && status.code() != ErrorCode::kNotConverged) {
-      return Status(status.code(), "the SRIVC start: " + status.message());
-    }
-    *theta0 = r.theta;
-  } else if (theta0->size() != np || !theta0->allFinite()) {
+    return refined_iv_start<S>(make_start(), settings.start,
+                               {data.y, data.u, data.num_samples, data.ts},
+                               "the SRIVC start", theta0);
+  }
+  if (theta0->size() != np || !theta0->allFinite()) {
     return bad_input("theta_init needs " + std::to_string(np) +
                      " finite entries " + layout);
   }

@@ -71,6 +71,38 @@ inline Status intersample_code(int code, InterSample* rule) {
 
 inline std::string each(int v) { return std::to_string(v) + " each"; }
 
+// An intersample rule held in one member (as real_option), read as a
+// host's code 0 (zoh) or 1 (foh).
+template <typename Config, typename Member>
+OptionDecl<Config> intersample_code_option(const char* name, const char* help,
+                                           Member member) {
+  return member_option<Config>(
+      name, OptionType::kInteger, false, "0 (zoh) | 1 (foh)", help, member,
+      [](InterSample rule) {
+        return std::to_string(rule == InterSample::kFoh ? 1 : 0);
+      },
+      [](InterSample& rule, const OptionValue& v) {
+        return intersample_code(v.integer, &rule);
+      });
+}
+
+// The start of an iteration (kMatrix, taken in column-major order whatever
+// its shape) held in one member; absent: the SRIVC start.
+template <typename Config, typename Member>
+OptionDecl<Config> srivc_start_option(const char* name, const char* range,
+                                      const char* help, Member member) {
+  return member_option<Config>(
+      name, OptionType::kMatrix, false, range, help, member,
+      [](const auto&) { return std::string("(SRIVC start)"); },
+      [](auto& target, const OptionValue& v) {
+        using Scalar = typename std::decay_t<decltype(target)>::Scalar;
+        target =
+            Eigen::Map<const Vector<double>>(v.matrix.data(), v.matrix.size())
+                .cast<Scalar>();
+        return Status::Ok();
+      });
+}
+
 }  // namespace options_detail
 
 // The engine's problem for m columns of w: the config's problem with one
@@ -131,11 +163,14 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
   using C = RivConfig<S>;
   using V = const OptionValue&;
   using options_detail::each;
-  using options_detail::integers;
-  using options_detail::number;
-  const auto flag = [](bool b) { return std::string(b ? "true" : "false"); };
-  const auto values = [](const Matrix<double>& m) {
-    return std::vector<double>(m.data(), m.data() + m.size());
+  // One entry per column of w, shown by RivChannel's default `shown`.
+  const auto per_column = [](const char* name, bool required, const char* range,
+                             const char* help, std::string shown,
+                             std::vector<int> C::*member) {
+    OptionDecl<C> decl = integer_vector_option<C>(name, required, range, help,
+                                                  member_access(member));
+    decl.show = [shown](const C&) { return shown; };
+    return decl;
   };
   static const OptionTable<C> table = [&] {
     OptionTable<C> t;
@@ -157,151 +192,57 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
                                                             : RivMethod::kSrivc;
                    return Status::Ok();
                  }});
-    t.push_back({"nf",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 1 each",
-                 "order of each denominator F_g",
-                 [](const C& c) { return integers(c.problem.nf); },
-                 [](C* c, V v) {
-                   c->problem.nf = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"group",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 "1..numel(nf) each",
-                 "the denominator each column of w enters (1-based)",
-                 [](const C&) { return each(RivChannel().group + 1); },
-                 [](C* c, V v) {
-                   c->group = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"nb",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 0 each, at most nf + 1 of its group",
-                 "numerator coefficients of each column of w",
-                 [](const C& c) { return integers(c.nb); },
-                 [](C* c, V v) {
-                   c->nb = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"nk",
-                 OptionType::kIntegerVector,
-                 true,
-                 {},
-                 ">= 0 each (0 on irregular data)",
-                 "input delay in samples of each column of w",
-                 [](const C&) { return each(RivChannel().nk); },
-                 [](C* c, V v) {
-                   c->nk = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"intersample",
-                 OptionType::kIntegerVector,
-                 false,
-                 {},
-                 "0 (zoh) | 1 (foh) each",
-                 "how each column of w varies between samples",
-                 [](const C&) {
-                   return each(RivChannel().rule == InterSample::kFoh ? 1 : 0);
-                 },
-                 [](C* c, V v) {
-                   c->intersample = v.integers;
-                   return Status::Ok();
-                 }});
-    t.push_back({"delay",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, >= 0 each; open loop",
-                 "continuous delay (time units) of each column of w on top "
-                 "of nk",
-                 [](const C&) { return number(RivChannel().delay) + " each"; },
-                 [values](C* c, V v) {
-                   c->delay = values(v.matrix);
-                   return Status::Ok();
-                 }});
-    t.push_back({"y_intersample",
-                 OptionType::kInteger,
-                 false,
-                 {},
-                 "0 (zoh) | 1 (foh)",
-                 "how the output is interpolated by the refined steps' "
-                 "filters",
-                 [](const C& c) {
-                   return std::to_string(
-                       c.problem.y_rule == InterSample::kFoh ? 1 : 0);
-                 },
-                 [](C* c, V v) {
-                   return options_detail::intersample_code(v.integer,
-                                                           &c->problem.y_rule);
-                 }});
-    t.push_back({"output_offset",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false",
-                 "estimate a constant output offset c (the last parameter)",
-                 [flag](const C& c) { return flag(c.problem.output_offset); },
-                 [](C* c, V v) {
-                   c->problem.output_offset = v.flag;
-                   return Status::Ok();
-                 }});
-    t.push_back({"initial_state",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false",
-                 "estimate the free response of an unknown initial state",
-                 [flag](const C& c) { return flag(c.problem.initial_state); },
-                 [](C* c, V v) {
-                   c->problem.initial_state = v.flag;
-                   return Status::Ok();
-                 }});
-    t.push_back({"fixed",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "empty or one entry per parameter",
-                 "mask of the coefficients held at fixed_values",
-                 [](const C&) { return std::string("(none)"); },
-                 [values](C* c, V v) {
-                   c->fixed = values(v.matrix);
-                   return Status::Ok();
-                 }});
-    t.push_back({"fixed_values",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, one entry per parameter",
-                 "the values of the fixed coefficients (original time)",
-                 [](const C&) { return std::string("(none)"); },
-                 [values](C* c, V v) {
-                   c->fixed_values = values(v.matrix);
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_vector_option<C>(
+        "nf", true, ">= 1 each", "order of each denominator F_g",
+        [](auto& c) -> auto& { return c.problem.nf; }));
+    t.push_back(per_column("group", true, "1..numel(nf) each",
+                           "the denominator each column of w enters (1-based)",
+                           each(RivChannel().group + 1), &C::group));
+    t.push_back(integer_vector_option<C>(
+        "nb", true, ">= 0 each, at most nf + 1 of its group",
+        "numerator coefficients of each column of w", member_access(&C::nb)));
+    t.push_back(per_column("nk", true, ">= 0 each (0 on irregular data)",
+                           "input delay in samples of each column of w",
+                           each(RivChannel().nk), &C::nk));
+    t.push_back(per_column("intersample", false, "0 (zoh) | 1 (foh) each",
+                           "how each column of w varies between samples",
+                           each(RivChannel().rule == InterSample::kFoh ? 1 : 0),
+                           &C::intersample));
+    t.push_back(real_list_option<C>(
+        "delay", "finite, >= 0 each; open loop",
+        "continuous delay (time units) of each column of w on top of nk",
+        options_detail::number(RivChannel().delay) + " each",
+        member_access(&C::delay)));
+    t.push_back(options_detail::intersample_code_option<C>(
+        "y_intersample",
+        "how the output is interpolated by the refined steps' filters",
+        [](auto& c) -> auto& { return c.problem.y_rule; }));
+    t.push_back(flag_option<C>(
+        "output_offset", "true | false",
+        "estimate a constant output offset c (the last parameter)",
+        [](auto& c) -> auto& { return c.problem.output_offset; }));
+    t.push_back(flag_option<C>(
+        "initial_state", "true | false",
+        "estimate the free response of an unknown initial state",
+        [](auto& c) -> auto& { return c.problem.initial_state; }));
+    t.push_back(
+        real_list_option<C>("fixed", "empty or one entry per parameter",
+                            "mask of the coefficients held at fixed_values",
+                            "(none)", member_access(&C::fixed)));
+    t.push_back(real_list_option<C>(
+        "fixed_values", "finite, one entry per parameter",
+        "the values of the fixed coefficients (original time)", "(none)",
+        member_access(&C::fixed_values)));
     t.push_back(vector_option<C>(
         "theta_init", "finite, one entry per parameter",
         "the start of the iterations (original time)", "(automatic start)",
         ErrorCode::kBadInput,
         [](auto& c) -> auto& { return c.settings.theta_init; }));
-    t.push_back({"cutoffs",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, > 0 each",
-                 "SVF cut-off(s) (rad/s) of LSSVF/IVSVF or of the start grid",
-                 [](const C&) { return std::string("(12 log-spaced)"); },
-                 [](C* c, V v) {
-                   const Matrix<double>& m = v.matrix;
-                   c->settings.cutoffs.assign(m.data(), m.data() + m.size());
-                   return Status::Ok();
-                 }});
+    t.push_back(real_list_option<C>(
+        "cutoffs", "finite, > 0 each",
+        "SVF cut-off(s) (rad/s) of LSSVF/IVSVF or of the start grid",
+        "(12 log-spaced)",
+        [](auto& c) -> auto& { return c.settings.cutoffs; }));
     t.push_back(real_option<C>(
         "tol", false, "> 0",
         "stop once the relative change of theta is below it",
@@ -335,19 +276,10 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
         "integrator_pole", false, "finite, >= 0",
         "the prefilter pole that replaces p = 0 (rad/s); 0: 10/T",
         [](auto& c) -> auto& { return c.settings.integrator_pole; }));
-    t.push_back(
-        {"refit_integrators",
-         OptionType::kFlag,
-         false,
-         {},
-         "true | false; SRIVC in open loop",
-         "refit a fit whose slowest pole crept to p = 0 with that "
-         "pole declared",
-         [flag](const C& c) { return flag(c.settings.refit_integrators); },
-         [](C* c, V v) {
-           c->settings.refit_integrators = v.flag;
-           return Status::Ok();
-         }});
+    t.push_back(flag_option<C>(
+        "refit_integrators", "true | false; SRIVC in open loop",
+        "refit a fit whose slowest pole crept to p = 0 with that pole declared",
+        [](auto& c) -> auto& { return c.settings.refit_integrators; }));
     t.push_back(vector_option<C>(
         "controller_num", "a vector; with controller_den",
         "closed loop: the controller's numerator (powers of p, or of q^-1 "
@@ -359,17 +291,10 @@ const OptionTable<RivConfig<S>>& refined_iv_options() {
         "closed loop: the controller's denominator", "(open loop)",
         ErrorCode::kBadOption,
         [](auto& c) -> auto& { return c.problem.controller_den; }));
-    t.push_back({"discrete_controller",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false; ZOH data",
-                 "the controller is C(q^-1) in u = r1 + C (r2 - y)",
-                 [flag](const C& c) { return flag(c.discrete_controller); },
-                 [](C* c, V v) {
-                   c->discrete_controller = v.flag;
-                   return Status::Ok();
-                 }});
+    t.push_back(
+        flag_option<C>("discrete_controller", "true | false; ZOH data",
+                       "the controller is C(q^-1) in u = r1 + C (r2 - y)",
+                       member_access(&C::discrete_controller)));
     return t;
   }();
   return table;
@@ -426,38 +351,7 @@ template <typename S>
 const OptionTable<RivcConfig<S>>& rivc_options() {
   using C = RivcConfig<S>;
   using V = const OptionValue&;
-  using options_detail::integers;
-  using options_detail::number;
-  const auto order = [](const char* name, const char* range, const char* help,
-                        std::vector<int> C::*field) {
-    return OptionDecl<C>{name,
-                         OptionType::kIntegerVector,
-                         false,
-                         {},
-                         range,
-                         help,
-                         [field](const C& c) { return integers(c.*field); },
-                         [field](C* c, V v) {
-                           c->*field = v.integers;
-                           return Status::Ok();
-                         }};
-  };
-  const auto count = [](const char* name, const char* range, const char* help,
-                        int C::*field) {
-    return OptionDecl<C>{
-        name,
-        OptionType::kInteger,
-        false,
-        {},
-        range,
-        help,
-        [field](const C& c) { return std::to_string(c.*field); },
-        [field](C* c, V v) {
-          c->*field = v.integer;
-          return Status::Ok();
-        }};
-  };
-  static const OptionTable<C> table = [&] {
+  static const OptionTable<C> table = [] {
     OptionTable<C> t;
     t.push_back({"method",
                  OptionType::kChoice,
@@ -478,36 +372,24 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
                                                     : RivcMethod::kRivc;
                    return Status::Ok();
                  }});
-    t.push_back(order("nb", ">= 1 each, at most nf + 1",
-                      "numerator coefficients, one per input", &C::nb));
+    t.push_back(numerator_counts_option<C>(false, member_access(&C::nb)));
     t.push_back(integer_option<C>(
         "nc", false, ">= 0", "order of the noise numerator C(q^-1)",
         [](auto& c) -> auto& { return c.problem.nc; }));
     t.push_back(integer_option<C>(
         "nd", false, ">= 0", "order of the noise denominator D(q^-1)",
         [](auto& c) -> auto& { return c.problem.nd; }));
-    t.push_back(
-        order("nf", ">= 1 each", "denominator order, one per input", &C::nf));
-    t.push_back(order("nk", ">= 0 each",
-                      "input delay in samples, one per input", &C::nk));
+    t.push_back(integer_vector_option<C>("nf", false, ">= 1 each",
+                                         "denominator order, one per input",
+                                         member_access(&C::nf)));
+    t.push_back(input_delays_option<C>(member_access(&C::nk)));
     t.push_back(real_option<C>(
         "delay", false, "finite, >= 0; one input, open loop",
         "continuous delay (time units) on top of nk",
         [](auto& c) -> auto& { return c.problem.delay; }));
-    t.push_back({"intersample",
-                 OptionType::kInteger,
-                 false,
-                 {},
-                 "0 (zoh) | 1 (foh)",
-                 "how the input varies between samples",
-                 [](const C& c) {
-                   return std::to_string(
-                       c.problem.u_rule == InterSample::kFoh ? 1 : 0);
-                 },
-                 [](C* c, V v) {
-                   return options_detail::intersample_code(v.integer,
-                                                           &c->problem.u_rule);
-                 }});
+    t.push_back(options_detail::intersample_code_option<C>(
+        "intersample", "how the input varies between samples",
+        [](auto& c) -> auto& { return c.problem.u_rule; }));
     t.push_back(real_option<C>(
         "tol", false, "finite, > 0",
         "stop once the relative change of theta is below it",
@@ -515,33 +397,14 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
     t.push_back(integer_option<C>(
         "maxiter", false, "1..1e5", "largest number of RIVC iterations",
         [](auto& c) -> auto& { return c.settings.max_iterations; }));
-    t.push_back({"theta_init",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "[f b], a stable F",
-                 "the start of the iterations; absent: the SRIVC start",
-                 [](const C&) { return std::string("(SRIVC start)"); },
-                 [](C* c, V v) {
-                   c->settings.theta_init =
-                       Eigen::Map<const Vector<double>>(v.matrix.data(),
-                                                        v.matrix.size())
-                           .cast<S>();
-                   return Status::Ok();
-                 }});
-    t.push_back({"cutoffs",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "finite, > 0 each",
-                 "SVF cut-off(s) (rad/s) of the SRIVC start's IVSVF",
-                 [](const C&) { return std::string("(12 log-spaced)"); },
-                 [](C* c, V v) {
-                   const Matrix<double>& m = v.matrix;
-                   c->settings.start.cutoffs.assign(m.data(),
-                                                    m.data() + m.size());
-                   return Status::Ok();
-                 }});
+    t.push_back(options_detail::srivc_start_option<C>(
+        "theta_init", "[f b], a stable F",
+        "the start of the iterations; absent: the SRIVC start",
+        [](auto& c) -> auto& { return c.settings.theta_init; }));
+    t.push_back(real_list_option<C>(
+        "cutoffs", "finite, > 0 each",
+        "SVF cut-off(s) (rad/s) of the SRIVC start's IVSVF", "(12 log-spaced)",
+        [](auto& c) -> auto& { return c.settings.start.cutoffs; }));
     t.push_back(integer_option<C>(
         "max_starts", false, "1..100",
         "the SRIVC start runs from at most this many ranked starts",
@@ -578,27 +441,20 @@ const OptionTable<RivcConfig<S>>& rivc_options() {
         "closed loop (clrivc): the controller's denominator", "(open loop)",
         ErrorCode::kBadOption,
         [](auto& c) -> auto& { return c.problem.controller_den; }));
-    t.push_back(count("cl_nb", ">= 1, at most cl_nf + 1",
-                      "cl2srivc's first stage (u on r): numerator "
-                      "coefficients",
-                      &C::cl_nb));
-    t.push_back(count("cl_nf", ">= 1",
-                      "cl2srivc's first stage: denominator order", &C::cl_nf));
-    t.push_back(count("cl_nk", ">= 0",
-                      "cl2srivc's first stage: delay in samples", &C::cl_nk));
-    t.push_back({"cl_theta_init",
-                 OptionType::kMatrix,
-                 false,
-                 {},
-                 "[f b] of the first stage, a stable F",
-                 "cl2srivc's first stage's start; absent: its SRIVC start",
-                 [](const C&) { return std::string("(SRIVC start)"); },
-                 [](C* c, V v) {
-                   c->cl_theta_init = Eigen::Map<const Vector<double>>(
-                                          v.matrix.data(), v.matrix.size())
-                                          .cast<S>();
-                   return Status::Ok();
-                 }});
+    t.push_back(integer_option<C>(
+        "cl_nb", false, ">= 1, at most cl_nf + 1",
+        "cl2srivc's first stage (u on r): numerator coefficients",
+        member_access(&C::cl_nb)));
+    t.push_back(integer_option<C>("cl_nf", false, ">= 1",
+                                  "cl2srivc's first stage: denominator order",
+                                  member_access(&C::cl_nf)));
+    t.push_back(integer_option<C>("cl_nk", false, ">= 0",
+                                  "cl2srivc's first stage: delay in samples",
+                                  member_access(&C::cl_nk)));
+    t.push_back(options_detail::srivc_start_option<C>(
+        "cl_theta_init", "[f b] of the first stage, a stable F",
+        "cl2srivc's first stage's start; absent: its SRIVC start",
+        member_access(&C::cl_theta_init)));
     return t;
   }();
   return table;
@@ -611,35 +467,19 @@ const OptionTable<RivDelaySettings<S>>& refined_iv_delay_options() {
   using C = RivDelaySettings<S>;
   using V = const OptionValue&;
   using options_detail::number;
-  const auto real = [](const char* name, bool required, const char* range,
-                       const char* help, S DelaySearchSettings<S>::*field) {
-    return OptionDecl<C>{
-        name,
-        OptionType::kReal,
-        required,
-        {},
-        range,
-        help,
-        [field](const C& c) { return number(c.search.*field); },
-        [field](C* c, V v) {
-          c->search.*field = static_cast<S>(v.real);
-          return Status::Ok();
-        }};
+  // A member of the search's settings.
+  const auto search = [](auto DelaySearchSettings<S>::*field) {
+    return [field](auto& c) -> auto& { return c.search.*field; };
   };
-  const auto count = [](const char* name, const char* range, const char* help,
-                        int DelaySearchSettings<S>::*field) {
-    return OptionDecl<C>{
-        name,
-        OptionType::kInteger,
-        false,
-        {},
-        range,
-        help,
-        [field](const C& c) { return std::to_string(c.search.*field); },
-        [field](C* c, V v) {
-          c->search.*field = v.integer;
-          return Status::Ok();
-        }};
+  const auto real = [search](const char* name, bool required, const char* range,
+                             const char* help,
+                             S DelaySearchSettings<S>::*field) {
+    return real_option<C>(name, required, range, help, search(field));
+  };
+  const auto count = [search](const char* name, const char* range,
+                              const char* help,
+                              int DelaySearchSettings<S>::*field) {
+    return integer_option<C>(name, false, range, help, search(field));
   };
   static const OptionTable<C> table = [&] {
     OptionTable<C> t;

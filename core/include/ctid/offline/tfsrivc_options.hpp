@@ -81,7 +81,6 @@ Status validate(const TfsrivcConfig<S>& c) {
 template <typename S>
 const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
   using C = TfsrivcConfig<S>;
-  using V = const OptionValue&;
   using options_detail::number;
   const auto flag = [](const char* name, const char* help, bool C::*member) {
     return flag_option<C>(name, "true | false ('on' | 'off')", help,
@@ -93,25 +92,18 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
   };
   // A real > 0 whose default 0 stands for an automatic value.
   const auto automatic = [](const char* name, const char* shown,
-                            const char* help, S C::*field) {
-    return OptionDecl<C>{
-        name,
-        OptionType::kReal,
-        false,
-        {},
-        "> 0",
-        help,
-        [field, shown](const C& c) {
-          return c.*field == 0 ? std::string(shown) : number(c.*field);
-        },
-        [field, name](C* c, V v) {
+                            const char* help, S C::*member) {
+    return member_option<C>(
+        name, OptionType::kReal, false, "> 0", help, member_access(member),
+        [shown](S x) { return x == 0 ? std::string(shown) : number(x); },
+        [name](S& target, const OptionValue& v) {
           if (!(v.real > 0)) {
             return Status(ErrorCode::kBadOption,
                           std::string(name) + " must be a scalar > 0");
           }
-          c->*field = static_cast<S>(v.real);
+          target = static_cast<S>(v.real);
           return Status::Ok();
-        }};
+        });
   };
   const auto count = [](const char* name, const char* range, const char* help,
                         int C::*member) {
@@ -123,22 +115,11 @@ const OptionTable<TfsrivcConfig<S>>& tfsrivc_options() {
     t.push_back(real("tdmin", false, "finite, >= 0",
                      "the lower end of the delay search (time units)",
                      &C::td_min));
-    t.push_back(OptionDecl<C>{
-        "tdmax",
-        OptionType::kReal,
-        false,
-        {},
-        "finite, >= tdmin",
-        "the upper end of the delay search (time units)",
-        [](const C& c) {
-          return std::isnan(c.td_max)
-                     ? std::string("(from the input-output cross-correlation)")
-                     : number(c.td_max);
-        },
-        [](C* c, V v) {
-          c->td_max = static_cast<S>(v.real);
-          return Status::Ok();
-        }});
+    t.push_back(
+        derived_real_option<C>("tdmax", "finite, >= tdmin",
+                               "the upper end of the delay search (time units)",
+                               "(from the input-output cross-correlation)",
+                               member_access(&C::td_max)));
     t.push_back(
         count("numtd", ">= 1", "the delays of the search's grid", &C::num_td));
     t.push_back(automatic("lambda", "(the engine's grid of cut-offs)",

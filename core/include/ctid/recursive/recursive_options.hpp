@@ -62,28 +62,13 @@ void add_structure_options(OptionTable<Config>* table) {
                       c->svf.u_intersample = intersample_of(v.word);
                       return Status::Ok();
                     }});
-  table->push_back({"na",
-                    OptionType::kInteger,
-                    true,
-                    {},
-                    ">= 1",
-                    "denominator order",
-                    [](const Config& c) { return std::to_string(c.orders.na); },
-                    [](Config* c, V v) {
-                      c->orders.na = v.integer;
-                      return Status::Ok();
-                    }});
-  table->push_back({"nb",
-                    OptionType::kIntegerVector,
-                    true,
-                    {},
-                    ">= 0 each, at most na + 1",
-                    "numerator parameters, one per input",
-                    [](const Config& c) { return integers(c.orders.nb); },
-                    [](Config* c, V v) {
-                      c->orders.nb = v.integers;
-                      return Status::Ok();
-                    }});
+  table->push_back(integer_option<Config>(
+      "na", true, ">= 1", "denominator order",
+      [](auto& c) -> auto& { return c.orders.na; }));
+  table->push_back(integer_vector_option<Config>(
+      "nb", true, ">= 0 each, at most na + 1",
+      "numerator parameters, one per input",
+      [](auto& c) -> auto& { return c.orders.nb; }));
   table->push_back({"nk",
                     OptionType::kIntegerVector,
                     true,
@@ -95,17 +80,10 @@ void add_structure_options(OptionTable<Config>* table) {
                       c->orders.nk = v.integers;
                       return validate_orders(c->orders);
                     }});
-  table->push_back({"lambda_svf",
-                    OptionType::kReal,
-                    true,
-                    {},
-                    "> 0, finite",
-                    "cut-off (rad/s) of the state-variable filter",
-                    [](const Config& c) { return number(c.svf.lambda_svf); },
-                    [](Config* c, V v) {
-                      c->svf.lambda_svf = static_cast<S>(v.real);
-                      return Status::Ok();
-                    }});
+  table->push_back(real_option<Config>(
+      "lambda_svf", true, "> 0, finite",
+      "cut-off (rad/s) of the state-variable filter",
+      [](auto& c) -> auto& { return c.svf.lambda_svf; }));
   table->push_back(
       {"svf",
        OptionType::kChoice,
@@ -228,43 +206,19 @@ void add_estimate_options(OptionTable<Config>* table) {
       "diagonal of the scaling matrix M_s (eq. 3.74); [] for none", "none",
       ErrorCode::kDimensionMismatch,
       [](auto& c) -> auto& { return c.scaling; }));
-  table->push_back({"covariance_guard",
-                    OptionType::kFlag,
-                    false,
-                    {},
-                    "true | false",
-                    "keep P symmetric positive definite (covariance_guard.hpp)",
-                    [](const Config& c) {
-                      return std::string(c.covariance_guard ? "true" : "false");
-                    },
-                    [](Config* c, V v) {
-                      c->covariance_guard = v.flag;
-                      return Status::Ok();
-                    }});
+  table->push_back(flag_option<Config>(
+      "covariance_guard", "true | false",
+      "keep P symmetric positive definite (covariance_guard.hpp)",
+      member_access(&Config::covariance_guard)));
+  table->push_back(real_option<Config>(
+      "gap_interval", false, ">= 0, finite",
+      "a sampling interval above this (s) is a gap of missing samples (0: "
+      "none)",
+      member_access(&Config::gap_interval)));
   table->push_back(
-      {"gap_interval",
-       OptionType::kReal,
-       false,
-       {},
-       ">= 0, finite",
-       "a sampling interval above this (s) is a gap of missing samples (0: "
-       "none)",
-       [](const Config& c) { return number(c.gap_interval); },
-       [](Config* c, V v) {
-         c->gap_interval = static_cast<S>(v.real);
-         return Status::Ok();
-       }});
-  table->push_back({"gap_settle",
-                    OptionType::kReal,
-                    false,
-                    {},
-                    ">= 0, finite",
-                    "no update for this long (s) after a gap",
-                    [](const Config& c) { return number(c.gap_settle); },
-                    [](Config* c, V v) {
-                      c->gap_settle = static_cast<S>(v.real);
-                      return Status::Ok();
-                    }});
+      real_option<Config>("gap_settle", false, ">= 0, finite",
+                          "no update for this long (s) after a gap",
+                          member_access(&Config::gap_settle)));
 }
 
 }  // namespace options_detail
@@ -297,19 +251,9 @@ const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
                                         : UpdateForm::kStandard;
            return Status::Ok();
          }});
-    t.push_back({"ic",
-                 OptionType::kFlag,
-                 false,
-                 {},
-                 "true | false",
-                 "estimate the initial conditions c_1 .. c_na too",
-                 [](const Config& c) {
-                   return std::string(c.initial_conditions ? "true" : "false");
-                 },
-                 [](Config* c, V v) {
-                   c->initial_conditions = v.flag;
-                   return Status::Ok();
-                 }});
+    t.push_back(flag_option<Config>(
+        "ic", "true | false", "estimate the initial conditions c_1 .. c_na too",
+        member_access(&Config::initial_conditions)));
     options_detail::add_estimate_options<S>(&t);
     t.push_back({"Gamma",
                  OptionType::kMatrix,
@@ -324,18 +268,10 @@ const OptionTable<RlsSvfConfig<S>>& rlssvf_options() {
                    c->lmr_gamma = v.matrix.cast<S>();
                    return Status::Ok();
                  }});
-    t.push_back(
-        {"tsls",
-         OptionType::kReal,
-         false,
-         {},
-         ">= 0, finite",
-         "first update at the first sample with t - t_1 >= tsls (s)",
-         [](const Config& c) { return options_detail::number(c.t_s_ls); },
-         [](Config* c, V v) {
-           c->t_s_ls = static_cast<S>(v.real);
-           return Status::Ok();
-         }});
+    t.push_back(real_option<Config>(
+        "tsls", false, ">= 0, finite",
+        "first update at the first sample with t - t_1 >= tsls (s)",
+        member_access(&Config::t_s_ls)));
     return t;
   }();
   return table;
@@ -367,32 +303,16 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                                                   : IvMethod::kRsrivc;
                    return Status::Ok();
                  }});
-    t.push_back(
-        {"tsiv",
-         OptionType::kReal,
-         false,
-         {},
-         ">= 0, finite",
-         "RLSSVF until tsiv (s), the IV update after it (the "
-         "front-ends default to a tenth of the record, as CONTSID)",
-         [](const Config& c) { return options_detail::number(c.t_s_iv); },
-         [](Config* c, V v) {
-           c->t_s_iv = static_cast<S>(v.real);
-           return Status::Ok();
-         }});
-    t.push_back(
-        {"dtupdate",
-         OptionType::kReal,
-         false,
-         {},
-         ">= 0, finite",
-         "refresh period (s) of the auxiliary model and the prefilter (0: "
-         "every sample)",
-         [](const Config& c) { return options_detail::number(c.dtupdate); },
-         [](Config* c, V v) {
-           c->dtupdate = static_cast<S>(v.real);
-           return Status::Ok();
-         }});
+    t.push_back(real_option<Config>(
+        "tsiv", false, ">= 0, finite",
+        "RLSSVF until tsiv (s), the IV update after it (the "
+        "front-ends default to a tenth of the record, as CONTSID)",
+        member_access(&Config::t_s_iv)));
+    t.push_back(real_option<Config>(
+        "dtupdate", false, ">= 0, finite",
+        "refresh period (s) of the auxiliary model and the prefilter (0: "
+        "every sample)",
+        member_access(&Config::dtupdate)));
     t.push_back(
         {"stability",
          OptionType::kChoice,
@@ -474,34 +394,15 @@ const OptionTable<RecursiveIvConfig<S>>& recursive_iv_options() {
                        v, "controller_den", ErrorCode::kBadInput,
                        &c->controller.denominator);
                  }});
-    t.push_back(
-        {"antiwindup",
-         OptionType::kReal,
-         false,
-         {},
-         "0 (none) or > 1",
-         "conditional updating: the threshold gamma on kappa_2(P) (eq. 3.79)",
-         [](const Config& c) {
-           return options_detail::number(c.antiwindup_gamma);
-         },
-         [](Config* c, V v) {
-           c->antiwindup_gamma = static_cast<S>(v.real);
-           return Status::Ok();
-         }});
-    t.push_back({"antiwindup_lambda",
-                 OptionType::kReal,
-                 false,
-                 {},
-                 "(0, 1]",
-                 "forgetting factor of the parallel RLSSVF-FF of conditional "
-                 "updating (Table 3.2)",
-                 [](const Config& c) {
-                   return options_detail::number(c.antiwindup_lambda);
-                 },
-                 [](Config* c, V v) {
-                   c->antiwindup_lambda = static_cast<S>(v.real);
-                   return Status::Ok();
-                 }});
+    t.push_back(real_option<Config>(
+        "antiwindup", false, "0 (none) or > 1",
+        "conditional updating: the threshold gamma on kappa_2(P) (eq. 3.79)",
+        member_access(&Config::antiwindup_gamma)));
+    t.push_back(real_option<Config>(
+        "antiwindup_lambda", false, "(0, 1]",
+        "forgetting factor of the parallel RLSSVF-FF of conditional "
+        "updating (Table 3.2)",
+        member_access(&Config::antiwindup_lambda)));
     return t;
   }();
   return table;
