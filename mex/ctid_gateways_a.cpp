@@ -15,6 +15,7 @@
 
 #include "ctid/adaptation/nlopt_minimizer.hpp"
 #include "ctid/adaptation/qn_ml.hpp"
+#include "ctid/apps/residtrace/candidate.hpp"
 #include "ctid/apps/residtrace/judgement.hpp"
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
@@ -34,6 +35,7 @@
 #include "gateway_common.hpp"
 #include "mex_helpers.hpp"
 #include "options_reader.hpp"
+#include "residtrace_candidate_io.hpp"
 #include "residtrace_judge_io.hpp"
 #include "residtrace_model_io.hpp"
 

@@ -84,9 +84,11 @@
 //     the fit of a residtrace model (model_fit.hpp, fit_model): tmpl with
 //     the estimate; D: y, u, Ts, intersample, vhat, ysm, initial_state,
 //     missing, loop; options: starts (a cell of F's), maxiter, keep_order,
-//     substeps.
+//     substeps (residtrace_candidate_io.hpp, read_context).
 //   The judgement of candidates: the methods "accept", "score", "judge"
 //   and "noise_gate" (residtrace_judge_io.hpp).
+//   The candidates: the methods "candidate" and "select"
+//   (residtrace_candidate_io.hpp).
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
 //   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
 //   channel j's numerator right-aligned in column j), nb (1-by-m numerator
@@ -97,6 +99,7 @@
 //   for the fit also initial_state (0 or 1) and maxiter.
 // The signals and estimates may hold non-finite values (they propagate as
 // in the recursion itself).
+#include "ctid/apps/residtrace/candidate.hpp"
 #include "ctid/apps/residtrace/judgement.hpp"
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
@@ -108,6 +111,7 @@
 #include "ctid/apps/residtrace/track.hpp"
 #include "ctid/simulation/effect_simulator.hpp"
 #include "gateway_common.hpp"
+#include "residtrace_candidate_io.hpp"
 #include "residtrace_judge_io.hpp"
 #include "residtrace_model_io.hpp"
 
@@ -873,66 +877,15 @@ void fitmodel_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   if (nlhs > 1) g.fail("badInput", "fitmodel has one output");
   const auto tmpl = ctid::mex::read_model(g, prhs[2]);
-  const mxArray* s = prhs[3];
-  require_record(g, s, "D");
-  ctid::residtrace::FitRecord<double> D;
-  D.y = record_matrix(g, s, "y", -1).reshaped();
-  const long n = static_cast<long>(D.y.size());
-  D.u = record_matrix(g, s, "u", n);
-  D.ts = g.scalar(record_field(s, "Ts"), "D.Ts");
-  if (!(D.ts > 0)) g.fail("badInput", "D.Ts must be > 0");
-  const mxArray* rule = record_field(s, "intersample");
-  std::string r = rule ? g.text(rule, "D.intersample") : std::string("zoh");
-  for (char& c : r) c = static_cast<char>(std::tolower(c));
-  if (r != "zoh" && r != "foh") {
-    g.fail("badInput", "D.intersample must be 'zoh' or 'foh'");
-  }
-  D.rule = r == "foh" ? ctid::InterSample::kFoh : ctid::InterSample::kZoh;
-  D.vhat = optional_signal(g, record_field(s, "vhat"), "D.vhat", n);
-  const Eigen::MatrixXd ysm =
-      optional_signal(g, record_field(s, "ysm"), "D.ysm", n);
-  if (ysm.size()) D.ysm = ysm.col(0);
-  const mxArray* x0 = record_field(s, "initial_state");
-  D.initial_state =
-      x0 != nullptr && !mxIsEmpty(x0) &&
-      ctid::mex::model_io_detail::number(g, x0, "D.initial_state", 0) != 0;
-  const mxArray* miss = record_field(s, "missing");
-  if (miss != nullptr &&
-      mxGetNumberOfElements(miss) == static_cast<std::size_t>(n)) {
-    const Eigen::VectorXd mv =
-        ctid::mex::model_io_detail::values(g, miss, "D.missing");
-    for (long k = 0; k < n; ++k) D.missing.push_back(mv(k) != 0);
-  }
-  D.closed =
-      ctid::mex::read_closed_loop(g, record_field(s, "loop"), n, &D.loop);
   ctid::mex::OptionsReader opt(g, prhs[4]);
-  std::vector<Eigen::VectorXd> starts;
-  const mxArray* st = opt.field("starts");
-  if (st != nullptr && !mxIsEmpty(st)) {
-    if (!mxIsCell(st)) g.fail("badOption", "starts must be a cell");
-    for (std::size_t i = 0; i < mxGetNumberOfElements(st); ++i) {
-      const mxArray* F0 = mxGetCell(st, i);
-      if (F0 == nullptr || mxIsEmpty(F0)) {
-        starts.push_back(Eigen::VectorXd());
-      } else {
-        const auto v = g.eigen_matrix(F0, "a start");
-        starts.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()));
-      }
-    }
-  }
-  ctid::residtrace::ModelFitSettings settings;
-  settings.max_iterations = opt.integer("maxiter");
-  settings.keep_order = opt.flag("keep_order", false);
-  settings.substeps = opt.integer("substeps", 1);
-  if (settings.substeps < 1 || settings.substeps > 10000) {
-    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
-  }
-  if (settings.max_iterations < 1) {
-    g.fail("badOption", "option 'maxiter' must be >= 1");
-  }
+  const auto ctx =
+      ctid::mex::residtrace_candidate::read_context(g, prhs[3], opt);
+  const std::vector<Eigen::VectorXd> starts =
+      ctid::mex::residtrace_candidate::read_starts(g, opt.field("starts"));
   opt.finish();
   ctid::residtrace::ResidtraceModel<double> fit;
-  g.check(ctid::residtrace::fit_model<double>(tmpl, D, starts, settings, &fit));
+  g.check(
+      ctid::residtrace::fit_model<double>(tmpl, ctx.D, starts, ctx.fit, &fit));
   plhs[0] = ctid::mex::write_model(prhs[2], fit);
 }
 
@@ -972,7 +925,9 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
           } else if (method == "fitmodel") {
             fitmodel_method(g, nlhs, plhs, nrhs, prhs);
           } else if (!ctid::mex::residtrace_judge::dispatch(method, g, nlhs,
-                                                            plhs, nrhs, prhs)) {
+                                                            plhs, nrhs, prhs) &&
+                     !ctid::mex::residtrace_candidate::dispatch(
+                         method, g, nlhs, plhs, nrhs, prhs)) {
             g.fail("badInput", "unknown method '" + method + "'");
           }
           return;

@@ -64,12 +64,6 @@ function model = residtrace_fit (tmpl, D, ctx, starts)
   if (isfield (tmpl, "nlin"))
     tmpl = rmfield (tmpl, "nlin");     # a Hammerstein fit's, now stale
   endif
-  substeps = 1;
-  if (isfield (ctx, "opts"))
-    substeps = ctx.opts.substeps;
-  endif
-  o = struct ("starts", {starts}, "maxiter", ctx.maxiter,
-              "keep_order", isfield (ctx, "keep_order") && ctx.keep_order,
-              "substeps", substeps);
-  model = effect_sim_mex ("residtrace", "fitmodel", tmpl, D, o);
+  model = effect_sim_mex ("residtrace", "fitmodel", tmpl, D,
+                         residtrace_fitopts (ctx, starts));
 endfunction

@@ -25,78 +25,13 @@
 ## @code{order_floor_} fails when its fit comes back with a lower order
 ## (the poles it adds residualised by @code{residtrace_fit}: it is then
 ## another variant).
+## The choice runs in the core
+## (core/include/ctid/apps/residtrace/candidate.hpp, select_variant,
+## through @code{effect_sim_mex}, method "select"); @var{best} is [] when
+## no variant converged.
 ## @end deftypefn
 
 function [best, table] = residtrace_select (tmpls, names, D, ctx, starts)
-  best = [];
-  n = numel (tmpls);
-  table = struct ("variant", names, "bic", NaN, "s2", NaN,
-                  "converged", false);
-  keep = 2;
-  screen = n > keep;
-  quick = ctx;
-  if (screen)
-    quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
-  endif
-  ## the least order a variant's fit may come back with (a template's
-  ## field order_floor_): a fit that residualised the poles the variant
-  ## adds (residtrace_fit) is another variant, and fails as this one
-  lo = zeros (1, n);
-  for i = 1:n
-    if (isfield (tmpls{i}, "order_floor_"))
-      lo(i) = tmpls{i}.order_floor_;
-      tmpls{i} = rmfield (tmpls{i}, "order_floor_");
-    endif
-  endfor
-  fits = cell (1, n);
-  for i = 1:n
-    if (isfield (tmpls{i}, "fitted"))
-      m = rmfield (tmpls{i}, "fitted");
-      table(i).converged = true;
-    else
-      m = residtrace_fit (tmpls{i}, D, quick, starts{i});
-      table(i).converged = ! screen;
-    endif
-    m.ok = m.ok && numel (m.F) - 1 >= lo(i);
-    fits{i} = m;
-    if (m.ok)
-      table(i).bic = m.bic;
-      table(i).s2 = m.s2;
-    endif
-  endfor
-  if (screen)
-    b = [table.bic];
-    b(isnan (b)) = Inf;
-    [~, order] = sort (b);
-    for i = order(1:keep)
-      if (! isfinite (b(i)) || table(i).converged)
-        continue;
-      endif
-      ## iterated to convergence from the screening estimate (its F and
-      ## numerators), then from the variant's own starts if that fails
-      m = residtrace_fit (fits{i}, D, ctx, {fits{i}.F});
-      m.ok = m.ok && numel (m.F) - 1 >= lo(i);
-      if (! m.ok)
-        m = residtrace_fit (tmpls{i}, D, ctx, starts{i});
-        m.ok = m.ok && numel (m.F) - 1 >= lo(i);
-      endif
-      table(i).converged = true;
-      if (m.ok)
-        fits{i} = m;
-        table(i).bic = m.bic;
-        table(i).s2 = m.s2;
-      else
-        table(i).bic = NaN;
-      endif
-    endfor
-  endif
-  for i = 1:n
-    if (! table(i).converged || ! fits{i}.ok)
-      continue;
-    endif
-    if (isempty (best) || fits{i}.bic < best.bic)
-      best = fits{i};
-      best.variant_ = names{i};
-    endif
-  endfor
+  [best, table] = effect_sim_mex ("residtrace", "select", tmpls, names, D,
+                                  residtrace_fitopts (ctx, starts));
 endfunction

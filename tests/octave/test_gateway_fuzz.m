@@ -130,6 +130,9 @@ function test_gateway_fuzz ()
   rval = struct ("substeps", 2, "thm", [], "yh", []);
   rfit = struct ("starts", {{[]}}, "maxiter", 3, "keep_order", false,
                  "substeps", 2);
+  ## its candidates and the choice among variants
+  rcand = rmfield (rfit, "starts");
+  rsel = setfield (rcand, "starts", {{[]}, {rtm.F}});
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -148,6 +151,13 @@ function test_gateway_fuzz ()
     {"effect_sim_mex", {"residtrace", "valerror", rtm, rtV, rval}, {}}
     {"effect_sim_mex", {"residtrace", "fitmodel", rtm, rtD, rfit}, ...
      {"maxiter"}}
+    {"effect_sim_mex", {"residtrace", "candidate", "offset", rtm, rtD, ...
+                        rcand}, {"maxiter"}}
+    {"effect_sim_mex", {"residtrace", "candidate", "viscous", ...
+                        setfield(rtm, "fixed", true), rtD, rcand}, ...
+     {"maxiter"}}
+    {"effect_sim_mex", {"residtrace", "select", {rtm, rtm}, {"a", "b"}, ...
+                        rtD, rsel}, {"maxiter", "starts"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

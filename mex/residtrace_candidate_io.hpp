@@ -1,0 +1,458 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
+// residtrace's candidates (core/include/ctid/apps/residtrace/candidate.hpp)
+// to and from the Octave structs the residtrace functions pass around:
+//
+//   read_fit_record(g, D)        the estimation record D: y, u, Ts,
+//                                intersample, vhat, ysm, initial_state,
+//                                missing, loop
+//   read_context(g, D, opt)      a candidate's context: the record D and
+//                                the options maxiter, keep_order,
+//                                substeps (absent: 1), wlo, lam_v,
+//                                vel_is_y (octave/private/
+//                                residtrace_fitopts.m makes them of ctx)
+//   read_starts(g, a)            a cell of initial denominators
+//   write_model_struct(base, m, names)
+//                                the struct of a model fitted from a
+//                                template that extends base
+//   write_candidate(cur, c)      the candidate struct: effect, applicable,
+//                                reason, variant, model, nadd, kind,
+//                                evidence, variants, insample, failed
+//
+// and the methods of effect_sim_mex (dispatch):
+//
+//   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
+//     the candidate effect ("offset", "viscous") of the current model cur.
+//   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
+//                                   options)
+//     the variant chosen among the templates (select_variant), options.starts
+//     a cell (one cell of starts a template): best the fitted model with
+//     its field variant_ ([] when none converged), table the variants'
+//     names, bic, s2 and converged. A template with the field fitted is a
+//     model fitted already (its ok, bic, s2 and F are read); one with
+//     order_floor_ fails when its fit comes back with a lower order.
+#pragma once
+
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ctid/apps/residtrace/candidate.hpp"
+#include "residtrace_model_io.hpp"
+
+namespace ctid::mex::residtrace_candidate {
+
+using namespace ctid::mex::model_io_detail;
+
+inline const mxArray* required_field(const Gateway& g, const mxArray* s,
+                                     const char* name, const char* what) {
+  const mxArray* a = field(s, name);
+  if (a == nullptr) {
+    g.fail("badInput", std::string(what) + " has no field " + name);
+  }
+  return a;
+}
+
+inline Eigen::MatrixXd signal(const Gateway& g, const mxArray* a,
+                              const std::string& what, long rows) {
+  const double* p = g.matrix(a, what, rows, -1, false);
+  return Eigen::Map<const Eigen::MatrixXd>(
+      p, static_cast<Eigen::Index>(mxGetM(a)),
+      static_cast<Eigen::Index>(mxGetN(a)));
+}
+
+inline Eigen::MatrixXd optional_signal(const Gateway& g, const mxArray* a,
+                                       const std::string& what, long rows) {
+  if (empty(a)) return Eigen::MatrixXd();
+  return signal(g, a, what, rows);
+}
+
+inline residtrace::FitRecord<double> read_fit_record(const Gateway& g,
+                                                     const mxArray* s) {
+  if (s == nullptr || !mxIsStruct(s) || mxGetNumberOfElements(s) != 1) {
+    g.fail("badInput", "D must be a 1x1 struct");
+  }
+  residtrace::FitRecord<double> D;
+  D.y = signal(g, required_field(g, s, "y", "the record"), "y", -1).reshaped();
+  const long n = static_cast<long>(D.y.size());
+  D.u = signal(g, required_field(g, s, "u", "the record"), "u", n);
+  D.ts = g.scalar(field(s, "Ts"), "D.Ts");
+  if (!(D.ts > 0)) g.fail("badInput", "D.Ts must be > 0");
+  const mxArray* rule = field(s, "intersample");
+  std::string r = rule ? g.text(rule, "D.intersample") : std::string("zoh");
+  for (char& c : r) c = static_cast<char>(std::tolower(c));
+  if (r != "zoh" && r != "foh") {
+    g.fail("badInput", "D.intersample must be 'zoh' or 'foh'");
+  }
+  D.rule = r == "foh" ? ctid::InterSample::kFoh : ctid::InterSample::kZoh;
+  D.vhat = optional_signal(g, field(s, "vhat"), "D.vhat", n);
+  const Eigen::MatrixXd ysm = optional_signal(g, field(s, "ysm"), "D.ysm", n);
+  if (ysm.size()) D.ysm = ysm.col(0);
+  const mxArray* x0 = field(s, "initial_state");
+  D.initial_state = !empty(x0) && number(g, x0, "D.initial_state", 0) != 0;
+  const mxArray* miss = field(s, "missing");
+  if (miss != nullptr &&
+      mxGetNumberOfElements(miss) == static_cast<std::size_t>(n)) {
+    const Eigen::VectorXd mv = values(g, miss, "D.missing");
+    for (long k = 0; k < n; ++k) D.missing.push_back(mv(k) != 0);
+  }
+  D.closed = read_closed_loop(g, field(s, "loop"), n, &D.loop);
+  return D;
+}
+
+inline void check_settings(const Gateway& g,
+                           const residtrace::ModelFitSettings& s) {
+  if (s.substeps < 1 || s.substeps > 10000) {
+    g.fail("badOption", "option 'substeps' must lie in [1, 1e4]");
+  }
+  if (s.max_iterations < 1) {
+    g.fail("badOption", "option 'maxiter' must be >= 1");
+  }
+}
+
+// The starts of a fit: a cell of initial denominators (an empty entry:
+// the engine's automatic start).
+inline std::vector<Eigen::VectorXd> read_starts(const Gateway& g,
+                                                const mxArray* st) {
+  std::vector<Eigen::VectorXd> starts;
+  if (empty(st)) return starts;
+  if (!mxIsCell(st)) g.fail("badOption", "starts must be a cell");
+  for (std::size_t i = 0; i < mxGetNumberOfElements(st); ++i) {
+    const mxArray* F0 = mxGetCell(st, i);
+    if (F0 == nullptr || mxIsEmpty(F0)) {
+      starts.push_back(Eigen::VectorXd());
+    } else {
+      const auto v = g.eigen_matrix(F0, "a start");
+      starts.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()));
+    }
+  }
+  return starts;
+}
+
+inline residtrace::CandidateContext<double> read_context(const Gateway& g,
+                                                         const mxArray* D,
+                                                         OptionsReader& opt) {
+  residtrace::CandidateContext<double> c;
+  c.D = read_fit_record(g, D);
+  c.fit.max_iterations = opt.integer("maxiter");
+  c.fit.keep_order = opt.flag("keep_order", false);
+  c.fit.substeps = opt.integer("substeps", 1);
+  check_settings(g, c.fit);
+  c.wlo = opt.scalar("wlo", c.wlo);
+  c.lam_v = opt.scalar("lam_v", c.lam_v);
+  c.vel_is_y = opt.flag("vel_is_y", false);
+  return c;
+}
+
+inline const char* channel_type(residtrace::ChannelKind k) {
+  using residtrace::ChannelKind;
+  switch (k) {
+    case ChannelKind::kInput:
+      return "input";
+    case ChannelKind::kConstant:
+      return "const";
+    case ChannelKind::kSignV:
+    case ChannelKind::kSignOutput:
+      return "signv";
+    case ChannelKind::kPower:
+      return "power";
+    case ChannelKind::kClip:
+      return "clip";
+    case ChannelKind::kOutputPower:
+      return "ypower";
+    case ChannelKind::kNode:
+      return "node";
+  }
+  return "input";
+}
+
+inline const char* term_type(residtrace::OutputTermKind k) {
+  using residtrace::OutputTermKind;
+  switch (k) {
+    case OutputTermKind::kOffset:
+      return "offset";
+    case OutputTermKind::kPolynomial:
+      return "poly";
+    case OutputTermKind::kSinusoid:
+      return "sinusoid";
+    case OutputTermKind::kSaturation:
+      return "sat";
+  }
+  return "offset";
+}
+
+// A 1-by-n struct array with the field names of a (when a struct) or the
+// given ones, its first elements copies of a's.
+inline mxArray* extended(const mxArray* a, std::size_t n,
+                         const std::vector<const char*>& names) {
+  std::vector<std::string> f;
+  if (a != nullptr && mxIsStruct(a)) {
+    for (int i = 0; i < mxGetNumberOfFields(a); ++i) {
+      f.push_back(mxGetFieldNameByNumber(a, i));
+    }
+  }
+  for (const char* s : names) {
+    bool have = false;
+    for (const std::string& x : f) have = have || x == s;
+    if (!have) f.push_back(s);
+  }
+  std::vector<const char*> p;
+  for (const std::string& x : f) p.push_back(x.c_str());
+  mxArray* r = mxCreateStructMatrix(1, n, static_cast<int>(p.size()), p.data());
+  const std::size_t n0 =
+      a != nullptr && mxIsStruct(a) ? mxGetNumberOfElements(a) : 0;
+  for (std::size_t j = 0; j < n0 && j < n; ++j) {
+    for (int i = 0; i < mxGetNumberOfFields(a); ++i) {
+      const mxArray* v = mxGetFieldByNumber(a, j, i);
+      if (v != nullptr) {
+        mxSetField(r, j, mxGetFieldNameByNumber(a, i), mxDuplicateArray(v));
+      }
+    }
+  }
+  return r;
+}
+
+// The struct of the model m fitted from a template that extends the model
+// struct base by channels (named names) and output terms: a copy of base
+// with the template's F, fixed (of base's class), channels and output
+// terms, and the estimate (write_model); a Hammerstein nonlinearity of
+// base (field nlin) is dropped, being stale.
+inline mxArray* write_model_struct(const mxArray* base,
+                                   const residtrace::ResidtraceModel<double>& m,
+                                   const std::vector<std::string>& names) {
+  mxArray* t = mxDuplicateArray(base);
+  if (mxGetFieldNumber(t, "nlin") >= 0)
+    mxRemoveField(t, mxGetFieldNumber(t, "nlin"));
+  const mxArray* f0 = mxGetField(t, 0, "fixed");
+  if (f0 != nullptr && mxGetNumberOfElements(f0) == m.fixed.size()) {
+    mxArray* fixed = mxDuplicateArray(f0);
+    for (std::size_t i = 0; i < m.fixed.size(); ++i) {
+      if (mxIsLogical(fixed)) {
+        mxGetLogicals(fixed)[i] = m.fixed[i];
+      } else {
+        mxGetPr(fixed)[i] = m.fixed[i] ? 1 : 0;
+      }
+    }
+    set(t, 0, "fixed", fixed);
+  }
+  const mxArray* ch = mxGetField(t, 0, "channels");
+  const std::size_t nc0 = ch != nullptr ? mxGetNumberOfElements(ch) : 0;
+  if (m.channels.size() > nc0) {
+    mxArray* c = extended(ch, m.channels.size(),
+                          {"name", "type", "col", "param", "nb", "nk", "B"});
+    for (std::size_t j = nc0; j < m.channels.size(); ++j) {
+      const residtrace::StructureChannel<double>& k = m.channels[j];
+      const std::size_t i = j - nc0;
+      set(c, j, "name",
+          mxCreateString(i < names.size() ? names[i].c_str() : ""));
+      set(c, j, "type", mxCreateString(channel_type(k.kind)));
+      set(c, j, "col", mxCreateDoubleScalar(k.col + 1));
+      set(c, j, "param",
+          k.kind == residtrace::ChannelKind::kSignOutput
+              ? mxCreateString("y")
+              : (k.param != 0 ? mxCreateDoubleScalar(k.param)
+                              : mxCreateDoubleMatrix(0, 0, mxREAL)));
+      set(c, j, "nb", mxCreateDoubleScalar(k.nb));
+      set(c, j, "nk", mxCreateDoubleScalar(k.nk));
+      set(c, j, "B", row(k.B));
+    }
+    set(t, 0, "channels", c);
+  }
+  const mxArray* out = mxGetField(t, 0, "out");
+  const std::size_t no0 =
+      out != nullptr && mxIsStruct(out) ? mxGetNumberOfElements(out) : 0;
+  if (m.out.size() > no0) {
+    mxArray* o = extended(out, m.out.size(), {"type", "c", "cstd", "omega"});
+    for (std::size_t k = no0; k < m.out.size(); ++k) {
+      set(o, k, "type", mxCreateString(term_type(m.out[k].kind)));
+      set(o, k, "c", row(m.out[k].c));
+      set(o, k, "cstd", row(m.out[k].cstd));
+      set(o, k, "omega", mxCreateDoubleScalar(m.out[k].omega));
+    }
+    set(t, 0, "out", o);
+  }
+  mxArray* r = write_model(t, m);
+  mxDestroyArray(t);
+  return r;
+}
+
+inline mxArray* write_evidence(const residtrace::Evidence<double>& e) {
+  if (e.fields.empty()) {
+    const char* f[] = {"text"};
+    mxArray* s = mxCreateStructMatrix(1, 1, 1, f);
+    mxSetField(s, 0, "text", mxCreateString(e.text.c_str()));
+    return s;
+  }
+  mxArray* s = mxCreateStructMatrix(1, 1, 0, nullptr);
+  for (const residtrace::EvidenceField<double>& f : e.fields) {
+    set(s, 0, f.name.c_str(),
+        f.is_text ? mxCreateString(f.text.c_str())
+                  : (f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0))
+                                         : row(f.value)));
+  }
+  return s;
+}
+
+inline mxArray* write_table(
+    const std::vector<residtrace::VariantRow<double>>& t) {
+  const char* f[] = {"variant", "bic", "s2", "converged"};
+  mxArray* s = mxCreateStructMatrix(1, t.size(), 4, f);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    mxSetField(s, i, "variant", mxCreateString(t[i].variant.c_str()));
+    mxSetField(s, i, "bic", mxCreateDoubleScalar(t[i].bic));
+    mxSetField(s, i, "s2", mxCreateDoubleScalar(t[i].s2));
+    mxSetField(s, i, "converged", mxCreateLogicalScalar(t[i].converged));
+  }
+  return s;
+}
+
+inline mxArray* write_candidate(const mxArray* cur,
+                                const residtrace::Candidate<double>& c) {
+  const char* f[] = {"effect",   "applicable", "reason", "variant",
+                     "model",    "nadd",       "kind",   "evidence",
+                     "variants", "insample",   "failed"};
+  mxArray* s = mxCreateStructMatrix(1, 1, 11, f);
+  mxSetField(s, 0, "effect", mxCreateString(c.effect.c_str()));
+  mxSetField(s, 0, "applicable", mxCreateLogicalScalar(c.applicable));
+  mxSetField(s, 0, "reason", mxCreateString(c.reason.c_str()));
+  mxSetField(s, 0, "variant", mxCreateString(c.variant.c_str()));
+  if (c.has_model) {
+    mxArray* m = write_model_struct(cur, c.model, c.added_channels);
+    if (c.chosen >= 0) set(m, 0, "variant_", mxCreateString(c.variant.c_str()));
+    mxSetField(s, 0, "model", m);
+  } else {
+    mxSetField(s, 0, "model", mxCreateDoubleMatrix(0, 0, mxREAL));
+  }
+  mxSetField(s, 0, "nadd", mxCreateDoubleScalar(c.nadd));
+  mxSetField(s, 0, "kind", mxCreateString(c.kind.c_str()));
+  mxSetField(s, 0, "evidence", write_evidence(c.evidence));
+  mxSetField(
+      s, 0, "variants",
+      c.variants.empty() ? mxCreateCellMatrix(0, 0) : write_table(c.variants));
+  mxSetField(s, 0, "insample", mxCreateLogicalScalar(c.insample));
+  mxSetField(s, 0, "failed", mxCreateLogicalScalar(c.failed));
+  return s;
+}
+
+inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                             int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "candidate takes (fname, 'candidate', effect, cur, D, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "candidate has one output");
+  const std::string effect = g.text(prhs[2], "the effect");
+  const auto cur = read_model(g, prhs[3]);
+  if (cur.has_phys) {
+    g.fail("notSupported",
+           "a physical realisation holds no " + effect + " candidate");
+  }
+  OptionsReader opt(g, prhs[5]);
+  const auto ctx = read_context(g, prhs[4], opt);
+  opt.finish();
+  residtrace::Candidate<double> c;
+  if (effect == "offset") {
+    g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
+  } else if (effect == "viscous") {
+    if (cur.fixed.empty()) g.fail("badInput", "the model has no order");
+    g.check(residtrace::viscous_candidate<double>(cur, ctx, &c));
+  } else {
+    g.fail("notSupported", "no candidate '" + effect + "' in the core");
+  }
+  plhs[0] = write_candidate(prhs[3], c);
+}
+
+// A template struct without the selection's own fields.
+inline mxArray* bare_template(const mxArray* s) {
+  mxArray* t = mxDuplicateArray(s);
+  for (const char* f : {"order_floor_", "fitted"}) {
+    if (mxGetFieldNumber(t, f) >= 0) mxRemoveField(t, mxGetFieldNumber(t, f));
+  }
+  return t;
+}
+
+inline void select_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                          const mxArray* prhs[]) {
+  if (nrhs != 6) {
+    g.fail("badInput",
+           "select takes (fname, 'select', tmpls, names, D, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "select has at most 2 outputs");
+  const mxArray* T = prhs[2];
+  const mxArray* N = prhs[3];
+  OptionsReader opt(g, prhs[5]);
+  const mxArray* S = opt.required("starts");
+  if (!mxIsCell(T) || !mxIsCell(N) || !mxIsCell(S)) {
+    g.fail("badInput", "tmpls, names and starts must be cells");
+  }
+  const std::size_t n = mxGetNumberOfElements(T);
+  if (mxGetNumberOfElements(N) != n || mxGetNumberOfElements(S) != n) {
+    g.fail("dimensionMismatch", "one name and one start cell a template");
+  }
+  const auto ctx = read_context(g, prhs[4], opt);
+  opt.finish();
+  std::vector<residtrace::Variant<double>> variants(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const mxArray* t = mxGetCell(T, i);
+    residtrace::Variant<double>& v = variants[i];
+    v.name = g.text(mxGetCell(N, i), "a variant's name");
+    if (t == nullptr || !mxIsStruct(t) || mxGetNumberOfElements(t) != 1) {
+      g.fail("badInput", "a template must be a 1x1 struct");
+    }
+    v.order_floor = count(g, field(t, "order_floor_"), "order_floor_", 0);
+    v.fitted = field(t, "fitted") != nullptr;
+    if (v.fitted) {
+      // a model fitted already: only its estimate is compared
+      residtrace::ModelEstimate<double>& e = v.tmpl.estimate;
+      e.ok = number(g, field(t, "ok"), "a fitted model's ok", 0) != 0;
+      e.bic = number(g, field(t, "bic"), "a fitted model's bic", NAN);
+      e.s2 = number(g, field(t, "s2"), "a fitted model's s2", NAN);
+      v.tmpl.F = values(g, field(t, "F"), "a fitted model's F");
+      continue;
+    }
+    mxArray* bare = bare_template(t);
+    v.tmpl = read_model(g, bare);
+    mxDestroyArray(bare);
+    if (v.tmpl.has_phys) {
+      g.fail("notSupported",
+             "a physical realisation is compared once fitted (field fitted)");
+    }
+    v.starts = read_starts(g, mxGetCell(S, i));
+  }
+  int best = -1;
+  residtrace::ResidtraceModel<double> model;
+  std::vector<residtrace::VariantRow<double>> table;
+  g.check(
+      residtrace::select_variant<double>(variants, ctx, &best, &model, &table));
+  if (best < 0) {
+    plhs[0] = mxCreateDoubleMatrix(0, 0, mxREAL);
+  } else {
+    mxArray* bare = bare_template(mxGetCell(T, best));
+    if (variants[best].fitted) {
+      plhs[0] = bare;
+    } else {
+      if (mxGetFieldNumber(bare, "nlin") >= 0) {
+        mxRemoveField(bare, mxGetFieldNumber(bare, "nlin"));
+      }
+      plhs[0] = write_model(bare, model);
+      mxDestroyArray(bare);
+    }
+    set(plhs[0], 0, "variant_", mxCreateString(variants[best].name.c_str()));
+  }
+  if (nlhs > 1) plhs[1] = write_table(table);
+}
+
+inline bool dispatch(const std::string& method, const Gateway& g, int nlhs,
+                     mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
+  if (method == "candidate") {
+    candidate_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "select") {
+    select_method(g, nlhs, plhs, nrhs, prhs);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ctid::mex::residtrace_candidate

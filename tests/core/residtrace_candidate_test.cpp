@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Copyright (C) the ctid authors
+// Tests of core/include/ctid/apps/residtrace/candidate.hpp:
+//   - select_variant keeps the converged variant of smallest BIC, skips a
+//     failed one and one below its order floor, and reports none when no
+//     variant converged (models given as fitted, so the BICs are known);
+//   - offset_candidate recovers a known output offset and a known input
+//     offset (in input units) of a first-order system, with the evidence
+//     text showing the value, and is not applicable when the model
+//     estimates its levels or has both offsets already;
+//   - viscous_candidate frees a velocity coefficient fixed at zero and
+//     recovers the true one, f / b0 as its physical reading, and is not
+//     applicable when the coefficient is estimated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "ctid/apps/residtrace/candidate.hpp"
+#include "test_util.hpp"
+
+namespace ctid::residtrace {
+namespace {
+
+constexpr double kTs = 0.05;
+
+ResidtraceModel<double> model(const Eigen::VectorXd& F,
+                              const Eigen::VectorXd& B) {
+  ResidtraceModel<double> m;
+  m.F = F;
+  m.fixed.assign(static_cast<std::size_t>(F.size() - 1), false);
+  StructureChannel<double> c;
+  c.col = 0;
+  c.nb = static_cast<int>(B.size());
+  c.B = B;
+  m.channels.push_back(c);
+  return m;
+}
+
+// The record of truth driven by u + du, plus dy and a little white noise.
+CandidateContext<double> context(const ResidtraceModel<double>& truth,
+                                 double du, double dy, int N, unsigned seed) {
+  const std::vector<double> u = test::binary_input(N, 9, seed);
+  CandidateContext<double> ctx;
+  ctx.D.u = Eigen::Map<const Eigen::VectorXd>(u.data(), N);
+  ctx.D.ts = kTs;
+  const Eigen::MatrixXd driven = ctx.D.u.array() + du;
+  ModelSimulation<double> sim;
+  EXPECT_TRUE(
+      simulate_model<double>(truth, driven, kTs, nullptr, 1, nullptr, &sim)
+          .ok());
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> e(0.0, 1e-3);
+  ctx.D.y = sim.y.array() + dy;
+  for (Eigen::Index k = 0; k < ctx.D.y.size(); ++k) ctx.D.y(k) += e(gen);
+  ctx.D.ysm = ctx.D.y;
+  ctx.fit.max_iterations = 20;
+  ctx.fit.substeps = 1;
+  return ctx;
+}
+
+Variant<double> fitted(const char* name, double bic, bool ok, int order) {
+  Variant<double> v;
+  v.name = name;
+  v.fitted = true;
+  v.tmpl.F = Eigen::VectorXd::Ones(order + 1);
+  v.tmpl.estimate.ok = ok;
+  v.tmpl.estimate.bic = bic;
+  v.tmpl.estimate.s2 = std::exp(bic / 100);
+  return v;
+}
+
+TEST(ResidtraceCandidate, SelectKeepsTheSmallestBic) {
+  CandidateContext<double> ctx;
+  ctx.fit.max_iterations = 20;
+  std::vector<Variant<double>> v = {fitted("a", -10, true, 2),
+                                    fitted("b", -30, true, 2),
+                                    fitted("c", -50, false, 2)};
+  int best = -2;
+  ResidtraceModel<double> m;
+  std::vector<VariantRow<double>> table;
+  ASSERT_TRUE(select_variant<double>(v, ctx, &best, &m, &table).ok());
+  EXPECT_EQ(best, 1);
+  EXPECT_DOUBLE_EQ(m.estimate.bic, -30);
+  ASSERT_EQ(table.size(), 3u);
+  EXPECT_EQ(table[0].variant, "a");
+  EXPECT_DOUBLE_EQ(table[0].bic, -10);
+  EXPECT_TRUE(std::isnan(table[2].bic));  // the failed one
+  // an order floor above the fit's order: the variant fails
+  v[1].order_floor = 3;
+  ASSERT_TRUE(select_variant<double>(v, ctx, &best, &m, &table).ok());
+  EXPECT_EQ(best, 0);
+  v[0].tmpl.estimate.ok = false;
+  ASSERT_TRUE(select_variant<double>(v, ctx, &best, &m, &table).ok());
+  EXPECT_EQ(best, -1);
+}
+
+TEST(ResidtraceCandidate, OffsetRecoversAnOutputOffset) {
+  const ResidtraceModel<double> truth =
+      model(Eigen::Vector2d(1, 2), Eigen::VectorXd::Constant(1, 3));
+  const CandidateContext<double> ctx = context(truth, 0, 0.7, 600, 3);
+  Candidate<double> c;
+  ASSERT_TRUE(offset_candidate<double>(truth, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable);
+  EXPECT_EQ(c.variant, "output offset");
+  EXPECT_EQ(c.nadd, 1);
+  ASSERT_EQ(c.variants.size(), 2u);
+  EXPECT_LT(c.variants[1].bic, c.variants[0].bic);
+  const double val = c.model.out.back().c(0);
+  EXPECT_NEAR(val, 0.7, 1e-3);
+  EXPECT_NE(c.evidence.text.find("output offset 0.7"), std::string::npos)
+      << c.evidence.text;
+}
+
+TEST(ResidtraceCandidate, OffsetRecoversAnInputOffsetInInputUnits) {
+  const ResidtraceModel<double> truth =
+      model(Eigen::Vector2d(1, 2), Eigen::VectorXd::Constant(1, 3));
+  const CandidateContext<double> ctx = context(truth, 0.5, 0, 600, 4);
+  Candidate<double> c;
+  ASSERT_TRUE(offset_candidate<double>(truth, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable);
+  EXPECT_EQ(c.variant, "input offset");
+  ASSERT_EQ(c.model.channels.size(), 2u);
+  EXPECT_EQ(c.model.channels[1].kind, ChannelKind::kConstant);
+  // b_c / b_u = d
+  const double bc = c.model.channels[1].B(0);
+  const double bu = c.model.channels[0].B(0);
+  EXPECT_NEAR(bc / bu, 0.5, 2e-3);
+  EXPECT_NE(c.evidence.text.find("input offset 0.5"), std::string::npos)
+      << c.evidence.text;
+}
+
+TEST(ResidtraceCandidate, OffsetNotApplicableWithLevelsOrBothOffsets) {
+  ResidtraceModel<double> m =
+      model(Eigen::Vector2d(1, 2), Eigen::VectorXd::Constant(1, 3));
+  const CandidateContext<double> ctx = context(m, 0, 0, 200, 5);
+  Candidate<double> c;
+  m.levels = true;
+  ASSERT_TRUE(offset_candidate<double>(m, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+  EXPECT_FALSE(c.failed);
+  m.levels = false;
+  StructureChannel<double> k;
+  k.kind = ChannelKind::kConstant;
+  k.col = -1;
+  k.B = Eigen::VectorXd::Zero(1);
+  m.channels.push_back(k);
+  OutputTerm<double> t;
+  t.c = t.cstd = Eigen::VectorXd::Zero(1);
+  m.out.push_back(t);
+  ASSERT_TRUE(offset_candidate<double>(m, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+  EXPECT_EQ(c.reason, "the model has its offsets already");
+}
+
+TEST(ResidtraceCandidate, ViscousFreesTheVelocityCoefficient) {
+  // 2 / (p^2 + 1.5 p + 4): the template has f1 fixed at zero
+  const ResidtraceModel<double> truth =
+      model(Eigen::Vector3d(1, 1.5, 4), Eigen::VectorXd::Constant(1, 2));
+  const CandidateContext<double> ctx = context(truth, 0, 0, 1500, 6);
+  ResidtraceModel<double> cur = truth;
+  cur.F(1) = 0;
+  cur.fixed = {true, false};
+  Candidate<double> c;
+  ASSERT_TRUE(viscous_candidate<double>(cur, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable);
+  EXPECT_EQ(c.variant, "free f1");
+  EXPECT_NEAR(c.model.F(1), 1.5, 1e-2);
+  EXPECT_NEAR(c.model.estimate.theta(0), c.model.F(1), 1e-12);
+  EXPECT_EQ(c.evidence.text.substr(0, 5), "f1 = ");
+  EXPECT_NE(c.evidence.text.find("viscous coefficient 0.7"), std::string::npos)
+      << c.evidence.text;
+  // estimated already: not applicable
+  ASSERT_TRUE(viscous_candidate<double>(truth, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+}
+
+}  // namespace
+}  // namespace ctid::residtrace
