@@ -371,6 +371,24 @@ function check_tfsrivc_options ()
                      stated{k, 1}, v, default_of (stated{k, 1})));
   endfor
 
+  ## the defaults tfsrivc_init's and tfrivc's helps state are the table's
+  ## too (they take tfsrivc's options)
+  others = {"tfsrivc_init", "tdmin", ...
+            '@code\{TdMax\} \(the delay range, default ([-+0-9.eE]+) and';
+            "tfsrivc_init", "numtd", ...
+            '@code\{NumTd\} \(grid size, default ([0-9]+)';
+            "tfrivc", "focusorder", ...
+            'order @code\{FocusOrder\}, default ([0-9]+)\)'};
+  for k = 1:rows (others)
+    t = regexp (regexprep (get_help_text (others{k, 1}), '\s+', " "),
+                others{k, 3}, "tokens", "once");
+    assert (numel (t) == 1, sprintf ("%s: the help states no default of %s",
+                                     others{k, 1}, others{k, 2}));
+    assert (same_default (t{1}, default_of (others{k, 2})),
+            sprintf ("%s: the help says %s %s, the core %s", others{k, 1},
+                     others{k, 2}, t{1}, default_of (others{k, 2})));
+  endfor
+
   ## explicit defaults change nothing; another value does
   Ts = 0.05;
   u = prbs (8, 4);
