@@ -85,6 +85,9 @@
 //     the estimate; D: y, u, Ts, intersample, vhat, ysm, initial_state,
 //     missing, loop; options: starts (a cell of F's), maxiter, keep_order,
 //     substeps.
+//   p = effect_sim_mex (fname, "physical", model, options)
+//     the physical reading of a residtrace model (physical_reading.hpp): a
+//     struct array with fields name, value and std; options: ts.
 //   The judgement of candidates: the methods "accept", "score", "judge"
 //   and "noise_gate" (residtrace_judge_io.hpp).
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
@@ -101,6 +104,7 @@
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
+#include "ctid/apps/residtrace/physical_reading.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/simulate.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
@@ -936,6 +940,39 @@ void fitmodel_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   plhs[0] = ctid::mex::write_model(prhs[2], fit);
 }
 
+// The physical reading of a model (physical_reading.hpp): a struct array
+// with fields name, value (real unless a complex zero or pole) and std.
+void physical_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput", "physical takes (fname, 'physical', model, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "physical has one output");
+  const auto model = ctid::mex::read_model(g, prhs[2]);
+  const auto labels = ctid::mex::read_reading_labels(g, prhs[2]);
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const double ts = opt.scalar("ts");
+  if (!(ts > 0)) g.fail("badOption", "option 'ts' must be > 0");
+  opt.finish();
+  const auto p = ctid::residtrace::physical_reading<double>(model, ts, labels);
+  const char* names[] = {"name", "value", "std"};
+  plhs[0] = mxCreateStructMatrix(p.empty() ? 0 : 1, p.size(), 3, names);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto& v = p[k].value;
+    bool complex = false;
+    for (const auto& z : v) complex = complex || z.imag() != 0;
+    mxArray* a =
+        mxCreateDoubleMatrix(1, v.size(), complex ? mxCOMPLEX : mxREAL);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      mxGetPr(a)[i] = v[i].real();
+      if (complex) mxGetPi(a)[i] = v[i].imag();
+    }
+    mxSetField(plhs[0], k, "name", mxCreateString(p[k].name.c_str()));
+    mxSetField(plhs[0], k, "value", a);
+    mxSetField(plhs[0], k, "std", mxCreateDoubleScalar(p[k].std));
+  }
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -971,6 +1008,8 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             valerror_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "fitmodel") {
             fitmodel_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "physical") {
+            physical_method(g, nlhs, plhs, nrhs, prhs);
           } else if (!ctid::mex::residtrace_judge::dispatch(method, g, nlhs,
                                                             plhs, nrhs, prhs)) {
             g.fail("badInput", "unknown method '" + method + "'");

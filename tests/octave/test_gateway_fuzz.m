@@ -130,6 +130,7 @@ function test_gateway_fuzz ()
   rval = struct ("substeps", 2, "thm", [], "yh", []);
   rfit = struct ("starts", {{[]}}, "maxiter", 3, "keep_order", false,
                  "substeps", 2);
+  rphys = struct ("ts", 0.1);
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -148,6 +149,7 @@ function test_gateway_fuzz ()
     {"effect_sim_mex", {"residtrace", "valerror", rtm, rtV, rval}, {}}
     {"effect_sim_mex", {"residtrace", "fitmodel", rtm, rtD, rfit}, ...
      {"maxiter"}}
+    {"effect_sim_mex", {"residtrace", "physical", rtm, rphys}, {"ts"}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

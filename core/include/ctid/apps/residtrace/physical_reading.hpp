@@ -61,10 +61,16 @@ namespace reading_detail {
 
 // The roots of c (descending powers) as a companion matrix's eigenvalues:
 // leading zeros dropped, one zero root a trailing zero (appended last);
-// none for an all-zero or constant c.
+// none for an all-zero or constant c; not-a-number ones when c holds a
+// value that is not finite.
 template <typename S>
 std::vector<std::complex<S>> roots(const Vector<S>& c) {
   std::vector<std::complex<S>> r;
+  if (c.size() > 1 && !c.allFinite()) {
+    r.assign(static_cast<std::size_t>(c.size() - 1),
+             std::complex<S>(std::numeric_limits<S>::quiet_NaN()));
+    return r;
+  }
   S cmax = 0;
   for (Eigen::Index i = 0; i < c.size(); ++i) {
     cmax = std::max(cmax, std::abs(c(i)));
