@@ -85,6 +85,14 @@
 //     the estimate; D: y, u, Ts, intersample, vhat, ysm, initial_state,
 //     missing, loop; options: starts (a cell of F's), maxiter, keep_order,
 //     substeps.
+//   v = effect_sim_mex (fname, "velocity", y, options)
+//     the velocity of the measured output y (N-by-1) without phase lag
+//     (responses.hpp, zero_lag_velocity); options: ts, lambda,
+//     output_itself (0 or 1: y smoothed, not differentiated);
+//   [z0, h0] = effect_sim_mex (fname, "cascadelevels", phys, options)
+//     the initial levels of a cascade realisation (physical_fit.hpp,
+//     cascade_levels; phys: a model.phys struct, residtrace_model_io.hpp);
+//     options: none (a struct);
 //   p = effect_sim_mex (fname, "physical", model, options)
 //     the physical reading of a residtrace model (physical_reading.hpp): a
 //     struct array with fields name, value and std; options: ts.
@@ -940,6 +948,51 @@ void fitmodel_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   plhs[0] = ctid::mex::write_model(prhs[2], fit);
 }
 
+// The velocity of a measured output without phase lag (responses.hpp).
+void velocity_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput", "velocity takes (fname, 'velocity', y, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "velocity has one output");
+  g.require_real_double(prhs[2], "y");
+  if (mxGetN(prhs[2]) > 1) g.fail("badInput", "y must be a column vector");
+  const long n = static_cast<long>(mxGetM(prhs[2]));
+  const auto y = any_matrix(g, prhs[2], "y", n, -1);
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const double ts = opt.scalar("ts");
+  const double lambda = opt.scalar("lambda");
+  const bool output_itself = opt.flag("output_itself", false);
+  opt.finish();
+  Eigen::VectorXd v;
+  g.check(ctid::residtrace::zero_lag_velocity<double>(y.data(), n, ts, lambda,
+                                                      output_itself, &v));
+  plhs[0] = put_matrix(v);
+}
+
+// The initial levels of a cascade realisation (physical_fit.hpp).
+void cascadelevels_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                          const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput",
+           "cascadelevels takes (fname, 'cascadelevels', phys, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "cascadelevels has at most 2 outputs");
+  if (!mxIsStruct(prhs[2]) || mxGetNumberOfElements(prhs[2]) != 1) {
+    g.fail("badInput", "the realisation must be a 1x1 struct");
+  }
+  const auto phys = ctid::mex::model_io_detail::read_phys(g, prhs[2]);
+  if (phys.kind != ctid::residtrace::PhysicalKind::kCascade) {
+    g.fail("badInput", "the realisation must be a cascade");
+  }
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  opt.finish();
+  double z0, h0;
+  ctid::residtrace::cascade_levels<double>(phys, &z0, &h0);
+  plhs[0] = mxCreateDoubleScalar(z0);
+  if (nlhs >= 2) plhs[1] = mxCreateDoubleScalar(h0);
+}
+
 // The physical reading of a model (physical_reading.hpp): a struct array
 // with fields name, value (real unless a complex zero or pole) and std.
 void physical_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
@@ -1008,6 +1061,10 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             valerror_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "fitmodel") {
             fitmodel_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "velocity") {
+            velocity_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "cascadelevels") {
+            cascadelevels_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physical") {
             physical_method(g, nlhs, plhs, nrhs, prhs);
           } else if (!ctid::mex::residtrace_judge::dispatch(method, g, nlhs,

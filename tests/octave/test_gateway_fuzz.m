@@ -131,6 +131,9 @@ function test_gateway_fuzz ()
   rfit = struct ("starts", {{[]}}, "maxiter", 3, "keep_order", false,
                  "substeps", 2);
   rphys = struct ("ts", 0.1);
+  rvel = struct ("ts", 0.1, "lambda", 5, "output_itself", false);
+  rcas = struct ("kind", "cascade", "g", "sqrt", "gamma", 0.085,
+                 "alpha", 0.01, "d", 0, "c", 0, "hi", 0.4, "h0", 0.1);
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -150,6 +153,8 @@ function test_gateway_fuzz ()
     {"effect_sim_mex", {"residtrace", "fitmodel", rtm, rtD, rfit}, ...
      {"maxiter"}}
     {"effect_sim_mex", {"residtrace", "physical", rtm, rphys}, {"ts"}}
+    {"effect_sim_mex", {"residtrace", "velocity", y, rvel}, {"ts", "lambda"}}
+    {"effect_sim_mex", {"residtrace", "cascadelevels", rcas, struct()}, {}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...
