@@ -956,9 +956,14 @@ void velocity_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   if (nlhs > 1) g.fail("badInput", "velocity has one output");
   g.require_real_double(prhs[2], "y");
-  if (mxGetN(prhs[2]) > 1) g.fail("badInput", "y must be a column vector");
-  const long n = static_cast<long>(mxGetM(prhs[2]));
-  const auto y = any_matrix(g, prhs[2], "y", n, -1);
+  if (mxGetN(prhs[2]) != 1 && !mxIsEmpty(prhs[2])) {
+    g.fail("badInput", "y must be a column vector");
+  }
+  const long n = static_cast<long>(mxGetNumberOfElements(prhs[2]));
+  const Eigen::VectorXd y =
+      n > 0 ? Eigen::VectorXd(
+                  Eigen::Map<const Eigen::VectorXd>(mxGetPr(prhs[2]), n))
+            : Eigen::VectorXd();
   ctid::mex::OptionsReader opt(g, prhs[3]);
   const double ts = opt.scalar("ts");
   const double lambda = opt.scalar("lambda");
