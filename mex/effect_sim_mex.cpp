@@ -85,6 +85,17 @@
 //     the estimate; D: y, u, Ts, intersample, vhat, ysm, initial_state,
 //     missing, loop; options: starts (a cell of F's), maxiter, keep_order,
 //     substeps (residtrace_candidate_io.hpp, read_context).
+//   v = effect_sim_mex (fname, "velocity", y, options)
+//     the velocity of the measured output y (N-by-1) without phase lag
+//     (responses.hpp, zero_lag_velocity); options: ts, lambda,
+//     output_itself (0 or 1: y smoothed, not differentiated);
+//   [z0, h0] = effect_sim_mex (fname, "cascadelevels", phys, options)
+//     the initial levels of a cascade realisation (physical_fit.hpp,
+//     cascade_levels; phys: a model.phys struct, residtrace_model_io.hpp);
+//     options: none (a struct);
+//   p = effect_sim_mex (fname, "physical", model, options)
+//     the physical reading of a residtrace model (physical_reading.hpp): a
+//     struct array with fields name, value and std; options: ts.
 //   The judgement of candidates: the methods "accept", "score", "judge"
 //   and "noise_gate" (residtrace_judge_io.hpp).
 //   The candidates: the methods "candidate" and "select"
@@ -104,6 +115,7 @@
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
+#include "ctid/apps/residtrace/physical_reading.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/simulate.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
@@ -146,9 +158,15 @@ void filter_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   }
   if (nlhs > 1) g.fail("badInput", "filter has one output");
   g.require_real_double(prhs[2], "x");
-  if (mxGetN(prhs[2]) > 1) g.fail("badInput", "x must be a column vector");
-  const long n = static_cast<long>(mxGetM(prhs[2]));
-  const auto x = any_matrix(g, prhs[2], "x", n, -1);
+  // a column: N-by-1, or empty (no samples, whatever its shape)
+  if (mxGetN(prhs[2]) != 1 && !mxIsEmpty(prhs[2])) {
+    g.fail("badInput", "x must be a column vector");
+  }
+  const long n = static_cast<long>(mxGetNumberOfElements(prhs[2]));
+  const Eigen::VectorXd x =
+      n > 0 ? Eigen::VectorXd(
+                  Eigen::Map<const Eigen::VectorXd>(mxGetPr(prhs[2]), n))
+            : Eigen::VectorXd();
   const Eigen::VectorXd f = read_f(g, prhs[3]);
   ctid::mex::OptionsReader opt(g, prhs[4]);
   const double ts = opt.scalar("ts");
@@ -889,6 +907,89 @@ void fitmodel_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   plhs[0] = ctid::mex::write_model(prhs[2], fit);
 }
 
+// The velocity of a measured output without phase lag (responses.hpp).
+void velocity_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput", "velocity takes (fname, 'velocity', y, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "velocity has one output");
+  g.require_real_double(prhs[2], "y");
+  if (mxGetN(prhs[2]) != 1 && !mxIsEmpty(prhs[2])) {
+    g.fail("badInput", "y must be a column vector");
+  }
+  const long n = static_cast<long>(mxGetNumberOfElements(prhs[2]));
+  const Eigen::VectorXd y =
+      n > 0 ? Eigen::VectorXd(
+                  Eigen::Map<const Eigen::VectorXd>(mxGetPr(prhs[2]), n))
+            : Eigen::VectorXd();
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const double ts = opt.scalar("ts");
+  const double lambda = opt.scalar("lambda");
+  const bool output_itself = opt.flag("output_itself", false);
+  opt.finish();
+  Eigen::VectorXd v;
+  g.check(ctid::residtrace::zero_lag_velocity<double>(y.data(), n, ts, lambda,
+                                                      output_itself, &v));
+  plhs[0] = put_matrix(v);
+}
+
+// The initial levels of a cascade realisation (physical_fit.hpp).
+void cascadelevels_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                          const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput",
+           "cascadelevels takes (fname, 'cascadelevels', phys, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "cascadelevels has at most 2 outputs");
+  if (!mxIsStruct(prhs[2]) || mxGetNumberOfElements(prhs[2]) != 1) {
+    g.fail("badInput", "the realisation must be a 1x1 struct");
+  }
+  const auto phys = ctid::mex::model_io_detail::read_phys(g, prhs[2]);
+  if (phys.kind != ctid::residtrace::PhysicalKind::kCascade) {
+    g.fail("badInput", "the realisation must be a cascade");
+  }
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  opt.finish();
+  double z0, h0;
+  ctid::residtrace::cascade_levels<double>(phys, &z0, &h0);
+  plhs[0] = mxCreateDoubleScalar(z0);
+  if (nlhs >= 2) plhs[1] = mxCreateDoubleScalar(h0);
+}
+
+// The physical reading of a model (physical_reading.hpp): a struct array
+// with fields name, value (real unless a complex zero or pole) and std.
+void physical_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                     const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput", "physical takes (fname, 'physical', model, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "physical has one output");
+  const auto model = ctid::mex::read_model(g, prhs[2]);
+  const auto labels = ctid::mex::read_reading_labels(g, prhs[2]);
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const double ts = opt.scalar("ts");
+  if (!(ts > 0)) g.fail("badOption", "option 'ts' must be > 0");
+  opt.finish();
+  const auto p = ctid::residtrace::physical_reading<double>(model, ts, labels);
+  const char* names[] = {"name", "value", "std"};
+  plhs[0] = mxCreateStructMatrix(p.empty() ? 0 : 1, p.size(), 3, names);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto& v = p[k].value;
+    bool complex = false;
+    for (const auto& z : v) complex = complex || z.imag() != 0;
+    mxArray* a =
+        mxCreateDoubleMatrix(1, v.size(), complex ? mxCOMPLEX : mxREAL);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      mxGetPr(a)[i] = v[i].real();
+      if (complex) mxGetPi(a)[i] = v[i].imag();
+    }
+    mxSetField(plhs[0], k, "name", mxCreateString(p[k].name.c_str()));
+    mxSetField(plhs[0], k, "value", a);
+    mxSetField(plhs[0], k, "std", mxCreateDoubleScalar(p[k].std));
+  }
+}
+
 }  // namespace
 
 void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
@@ -924,6 +1025,12 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             valerror_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "fitmodel") {
             fitmodel_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "velocity") {
+            velocity_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "cascadelevels") {
+            cascadelevels_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "physical") {
+            physical_method(g, nlhs, plhs, nrhs, prhs);
           } else if (!ctid::mex::residtrace_judge::dispatch(method, g, nlhs,
                                                             plhs, nrhs, prhs) &&
                      !ctid::mex::residtrace_candidate::dispatch(

@@ -15,17 +15,21 @@
 //   ok. Fields the core does not use are kept: write_model changes a copy
 //   of the struct it was read from.
 //
-//   read_model(g, s)            the model of the struct s
+//   read_model(g, s)            the model of the struct s (with the
+//                               covariance cov of its estimate)
+//   read_reading_labels(g, s)   what its physical reading takes beyond it
 //   write_model(s, model)       s with the model's structure and estimate
 //   read_closed_loop(g, s, n)   a record's loop (num, den, r1, r2) or none
 #pragma once
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "ctid/apps/residtrace/model.hpp"
+#include "ctid/apps/residtrace/physical_reading.hpp"
 #include "options_reader.hpp"
 
 namespace ctid::mex {
@@ -206,6 +210,17 @@ inline residtrace::PhysicalModel<double> read_phys(const Gateway& g,
   return p;
 }
 
+// A real double or logical matrix with its shape (empty or absent: 0x0).
+inline Eigen::MatrixXd shaped(const Gateway& g, const mxArray* a,
+                              const std::string& what) {
+  if (empty(a)) return Eigen::MatrixXd();
+  const Eigen::VectorXd v = values(g, a, what);
+  return Eigen::Map<const Eigen::MatrixXd>(
+      v.data(), static_cast<Eigen::Index>(mxGetM(a)),
+      static_cast<Eigen::Index>(v.size() /
+                                std::max<std::size_t>(mxGetM(a), 1)));
+}
+
 inline mxArray* row(const Eigen::VectorXd& v) {
   mxArray* a = make_output_matrix(1, static_cast<std::size_t>(v.size()));
   for (Eigen::Index i = 0; i < v.size(); ++i) mxGetPr(a)[i] = v(i);
@@ -263,6 +278,7 @@ inline residtrace::ResidtraceModel<double> read_model(const Gateway& g,
   m.x0 = number(g, field(s, "x0"), "model.x0", 0) != 0;
   m.noise = values(g, field(s, "noise"), "model.noise");
   m.drifting = !empty(field(s, "ltv"));
+  m.estimate.cov = shaped(g, field(s, "cov"), "model.cov");
   const mxArray* phys = field(s, "phys");
   m.has_phys = !empty(phys);
   if (m.has_phys) m.phys = read_phys(g, phys);
@@ -272,6 +288,38 @@ inline residtrace::ResidtraceModel<double> read_model(const Gateway& g,
     g.fail("badInput", "an end stop needs model.out as a struct array");
   }
   return m;
+}
+
+// The channels' names, the diagonal of the drift's Qn (ltv.Qn) and the
+// standard deviations of a physical realisation's parameters (phys.theta;
+// the square roots of diag(phys.cov), NaN without it) of the model struct
+// s.
+inline residtrace::ReadingLabels<double> read_reading_labels(const Gateway& g,
+                                                             const mxArray* s) {
+  using namespace model_io_detail;
+  residtrace::ReadingLabels<double> x;
+  const mxArray* ch = field(s, "channels");
+  for (mwIndex j = 0; ch != nullptr && j < mxGetNumberOfElements(ch); ++j) {
+    const mxArray* name = field(ch, "name", j);
+    x.channel_names.push_back(empty(name) ? std::string()
+                                          : word(g, name, "channel name"));
+  }
+  const mxArray* ltv = field(s, "ltv");
+  if (!empty(ltv)) x.drift_q = shaped(g, field(ltv, "Qn"), "ltv.Qn").diagonal();
+  const mxArray* phys = field(s, "phys");
+  if (!empty(phys)) {
+    const Eigen::MatrixXd C = shaped(g, field(phys, "cov"), "phys.cov");
+    if (field(phys, "cov") != nullptr) {
+      x.phys_std = C.diagonal().unaryExpr(
+          [](double v) { return std::sqrt(std::fmax(v, 0.0)); });
+    } else {
+      x.phys_std = Eigen::VectorXd::Constant(
+          static_cast<Eigen::Index>(
+              values(g, field(phys, "theta"), "phys.theta").size()),
+          NAN);
+    }
+  }
+  return x;
 }
 
 // A copy of the struct s with the model's F, fixed, channel numerators

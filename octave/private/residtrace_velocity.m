@@ -9,16 +9,25 @@
 ## p lambda^2 / (lambda^2 + w^2) y without phase lag (the zero crossings
 ## that sign(v) depends on are not delayed). With @var{is_y} (a
 ## first-order model, whose output is read as a velocity) the output
-## itself, smoothed the same way without the derivative.
+## itself, smoothed the same way without the derivative. Computed by
+## @code{effect_sim_mex} (core/include/ctid/apps/residtrace/responses.hpp).
 ## @end deftypefn
 
 function v = residtrace_velocity (y, Ts, lambda, is_y)
-  D = residtrace_filter ([1 lambda], y, Ts, "foh");
-  if (is_y)
-    f = lambda * D(:, 1);
-  else
-    f = lambda * D(:, 2);
-  endif
-  b = residtrace_filter ([1 lambda], flipud (f), Ts, "foh");
-  v = flipud (lambda * b(:, 1));
+  v = effect_sim_mex ("residtrace", "velocity", y(:),
+                      struct ("ts", Ts, "lambda", lambda,
+                              "output_itself", logical (is_y)));
 endfunction
+
+%!test
+%! ## a sine well below lambda: the velocity is its derivative, scaled by
+%! ## lambda^2 / (lambda^2 + w^2), in phase (away from the ends)
+%! Ts = 0.01; t = (0:2000)' * Ts; w = 2; lambda = 40;
+%! v = residtrace_velocity (sin (w * t), Ts, lambda, false);
+%! k = 500:1500;
+%! g = lambda ^ 2 / (lambda ^ 2 + w ^ 2);
+%! assert (v(k), g * w * cos (w * t(k)), 2e-3);
+%! s = residtrace_velocity (sin (w * t), Ts, lambda, true);
+%! assert (s(k), g * sin (w * t(k)), 2e-3);
+
+%!error <bandwidth> residtrace_velocity ((1:10)', 0.1, -1, false)

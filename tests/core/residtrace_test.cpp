@@ -11,6 +11,9 @@
 //     partial fractions;
 //   - the free responses against their closed forms, and the zero rows of
 //     an unstable or non-finite F;
+//   - the zero-lag velocity of a sine against its steady state, the
+//     derivative times lambda^2/(lambda^2 + w^2) without phase shift (and
+//     the sine itself so scaled), away from the ends' transients;
 //   - the Newey-West long-run variance against the known one of an AR(1)
 //     series, the Diebold-Mariano and encompassing tests on errors of
 //     known relative size and on equal errors, the AR whitener against
@@ -353,6 +356,30 @@ Eigen::VectorXd as_vector(const std::vector<double>& v) {
 }
 
 // g_t = phi g_(t-1) + eps_t, var(eps) = 1: long-run variance 1/(1-phi)^2.
+TEST(ResidtraceResponses, ZeroLagVelocityOfASineIsInPhase) {
+  const double ts = 1e-3, w = 2, lambda = 30;
+  const Eigen::Index N = 6001;
+  Eigen::VectorXd y(N);
+  for (Eigen::Index k = 0; k < N; ++k) y(k) = std::sin(w * ts * k);
+  const double g = lambda * lambda / (lambda * lambda + w * w);
+  Eigen::VectorXd v, s;
+  ASSERT_TRUE(
+      residtrace::zero_lag_velocity<double>(y.data(), N, ts, lambda, false, &v)
+          .ok());
+  ASSERT_TRUE(
+      residtrace::zero_lag_velocity<double>(y.data(), N, ts, lambda, true, &s)
+          .ok());
+  ASSERT_EQ(v.size(), N);
+  // the transients exp(-lambda t) of both ends have decayed after 1 s
+  for (Eigen::Index k = 1000; k < N - 1000; ++k) {
+    EXPECT_NEAR(v(k), g * w * std::cos(w * ts * k), 1e-5);
+    EXPECT_NEAR(s(k), g * std::sin(w * ts * k), 1e-5);
+  }
+  EXPECT_FALSE(
+      residtrace::zero_lag_velocity<double>(y.data(), N, ts, -1.0, false, &v)
+          .ok());
+}
+
 TEST(ResidtraceStatistics, NeweyWestMatchesTheAr1LongRunVariance) {
   const int N = 40000;
   const std::vector<double> eps = white(N, 21);

@@ -133,6 +133,10 @@ function test_gateway_fuzz ()
   ## its candidates and the choice among variants
   rcand = rmfield (rfit, "starts");
   rsel = setfield (rcand, "starts", {{[]}, {rtm.F}});
+  rphys = struct ("ts", 0.1);
+  rvel = struct ("ts", 0.1, "lambda", 5, "output_itself", false);
+  rcas = struct ("kind", "cascade", "g", "sqrt", "gamma", 0.085,
+                 "alpha", 0.01, "d", 0, "c", 0, "hi", 0.4, "h0", 0.1);
   ## Calls: {gateway, positional arguments with the options struct last,
   ## required fields}.
   calls = {
@@ -158,6 +162,18 @@ function test_gateway_fuzz ()
      {"maxiter"}}
     {"effect_sim_mex", {"residtrace", "select", {rtm, rtm}, {"a", "b"}, ...
                         rtD, rsel}, {"maxiter", "starts"}}
+    {"effect_sim_mex", {"residtrace", "physical", rtm, rphys}, {"ts"}}
+    {"effect_sim_mex", {"residtrace", "filter", y, [1 2], ...
+                        struct("ts", 0.1, "rule", "zoh")}, {"ts", "rule"}}
+    {"effect_sim_mex", {"residtrace", "free", 50, [1 2], ...
+                        struct("ts", 0.1)}, {"ts"}}
+    {"effect_sim_mex", {"residtrace", "dmtest", y, u, struct()}, {}}
+    {"effect_sim_mex", {"residtrace", "whiteness", y, u, ...
+                        struct("maxlag", 5)}, {"maxlag"}}
+    {"effect_sim_mex", {"residtrace", "ar", y, struct("pmax", 3)}, ...
+     {"pmax"}}
+    {"effect_sim_mex", {"residtrace", "velocity", y, rvel}, {"ts", "lambda"}}
+    {"effect_sim_mex", {"residtrace", "cascadelevels", rcas, struct()}, {}}
     {"riv_mex", {"clrsrivc", y, u, 0.1, riv}, ...
      {"na", "nb", "nk", "lambda_svf"}}
     {"qnml_mex", {"qnml", y, u, 0.1, qn}, ...

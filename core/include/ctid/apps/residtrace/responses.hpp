@@ -13,10 +13,13 @@
 //     squares). For an unstable F they grow without bound: from the first
 //     sample with a non-finite entry on, the rows are 0 (for an F with a
 //     non-finite coefficient, from the second sample on).
+//   zero_lag_velocity: the velocity of a measured output for the sign of
+//     the velocity (structure_fit.hpp, eq. 4.17) without phase lag.
 //
 // F = p^n + f1 p^(n-1) + .. + fn is given by f = [f1 .. fn].
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "ctid/base/status.hpp"
@@ -72,6 +75,31 @@ Status free_responses(const Vector<S>& f, S ts, Eigen::Index N,
       break;
     }
   }
+  return Status::Ok();
+}
+
+// The velocity of the measured output y (N samples, held by FOH) for the
+// sign-of-velocity channel: the SVF derivative p lambda/(p + lambda) y run
+// forward, then lambda/(p + lambda) run backward, so that the result is
+// p lambda^2/(lambda^2 + w^2) y without phase lag (the zero crossings that
+// sign(v) depends on are not delayed). With output_itself (a first-order
+// model, whose output is read as a velocity) y itself, smoothed the same
+// way without the derivative.
+template <typename S>
+Status zero_lag_velocity(const S* y, Eigen::Index N, S ts, S lambda,
+                         bool output_itself, Vector<S>* v) {
+  if (!(lambda > 0) || !std::isfinite(lambda)) {
+    return bad_input("the velocity filter's bandwidth must be finite and > 0");
+  }
+  const Vector<S> f = Vector<S>::Constant(1, lambda);
+  Matrix<S> D;
+  Status status = filtered_derivatives<S>(f, ts, InterSample::kFoh, y, N, D);
+  if (!status.ok()) return status;
+  // forward, then the time-reversed signal through lambda/(p + lambda)
+  Vector<S> back = lambda * D.col(output_itself ? 0 : 1).reverse();
+  status = filtered_derivatives<S>(f, ts, InterSample::kFoh, back.data(), N, D);
+  if (!status.ok()) return status;
+  *v = (lambda * D.col(0)).reverse();
   return Status::Ok();
 }
 
