@@ -65,14 +65,6 @@ inline std::string number_text(const char* spec, double v) {
   return format(spec, v);
 }
 
-// sum_k x(k)^2 in sample order.
-template <typename S>
-S plain_sum_squares(const Vector<S>& x) {
-  S s = 0;
-  for (Eigen::Index k = 0; k < x.size(); ++k) s += x(k) * x(k);
-  return s;
-}
-
 }  // namespace detail
 
 // Q(a, x) = Gamma(a, x) / Gamma(a), the regularised upper incomplete gamma
@@ -150,7 +142,7 @@ S wald(const Vector<S>& theta, const Matrix<S>& C) {
   Eigen::LLT<Matrix<S>, Eigen::Upper> llt(Cn);
   if (llt.info() != Eigen::Success) return nan;
   const Vector<S> w = llt.matrixL().solve(Vector<S>(theta.array() / s.array()));
-  return std::sqrt(detail::plain_sum_squares(w) / static_cast<S>(k));
+  return std::sqrt(detail::sum_squares(w) / static_cast<S>(k));
 }
 
 // What accept reads of a candidate's model and of the current model.
@@ -335,8 +327,7 @@ template <typename S>
 LrTest<S> lr_test(const Vector<S>& e0, const Vector<S>& e1, S nadd) {
   LrTest<S> t;
   const S N = static_cast<S>(e1.size());
-  t.lr = N * std::log(detail::plain_sum_squares(e0) /
-                      detail::plain_sum_squares(e1));
+  t.lr = N * std::log(detail::sum_squares(e0) / detail::sum_squares(e1));
   if (t.lr > 0) t.p = chi2_upper(t.lr, nadd);
   return t;
 }

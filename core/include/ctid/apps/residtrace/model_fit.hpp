@@ -44,6 +44,7 @@
 #include "ctid/apps/residtrace/model.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/simulate.hpp"
+#include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/apps/residtrace/structure_fit.hpp"
 #include "ctid/base/polynomial.hpp"
 #include "ctid/base/status.hpp"
@@ -117,13 +118,6 @@ void simulation_error(const ResidtraceModel<S>& model, const FitRecord<S>& D,
     for (Eigen::Index k = 0; k < N; ++k)
       if (D.missing[k]) (*e)(k) = 0;  // bridged samples carry no error
   }
-}
-
-template <typename S>
-S sum_of_squares(const Vector<S>& e) {
-  S s = 0;
-  for (Eigen::Index k = 0; k < e.size(); ++k) s += e(k) * e(k);
-  return s;
 }
 
 }  // namespace model_fit_detail
@@ -258,7 +252,7 @@ Status fit_model(const ResidtraceModel<S>& tmpl, const FitRecord<S>& D,
     s.simulated = true;
     Vector<S> e, yh;
     simulation_error<S>(model, D, settings.substeps, &e, &yh);
-    S sse = sum_of_squares(e);
+    S sse = detail::sum_squares(e);
     for (int round = 1; round <= 3; ++round) {
       if (!std::isfinite(sse)) break;
       FitRecord<S> Dk = D;
@@ -269,7 +263,7 @@ Status fit_model(const ResidtraceModel<S>& tmpl, const FitRecord<S>& D,
       if (!m.estimate.ok) break;
       Vector<S> e2, yh2;
       simulation_error<S>(m, D, settings.substeps, &e2, &yh2);
-      const S sse2 = sum_of_squares(e2);
+      const S sse2 = detail::sum_squares(e2);
       if (!(sse2 < sse)) break;
       model = m;
       e = e2;
