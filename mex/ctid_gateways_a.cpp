@@ -21,6 +21,7 @@
 #include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/physical_reading.hpp"
+#include "ctid/apps/residtrace/prefilter.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/simulate.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"

@@ -89,6 +89,10 @@
 //     the velocity of the measured output y (N-by-1) without phase lag
 //     (responses.hpp, zero_lag_velocity); options: ts, lambda,
 //     output_itself (0 or 1: y smoothed, not differentiated);
+//   Fp = effect_sim_mex (fname, "prefilter", F, options)
+//     the denominator of residtrace's prefilter and auxiliary model
+//     (prefilter.hpp, prefilter_denominator; F a row of descending
+//     powers); options: wlo, the band's lower edge;
 //   [z0, h0] = effect_sim_mex (fname, "cascadelevels", phys, options)
 //     the initial levels of a cascade realisation (physical_fit.hpp,
 //     cascade_levels; phys: a model.phys struct, residtrace_model_io.hpp);
@@ -116,6 +120,7 @@
 #include "ctid/apps/residtrace/model_fit.hpp"
 #include "ctid/apps/residtrace/physical_fit.hpp"
 #include "ctid/apps/residtrace/physical_reading.hpp"
+#include "ctid/apps/residtrace/prefilter.hpp"
 #include "ctid/apps/residtrace/responses.hpp"
 #include "ctid/apps/residtrace/simulate.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
@@ -934,6 +939,29 @@ void velocity_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   plhs[0] = put_matrix(v);
 }
 
+// The prefilter's denominator of residtrace's SRIVC iterations
+// (prefilter.hpp).
+void prefilter_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
+                      const mxArray* prhs[]) {
+  if (nrhs != 4) {
+    g.fail("badInput", "prefilter takes (fname, 'prefilter', F, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "prefilter has one output");
+  g.require_real_double(prhs[2], "F");
+  const long n = static_cast<long>(mxGetNumberOfElements(prhs[2]));
+  if (n < 1 || (mxGetM(prhs[2]) != 1 && mxGetN(prhs[2]) != 1)) {
+    g.fail("badInput", "F must be a nonempty vector");
+  }
+  const Eigen::VectorXd F =
+      Eigen::Map<const Eigen::VectorXd>(mxGetPr(prhs[2]), n);
+  ctid::mex::OptionsReader opt(g, prhs[3]);
+  const double wlo = opt.scalar("wlo");
+  opt.finish();
+  Eigen::VectorXd Fp;
+  g.check(ctid::residtrace::prefilter_denominator<double>(F, wlo, &Fp));
+  plhs[0] = put_matrix(Eigen::MatrixXd(Fp.transpose()));
+}
+
 // The initial levels of a cascade realisation (physical_fit.hpp).
 void cascadelevels_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
                           const mxArray* prhs[]) {
@@ -1027,6 +1055,8 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             fitmodel_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "velocity") {
             velocity_method(g, nlhs, plhs, nrhs, prhs);
+          } else if (method == "prefilter") {
+            prefilter_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "cascadelevels") {
             cascadelevels_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physical") {
