@@ -5,7 +5,11 @@
 // roots of real polynomials stored as coefficient vectors.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <complex>
+#include <limits>
+#include <vector>
 
 #include "ctid/base/types.hpp"
 
@@ -48,6 +52,37 @@ Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> polynomial_roots(
   for (Eigen::Index j = 0; j < n; ++j) companion(0, j) = -c(n - 1 - j) / c(n);
   for (Eigen::Index i = 1; i < n; ++i) companion(i, i - 1) = 1;
   return Eigen::EigenSolver<Matrix<S>>(companion, false).eigenvalues();
+}
+
+// The roots of c (descending powers), as Octave's roots finds them: the
+// eigenvalues of the companion matrix of c without its leading zeros, then
+// one zero root for each trailing zero (appended last); none for an empty,
+// all-zero or constant c; not-a-number ones when c holds a value that is
+// not finite.
+template <typename S>
+std::vector<std::complex<S>> roots_descending(const Vector<S>& c) {
+  std::vector<std::complex<S>> r;
+  if (c.size() > 1 && !c.allFinite()) {
+    r.assign(static_cast<std::size_t>(c.size() - 1),
+             std::complex<S>(std::numeric_limits<S>::quiet_NaN()));
+    return r;
+  }
+  S cmax = 0;
+  for (Eigen::Index i = 0; i < c.size(); ++i) {
+    cmax = std::max(cmax, std::abs(c(i)));
+  }
+  if (c.size() == 0 || cmax == 0) return r;
+  Eigen::Index first = 0, last = c.size() - 1;
+  while (c(first) / cmax == 0) ++first;
+  while (c(last) / cmax == 0) --last;
+  if (last > first) {
+    Vector<S> ascending(last - first + 1);
+    for (Eigen::Index i = first; i <= last; ++i) ascending(last - i) = c(i);
+    const auto z = polynomial_roots<S>(ascending);
+    for (Eigen::Index i = 0; i < z.size(); ++i) r.push_back(z(i));
+  }
+  for (Eigen::Index i = last + 1; i < c.size(); ++i) r.emplace_back(S(0));
+  return r;
 }
 
 // Coefficients of prod_k (x - r_k), descending powers of x, from complex

@@ -125,27 +125,9 @@ Vector<S> filter_dt(const Vector<S>& b, const Vector<S>& a,
 // Monic polynomial [1 p1 .. pn] from its roots (conjugate pairs).
 template <typename S>
 Vector<S> from_roots(const std::vector<std::complex<S>>& roots) {
-  std::vector<std::complex<S>> p(1, std::complex<S>(1));
-  for (const auto& r : roots) {
-    p.push_back(0);
-    for (std::size_t i = p.size() - 1; i > 0; --i) p[i] -= r * p[i - 1];
-  }
-  Vector<S> out(static_cast<Eigen::Index>(p.size()));
-  for (std::size_t i = 0; i < p.size(); ++i) out(i) = p[i].real();
-  return out;
-}
-
-template <typename S>
-std::vector<std::complex<S>> roots_of(const Vector<S>& p) {
-  const Eigen::Index n = p.size() - 1;
-  std::vector<std::complex<S>> out;
-  if (n < 1) return out;
-  Matrix<S> comp = Matrix<S>::Zero(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) comp(0, j) = -p(j + 1);
-  for (Eigen::Index i = 1; i < n; ++i) comp(i, i - 1) = 1;
-  Eigen::EigenSolver<Matrix<S>> es(comp, false);
-  for (Eigen::Index i = 0; i < n; ++i) out.push_back(es.eigenvalues()(i));
-  return out;
+  const Eigen::Map<const Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1>> r(
+      roots.data(), static_cast<Eigen::Index>(roots.size()));
+  return monic_from_roots<S>(r).real();
 }
 
 // Roots of the q^-1 polynomial [1 p1 .. pn] (as z-polynomial) inside the
@@ -155,7 +137,7 @@ Vector<S> reflect_into_circle(const Vector<S>& p, S radius,
                               bool* changed = nullptr) {
   if (changed) *changed = false;
   if (p.size() < 2) return p;
-  std::vector<std::complex<S>> r = roots_of(p);
+  std::vector<std::complex<S>> r = roots_descending<S>(p);
   bool any = false;
   for (auto& z : r) {
     const S m = std::abs(z);
@@ -172,7 +154,7 @@ Vector<S> reflect_into_circle(const Vector<S>& p, S radius,
 
 template <typename S>
 bool inside_circle(const Vector<S>& p, S radius) {
-  for (const auto& z : roots_of(p)) {
+  for (const auto& z : roots_descending<S>(p)) {
     if (!(std::abs(z) < radius)) return false;
   }
   return true;

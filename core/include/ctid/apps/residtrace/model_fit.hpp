@@ -67,24 +67,6 @@ struct ModelFitSettings {
 
 namespace model_fit_detail {
 
-// The roots of F (descending powers) as Octave's roots finds them: its
-// zeros at the origin exactly 0.
-template <typename S>
-Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> roots_of(const Vector<S>& F) {
-  Eigen::Index n = F.size() - 1;
-  Eigen::Index zeros = 0;
-  while (zeros < n && F(n - zeros) == 0) ++zeros;
-  const Eigen::Index d = n - zeros;
-  Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> z(n);
-  if (d > 0) {
-    Vector<S> ascending(d + 1);
-    for (Eigen::Index i = 0; i <= d; ++i) ascending(i) = F(d - i);
-    z.head(d) = polynomial_roots<S>(ascending);
-  }
-  for (Eigen::Index i = d; i < n; ++i) z(i) = 0;
-  return z;
-}
-
 // [e, yh] of the model simulated on the estimation record (its own output
 // fed back), with its free response fitted when the initial state is
 // estimated; e all infinite when the simulation fails.
@@ -134,11 +116,11 @@ bool residualised(const ResidtraceModel<S>& model, S ts, S limit, bool trim,
   const Vector<S> F = model.F / model.F(0);
   const Eigen::Index n = F.size() - 1;
   if (!F.allFinite()) return false;
-  const auto z = model_fit_detail::roots_of<S>(F);
+  const std::vector<std::complex<S>> z = roots_descending<S>(F);
   std::vector<bool> fast(static_cast<std::size_t>(n));
   Eigen::Index nfast = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    fast[i] = z(i).imag() == 0 && -z(i).real() * ts > limit;
+    fast[i] = z[i].imag() == 0 && -z[i].real() * ts > limit;
     nfast += fast[i];
   }
   const Eigen::Index nn = n - nfast;
@@ -155,9 +137,9 @@ bool residualised(const ResidtraceModel<S>& model, S ts, S limit, bool trim,
   S g = 1;
   for (Eigen::Index i = 0, k = 0; i < n; ++i) {
     if (fast[i]) {
-      g *= -z(i).real();
+      g *= -z[i].real();
     } else {
-      slow(k++) = z(i);
+      slow(k++) = z[i];
     }
   }
   const auto c = monic_from_roots<S>(slow);

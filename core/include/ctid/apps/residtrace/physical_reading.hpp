@@ -59,36 +59,6 @@ struct ReadingLabels {
 
 namespace reading_detail {
 
-// The roots of c (descending powers) as a companion matrix's eigenvalues:
-// leading zeros dropped, one zero root a trailing zero (appended last);
-// none for an all-zero or constant c; not-a-number ones when c holds a
-// value that is not finite.
-template <typename S>
-std::vector<std::complex<S>> roots(const Vector<S>& c) {
-  std::vector<std::complex<S>> r;
-  if (c.size() > 1 && !c.allFinite()) {
-    r.assign(static_cast<std::size_t>(c.size() - 1),
-             std::complex<S>(std::numeric_limits<S>::quiet_NaN()));
-    return r;
-  }
-  S cmax = 0;
-  for (Eigen::Index i = 0; i < c.size(); ++i) {
-    cmax = std::max(cmax, std::abs(c(i)));
-  }
-  if (c.size() == 0 || cmax == 0) return r;
-  Eigen::Index first = 0, last = c.size() - 1;
-  while (c(first) / cmax == 0) ++first;
-  while (c(last) / cmax == 0) --last;
-  if (last > first) {
-    Vector<S> ascending(last - first + 1);
-    for (Eigen::Index i = first; i <= last; ++i) ascending(last - i) = c(i);
-    const auto z = polynomial_roots<S>(ascending);
-    for (Eigen::Index i = 0; i < z.size(); ++i) r.push_back(z(i));
-  }
-  for (Eigen::Index i = last + 1; i < c.size(); ++i) r.emplace_back(S(0));
-  return r;
-}
-
 // The entry (i, j) of C (0-based), NaN outside.
 template <typename S>
 S entry(const Matrix<S>& C, Eigen::Index i, Eigen::Index j) {
@@ -159,7 +129,7 @@ std::vector<PhysicalQuantity<S>> physical_reading(const ResidtraceModel<S>& m,
               : "static gain";
     add(name, {C(b0 / F(n - r))}, nan);
   }
-  const std::vector<C> poles = reading_detail::roots(F);
+  const std::vector<C> poles = roots_descending<S>(F);
   std::vector<bool> done(poles.size(), false);
   for (std::size_t k = 0; k < poles.size(); ++k) {
     if (done[k]) continue;
@@ -181,7 +151,7 @@ std::vector<PhysicalQuantity<S>> physical_reading(const ResidtraceModel<S>& m,
     }
     done[k] = true;
   }
-  for (const C& z : reading_detail::roots(b)) add("zero", {z}, nan);
+  for (const C& z : roots_descending<S>(b)) add("zero", {z}, nan);
   const S f = ch1.kind == ChannelKind::kInput ? ch1.param : S(0);
   if (ch1.nk + f > 0) add("delay (s)", {C((ch1.nk + f) * ts)}, nan);
   const Eigen::Index ib0 = b_last[0];
@@ -196,7 +166,7 @@ std::vector<PhysicalQuantity<S>> physical_reading(const ResidtraceModel<S>& m,
     }
   }
   if (ch1.kind == ChannelKind::kNode) {
-    for (const C& z : reading_detail::roots(ch1.node_f)) {
+    for (const C& z : roots_descending<S>(ch1.node_f)) {
       add("pole before the clipped node", {z}, nan);
     }
     add("node levels [lo hi] (input units)", {C(ch1.node_lo), C(ch1.node_hi)},
