@@ -22,7 +22,8 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous") of the current model cur.
+//     the candidate effect ("offset", "viscous", "order") of the current
+//     model cur.
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -39,6 +40,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_order.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -286,10 +288,21 @@ inline mxArray* write_evidence(const residtrace::Evidence<double>& e) {
   }
   mxArray* s = mxCreateStructMatrix(1, 1, 0, nullptr);
   for (const residtrace::EvidenceField<double>& f : e.fields) {
-    set(s, 0, f.name.c_str(),
-        f.is_text ? mxCreateString(f.text.c_str())
-                  : (f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0))
-                                         : row(f.value)));
+    mxArray* v = nullptr;
+    if (f.is_text) {
+      v = mxCreateString(f.text.c_str());
+    } else if (f.roots) {
+      // a column, complex when one of the roots is
+      const bool complex = (f.imag.array() != 0).any();
+      v = mxCreateDoubleMatrix(f.value.size(), 1, complex ? mxCOMPLEX : mxREAL);
+      std::copy(f.value.data(), f.value.data() + f.value.size(), mxGetPr(v));
+      if (complex) {
+        std::copy(f.imag.data(), f.imag.data() + f.imag.size(), mxGetPi(v));
+      }
+    } else {
+      v = f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0)) : row(f.value);
+    }
+    set(s, 0, f.name.c_str(), v);
   }
   return s;
 }
@@ -357,6 +370,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   } else if (effect == "viscous") {
     if (cur.fixed.empty()) g.fail("badInput", "the model has no order");
     g.check(residtrace::viscous_candidate<double>(cur, ctx, &c));
+  } else if (effect == "order") {
+    g.check(residtrace::order_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

@@ -10,14 +10,23 @@
 //     estimates its levels or has both offsets already;
 //   - viscous_candidate frees a velocity coefficient fixed at zero and
 //     recovers the true one, f / b0 as its physical reading, and is not
-//     applicable when the coefficient is estimated.
+//     applicable when the coefficient is estimated;
+//   - order_candidate (candidate_order.hpp) finds the missing pole of a
+//     second-order system given a first-order model, keeps an integrator
+//     of the model exactly, and has no admissible order for a numerator
+//     as long as every raised denominator;
+//   - the evidence's rows of roots are written as Octave's num2str (x, 4)
+//     writes them (its output for the same numbers).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <random>
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_order.hpp"
 #include "test_util.hpp"
 
 namespace ctid::residtrace {
@@ -174,6 +183,94 @@ TEST(ResidtraceCandidate, ViscousFreesTheVelocityCoefficient) {
   // estimated already: not applicable
   ASSERT_TRUE(viscous_candidate<double>(truth, ctx, &c).ok());
   EXPECT_FALSE(c.applicable);
+}
+
+// The current model of a candidate: its structure fitted on the record
+// (the candidates read its BIC and number of parameters).
+ResidtraceModel<double> fitted_model(const ResidtraceModel<double>& tmpl,
+                                     const CandidateContext<double>& ctx) {
+  ResidtraceModel<double> m;
+  EXPECT_TRUE(fit_model<double>(tmpl, ctx.D, {tmpl.F}, ctx.fit, &m).ok());
+  EXPECT_TRUE(m.estimate.ok);
+  return m;
+}
+
+std::vector<std::complex<double>> sorted_roots(const Eigen::VectorXd& F) {
+  std::vector<std::complex<double>> r = roots_descending<double>(F);
+  std::sort(r.begin(), r.end(),
+            [](auto a, auto b) { return std::abs(a) < std::abs(b); });
+  return r;
+}
+
+TEST(ResidtraceCandidate, OrderFindsTheMissingPole) {
+  // 4 / ((p + 1)(p + 4)) explained by a first-order model
+  const ResidtraceModel<double> truth =
+      model(Eigen::Vector3d(1, 5, 4), Eigen::VectorXd::Constant(1, 4));
+  CandidateContext<double> ctx = context(truth, 0, 0, 1500, 7);
+  ctx.wlo = 0.1;
+  const ResidtraceModel<double> cur = fitted_model(
+      model(Eigen::Vector2d(1, 1), Eigen::VectorXd::Constant(1, 1)), ctx);
+  Candidate<double> c;
+  ASSERT_TRUE(order_candidate<double>(cur, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable);
+  EXPECT_EQ(c.variant, "na + 1, nb + 0");
+  EXPECT_EQ(c.nadd, 1);
+  const auto p = sorted_roots(c.model.F);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_NEAR(p[0].real(), -1, 0.02);
+  EXPECT_NEAR(p[1].real(), -4, 0.08);
+  EXPECT_GT(c.evidence.fields[4].value(0), 100);  // the BIC's drop
+  EXPECT_EQ(c.evidence.text.substr(0, 24), "na + 1, nb + 0: poles -4");
+}
+
+TEST(ResidtraceCandidate, OrderKeepsTheIntegrator) {
+  // 3 / (p (p + 3)) explained by 1 / p, the integrator fixed
+  const ResidtraceModel<double> truth =
+      model(Eigen::Vector3d(1, 3, 0), Eigen::VectorXd::Constant(1, 3));
+  CandidateContext<double> ctx = context(truth, 0, 0, 1500, 8);
+  ctx.wlo = 0.1;
+  ResidtraceModel<double> tmpl =
+      model(Eigen::Vector2d(1, 0), Eigen::VectorXd::Constant(1, 1));
+  tmpl.fixed = {true};
+  const ResidtraceModel<double> cur = fitted_model(tmpl, ctx);
+  Candidate<double> c;
+  ASSERT_TRUE(order_candidate<double>(cur, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable);
+  ASSERT_EQ(c.model.F.size(), 3);
+  EXPECT_EQ(c.model.F(2), 0.0);
+  EXPECT_NEAR(c.model.F(1), 3, 0.06);
+}
+
+TEST(ResidtraceCandidate, OrderNeedsAStrictlyProperVariant) {
+  ResidtraceModel<double> cur =
+      model(Eigen::Vector2d(1, 1), Eigen::VectorXd::Constant(4, 1));
+  CandidateContext<double> ctx;
+  ctx.wlo = 0.1;
+  Candidate<double> c;
+  ASSERT_TRUE(order_candidate<double>(cur, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+  EXPECT_EQ(c.reason, "no admissible order");
+  ctx.wlo = 0;  // no band: refused
+  EXPECT_FALSE(order_candidate<double>(cur, ctx, &c).ok());
+}
+
+TEST(ResidtraceCandidate, RootsWrittenAsOctavesNum2str) {
+  using candidate_detail::num2str;
+  // Octave 7: num2str ([-2 -1], 4), num2str ([-0.4357+1.923i,
+  // -0.4357-1.923i, -0.1286], 4), num2str ([-0.00012345 1e7 3], 4),
+  // num2str (zeros (1, 0), 4), num2str ([NaN Inf -Inf], 4)
+  EXPECT_EQ(num2str<double>(Eigen::Vector2d(-2, -1), Eigen::Vector2d(0, 0), 4),
+            "-2         -1");
+  EXPECT_EQ(num2str<double>(Eigen::Vector3d(-0.4357, -0.4357, -0.1286),
+                            Eigen::Vector3d(1.923, -1.923, 0), 4),
+            "-0.4357+1.923i         -0.4357-1.923i         -0.1286+0i");
+  EXPECT_EQ(num2str<double>(Eigen::Vector3d(-0.00012345, 1e7, 3),
+                            Eigen::VectorXd(), 4),
+            "-0.0001234      1e+07          3");
+  EXPECT_EQ(num2str<double>(Eigen::VectorXd(), Eigen::VectorXd(), 4), "");
+  EXPECT_EQ(num2str<double>(Eigen::Vector3d(NAN, INFINITY, -INFINITY),
+                            Eigen::VectorXd(), 4),
+            "NaN        Inf       -Inf");
 }
 
 }  // namespace

@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -63,14 +64,16 @@ struct CandidateContext {
   bool vel_is_y = false;
 };
 
-// A named field of a candidate's evidence: a number (or a row of them) or
-// a text.
+// A named field of a candidate's evidence: a number (or a row of them), a
+// column of roots (complex when one of them is) or a text.
 template <typename S>
 struct EvidenceField {
   std::string name;
   bool is_text = false;
   std::string text;
   Vector<S> value;
+  bool roots = false;  // value and imag: a column of roots
+  Vector<S> imag;
 };
 
 template <typename S>
@@ -82,6 +85,18 @@ struct Evidence {
     EvidenceField<S> f;
     f.name = name;
     f.value = Vector<S>::Constant(1, v);
+    fields.push_back(f);
+  }
+  void add(const std::string& name, const std::vector<std::complex<S>>& r) {
+    EvidenceField<S> f;
+    f.name = name;
+    f.roots = true;
+    f.value.resize(static_cast<Eigen::Index>(r.size()));
+    f.imag.resize(f.value.size());
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      f.value(static_cast<Eigen::Index>(i)) = r[i].real();
+      f.imag(static_cast<Eigen::Index>(i)) = r[i].imag();
+    }
     fields.push_back(f);
   }
   void add(const std::string& name, const std::string& t) {
@@ -158,6 +173,46 @@ std::string num(const char* spec, S v) {
   char buf[64];
   std::snprintf(buf, sizeof(buf), spec, static_cast<double>(v));
   return buf;
+}
+
+// A row of numbers as Octave's num2str (x, prec) writes it: each number
+// in a field of prec + 7 characters with prec significant digits, the row
+// trimmed; a complex row (imag non-empty and one of its parts nonzero) as
+// re+imi pairs, the imaginary part left-aligned with its sign.
+template <typename S>
+std::string num2str(const Vector<S>& re, const Vector<S>& im, int prec) {
+  const int w = prec + 7;
+  auto field = [&](S v, bool sign, bool left) {
+    char buf[64];
+    if (std::isnan(v) || std::isinf(v)) {
+      const std::string t = std::isnan(v) ? "NaN" : (v > 0 ? "Inf" : "-Inf");
+      const std::string u = (sign && !(v < 0)) ? "+" + t : t;
+      std::snprintf(buf, sizeof(buf), left ? "%-*s" : "%*s", w, u.c_str());
+    } else {
+      std::snprintf(
+          buf, sizeof(buf),
+          left ? (sign ? "%-+*.*g" : "%-*.*g") : (sign ? "%+*.*g" : "%*.*g"), w,
+          prec, static_cast<double>(v == 0 ? S(0) : v));
+    }
+    return std::string(buf);
+  };
+  const bool complex = im.size() == re.size() && (im.array() != 0).any();
+  std::string out;
+  for (Eigen::Index i = 0; i < re.size(); ++i) {
+    out += field(re(i), false, false);
+    if (complex) {
+      // the padding of the imaginary part moved after its i, the last
+      // one's dropped
+      std::string t = field(im(i), true, true);
+      const std::size_t end = t.find_last_not_of(' ');
+      const std::string pad = t.substr(end + 1);
+      out += t.substr(0, end + 1) + "i" + (i + 1 < re.size() ? pad : "");
+    }
+  }
+  const std::size_t a = out.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  const std::size_t b = out.find_last_not_of(" \t");
+  return out.substr(a, b - a + 1);
 }
 
 }  // namespace candidate_detail
