@@ -22,8 +22,8 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous", "order") of the current
-//     model cur.
+//     the candidate effect ("offset", "viscous", "order", "coulomb") of
+//     the current model cur.
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_coulomb.hpp"
 #include "ctid/apps/residtrace/candidate_order.hpp"
 #include "residtrace_model_io.hpp"
 
@@ -251,8 +252,9 @@ inline mxArray* write_model_struct(const mxArray* base,
       set(c, j, "type", mxCreateString(channel_type(k.kind)));
       set(c, j, "col", mxCreateDoubleScalar(k.col + 1));
       set(c, j, "param",
-          k.kind == residtrace::ChannelKind::kSignOutput
-              ? mxCreateString("y")
+          k.kind == residtrace::ChannelKind::kSignOutput ? mxCreateString("y")
+          : k.kind == residtrace::ChannelKind::kSignV
+              ? mxCreateString("dy")
               : (k.param != 0 ? mxCreateDoubleScalar(k.param)
                               : mxCreateDoubleMatrix(0, 0, mxREAL)));
       set(c, j, "nb", mxCreateDoubleScalar(k.nb));
@@ -372,6 +374,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.check(residtrace::viscous_candidate<double>(cur, ctx, &c));
   } else if (effect == "order") {
     g.check(residtrace::order_candidate<double>(cur, ctx, &c));
+  } else if (effect == "coulomb") {
+    g.check(residtrace::coulomb_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

@@ -281,6 +281,7 @@ inline residtrace::ResidtraceModel<double> read_model(const Gateway& g,
   m.estimate.cov = shaped(g, field(s, "cov"), "model.cov");
   m.estimate.np = count(g, field(s, "np"), "model.np", 0);
   m.estimate.bic = number(g, field(s, "bic"), "model.bic", NAN);
+  m.estimate.e = values(g, field(s, "e_est"), "model.e_est");
   const mxArray* phys = field(s, "phys");
   m.has_phys = !empty(phys);
   if (m.has_phys) m.phys = read_phys(g, phys);

@@ -16,7 +16,12 @@
 //     of the model exactly, and has no admissible order for a numerator
 //     as long as every raised denominator;
 //   - the evidence's rows of roots are written as Octave's num2str (x, 4)
-//     writes them (its output for the same numbers).
+//     writes them (its output for the same numbers);
+//   - coulomb_candidate (candidate_coulomb.hpp) recovers the Coulomb level
+//     of a first-order velocity system simulated with its friction, is not
+//     applicable to a model that has it already or when the velocity never
+//     reverses, and finds sign(v) not identifiable when a two-level input
+//     decides the direction.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,6 +31,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_coulomb.hpp"
 #include "ctid/apps/residtrace/candidate_order.hpp"
 #include "test_util.hpp"
 
@@ -271,6 +277,100 @@ TEST(ResidtraceCandidate, RootsWrittenAsOctavesNum2str) {
   EXPECT_EQ(num2str<double>(Eigen::Vector3d(NAN, INFINITY, -INFINITY),
                             Eigen::VectorXd(), 4),
             "NaN        Inf       -Inf");
+}
+
+// A first-order velocity system 2 / (p + 2) driven by u and braked by a
+// Coulomb friction of level fc (in input units): the channel sign(y) with
+// the gain -2 fc. Its record holds the velocity columns of the candidate.
+CandidateContext<double> friction_record(const Eigen::VectorXd& u, double fc,
+                                         unsigned seed) {
+  ResidtraceModel<double> truth =
+      model(Eigen::Vector2d(1, 2), Eigen::VectorXd::Constant(1, 2));
+  StructureChannel<double> sv;
+  sv.kind = ChannelKind::kSignOutput;
+  sv.col = -1;
+  sv.B = Eigen::VectorXd::Constant(1, -2 * fc);
+  truth.channels.push_back(sv);
+  CandidateContext<double> ctx;
+  ctx.D.u = u;
+  ctx.D.ts = kTs;
+  ModelSimulation<double> sim;
+  EXPECT_TRUE(simulate_model<double>(truth, Eigen::MatrixXd(u), kTs, nullptr, 1,
+                                     nullptr, &sim)
+                  .ok());
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> e(0.0, 1e-3);
+  ctx.D.y = sim.y;
+  for (Eigen::Index k = 0; k < ctx.D.y.size(); ++k) ctx.D.y(k) += e(gen);
+  ctx.D.ysm = ctx.D.y;
+  const Eigen::Index N = ctx.D.y.size();
+  Eigen::VectorXd v0, v1;
+  EXPECT_TRUE(
+      zero_lag_velocity<double>(ctx.D.y.data(), N, kTs, 20, false, &v0).ok());
+  EXPECT_TRUE(
+      zero_lag_velocity<double>(ctx.D.y.data(), N, kTs, 20, true, &v1).ok());
+  ctx.D.vhat.resize(N, 2);
+  ctx.D.vhat << v0, v1;
+  ctx.fit.max_iterations = 20;
+  ctx.fit.substeps = 1;
+  ctx.wlo = 0.1;
+  return ctx;
+}
+
+TEST(ResidtraceCandidate, CoulombRecoversTheFrictionLevel) {
+  // a multilevel input (random levels of magnitude 0.5 to 1, above the
+  // friction, held 40 samples): the velocity reverses, stays away from
+  // rest, and its sign is not decided by the input alone
+  const int N = 3000;
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> level(-1.0, 1.0);
+  Eigen::VectorXd u(N);
+  for (int k = 0; k < N; ++k) {
+    const double r = level(gen);
+    u(k) =
+        k % 40 == 0 ? (r < 0 ? -1 : 1) * (0.5 + 0.5 * std::abs(r)) : u(k - 1);
+  }
+  const CandidateContext<double> ctx = friction_record(u, 0.3, 12);
+  const ResidtraceModel<double> cur = fitted_model(
+      model(Eigen::Vector2d(1, 1), Eigen::VectorXd::Constant(1, 1)), ctx);
+  Candidate<double> c;
+  ASSERT_TRUE(coulomb_candidate<double>(cur, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable) << c.reason;
+  EXPECT_EQ(c.variant.substr(0, 7), "sign(y)");
+  EXPECT_EQ(c.model.channels.back().kind, ChannelKind::kSignOutput);
+  const EvidenceField<double>& phys = c.evidence.fields[3];
+  ASSERT_EQ(phys.name, "physical");
+  EXPECT_NEAR(phys.value(0), 0.3, 0.045);  // 15 %: v near 0 is noise
+  EXPECT_EQ(c.evidence.text.substr(0, 14), "Coulomb level ");
+  // the model has it now: not applicable
+  const ResidtraceModel<double> with_friction = c.model;
+  ASSERT_TRUE(coulomb_candidate<double>(with_friction, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+  EXPECT_EQ(c.reason, "the model has Coulomb friction already");
+}
+
+TEST(ResidtraceCandidate, CoulombNeedsReversalsAndAnInputThatDoesNotDecide) {
+  const int N = 1500;
+  // a positive input: the velocity never reverses
+  Eigen::VectorXd u = Eigen::VectorXd::Constant(N, 1.0);
+  for (int k = 0; k < N; ++k) u(k) += 0.5 * ((k / 50) % 2);
+  CandidateContext<double> ctx = friction_record(u, 0.3, 13);
+  const ResidtraceModel<double> cur =
+      model(Eigen::Vector2d(1, 2), Eigen::VectorXd::Constant(1, 2));
+  Candidate<double> c;
+  ASSERT_TRUE(coulomb_candidate<double>(cur, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+  EXPECT_EQ(c.reason, "the velocity never changes sign");
+  // a two-level input of +-1, switching every 20 s, decides the direction
+  // of a velocity that settles in 2 s
+  for (int k = 0; k < N; ++k) u(k) = (k / 400) % 2 ? 1.0 : -1.0;
+  ctx = friction_record(u, 0.3, 14);
+  ASSERT_TRUE(coulomb_candidate<double>(cur, ctx, &c).ok());
+  EXPECT_FALSE(c.applicable);
+  EXPECT_NE(c.reason.find("not identifiable from these data"),
+            std::string::npos)
+      << c.reason;
+  EXPECT_NE(c.reason.find("a two-level input"), std::string::npos);
 }
 
 }  // namespace
