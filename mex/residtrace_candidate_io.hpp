@@ -10,7 +10,8 @@
 //                                the options maxiter, keep_order,
 //                                substeps (absent: 1), wlo, lam_v,
 //                                vel_is_y (octave/private/
-//                                residtrace_fitopts.m makes them of ctx)
+//                                residtrace_fitopts.m makes them of ctx);
+//                                for the sinusoid validation_samples
 //   read_starts(g, a)            a cell of initial denominators
 //   write_model_struct(base, m, names)
 //                                the struct of a model fitted from a
@@ -22,7 +23,8 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous") of the current model cur.
+//     the candidate effect ("offset", "viscous", "sinusoid") of the current
+//     model cur (its estimation residual e_est read when present).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -39,6 +41,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_sinusoid.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -142,6 +145,8 @@ inline residtrace::CandidateContext<double> read_context(const Gateway& g,
   c.wlo = opt.scalar("wlo", c.wlo);
   c.lam_v = opt.scalar("lam_v", c.lam_v);
   c.vel_is_y = opt.flag("vel_is_y", false);
+  // sinusoid
+  c.validation_samples = opt.integer("validation_samples", 0);
   return c;
 }
 
@@ -343,7 +348,11 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   }
   if (nlhs > 1) g.fail("badInput", "candidate has one output");
   const std::string effect = g.text(prhs[2], "the effect");
-  const auto cur = read_model(g, prhs[3]);
+  auto cur = read_model(g, prhs[3]);
+  // the current model's estimation residual (the candidates that read it)
+  const mxArray* e_est = field(prhs[3], "e_est");
+  if (!empty(e_est)) cur.estimate.e = values(g, e_est, "model.e_est");
+  cur.estimate.ok = number(g, field(prhs[3], "ok"), "model.ok", 1) != 0;
   if (cur.has_phys) {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
@@ -357,6 +366,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   } else if (effect == "viscous") {
     if (cur.fixed.empty()) g.fail("badInput", "the model has no order");
     g.check(residtrace::viscous_candidate<double>(cur, ctx, &c));
+  } else if (effect == "sinusoid") {
+    g.check(residtrace::sinusoid_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

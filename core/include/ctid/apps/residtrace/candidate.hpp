@@ -61,6 +61,9 @@ struct CandidateContext {
   S wlo = std::numeric_limits<S>::quiet_NaN();
   S lam_v = std::numeric_limits<S>::quiet_NaN();
   bool vel_is_y = false;
+  // sinusoid_candidate (candidate_sinusoid.hpp): the number of samples of
+  // the validation record
+  Eigen::Index validation_samples = 0;
 };
 
 // A named field of a candidate's evidence: a number (or a row of them) or
