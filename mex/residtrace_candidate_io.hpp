@@ -11,7 +11,8 @@
 //                                substeps (absent: 1), wlo, lam_v,
 //                                vel_is_y (octave/private/
 //                                residtrace_fitopts.m makes them of ctx);
-//                                for the sinusoid validation_samples
+//                                for the sinusoid validation_samples;
+//                                for the delay maxdelay, maxlag
 //   read_starts(g, a)            a cell of initial denominators
 //   write_model_struct(base, m, names)
 //                                the struct of a model fitted from a
@@ -23,8 +24,8 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous", "sinusoid") of the current
-//     model cur (its estimation residual e_est read when present).
+//     the candidate effect ("offset", "viscous", "sinusoid", "delay") of the
+//     current model cur (its estimation residual e_est read when present).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -41,6 +42,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_delay.hpp"
 #include "ctid/apps/residtrace/candidate_sinusoid.hpp"
 #include "residtrace_model_io.hpp"
 
@@ -147,6 +149,9 @@ inline residtrace::CandidateContext<double> read_context(const Gateway& g,
   c.vel_is_y = opt.flag("vel_is_y", false);
   // sinusoid
   c.validation_samples = opt.integer("validation_samples", 0);
+  // delay
+  c.max_delay = opt.integer("maxdelay", 0);
+  c.max_lag = opt.integer("maxlag", 25);
   return c;
 }
 
@@ -264,6 +269,24 @@ inline mxArray* write_model_struct(const mxArray* base,
     }
     set(t, 0, "channels", c);
   }
+  // the delays of base's channels (whole samples nk, the fraction of an
+  // input channel in param), when the template changed them
+  for (std::size_t j = 0; j < nc0 && j < m.channels.size(); ++j) {
+    const residtrace::StructureChannel<double>& k = m.channels[j];
+    const mxArray* nk = mxGetField(ch, j, "nk");
+    const double nk0 = nk != nullptr && mxIsDouble(nk) && !mxIsEmpty(nk)
+                           ? mxGetScalar(nk)
+                           : 0.0;
+    if (nk0 != k.nk)
+      set(mxGetField(t, 0, "channels"), j, "nk", mxCreateDoubleScalar(k.nk));
+    if (k.kind != residtrace::ChannelKind::kInput) continue;
+    const mxArray* p = mxGetField(ch, j, "param");
+    const double p0 =
+        p != nullptr && mxIsDouble(p) && !mxIsEmpty(p) ? mxGetScalar(p) : 0.0;
+    if (p0 != k.param)
+      set(mxGetField(t, 0, "channels"), j, "param",
+          mxCreateDoubleScalar(k.param));
+  }
   const mxArray* out = mxGetField(t, 0, "out");
   const std::size_t no0 =
       out != nullptr && mxIsStruct(out) ? mxGetNumberOfElements(out) : 0;
@@ -358,8 +381,14 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
            "a physical realisation holds no " + effect + " candidate");
   }
   OptionsReader opt(g, prhs[5]);
-  const auto ctx = read_context(g, prhs[4], opt);
+  auto ctx = read_context(g, prhs[4], opt);
   opt.finish();
+  const mxArray* ch = field(prhs[3], "channels");
+  for (mwIndex j = 0; j < mxGetNumberOfElements(ch); ++j) {
+    const mxArray* name = field(ch, "name", j);
+    ctx.channel_names.push_back(empty(name) ? std::string()
+                                            : word(g, name, "channel name"));
+  }
   residtrace::Candidate<double> c;
   if (effect == "offset") {
     g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
@@ -368,6 +397,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.check(residtrace::viscous_candidate<double>(cur, ctx, &c));
   } else if (effect == "sinusoid") {
     g.check(residtrace::sinusoid_candidate<double>(cur, ctx, &c));
+  } else if (effect == "delay") {
+    g.check(residtrace::delay_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

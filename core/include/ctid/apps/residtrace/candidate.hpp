@@ -64,6 +64,12 @@ struct CandidateContext {
   // sinusoid_candidate (candidate_sinusoid.hpp): the number of samples of
   // the validation record
   Eigen::Index validation_samples = 0;
+  // delay_candidate (candidate_delay.hpp): the largest delay tried
+  // (samples), the largest lag of the whiteness test, the names of the
+  // current model's channels
+  int max_delay = 0;
+  int max_lag = 25;
+  std::vector<std::string> channel_names;
 };
 
 // A named field of a candidate's evidence: a number (or a row of them) or
