@@ -12,7 +12,8 @@
 //                                vel_is_y (octave/private/
 //                                residtrace_fitopts.m makes them of ctx);
 //                                for the sinusoid validation_samples;
-//                                for the delay maxdelay, maxlag
+//                                for the delay maxdelay, maxlag; for the
+//                                initial state validation_continues
 //   read_starts(g, a)            a cell of initial denominators
 //   write_model_struct(base, m, names)
 //                                the struct of a model fitted from a
@@ -24,8 +25,9 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous", "sinusoid", "delay") of the
-//     current model cur (its estimation residual e_est read when present).
+//     the candidate effect ("offset", "viscous", "sinusoid", "delay",
+//     "initial_state") of the current model
+//     cur (its estimation residual e_est read when present).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -44,6 +46,7 @@
 #include "ctid/apps/residtrace/candidate.hpp"
 #include "ctid/apps/residtrace/candidate_delay.hpp"
 #include "ctid/apps/residtrace/candidate_sinusoid.hpp"
+#include "ctid/apps/residtrace/candidate_x0.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -152,6 +155,8 @@ inline residtrace::CandidateContext<double> read_context(const Gateway& g,
   // delay
   c.max_delay = opt.integer("maxdelay", 0);
   c.max_lag = opt.integer("maxlag", 25);
+  // initial state
+  c.validation_continues = opt.flag("validation_continues", false);
   return c;
 }
 
@@ -227,12 +232,12 @@ inline mxArray* extended(const mxArray* a, std::size_t n,
 // struct base by channels (named names) and output terms: a copy of base
 // with the template's F, fixed (of base's class), channels and output
 // terms, and the estimate (write_model); a Hammerstein nonlinearity of
-// base (field nlin) is dropped, being stale.
+// base (field nlin) is dropped from a fitted model, being stale.
 inline mxArray* write_model_struct(const mxArray* base,
                                    const residtrace::ResidtraceModel<double>& m,
                                    const std::vector<std::string>& names) {
   mxArray* t = mxDuplicateArray(base);
-  if (mxGetFieldNumber(t, "nlin") >= 0)
+  if (m.estimate.set && mxGetFieldNumber(t, "nlin") >= 0)
     mxRemoveField(t, mxGetFieldNumber(t, "nlin"));
   const mxArray* f0 = mxGetField(t, 0, "fixed");
   if (f0 != nullptr && mxGetNumberOfElements(f0) == m.fixed.size()) {
@@ -270,7 +275,8 @@ inline mxArray* write_model_struct(const mxArray* base,
     set(t, 0, "channels", c);
   }
   // the delays of base's channels (whole samples nk, the fraction of an
-  // input channel in param), when the template changed them
+  // input channel in param) and the initial state, when the template
+  // changed them
   for (std::size_t j = 0; j < nc0 && j < m.channels.size(); ++j) {
     const residtrace::StructureChannel<double>& k = m.channels[j];
     const mxArray* nk = mxGetField(ch, j, "nk");
@@ -287,6 +293,9 @@ inline mxArray* write_model_struct(const mxArray* base,
       set(mxGetField(t, 0, "channels"), j, "param",
           mxCreateDoubleScalar(k.param));
   }
+  const mxArray* x0 = mxGetField(t, 0, "x0");
+  const bool x00 = x0 != nullptr && !mxIsEmpty(x0) && mxGetScalar(x0) != 0;
+  if (m.x0 != x00) set(t, 0, "x0", mxCreateLogicalScalar(m.x0));
   const mxArray* out = mxGetField(t, 0, "out");
   const std::size_t no0 =
       out != nullptr && mxIsStruct(out) ? mxGetNumberOfElements(out) : 0;
@@ -376,7 +385,9 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   const mxArray* e_est = field(prhs[3], "e_est");
   if (!empty(e_est)) cur.estimate.e = values(g, e_est, "model.e_est");
   cur.estimate.ok = number(g, field(prhs[3], "ok"), "model.ok", 1) != 0;
-  if (cur.has_phys) {
+  // (the initial state extends a physical realisation as it does a
+  // linear model: it is not fitted with it)
+  if (cur.has_phys && effect != "initial_state") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
@@ -399,6 +410,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.check(residtrace::sinusoid_candidate<double>(cur, ctx, &c));
   } else if (effect == "delay") {
     g.check(residtrace::delay_candidate<double>(cur, ctx, &c));
+  } else if (effect == "initial_state") {
+    g.check(residtrace::x0_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

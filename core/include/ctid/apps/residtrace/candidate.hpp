@@ -70,6 +70,9 @@ struct CandidateContext {
   int max_delay = 0;
   int max_lag = 25;
   std::vector<std::string> channel_names;
+  // x0_candidate (candidate_x0.hpp): the validation record continues the
+  // estimation record (its initial state comes from the simulation)
+  bool validation_continues = false;
 };
 
 // A named field of a candidate's evidence: a number (or a row of them) or
