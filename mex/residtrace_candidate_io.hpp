@@ -26,8 +26,8 @@
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
 //     the candidate effect ("offset", "viscous", "sinusoid", "delay",
-//     "initial_state") of the current model
-//     cur (its estimation residual e_est read when present).
+//     "initial_state", "colored_noise") of the current model cur (its
+//     estimation residual e_est read when present).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_colored.hpp"
 #include "ctid/apps/residtrace/candidate_delay.hpp"
 #include "ctid/apps/residtrace/candidate_sinusoid.hpp"
 #include "ctid/apps/residtrace/candidate_x0.hpp"
@@ -275,8 +276,8 @@ inline mxArray* write_model_struct(const mxArray* base,
     set(t, 0, "channels", c);
   }
   // the delays of base's channels (whole samples nk, the fraction of an
-  // input channel in param) and the initial state, when the template
-  // changed them
+  // input channel in param), the initial state and the noise model, when
+  // the template changed them
   for (std::size_t j = 0; j < nc0 && j < m.channels.size(); ++j) {
     const residtrace::StructureChannel<double>& k = m.channels[j];
     const mxArray* nk = mxGetField(ch, j, "nk");
@@ -296,6 +297,12 @@ inline mxArray* write_model_struct(const mxArray* base,
   const mxArray* x0 = mxGetField(t, 0, "x0");
   const bool x00 = x0 != nullptr && !mxIsEmpty(x0) && mxGetScalar(x0) != 0;
   if (m.x0 != x00) set(t, 0, "x0", mxCreateLogicalScalar(m.x0));
+  const mxArray* A = mxGetField(t, 0, "noise");
+  if (m.noise.size() > 0 &&
+      (A == nullptr ||
+       mxGetNumberOfElements(A) != static_cast<std::size_t>(m.noise.size()))) {
+    set(t, 0, "noise", row(m.noise));
+  }
   const mxArray* out = mxGetField(t, 0, "out");
   const std::size_t no0 =
       out != nullptr && mxIsStruct(out) ? mxGetNumberOfElements(out) : 0;
@@ -323,10 +330,19 @@ inline mxArray* write_evidence(const residtrace::Evidence<double>& e) {
   }
   mxArray* s = mxCreateStructMatrix(1, 1, 0, nullptr);
   for (const residtrace::EvidenceField<double>& f : e.fields) {
-    set(s, 0, f.name.c_str(),
-        f.is_text ? mxCreateString(f.text.c_str())
-                  : (f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0))
-                                         : row(f.value)));
+    mxArray* v = nullptr;
+    if (f.is_text) {
+      v = mxCreateString(f.text.c_str());
+    } else if (f.imag.size() == f.value.size() && f.imag.size() > 0) {
+      v = mxCreateDoubleMatrix(1, f.value.size(), mxCOMPLEX);
+      for (Eigen::Index i = 0; i < f.value.size(); ++i) {
+        mxGetPr(v)[i] = f.value(i);
+        mxGetPi(v)[i] = f.imag(i);
+      }
+    } else {
+      v = f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0)) : row(f.value);
+    }
+    set(s, 0, f.name.c_str(), v);
   }
   return s;
 }
@@ -385,9 +401,9 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   const mxArray* e_est = field(prhs[3], "e_est");
   if (!empty(e_est)) cur.estimate.e = values(g, e_est, "model.e_est");
   cur.estimate.ok = number(g, field(prhs[3], "ok"), "model.ok", 1) != 0;
-  // (the initial state extends a physical realisation as it does a
-  // linear model: it is not fitted with it)
-  if (cur.has_phys && effect != "initial_state") {
+  // (the initial state and the noise model extend a physical
+  // realisation as they do a linear model: neither is fitted with it)
+  if (cur.has_phys && effect != "initial_state" && effect != "colored_noise") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
@@ -412,6 +428,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.check(residtrace::delay_candidate<double>(cur, ctx, &c));
   } else if (effect == "initial_state") {
     g.check(residtrace::x0_candidate<double>(cur, ctx, &c));
+  } else if (effect == "colored_noise") {
+    g.check(residtrace::colored_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

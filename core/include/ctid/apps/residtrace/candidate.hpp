@@ -83,6 +83,7 @@ struct EvidenceField {
   bool is_text = false;
   std::string text;
   Vector<S> value;
+  Vector<S> imag;  // the imaginary parts of a complex value; empty: real
 };
 
 template <typename S>
