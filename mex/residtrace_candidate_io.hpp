@@ -254,6 +254,25 @@ inline mxArray* write_model_struct(const mxArray* base,
   }
   const mxArray* ch = mxGetField(t, 0, "channels");
   const std::size_t nc0 = ch != nullptr ? mxGetNumberOfElements(ch) : 0;
+  // the delays of base's channels (whole samples nk, the fraction of an
+  // input channel in param), when the template changed them (before the
+  // channels array is replaced by an extended one below)
+  for (std::size_t j = 0; j < nc0 && j < m.channels.size(); ++j) {
+    const residtrace::StructureChannel<double>& k = m.channels[j];
+    const mxArray* nk = mxGetField(ch, j, "nk");
+    const double nk0 = nk != nullptr && mxIsDouble(nk) && !mxIsEmpty(nk)
+                           ? mxGetScalar(nk)
+                           : 0.0;
+    if (nk0 != k.nk)
+      set(mxGetField(t, 0, "channels"), j, "nk", mxCreateDoubleScalar(k.nk));
+    if (k.kind != residtrace::ChannelKind::kInput) continue;
+    const mxArray* p = mxGetField(ch, j, "param");
+    const double p0 =
+        p != nullptr && mxIsDouble(p) && !mxIsEmpty(p) ? mxGetScalar(p) : 0.0;
+    if (p0 != k.param)
+      set(mxGetField(t, 0, "channels"), j, "param",
+          mxCreateDoubleScalar(k.param));
+  }
   if (m.channels.size() > nc0) {
     mxArray* c = extended(ch, m.channels.size(),
                           {"name", "type", "col", "param", "nb", "nk", "B"});
@@ -275,25 +294,7 @@ inline mxArray* write_model_struct(const mxArray* base,
     }
     set(t, 0, "channels", c);
   }
-  // the delays of base's channels (whole samples nk, the fraction of an
-  // input channel in param), the initial state and the noise model, when
-  // the template changed them
-  for (std::size_t j = 0; j < nc0 && j < m.channels.size(); ++j) {
-    const residtrace::StructureChannel<double>& k = m.channels[j];
-    const mxArray* nk = mxGetField(ch, j, "nk");
-    const double nk0 = nk != nullptr && mxIsDouble(nk) && !mxIsEmpty(nk)
-                           ? mxGetScalar(nk)
-                           : 0.0;
-    if (nk0 != k.nk)
-      set(mxGetField(t, 0, "channels"), j, "nk", mxCreateDoubleScalar(k.nk));
-    if (k.kind != residtrace::ChannelKind::kInput) continue;
-    const mxArray* p = mxGetField(ch, j, "param");
-    const double p0 =
-        p != nullptr && mxIsDouble(p) && !mxIsEmpty(p) ? mxGetScalar(p) : 0.0;
-    if (p0 != k.param)
-      set(mxGetField(t, 0, "channels"), j, "param",
-          mxCreateDoubleScalar(k.param));
-  }
+  // the initial state and the noise model, when the template changed them
   const mxArray* x0 = mxGetField(t, 0, "x0");
   const bool x00 = x0 != nullptr && !mxIsEmpty(x0) && mxGetScalar(x0) != 0;
   if (m.x0 != x00) set(t, 0, "x0", mxCreateLogicalScalar(m.x0));
