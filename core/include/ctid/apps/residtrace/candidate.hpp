@@ -35,6 +35,9 @@
 //     joins the filtered regression. Evidence: the fitted coefficient with
 //     its standard deviation and, for a numerator b0 alone, the viscous
 //     coefficient f / b0 in input units per unit velocity.
+//
+// Other candidates have a header of their own: candidate_sinusoid.hpp,
+// candidate_delay.hpp, candidate_x0.hpp, candidate_colored.hpp.
 #pragma once
 
 #include <algorithm>

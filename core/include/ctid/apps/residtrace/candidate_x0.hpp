@@ -72,7 +72,9 @@ Status x0_candidate(const ResidtraceModel<S>& cur,
         "record");
   }
   const Eigen::Index n = cur.F.size() - 1;
-  if (n < 1 || cur.F(0) == 0) return bad_input("F must have order >= 1");
+  if (n < 1 || cur.F(0) == 0) {
+    return bad_input("F must have order >= 1 and a leading coefficient != 0");
+  }
   Matrix<S> X;
   Status s =
       free_responses<S>(Vector<S>(cur.F.tail(n) / cur.F(0)), ctx.D.ts, N, X);
