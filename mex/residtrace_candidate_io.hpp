@@ -10,7 +10,10 @@
 //                                the options maxiter, keep_order,
 //                                substeps (absent: 1), wlo, lam_v,
 //                                vel_is_y (octave/private/
-//                                residtrace_fitopts.m makes them of ctx)
+//                                residtrace_fitopts.m makes them of ctx);
+//                                for the sinusoid validation_samples;
+//                                for the delay maxdelay, maxlag; for the
+//                                initial state validation_continues
 //   read_starts(g, a)            a cell of initial denominators
 //   write_model_struct(base, m, names)
 //                                the struct of a model fitted from a
@@ -22,8 +25,9 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous", "order", "coulomb") of
-//     the current model cur.
+//     the candidate effect ("offset", "viscous", "order", "coulomb",
+//     "sinusoid", "delay", "initial_state", "colored_noise") of the current
+//     model cur (its estimation residual e_est read when present).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -40,8 +44,12 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_colored.hpp"
 #include "ctid/apps/residtrace/candidate_coulomb.hpp"
+#include "ctid/apps/residtrace/candidate_delay.hpp"
 #include "ctid/apps/residtrace/candidate_order.hpp"
+#include "ctid/apps/residtrace/candidate_sinusoid.hpp"
+#include "ctid/apps/residtrace/candidate_x0.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -145,6 +153,13 @@ inline residtrace::CandidateContext<double> read_context(const Gateway& g,
   c.wlo = opt.scalar("wlo", c.wlo);
   c.lam_v = opt.scalar("lam_v", c.lam_v);
   c.vel_is_y = opt.flag("vel_is_y", false);
+  // sinusoid
+  c.validation_samples = opt.integer("validation_samples", 0);
+  // delay
+  c.max_delay = opt.integer("maxdelay", 0);
+  c.max_lag = opt.integer("maxlag", 25);
+  // initial state
+  c.validation_continues = opt.flag("validation_continues", false);
   return c;
 }
 
@@ -220,12 +235,12 @@ inline mxArray* extended(const mxArray* a, std::size_t n,
 // struct base by channels (named names) and output terms: a copy of base
 // with the template's F, fixed (of base's class), channels and output
 // terms, and the estimate (write_model); a Hammerstein nonlinearity of
-// base (field nlin) is dropped, being stale.
+// base (field nlin) is dropped from a fitted model, being stale.
 inline mxArray* write_model_struct(const mxArray* base,
                                    const residtrace::ResidtraceModel<double>& m,
                                    const std::vector<std::string>& names) {
   mxArray* t = mxDuplicateArray(base);
-  if (mxGetFieldNumber(t, "nlin") >= 0)
+  if (m.estimate.set && mxGetFieldNumber(t, "nlin") >= 0)
     mxRemoveField(t, mxGetFieldNumber(t, "nlin"));
   const mxArray* f0 = mxGetField(t, 0, "fixed");
   if (f0 != nullptr && mxGetNumberOfElements(f0) == m.fixed.size()) {
@@ -241,6 +256,25 @@ inline mxArray* write_model_struct(const mxArray* base,
   }
   const mxArray* ch = mxGetField(t, 0, "channels");
   const std::size_t nc0 = ch != nullptr ? mxGetNumberOfElements(ch) : 0;
+  // the delays of base's channels (whole samples nk, the fraction of an
+  // input channel in param), when the template changed them (before the
+  // channels array is replaced by an extended one below)
+  for (std::size_t j = 0; j < nc0 && j < m.channels.size(); ++j) {
+    const residtrace::StructureChannel<double>& k = m.channels[j];
+    const mxArray* nk = mxGetField(ch, j, "nk");
+    const double nk0 = nk != nullptr && mxIsDouble(nk) && !mxIsEmpty(nk)
+                           ? mxGetScalar(nk)
+                           : 0.0;
+    if (nk0 != k.nk)
+      set(mxGetField(t, 0, "channels"), j, "nk", mxCreateDoubleScalar(k.nk));
+    if (k.kind != residtrace::ChannelKind::kInput) continue;
+    const mxArray* p = mxGetField(ch, j, "param");
+    const double p0 =
+        p != nullptr && mxIsDouble(p) && !mxIsEmpty(p) ? mxGetScalar(p) : 0.0;
+    if (p0 != k.param)
+      set(mxGetField(t, 0, "channels"), j, "param",
+          mxCreateDoubleScalar(k.param));
+  }
   if (m.channels.size() > nc0) {
     mxArray* c = extended(ch, m.channels.size(),
                           {"name", "type", "col", "param", "nb", "nk", "B"});
@@ -262,6 +296,16 @@ inline mxArray* write_model_struct(const mxArray* base,
       set(c, j, "B", row(k.B));
     }
     set(t, 0, "channels", c);
+  }
+  // the initial state and the noise model, when the template changed them
+  const mxArray* x0 = mxGetField(t, 0, "x0");
+  const bool x00 = x0 != nullptr && !mxIsEmpty(x0) && mxGetScalar(x0) != 0;
+  if (m.x0 != x00) set(t, 0, "x0", mxCreateLogicalScalar(m.x0));
+  const mxArray* A = mxGetField(t, 0, "noise");
+  if (m.noise.size() > 0 &&
+      (A == nullptr ||
+       mxGetNumberOfElements(A) != static_cast<std::size_t>(m.noise.size()))) {
+    set(t, 0, "noise", row(m.noise));
   }
   const mxArray* out = mxGetField(t, 0, "out");
   const std::size_t no0 =
@@ -300,6 +344,12 @@ inline mxArray* write_evidence(const residtrace::Evidence<double>& e) {
       std::copy(f.value.data(), f.value.data() + f.value.size(), mxGetPr(v));
       if (complex) {
         std::copy(f.imag.data(), f.imag.data() + f.imag.size(), mxGetPi(v));
+      }
+    } else if (f.imag.size() == f.value.size() && f.imag.size() > 0) {
+      v = mxCreateDoubleMatrix(1, f.value.size(), mxCOMPLEX);
+      for (Eigen::Index i = 0; i < f.value.size(); ++i) {
+        mxGetPr(v)[i] = f.value(i);
+        mxGetPi(v)[i] = f.imag(i);
       }
     } else {
       v = f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0)) : row(f.value);
@@ -358,14 +408,24 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   }
   if (nlhs > 1) g.fail("badInput", "candidate has one output");
   const std::string effect = g.text(prhs[2], "the effect");
-  const auto cur = read_model(g, prhs[3]);
-  if (cur.has_phys) {
+  auto cur = read_model(g, prhs[3]);
+  // the current model's estimation residual (the candidates that read it)
+  cur.estimate.ok = number(g, field(prhs[3], "ok"), "model.ok", 1) != 0;
+  // (the initial state and the noise model extend a physical
+  // realisation as they do a linear model: neither is fitted with it)
+  if (cur.has_phys && effect != "initial_state" && effect != "colored_noise") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
   OptionsReader opt(g, prhs[5]);
-  const auto ctx = read_context(g, prhs[4], opt);
+  auto ctx = read_context(g, prhs[4], opt);
   opt.finish();
+  const mxArray* ch = field(prhs[3], "channels");
+  for (mwIndex j = 0; j < mxGetNumberOfElements(ch); ++j) {
+    const mxArray* name = field(ch, "name", j);
+    ctx.channel_names.push_back(empty(name) ? std::string()
+                                            : word(g, name, "channel name"));
+  }
   residtrace::Candidate<double> c;
   if (effect == "offset") {
     g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
@@ -376,6 +436,14 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.check(residtrace::order_candidate<double>(cur, ctx, &c));
   } else if (effect == "coulomb") {
     g.check(residtrace::coulomb_candidate<double>(cur, ctx, &c));
+  } else if (effect == "sinusoid") {
+    g.check(residtrace::sinusoid_candidate<double>(cur, ctx, &c));
+  } else if (effect == "delay") {
+    g.check(residtrace::delay_candidate<double>(cur, ctx, &c));
+  } else if (effect == "initial_state") {
+    g.check(residtrace::x0_candidate<double>(cur, ctx, &c));
+  } else if (effect == "colored_noise") {
+    g.check(residtrace::colored_candidate<double>(cur, ctx, &c));
   } else {
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }

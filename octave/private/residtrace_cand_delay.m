@@ -22,9 +22,29 @@
 ## candidate on the same footing. Evidence: the chosen delay (samples and
 ## seconds) and the lag at which the prewhitened cross-correlation of the
 ## current residual with the input peaks.
+## The candidate is fitted in the core
+## (core/include/ctid/apps/residtrace/candidate_delay.hpp, delay_candidate,
+## through @code{effect_sim_mex}, method "candidate"), except for a
+## physical realisation (its fit, @code{residtrace_physfit}, is not a
+## function of the core yet): its whole delays are searched here, without
+## the fraction.
 ## @end deftypefn
 
 function c = residtrace_cand_delay (cur, ctx)
+  if (isfield (cur, "phys") && ! isempty (cur.phys))
+    c = physical_delay (cur, ctx);
+    return;
+  endif
+  o = residtrace_fitopts (ctx);
+  o.maxdelay = ctx.opts.maxdelay;
+  o.maxlag = ctx.opts.maxlag;
+  c = effect_sim_mex ("residtrace", "candidate", "delay", cur, ctx.D, o);
+endfunction
+
+## The delay of a physical realisation: each whole delay fitted by
+## residtrace_fit (the realisation's own fit), as in the core's
+## delay_candidate without the fraction of a sample.
+function c = physical_delay (cur, ctx)
   c = residtrace_cand ("delay");
   D = ctx.opts.maxdelay;
   cols = find (strcmp ({cur.channels.type}, "input"));
@@ -67,9 +87,6 @@ function c = residtrace_cand_delay (cur, ctx)
     c.failed = true;
     return;
   endif
-  if (isempty (ctx.D.loop) && ! (isfield (cur, "phys") && ! isempty (cur.phys)))
-    best = refine_fraction (best, bj, cur, ctx);
-  endif
   c.applicable = true;
   c.model = best;
   nk = best.channels(bj).nk + frac (best.channels(bj));
@@ -102,57 +119,5 @@ function f = frac (ch)
   f = 0;
   if (! isempty (ch.param) && isnumeric (ch.param))
     f = ch.param;
-  endif
-endfunction
-
-## The delay of channel j of BEST (whole samples) refined continuously
-## between nk - 1 and nk + 1 (not below the current model's delay): a
-## golden-section search of the BIC, each delay fitted with three SRIVC
-## iterations from BEST; the best delay is iterated to convergence and
-## kept when its BIC is lower than BEST's by more than log N.
-function best = refine_fraction (best, j, cur, ctx)
-  nk = best.channels(j).nk;
-  d0 = cur.channels(j).nk + frac (cur.channels(j));
-  lo = max (nk - 1, d0 + 0.05); hi = nk + 1;
-  if (! (hi > lo))
-    return;
-  endif
-  quick = ctx;
-  quick.maxiter = max (1, min (3, floor (ctx.maxiter / 3)));
-  fit = @(d, c) fit_delay (d, best, j, c);
-  g = (sqrt (5) - 1) / 2;
-  x1 = hi - g * (hi - lo); x2 = lo + g * (hi - lo);
-  b1 = fit (x1, quick).bic; b2 = fit (x2, quick).bic;
-  for it = 1:7
-    if (b1 < b2)
-      hi = x2; x2 = x1; b2 = b1;
-      x1 = hi - g * (hi - lo); b1 = fit (x1, quick).bic;
-    else
-      lo = x1; x1 = x2; b1 = b2;
-      x2 = lo + g * (hi - lo); b2 = fit (x2, quick).bic;
-    endif
-  endfor
-  d = ifelse_ (b1 < b2, x1, x2);
-  m = fit (d, ctx);
-  if (m.ok && m.bic < best.bic - log (numel (ctx.D.y)))
-    best = m;
-  endif
-endfunction
-
-function m = fit_delay (d, tmpl, j, ctx)
-  t = tmpl;
-  t.channels(j).nk = floor (d);
-  t.channels(j).param = d - floor (d);
-  m = residtrace_fit (t, ctx.D, ctx, {tmpl.F});
-  if (! m.ok)
-    m.bic = Inf;
-  endif
-endfunction
-
-function v = ifelse_ (c, a, b)
-  if (c)
-    v = a;
-  else
-    v = b;
   endif
 endfunction

@@ -14,38 +14,14 @@
 ## starts where the simulation of the estimation part left it) or a
 ## closed loop. Evidence: the share of the estimation residual's mean
 ## square the free response removes, and the estimated x0.
+## The candidate is fitted in the core
+## (core/include/ctid/apps/residtrace/candidate_x0.hpp, x0_candidate,
+## through @code{effect_sim_mex}, method "candidate").
 ## @end deftypefn
 
 function c = residtrace_cand_x0 (cur, ctx)
-  c = residtrace_cand ("initial_state");
-  if (cur.x0)
-    c.reason = "the initial state is estimated already";
-    return;
-  endif
-  if (! isempty (ctx.V.pre))
-    c.reason = ["the validation record continues the estimation record: ", ...
-                "its initial state comes from the simulation"];
-    return;
-  endif
-  if (! isempty (ctx.D.loop))
-    c.reason = "not in closed loop";
-    return;
-  endif
-  n = numel (cur.F) - 1;
-  X = residtrace_free (cur.F, numel (ctx.D.y), ctx.D.Ts);
-  e = cur.e_est;
-  x0 = X \ e;
-  share = 1 - sum ((e - X * x0) .^ 2) / sum (e .^ 2);
-  c.applicable = true;
-  c.model = cur;
-  c.model.x0 = true;
-  c.insample = true;
-  c.variant = sprintf ("x0 of %d states fitted on each record", n);
-  c.nadd = n;
-  c.evidence = struct ("term", "x0 (observable form)", "value", x0(:).',
-                       "std", NaN, "share_estimation", share,
-                       "text", sprintf (["the free response from x0 = %s ", ...
-                                         "removes %.1f %% of the ", ...
-                                         "estimation residual"],
-                                        mat2str (x0(:).', 3), 100 * share));
+  o = residtrace_fitopts (ctx);
+  o.validation_continues = ! isempty (ctx.V.pre);
+  c = effect_sim_mex ("residtrace", "candidate", "initial_state", cur, ctx.D,
+                     o);
 endfunction

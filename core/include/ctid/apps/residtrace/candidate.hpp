@@ -35,6 +35,9 @@
 //     joins the filtered regression. Evidence: the fitted coefficient with
 //     its standard deviation and, for a numerator b0 alone, the viscous
 //     coefficient f / b0 in input units per unit velocity.
+//
+// Other candidates have a header of their own: candidate_sinusoid.hpp,
+// candidate_delay.hpp, candidate_x0.hpp, candidate_colored.hpp.
 #pragma once
 
 #include <algorithm>
@@ -62,6 +65,18 @@ struct CandidateContext {
   S wlo = std::numeric_limits<S>::quiet_NaN();
   S lam_v = std::numeric_limits<S>::quiet_NaN();
   bool vel_is_y = false;
+  // sinusoid_candidate (candidate_sinusoid.hpp): the number of samples of
+  // the validation record
+  Eigen::Index validation_samples = 0;
+  // delay_candidate (candidate_delay.hpp): the largest delay tried
+  // (samples), the largest lag of the whiteness test, the names of the
+  // current model's channels
+  int max_delay = 0;
+  int max_lag = 25;
+  std::vector<std::string> channel_names;
+  // x0_candidate (candidate_x0.hpp): the validation record continues the
+  // estimation record (its initial state comes from the simulation)
+  bool validation_continues = false;
 };
 
 // A named field of a candidate's evidence: a number (or a row of them), a
@@ -72,8 +87,8 @@ struct EvidenceField {
   bool is_text = false;
   std::string text;
   Vector<S> value;
+  Vector<S> imag;  // the imaginary parts of a complex value; empty: real
   bool roots = false;  // value and imag: a column of roots
-  Vector<S> imag;
 };
 
 template <typename S>
