@@ -22,7 +22,11 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous") of the current model cur.
+//     the candidate effect ("offset", "viscous", "state_nonlinearity") of
+//     the current model cur; for
+//     "state_nonlinearity" options.cascade is the two-section cascade with
+//     square-root outflows fitted already (octave/private/
+//     residtrace_physfit.m; absent or []: none).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -39,6 +43,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_state.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -335,6 +340,30 @@ inline mxArray* write_candidate(const mxArray* cur,
   return s;
 }
 
+// A template struct without the selection's own fields.
+inline mxArray* bare_template(const mxArray* s) {
+  mxArray* t = mxDuplicateArray(s);
+  for (const char* f : {"order_floor_", "fitted"}) {
+    if (mxGetFieldNumber(t, f) >= 0) mxRemoveField(t, mxGetFieldNumber(t, f));
+  }
+  return t;
+}
+
+// A model fitted already (by an estimator of its own): its structure and
+// the estimate's ok, bic, s2 and np.
+inline residtrace::ResidtraceModel<double> read_fitted(const Gateway& g,
+                                                       const mxArray* s) {
+  mxArray* bare = bare_template(s);
+  residtrace::ResidtraceModel<double> m = read_model(g, bare);
+  mxDestroyArray(bare);
+  residtrace::ModelEstimate<double>& e = m.estimate;
+  e.ok = number(g, field(s, "ok"), "a fitted model's ok", 0) != 0;
+  e.bic = number(g, field(s, "bic"), "a fitted model's bic", NAN);
+  e.s2 = number(g, field(s, "s2"), "a fitted model's s2", NAN);
+  e.np = count(g, field(s, "np"), "a fitted model's np", 0);
+  return m;
+}
+
 inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
                              int nrhs, const mxArray* prhs[]) {
   if (nrhs != 6) {
@@ -343,16 +372,39 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   }
   if (nlhs > 1) g.fail("badInput", "candidate has one output");
   const std::string effect = g.text(prhs[2], "the effect");
-  const auto cur = read_model(g, prhs[3]);
-  if (cur.has_phys) {
+  auto cur = read_model(g, prhs[3]);
+  if (effect == "state_nonlinearity") {
+    // (its number of added parameters is counted from the model's)
+    const mxArray* np = field(prhs[3], "np");
+    if (empty(np)) g.fail("badInput", "the model has no field np");
+    cur.estimate.np = count(g, np, "model.np", 0);
+  }
+  // (the state-nonlinearity candidate reports a realisation itself)
+  if (cur.has_phys && effect != "state_nonlinearity") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
   OptionsReader opt(g, prhs[5]);
   const auto ctx = read_context(g, prhs[4], opt);
+  const mxArray* cascade_struct = opt.field("cascade");
   opt.finish();
   residtrace::Candidate<double> c;
-  if (effect == "offset") {
+  if (effect == "state_nonlinearity") {
+    const bool has = !empty(cascade_struct);
+    residtrace::ResidtraceModel<double> cascade;
+    if (has) cascade = read_fitted(g, cascade_struct);
+    g.check(residtrace::state_candidate<double>(cur, ctx,
+                                                has ? &cascade : nullptr, &c));
+    if (has && c.has_model && c.model.has_phys) {
+      // the cascade chosen: the model is the caller's, named by its variant
+      c.has_model = false;
+      plhs[0] = write_candidate(prhs[3], c);
+      mxArray* m = bare_template(cascade_struct);
+      set(m, 0, "variant_", mxCreateString(c.variant.c_str()));
+      set(plhs[0], 0, "model", m);
+      return;
+    }
+  } else if (effect == "offset") {
     g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
   } else if (effect == "viscous") {
     if (cur.fixed.empty()) g.fail("badInput", "the model has no order");
@@ -361,15 +413,6 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }
   plhs[0] = write_candidate(prhs[3], c);
-}
-
-// A template struct without the selection's own fields.
-inline mxArray* bare_template(const mxArray* s) {
-  mxArray* t = mxDuplicateArray(s);
-  for (const char* f : {"order_floor_", "fitted"}) {
-    if (mxGetFieldNumber(t, f) >= 0) mxRemoveField(t, mxGetFieldNumber(t, f));
-  }
-  return t;
 }
 
 inline void select_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
