@@ -22,8 +22,8 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous", "state_nonlinearity") of
-//     the current model cur; for
+//     the candidate effect ("offset", "viscous", "state_nonlinearity",
+//     "static_nonlinearity") of the current model cur; for
 //     "state_nonlinearity" options.cascade is the two-section cascade with
 //     square-root outflows fitted already (octave/private/
 //     residtrace_physfit.m; absent or []: none).
@@ -44,6 +44,7 @@
 
 #include "ctid/apps/residtrace/candidate.hpp"
 #include "ctid/apps/residtrace/candidate_state.hpp"
+#include "ctid/apps/residtrace/candidate_static.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -349,6 +350,19 @@ inline mxArray* bare_template(const mxArray* s) {
   return t;
 }
 
+// The names of a model struct's channels.
+inline std::vector<std::string> channel_names(const Gateway& g,
+                                              const mxArray* s) {
+  const mxArray* ch = field(s, "channels");
+  std::vector<std::string> names;
+  for (std::size_t j = 0; ch != nullptr && j < mxGetNumberOfElements(ch); ++j) {
+    const mxArray* n = mxGetField(ch, j, "name");
+    names.push_back(n != nullptr && mxIsChar(n) ? g.text(n, "a channel's name")
+                                                : std::string());
+  }
+  return names;
+}
+
 // A model fitted already (by an estimator of its own): its structure and
 // the estimate's ok, bic, s2 and np.
 inline residtrace::ResidtraceModel<double> read_fitted(const Gateway& g,
@@ -373,8 +387,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   if (nlhs > 1) g.fail("badInput", "candidate has one output");
   const std::string effect = g.text(prhs[2], "the effect");
   auto cur = read_model(g, prhs[3]);
-  if (effect == "state_nonlinearity") {
-    // (its number of added parameters is counted from the model's)
+  if (effect == "state_nonlinearity" || effect == "static_nonlinearity") {
+    // (their number of added parameters is counted from the model's)
     const mxArray* np = field(prhs[3], "np");
     if (empty(np)) g.fail("badInput", "the model has no field np");
     cur.estimate.np = count(g, np, "model.np", 0);
@@ -404,6 +418,23 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
       set(plhs[0], 0, "model", m);
       return;
     }
+  } else if (effect == "static_nonlinearity") {
+    const std::vector<std::string> names = channel_names(g, prhs[3]);
+    residtrace::HammersteinPart<double> part;
+    g.check(residtrace::static_candidate<double>(cur, names, ctx, &c, &part));
+    plhs[0] = write_candidate(prhs[3], c);
+    if (part.present) {
+      // the Hammerstein fit: its input nonlinearity, and theta a row as
+      // hsrivc gives it
+      mxArray* m = mxGetField(plhs[0], 0, "model");
+      const char* f[] = {"alpha", "sd"};
+      mxArray* nlin = mxCreateStructMatrix(1, 1, 2, f);
+      mxSetField(nlin, 0, "alpha", row(part.alpha));
+      mxSetField(nlin, 0, "sd", row(part.sd));
+      set(m, 0, "nlin", nlin);
+      set(m, 0, "theta", row(c.model.estimate.theta));
+    }
+    return;
   } else if (effect == "offset") {
     g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
   } else if (effect == "viscous") {
