@@ -26,8 +26,12 @@
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
 //     the candidate effect ("offset", "viscous", "order", "coulomb",
-//     "sinusoid", "delay", "initial_state", "colored_noise") of the current
-//     model cur (its estimation residual e_est read when present).
+//     "sinusoid", "delay", "initial_state", "colored_noise",
+//     "state_nonlinearity", "static_nonlinearity") of the current model cur
+//     (its estimation residual e_est read when present); for
+//     "state_nonlinearity" options.cascade is the two-section cascade with
+//     square-root outflows fitted already (octave/private/
+//     residtrace_physfit.m; absent or []: none).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -49,6 +53,8 @@
 #include "ctid/apps/residtrace/candidate_delay.hpp"
 #include "ctid/apps/residtrace/candidate_order.hpp"
 #include "ctid/apps/residtrace/candidate_sinusoid.hpp"
+#include "ctid/apps/residtrace/candidate_state.hpp"
+#include "ctid/apps/residtrace/candidate_static.hpp"
 #include "ctid/apps/residtrace/candidate_x0.hpp"
 #include "residtrace_model_io.hpp"
 
@@ -400,6 +406,43 @@ inline mxArray* write_candidate(const mxArray* cur,
   return s;
 }
 
+// A template struct without the selection's own fields.
+inline mxArray* bare_template(const mxArray* s) {
+  mxArray* t = mxDuplicateArray(s);
+  for (const char* f : {"order_floor_", "fitted"}) {
+    if (mxGetFieldNumber(t, f) >= 0) mxRemoveField(t, mxGetFieldNumber(t, f));
+  }
+  return t;
+}
+
+// The names of a model struct's channels.
+inline std::vector<std::string> channel_names(const Gateway& g,
+                                              const mxArray* s) {
+  const mxArray* ch = field(s, "channels");
+  std::vector<std::string> names;
+  for (std::size_t j = 0; ch != nullptr && j < mxGetNumberOfElements(ch); ++j) {
+    const mxArray* n = mxGetField(ch, j, "name");
+    names.push_back(n != nullptr && mxIsChar(n) ? g.text(n, "a channel's name")
+                                                : std::string());
+  }
+  return names;
+}
+
+// A model fitted already (by an estimator of its own): its structure and
+// the estimate's ok, bic, s2 and np.
+inline residtrace::ResidtraceModel<double> read_fitted(const Gateway& g,
+                                                       const mxArray* s) {
+  mxArray* bare = bare_template(s);
+  residtrace::ResidtraceModel<double> m = read_model(g, bare);
+  mxDestroyArray(bare);
+  residtrace::ModelEstimate<double>& e = m.estimate;
+  e.ok = number(g, field(s, "ok"), "a fitted model's ok", 0) != 0;
+  e.bic = number(g, field(s, "bic"), "a fitted model's bic", NAN);
+  e.s2 = number(g, field(s, "s2"), "a fitted model's s2", NAN);
+  e.np = count(g, field(s, "np"), "a fitted model's np", 0);
+  return m;
+}
+
 inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
                              int nrhs, const mxArray* prhs[]) {
   if (nrhs != 6) {
@@ -409,25 +452,60 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   if (nlhs > 1) g.fail("badInput", "candidate has one output");
   const std::string effect = g.text(prhs[2], "the effect");
   auto cur = read_model(g, prhs[3]);
-  // the current model's estimation residual (the candidates that read it)
+  // whether the current model's fit succeeded
   cur.estimate.ok = number(g, field(prhs[3], "ok"), "model.ok", 1) != 0;
-  // (the initial state and the noise model extend a physical
-  // realisation as they do a linear model: neither is fitted with it)
-  if (cur.has_phys && effect != "initial_state" && effect != "colored_noise") {
+  if ((effect == "state_nonlinearity" || effect == "static_nonlinearity") &&
+      empty(field(prhs[3], "np"))) {
+    // (their number of added parameters is counted from the model's)
+    g.fail("badInput", "the model has no field np");
+  }
+  // (the initial state and the noise model extend a physical realisation
+  // as they do a linear model: neither is fitted with it; the
+  // state-nonlinearity candidate reports a realisation itself)
+  if (cur.has_phys && effect != "initial_state" && effect != "colored_noise" &&
+      effect != "state_nonlinearity") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
   OptionsReader opt(g, prhs[5]);
   auto ctx = read_context(g, prhs[4], opt);
+  const mxArray* cascade_struct = opt.field("cascade");
   opt.finish();
-  const mxArray* ch = field(prhs[3], "channels");
-  for (mwIndex j = 0; j < mxGetNumberOfElements(ch); ++j) {
-    const mxArray* name = field(ch, "name", j);
-    ctx.channel_names.push_back(empty(name) ? std::string()
-                                            : word(g, name, "channel name"));
-  }
+  ctx.channel_names = channel_names(g, prhs[3]);
   residtrace::Candidate<double> c;
-  if (effect == "offset") {
+  if (effect == "state_nonlinearity") {
+    const bool has = !empty(cascade_struct);
+    residtrace::ResidtraceModel<double> cascade;
+    if (has) cascade = read_fitted(g, cascade_struct);
+    g.check(residtrace::state_candidate<double>(cur, ctx,
+                                                has ? &cascade : nullptr, &c));
+    if (has && c.has_model && c.model.has_phys) {
+      // the cascade chosen: the model is the caller's, named by its variant
+      c.has_model = false;
+      plhs[0] = write_candidate(prhs[3], c);
+      mxArray* m = bare_template(cascade_struct);
+      set(m, 0, "variant_", mxCreateString(c.variant.c_str()));
+      set(plhs[0], 0, "model", m);
+      return;
+    }
+  } else if (effect == "static_nonlinearity") {
+    residtrace::HammersteinPart<double> part;
+    g.check(residtrace::static_candidate<double>(cur, ctx.channel_names, ctx,
+                                                 &c, &part));
+    plhs[0] = write_candidate(prhs[3], c);
+    if (part.present) {
+      // the Hammerstein fit: its input nonlinearity, and theta a row as
+      // hsrivc gives it
+      mxArray* m = mxGetField(plhs[0], 0, "model");
+      const char* f[] = {"alpha", "sd"};
+      mxArray* nlin = mxCreateStructMatrix(1, 1, 2, f);
+      mxSetField(nlin, 0, "alpha", row(part.alpha));
+      mxSetField(nlin, 0, "sd", row(part.sd));
+      set(m, 0, "nlin", nlin);
+      set(m, 0, "theta", row(c.model.estimate.theta));
+    }
+    return;
+  } else if (effect == "offset") {
     g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
   } else if (effect == "viscous") {
     if (cur.fixed.empty()) g.fail("badInput", "the model has no order");
@@ -448,15 +526,6 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.fail("notSupported", "no candidate '" + effect + "' in the core");
   }
   plhs[0] = write_candidate(prhs[3], c);
-}
-
-// A template struct without the selection's own fields.
-inline mxArray* bare_template(const mxArray* s) {
-  mxArray* t = mxDuplicateArray(s);
-  for (const char* f : {"order_floor_", "fitted"}) {
-    if (mxGetFieldNumber(t, f) >= 0) mxRemoveField(t, mxGetFieldNumber(t, f));
-  }
-  return t;
 }
 
 inline void select_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,

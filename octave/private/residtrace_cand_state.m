@@ -27,89 +27,26 @@
 ## node: two first-order sections with square-root outflows (two tanks,
 ## @code{residtrace_physcascade}), fitted on its simulation error.
 ## Evidence: the coefficients g_k with their standard deviations.
+## The core does it: core/include/ctid/apps/residtrace/candidate_state.hpp
+## (the cascade's template and fit stay residtrace_physcascade's and
+## residtrace_physfit's).
 ## @end deftypefn
 
 function c = residtrace_cand_state (cur, ctx)
-  c = residtrace_cand ("state_nonlinearity");
-  if (any (strcmp ({cur.channels.type}, "ypower"))
-      || ! isempty (cur.phys))
-    c.reason = "the model has a nonlinearity of the output already";
-    return;
-  endif
-  y = ctx.D.y;
-  pw = {[2], [3], [2 3]};
-  if (mean (y > 0) >= 0.95)
-    pw = [{0.5}, pw];
-  endif
-  tmpls = {}; names = {}; starts = {};
-  ## a record in raw units has its input level u0 removed and an output
-  ## offset c estimated: F(p)(y - c) = B(p)(u - u0) + g(y) has then
-  ## nothing to balance B(0) u0 where F(0) = 0 (a tank whose only damping
-  ## is its outflow), so the terms come with a constant of their own
-  lev = isfield (cur, "levels") && cur.levels ...
-        && ! any (strcmp ({cur.channels.type}, "const"));
-  for k = 1:numel (pw)
-    t = cur;
-    if (lev)
-      t.channels(end+1) = residtrace_chan ("const", 0, [], 1, 0, "1");
-    endif
-    for p = pw{k}
-      if (p == 0.5)
-        nm = "sqrt(y)";
-      else
-        nm = sprintf ("y^%d", p);
-      endif
-      t.channels(end+1) = residtrace_chan ("ypower", 0, p, 1, 0, nm);
-    endfor
-    tmpls{end+1} = t; starts{end+1} = {cur.F};
-    names{end+1} = ["output in the dynamics: " ...
-                    strjoin({t.channels(end-numel(pw{k})+1:end).name}, ", ")];
-  endfor
-  ## the nonlinearity at an inner node: two first-order sections with
-  ## square-root outflows (two tanks), fitted on its simulation error
-  if (mean (y > 0) >= 0.95)
+  o = residtrace_fitopts (ctx);
+  ## the cascade variant (its template is residtrace_physcascade's): only
+  ## for a model without a nonlinearity of the output and a positive output
+  if (isempty (cur.phys) && ! any (strcmp ({cur.channels.type}, "ypower"))
+      && mean (ctx.D.y > 0) >= 0.95)
     t = residtrace_physcascade (cur, ctx, "sqrt", false);
     if (! isempty (t))
       m = residtrace_physfit (t, ctx.D, ctx);
       if (m.ok)
         m.fitted = true;
-        tmpls{end+1} = m; starts{end+1} = {};
-        names{end+1} = "square-root outflows of a two-section cascade";
+        o.cascade = m;
       endif
     endif
   endif
-  [m, c.variants] = residtrace_select (tmpls, names, ctx.D, ctx, starts);
-  if (isempty (m))
-    c.reason = "the estimation failed";
-    c.failed = true;
-    return;
-  endif
-  nadd = m.np - cur.np;
-  if (! isempty (m.phys))
-    ## a realisation fitted on its simulation error: its parameters are
-    ## not added terms (no three-sigma test)
-    c.applicable = true;
-    c.model = m;
-    c.variant = m.variant_;
-    c.nadd = max (nadd, 1);
-    P = m.phys;
-    c.evidence = struct ("term", "alpha, gamma, inner level", "value",
-                         [P.alpha P.gamma P.hi], "std", NaN,
-                         "text", sprintf (["%s: alpha %.4g, gamma %.4g, ", ...
-                                           "output level %.4g"], c.variant,
-                                          P.alpha, P.gamma, P.c));
-    return;
-  endif
-  nlin = sum (strcmp ({m.channels.type}, "ypower"));
-  val = m.theta(end-nlin+1:end);
-  sd = sqrt (diag (m.cov))(end-nlin+1:end);
-  c.applicable = true;
-  c.model = m;
-  c.variant = m.variant_;
-  c.nadd = nadd;
-  c.evidence = struct ("term", "gains of the output terms", "value",
-                       val(:).', "std", sd(:).',
-                       "text", sprintf ("%s: coefficients %s +- %s",
-                                        c.variant, mat2str (val(:).', 4),
-                                        mat2str (sd(:).', 2)));
+  c = effect_sim_mex ("residtrace", "candidate", "state_nonlinearity", cur,
+                      ctx.D, o);
 endfunction
