@@ -157,9 +157,8 @@ Status hammerstein_fit(const ResidtraceModel<S>& cur,
   }
   Vector<S> F(nf + 1);
   F << S(1), r.f;
-  const auto poles = model_fit_detail::roots_of<S>(F);
-  for (Eigen::Index i = 0; i < poles.size(); ++i) {
-    if (poles(i).real() >= 0) return Status::Ok();
+  for (const std::complex<S>& pole : roots_descending<S>(F)) {
+    if (pole.real() >= 0) return Status::Ok();
   }
   const Vector<S> b = r.b;
   m->F = F;
