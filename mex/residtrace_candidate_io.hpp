@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "ctid/apps/residtrace/candidate.hpp"
+#include "ctid/apps/residtrace/candidate_saturation.hpp"
 #include "residtrace_model_io.hpp"
 
 namespace ctid::mex::residtrace_candidate {
@@ -286,6 +287,21 @@ inline mxArray* write_evidence(const residtrace::Evidence<double>& e) {
   }
   mxArray* s = mxCreateStructMatrix(1, 1, 0, nullptr);
   for (const residtrace::EvidenceField<double>& f : e.fields) {
+    if (f.column || f.imag.size() > 0) {
+      bool cplx = false;
+      for (Eigen::Index i = 0; i < f.imag.size(); ++i) {
+        cplx = cplx || f.imag(i) != 0;
+      }
+      const std::size_t n = static_cast<std::size_t>(f.value.size());
+      mxArray* a = mxCreateDoubleMatrix(f.column ? n : 1, f.column ? 1 : n,
+                                        cplx ? mxCOMPLEX : mxREAL);
+      for (std::size_t i = 0; i < n; ++i) {
+        mxGetPr(a)[i] = f.value(i);
+        if (cplx) mxGetPi(a)[i] = f.imag(i);
+      }
+      set(s, 0, f.name.c_str(), a);
+      continue;
+    }
     set(s, 0, f.name.c_str(),
         f.is_text ? mxCreateString(f.text.c_str())
                   : (f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0))
@@ -335,6 +351,183 @@ inline mxArray* write_candidate(const mxArray* cur,
   return s;
 }
 
+// The struct of a model m made from the model struct cur by the
+// saturation candidate (saturation_candidate) or the physical
+// realisations (physical_model.hpp): an output saturation added to its
+// output terms, an input channel replaced by a node (named "clip(z)",
+// param Fa, lo, hi, Ts, rule), or a physical realisation (a cascade keeps
+// the input, power and clip channels only and no output term); with the
+// field variant_ when variant is not empty.
+inline mxArray* write_saturation_model(
+    const mxArray* cur, const residtrace::ResidtraceModel<double>& m,
+    const std::string& variant, const mxArray* rule) {
+  using residtrace::ChannelKind;
+  mxArray* t = mxDuplicateArray(cur);
+  if (!m.has_phys && mxGetFieldNumber(t, "nlin") >= 0) {
+    mxRemoveField(t, mxGetFieldNumber(t, "nlin"));  // stale
+  }
+  const bool cascade =
+      m.has_phys && m.phys.kind == residtrace::PhysicalKind::kCascade;
+  const mxArray* ch = mxGetField(t, 0, "channels");
+  const std::size_t nc0 = ch != nullptr ? mxGetNumberOfElements(ch) : 0;
+  std::vector<std::size_t> src;
+  for (std::size_t j = 0; j < nc0; ++j) {
+    if (cascade) {
+      const mxArray* ty = mxGetField(ch, j, "type");
+      char buf[16] = {0};
+      if (ty != nullptr && mxIsChar(ty)) mxGetString(ty, buf, sizeof(buf));
+      const std::string s = buf;
+      if (s != "input" && s != "power" && s != "clip") continue;
+    }
+    src.push_back(j);
+  }
+  mxArray* nch = nullptr;
+  {
+    std::vector<std::string> f;
+    for (int i = 0; ch != nullptr && i < mxGetNumberOfFields(ch); ++i) {
+      f.push_back(mxGetFieldNameByNumber(ch, i));
+    }
+    std::vector<const char*> p;
+    for (const std::string& x : f) p.push_back(x.c_str());
+    nch = mxCreateStructMatrix(1, m.channels.size(), static_cast<int>(p.size()),
+                               p.data());
+  }
+  for (std::size_t j = 0; j < m.channels.size() && j < src.size(); ++j) {
+    for (int i = 0; i < mxGetNumberOfFields(ch); ++i) {
+      const mxArray* v = mxGetFieldByNumber(ch, src[j], i);
+      if (v != nullptr) {
+        mxSetFieldByNumber(nch, j, i, mxDuplicateArray(v));
+      }
+    }
+    const residtrace::StructureChannel<double>& k = m.channels[j];
+    set(nch, j, "B", row(k.B));
+    set(nch, j, "nb", mxCreateDoubleScalar(k.nb));
+    if (k.kind != ChannelKind::kNode) continue;
+    set(nch, j, "name", mxCreateString("clip(z)"));
+    set(nch, j, "type", mxCreateString("node"));
+    set(nch, j, "col", mxCreateDoubleScalar(k.col + 1));
+    const char* pf[] = {"Fa", "lo", "hi", "Ts", "rule"};
+    mxArray* P = mxCreateStructMatrix(1, 1, 5, pf);
+    mxSetField(P, 0, "Fa", row(k.node_f));
+    mxSetField(P, 0, "lo", mxCreateDoubleScalar(k.node_lo));
+    mxSetField(P, 0, "hi", mxCreateDoubleScalar(k.node_hi));
+    mxSetField(P, 0, "Ts", mxCreateDoubleScalar(k.node_ts));
+    mxSetField(
+        P, 0, "rule",
+        rule != nullptr && mxIsChar(rule)
+            ? mxDuplicateArray(rule)
+            : mxCreateString(k.node_rule == ctid::InterSample::kFoh ? "foh"
+                                                                    : "zoh"));
+    set(nch, j, "param", P);
+    set(nch, j, "nb", mxCreateDoubleScalar(k.nb));
+    set(nch, j, "nk", mxCreateDoubleScalar(k.nk));
+  }
+  set(t, 0, "channels", nch);
+  set(t, 0, "F", row(m.F));
+  bool node = false;
+  for (const auto& k : m.channels) node = node || k.kind == ChannelKind::kNode;
+  if (node || cascade) {
+    mxArray* fixed = mxCreateLogicalMatrix(1, m.fixed.size());
+    for (std::size_t i = 0; i < m.fixed.size(); ++i) {
+      mxGetLogicals(fixed)[i] = m.fixed[i];
+    }
+    set(t, 0, "fixed", fixed);
+  }
+  const mxArray* out = mxGetField(t, 0, "out");
+  const std::size_t no0 =
+      out != nullptr && mxIsStruct(out) ? mxGetNumberOfElements(out) : 0;
+  if (cascade) {
+    std::vector<std::string> f;
+    for (int i = 0;
+         out != nullptr && mxIsStruct(out) && i < mxGetNumberOfFields(out);
+         ++i) {
+      f.push_back(mxGetFieldNameByNumber(out, i));
+    }
+    std::vector<const char*> p;
+    for (const std::string& x : f) p.push_back(x.c_str());
+    set(t, 0, "out",
+        mxCreateStructMatrix(0, 0, static_cast<int>(p.size()), p.data()));
+  } else if (m.out.size() >= no0 && !m.out.empty()) {
+    mxArray* o = extended(out, m.out.size(), {"type", "c", "cstd", "omega"});
+    int first = -1;  // the first offset: an end stop's parameter
+    for (std::size_t k = 0; k < m.out.size() && first < 0; ++k) {
+      if (m.out[k].kind == residtrace::OutputTermKind::kOffset) {
+        first = static_cast<int>(k);
+      }
+    }
+    for (std::size_t k = 0; k < m.out.size(); ++k) {
+      const bool added = k >= no0;
+      const bool sat = m.out[k].kind == residtrace::OutputTermKind::kSaturation;
+      const bool stop_offset = m.has_phys && static_cast<int>(k) == first;
+      if (added) {
+        set(o, k, "type", mxCreateString(term_type(m.out[k].kind)));
+        set(o, k, "omega", mxCreateDoubleScalar(m.out[k].omega));
+      }
+      if (added || sat) {
+        set(o, k, "c", row(m.out[k].c));
+        set(o, k, "cstd", row(m.out[k].cstd));
+      } else if (stop_offset) {
+        set(o, k, "c", row(m.out[k].c));
+      }
+    }
+    set(t, 0, "out", o);
+  }
+  if (m.has_phys) {
+    const residtrace::PhysicalModel<double>& P = m.phys;
+    // the realisation's fields set in the struct it had (its other fields
+    // kept) or in a new one
+    const mxArray* p0 = mxGetField(t, 0, "phys");
+    mxArray* ps =
+        p0 != nullptr && mxIsStruct(p0) && mxGetNumberOfElements(p0) == 1
+            ? mxDuplicateArray(p0)
+            : mxCreateStructMatrix(1, 1, 0, nullptr);
+    auto put = [&](const char* name, mxArray* v) { set(ps, 0, name, v); };
+    auto num = [](double v) { return mxCreateDoubleScalar(v); };
+    if (!cascade) {
+      put("kind", mxCreateString("stop"));
+      put("lo", num(P.lo));
+      put("hi", num(P.hi));
+      put("substeps", num(P.substeps));
+      put("yscale", num(P.yscale));
+    } else {
+      put("kind", mxCreateString("cascade"));
+      put("g", mxCreateString(P.sqrt_nodes ? "sqrt" : "lin"));
+      put("d", num(P.d));
+      put("alpha", num(P.alpha));
+      put("gamma", num(P.gamma));
+      put("c", num(P.c));
+      put("hi", num(P.hi));
+      put("substeps", num(P.substeps));
+      put("wbar", row(P.wbar));
+      put("yscale", num(P.yscale));
+      if (P.has_h0) put("h0", num(P.h0));
+      if (P.has_spill) put("spill", num(P.spill));
+      if (P.has_yhi) put("yhi", num(P.yhi));
+      if (P.has_z0) put("z0", num(P.z0));
+    }
+    if (P.theta.size() > 0) {
+      put("theta", matrix(P.theta));
+      put("cov", matrix(P.cov));
+    }
+    set(t, 0, "phys", ps);
+  }
+  mxArray* r = write_model(t, m);
+  mxDestroyArray(t);
+  if (!m.estimate.set) {
+    // a template (no fit): its ok as it was
+    const mxArray* ok = mxGetField(cur, 0, "ok");
+    if (ok != nullptr) {
+      set(r, 0, "ok", mxDuplicateArray(ok));
+    } else {
+      mxRemoveField(r, mxGetFieldNumber(r, "ok"));
+    }
+  }
+  if (!variant.empty()) {
+    set(r, 0, "variant_", mxCreateString(variant.c_str()));
+  }
+  return r;
+}
+
 inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
                              int nrhs, const mxArray* prhs[]) {
   if (nrhs != 6) {
@@ -343,8 +536,8 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   }
   if (nlhs > 1) g.fail("badInput", "candidate has one output");
   const std::string effect = g.text(prhs[2], "the effect");
-  const auto cur = read_model(g, prhs[3]);
-  if (cur.has_phys) {
+  auto cur = read_model(g, prhs[3]);
+  if (cur.has_phys && effect != "saturation") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
@@ -352,7 +545,23 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   const auto ctx = read_context(g, prhs[4], opt);
   opt.finish();
   residtrace::Candidate<double> c;
-  if (effect == "offset") {
+  if (effect == "saturation") {
+    cur.estimate.e = values(g, field(prhs[3], "e_est"), "cur.e_est");
+    cur.estimate.np = count(g, field(prhs[3], "np"), "cur.np", 0);
+    if (cur.estimate.e.size() != ctx.D.y.size()) {
+      g.fail("dimensionMismatch", "cur.e_est needs one error a sample");
+    }
+    g.check(residtrace::saturation_candidate<double>(cur, ctx, &c));
+    residtrace::Candidate<double> bare = c;
+    bare.has_model = false;
+    plhs[0] = write_candidate(prhs[3], bare);
+    if (c.has_model) {
+      set(plhs[0], 0, "model",
+          write_saturation_model(prhs[3], c.model, c.variant,
+                                 field(prhs[4], "intersample")));
+    }
+    return;
+  } else if (effect == "offset") {
     g.check(residtrace::offset_candidate<double>(cur, ctx, &c));
   } else if (effect == "viscous") {
     if (cur.fixed.empty()) g.fail("badInput", "the model has no order");
@@ -443,12 +652,65 @@ inline void select_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs > 1) plhs[1] = write_table(table);
 }
 
+inline void physcascade_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                               int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "physcascade takes (fname, 'physcascade', cur, D, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "physcascade has at most 2 outputs");
+  const auto cur = read_model(g, prhs[2]);
+  OptionsReader opt(g, prhs[4]);
+  const bool sq = opt.choice<bool>("g", {{"sqrt", true}, {"lin", false}}, true);
+  const bool clip = opt.flag("clip", false);
+  const residtrace::FitRecord<double> D = read_fit_record(g, prhs[3]);
+  opt.finish();
+  residtrace::ResidtraceModel<double> t;
+  bool made = false;
+  std::string why;
+  g.check(
+      residtrace::cascade_template<double>(cur, D, sq, clip, &t, &made, &why));
+  plhs[0] = made ? write_saturation_model(prhs[2], t, "", nullptr)
+                 : mxCreateDoubleMatrix(0, 0, mxREAL);
+  if (nlhs > 1) plhs[1] = mxCreateString(why.c_str());
+}
+
+inline void physmodelfit_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                                int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "physmodelfit takes (fname, 'physmodelfit', tmpl, D, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "physmodelfit has one output");
+  const auto tmpl = read_model(g, prhs[2]);
+  if (!tmpl.has_phys) {
+    g.fail("badInput", "the template has no physical realisation");
+  }
+  OptionsReader opt(g, prhs[4]);
+  const int maxiter = opt.integer("maxiter");
+  const residtrace::FitRecord<double> D = read_fit_record(g, prhs[3]);
+  opt.finish();
+  if (maxiter < 1) g.fail("badOption", "option 'maxiter' must be >= 1");
+  residtrace::ResidtraceModel<double> m;
+  g.check(residtrace::fit_physical_model<double>(tmpl, D, maxiter, &m));
+  if (!m.estimate.ok) {
+    plhs[0] = mxDuplicateArray(prhs[2]);
+    set(plhs[0], 0, "ok", mxCreateLogicalScalar(false));
+    return;
+  }
+  plhs[0] = write_saturation_model(prhs[2], m, "", nullptr);
+}
+
 inline bool dispatch(const std::string& method, const Gateway& g, int nlhs,
                      mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   if (method == "candidate") {
     candidate_method(g, nlhs, plhs, nrhs, prhs);
   } else if (method == "select") {
     select_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "physcascade") {
+    physcascade_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "physmodelfit") {
+    physmodelfit_method(g, nlhs, plhs, nrhs, prhs);
   } else {
     return false;
   }

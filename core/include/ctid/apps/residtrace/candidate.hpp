@@ -71,6 +71,10 @@ struct EvidenceField {
   bool is_text = false;
   std::string text;
   Vector<S> value;
+  // the saturation candidate: the imaginary parts of complex values
+  // (empty: real) and whether they are a column (poles)
+  Vector<S> imag;
+  bool column = false;
 };
 
 template <typename S>
