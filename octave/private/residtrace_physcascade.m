@@ -21,9 +21,7 @@
 ## level c at min(0, min(y) - 0.1 range(y)) for square-root nodes (a
 ## level measured from the outlet starts at c = 0) and 0 for linear ones;
 ## the inner level on the quantiles 0.7-0.99 of the unclipped inner state
-## (the one with the smallest simulation error); the cascade of those
-## poles, gains and level is the core's (@code{effect_sim_mex}, method
-## "physstart"). The record's initial
+## (the one with the smallest simulation error). The record's initial
 ## state is a parameter: the cascade starts at rest at the outer level
 ## @code{phys.h0} (the inner one in balance with it), started at the
 ## first sample, fitted with the others and kept for any other record (as
