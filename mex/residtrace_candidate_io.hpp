@@ -22,7 +22,9 @@
 // and the methods of effect_sim_mex (dispatch):
 //
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
-//     the candidate effect ("offset", "viscous") of the current model cur.
+//     the candidate effect ("offset", "viscous", "saturation") of the
+//     current model cur (for "saturation" with its errors e_est on D and
+//     its number of parameters np).
 //   [best, table] = effect_sim_mex (fname, "select", tmpls, names, D,
 //                                   options)
 //     the variant chosen among the templates (select_variant), options.starts
@@ -31,6 +33,15 @@
 //     names, bic, s2 and converged. A template with the field fitted is a
 //     model fitted already (its ok, bic, s2 and F are read); one with
 //     order_floor_ fails when its fit comes back with a lower order.
+//   [t, why] = effect_sim_mex (fname, "physcascade", cur, D, options)
+//     the cascade realisation started from the model cur
+//     (physical_model.hpp, cascade_template): t the model struct ([] with
+//     the reason why when there is none); options: g ("sqrt" or "lin"),
+//     clip (an inner level).
+//   model = effect_sim_mex (fname, "physmodelfit", tmpl, D, options)
+//     the model tmpl with a physical realisation fitted on D by its
+//     simulation error (physical_model.hpp, fit_physical_model); ok false
+//     when it fails; options: maxiter.
 #pragma once
 
 #include <cctype>
