@@ -6,7 +6,9 @@
 //   - saturation_candidate finds an output saturation of known level on a
 //     record of a second-order system clipped above, the level within 2 %
 //     and the share of clipped samples near the one of the noise-free
-//     record; it is not applicable to a model with a saturation already,
+//     record; it finds a clipped inner node of a two-section system (the
+//     upstream pole, the level within 4 %, the downstream pole); it is
+//     not applicable to a model with a saturation already,
 //     and rejects errors of the wrong length;
 //   - sample_quantile against quantiles worked by hand (Hazen's rule);
 //   - cascade_template: the linearisation of the cascade started from a
@@ -112,6 +114,41 @@ TEST(ResidtraceSaturation, FindsAnOutputLevel) {
             std::string::npos)
       << c.evidence.text;
   EXPECT_EQ(c.nadd, c.model.estimate.np - 2);
+}
+
+TEST(ResidtraceSaturation, FindsAnInnerNodeLevel) {
+  // y = 2 / (p + 1) clip(z), z = 3 / (p + 3) u clipped above at 0.5
+  const int N = 2000;
+  const std::vector<double> us = test::binary_input(N, 40, 21);
+  const Eigen::MatrixXd u = Eigen::Map<const Eigen::VectorXd>(us.data(), N);
+  ResidtraceModel<double> node = linear(vec({1, 1}), vec({2}));
+  StructureChannel<double>& ch = node.channels[0];
+  ch.kind = ChannelKind::kNode;
+  ch.node_f = vec({1, 3});
+  ch.node_ts = kTs;
+  ch.node_hi = 0.5;
+  const Eigen::VectorXd yc = simulate(node, u);
+  std::mt19937 gen(4);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  Eigen::VectorXd y = yc;
+  for (int k = 0; k < N; ++k) y(k) += noise(gen);
+  // the current model: the linear cascade without the clip
+  const ResidtraceModel<double> cur0 = linear(vec({1, 4, 3}), vec({6}));
+  ResidtraceModel<double> cur = cur0;
+  cur.estimate.e = y - simulate(cur0, u);
+  cur.estimate.np = 3;
+  CandidateContext<double> ctx = record(y, u);
+  Candidate<double> c;
+  ASSERT_TRUE(saturation_candidate<double>(cur, ctx, &c).ok());
+  ASSERT_TRUE(c.applicable) << c.reason;
+  EXPECT_EQ(c.variant.rfind("inner node after pole(s) -3", 0), 0u) << c.variant;
+  ASSERT_EQ(c.model.channels.size(), 1u);
+  const StructureChannel<double>& k = c.model.channels[0];
+  ASSERT_EQ(k.kind, ChannelKind::kNode);
+  EXPECT_NEAR(k.node_hi, 0.5, 0.02);
+  EXPECT_NEAR(k.node_f(1), 3, 1e-9);
+  ASSERT_EQ(c.model.F.size(), 2);
+  EXPECT_NEAR(c.model.F(1) / c.model.F(0), 1, 0.05);
 }
 
 TEST(ResidtraceSaturation, NotApplicableAndBadInput) {
