@@ -27,8 +27,9 @@
 //   c = effect_sim_mex (fname, "candidate", effect, cur, D, options)
 //     the candidate effect ("offset", "viscous", "order", "coulomb",
 //     "sinusoid", "delay", "initial_state", "colored_noise",
-//     "state_nonlinearity", "static_nonlinearity") of the current model cur
-//     (its estimation residual e_est read when present); for
+//     "state_nonlinearity", "static_nonlinearity", "saturation") of the
+//     current model cur (its estimation residual e_est read when present;
+//     "saturation" needs it and the number of parameters np); for
 //     "state_nonlinearity" options.cascade is the two-section cascade with
 //     square-root outflows fitted already (octave/private/
 //     residtrace_physfit.m; absent or []: none).
@@ -40,6 +41,15 @@
 //     names, bic, s2 and converged. A template with the field fitted is a
 //     model fitted already (its ok, bic, s2 and F are read); one with
 //     order_floor_ fails when its fit comes back with a lower order.
+//   [t, why] = effect_sim_mex (fname, "physcascade", cur, D, options)
+//     the cascade realisation started from the model cur
+//     (physical_model.hpp, cascade_template): t the model struct ([] with
+//     the reason why when there is none); options: g ("sqrt" or "lin"),
+//     clip (an inner level).
+//   model = effect_sim_mex (fname, "physmodelfit", tmpl, D, options)
+//     the model tmpl with a physical realisation fitted on D by its
+//     simulation error (physical_model.hpp, fit_physical_model); ok false
+//     when it fails; options: maxiter.
 #pragma once
 
 #include <cctype>
@@ -52,6 +62,7 @@
 #include "ctid/apps/residtrace/candidate_coulomb.hpp"
 #include "ctid/apps/residtrace/candidate_delay.hpp"
 #include "ctid/apps/residtrace/candidate_order.hpp"
+#include "ctid/apps/residtrace/candidate_saturation.hpp"
 #include "ctid/apps/residtrace/candidate_sinusoid.hpp"
 #include "ctid/apps/residtrace/candidate_state.hpp"
 #include "ctid/apps/residtrace/candidate_static.hpp"
@@ -343,20 +354,14 @@ inline mxArray* write_evidence(const residtrace::Evidence<double>& e) {
     mxArray* v = nullptr;
     if (f.is_text) {
       v = mxCreateString(f.text.c_str());
-    } else if (f.roots) {
-      // a column, complex when one of the roots is
+    } else if (f.column || f.imag.size() > 0) {
+      // a column (roots, poles) or a row, complex when a part is nonzero
       const bool complex = (f.imag.array() != 0).any();
-      v = mxCreateDoubleMatrix(f.value.size(), 1, complex ? mxCOMPLEX : mxREAL);
-      std::copy(f.value.data(), f.value.data() + f.value.size(), mxGetPr(v));
-      if (complex) {
-        std::copy(f.imag.data(), f.imag.data() + f.imag.size(), mxGetPi(v));
-      }
-    } else if (f.imag.size() == f.value.size() && f.imag.size() > 0) {
-      v = mxCreateDoubleMatrix(1, f.value.size(), mxCOMPLEX);
-      for (Eigen::Index i = 0; i < f.value.size(); ++i) {
-        mxGetPr(v)[i] = f.value(i);
-        mxGetPi(v)[i] = f.imag(i);
-      }
+      const std::size_t n = static_cast<std::size_t>(f.value.size());
+      v = mxCreateDoubleMatrix(f.column ? n : 1, f.column ? 1 : n,
+                               complex ? mxCOMPLEX : mxREAL);
+      std::copy(f.value.data(), f.value.data() + n, mxGetPr(v));
+      if (complex) std::copy(f.imag.data(), f.imag.data() + n, mxGetPi(v));
     } else {
       v = f.value.size() == 1 ? mxCreateDoubleScalar(f.value(0)) : row(f.value);
     }
@@ -442,6 +447,182 @@ inline residtrace::ResidtraceModel<double> read_fitted(const Gateway& g,
   e.np = count(g, field(s, "np"), "a fitted model's np", 0);
   return m;
 }
+// The struct of a model m made from the model struct cur by the
+// saturation candidate (saturation_candidate) or the physical
+// realisations (physical_model.hpp): an output saturation added to its
+// output terms, an input channel replaced by a node (named "clip(z)",
+// param Fa, lo, hi, Ts, rule), or a physical realisation (a cascade keeps
+// the input, power and clip channels only and no output term); with the
+// field variant_ when variant is not empty.
+inline mxArray* write_saturation_model(
+    const mxArray* cur, const residtrace::ResidtraceModel<double>& m,
+    const std::string& variant, const mxArray* rule) {
+  using residtrace::ChannelKind;
+  mxArray* t = mxDuplicateArray(cur);
+  if (!m.has_phys && mxGetFieldNumber(t, "nlin") >= 0) {
+    mxRemoveField(t, mxGetFieldNumber(t, "nlin"));  // stale
+  }
+  const bool cascade =
+      m.has_phys && m.phys.kind == residtrace::PhysicalKind::kCascade;
+  const mxArray* ch = mxGetField(t, 0, "channels");
+  const std::size_t nc0 = ch != nullptr ? mxGetNumberOfElements(ch) : 0;
+  std::vector<std::size_t> src;
+  for (std::size_t j = 0; j < nc0; ++j) {
+    if (cascade) {
+      const mxArray* ty = mxGetField(ch, j, "type");
+      char buf[16] = {0};
+      if (ty != nullptr && mxIsChar(ty)) mxGetString(ty, buf, sizeof(buf));
+      const std::string s = buf;
+      if (s != "input" && s != "power" && s != "clip") continue;
+    }
+    src.push_back(j);
+  }
+  mxArray* nch = nullptr;
+  {
+    std::vector<std::string> f;
+    for (int i = 0; ch != nullptr && i < mxGetNumberOfFields(ch); ++i) {
+      f.push_back(mxGetFieldNameByNumber(ch, i));
+    }
+    std::vector<const char*> p;
+    for (const std::string& x : f) p.push_back(x.c_str());
+    nch = mxCreateStructMatrix(1, m.channels.size(), static_cast<int>(p.size()),
+                               p.data());
+  }
+  for (std::size_t j = 0; j < m.channels.size() && j < src.size(); ++j) {
+    for (int i = 0; i < mxGetNumberOfFields(ch); ++i) {
+      const mxArray* v = mxGetFieldByNumber(ch, src[j], i);
+      if (v != nullptr) {
+        mxSetFieldByNumber(nch, j, i, mxDuplicateArray(v));
+      }
+    }
+    const residtrace::StructureChannel<double>& k = m.channels[j];
+    set(nch, j, "B", row(k.B));
+    set(nch, j, "nb", mxCreateDoubleScalar(k.nb));
+    if (k.kind != ChannelKind::kNode) continue;
+    set(nch, j, "name", mxCreateString("clip(z)"));
+    set(nch, j, "type", mxCreateString("node"));
+    set(nch, j, "col", mxCreateDoubleScalar(k.col + 1));
+    const char* pf[] = {"Fa", "lo", "hi", "Ts", "rule"};
+    mxArray* P = mxCreateStructMatrix(1, 1, 5, pf);
+    mxSetField(P, 0, "Fa", row(k.node_f));
+    mxSetField(P, 0, "lo", mxCreateDoubleScalar(k.node_lo));
+    mxSetField(P, 0, "hi", mxCreateDoubleScalar(k.node_hi));
+    mxSetField(P, 0, "Ts", mxCreateDoubleScalar(k.node_ts));
+    mxSetField(
+        P, 0, "rule",
+        rule != nullptr && mxIsChar(rule)
+            ? mxDuplicateArray(rule)
+            : mxCreateString(k.node_rule == ctid::InterSample::kFoh ? "foh"
+                                                                    : "zoh"));
+    set(nch, j, "param", P);
+    set(nch, j, "nb", mxCreateDoubleScalar(k.nb));
+    set(nch, j, "nk", mxCreateDoubleScalar(k.nk));
+  }
+  set(t, 0, "channels", nch);
+  set(t, 0, "F", row(m.F));
+  bool node = false;
+  for (const auto& k : m.channels) node = node || k.kind == ChannelKind::kNode;
+  if (node || cascade) {
+    mxArray* fixed = mxCreateLogicalMatrix(1, m.fixed.size());
+    for (std::size_t i = 0; i < m.fixed.size(); ++i) {
+      mxGetLogicals(fixed)[i] = m.fixed[i];
+    }
+    set(t, 0, "fixed", fixed);
+  }
+  const mxArray* out = mxGetField(t, 0, "out");
+  const std::size_t no0 =
+      out != nullptr && mxIsStruct(out) ? mxGetNumberOfElements(out) : 0;
+  if (cascade) {
+    std::vector<std::string> f;
+    for (int i = 0;
+         out != nullptr && mxIsStruct(out) && i < mxGetNumberOfFields(out);
+         ++i) {
+      f.push_back(mxGetFieldNameByNumber(out, i));
+    }
+    std::vector<const char*> p;
+    for (const std::string& x : f) p.push_back(x.c_str());
+    set(t, 0, "out",
+        mxCreateStructMatrix(0, 0, static_cast<int>(p.size()), p.data()));
+  } else if (m.out.size() >= no0 && !m.out.empty()) {
+    mxArray* o = extended(out, m.out.size(), {"type", "c", "cstd", "omega"});
+    int first = -1;  // the first offset: an end stop's parameter
+    for (std::size_t k = 0; k < m.out.size() && first < 0; ++k) {
+      if (m.out[k].kind == residtrace::OutputTermKind::kOffset) {
+        first = static_cast<int>(k);
+      }
+    }
+    for (std::size_t k = 0; k < m.out.size(); ++k) {
+      const bool added = k >= no0;
+      const bool sat = m.out[k].kind == residtrace::OutputTermKind::kSaturation;
+      const bool stop_offset = m.has_phys && static_cast<int>(k) == first;
+      if (added) {
+        set(o, k, "type", mxCreateString(term_type(m.out[k].kind)));
+        set(o, k, "omega", mxCreateDoubleScalar(m.out[k].omega));
+      }
+      if (added || sat) {
+        set(o, k, "c", row(m.out[k].c));
+        set(o, k, "cstd", row(m.out[k].cstd));
+      } else if (stop_offset) {
+        set(o, k, "c", row(m.out[k].c));
+      }
+    }
+    set(t, 0, "out", o);
+  }
+  if (m.has_phys) {
+    const residtrace::PhysicalModel<double>& P = m.phys;
+    // the realisation's fields set in the struct it had (its other fields
+    // kept) or in a new one
+    const mxArray* p0 = mxGetField(t, 0, "phys");
+    mxArray* ps =
+        p0 != nullptr && mxIsStruct(p0) && mxGetNumberOfElements(p0) == 1
+            ? mxDuplicateArray(p0)
+            : mxCreateStructMatrix(1, 1, 0, nullptr);
+    auto put = [&](const char* name, mxArray* v) { set(ps, 0, name, v); };
+    auto num = [](double v) { return mxCreateDoubleScalar(v); };
+    if (!cascade) {
+      put("kind", mxCreateString("stop"));
+      put("lo", num(P.lo));
+      put("hi", num(P.hi));
+      put("substeps", num(P.substeps));
+      put("yscale", num(P.yscale));
+    } else {
+      put("kind", mxCreateString("cascade"));
+      put("g", mxCreateString(P.sqrt_nodes ? "sqrt" : "lin"));
+      put("d", num(P.d));
+      put("alpha", num(P.alpha));
+      put("gamma", num(P.gamma));
+      put("c", num(P.c));
+      put("hi", num(P.hi));
+      put("substeps", num(P.substeps));
+      put("wbar", row(P.wbar));
+      put("yscale", num(P.yscale));
+      if (P.has_h0) put("h0", num(P.h0));
+      if (P.has_spill) put("spill", num(P.spill));
+      if (P.has_yhi) put("yhi", num(P.yhi));
+      if (P.has_z0) put("z0", num(P.z0));
+    }
+    if (P.theta.size() > 0) {
+      put("theta", matrix(P.theta));
+      put("cov", matrix(P.cov));
+    }
+    set(t, 0, "phys", ps);
+  }
+  mxArray* r = write_model(t, m);
+  mxDestroyArray(t);
+  if (!m.estimate.set) {
+    // a template (no fit): its ok as it was
+    const mxArray* ok = mxGetField(cur, 0, "ok");
+    if (ok != nullptr) {
+      set(r, 0, "ok", mxDuplicateArray(ok));
+    } else {
+      mxRemoveField(r, mxGetFieldNumber(r, "ok"));
+    }
+  }
+  if (!variant.empty()) {
+    set(r, 0, "variant_", mxCreateString(variant.c_str()));
+  }
+  return r;
+}
 
 inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
                              int nrhs, const mxArray* prhs[]) {
@@ -463,7 +644,7 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   // as they do a linear model: neither is fitted with it; the
   // state-nonlinearity candidate reports a realisation itself)
   if (cur.has_phys && effect != "initial_state" && effect != "colored_noise" &&
-      effect != "state_nonlinearity") {
+      effect != "state_nonlinearity" && effect != "saturation") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
@@ -473,7 +654,21 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   opt.finish();
   ctx.channel_names = channel_names(g, prhs[3]);
   residtrace::Candidate<double> c;
-  if (effect == "state_nonlinearity") {
+  if (effect == "saturation") {
+    if (cur.estimate.e.size() != ctx.D.y.size()) {
+      g.fail("dimensionMismatch", "cur.e_est needs one error a sample");
+    }
+    g.check(residtrace::saturation_candidate<double>(cur, ctx, &c));
+    residtrace::Candidate<double> bare = c;
+    bare.has_model = false;
+    plhs[0] = write_candidate(prhs[3], bare);
+    if (c.has_model) {
+      set(plhs[0], 0, "model",
+          write_saturation_model(prhs[3], c.model, c.variant,
+                                 field(prhs[4], "intersample")));
+    }
+    return;
+  } else if (effect == "state_nonlinearity") {
     const bool has = !empty(cascade_struct);
     residtrace::ResidtraceModel<double> cascade;
     if (has) cascade = read_fitted(g, cascade_struct);
@@ -599,12 +794,65 @@ inline void select_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
   if (nlhs > 1) plhs[1] = write_table(table);
 }
 
+inline void physcascade_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                               int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "physcascade takes (fname, 'physcascade', cur, D, options)");
+  }
+  if (nlhs > 2) g.fail("badInput", "physcascade has at most 2 outputs");
+  const auto cur = read_model(g, prhs[2]);
+  OptionsReader opt(g, prhs[4]);
+  const bool sq = opt.choice<bool>("g", {{"sqrt", true}, {"lin", false}}, true);
+  const bool clip = opt.flag("clip", false);
+  const residtrace::FitRecord<double> D = read_fit_record(g, prhs[3]);
+  opt.finish();
+  residtrace::ResidtraceModel<double> t;
+  bool made = false;
+  std::string why;
+  g.check(
+      residtrace::cascade_template<double>(cur, D, sq, clip, &t, &made, &why));
+  plhs[0] = made ? write_saturation_model(prhs[2], t, "", nullptr)
+                 : mxCreateDoubleMatrix(0, 0, mxREAL);
+  if (nlhs > 1) plhs[1] = mxCreateString(why.c_str());
+}
+
+inline void physmodelfit_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                                int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "physmodelfit takes (fname, 'physmodelfit', tmpl, D, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "physmodelfit has one output");
+  const auto tmpl = read_model(g, prhs[2]);
+  if (!tmpl.has_phys) {
+    g.fail("badInput", "the template has no physical realisation");
+  }
+  OptionsReader opt(g, prhs[4]);
+  const int maxiter = opt.integer("maxiter");
+  const residtrace::FitRecord<double> D = read_fit_record(g, prhs[3]);
+  opt.finish();
+  if (maxiter < 1) g.fail("badOption", "option 'maxiter' must be >= 1");
+  residtrace::ResidtraceModel<double> m;
+  g.check(residtrace::fit_physical_model<double>(tmpl, D, maxiter, &m));
+  if (!m.estimate.ok) {
+    plhs[0] = mxDuplicateArray(prhs[2]);
+    set(plhs[0], 0, "ok", mxCreateLogicalScalar(false));
+    return;
+  }
+  plhs[0] = write_saturation_model(prhs[2], m, "", nullptr);
+}
+
 inline bool dispatch(const std::string& method, const Gateway& g, int nlhs,
                      mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   if (method == "candidate") {
     candidate_method(g, nlhs, plhs, nrhs, prhs);
   } else if (method == "select") {
     select_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "physcascade") {
+    physcascade_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "physmodelfit") {
+    physmodelfit_method(g, nlhs, plhs, nrhs, prhs);
   } else {
     return false;
   }

@@ -35,65 +35,12 @@
 ## samples fitted); @code{theta}, @code{cov}: those of
 ## the linear part (for a cascade, its linearisation, without covariance).
 ## The fit is the core's
-## (@file{core/include/ctid/apps/residtrace/physical_fit.hpp}, gateway
-## @code{effect_sim_mex}, method "physfit"); this function converts the
-## arguments.
+## (@file{core/include/ctid/apps/residtrace/physical_model.hpp},
+## fit_physical_model, on @file{physical_fit.hpp}; gateway
+## @code{effect_sim_mex}, method "physmodelfit").
 ## @end deftypefn
 
 function model = residtrace_physfit (tmpl, D, ctx)
-  model = tmpl;
-  model.ok = false;
-  [W, o] = residtrace_physopts (tmpl, D.u, D.Ts);
-  o.initial_state = isfield (D, "initial_state") && D.initial_state;
-  o.maxiter = ctx.maxiter;
-  [fit, e] = effect_sim_mex ("residtrace", "physfit", W, D.y(:), o);
-  if (! fit.ok)
-    return;
-  endif
-  P = model.phys;
-  if (strcmp (P.kind, "stop"))
-    model.F = fit.F;
-    for j = 1:numel (model.channels)
-      nb = numel (model.channels(j).B);
-      model.channels(j).B = fit.B(end-nb+1:end, j).';
-    endfor
-    k = find (strcmp ({model.out.type}, "offset"), 1);
-    if (! isempty (k))
-      model.out(k).c = fit.offset;
-    endif
-    P.lo = fit.lo; P.hi = fit.hi;
-  else
-    for j = 1:numel (model.channels)
-      model.channels(j).B = fit.b(j);
-    endfor
-    model.F = fit.F;
-    for f = {"d", "alpha", "gamma", "c", "hi", "yhi", "spill", "h0", "z0"}
-      if (! isempty (fit.(f{1})) || isfield (P, f{1}))
-        P.(f{1}) = fit.(f{1});
-      endif
-    endfor
-  endif
-  th = fit.theta;
-  np = numel (th);
-  model.np = np;
-  model.s2 = fit.s2;
-  model.bic = fit.bic;
-  model.e_est = e;
-  P.theta = th;
-  P.cov = fit.cov;
-  model.phys = P;
-  ## the linear part's parameters as every model carries them (free f's,
-  ## then the numerators): for an end stop the first ones of th; for a
-  ## cascade its linearisation (no covariance)
-  nl = sum (! model.fixed) + sum ([model.channels.nb]);
-  if (strcmp (P.kind, "stop"))
-    model.theta = th(1:nl);
-    model.cov = fit.cov(1:nl, 1:nl);
-  else
-    F = model.F / model.F(1);
-    model.theta = [F(1 + find (! model.fixed)), ...
-                   [model.channels.B] / model.F(1)](:);
-    model.cov = NaN (nl);
-  endif
-  model.ok = true;
+  model = effect_sim_mex ("residtrace", "physmodelfit", tmpl, D,
+                         struct ("maxiter", ctx.maxiter));
 endfunction

@@ -87,8 +87,10 @@ struct EvidenceField {
   bool is_text = false;
   std::string text;
   Vector<S> value;
-  Vector<S> imag;  // the imaginary parts of a complex value; empty: real
-  bool roots = false;  // value and imag: a column of roots
+  // the imaginary parts of complex values (empty: real) and whether the
+  // values are a column (roots, poles) rather than a row
+  Vector<S> imag;
+  bool column = false;
 };
 
 template <typename S>
@@ -105,7 +107,7 @@ struct Evidence {
   void add(const std::string& name, const std::vector<std::complex<S>>& r) {
     EvidenceField<S> f;
     f.name = name;
-    f.roots = true;
+    f.column = true;
     f.value.resize(static_cast<Eigen::Index>(r.size()));
     f.imag.resize(f.value.size());
     for (std::size_t i = 0; i < r.size(); ++i) {

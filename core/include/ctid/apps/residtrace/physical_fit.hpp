@@ -79,6 +79,10 @@ struct PhysicalModel {
   bool has_yhi = false, has_spill = false, has_h0 = false, has_z0 = false;
   S yhi = 0, spill = 0, h0 = 0, z0 = 0;
   Vector<S> wbar;
+  // the parameters of its last fit (pack_physical) and their covariance
+  // (fit_physical_model, physical_model.hpp); empty before a fit
+  Vector<S> theta;
+  Matrix<S> cov;
 };
 
 // The denominator of a cascade linearised at its steady state for the

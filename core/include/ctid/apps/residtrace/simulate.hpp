@@ -314,6 +314,44 @@ Status effect_simulate(const ResidtraceModel<S>& model, const Matrix<S>& u,
 
 }  // namespace simulate_detail
 
+// The channel signals of a physical realisation on u (N-by-nu): from
+// rest, each delayed by its nk samples (zeros before).
+template <typename S>
+Status delayed_channel_signals(const std::vector<StructureChannel<S>>& chans,
+                               const Matrix<S>& u, Matrix<S>* W) {
+  const Eigen::Index N = u.rows();
+  Status status = simulate_detail::channel_signals_at_rest(chans, u, W);
+  if (!status.ok()) return status;
+  for (Eigen::Index j = 0; j < W->cols(); ++j) {
+    const Eigen::Index k = chans[j].nk;
+    if (k <= 0) continue;
+    const Vector<S> w = W->col(j);
+    W->col(j).setZero();
+    if (k < N) W->col(j).tail(N - k) = w.head(N - k);
+  }
+  return Status::Ok();
+}
+
+// The output y and inner state z (the position for an end stop) of the
+// physical realisation of model (has_phys) on u, open loop from rest.
+template <typename S>
+Status simulate_physical_model(const ResidtraceModel<S>& model,
+                               const Matrix<S>& u, S ts, Vector<S>* y,
+                               Vector<S>* z) {
+  if (y == nullptr || z == nullptr) return bad_input("no result");
+  if (!model.has_phys) return bad_input("the model has no realisation");
+  Matrix<S> W;
+  Status status = delayed_channel_signals(model.channels, u, &W);
+  if (!status.ok()) return status;
+  Matrix<S> Y, Z;
+  status = simulate_physical<S>({physical_realisation(model)}, W.data(),
+                                u.rows(), W.cols(), ts, &Y, &Z);
+  if (!status.ok()) return status;
+  *y = Y.col(0);
+  *z = Z.col(0);
+  return Status::Ok();
+}
+
 // The output of the model on u (N-by-nu) from rest: see the head of this
 // file. loop: the closed loop (nullptr: open); thm: the path of drifting
 // parameters (nullptr: constant).
@@ -354,21 +392,9 @@ Status simulate_model(const ResidtraceModel<S>& model, const Matrix<S>& u, S ts,
     if (loop != nullptr || thm != nullptr) {
       return not_supported("a physical realisation in closed loop or drifting");
     }
-    Matrix<S> W;
-    Status status = channel_signals_at_rest(model.channels, u, &W);
+    Vector<S> z;
+    Status status = simulate_physical_model<S>(model, u, ts, &sim->y, &z);
     if (!status.ok()) return status;
-    for (Eigen::Index j = 0; j < W.cols(); ++j) {
-      const Eigen::Index k = model.channels[j].nk;
-      if (k <= 0) continue;
-      const Vector<S> w = W.col(j);
-      W.col(j).setZero();
-      if (k < N) W.col(j).tail(N - k) = w.head(N - k);
-    }
-    Matrix<S> y, z;
-    status = simulate_physical<S>({physical_realisation(model)}, W.data(), N,
-                                  W.cols(), ts, &y, &z);
-    if (!status.ok()) return status;
-    sim->y = y.col(0);
     sim->x = sim->y;
     return Status::Ok();
   }
