@@ -50,14 +50,6 @@ function tf = isfield_domain (dat)
   end_try_catch
 endfunction
 
-function t = time_arg (d)
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
-endfunction
-
 function ok = isorder (v)
   ok = isnumeric (v) && isreal (v) && all (isfinite (v(:))) ...
        && all (v(:) == fix (v(:))) && all (v(:) >= 0);
@@ -157,7 +149,8 @@ function o = tfcoe_options (fname, o, T)
 endfunction
 
 function [theta, P, info] = call_gateway (fname, d, opts)
-  [theta, P, info] = pem_mex (fname, d.y, d.u, time_arg (d), opts);
+  [theta, P, info] = pem_mex (fname, d.y, d.u, merge (d.uniform, d.Ts, d.t),
+                              opts);
 endfunction
 
 function [M, info] = arx_model (fname, d, rest)
@@ -525,7 +518,8 @@ function [starts, tdmax, search] = srivc_delay_start (fname, d, np, nz, td0,
   if (tdmax_given)
     given.tdmax = o.tdmax;
   endif
-  r = refined_iv_mex (fname, "delay_range", d.y, d.u, time_arg (d), given);
+  r = refined_iv_mex (fname, "delay_range", d.y, d.u,
+                      merge (d.uniform, d.Ts, d.t), given);
   tdmax = r.tdmax;
   ## tfsrivc's options (the core's table: its tolerances), 30 iterations
   s = o.search;

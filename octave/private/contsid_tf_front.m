@@ -134,7 +134,8 @@ function [M, o, info] = contsid_tf_front (fname, args)
            "[TdMin, TdMax] = [%g, %g]"], fname, td0, o.tdmin, o.tdmax);
   endif
   ## TdMax and StepMax not given: the data's (core delay_search_defaults.hpp)
-  r = refined_iv_mex (fname, "delay_range", d.y, d.u, time_arg (d),
+  r = refined_iv_mex (fname, "delay_range", d.y, d.u,
+                      merge (d.uniform, d.Ts, d.t),
                       struct ("tdmin", o.tdmin, "numtd", o.numtd,
                               "tdmax", o.tdmax, "stepmax", o.stepmax,
                               "td0", td0));
@@ -233,13 +234,5 @@ function [M, o, info] = contsid_tf_front (fname, args)
   if (! converged && ! init)
     warning ([fname ":notConverged"], "%s: %s; the last iterate is returned",
              fname, reason);
-  endif
-endfunction
-
-function t = time_arg (d)
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
   endif
 endfunction
