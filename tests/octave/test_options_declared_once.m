@@ -348,7 +348,6 @@ function check_tfsrivc_options ()
   endfor
   default_of = @(n) T(strcmp ({T.name}, n)).default;
   text = regexprep (get_help_text ("tfsrivc"), '\s+', " ");
-  words = struct ("on", "true", "off", "false");
   stated = {"tdmin", 'NumTd range and grid [^(]*\(default ([-+0-9.eE]+);';
             "numtd", '; ([0-9]+) points\)';
             "maxiter", '@item MaxIter [^(]*\(([0-9]+)\)';
@@ -358,18 +357,7 @@ function check_tfsrivc_options ()
             "focusorder", 'order FocusOrder \(default ([0-9]+)\)';
             "fixtd", "keep the delay \\(default '(on|off)'\\)";
             "integration", "s = 0\\); default '(on|off)'"};
-  for k = 1:rows (stated)
-    t = regexp (text, stated{k, 2}, "tokens", "once");
-    assert (numel (t) == 1, ["tfsrivc: the help states no default of ", ...
-                             stated{k, 1}]);
-    v = t{1};
-    if (isfield (words, v))
-      v = words.(v);
-    endif
-    assert (same_default (v, default_of (stated{k, 1})),
-            sprintf ("tfsrivc: the help says %s %s, the core %s",
-                     stated{k, 1}, v, default_of (stated{k, 1})));
-  endfor
+  check_stated_defaults ("tfsrivc", text, stated, default_of);
 
   ## the defaults tfsrivc_init's and tfrivc's helps state are the table's
   ## too (they take tfsrivc's options)
@@ -428,17 +416,25 @@ function check_tfcoe_options ()
             "stepreduction", 'convention, default ([0-9.]+)\); a value';
             "focusorder", 'integer 1\.\.10 \(default ([0-9]+)\)';
             "integration", 'Default @qcode\{"(on|off)"\}\. Not applicable'};
+  check_stated_defaults ("tfcoe", text, stated, default_of);
+endfunction
+
+## Each row of STATED names a table option and the pattern that reads its
+## default from TEXT, FNAME's help with its white space folded; the default
+## read there, in the help's own wording ('on' and 'off' for true and
+## false), is the table's (DEFAULT_OF (name), as text).
+function check_stated_defaults (fname, text, stated, default_of)
   words = struct ("on", "true", "off", "false");
   for k = 1:rows (stated)
     t = regexp (text, stated{k, 2}, "tokens", "once");
-    assert (numel (t) == 1, ["tfcoe: the help states no default of ", ...
-                             stated{k, 1}]);
+    assert (numel (t) == 1, sprintf ("%s: the help states no default of %s",
+                                     fname, stated{k, 1}));
     v = t{1};
     if (isfield (words, v))
       v = words.(v);
     endif
     assert (same_default (v, default_of (stated{k, 1})),
-            sprintf ("tfcoe: the help says %s %s, the core %s",
+            sprintf ("%s: the help says %s %s, the core %s", fname,
                      stated{k, 1}, v, default_of (stated{k, 1})));
   endfor
 endfunction
