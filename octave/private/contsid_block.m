@@ -76,11 +76,7 @@ function [M, Infos, yhat] = contsid_block (fname, args)
   init = [];
   arma = "pem";
   read_options ();
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   ## The start of the first refined-IV pass: the MISO [f B_1 .. B_l] of
   ## the basis channels (contsid_init_method: the engine's, LSSVF, IVSVF
   ## or a model, e.g. a previous MISO model).

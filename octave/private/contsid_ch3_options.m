@@ -78,11 +78,7 @@ endfunction
 
 ## Eq. (3.54) through the core (offline_mex's "scaling" method).
 function m = svf_scaling (fname, d, orders, o)
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   try
     m = offline_mex (fname, d.y, d.u, t,
                      struct ("intersample", d.intersample, "na", orders.na,

@@ -46,11 +46,7 @@ function [tsiv, info, thm, yh] = contsid_converge (fname, d, nn, rls, det,
   ## (recursive/rlssvf_convergence.hpp: Cao and Rhinehart's steady-state
   ## test on the output error, the estimates' change, trace P / trace P0),
   ## which checks the detector's options before the run.
-  if (d.uniform)
-    timing = d.Ts;
-  else
-    timing = d.t;
-  endif
+  timing = merge (d.uniform, d.Ts, d.t);
   args = {"lambda_svf", rls.lambda_svf, "adm", rls.adm, "adg", rls.adg, ...
           "svf", rls.svf, "P0", rls.P0};
   if (! isempty (rls.th0))

@@ -26,11 +26,7 @@ function p = contsid_rlssvf_args (fname, varargin)
   o = contsid_recursive_options (fname, opts, orders.np, d);
   o = contsid_ch3_options (fname, opts, orders, d, o);
   o = extend_for_initial_conditions (o, orders);
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   adm = o.adm;
   if (ischar (adm) && strcmp (adm, "lmr"))
     adm = "ff";                          # the forgetting factor of eq. 3.82

@@ -48,11 +48,7 @@ function [num, den, td, P, info] = contsid_tfsrivc (fname, d, np, nz, o)
     error ([fname ":notSupported"], "%s: one input only (got %d)", fname,
            columns (d.u));
   endif
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   e = struct ("nf", np, "nb", nz + 1, "nk", 0,
               "intersample", d.intersample, "maxiter", o.maxiter,
               "tol", o.tolpar);
