@@ -105,10 +105,7 @@ function [ys, estInfo, varargout] = comparec_body (varargin)
                                     "LTI model, not a recursive estimate"]);
     endif
     if (any (strcmpi (rest{2}, {"e", "estimate"})))
-      t = d.t;
-      if (d.uniform)
-        t = d.Ts;
-      endif
+      t = merge (d.uniform, d.Ts, d.t);
       M = varargin{d.nconsumed + 1};
       if (isa (M, "idtraced"))
         error ("comparec:notSupported",

@@ -259,10 +259,7 @@ endfunction
 ## TdMax when not given ([]) and StepMax: the data's (core
 ## delay_search_defaults.hpp through refined_iv_mex's 'delay_range').
 function o = delay_range (d, o)
-  t = d.t;
-  if (d.uniform)
-    t = d.Ts;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   r = refined_iv_mex ("procsrivc", "delay_range", d.y, d.u, t,
                       struct ("tdmin", o.tdmin, "numtd", o.numtd,
                               "tdmax", o.tdmax));

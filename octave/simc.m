@@ -549,10 +549,7 @@ function [u, t, intersample] = input_data (fname, data)
   if (ny > 0)
     d = contsid_getdata (fname, data);
     u = d.u;
-    t = d.t;
-    if (d.uniform)
-      t = d.Ts;
-    endif
+    t = merge (d.uniform, d.Ts, d.t);
     intersample = d.intersample;
     return;
   endif

@@ -40,11 +40,7 @@ function [d, yhat, rest] = contsid_model_output (fname, args)
     rest(k:k+1) = [];
     contsid_carried_levels ([], 0, fname, levels);   # checks the value
   endif
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   try
     if (isnumeric (M))
       if (isempty (rest) || ! isnumeric (rest{1}))

@@ -68,11 +68,7 @@ function [M, RT2, YIC, info] = contsid_offline (fname, args)
   if (refined && ! isempty (opts.lambda))
     opts.lambda_svf = opts.lambda;
   endif
-  if (d.uniform)
-    t = d.Ts;
-  else
-    t = d.t;
-  endif
+  t = merge (d.uniform, d.Ts, d.t);
   if (! ischar (opts.svf)
       || ! any (strcmpi (opts.svf, {"normalised", "normalized", "ordinary"})))
     error ([fname ":badOption"], "%s: svf must be 'normalised' or 'ordinary'",
