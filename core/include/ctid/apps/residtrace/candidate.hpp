@@ -319,6 +319,31 @@ Status select_variant(const std::vector<Variant<S>>& variants,
   return Status::Ok();
 }
 
+// The variants fitted and compared (select_variant) for the candidate c:
+// the variant kept becomes its model (c applicable, with the variant's
+// name and added channels); when none converged c failed ("the estimation
+// failed").
+template <typename S>
+Status adopt_best_variant(const std::vector<Variant<S>>& variants,
+                          const CandidateContext<S>& ctx, Candidate<S>* c) {
+  int best = -1;
+  ResidtraceModel<S> m;
+  Status s = select_variant<S>(variants, ctx, &best, &m, &c->variants);
+  if (!s.ok()) return s;
+  if (best < 0) {
+    c->reason = "the estimation failed";
+    c->failed = true;
+    return Status::Ok();
+  }
+  c->applicable = true;
+  c->has_model = true;
+  c->model = m;
+  c->chosen = best;
+  c->added_channels = variants[best].channel_names;
+  c->variant = variants[best].name;
+  return Status::Ok();
+}
+
 // The offset candidate (head of this file).
 template <typename S>
 Status offset_candidate(const ResidtraceModel<S>& cur,
@@ -371,21 +396,9 @@ Status offset_candidate(const ResidtraceModel<S>& cur,
     c->reason = "the model has its offsets already";
     return Status::Ok();
   }
-  int best = -1;
-  ResidtraceModel<S> m;
-  Status s = select_variant<S>(variants, ctx, &best, &m, &c->variants);
-  if (!s.ok()) return s;
-  if (best < 0) {
-    c->reason = "the estimation failed";
-    c->failed = true;
-    return Status::Ok();
-  }
-  c->applicable = true;
-  c->has_model = true;
-  c->model = m;
-  c->chosen = best;
-  c->added_channels = variants[best].channel_names;
-  c->variant = variants[best].name;
+  Status s = adopt_best_variant<S>(variants, ctx, c);
+  if (!s.ok() || !c->applicable) return s;
+  const ResidtraceModel<S>& m = c->model;
   c->nadd = 1;
   if (c->variant == "input offset") {
     const ModelEstimate<S>& e = m.estimate;

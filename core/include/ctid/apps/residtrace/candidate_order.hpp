@@ -109,20 +109,9 @@ Status order_candidate(const ResidtraceModel<S>& cur,
     c->reason = "no admissible order";
     return Status::Ok();
   }
-  int best = -1;
-  ResidtraceModel<S> m;
-  s = select_variant<S>(variants, ctx, &best, &m, &c->variants);
-  if (!s.ok()) return s;
-  if (best < 0) {
-    c->reason = "the estimation failed";
-    c->failed = true;
-    return Status::Ok();
-  }
-  c->applicable = true;
-  c->has_model = true;
-  c->model = m;
-  c->chosen = best;
-  c->variant = variants[best].name;
+  s = adopt_best_variant<S>(variants, ctx, c);
+  if (!s.ok() || !c->applicable) return s;
+  const ResidtraceModel<S>& m = c->model;
   c->nadd = m.estimate.np - cur.estimate.np;
   const std::vector<std::complex<S>> p = roots_descending<S>(m.F);
   const std::vector<std::complex<S>> z =

@@ -142,21 +142,9 @@ Status state_candidate(const ResidtraceModel<S>& cur,
     v.fitted = true;
     variants.push_back(v);
   }
-  int best = -1;
-  ResidtraceModel<S> m;
-  Status s = select_variant<S>(variants, ctx, &best, &m, &c->variants);
-  if (!s.ok()) return s;
-  if (best < 0) {
-    c->reason = "the estimation failed";
-    c->failed = true;
-    return Status::Ok();
-  }
-  c->applicable = true;
-  c->has_model = true;
-  c->model = m;
-  c->chosen = best;
-  c->added_channels = variants[best].channel_names;
-  c->variant = variants[best].name;
+  Status s = adopt_best_variant<S>(variants, ctx, c);
+  if (!s.ok() || !c->applicable) return s;
+  const ResidtraceModel<S>& m = c->model;
   const int nadd = m.estimate.np - cur.estimate.np;
   if (m.has_phys) {
     // a realisation fitted on its simulation error: its parameters are
