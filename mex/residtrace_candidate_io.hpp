@@ -642,9 +642,11 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
   }
   // (the initial state and the noise model extend a physical realisation
   // as they do a linear model: neither is fitted with it; the
-  // state-nonlinearity candidate reports a realisation itself)
+  // state-nonlinearity candidate reports a realisation itself; the delay
+  // refits it)
   if (cur.has_phys && effect != "initial_state" && effect != "colored_noise" &&
-      effect != "state_nonlinearity" && effect != "saturation") {
+      effect != "state_nonlinearity" && effect != "saturation" &&
+      effect != "delay") {
     g.fail("notSupported",
            "a physical realisation holds no " + effect + " candidate");
   }
@@ -713,6 +715,29 @@ inline void candidate_method(const Gateway& g, int nlhs, mxArray* plhs[],
     g.check(residtrace::sinusoid_candidate<double>(cur, ctx, &c));
   } else if (effect == "delay") {
     g.check(residtrace::delay_candidate<double>(cur, ctx, &c));
+    if (c.has_model && c.model.has_phys) {
+      // the realisation refitted: written as the physical fits are, into
+      // cur with the channels' new delays
+      residtrace::Candidate<double> bare = c;
+      bare.has_model = false;
+      plhs[0] = write_candidate(prhs[3], bare);
+      mxArray* t = mxDuplicateArray(prhs[3]);
+      mxArray* ch = mxGetField(t, 0, "channels");
+      for (std::size_t j = 0; ch != nullptr && j < c.model.channels.size() &&
+                              j < mxGetNumberOfElements(ch);
+           ++j) {
+        const mxArray* nk = mxGetField(ch, j, "nk");
+        const double nk0 = nk != nullptr && mxIsDouble(nk) && !mxIsEmpty(nk)
+                               ? mxGetScalar(nk)
+                               : 0.0;
+        if (nk0 != c.model.channels[j].nk) {
+          set(ch, j, "nk", mxCreateDoubleScalar(c.model.channels[j].nk));
+        }
+      }
+      set(plhs[0], 0, "model", write_saturation_model(t, c.model, "", nullptr));
+      mxDestroyArray(t);
+      return;
+    }
   } else if (effect == "initial_state") {
     g.check(residtrace::x0_candidate<double>(cur, ctx, &c));
   } else if (effect == "colored_noise") {

@@ -21,6 +21,13 @@
 // mimics a delay that is rounded to whole samples; with its fraction the
 // delay is compared with the order candidate on the same footing.
 //
+// A model with a physical realisation (an end stop or a tank cascade,
+// physical_model.hpp) is fitted by its own simulation error
+// (fit_physical_model) at each whole delay, the screening with the same
+// few iterations, the two best refitted from their screening estimates;
+// its delay stays whole samples (the fraction enters the linear
+// structure fit only).
+//
 // Evidence: the chosen delay (samples and seconds) and the lag at which
 // the prewhitened cross-correlation of the current residual with the
 // channel's input peaks (statistics.hpp, whiteness_statistics, over
@@ -36,12 +43,26 @@
 
 #include "ctid/apps/residtrace/candidate.hpp"
 #include "ctid/apps/residtrace/model_fit.hpp"
+#include "ctid/apps/residtrace/physical_model.hpp"
 #include "ctid/apps/residtrace/statistics.hpp"
 #include "ctid/base/status.hpp"
 
 namespace ctid::residtrace {
 
 namespace delay_detail {
+
+// The template t fitted from the denominator start: by the structure fit,
+// or by its simulation error when it has a physical realisation (which
+// starts from its own parameters).
+template <typename S>
+Status fit_template(const ResidtraceModel<S>& t, const FitRecord<S>& D,
+                    const Vector<S>& start, const ModelFitSettings& settings,
+                    ResidtraceModel<S>* m) {
+  if (t.has_phys) {
+    return fit_physical_model<S>(t, D, settings.max_iterations, m);
+  }
+  return fit_model<S>(t, D, {start}, settings, m);
+}
 
 // The delay of channel j of tmpl set to d samples (whole part nk, the
 // fraction in param), fitted from tmpl's denominator; its BIC, infinite
@@ -155,7 +176,7 @@ Status delay_candidate(const ResidtraceModel<S>& cur,
       ResidtraceModel<S> t = cur;
       t.channels[j].nk += dd;
       ResidtraceModel<S> m;
-      Status s = fit_model<S>(t, ctx.D, {cur.F}, quick, &m);
+      Status s = fit_template<S>(t, ctx.D, cur.F, quick, &m);
       if (!s.ok()) return s;
       if (m.estimate.ok) trials.push_back({j, dd, m.estimate.bic, m});
     }
@@ -179,7 +200,7 @@ Status delay_candidate(const ResidtraceModel<S>& cur,
   for (std::size_t r = 0; r < std::min<std::size_t>(2, idx.size()); ++r) {
     const Trial& tr = trials[idx[r]];
     ResidtraceModel<S> m;
-    Status s = fit_model<S>(tr.m, ctx.D, {tr.m.F}, ctx.fit, &m);
+    Status s = fit_template<S>(tr.m, ctx.D, tr.m.F, ctx.fit, &m);
     if (!s.ok()) return s;
     if (m.estimate.ok && (!found || m.estimate.bic < best.estimate.bic)) {
       found = true;
@@ -193,7 +214,7 @@ Status delay_candidate(const ResidtraceModel<S>& cur,
     c->failed = true;
     return Status::Ok();
   }
-  if (!ctx.D.closed) {
+  if (!ctx.D.closed && !cur.has_phys) {
     Status s = refine_fraction<S>(&best, bj, cur, ctx, quick);
     if (!s.ok()) return s;
   }
