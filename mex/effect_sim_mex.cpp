@@ -102,8 +102,8 @@
 //     struct array with fields name, value and std; options: ts.
 //   The judgement of candidates: the methods "accept", "score", "judge"
 //   and "noise_gate" (residtrace_judge_io.hpp).
-//   The candidates: the methods "candidate", "select", "physcascade" and
-//   "physmodelfit" (residtrace_candidate_io.hpp).
+//   The candidates: the methods "candidate", "select", "physcascade",
+//   "physmodelfit" and "driftsegments" (residtrace_candidate_io.hpp).
 //   The realisation's fields: kind ("stop" or "cascade"), ts, substeps,
 //   yscale; "stop": F (1-by-(n+1)), fixed (1-by-n, 0 or 1), B (n-by-m,
 //   channel j's numerator right-aligned in column j), nb (1-by-m numerator

@@ -46,6 +46,12 @@
 //     (physical_model.hpp, cascade_template): t the model struct ([] with
 //     the reason why when there is none); options: g ("sqrt" or "lin"),
 //     clip (an inner level).
+//   s = effect_sim_mex (fname, "driftsegments", cur, D, options)
+//     the segment test of the drift candidate (candidate_drift.hpp,
+//     drift_segments) of the model cur (its theta, cov and s2 read):
+//     s.reason ("" when the segments disagree), failed, K, L, segments,
+//     theta (segments-by-np), P (np-by-np-by-segments), tmid, chi2, dof,
+//     p, slope, tval, shape; options: alpha and those of read_context.
 //   model = effect_sim_mex (fname, "physmodelfit", tmpl, D, options)
 //     the model tmpl with a physical realisation fitted on D by its
 //     simulation error (physical_model.hpp, fit_physical_model); ok false
@@ -61,6 +67,7 @@
 #include "ctid/apps/residtrace/candidate_colored.hpp"
 #include "ctid/apps/residtrace/candidate_coulomb.hpp"
 #include "ctid/apps/residtrace/candidate_delay.hpp"
+#include "ctid/apps/residtrace/candidate_drift.hpp"
 #include "ctid/apps/residtrace/candidate_order.hpp"
 #include "ctid/apps/residtrace/candidate_saturation.hpp"
 #include "ctid/apps/residtrace/candidate_sinusoid.hpp"
@@ -868,6 +875,54 @@ inline void physmodelfit_method(const Gateway& g, int nlhs, mxArray* plhs[],
   plhs[0] = write_saturation_model(prhs[2], m, "", nullptr);
 }
 
+inline void driftsegments_method(const Gateway& g, int nlhs, mxArray* plhs[],
+                                 int nrhs, const mxArray* prhs[]) {
+  if (nrhs != 5) {
+    g.fail("badInput",
+           "driftsegments takes (fname, 'driftsegments', cur, D, options)");
+  }
+  if (nlhs > 1) g.fail("badInput", "driftsegments has one output");
+  auto cur = read_model(g, prhs[2]);
+  cur.estimate.theta = values(g, field(prhs[2], "theta"), "model.theta");
+  cur.estimate.s2 = number(g, field(prhs[2], "s2"), "model.s2", NAN);
+  OptionsReader opt(g, prhs[4]);
+  const double alpha = opt.scalar("alpha");
+  auto ctx = read_context(g, prhs[3], opt);
+  opt.finish();
+  if (!(alpha > 0 && alpha < 1)) {
+    g.fail("badOption", "option 'alpha' must lie in (0, 1)");
+  }
+  residtrace::DriftSegments<double> r;
+  g.check(residtrace::drift_segments<double>(cur, ctx, alpha, &r));
+  const char* f[] = {"reason", "failed", "K",    "L",    "segments",
+                     "theta",  "P",      "tmid", "chi2", "dof",
+                     "p",      "slope",  "tval", "shape"};
+  plhs[0] = mxCreateStructMatrix(1, 1, 14, f);
+  mxArray* s = plhs[0];
+  auto scalar = [](double v) { return mxCreateDoubleScalar(v); };
+  mxSetField(s, 0, "reason", mxCreateString(r.reason.c_str()));
+  mxSetField(s, 0, "failed", mxCreateLogicalScalar(r.failed));
+  mxSetField(s, 0, "K", scalar(r.K));
+  mxSetField(s, 0, "L", scalar(static_cast<double>(r.L)));
+  mxSetField(s, 0, "segments", scalar(r.segments));
+  mxSetField(s, 0, "theta", matrix(r.theta));
+  const mwSize np = static_cast<mwSize>(r.theta.cols());
+  const mwSize dims[3] = {np, np, static_cast<mwSize>(r.P.size())};
+  mxArray* P = mxCreateNumericArray(3, dims, mxDOUBLE_CLASS, mxREAL);
+  for (std::size_t k = 0; k < r.P.size(); ++k) {
+    Eigen::Map<Eigen::MatrixXd>(mxGetPr(P) + k * np * np, r.P[k].rows(),
+                                r.P[k].cols()) = r.P[k];
+  }
+  mxSetField(s, 0, "P", P);
+  mxSetField(s, 0, "tmid", row(r.tmid));
+  mxSetField(s, 0, "chi2", scalar(r.chi2));
+  mxSetField(s, 0, "dof", scalar(r.dof));
+  mxSetField(s, 0, "p", scalar(r.p));
+  mxSetField(s, 0, "slope", row(r.slope));
+  mxSetField(s, 0, "tval", row(r.tval));
+  mxSetField(s, 0, "shape", row(r.shape));
+}
+
 inline bool dispatch(const std::string& method, const Gateway& g, int nlhs,
                      mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
   if (method == "candidate") {
@@ -878,6 +933,8 @@ inline bool dispatch(const std::string& method, const Gateway& g, int nlhs,
     physcascade_method(g, nlhs, plhs, nrhs, prhs);
   } else if (method == "physmodelfit") {
     physmodelfit_method(g, nlhs, plhs, nrhs, prhs);
+  } else if (method == "driftsegments") {
+    driftsegments_method(g, nlhs, plhs, nrhs, prhs);
   } else {
     return false;
   }

@@ -14,7 +14,10 @@
 ## the precision-weighted mean, is chi^2 with (K - 1) np degrees of
 ## freedom; the trend of each parameter over the segments is given with
 ## its t value. When that test does not reject (p >= alpha) the candidate
-## stops there (not applicable, with the test in its reason).
+## stops there (not applicable, with the test in its reason). The
+## segment test runs in the core (core/include/ctid/apps/residtrace/
+## candidate_drift.hpp, through @code{effect_sim_mex}); the tracking below
+## runs here.
 ##
 ## The drifting model has random-walk parameters with a diagonal Qn,
 ## tracked by the recursive IV estimator with a Kalman filter (thesis eq.
@@ -41,85 +44,20 @@ function c = residtrace_cand_drift (cur, ctx)
     return;
   endif
   D = ctx.D;
-  N = numel (D.y);
   np = numel (cur.theta);
-  K = min (8, floor (N / (40 * max (np, 1))));
-  if (K < 3)
-    c.reason = sprintf (["%d samples are too few for segment fits ", ...
-                         "of %d parameters"], N, np);
+  o = residtrace_fitopts (ctx);
+  o.alpha = ctx.opts.alpha;
+  seg = effect_sim_mex ("residtrace", "driftsegments", cur, D, o);
+  if (! isempty (seg.reason))
+    ## too few samples, failed segment fits, or the segments agree: no
+    ## evidence of a change on the estimation record, and the costly
+    ## tracking (Qn by maximum likelihood) is not run
+    c.reason = seg.reason;
+    c.failed = seg.failed;
     return;
   endif
-  L = floor (N / K);
-  th = zeros (K, np);
-  P = zeros (np, np, K);
-  ok = true (K, 1);
-  for k = 1:K
-    idx = (k - 1) * L + (1:L);
-    Dk = slice (D, idx);
-    m = residtrace_fit (cur, Dk, setfield (ctx, "keep_order", true),
-                        {cur.F});
-    if (! m.ok || numel (m.theta) != np)
-      ok(k) = false;
-      continue;
-    endif
-    th(k, :) = m.theta(:).';
-    P(:, :, k) = m.cov;
-  endfor
-  if (sum (ok) < 3)
-    c.reason = "the segment fits failed";
-    c.failed = true;
-    return;
-  endif
-  th = th(ok, :); P = P(:, :, ok); Kk = sum (ok);
-  tmid = ((find (ok) - 0.5) * L) * D.Ts;
-  Wsum = zeros (np); wth = zeros (np, 1);
-  for k = 1:Kk
-    Wk = pinv (P(:, :, k));
-    Wsum += Wk; wth += Wk * th(k, :).';
-  endfor
-  tbar = pinv (Wsum) * wth;
-  chi2 = 0;
-  for k = 1:Kk
-    d = th(k, :).' - tbar;
-    chi2 += d.' * pinv (P(:, :, k)) * d;
-  endfor
-  dof = (Kk - 1) * np;
-  pchi = gammainc (chi2 / 2, dof / 2, "upper");
-  if (pchi >= ctx.opts.alpha)
-    ## the segments agree: no evidence of a change on the estimation
-    ## record, and the costly tracking (Qn by maximum likelihood) is
-    ## not run
-    c.reason = sprintf (["the segment fits agree (K = %d: chi^2 = %.1f ", ...
-                         "on %d dof, p = %.2g >= alpha)"], Kk, chi2, dof,
-                        pchi);
-    return;
-  endif
-  ## per-parameter trend over the segments (weighted least squares)
-  slope = zeros (1, np); tval = zeros (1, np);
-  for i = 1:np
-    v = squeeze (P(i, i, :));
-    if (! all (v > 0 & isfinite (v)))
-      slope(i) = NaN; tval(i) = NaN;   # a segment without a variance
-      continue;
-    endif
-    X = [ones(Kk, 1), tmid(:)] ./ sqrt (v);
-    [~, Rx] = qr (X, 0);
-    if (rcond (Rx) < eps)
-      slope(i) = NaN; tval(i) = NaN;
-      continue;
-    endif
-    b = Rx \ (Rx' \ (X' * (th(:, i) ./ sqrt (v))));
-    Cb = Rx \ (Rx' \ eye (2));
-    slope(i) = b(2); tval(i) = b(2) / sqrt (Cb(2, 2));
-  endfor
-  ## Qn: shape from the segment increments, scale by ML
-  dth = diff (th);
-  vinc = zeros (1, np);
-  for i = 1:np
-    v = squeeze (P(i, i, :));
-    vinc(i) = mean (dth(:, i) .^ 2 - (v(1:end-1) + v(2:end)));
-  endfor
-  shape = max (vinc, 1e-3 * diag (cur.cov).') / (2 * L / 3) / cur.s2;
+  th = seg.theta; Kk = seg.segments; chi2 = seg.chi2; dof = seg.dof;
+  pchi = seg.p; slope = seg.slope; tval = seg.tval; shape = seg.shape;
   P0 = cur.cov / cur.s2;
   if (plain_model (cur))
     ltv = with_rsrivc (cur, D, ctx, shape, P0);
@@ -217,14 +155,4 @@ function ltv = with_rsrivc (cur, D, ctx, shape, P0)
   ltv = struct ("method", "rsrivc", "Qn", Qn, "nn", nn, "perm", perm,
                 "th0", thm(end, :), "P0", Pend,
                 "th_start", th0, "P_start", P0, "scale", NaN);
-endfunction
-
-function Dk = slice (D, idx)
-  Dk = D;
-  Dk.y = D.y(idx);
-  Dk.u = D.u(idx, :);
-  Dk.vhat = D.vhat(idx, :);
-  Dk.ysm = D.ysm(idx);
-  Dk.loop = [];
-  Dk.initial_state = (idx(1) > 1);   # a segment does not start at rest
 endfunction
