@@ -51,11 +51,6 @@
 //     its fit by the simulation error (physical_fit.hpp): fit holds the
 //     fitted fields below and theta, cov, s2, bic, sse, iterations, ok; e
 //     the errors on the whole record.
-//   c = effect_sim_mex (fname, "physstart", options)
-//     the cascade whose linearisation has the poles p1 (upstream), p2, the
-//     static gains K (1-by-m) and the level hbar above c for the mean
-//     channel signals wbar (1-by-m) (physical_fit.hpp): c.b, c.d,
-//     c.alpha, c.gamma, c.F; options: g, p1, p2, K, wbar, hbar.
 //   W = effect_sim_mex (fname, "channels", u, v, y, options)
 //     the channel signals of a residtrace structure (structure_fit.hpp,
 //     channel_signals), one column per channel; v (velocity) and y (the
@@ -493,33 +488,6 @@ void physsim_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
       ctid::residtrace::simulate_physical<double>({p}, W, n, m, ts, &y, &z));
   plhs[0] = put_matrix(y);
   if (nlhs >= 2) plhs[1] = put_matrix(z);
-}
-
-void physstart_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
-                      const mxArray* prhs[]) {
-  if (nrhs != 3) {
-    g.fail("badInput", "physstart takes (fname, 'physstart', options)");
-  }
-  if (nlhs > 1) g.fail("badInput", "physstart has one output");
-  ctid::mex::OptionsReader opt(g, prhs[2]);
-  ctid::residtrace::PhysicalModel<double> p;
-  p.kind = ctid::residtrace::PhysicalKind::kCascade;
-  p.sqrt_nodes = opt.choice<bool>("g", {{"sqrt", true}, {"lin", false}}, true);
-  const double p1 = opt.scalar("p1");
-  const double p2 = opt.scalar("p2");
-  const Eigen::VectorXd K = row(opt.required_matrix("K", 1, -1));
-  const Eigen::VectorXd wbar =
-      row(opt.required_matrix("wbar", 1, static_cast<long>(K.size())));
-  const double hbar = opt.scalar("hbar");
-  opt.finish();
-  ctid::residtrace::cascade_from_linear<double>(p1, p2, K, wbar, hbar, &p);
-  const char* fields[] = {"b", "d", "alpha", "gamma", "F"};
-  plhs[0] = mxCreateStructMatrix(1, 1, 5, fields);
-  mxSetFieldByNumber(plhs[0], 0, 0, put_matrix(p.b.transpose()));
-  mxSetFieldByNumber(plhs[0], 0, 1, mxCreateDoubleScalar(p.d));
-  mxSetFieldByNumber(plhs[0], 0, 2, mxCreateDoubleScalar(p.alpha));
-  mxSetFieldByNumber(plhs[0], 0, 3, mxCreateDoubleScalar(p.gamma));
-  mxSetFieldByNumber(plhs[0], 0, 4, put_matrix(p.F.transpose()));
 }
 
 void physfit_method(const Gateway& g, int nlhs, mxArray* plhs[], int nrhs,
@@ -1039,8 +1007,6 @@ void mexFunction(int nlhs, mxArray* plhs[], int nrhs, const mxArray* prhs[]) {
             ar_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physsim") {
             physsim_method(g, nlhs, plhs, nrhs, prhs);
-          } else if (method == "physstart") {
-            physstart_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "physfit") {
             physfit_method(g, nlhs, plhs, nrhs, prhs);
           } else if (method == "channels") {
