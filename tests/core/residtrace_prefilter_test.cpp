@@ -30,10 +30,7 @@ using C = std::complex<double>;
 
 // Monic polynomial (descending powers) from its roots.
 Eigen::VectorXd poly(const std::vector<C>& r) {
-  Eigen::Matrix<C, Eigen::Dynamic, 1> z(static_cast<Eigen::Index>(r.size()));
-  for (std::size_t i = 0; i < r.size(); ++i)
-    z(static_cast<Eigen::Index>(i)) = r[i];
-  return monic_from_roots<double>(z).real();
+  return real_monic_from_roots<double>(r);
 }
 
 std::vector<C> roots(const Eigen::VectorXd& F) {

@@ -99,4 +99,13 @@ Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> monic_from_roots(
   return c;
 }
 
+// The real coefficients (descending powers, monic) of prod_k (x - r_k)
+// from roots in conjugate pairs, given as a list.
+template <typename S>
+Vector<S> real_monic_from_roots(const std::vector<std::complex<S>>& r) {
+  const Eigen::Map<const Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1>> v(
+      r.data(), static_cast<Eigen::Index>(r.size()));
+  return monic_from_roots<S>(v).real();
+}
+
 }  // namespace ctid

@@ -122,14 +122,6 @@ Vector<S> filter_dt(const Vector<S>& b, const Vector<S>& a,
   return y;
 }
 
-// Monic polynomial [1 p1 .. pn] from its roots (conjugate pairs).
-template <typename S>
-Vector<S> from_roots(const std::vector<std::complex<S>>& roots) {
-  const Eigen::Map<const Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1>> r(
-      roots.data(), static_cast<Eigen::Index>(roots.size()));
-  return monic_from_roots<S>(r).real();
-}
-
 // Roots of the q^-1 polynomial [1 p1 .. pn] (as z-polynomial) inside the
 // circle of radius `radius`: roots outside are reflected, 1/conj(z).
 template <typename S>
@@ -149,7 +141,7 @@ Vector<S> reflect_into_circle(const Vector<S>& p, S radius,
   }
   if (changed) *changed = any;
   if (!any) return p;
-  return from_roots(r);
+  return real_monic_from_roots<S>(r);
 }
 
 template <typename S>

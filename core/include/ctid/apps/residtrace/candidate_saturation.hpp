@@ -292,15 +292,6 @@ Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> poles(const Vector<S>& F) {
       r.data(), static_cast<Eigen::Index>(r.size()));
 }
 
-// The real coefficients of prod (p - r_k), descending powers.
-template <typename S>
-Vector<S> real_poly(const std::vector<std::complex<S>>& r) {
-  Eigen::Matrix<std::complex<S>, Eigen::Dynamic, 1> v(r.size());
-  for (std::size_t i = 0; i < r.size(); ++i) v(i) = r[i];
-  const auto c = monic_from_roots<S>(v);
-  return c.real();
-}
-
 // The node's input channel: the single input channel, or -1.
 template <typename S>
 int single_input(const ResidtraceModel<S>& m) {
@@ -385,7 +376,8 @@ Status node_variants(const ResidtraceModel<S>& cur,
       auto& dst = (mask >> i) & 1 ? ra : rb;
       dst.insert(dst.end(), sec[i].begin(), sec[i].end());
     }
-    const Vector<S> Fa = real_poly<S>(ra), Fb = real_poly<S>(rb);
+    const Vector<S> Fa = real_monic_from_roots<S>(ra),
+                    Fb = real_monic_from_roots<S>(rb);
     Vector<S> z;
     s = unit_gain_response<S>(Fa, uk, D.ts, D.rule, &z);
     if (!s.ok()) return s;
